@@ -1,0 +1,44 @@
+//! Errors of the frames layer.
+
+use thiserror::Error;
+
+/// What went wrong building or using a frame, with what would be valid.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum FrameError {
+    /// A component was NaN or infinite.
+    #[error("non-finite value in {what}: every component must be a finite number")]
+    NonFinite {
+        /// Which input.
+        what: &'static str,
+    },
+    /// Axes (or a matrix) that are not orthonormal within the tolerance.
+    #[error(
+        "not orthonormal: ‖MᵀM − I‖ = {defect:e} exceeds the tolerance {tol:e}; a standard frame needs unit, mutually perpendicular axes"
+    )]
+    NotOrthonormal {
+        /// The measured defect ‖MᵀM − I‖_max.
+        defect: f64,
+        /// The tolerance.
+        tol: f64,
+    },
+    /// Orthonormal but left-handed (det = −1).
+    #[error("left-handed: det = {det}; every vectrix frame is right-handed (î × ĵ = k̂, det = +1)")]
+    LeftHanded {
+        /// The determinant found.
+        det: f64,
+    },
+    /// A nonstandard frame whose axes are (nearly) linearly dependent.
+    #[error(
+        "degenerate nonstandard frame: condition number {cond:e} exceeds {limit:e}; the three axes must be linearly independent"
+    )]
+    Degenerate {
+        /// The 2-norm condition number of the axis matrix.
+        cond: f64,
+        /// The limit it was compared with.
+        limit: f64,
+    },
+    /// An error from the kernel.
+    #[error(transparent)]
+    Tensor(#[from] vectrix_tensor::TensorError),
+}

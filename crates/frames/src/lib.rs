@@ -1,0 +1,19 @@
+//! # vectrix-frames: frames and resolution
+//!
+//! A frame F_A = [î_A ĵ_A k̂_A] is three orthonormal right-handed physical vectors (book §2.4).
+//! This crate is the only layer that sees the kernel's hidden basis: it turns frame-free
+//! objects into numbers (`x.resolve(&a)`) and numbers into objects (`a.vector([..])`).
+#![warn(missing_docs)]
+
+mod error;
+mod frame;
+mod resolve;
+
+pub use error::FrameError;
+pub use frame::{Frame, ORTHONORMAL_TOL};
+pub use resolve::{Resolve, change_frame_dyadic, change_frame_vector};
+
+/// `use vectrix_frames::prelude::*;`
+pub mod prelude {
+    pub use crate::{Frame, FrameError, ORTHONORMAL_TOL, Resolve};
+}

@@ -1,0 +1,5 @@
+//! vectrix-ode (in progress).
+#![warn(missing_docs)]
+
+/// `use vectrix_ode::prelude::*;`
+pub mod prelude {}

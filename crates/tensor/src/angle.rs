@@ -1,0 +1,37 @@
+//! Wrapped angles and congruence mod 2π (book Fact 2.1.1, §2.3).
+
+use crate::Scalar;
+
+/// Wraps an angle into (−π, π]: π is included, −π is not (book §2.3, "wrapped angle").
+///
+/// Book: §2.3, Fact 2.1.1. Non-finite input is returned unchanged.
+#[inline]
+pub fn wrap_angle<T: Scalar>(a: T) -> T {
+    let pi = T::pi();
+    let two_pi = T::two_pi();
+    if a > -pi && a <= pi {
+        return a;
+    }
+    if !a.re().is_finite() {
+        return a;
+    }
+    // r ∈ [−π, π) by rounding, then map −π to +π.
+    let mut r = a - two_pi * ((a + pi) / two_pi).floor();
+    if r <= -pi {
+        r += two_pi;
+    }
+    if r > pi {
+        r -= two_pi;
+    }
+    r
+}
+
+/// `a ≡ b`: a − b ∈ 2πℤ within the absolute tolerance `tol` on the wrapped difference.
+///
+/// Book: Fact 2.1.1.
+#[inline]
+pub fn congruent<T: Scalar>(a: T, b: T, tol: f64) -> bool {
+    let d = wrap_angle(a - b).re().abs();
+    // The wrapped difference of congruent angles sits near 0 or (by rounding) near ±π·2.
+    d <= tol || (core::f64::consts::TAU - d) <= tol
+}

@@ -1,0 +1,87 @@
+//! Errors of the kernel.
+
+use thiserror::Error;
+
+/// What went wrong in a kernel operation, with what would be valid.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum TensorError {
+    /// A component was NaN or infinite.
+    #[error("non-finite value in {what}: every component must be a finite number")]
+    NonFinite {
+        /// Which input held the value.
+        what: &'static str,
+    },
+    /// A dyadic (physical matrix) has no inverse.
+    #[error(
+        "singular dyadic: |det| = {det:e} is not above the tolerance {tol:e}; an inverse exists only for det ≠ 0"
+    )]
+    Singular {
+        /// The determinant found.
+        det: f64,
+        /// The tolerance it was compared with.
+        tol: f64,
+    },
+    /// A slot index outside `1..=order`.
+    #[error("slot {slot} is not a slot of a tensor of order {order}: valid slots are 1..={order}")]
+    InvalidSlot {
+        /// The requested slot (1-based, the book's numbering).
+        slot: usize,
+        /// The tensor's order p + q.
+        order: usize,
+    },
+    /// Contraction needs one vector slot and one covector slot.
+    #[error("slots {i} and {j} cannot be contracted: contraction pairs one vector slot (1..={p}) with one covector slot ({first_covector}..={order})", first_covector = p + 1, order = p + q)]
+    ContractionTypes {
+        /// First slot.
+        i: usize,
+        /// Second slot.
+        j: usize,
+        /// Vector slots of the tensor.
+        p: usize,
+        /// Covector slots of the tensor.
+        q: usize,
+    },
+    /// The tensor's storage would exceed the configured limit.
+    #[error(
+        "a tensor of order {order} needs 3^{order} = {needed} components, above the limit of {limit}; raise the limit with Tensor::set_max_components or lower the order"
+    )]
+    TooLarge {
+        /// Requested order p + q.
+        order: usize,
+        /// Components needed (saturating).
+        needed: u128,
+        /// Current limit.
+        limit: usize,
+    },
+    /// Two tensors or arrays whose shapes do not fit together.
+    #[error("shape mismatch: {detail}")]
+    Shape {
+        /// What did not match and what would.
+        detail: String,
+    },
+    /// A slot permutation that is not a permutation of 1..=order.
+    #[error("{perm:?} is not a permutation of 1..={order}")]
+    InvalidPermutation {
+        /// The given permutation.
+        perm: Vec<usize>,
+        /// Tensor order.
+        order: usize,
+    },
+    /// A geometric input that must be nonzero was zero.
+    #[error("{what} must be nonzero")]
+    Zero {
+        /// Which input.
+        what: &'static str,
+    },
+    /// A parameter outside its valid range.
+    #[error("{what} = {value} is out of range: valid is {valid}")]
+    OutOfRange {
+        /// Which parameter.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// The valid range.
+        valid: &'static str,
+    },
+}

@@ -1,0 +1,235 @@
+//! Physical vectors (book §1.3, §2.1–2.3).
+//!
+//! A [`Vector`] has no components: it holds them in one hidden reference basis that no user
+//! ever sees. Numbers come out only through `x.resolve(&frame)` and go in only through
+//! `frame.vector([..])` (crate `vectrix-frames`, book (2.4.14–16)).
+
+use core::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
+
+use nalgebra::Vector3;
+
+use crate::angle::wrap_angle;
+use crate::{Covector, Dyadic, Scalar};
+
+/// A physical vector x⃗ (book §1.3): a directed magnitude with no components and no location.
+///
+/// Book: §1.3, §2.1–2.3.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Vector<T: Scalar = f64> {
+    pub(crate) c: Vector3<T>,
+}
+
+impl<T: Scalar> Vector<T> {
+    /// The zero vector 0⃗.
+    #[inline]
+    pub fn zero() -> Self {
+        Self { c: Vector3::zeros() }
+    }
+
+    /// Components in the hidden reference basis. Reserved for `vectrix-frames`, the only
+    /// layer allowed to see that basis (DESIGN §1.5); every other caller resolves in a frame.
+    #[doc(hidden)]
+    #[inline(always)]
+    pub fn from_hidden(c: Vector3<T>) -> Self {
+        Self { c }
+    }
+
+    /// See [`Vector::from_hidden`]: reserved for `vectrix-frames` and peer benches.
+    #[doc(hidden)]
+    #[inline(always)]
+    pub fn hidden(&self) -> &Vector3<T> {
+        &self.c
+    }
+
+    /// Dot product x⃗·y⃗ = |x||y|cos θ (2.1.1).
+    #[inline]
+    pub fn dot(&self, y: &Vector<T>) -> T {
+        self.c.dot(&y.c)
+    }
+
+    /// Cross product x⃗×y⃗ = |x||y| sin θ θ̂_{y/x} (2.2.4).
+    #[inline]
+    pub fn cross(&self, y: &Vector<T>) -> Vector<T> {
+        Vector { c: self.c.cross(&y.c) }
+    }
+
+    /// Magnitude |x⃗| (2.1.2), computed without overflow or underflow for huge or tiny
+    /// components (scaled by the largest component).
+    #[inline]
+    pub fn norm(&self) -> T {
+        let m = self.c.x.abs().max(self.c.y.abs()).max(self.c.z.abs());
+        if m == T::zero() || !m.re().is_finite() {
+            return m;
+        }
+        // Within the comfortable range the plain formula is exact enough and faster.
+        let r = m.re();
+        if r > 1e-150 && r < 1e150 {
+            return self.c.norm();
+        }
+        (self.c / m).norm() * m
+    }
+
+    /// |x⃗|².
+    #[inline]
+    pub fn norm_squared(&self) -> T {
+        self.c.norm_squared()
+    }
+
+    /// Unit vector x̂ = x⃗/|x⃗|; `None` for the zero vector, where the book leaves it undefined.
+    ///
+    /// Book: §2.1.
+    #[inline]
+    pub fn unit(&self) -> Option<Vector<T>> {
+        let n = self.norm();
+        if n == T::zero() || !n.re().is_finite() { None } else { Some(*self / n) }
+    }
+
+    /// Coform x⃗′, the covector with x⃗′y⃗ = x⃗·y⃗ (2.1.6).
+    #[inline]
+    pub fn coform(&self) -> Covector<T> {
+        Covector { c: self.c }
+    }
+
+    /// Outer product x⃗ y⃗′, the dyad of (2.6.1).
+    #[inline]
+    pub fn outer(&self, y: &Vector<T>) -> Dyadic<T> {
+        Dyadic { m: self.c * y.c.transpose() }
+    }
+
+    /// Cross-product dyad x⃗^×, with x⃗^× y⃗ = x⃗ × y⃗ (2.9.1).
+    #[inline]
+    pub fn cross_dyad(&self) -> Dyadic<T> {
+        Dyadic { m: self.c.cross_matrix() }
+    }
+
+    /// Undirected angle θ between x⃗ and y⃗ in [0, π], by atan2(|x×y|, x·y); 0 when either
+    /// vector is zero (book L497).
+    ///
+    /// Book: (2.1.4), computed stably instead of by cos⁻¹ (accurate near 0 and π).
+    #[inline]
+    pub fn angle(&self, y: &Vector<T>) -> T {
+        // atan2(0, 0) = 0 gives the book's value for zero vectors.
+        self.cross(y).norm().atan2(self.dot(y))
+    }
+
+    /// Unit angle vector θ̂_{self/x} = x⃗×y⃗/|x⃗×y⃗| for y⃗ = `self` (2.2.7): aligned with x×y,
+    /// curling x toward y. `None` when the vectors are parallel, anti-parallel or zero.
+    ///
+    /// Book: §2.2, (2.2.7); θ̂_{x/y} = −θ̂_{y/x} (2.2.2).
+    #[inline]
+    pub fn unit_angle_vector_rel(&self, x: &Vector<T>) -> Option<Vector<T>> {
+        x.cross(self).unit()
+    }
+
+    /// Angle vector θ⃗_{self/x} = θ θ̂_{self/x} (2.2.1, 2.2.10). `None` where θ̂ is undefined.
+    ///
+    /// Book: (2.2.1), (2.2.10).
+    #[inline]
+    pub fn angle_vector_rel(&self, x: &Vector<T>) -> Option<Vector<T>> {
+        self.unit_angle_vector_rel(x).map(|n| n * x.angle(self))
+    }
+
+    /// Directed angle θ_{self/x/n̂} in (−π, π] (2.3.1) about the normal `n` (perpendicular to
+    /// both vectors; its length does not matter): 0 for aligned vectors, +θ when n̂ = θ̂_{y/x},
+    /// −θ when n̂ = −θ̂_{y/x}, and **π for anti-parallel vectors whatever n̂** (never −π).
+    /// 0 when either vector is zero (atan2(0, 0) = 0, (2.3.9)). `None` when `n` is zero.
+    ///
+    /// Book: (2.3.1), (2.3.8–9).
+    #[inline]
+    pub fn directed_angle_rel(&self, x: &Vector<T>, n: &Vector<T>) -> Option<T> {
+        let n_hat = n.unit()?;
+        // (2.3.8): θ = atan2(n̂·(x×y), x·y)
+        let theta = n_hat.dot(&x.cross(self)).atan2(x.dot(self));
+        // Anti-parallel: atan2(−0, −1) = −π; the book's rule (2.3.1) gives +π.
+        Some(wrap_angle(theta))
+    }
+
+    /// Components x|_B = 𝓞 x|_A style map applied in the hidden basis; for frames only.
+    #[doc(hidden)]
+    #[inline(always)]
+    pub fn map_hidden(&self, f: impl FnOnce(&Vector3<T>) -> Vector3<T>) -> Vector<T> {
+        Vector { c: f(&self.c) }
+    }
+
+    /// `true` when every component is finite.
+    #[inline]
+    pub fn is_finite(&self) -> bool {
+        crate::scalar::all_finite(self.c.as_slice())
+    }
+
+    /// Scalar triple product [x, y, z] = x·(y×z) (2.2.13).
+    #[inline]
+    pub fn triple(&self, y: &Vector<T>, z: &Vector<T>) -> T {
+        self.dot(&y.cross(z))
+    }
+}
+
+impl<T: Scalar> Default for Vector<T> {
+    fn default() -> Self {
+        Self::zero()
+    }
+}
+
+impl<T: Scalar> Add for Vector<T> {
+    type Output = Vector<T>;
+    #[inline(always)]
+    fn add(self, y: Vector<T>) -> Vector<T> {
+        Vector { c: self.c + y.c }
+    }
+}
+
+impl<T: Scalar> AddAssign for Vector<T> {
+    #[inline(always)]
+    fn add_assign(&mut self, y: Vector<T>) {
+        self.c += y.c;
+    }
+}
+
+impl<T: Scalar> Sub for Vector<T> {
+    type Output = Vector<T>;
+    #[inline(always)]
+    fn sub(self, y: Vector<T>) -> Vector<T> {
+        Vector { c: self.c - y.c }
+    }
+}
+
+impl<T: Scalar> SubAssign for Vector<T> {
+    #[inline(always)]
+    fn sub_assign(&mut self, y: Vector<T>) {
+        self.c -= y.c;
+    }
+}
+
+impl<T: Scalar> Neg for Vector<T> {
+    type Output = Vector<T>;
+    #[inline(always)]
+    fn neg(self) -> Vector<T> {
+        Vector { c: -self.c }
+    }
+}
+
+/// Scaling a⃗ s by a scalar on the right.
+impl<T: Scalar> Mul<T> for Vector<T> {
+    type Output = Vector<T>;
+    #[inline(always)]
+    fn mul(self, s: T) -> Vector<T> {
+        Vector { c: self.c * s }
+    }
+}
+
+/// Scaling s a⃗ by an `f64` on the left.
+impl Mul<Vector<f64>> for f64 {
+    type Output = Vector<f64>;
+    #[inline(always)]
+    fn mul(self, x: Vector<f64>) -> Vector<f64> {
+        x * self
+    }
+}
+
+impl<T: Scalar> Div<T> for Vector<T> {
+    type Output = Vector<T>;
+    #[inline(always)]
+    fn div(self, s: T) -> Vector<T> {
+        Vector { c: self.c / s }
+    }
+}

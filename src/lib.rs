@@ -1,0 +1,35 @@
+//! # vectrix
+//!
+//! Frame-free geometry, kinematics, statics and dynamics after Bernstein, Goel and Ansari,
+//! *Geometry, Kinematics, Statics, and Dynamics*. This facade re-exports every layer; most
+//! users need only `use vectrix::prelude::*;`.
+//!
+//! ```
+//! use vectrix::prelude::*;
+//! let a = Frame::new();
+//! let x = a.vector([1.0, 2.0, 3.0]);
+//! assert_eq!(x.resolve(&a), nalgebra::Vector3::new(1.0, 2.0, 3.0));
+//! ```
+#![warn(missing_docs)]
+
+pub use nalgebra;
+pub use num_dual;
+pub use vectrix_frames as frames;
+pub use vectrix_lti as lti;
+pub use vectrix_ode as ode;
+pub use vectrix_plot as plot;
+pub use vectrix_rotation as rotation;
+pub use vectrix_statics as statics;
+pub use vectrix_tensor as tensor;
+
+/// Everything for notebooks and applications: `use vectrix::prelude::*;`.
+#[allow(unused_imports)] // layers still in progress export empty preludes
+pub mod prelude {
+    pub use vectrix_frames::prelude::*;
+    pub use vectrix_lti::prelude::*;
+    pub use vectrix_ode::prelude::*;
+    pub use vectrix_plot::prelude::*;
+    pub use vectrix_rotation::prelude::*;
+    pub use vectrix_statics::prelude::*;
+    pub use vectrix_tensor::prelude::*;
+}

@@ -1,0 +1,5 @@
+//! The `vectrix` command: `cargo run --release` runs the main job.
+
+fn main() -> std::process::ExitCode {
+    vectrix_cli::main()
+}

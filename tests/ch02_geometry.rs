@@ -1,0 +1,7 @@
+//! Chapter 2: geometry (book §2.1–2.24). The executable textbook for vectors, frames,
+//! rotations and nonstandard frames. Split by topic into `tests/ch02/*.rs`.
+
+mod support;
+
+#[path = "ch02/geometry.rs"]
+mod geometry;
