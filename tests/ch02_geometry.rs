@@ -5,3 +5,6 @@ mod support;
 
 #[path = "ch02/geometry.rs"]
 mod geometry;
+
+#[path = "ch02/rotations.rs"]
+mod rotations;
