@@ -1,5 +1,28 @@
-//! vectrix-plot (in progress).
+//! # vectrix-plot: deterministic SVG figures
+//!
+//! Hand-written SVG (no font metrics, no randomness, fixed number formatting), so the same
+//! data always gives the same bytes and figures can be snapshot-tested.
+//!
+//! - [`LineChart`]: named series over linear or log–log axes (work–precision diagrams,
+//!   time series);
+//! - [`Chart`] and [`Figure`]: the general panel (curves, markers, reference lines, arrows)
+//!   and vertical stacks of panels, used by the control figures of the book's ch. 15–16
+//!   (Bode, Nyquist, step responses, root loci, pole–zero maps, phase portraits).
 #![warn(missing_docs)]
 
+mod axis;
+mod chart;
+mod error;
+mod line;
+mod svg;
+
+pub use chart::{Arrow, Chart, Curve, Figure, Marker, RefLine, Shape, Stroke};
+pub use error::PlotError;
+pub use line::{LineChart, Series};
+
 /// `use vectrix_plot::prelude::*;`
-pub mod prelude {}
+pub mod prelude {
+    pub use crate::{
+        Arrow, Chart, Curve, Figure, LineChart, Marker, PlotError, RefLine, Series, Shape, Stroke,
+    };
+}

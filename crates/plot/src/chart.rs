@@ -1,0 +1,367 @@
+//! The general panel every figure is drawn on: curves, markers, reference lines, arrows and
+//! notes over linear or logarithmic axes, with a legend.
+
+use crate::axis::Axis;
+use crate::error::PlotError;
+use crate::svg::{PALETTE, Svg, escape, num};
+
+/// Width of a figure in pixels.
+pub(crate) const WIDTH: f64 = 720.0;
+/// Height of one panel in pixels.
+pub(crate) const PANEL_HEIGHT: f64 = 400.0;
+const LEFT: f64 = 72.0;
+const RIGHT: f64 = 180.0;
+const TOP: f64 = 36.0;
+const BOTTOM: f64 = 52.0;
+/// Pixel coordinates are clamped to this magnitude so that huge values stay printable;
+/// the clip path hides everything outside the plot area anyway.
+const PIXEL_CLAMP: f64 = 1e4;
+
+/// How a curve is stroked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Stroke {
+    /// A solid line.
+    #[default]
+    Solid,
+    /// A dashed line.
+    Dashed,
+    /// A dotted line.
+    Dotted,
+}
+
+/// One polyline of a [`Chart`]. Non-finite points (and non-positive ones on a log axis) break
+/// the line into pieces instead of failing: a Bode magnitude at a jω zero is −∞ dB.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// Legend entry; `None` keeps the curve out of the legend.
+    pub name: Option<String>,
+    /// Data points in order.
+    pub points: Vec<(f64, f64)>,
+    /// Palette index (colours cycle through ten).
+    pub color: usize,
+    /// Solid, dashed or dotted.
+    pub stroke: Stroke,
+    /// Draw a small circle at every point (work–precision diagrams).
+    pub markers: bool,
+}
+
+impl Curve {
+    /// A solid, named curve in palette colour `color`.
+    pub fn new(name: impl Into<String>, points: Vec<(f64, f64)>, color: usize) -> Self {
+        Self { name: Some(name.into()), points, color, stroke: Stroke::Solid, markers: false }
+    }
+}
+
+/// Shape of a [`Marker`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// × (poles).
+    Cross,
+    /// ○ (zeros).
+    Circle,
+    /// A filled dot.
+    Dot,
+    /// + (the critical point −1).
+    Plus,
+}
+
+/// A marker at a data point, with an optional text label.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Marker {
+    /// Data position.
+    pub at: (f64, f64),
+    /// Shape.
+    pub shape: Shape,
+    /// Palette index.
+    pub color: usize,
+    /// Text written next to the marker.
+    pub label: Option<String>,
+}
+
+/// A dashed grey reference line at a constant data value (0 dB, −180°, a final value).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RefLine {
+    /// The constant coordinate.
+    pub value: f64,
+    /// Text written at the line's end.
+    pub label: Option<String>,
+}
+
+/// A direction arrow head at `to`, pointing from `from` (both in data coordinates).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Arrow {
+    /// Tail (only its direction matters).
+    pub from: (f64, f64),
+    /// Head position.
+    pub to: (f64, f64),
+    /// Palette index.
+    pub color: usize,
+}
+
+/// A general chart panel. [`crate::LineChart`] is the simple front end; the control figures
+/// (Bode, Nyquist, root locus …) build a `Chart` directly.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Chart {
+    /// Title above the panel.
+    pub title: String,
+    /// Label under the x axis.
+    pub x_label: String,
+    /// Label left of the y axis.
+    pub y_label: String,
+    /// Logarithmic x axis (decade ticks).
+    pub log_x: bool,
+    /// Logarithmic y axis (decade ticks).
+    pub log_y: bool,
+    /// Fixed x range; `None` fits the data, widened to whole ticks.
+    pub x_range: Option<(f64, f64)>,
+    /// Fixed y range; `None` fits the data, widened to whole ticks.
+    pub y_range: Option<(f64, f64)>,
+    /// Same data scale on both axes (Nyquist, root locus, phase portraits).
+    pub equal_aspect: bool,
+    /// Polylines.
+    pub curves: Vec<Curve>,
+    /// Point markers.
+    pub markers: Vec<Marker>,
+    /// Horizontal reference lines (y = value).
+    pub hlines: Vec<RefLine>,
+    /// Vertical reference lines (x = value).
+    pub vlines: Vec<RefLine>,
+    /// Arrow heads.
+    pub arrows: Vec<Arrow>,
+}
+
+fn usable(v: f64, log: bool) -> bool {
+    v.is_finite() && (!log || v > 0.0)
+}
+
+impl Chart {
+    fn data_range(
+        &self,
+        pick: impl Fn(&(f64, f64)) -> f64,
+        log: bool,
+        refs: &[RefLine],
+    ) -> Option<(f64, f64)> {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        let mut take = |v: f64| {
+            if usable(v, log) {
+                lo = lo.min(v);
+                hi = hi.max(v);
+            }
+        };
+        for c in &self.curves {
+            c.points.iter().for_each(|p| take(pick(p)));
+        }
+        self.markers.iter().for_each(|m| take(pick(&m.at)));
+        refs.iter().for_each(|r| take(r.value));
+        (lo <= hi).then_some((lo, hi))
+    }
+
+    fn axes(&self, w: f64, h: f64) -> Result<(Axis, Axis), PlotError> {
+        let fit = |fixed: Option<(f64, f64)>, data: Option<(f64, f64)>, name, log| match (fixed, data) {
+            (Some((lo, hi)), _) if lo < hi => Axis::new(name, lo, hi, log, false),
+            (Some((lo, hi)), _) => Err(PlotError::InvalidRange { axis: name, lo, hi }),
+            (None, Some((lo, hi))) => Axis::new(name, lo, hi, log, true),
+            (None, None) => Err(PlotError::Empty { figure: self.title.clone() }),
+        };
+        let xr = fit(self.x_range, self.data_range(|p| p.0, self.log_x, &self.vlines), "x", self.log_x)?;
+        let yr = fit(self.y_range, self.data_range(|p| p.1, self.log_y, &self.hlines), "y", self.log_y)?;
+        if !self.equal_aspect || self.log_x || self.log_y {
+            return Ok((xr, yr));
+        }
+        // Equal aspect: widen the axis with fewer data units per pixel about its centre.
+        let (ux, uy) = ((xr.hi - xr.lo) / w, (yr.hi - yr.lo) / h);
+        let widen = |a: Axis, u: f64, px: f64| {
+            let c = 0.5 * (a.lo + a.hi);
+            Axis { lo: c - 0.5 * u * px, hi: c + 0.5 * u * px, log: false }
+        };
+        Ok(if ux > uy { (xr, widen(yr, ux, h)) } else { (widen(xr, uy, w), yr) })
+    }
+
+    /// Draws the panel into `svg` with its top-left corner at (0, `y0`).
+    pub(crate) fn render(&self, svg: &mut Svg, y0: f64, id: &str) -> Result<(), PlotError> {
+        let (px, pw) = (LEFT, WIDTH - LEFT - RIGHT);
+        let (py, ph) = (y0 + TOP, PANEL_HEIGHT - TOP - BOTTOM);
+        let (ax, ay) = self.axes(pw, ph)?;
+        let to_px = |(x, y): (f64, f64)| {
+            let sx = px + ax.frac(x) * pw;
+            let sy = py + (1.0 - ay.frac(y)) * ph;
+            (sx.clamp(-PIXEL_CLAMP, PIXEL_CLAMP), sy.clamp(-PIXEL_CLAMP, PIXEL_CLAMP))
+        };
+        svg.clip_rect(id, px, py, pw, ph);
+        svg.rect(px, py, pw, ph, "white", "#333333");
+        svg.text(px + 0.5 * pw, y0 + 22.0, &self.title, 15.0, "middle", 0.0);
+        // Grid and ticks.
+        for t in ax.ticks() {
+            let (x, _) = to_px((t.value, if ay.log { ay.lo } else { 0.0 }));
+            let major = t.label.is_some();
+            svg.line(x, py, x, py + ph, if major { "#d0d0d0" } else { "#ececec" }, 1.0, None);
+            if let Some(l) = &t.label {
+                svg.text_markup(x, py + ph + 17.0, l, 11.0, "middle");
+            }
+        }
+        for t in ay.ticks() {
+            let (_, y) = to_px((if ax.log { ax.lo } else { 0.0 }, t.value));
+            let major = t.label.is_some();
+            svg.line(px, y, px + pw, y, if major { "#d0d0d0" } else { "#ececec" }, 1.0, None);
+            if let Some(l) = &t.label {
+                svg.text_markup(px - 6.0, y + 4.0, l, 11.0, "end");
+            }
+        }
+        svg.text(px + 0.5 * pw, py + ph + 40.0, &self.x_label, 13.0, "middle", 0.0);
+        svg.text(18.0, py + 0.5 * ph, &self.y_label, 13.0, "middle", -90.0);
+        // Reference lines.
+        for r in &self.hlines {
+            if usable(r.value, self.log_y) {
+                let (_, y) = to_px((if ax.log { ax.lo } else { 0.0 }, r.value));
+                if (py..=py + ph).contains(&y) {
+                    svg.line(px, y, px + pw, y, "#777777", 1.0, Some("6 4"));
+                    if let Some(l) = &r.label {
+                        svg.text(px + pw - 4.0, y - 4.0, l, 10.0, "end", 0.0);
+                    }
+                }
+            }
+        }
+        for r in &self.vlines {
+            if usable(r.value, self.log_x) {
+                let (x, _) = to_px((r.value, if ay.log { ay.lo } else { 0.0 }));
+                if (px..=px + pw).contains(&x) {
+                    svg.line(x, py, x, py + ph, "#777777", 1.0, Some("6 4"));
+                    if let Some(l) = &r.label {
+                        svg.text(x + 4.0, py + 12.0, l, 10.0, "start", 0.0);
+                    }
+                }
+            }
+        }
+        // Curves, split at unusable points.
+        for c in &self.curves {
+            let color = PALETTE[c.color % PALETTE.len()];
+            let dash = match c.stroke {
+                Stroke::Solid => None,
+                Stroke::Dashed => Some("8 5"),
+                Stroke::Dotted => Some("2 4"),
+            };
+            let mut piece = Vec::new();
+            for &(x, y) in &c.points {
+                if usable(x, self.log_x) && usable(y, self.log_y) {
+                    piece.push(to_px((x, y)));
+                } else {
+                    svg.polyline(&piece, color, 2.0, dash, Some(id));
+                    piece.clear();
+                }
+            }
+            svg.polyline(&piece, color, 2.0, dash, Some(id));
+            if c.markers {
+                for &(x, y) in &c.points {
+                    if usable(x, self.log_x) && usable(y, self.log_y) {
+                        let (sx, sy) = to_px((x, y));
+                        if (px..=px + pw).contains(&sx) && (py..=py + ph).contains(&sy) {
+                            svg.circle(sx, sy, 3.0, color, color);
+                        }
+                    }
+                }
+            }
+        }
+        for a in &self.arrows {
+            let (fx, fy) = to_px(a.from);
+            let (tx, ty) = to_px(a.to);
+            let (dx, dy) = (tx - fx, ty - fy);
+            let len = dx.hypot(dy);
+            if len > 0.0 && (px..=px + pw).contains(&tx) && (py..=py + ph).contains(&ty) {
+                let (ux, uy) = (dx / len, dy / len);
+                let (l, w) = (10.0, 4.5);
+                svg.polygon(
+                    &[
+                        (tx, ty),
+                        (tx - l * ux - w * uy, ty - l * uy + w * ux),
+                        (tx - l * ux + w * uy, ty - l * uy - w * ux),
+                    ],
+                    PALETTE[a.color % PALETTE.len()],
+                );
+            }
+        }
+        for m in &self.markers {
+            if !(usable(m.at.0, self.log_x) && usable(m.at.1, self.log_y)) {
+                continue;
+            }
+            let (x, y) = to_px(m.at);
+            if !((px..=px + pw).contains(&x) && (py..=py + ph).contains(&y)) {
+                continue;
+            }
+            let color = PALETTE[m.color % PALETTE.len()];
+            match m.shape {
+                Shape::Cross => svg.cross(x, y, 5.0, color),
+                Shape::Circle => svg.circle(x, y, 5.0, "none", color),
+                Shape::Dot => svg.circle(x, y, 3.5, color, color),
+                Shape::Plus => {
+                    svg.line(x - 6.0, y, x + 6.0, y, color, 2.0, None);
+                    svg.line(x, y - 6.0, x, y + 6.0, color, 2.0, None);
+                }
+            }
+            if let Some(l) = &m.label {
+                svg.text(x + 7.0, y - 7.0, l, 10.0, "start", 0.0);
+            }
+        }
+        // Legend, right of the plot area, in curve order.
+        let mut ly = py + 8.0;
+        for c in self.curves.iter().filter(|c| c.name.is_some()) {
+            let color = PALETTE[c.color % PALETTE.len()];
+            let lx = px + pw + 12.0;
+            let dash = match c.stroke {
+                Stroke::Solid => None,
+                Stroke::Dashed => Some("8 5"),
+                Stroke::Dotted => Some("2 4"),
+            };
+            svg.line(lx, ly, lx + 22.0, ly, color, 2.0, dash);
+            if c.markers {
+                svg.circle(lx + 11.0, ly, 3.0, color, color);
+            }
+            svg.text(lx + 28.0, ly + 4.0, c.name.as_deref().unwrap_or(""), 11.0, "start", 0.0);
+            ly += 18.0;
+        }
+        Ok(())
+    }
+
+    /// Renders the panel alone as an SVG document.
+    ///
+    /// # Errors
+    /// [`PlotError::Empty`] when there is nothing with finite coordinates to fit the axes to;
+    /// [`PlotError::InvalidRange`] for a bad fixed range.
+    pub fn to_svg(&self) -> Result<String, PlotError> {
+        Figure { title: String::new(), panels: vec![self.clone()] }.to_svg()
+    }
+}
+
+/// Panels stacked vertically under one optional title (a Bode plot is two panels).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Figure {
+    /// Title over all panels (empty: none).
+    pub title: String,
+    /// Panels from top to bottom.
+    pub panels: Vec<Chart>,
+}
+
+impl Figure {
+    /// Renders every panel into one deterministic SVG document.
+    ///
+    /// # Errors
+    /// [`PlotError::Empty`] when there are no panels or a panel has no finite data.
+    pub fn to_svg(&self) -> Result<String, PlotError> {
+        if self.panels.is_empty() {
+            return Err(PlotError::Empty { figure: self.title.clone() });
+        }
+        let head = if self.title.is_empty() { 0.0 } else { 30.0 };
+        let mut svg = Svg::new(WIDTH, head + PANEL_HEIGHT * self.panels.len() as f64);
+        if !self.title.is_empty() {
+            svg.raw(&format!(
+                r#"<text x="{}" y="22.00" font-size="17.00" text-anchor="middle" font-weight="bold">{}</text>"#,
+                num(0.5 * WIDTH),
+                escape(&self.title)
+            ));
+        }
+        for (i, p) in self.panels.iter().enumerate() {
+            p.render(&mut svg, head + PANEL_HEIGHT * i as f64, &format!("plot-area-{i}"))?;
+        }
+        Ok(svg.finish())
+    }
+}
