@@ -36,6 +36,7 @@ impl Svg {
         self.body.push('\n');
     }
 
+    #[allow(clippy::too_many_arguments)] // two points, stroke, width, dash: the SVG attributes
     pub(crate) fn line(
         &mut self,
         x1: f64,
