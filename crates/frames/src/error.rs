@@ -38,6 +38,18 @@ pub enum FrameError {
         /// The limit it was compared with.
         limit: f64,
     },
+    /// A resolved array whose shape does not fit the object asked for.
+    #[error("shape mismatch: {detail}")]
+    Shape {
+        /// What did not match and what would.
+        detail: String,
+    },
+    /// A frame axis (or other input that must be nonzero) was the zero vector.
+    #[error("{what} is zero: a frame axis must be a nonzero vector")]
+    ZeroAxis {
+        /// Which input.
+        what: &'static str,
+    },
     /// An error from the kernel.
     #[error(transparent)]
     Tensor(#[from] vectrix_tensor::TensorError),

@@ -8,10 +8,12 @@
 mod error;
 mod frame;
 mod resolve;
+mod tensor_resolve;
 
 pub use error::FrameError;
 pub use frame::{Frame, ORTHONORMAL_TOL};
-pub use resolve::{Resolve, change_frame_dyadic, change_frame_vector};
+pub use resolve::{Resolve, change_frame_covector, change_frame_dyadic, change_frame_vector};
+pub use tensor_resolve::change_frame_tensor;
 
 /// `use vectrix_frames::prelude::*;`
 pub mod prelude {

@@ -51,6 +51,15 @@ pub fn change_frame_vector<T: Scalar>(x_in_a: &Vector3<T>, a: &Frame<T>, b: &Fra
     b.orientation_rel(a) * x_in_a
 }
 
+/// Change of frame of a resolved covector (a row): x′|_B = x′|_A 𝓞_{B/A}ᵀ, the transpose of
+/// (2.10.31) (standard frames, (2.4.20)).
+///
+/// Book: (2.10.31), (2.4.20).
+#[inline]
+pub fn change_frame_covector<T: Scalar>(x_in_a: &RowVector3<T>, a: &Frame<T>, b: &Frame<T>) -> RowVector3<T> {
+    x_in_a * b.orientation_rel(a).transpose()
+}
+
 /// Change of frame of a resolved dyadic: M|_B = 𝓞_{B/A} M|_A 𝓞_{B/A}ᵀ (book §2.10).
 #[inline]
 pub fn change_frame_dyadic<T: Scalar>(m_in_a: &Matrix3<T>, a: &Frame<T>, b: &Frame<T>) -> Matrix3<T> {
