@@ -4,7 +4,7 @@ use core::ops::{Add, Mul, Neg, Sub};
 
 use nalgebra::Vector3;
 
-use crate::{Scalar, Vector};
+use crate::{Scalar, Tensor, TensorError, Vector};
 
 /// A bivector B = b₂₃ e₂e₃ + b₃₁ e₃e₁ + b₁₂ e₁e₂ of Cl(3,0) (book §3.8): an oriented plane
 /// element. It is frame-free; its hidden components are in the same hidden basis as
@@ -54,6 +54,60 @@ impl<T: Scalar> Bivector<T> {
     #[inline]
     pub fn norm(&self) -> T {
         self.undual().norm()
+    }
+
+    /// Area of the oriented plane element: |x⃗∧y⃗| = |x⃗||y⃗| sin θ = |x⃗×y⃗| (3.7.9–10). This is
+    /// the book's magnitude, not the Frobenius norm of the dense array (√2 times larger).
+    ///
+    /// Book: (3.7.9), (3.7.10).
+    #[inline]
+    pub fn area(&self) -> T {
+        self.norm()
+    }
+
+    /// The unit bivector B/|B| (the plane with unit area); `None` for the zero bivector.
+    #[inline]
+    pub fn unit(&self) -> Option<Bivector<T>> {
+        self.undual().unit().map(|n| Bivector { c: n.c })
+    }
+
+    /// `true` when every component is finite.
+    #[inline]
+    pub fn is_finite(&self) -> bool {
+        self.undual().is_finite()
+    }
+
+    /// The dense alternating (2, 0) tensor of x⃗∧y⃗ = x⃗⊗y⃗ − y⃗⊗x⃗ (3.7.1): six nonzero
+    /// entries ±b, determinant convention.
+    ///
+    /// Book: (3.7.1), (3.7.7).
+    pub fn to_tensor(&self) -> Tensor<T> {
+        let (x, y, z) = (self.c.x, self.c.y, self.c.z);
+        let o = T::zero();
+        // (x∧y)[a][b] = ε_abc (x×y)_c
+        Tensor { p: 2, q: 0, data: vec![o, z, -y, -z, o, x, y, -x, o] }
+    }
+
+    /// The compressed bivector of a dense (2, 0) tensor, which must be alternating within
+    /// `tol` relative to its largest component.
+    ///
+    /// # Errors
+    /// [`TensorError::Shape`] for another type or a tensor that is not alternating.
+    pub fn from_tensor(t: &Tensor<T>, tol: f64) -> Result<Bivector<T>, TensorError> {
+        if (t.p, t.q) != (2, 0) {
+            return Err(TensorError::Shape {
+                detail: format!("a bivector is a (2, 0) tensor, got ({}, {})", t.p, t.q),
+            });
+        }
+        let b = Bivector { c: Vector3::new(t.data[5], t.data[6], t.data[1]) };
+        crate::wedge::check_alternating(t, &b.to_tensor(), tol)?;
+        Ok(b)
+    }
+}
+
+impl<T: Scalar> Default for Bivector<T> {
+    fn default() -> Self {
+        Self::zero()
     }
 }
 

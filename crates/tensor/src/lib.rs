@@ -14,25 +14,34 @@ mod angle;
 mod bivector;
 mod covector;
 mod dyadic;
+mod elasticity;
 mod error;
+mod multivector;
+mod pauli;
 mod rotor;
 mod scalar;
 mod tensor;
+mod trivector;
 mod vector;
+mod wedge;
 
 pub use angle::{congruent, wrap_angle};
 pub use bivector::Bivector;
 pub use covector::Covector;
 pub use dyadic::Dyadic;
 pub use error::TensorError;
-pub use rotor::Rotor;
+pub use elasticity::{HookeMap, Isotropic, hooke};
+pub use multivector::Multivector;
+pub use rotor::{Rotor, reflect};
 pub use scalar::Scalar;
-pub use tensor::{DEFAULT_MAX_COMPONENTS, Tensor};
+pub use tensor::{Arg, DEFAULT_MAX_COMPONENTS, Tensor};
+pub use trivector::Trivector;
 pub use vector::Vector;
 
 /// Everything a user of the kernel needs: `use vectrix_tensor::prelude::*;`.
 pub mod prelude {
     pub use crate::{
-        Bivector, Covector, Dyadic, Rotor, Scalar, Tensor, TensorError, Vector, congruent, wrap_angle,
+        Arg, Bivector, Covector, Dyadic, HookeMap, Isotropic, Multivector, Rotor, Scalar, Tensor, TensorError,
+        Trivector, Vector, congruent, hooke, reflect, wrap_angle,
     };
 }

@@ -1,14 +1,54 @@
 //! Tensors of type (p, q) and any order (book ch. 3).
+//!
+//! A tensor is a real-valued map of p covectors and q vectors, linear in each argument
+//! (§3.1); it is a sum of tensor products of physical vectors and covectors (3.1.13). vectrix
+//! keeps it densely, 3^(p+q) components in the hidden reference basis, **vector slots first,
+//! first slot slowest**, so that reshaping the array to 3^p × 3^q gives exactly the book's
+//! Kronecker resolution T|_A of (3.6.2) when the frame is the reference basis.
+//!
+//! The submodules are split by verb: [`product`](self) (tensor product, contraction, fused
+//! contracted product, evaluation), slot operations (coform, permutation) and the special
+//! tensors (metric, cometric, identity, ε tensor, U4).
 
-use crate::{Scalar, TensorError};
+mod product;
+mod slots;
+mod special;
 
-/// Default cap on the number of stored components (3^(p+q)): 3^14 ≈ 4.8 million.
+pub(crate) use special::levi_civita_symbol;
+
+use core::ops::{Mul, Neg};
+use core::sync::atomic::{AtomicUsize, Ordering};
+
+pub use product::Arg;
+
+use crate::{Covector, Dyadic, Scalar, TensorError, Vector};
+
+/// Default cap on the number of stored components (3^(p+q)): 3^14 = 4 782 969 (order 14,
+/// 38 MB of `f64`).
 pub const DEFAULT_MAX_COMPONENTS: usize = 4_782_969;
+
+/// The process-wide cap read by every constructor; see [`Tensor::set_max_components`].
+static MAX_COMPONENTS: AtomicUsize = AtomicUsize::new(DEFAULT_MAX_COMPONENTS);
 
 /// A tensor of type (p, q) (book §3.1): p vector slots then q covector slots, stored densely
 /// with 3^(p+q) components in the hidden basis, first slot slowest.
 ///
-/// Book: ch. 3, (3.1.x).
+/// Book: ch. 3, (3.1.13), (3.1.14), type (p, q) at L3717, canonical slot order at L3721.
+///
+/// # Conventions
+/// - *Type (p, q)*: p vector factors (they take covector arguments), then q covector factors
+///   (they take vector arguments). Order p + q.
+/// - *Slot numbering* follows the book: in a contraction (i, j) or a partial evaluation, a
+///   vector slot is numbered 1..=p within the vector group and a covector slot 1..=q within
+///   the covector group (3.2.2), (3.3.2).
+/// - Resolved in a frame A (crate `vectrix-frames`) the tensor is the 3^p × 3^q Kronecker
+///   matrix of (3.6.2): rows are the vector slots, columns the covector slots, first slot
+///   slowest.
+///
+/// # Errors
+/// Every constructor refuses an order whose 3^(p+q) components would exceed the limit
+/// ([`Tensor::max_components`]) with [`TensorError::TooLarge`]; nothing ever tries the
+/// allocation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tensor<T: Scalar = f64> {
     pub(crate) p: usize,
@@ -17,22 +57,79 @@ pub struct Tensor<T: Scalar = f64> {
 }
 
 impl<T: Scalar> Tensor<T> {
-    /// Number of components 3^(p+q) for `order`, or the `TooLarge` error.
+    /// Number of components 3^order, or [`TensorError::TooLarge`] when above `limit`.
     pub fn components_for(order: usize, limit: usize) -> Result<usize, TensorError> {
-        let needed = 3u128.checked_pow(order as u32).unwrap_or(u128::MAX);
+        let needed = u32::try_from(order).ok().and_then(|k| 3u128.checked_pow(k)).unwrap_or(u128::MAX);
         if needed > limit as u128 {
             return Err(TensorError::TooLarge { order, needed, limit });
         }
         Ok(needed as usize)
     }
 
+    /// The current cap on stored components (default [`DEFAULT_MAX_COMPONENTS`]).
+    pub fn max_components() -> usize {
+        MAX_COMPONENTS.load(Ordering::Relaxed)
+    }
+
+    /// Sets the process-wide cap on stored components used by every tensor constructor and
+    /// operation; returns the previous cap. Raise it for high-order work (3^16 components need
+    /// 344 MB of `f64`), lower it to fail early.
+    pub fn set_max_components(limit: usize) -> usize {
+        MAX_COMPONENTS.swap(limit, Ordering::Relaxed)
+    }
+
+    /// Components for a (p, q) tensor under the current cap.
+    pub(crate) fn checked_len(p: usize, q: usize) -> Result<usize, TensorError> {
+        Self::components_for(p.saturating_add(q), Self::max_components())
+    }
+
     /// The zero tensor of type (p, q).
     ///
     /// # Errors
-    /// [`TensorError::TooLarge`] when 3^(p+q) exceeds [`DEFAULT_MAX_COMPONENTS`].
+    /// [`TensorError::TooLarge`] when 3^(p+q) exceeds [`Tensor::max_components`].
     pub fn zeros(p: usize, q: usize) -> Result<Self, TensorError> {
-        let n = Self::components_for(p + q, DEFAULT_MAX_COMPONENTS)?;
+        let n = Self::checked_len(p, q)?;
         Ok(Self { p, q, data: vec![T::zero(); n] })
+    }
+
+    /// A scalar as a tensor of type (0, 0) (order 0, book L3717).
+    pub fn scalar(s: T) -> Self {
+        Self { p: 0, q: 0, data: vec![s] }
+    }
+
+    /// The vector x⃗ as a (1, 0) tensor.
+    pub fn from_vector(x: &Vector<T>) -> Self {
+        Self { p: 1, q: 0, data: x.c.as_slice().to_vec() }
+    }
+
+    /// The covector x⃗′ as a (0, 1) tensor.
+    pub fn from_covector(x: &Covector<T>) -> Self {
+        Self { p: 0, q: 1, data: x.c.as_slice().to_vec() }
+    }
+
+    /// The physical matrix M⃗ as a (1, 1) tensor: w⃗⊗z⃗′ ≡ w⃗z⃗′ (3.1.23).
+    ///
+    /// Book: (3.1.23).
+    pub fn from_dyadic(m: &Dyadic<T>) -> Self {
+        let data = (0..9).map(|k| m.m[(k / 3, k % 3)]).collect();
+        Self { p: 1, q: 1, data }
+    }
+
+    /// The product w⃗₁⊗…⊗w⃗_p⊗z⃗′₁⊗…⊗z⃗′_q of (3.1.13), a tensor of type (p, q).
+    ///
+    /// Book: (3.1.13), (3.6.1).
+    ///
+    /// # Errors
+    /// [`TensorError::TooLarge`] when 3^(p+q) exceeds the cap.
+    pub fn from_factors(vectors: &[Vector<T>], covectors: &[Covector<T>]) -> Result<Self, TensorError> {
+        let mut t = Self::scalar(T::one());
+        for w in vectors {
+            t = t.otimes(&Self::from_vector(w))?;
+        }
+        for z in covectors {
+            t = t.otimes(&Self::from_covector(z))?;
+        }
+        Ok(t)
     }
 
     /// Vector slots p.
@@ -50,10 +147,50 @@ impl<T: Scalar> Tensor<T> {
         self.p + self.q
     }
 
+    /// The (1, 0) tensor as a vector; `None` for any other type.
+    pub fn to_vector(&self) -> Option<Vector<T>> {
+        (self.p == 1 && self.q == 0).then(|| Vector { c: nalgebra::Vector3::from_column_slice(&self.data) })
+    }
+
+    /// The (0, 1) tensor as a covector; `None` for any other type.
+    pub fn to_covector(&self) -> Option<Covector<T>> {
+        (self.p == 0 && self.q == 1).then(|| Covector { c: nalgebra::Vector3::from_column_slice(&self.data) })
+    }
+
+    /// The (1, 1) tensor as a physical matrix (3.1.23); `None` for any other type.
+    pub fn to_dyadic(&self) -> Option<Dyadic<T>> {
+        (self.p == 1 && self.q == 1).then(|| Dyadic { m: nalgebra::Matrix3::from_row_slice(&self.data) })
+    }
+
+    /// The (0, 0) tensor as its scalar; `None` for any other type.
+    pub fn to_scalar(&self) -> Option<T> {
+        (self.order() == 0).then(|| self.data[0])
+    }
+
+    /// Frobenius norm of the dense array (frame-independent for orthonormal frames). For an
+    /// alternating tensor this is √(k!) times the geometric magnitude; see
+    /// [`Tensor::alternating_magnitude`].
+    pub fn frobenius_norm(&self) -> T {
+        self.data.iter().fold(T::zero(), |s, &x| s + x * x).sqrt()
+    }
+
+    /// Largest absolute difference of components from `other`; `None` when the types differ.
+    pub fn max_abs_diff(&self, other: &Tensor<T>) -> Option<T> {
+        if (self.p, self.q) != (other.p, other.q) {
+            return None;
+        }
+        Some(self.data.iter().zip(&other.data).fold(T::zero(), |m, (&a, &b)| m.max((a - b).abs())))
+    }
+
+    /// `true` when every component is finite.
+    pub fn is_finite(&self) -> bool {
+        crate::scalar::all_finite(&self.data)
+    }
+
     /// Reserved for `vectrix-frames` (see [`crate::Vector::from_hidden`]).
     #[doc(hidden)]
     pub fn from_hidden(p: usize, q: usize, data: Vec<T>) -> Result<Self, TensorError> {
-        let n = Self::components_for(p + q, usize::MAX)?;
+        let n = Self::components_for(p.saturating_add(q), usize::MAX)?;
         if data.len() != n {
             return Err(TensorError::Shape {
                 detail: format!("a ({p}, {q}) tensor has {n} components, got {}", data.len()),
@@ -66,5 +203,52 @@ impl<T: Scalar> Tensor<T> {
     #[doc(hidden)]
     pub fn hidden(&self) -> &[T] {
         &self.data
+    }
+
+    /// Sum of two tensors of the same type.
+    ///
+    /// # Errors
+    /// [`TensorError::Shape`] when the types differ.
+    pub fn try_add(&self, other: &Tensor<T>) -> Result<Tensor<T>, TensorError> {
+        self.same_type(other, "add")?;
+        let data = self.data.iter().zip(&other.data).map(|(&a, &b)| a + b).collect();
+        Ok(Tensor { p: self.p, q: self.q, data })
+    }
+
+    /// Difference of two tensors of the same type.
+    ///
+    /// # Errors
+    /// [`TensorError::Shape`] when the types differ.
+    pub fn try_sub(&self, other: &Tensor<T>) -> Result<Tensor<T>, TensorError> {
+        self.same_type(other, "subtract")?;
+        let data = self.data.iter().zip(&other.data).map(|(&a, &b)| a - b).collect();
+        Ok(Tensor { p: self.p, q: self.q, data })
+    }
+
+    fn same_type(&self, other: &Tensor<T>, verb: &str) -> Result<(), TensorError> {
+        if (self.p, self.q) != (other.p, other.q) {
+            return Err(TensorError::Shape {
+                detail: format!(
+                    "cannot {verb} a ({}, {}) tensor and a ({}, {}) tensor: the types must be equal",
+                    self.p, self.q, other.p, other.q
+                ),
+            });
+        }
+        Ok(())
+    }
+}
+
+impl<T: Scalar> Neg for &Tensor<T> {
+    type Output = Tensor<T>;
+    fn neg(self) -> Tensor<T> {
+        Tensor { p: self.p, q: self.q, data: self.data.iter().map(|&a| -a).collect() }
+    }
+}
+
+/// Scaling α T (3.5.5 analogue: a scalar is a tensor of order 0).
+impl<T: Scalar> Mul<T> for &Tensor<T> {
+    type Output = Tensor<T>;
+    fn mul(self, s: T) -> Tensor<T> {
+        Tensor { p: self.p, q: self.q, data: self.data.iter().map(|&a| a * s).collect() }
     }
 }
