@@ -1,5 +1,70 @@
-//! vectrix-rotation (in progress).
+//! # vectrix-rotation: every attitude representation, exact where peers are not
+//!
+//! Book: §2.8–2.22 (Bernstein, Goel, Ansari), notes ch1-2a and ch2b with errata.
+//!
+//! - [`Rotation`] is the physical, frame-free rotation R⃗_{B/A} (a unit rotor inside; why:
+//!   see the module docs of `rotation`). Numbers come out only through a frame:
+//!   `r.rotation_matrix_in(&a)` = 𝓡_{B/A}, `r.quaternion_in(&a)` = q_{B/A}, …
+//! - Numeric representations resolved in one frame: [`Quaternion`] (Hamilton, scalar first,
+//!   η ≥ 0), [`AxisAngle`], angle vectors (`nalgebra::Vector3`), Gibbs vectors (`Option` at
+//!   π), modified Rodrigues parameters with the shadow set, [`EulerAngles`] in all 12
+//!   sequences (intrinsic as the book, extrinsic as an option), elementary 𝓞_i and 𝓡_i.
+//! - Rigid displacements, [`Screw`]s (Chasles made constructive), chains and homogeneous
+//!   transforms.
+//!
+//! # Conventions
+//! - 𝓡_{B/A} = R⃗_{B/A}|_A is active (columns = B's axes resolved in A); 𝓞_{B/A} = 𝓡_{B/A}ᵀ is
+//!   passive (x|_B = 𝓞_{B/A} x|_A). Composition: R⃗_{C/A} = R⃗_{C/B}R⃗_{B/A};
+//!   𝓞_{C/A} = 𝓞_{C/B}𝓞_{B/A}; 𝓡_{C/A} = 𝓡_{B/A}𝓡_{C/B}; q_{C/A} = ±q_{B/A}⊗q_{C/B}.
+//! - Eigenangle θ ∈ [0, π]; at θ = π the axis has the canonical sign (first nonzero component
+//!   positive in the frame of resolution).
+//! - Euler sequence i-j-k, angles in the order applied, each about the new frame's axis:
+//!   𝓞_{D/A} = 𝓞_k(γ)𝓞_j(β)𝓞_i(α).
 #![warn(missing_docs)]
 
+mod axis;
+mod axis_angle;
+mod compose;
+mod error;
+mod euler;
+mod euler_extract;
+mod euler_parameters;
+mod interop;
+mod matrix;
+mod mrp;
+mod quaternion;
+mod resolved;
+mod rigid;
+mod rotation;
+mod series;
+
+pub use axis::{Axis, orientation_about, quaternion_about, rotation_about};
+pub use axis_angle::AxisAngle;
+pub use compose::{
+    compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation,
+    compose_quaternion, compose_rotation_matrix,
+};
+pub use error::RotationError;
+pub use euler::{EulerAngles, EulerKind, EulerSequence};
+pub use euler_extract::{EulerSolution, GIMBAL_LOCK_TOL};
+pub use euler_parameters::canonical_half_turn_axis;
+pub use interop::scaled_axis;
+pub use matrix::{ROTATION_TOL, check_rotation_matrix, nearest_rotation};
+pub use mrp::mrp_shadow;
+pub use quaternion::Quaternion;
+pub use rigid::{
+    ChainLink, RigidDisplacement, Screw, chain_backward, chain_forward, homogeneous, homogeneous_inverse,
+};
+pub use rotation::Rotation;
+
 /// `use vectrix_rotation::prelude::*;`
-pub mod prelude {}
+pub mod prelude {
+    pub use crate::{
+        Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, EulerSolution, Quaternion,
+        RigidDisplacement, Rotation, RotationError, Screw, chain_backward, chain_forward,
+        check_rotation_matrix, compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs,
+        compose_mrp, compose_orientation, compose_quaternion, compose_rotation_matrix, homogeneous,
+        homogeneous_inverse, mrp_shadow, nearest_rotation, orientation_about, quaternion_about,
+        rotation_about,
+    };
+}

@@ -1,0 +1,158 @@
+//! Euler-angle extraction: one generic atan2/hypot algorithm for all 12 sequences
+//! (book §2.13, Facts 2.13.3–8 with corrected signs; notes ch2b §3.7).
+//!
+//! Work on 𝓡 = 𝓡_i(α)𝓡_j(β)𝓡_k(γ) (intrinsic; an extrinsic sequence is the reversed intrinsic
+//! one). With zero-based axes and ε = +1 when (i, j, k) is cyclic, −1 otherwise:
+//!
+//! - Tait–Bryan (i ≠ k): β = atan2(ε𝓡_ik, hypot(𝓡_ii, 𝓡_ij)), α = atan2(−ε𝓡_jk, 𝓡_kk),
+//!   γ = atan2(−ε𝓡_ij, 𝓡_ii); lock when cos β = hypot(𝓡_ii, 𝓡_ij) ≈ 0.
+//! - symmetric (k = i, m the third axis, ε the parity of (i, j, m)):
+//!   β = atan2(hypot(𝓡_ij, 𝓡_im), 𝓡_ii), α = atan2(𝓡_ji, −ε𝓡_mi), γ = atan2(𝓡_ij, ε𝓡_im);
+//!   lock when sin β ≈ 0.
+//!
+//! For 3-2-1 on 𝓞 = 𝓡ᵀ these are the notes' Ψ = atan2(o₁₂, o₁₁), Θ = atan2(−o₁₃,
+//! hypot(o₁₁, o₁₂)), Φ = atan2(o₂₃, o₃₃), i.e. the book's F2.13.3 with the erratum
+//! (2.13.17–18) corrected (b ≡ −asin r₁₃, never "b ≡ −r₁₃").
+
+use nalgebra::Matrix3;
+use vectrix_tensor::{Scalar, wrap_angle};
+
+use crate::{EulerAngles, EulerSequence, Quaternion, RotationError, check_rotation_matrix, rotation_about};
+
+/// Default gimbal-lock tolerance on cos β (Tait–Bryan) or sin β (symmetric): 4ε. Below it only
+/// a combination of the outer angles is determined.
+pub const GIMBAL_LOCK_TOL: f64 = 4.0 * f64::EPSILON;
+
+/// The outcome of Euler-angle extraction: two solutions, or gimbal lock as a value.
+///
+/// Book: Facts 2.13.3–8 (F2.13.5 and F2.13.8 for the lock, with the corrected signs of
+/// (2.13.34/36)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum EulerSolution<T: Scalar = f64> {
+    /// Away from lock: the principal solution (β ∈ [−π/2, π/2] Tait–Bryan, β ∈ [0, π]
+    /// symmetric; α, γ ∈ (−π, π]) and the alternate one (α+π, π−β, γ+π) Tait–Bryan or
+    /// (α+π, −β, γ+π) symmetric, wrapped.
+    Regular {
+        /// Principal solution.
+        principal: EulerAngles<T>,
+        /// The other solution.
+        alternate: EulerAngles<T>,
+    },
+    /// At lock (β = ±π/2 Tait–Bryan, β ∈ {0, π} symmetric) only α + sign·γ is determined.
+    GimbalLock {
+        /// The middle angle β.
+        middle: T,
+        /// The determined combination α + sign·γ ∈ (−π, π] (the first and last angle as
+        /// applied, even for extrinsic sequences).
+        combination: T,
+        /// +1 when α + γ is determined, −1 when α − γ is.
+        sign: i8,
+        /// A representative: (combination, β, 0).
+        representative: EulerAngles<T>,
+    },
+}
+
+impl<T: Scalar> EulerSolution<T> {
+    /// The principal solution, or the lock representative (γ = 0).
+    pub fn principal(&self) -> EulerAngles<T> {
+        match self {
+            EulerSolution::Regular { principal, .. } => *principal,
+            EulerSolution::GimbalLock { representative, .. } => *representative,
+        }
+    }
+
+    /// `true` at gimbal lock.
+    pub fn is_gimbal_lock(&self) -> bool {
+        matches!(self, EulerSolution::GimbalLock { .. })
+    }
+}
+
+/// Parity ε of the zero-based axes (i, j, k) all distinct: +1 cyclic, −1 anticyclic.
+#[inline]
+fn parity(i: usize, j: usize) -> f64 {
+    if (j + 3 - i) % 3 == 1 { 1.0 } else { -1.0 }
+}
+
+impl<T: Scalar> EulerAngles<T> {
+    /// Extracts Euler angles of `sequence` from 𝓡_{D/A} (checked), lock tolerance
+    /// [`GIMBAL_LOCK_TOL`].
+    ///
+    /// Book: §2.13, Facts 2.13.3–8.
+    ///
+    /// # Errors
+    /// As [`check_rotation_matrix`] with `tol`.
+    pub fn from_rotation_matrix(
+        r: &Matrix3<T>,
+        sequence: EulerSequence,
+        tol: f64,
+    ) -> Result<EulerSolution<T>, RotationError> {
+        check_rotation_matrix(r, tol)?;
+        Ok(Self::from_rotation_matrix_unchecked(r, sequence, GIMBAL_LOCK_TOL))
+    }
+
+    /// Extraction from the Euler parameters q_{D/A} (through 𝓡(q), exact to a few ulps).
+    ///
+    /// Book: §2.13, §2.15.
+    pub fn from_quaternion(q: &Quaternion<T>, sequence: EulerSequence) -> EulerSolution<T> {
+        Self::from_rotation_matrix_unchecked(&q.rotation_matrix(), sequence, GIMBAL_LOCK_TOL)
+    }
+
+    /// The generic extraction without the orthonormality check, with the lock tolerance
+    /// `lock_tol` on cos β (Tait–Bryan) or sin β (symmetric).
+    ///
+    /// Book: §2.13; notes ch2b §3.7 (atan2/hypot, never asin/acos).
+    pub fn from_rotation_matrix_unchecked(
+        r: &Matrix3<T>,
+        sequence: EulerSequence,
+        lock_tol: f64,
+    ) -> EulerSolution<T> {
+        let (seq, reversed) = sequence.as_intrinsic_reversed();
+        let [ai, aj, ak] = seq.axes();
+        let (i, j, k) = (ai.i0(), aj.i0(), ak.i0());
+        let pi = T::pi();
+        let (alpha, beta, gamma, lock_measure, sign);
+        if i != k {
+            // Tait–Bryan: 𝓡_ik = ε sin β, 𝓡_ii = cos β cos γ, 𝓡_ij = −ε cos β sin γ, …
+            let e = T::lit(parity(i, j));
+            let cb = r[(i, i)].hypot(r[(i, j)]);
+            beta = (e * r[(i, k)]).atan2(cb);
+            alpha = (-e * r[(j, k)]).atan2(r[(k, k)]);
+            gamma = (-e * r[(i, j)]).atan2(r[(i, i)]);
+            lock_measure = cb.re();
+            // F2.13.5 generalised: at β = ±π/2, α + ε·sign(sin β)·γ is determined.
+            sign = if (e * beta).re() >= 0.0 { 1 } else { -1 };
+        } else {
+            // Symmetric: 𝓡_ii = cos β, 𝓡_ij = sin β sin γ, 𝓡_im = ε sin β cos γ, …
+            let m = 3 - i - j;
+            let e = T::lit(parity(i, j));
+            let sb = r[(i, j)].hypot(r[(i, m)]);
+            beta = sb.atan2(r[(i, i)]);
+            alpha = r[(j, i)].atan2(-e * r[(m, i)]);
+            gamma = r[(i, j)].atan2(e * r[(i, m)]);
+            lock_measure = sb.re();
+            // F2.13.8 (corrected): β = 0 fixes α + γ, β = π fixes α − γ.
+            sign = if r[(i, i)].re() >= 0.0 { 1 } else { -1 };
+        }
+        let out = |a: T, b: T, c: T| {
+            let ang = if reversed { [c, b, a] } else { [a, b, c] };
+            EulerAngles::new(sequence, ang.map(wrap_angle))
+        };
+        if lock_measure <= lock_tol {
+            // Gimbal lock: set γ = 0, then 𝓡_i(α) = 𝓡 𝓡_j(β)ᵀ and α is the combination.
+            let m = r * rotation_about(aj, -beta);
+            let (p, q) = ((i + 1) % 3, (i + 2) % 3);
+            let combination = wrap_angle(m[(q, p)].atan2(m[(p, p)]));
+            // Extrinsic: the reversed sequence fixes γ + sign·α = sign·(α + sign·γ).
+            let applied = if reversed && sign < 0 { wrap_angle(-combination) } else { combination };
+            return EulerSolution::GimbalLock {
+                middle: beta,
+                combination: applied,
+                sign,
+                representative: out(combination, beta, T::zero()),
+            };
+        }
+        let alternate =
+            if i != k { out(alpha + pi, pi - beta, gamma + pi) } else { out(alpha + pi, -beta, gamma + pi) };
+        EulerSolution::Regular { principal: out(alpha, beta, gamma), alternate }
+    }
+}

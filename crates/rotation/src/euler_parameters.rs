@@ -1,0 +1,288 @@
+//! Quaternions as Euler parameters of a rotation (book §2.14–2.17): conversions with
+//! 𝓡, eigenaxis and angle, angle vector, Gibbs vector and modified Rodrigues parameters.
+//!
+//! Every conversion here works on components resolved in one frame: q_{B/A} describes
+//! 𝓡_{B/A} = R⃗_{B/A}|_A (= R⃗_{B/A}|_B, Fact 2.10.1), the active rotation
+//! 𝓡(q)x = 𝐪𝐱𝐪̄ (Prob 2.26.23).
+
+use nalgebra::{Matrix3, Vector3};
+use vectrix_tensor::Scalar;
+
+use crate::series::{all_finite, canonical_sign, norm3, sinc};
+use crate::{AxisAngle, Quaternion, RotationError, check_rotation_matrix};
+
+impl<T: Scalar> Quaternion<T> {
+    /// Euler parameters of the rotation matrix 𝓡 (checked): Shepperd's method in Markley's
+    /// form, then η ≥ 0.
+    ///
+    /// Book: §2.15, (2.15.2), (2.15.8–10) replaced by the largest-pivot method (notes ch2b
+    /// §3.2: the printed η = ½√(1 + tr 𝓡) loses 1e-4 at θ = π − 1e-6).
+    ///
+    /// # Errors
+    /// As [`check_rotation_matrix`]: non-finite, not orthonormal within `tol`, or det < 0.
+    /// Noisy matrices must be projected explicitly with [`crate::nearest_rotation`].
+    #[doc(alias = "from_dcm")]
+    #[doc(alias = "from_matrix")]
+    pub fn from_rotation_matrix(r: &Matrix3<T>, tol: f64) -> Result<Self, RotationError> {
+        check_rotation_matrix(r, tol)?;
+        Ok(Self::from_rotation_matrix_unchecked(r))
+    }
+
+    /// Shepperd/Markley without the orthonormality check, for hot paths whose input is a
+    /// rotation by construction. The result is normalised and canonical (η ≥ 0).
+    ///
+    /// Book: §2.15 (2.15.8–10), largest pivot among {tr 𝓡, 𝓡₁₁, 𝓡₂₂, 𝓡₃₃}.
+    #[inline]
+    pub fn from_rotation_matrix_unchecked(r: &Matrix3<T>) -> Self {
+        let (r11, r22, r33) = (r[(0, 0)], r[(1, 1)], r[(2, 2)]);
+        let tr = r11 + r22 + r33;
+        let one = T::one();
+        // Each candidate is 4·(pivot component)·q; the largest pivot has no cancellation.
+        let q = if tr >= r11 && tr >= r22 && tr >= r33 {
+            // (2.15.8–10): 4η·[η; ε], η = ½√(1 + tr 𝓡)
+            Self::new(one + tr, r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)])
+        } else if r11 >= r22 && r11 >= r33 {
+            Self::new(
+                r[(2, 1)] - r[(1, 2)],
+                one + r11 - r22 - r33,
+                r[(0, 1)] + r[(1, 0)],
+                r[(0, 2)] + r[(2, 0)],
+            )
+        } else if r22 >= r33 {
+            Self::new(
+                r[(0, 2)] - r[(2, 0)],
+                r[(0, 1)] + r[(1, 0)],
+                one + r22 - r11 - r33,
+                r[(1, 2)] + r[(2, 1)],
+            )
+        } else {
+            Self::new(
+                r[(1, 0)] - r[(0, 1)],
+                r[(0, 2)] + r[(2, 0)],
+                r[(1, 2)] + r[(2, 1)],
+                one + r33 - r11 - r22,
+            )
+        };
+        (q * (one / q.norm())).canonical()
+    }
+
+    /// The canonical sign: η ≥ 0, and at η = 0 (θ = π) the first nonzero component of ε
+    /// positive (DESIGN §4).
+    ///
+    /// Book: (2.15.20), η = cos(θ/2) ≥ 0 since θ ∈ [0, π]; Fact 2.11.5 (the ± at π).
+    #[inline]
+    pub fn canonical(&self) -> Self {
+        if self.a > T::zero() {
+            *self
+        } else if self.a < T::zero() {
+            -*self
+        } else {
+            // θ = π: ±ε describe the same half-turn; pick the canonical one.
+            Self::from_parts(self.a, canonical_sign(self.epsilon()))
+        }
+    }
+
+    /// `true` when |‖𝐪‖ − 1| ≤ `tol`.
+    #[inline]
+    pub fn is_unit(&self, tol: f64) -> bool {
+        (self.norm().re() - 1.0).abs() <= tol
+    }
+
+    /// 𝓡(q) (2.15.14), the active rotation matrix 𝓡_{B/A} of q_{B/A}; assumes |q| = 1.
+    ///
+    /// Book: Fact 2.15.3, (2.15.14); (2.15.13) prints the (1,1) entry as 2d² + 2b² − 1, an
+    /// erratum for 2a² + 2b² − 1.
+    #[inline]
+    #[doc(alias = "to_rotation_matrix")]
+    pub fn rotation_matrix(&self) -> Matrix3<T> {
+        let (a, b, c, d) = (self.a, self.b, self.c, self.d);
+        let two = T::lit(2.0);
+        let (bb, cc, dd) = (b * b, c * c, d * d);
+        let (ab, ac, ad, bc, bd, cd) = (a * b, a * c, a * d, b * c, b * d, c * d);
+        let one = T::one();
+        Matrix3::new(
+            one - two * (cc + dd),
+            two * (bc - ad),
+            two * (ac + bd),
+            two * (ad + bc),
+            one - two * (bb + dd),
+            two * (cd - ab),
+            two * (bd - ac),
+            two * (ab + cd),
+            one - two * (bb + cc),
+        )
+    }
+
+    /// 𝓞(q) = 𝓡(q)ᵀ = 𝓡(q̄) (Fact 2.15.6), the passive orientation matrix 𝓞_{B/A}.
+    ///
+    /// Book: (2.15.31).
+    #[inline]
+    #[doc(alias = "dcm")]
+    pub fn orientation_matrix(&self) -> Matrix3<T> {
+        self.conjugate().rotation_matrix()
+    }
+
+    /// 𝓡(q)x = 𝐪𝐱𝐪̄ (Prob 2.26.23), evaluated as x + 2η(ε×x) + 2ε×(ε×x).
+    #[inline]
+    pub fn rotate(&self, x: &Vector3<T>) -> Vector3<T> {
+        let e = self.epsilon();
+        let t = e.cross(x) * T::lit(2.0);
+        x + t * self.a + e.cross(&t)
+    }
+
+    /// q = (cos θ/2, sin θ/2 n̂) (2.15.20) for any θ and nonzero axis (normalised here),
+    /// returned canonical (η ≥ 0).
+    ///
+    /// # Errors
+    /// [`RotationError::Zero`] for a zero axis, [`RotationError::NonFinite`].
+    pub fn from_axis_angle(axis: &Vector3<T>, theta: T) -> Result<Self, RotationError> {
+        if !all_finite(axis.iter().copied().chain([theta])) {
+            return Err(RotationError::NonFinite { what: "axis or angle" });
+        }
+        let n = norm3(axis);
+        if n == T::zero() {
+            return Err(RotationError::Zero { what: "rotation axis" });
+        }
+        let h = theta * T::lit(0.5);
+        Ok(Self::from_parts(h.cos(), axis * (h.sin() / n)).canonical())
+    }
+
+    /// Eigenaxis and eigenangle θ = 2 atan2(|ε|, η) ∈ [0, π] (never acos), resolved in the
+    /// quaternion's frame. Exact comparisons decide the variant: `Identity` only for ε = 0,
+    /// `HalfTurn` only for η = 0 (canonical axis sign there).
+    ///
+    /// Book: §2.11, Facts 2.11.4–5, (2.11.49); notes ch2b §3.1.
+    pub fn axis_angle(&self) -> AxisAngle<T, Vector3<T>> {
+        let q = self.canonical();
+        let e = q.epsilon();
+        let s = norm3(&e);
+        if s == T::zero() {
+            // Fact 2.11.4: θ = 0, any axis.
+            return AxisAngle::Identity;
+        }
+        let n = e / s;
+        if q.a == T::zero() {
+            // Fact 2.11.5: θ = π, axis ±n̂, canonical sign already chosen by `canonical`.
+            return AxisAngle::HalfTurn(n);
+        }
+        AxisAngle::General { axis: n, angle: T::lit(2.0) * s.atan2(q.a) }
+    }
+
+    /// exp: the Euler parameters of the angle vector Θ = θn̂ (2.14.5), q = (cos θ/2,
+    /// ½ sinc(θ/2) Θ), i.e. 𝐪 = e^{Θ/2} (Prob 2.26.22), series near θ = 0, canonical η ≥ 0.
+    ///
+    /// Book: §2.14, Prob 2.26.22.
+    #[doc(alias = "from_rotvec")]
+    #[doc(alias = "from_scaled_axis")]
+    #[inline]
+    pub fn from_angle_vector(theta: &Vector3<T>) -> Self {
+        let t = norm3(theta);
+        let h = t * T::lit(0.5);
+        Self::from_parts(h.cos(), theta * (T::lit(0.5) * sinc(h))).canonical()
+    }
+
+    /// log: the angle vector Θ = θn̂ with θ ∈ [0, π], from θ = 2 atan2(|ε|, η); the series
+    /// 2/η·(1 − |ε|²/(3η²)) near θ = 0; at θ = π the canonical sign (first nonzero component
+    /// positive).
+    ///
+    /// Book: §2.14 (log map, L2477), (2.14.17) replaced by the quaternion route (notes ch2b
+    /// §3.5: θ/(2 sin θ) is singular at both ends).
+    #[doc(alias = "as_rotvec")]
+    #[doc(alias = "scaled_axis")]
+    #[inline]
+    pub fn angle_vector(&self) -> Vector3<T> {
+        let q = self.canonical();
+        let (eta, e) = (q.a, q.epsilon());
+        let s2 = e.norm_squared();
+        // 2 atan(t)/s = (2/η)(1 − t²/3 + t⁴/5 − …), t = |ε|/η; t⁴/5 < 2·10⁻²¹ below t² = 1e-10.
+        let ratio = if s2.re() < 1e-10 * (eta * eta).re() {
+            T::lit(2.0) / eta * (T::one() - s2 / (T::lit(3.0) * eta * eta))
+        } else {
+            let s = norm3(&e);
+            T::lit(2.0) * s.atan2(eta) / s
+        };
+        e * ratio
+    }
+
+    /// Gibbs vector g = ε/η = tan(θ/2) n̂ (2.17.1, F2.17.2); `None` at θ = π (η = 0), where the
+    /// book leaves it undefined (§2.18). Near π it is finite but huge.
+    ///
+    /// Book: §2.17, (2.17.1), (2.17.10).
+    #[doc(alias = "classical_rodrigues_parameters")]
+    #[inline]
+    pub fn gibbs(&self) -> Option<Vector3<T>> {
+        let q = self.canonical();
+        (q.a != T::zero()).then(|| q.epsilon() / q.a)
+    }
+
+    /// The Gibbs vector, with [`RotationError::GibbsAtHalfTurn`] at θ = π.
+    ///
+    /// Book: §2.17–2.18.
+    ///
+    /// # Errors
+    /// [`RotationError::GibbsAtHalfTurn`] when η = 0.
+    pub fn try_gibbs(&self) -> Result<Vector3<T>, RotationError> {
+        self.gibbs().ok_or(RotationError::GibbsAtHalfTurn { eta: self.a.re() })
+    }
+
+    /// Euler parameters of the Gibbs vector: q = (1, g)/√(1 + g·g), scaled for huge |g|.
+    ///
+    /// Book: (2.17.1), inverse of F2.17.2.
+    #[inline]
+    pub fn from_gibbs(g: &Vector3<T>) -> Self {
+        let n = norm3(g);
+        let one = T::one();
+        if n > one {
+            // (1/n, ĝ)/√(1 + 1/n²): no overflow of g·g near θ = π.
+            let r = one / n;
+            Self::from_parts(r, g * r) * (one / (one + r * r).sqrt())
+        } else {
+            Self::from_parts(one, *g) * (one / (one + n * n).sqrt())
+        }
+    }
+
+    /// Modified Rodrigues parameters p = ε/(1 + η) = tan(θ/4) n̂, |p| ≤ 1 (η ≥ 0). Not in the
+    /// book; users of spacecraft attitude expect them.
+    ///
+    /// Book: extends §2.17 (Gibbs, tan(θ/2)) to tan(θ/4).
+    #[doc(alias = "modified_rodrigues_parameters")]
+    #[inline]
+    pub fn mrp(&self) -> Vector3<T> {
+        let q = self.canonical();
+        q.epsilon() / (T::one() + q.a)
+    }
+
+    /// Euler parameters of MRPs p (or their shadow): q = (1 − p·p, 2p)/(1 + p·p), canonical.
+    ///
+    /// Book: extends §2.17.
+    #[inline]
+    pub fn from_mrp(p: &Vector3<T>) -> Self {
+        let p2 = p.norm_squared();
+        let one = T::one();
+        let k = one / (one + p2);
+        Self::from_parts((one - p2) * k, p * (T::lit(2.0) * k)).canonical()
+    }
+
+    /// Spherical linear interpolation from `self` (t = 0) to `q` (t = 1) along the shorter arc,
+    /// with the angle by atan2 and sinc series (no division by sin Ω near Ω = 0).
+    ///
+    /// Book: §2.14 (geodesic exp(tΘ)); not printed in the book.
+    pub fn slerp(&self, q: &Quaternion<T>, t: T) -> Self {
+        let mut q1 = *q;
+        if self.dot(&q1) < T::zero() {
+            q1 = -q1;
+        }
+        // self ⊗ exp(t log(self⁻¹ ⊗ q))
+        let d = self.conjugate() * q1;
+        let theta = Self::angle_vector(&d) * t;
+        (*self * Self::from_angle_vector(&theta)).canonical()
+    }
+}
+
+/// The canonical axis of a half-turn in one frame: first nonzero component positive.
+///
+/// Book: Fact 2.11.5; DESIGN §4.
+#[inline]
+pub fn canonical_half_turn_axis<T: Scalar>(n: &Vector3<T>) -> Vector3<T> {
+    canonical_sign(*n)
+}
