@@ -7,15 +7,19 @@
 
 mod error;
 mod frame;
+mod gradient;
+mod nonstandard;
 mod resolve;
 mod tensor_resolve;
 
 pub use error::FrameError;
 pub use frame::{Frame, ORTHONORMAL_TOL};
+pub use gradient::{gradient, gradient_central_difference, gradient_of_inverse_power, gradient_of_norm};
+pub use nonstandard::{Components, MAX_CONDITION, NonstandardFrame};
 pub use resolve::{Resolve, change_frame_covector, change_frame_dyadic, change_frame_vector};
 pub use tensor_resolve::change_frame_tensor;
 
 /// `use vectrix_frames::prelude::*;`
 pub mod prelude {
-    pub use crate::{Frame, FrameError, ORTHONORMAL_TOL, Resolve};
+    pub use crate::{Components, Frame, FrameError, NonstandardFrame, ORTHONORMAL_TOL, Resolve};
 }

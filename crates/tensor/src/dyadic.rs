@@ -66,23 +66,29 @@ impl<T: Scalar> Dyadic<T> {
         self.m.determinant()
     }
 
-    /// Inverse M⃗⁻¹.
+    /// Inverse M⃗⁻¹, by the adjugate of M⃗/‖M⃗‖ (exact for 3 × 3 and differentiable for dual
+    /// numbers); (M⃗⁻¹)|_A = (M⃗|_A)⁻¹ (Fact 2.6.5).
+    ///
+    /// Book: §2.6, Fact 2.6.5.
     ///
     /// # Errors
-    /// [`TensorError::Singular`] when |det M| ≤ `rel_tol`·‖M‖³ (relative to the Frobenius
-    /// norm, so the test does not depend on units); [`TensorError::NonFinite`] for NaN/∞.
+    /// [`TensorError::NonFinite`] for NaN/∞; [`TensorError::Singular`] when
+    /// |det(M⃗/‖M⃗‖_F)| ≤ `rel_tol` (scale-free, so the test does not depend on units and does
+    /// not overflow for huge entries). The reported `det` is that of the scaled dyadic.
     pub fn inverse(&self, rel_tol: f64) -> Result<Dyadic<T>, TensorError> {
         if !self.is_finite() {
             return Err(TensorError::NonFinite { what: "dyadic" });
         }
-        let det = self.determinant().re();
-        let scale = self.m.norm().re();
-        let tol = rel_tol * scale * scale * scale;
-        if det.abs() <= tol || scale == 0.0 {
-            return Err(TensorError::Singular { det, tol });
+        let scale = self.m.norm();
+        if scale == T::zero() {
+            return Err(TensorError::Singular { det: 0.0, tol: rel_tol });
         }
-        // Adjugate / det: exact for 3×3 and differentiable for dual numbers.
-        let m = &self.m;
+        // Work with M/‖M‖ so that det neither over- nor underflows: M⁻¹ = (M/s)⁻¹ / s.
+        let m = self.m / scale;
+        let det = m.determinant();
+        if det.re().abs() <= rel_tol {
+            return Err(TensorError::Singular { det: det.re(), tol: rel_tol });
+        }
         let cof = |r1: usize, c1: usize, r2: usize, c2: usize| {
             m[(r1, c1)] * m[(r2, c2)] - m[(r1, c2)] * m[(r2, c1)]
         };
@@ -97,7 +103,7 @@ impl<T: Scalar> Dyadic<T> {
             -cof(0, 0, 2, 1),
             cof(0, 0, 1, 1),
         );
-        Ok(Dyadic { m: adj / self.determinant() })
+        Ok(Dyadic { m: adj / (det * scale) })
     }
 
     /// Symmetric part ½(M⃗ + M⃗′).
@@ -149,6 +155,93 @@ impl<T: Scalar> Dyadic<T> {
     #[inline]
     pub fn projector_onto_plane(x: &Vector<T>, y: &Vector<T>) -> Option<Dyadic<T>> {
         Self::projector_perp(&x.cross(y))
+    }
+
+    /// `true` when M⃗′ = M⃗ within `tol`·‖M⃗‖_F (entrywise on the skew part).
+    ///
+    /// Book: §2.6 (symmetric: M⃗′ = M⃗).
+    pub fn is_symmetric(&self, tol: f64) -> bool {
+        self.skew_part().m.amax().re() <= tol * self.norm().re()
+    }
+
+    /// `true` when M⃗′ = −M⃗ within `tol`·‖M⃗‖_F.
+    ///
+    /// Book: §2.6 (skew symmetric: M⃗′ = −M⃗).
+    pub fn is_skew(&self, tol: f64) -> bool {
+        self.symmetric_part().m.amax().re() <= tol * self.norm().re()
+    }
+
+    /// The principal invariants (I₁, I₂, I₃) = (tr M⃗, ½[(tr M⃗)² − tr M⃗²], det M⃗), the
+    /// coefficients of Cayley–Hamilton (2.10.56): M⃗³ − I₁M⃗² + I₂M⃗ − I₃I⃗ = 0. All three are
+    /// frame invariant (2.10.50–53).
+    ///
+    /// Book: (2.10.50–53), (2.10.56).
+    pub fn invariants(&self) -> [T; 3] {
+        let t = self.trace();
+        let t2 = (self.m * self.m).trace();
+        [t, (t * t - t2) * T::lit(0.5), self.determinant()]
+    }
+
+    /// Cayley–Hamilton residual M⃗³ − I₁M⃗² + I₂M⃗ − I₃I⃗, which is the zero dyadic up to rounding
+    /// (2.10.56). Useful as an oracle.
+    ///
+    /// Book: (2.10.56).
+    pub fn cayley_hamilton_residual(&self) -> Dyadic<T> {
+        let [i1, i2, i3] = self.invariants();
+        let m2 = self.m * self.m;
+        Dyadic { m: m2 * self.m - m2 * i1 + self.m * i2 - Matrix3::identity() * i3 }
+    }
+
+    /// det M⃗ from traces alone: ⅓ tr M⃗³ − ½ tr M⃗ tr M⃗² + ⅙ (tr M⃗)³ (2.10.57).
+    ///
+    /// Book: (2.10.57).
+    pub fn determinant_from_traces(&self) -> T {
+        let t = self.trace();
+        let m2 = self.m * self.m;
+        let (t2, t3) = (m2.trace(), (m2 * self.m).trace());
+        t3 / T::lit(3.0) - t * t2 * T::lit(0.5) + t * t * t / T::lit(6.0)
+    }
+
+    /// tr M⃗⁻¹ = [(tr M⃗)² − tr M⃗²]/(2 det M⃗) = I₂/I₃ (2.10.58), without forming M⃗⁻¹.
+    ///
+    /// Book: (2.10.58).
+    ///
+    /// # Errors
+    /// As [`Dyadic::inverse`]: [`TensorError::Singular`] when M⃗ is singular within `rel_tol`.
+    pub fn trace_of_inverse(&self, rel_tol: f64) -> Result<T, TensorError> {
+        // Reuse the scaled singularity test of `inverse`.
+        self.inverse(rel_tol)?;
+        let [_, i2, i3] = self.invariants();
+        Ok(i2 / i3)
+    }
+
+    /// (I⃗ + α x⃗^× + β x⃗^×²)⁻¹ = I⃗ − (α/D) x⃗^× + ((α² + β²|x|² − β)/D) x⃗^×², with
+    /// D = α²|x|² + (β|x|² − 1)² (2.9.16–17). With α = 1, β = 0 this is (I⃗ + x⃗^×)⁻¹ (2.9.8–9).
+    ///
+    /// Book: (2.9.8–9), (2.9.16–17).
+    ///
+    /// # Degenerate inputs
+    /// D = 0 exactly when α = 0 and β|x|² = 1 (or the matrix is otherwise singular): returns
+    /// [`TensorError::Singular`] when D ≤ `rel_tol`·(1 + α²|x|² + β²|x|⁴).
+    pub fn cross_polynomial_inverse(
+        x: &Vector<T>,
+        alpha: T,
+        beta: T,
+        rel_tol: f64,
+    ) -> Result<Dyadic<T>, TensorError> {
+        if !(x.is_finite() && alpha.re().is_finite() && beta.re().is_finite()) {
+            return Err(TensorError::NonFinite { what: "cross-polynomial input" });
+        }
+        let n2 = x.norm_squared();
+        let d = alpha * alpha * n2 + (beta * n2 - T::one()) * (beta * n2 - T::one());
+        let scale = 1.0 + (alpha * alpha * n2).re() + (beta * beta * n2 * n2).re();
+        if d.re() <= rel_tol * scale {
+            return Err(TensorError::Singular { det: d.re(), tol: rel_tol * scale });
+        }
+        let xx = x.cross_dyad();
+        let xx2 = xx * xx;
+        // (2.9.17)
+        Ok(Self::identity() - xx * (alpha / d) + xx2 * ((alpha * alpha + beta * beta * n2 - beta) / d))
     }
 
     /// Frobenius norm (frame independent for orthonormal frames).

@@ -106,10 +106,46 @@ impl<T: Scalar> Vector<T> {
     /// vector is zero (book L497).
     ///
     /// Book: (2.1.4), computed stably instead of by cos⁻¹ (accurate near 0 and π).
+    ///
+    /// # Degenerate inputs
+    /// Tiny and huge magnitudes are safe: both vectors are first scaled by their largest
+    /// component (the angle does not depend on length), so x·y and |x×y| never under- or
+    /// overflow.
     #[inline]
     pub fn angle(&self, y: &Vector<T>) -> T {
-        // atan2(0, 0) = 0 gives the book's value for zero vectors.
-        self.cross(y).norm().atan2(self.dot(y))
+        let (x, y) = (self.scaled_for_angle(), y.scaled_for_angle());
+        // + 0 turns a signed zero −0 into +0: atan2(0, −0) would be π, the book wants 0 (L497).
+        x.cross(&y).norm().atan2(x.dot(&y) + T::zero())
+    }
+
+    /// x⃗/max|x_i| (x⃗ itself when zero or non-finite): same direction, magnitude in [1, √3].
+    #[inline]
+    fn scaled_for_angle(&self) -> Vector<T> {
+        let m = self.c.x.abs().max(self.c.y.abs()).max(self.c.z.abs());
+        if m == T::zero() || !m.re().is_finite() { *self } else { *self / m }
+    }
+
+    /// Parallel or anti-parallel within `tol`: |x̂ × ŷ| ≤ tol (book (2.1.5): |x·y| = |x||y|).
+    /// A zero vector is parallel to every vector.
+    ///
+    /// Book: (2.1.5).
+    #[inline]
+    pub fn is_parallel(&self, y: &Vector<T>, tol: f64) -> bool {
+        match (self.unit(), y.unit()) {
+            (Some(x), Some(y)) => x.cross(&y).norm().re() <= tol,
+            _ => true,
+        }
+    }
+
+    /// Perpendicular within `tol`: |x̂·ŷ| ≤ tol. A zero vector is perpendicular to every vector.
+    ///
+    /// Book: §2.1 (x·y = 0).
+    #[inline]
+    pub fn is_perpendicular(&self, y: &Vector<T>, tol: f64) -> bool {
+        match (self.unit(), y.unit()) {
+            (Some(x), Some(y)) => x.dot(&y).re().abs() <= tol,
+            _ => true,
+        }
     }
 
     /// Unit angle vector θ̂_{self/x} = x⃗×y⃗/|x⃗×y⃗| for y⃗ = `self` (2.2.7): aligned with x×y,
@@ -118,7 +154,8 @@ impl<T: Scalar> Vector<T> {
     /// Book: §2.2, (2.2.7); θ̂_{x/y} = −θ̂_{y/x} (2.2.2).
     #[inline]
     pub fn unit_angle_vector_rel(&self, x: &Vector<T>) -> Option<Vector<T>> {
-        x.cross(self).unit()
+        // Scaling first keeps x × y finite and nonzero for huge or tiny inputs.
+        x.scaled_for_angle().cross(&self.scaled_for_angle()).unit()
     }
 
     /// Angle vector θ⃗_{self/x} = θ θ̂_{self/x} (2.2.1, 2.2.10). `None` where θ̂ is undefined.
@@ -130,7 +167,8 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// Directed angle θ_{self/x/n̂} in (−π, π] (2.3.1) about the normal `n` (perpendicular to
-    /// both vectors; its length does not matter): 0 for aligned vectors, +θ when n̂ = θ̂_{y/x},
+    /// both vectors, as the book requires; its length does not matter. For an `n` that is not
+    /// perpendicular the result is the angle of the projections onto the plane ⊥ n̂): 0 for aligned vectors, +θ when n̂ = θ̂_{y/x},
     /// −θ when n̂ = −θ̂_{y/x}, and **π for anti-parallel vectors whatever n̂** (never −π).
     /// 0 when either vector is zero (atan2(0, 0) = 0, (2.3.9)). `None` when `n` is zero.
     ///
@@ -138,8 +176,10 @@ impl<T: Scalar> Vector<T> {
     #[inline]
     pub fn directed_angle_rel(&self, x: &Vector<T>, n: &Vector<T>) -> Option<T> {
         let n_hat = n.unit()?;
-        // (2.3.8): θ = atan2(n̂·(x×y), x·y)
-        let theta = n_hat.dot(&x.cross(self)).atan2(x.dot(self));
+        let (x, y) = (x.scaled_for_angle(), self.scaled_for_angle());
+        // (2.3.8): θ = atan2(n̂·(x×y), x·y); + 0 maps −0 to +0 so that a zero vector gives 0
+        // (2.3.9), not ±π from IEEE atan2(±0, −0).
+        let theta = (n_hat.dot(&x.cross(&y)) + T::zero()).atan2(x.dot(&y) + T::zero());
         // Anti-parallel: atan2(−0, −1) = −π; the book's rule (2.3.1) gives +π.
         Some(wrap_angle(theta))
     }
@@ -155,6 +195,24 @@ impl<T: Scalar> Vector<T> {
     #[inline]
     pub fn is_finite(&self) -> bool {
         crate::scalar::all_finite(self.c.as_slice())
+    }
+
+    /// Projection along y⃗: P_y x⃗ = (x⃗·y⃗/|y⃗|²) y⃗ (2.7.7), computed as (x⃗·ŷ) ŷ. `None` for
+    /// y⃗ = 0⃗ (P_y is undefined).
+    ///
+    /// Book: §2.7, (2.7.1), (2.7.7).
+    #[inline]
+    pub fn projection_along(&self, y: &Vector<T>) -> Option<Vector<T>> {
+        let u = y.unit()?;
+        Some(u * u.dot(self))
+    }
+
+    /// Projection perpendicular to y⃗: P_{y⊥} x⃗ = x⃗ − P_y x⃗ (2.7.2). `None` for y⃗ = 0⃗.
+    ///
+    /// Book: §2.7, (2.7.2).
+    #[inline]
+    pub fn projection_perp(&self, y: &Vector<T>) -> Option<Vector<T>> {
+        self.projection_along(y).map(|p| *self - p)
     }
 
     /// Scalar triple product [x, y, z] = x·(y×z) (2.2.13).
