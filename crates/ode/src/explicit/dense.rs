@@ -1,0 +1,64 @@
+//! Dense output: the continuous extension of an accepted step.
+
+use crate::state::State;
+
+/// The interpolant of one accepted step [t, t + h]: Hairer's form
+/// y(t + θh) = c₀ + θ(c₁ + (1−θ)(c₂ + θ(c₃ + (1−θ) q(θ)))), with q ≡ c₄ for DOPRI5 (order 4)
+/// and q(θ) = c₄ + θ(c₅ + (1−θ)(c₆ + θc₇)) for DOP853 (order 7).
+///
+/// Book: §4.11; HNW §II.6 (dense output), `contd5`/`contd8` of `dopri5.f`/`dop853.f`.
+#[derive(Debug, Clone)]
+pub struct DenseStep<S> {
+    /// Start of the step.
+    pub t: f64,
+    /// Step size.
+    pub h: f64,
+    pub(crate) c: Vec<S>,
+}
+
+impl<S: State> DenseStep<S> {
+    /// The interpolated state at `t` (θ = (t − t₀)/h, meant for θ ∈ [0, 1]).
+    pub fn eval(&self, t: f64) -> S {
+        let s = (t - self.t) / self.h;
+        let s1 = 1.0 - s;
+        let mut out = self.c[0].clone();
+        let o = out.as_mut_slice();
+        let c: Vec<&[f64]> = self.c.iter().map(State::as_slice).collect();
+        for (i, oi) in o.iter_mut().enumerate() {
+            let q =
+                if c.len() == 8 { c[4][i] + s * (c[5][i] + s1 * (c[6][i] + s * c[7][i])) } else { c[4][i] };
+            *oi += s * (c[1][i] + s1 * (c[2][i] + s * (c[3][i] + s1 * q)));
+        }
+        out
+    }
+}
+
+/// The four leading coefficients shared by DOPRI5 and DOP853:
+/// c₀ = y₀, c₁ = y₁ − y₀, c₂ = h f₀ − c₁, c₃ = c₁ − h f₁ − c₂ (cubic Hermite part).
+pub(crate) fn hermite_part<S: State>(y0: &S, y1: &S, f0: &S, f1: &S, h: f64) -> [S; 4] {
+    let mut c1 = y1.clone();
+    let mut c2 = y1.clone();
+    let mut c3 = y1.clone();
+    for i in 0..y0.dim() {
+        let ydiff = y1.as_slice()[i] - y0.as_slice()[i];
+        let bspl = h * f0.as_slice()[i] - ydiff;
+        c1.as_mut_slice()[i] = ydiff;
+        c2.as_mut_slice()[i] = bspl;
+        c3.as_mut_slice()[i] = ydiff - h * f1.as_slice()[i] - bspl;
+    }
+    [y0.clone(), c1, c2, c3]
+}
+
+/// h Σⱼ dⱼ kⱼ (zero coefficients skipped).
+pub(crate) fn weighted<S: State>(template: &S, h: f64, d: &[f64], k: &[S]) -> S {
+    let mut out = template.clone();
+    out.as_mut_slice().fill(0.0);
+    for (dj, kj) in d.iter().zip(k) {
+        if *dj != 0.0 {
+            for (o, x) in out.as_mut_slice().iter_mut().zip(kj.as_slice()) {
+                *o += h * dj * x;
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,86 @@
+//! One step of DOP853 (Dormand & Prince 8(5,3)) with its error estimate and dense output.
+
+use super::dense::{DenseStep, hermite_part, weighted};
+use super::dop853_coefficients::{A, B, BHH, C, D, E};
+use crate::state::{State, combine, eval};
+use crate::{OdeError, Work};
+
+/// Nodes of the 12 stages of the 8th-order solution (c₁₂ = 1).
+pub(crate) const C12: [f64; 12] = [C[0], C[1], C[2], C[3], C[4], C[5], C[6], C[7], C[8], C[9], C[10], 1.0];
+
+/// Stage rows of the 12 stages (row 0 empty).
+pub(crate) const A12: [&[f64]; 12] = [&[], A[0], A[1], A[2], A[3], A[4], A[5], A[6], A[7], A[8], A[9], A[10]];
+
+/// Stages 2..=12 from k₁ = `k[0]`; returns y₁ and the scaled error norm of HNW (10.17):
+/// err = |h| ‖e₅‖² / √(n (‖e₅‖² + 0.01‖e₃‖²)), with weights sk = atol + rtol·max(|y|, |y₁|).
+///
+/// Book: §4.11; HNW §II.10.
+pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    h: f64,
+    k: &mut Vec<S>,
+    tol: (f64, f64),
+    work: &mut Work,
+) -> Result<(S, f64), OdeError> {
+    k.truncate(1);
+    for i in 1..12 {
+        // kᵢ = f(t + cᵢh, y + h Σ aᵢⱼ kⱼ)
+        let yi = combine(y, h, A12[i], k);
+        let ki = eval(f, t + C12[i] * h, &yi, t, i + 1, &mut work.fevals)?;
+        k.push(ki);
+    }
+    // y₁ = y + h Σ bᵢ kᵢ (8th order)
+    let y1 = combine(y, h, &B, k);
+    let (rtol, atol) = tol;
+    let (mut err5, mut err3) = (0.0, 0.0);
+    for i in 0..y.dim() {
+        let (yi, y1i) = (y.as_slice()[i], y1.as_slice()[i]);
+        let sk = atol + rtol * yi.abs().max(y1i.abs());
+        let kk = |j: usize| k[j].as_slice()[i];
+        let bsum: f64 = B.iter().enumerate().map(|(j, b)| b * kk(j)).sum();
+        // 3rd-order estimate: Σbᵢkᵢ − (bhh₁k₁ + bhh₂k₉ + bhh₃k₁₂)
+        let e3 = bsum - BHH[0] * kk(0) - BHH[1] * kk(8) - BHH[2] * kk(11);
+        // 5th-order estimate: Σ eᵢ kᵢ
+        let e5: f64 = E[..12].iter().enumerate().map(|(j, e)| e * kk(j)).sum();
+        err3 += (e3 / sk).powi(2);
+        err5 += (e5 / sk).powi(2);
+    }
+    let mut deno = err5 + 0.01 * err3;
+    if deno <= 0.0 {
+        deno = 1.0;
+    }
+    let err = h.abs() * err5 * (1.0 / (y.dim() as f64 * deno)).sqrt();
+    Ok((y1, err))
+}
+
+/// The dense output of an accepted step, given k₁..k₁₂ in `k` and k₁₃ = f(t + h, y₁); costs
+/// three more evaluations (stages 14–16).
+///
+/// Book: §4.11; HNW §II.10, `dop853.f` (IOUT ≥ 2 block).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn dense<S: State, F: FnMut(f64, &S) -> S>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    y1: &S,
+    h: f64,
+    k: &mut Vec<S>,
+    k13: &S,
+    work: &mut Work,
+) -> Result<DenseStep<S>, OdeError> {
+    k.truncate(12);
+    k.push(k13.clone());
+    for i in 13..16 {
+        let yi = combine(y, h, A[i - 1], k);
+        let ki = eval(f, t + C[i] * h, &yi, t, i + 1, &mut work.fevals)?;
+        k.push(ki);
+    }
+    let [c0, c1, c2, c3] = hermite_part(y, y1, &k[0], k13, h);
+    let mut c = vec![c0, c1, c2, c3];
+    for d in &D {
+        c.push(weighted(y, h, d, k));
+    }
+    Ok(DenseStep { t, h, c })
+}

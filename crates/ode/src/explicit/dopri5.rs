@@ -1,0 +1,48 @@
+//! One step of DOPRI5 (Dormand & Prince 5(4)) with its error estimate and dense output.
+
+use super::dense::{DenseStep, hermite_part, weighted};
+use super::tableau::{DOPRI5, DOPRI5_D, DOPRI5_E};
+use crate::state::{State, combine, eval};
+use crate::{OdeError, Work};
+
+/// Stages 2..=7 from k₁ = `k[0]` (stage 7 is f(t + h, y₁), first same as last); returns y₁
+/// and the RMS error ‖h Σ eᵢkᵢ / sk‖ with sk = atol + rtol·max(|y|, |y₁|).
+///
+/// Book: §4.11; HNW §II.5, (4.11).
+pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    h: f64,
+    k: &mut Vec<S>,
+    tol: (f64, f64),
+    work: &mut Work,
+) -> Result<(S, f64), OdeError> {
+    k.truncate(1);
+    let mut y1 = y.clone();
+    for i in 1..7 {
+        let yi = combine(y, h, DOPRI5.a[i], k);
+        let ki = eval(f, t + DOPRI5.c[i] * h, &yi, t, i + 1, &mut work.fevals)?;
+        if i == 6 {
+            y1 = yi; // row 7 of A is b: the stage-7 argument is y₁
+        }
+        k.push(ki);
+    }
+    let (rtol, atol) = tol;
+    let mut err = 0.0;
+    for i in 0..y.dim() {
+        let sk = atol + rtol * y.as_slice()[i].abs().max(y1.as_slice()[i].abs());
+        let e: f64 = DOPRI5_E.iter().zip(k.iter()).map(|(e, kj)| e * kj.as_slice()[i]).sum();
+        err += (h * e / sk).powi(2);
+    }
+    Ok((y1, (err / y.dim() as f64).sqrt()))
+}
+
+/// The dense output of an accepted step from k₁..k₇ (no extra evaluations).
+///
+/// Book: §4.11; HNW §II.6, `contd5` of `dopri5.f`.
+pub(crate) fn dense<S: State>(t: f64, y: &S, y1: &S, h: f64, k: &[S]) -> DenseStep<S> {
+    let [c0, c1, c2, c3] = hermite_part(y, y1, &k[0], &k[6], h);
+    let c4 = weighted(y, h, &DOPRI5_D, k);
+    DenseStep { t, h, c: vec![c0, c1, c2, c3, c4] }
+}

@@ -1,0 +1,19 @@
+//! Explicit Runge–Kutta methods from Butcher tableaux: fixed-step Euler, Heun, RK4 and
+//! DOP853's 8th-order tableau; adaptive DOPRI5 and DOP853 with dense output and events.
+//!
+//! Book: §4.11 (the rate equations are integrated numerically); HNW ch. II.
+
+mod adaptive;
+mod dense;
+mod dop853;
+mod dop853_coefficients;
+mod dopri5;
+mod events;
+mod fixed;
+mod tableau;
+
+pub use adaptive::{Adaptive, Pair, Solution};
+pub use dense::DenseStep;
+pub use events::{Direction, Event, EventHit};
+pub use fixed::integrate_fixed;
+pub use tableau::{DOP853, DOPRI5, EULER, HEUN, RK4, Tableau};

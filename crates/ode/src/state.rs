@@ -1,0 +1,127 @@
+//! Vector-space states: anything whose components can be viewed as a slice of `f64`.
+
+use nalgebra::{DVector, SVector};
+
+use crate::OdeError;
+
+/// A state of a vector space ℝⁿ, seen as a slice of components. Runge–Kutta methods only
+/// form linear combinations y + hΣaⱼkⱼ, so this is all they need. Implemented for
+/// `nalgebra::SVector<f64, N>` (stack, fastest), `DVector<f64>`, `[f64; N]`, `Vec<f64>` and
+/// `f64`.
+///
+/// Book: §4.11 (state of the kinematic equations); HNW §II.1.
+pub trait State: Clone {
+    /// The components.
+    fn as_slice(&self) -> &[f64];
+    /// The components, mutably.
+    fn as_mut_slice(&mut self) -> &mut [f64];
+    /// Number of components n.
+    fn dim(&self) -> usize {
+        self.as_slice().len()
+    }
+}
+
+impl<const N: usize> State for SVector<f64, N> {
+    #[inline(always)]
+    fn as_slice(&self) -> &[f64] {
+        nalgebra::Matrix::as_slice(self)
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [f64] {
+        nalgebra::Matrix::as_mut_slice(self)
+    }
+}
+
+impl State for DVector<f64> {
+    #[inline(always)]
+    fn as_slice(&self) -> &[f64] {
+        nalgebra::Matrix::as_slice(self)
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [f64] {
+        nalgebra::Matrix::as_mut_slice(self)
+    }
+}
+
+impl<const N: usize> State for [f64; N] {
+    #[inline(always)]
+    fn as_slice(&self) -> &[f64] {
+        self
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [f64] {
+        self
+    }
+}
+
+impl State for Vec<f64> {
+    #[inline(always)]
+    fn as_slice(&self) -> &[f64] {
+        self
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [f64] {
+        self
+    }
+}
+
+impl State for f64 {
+    #[inline(always)]
+    fn as_slice(&self) -> &[f64] {
+        core::slice::from_ref(self)
+    }
+    #[inline(always)]
+    fn as_mut_slice(&mut self) -> &mut [f64] {
+        core::slice::from_mut(self)
+    }
+}
+
+/// y + h Σⱼ cⱼ kⱼ (zero coefficients skipped).
+#[inline(always)]
+pub(crate) fn combine<S: State>(y: &S, h: f64, c: &[f64], k: &[S]) -> S {
+    let mut out = y.clone();
+    {
+        let o = out.as_mut_slice();
+        for (cj, kj) in c.iter().zip(k) {
+            if *cj != 0.0 {
+                let a = h * cj;
+                for (oi, ki) in o.iter_mut().zip(kj.as_slice()) {
+                    *oi += a * ki;
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The first non-finite component, if any.
+#[inline(always)]
+pub(crate) fn first_non_finite<S: State>(y: &S) -> Option<(usize, f64)> {
+    y.as_slice().iter().enumerate().find(|(_, v)| !v.is_finite()).map(|(i, v)| (i, *v))
+}
+
+/// `Err(NonFiniteState)` when the initial state has a non-finite component.
+pub(crate) fn check_state<S: State>(t: f64, y: &S) -> Result<(), OdeError> {
+    match first_non_finite(y) {
+        Some((index, value)) => Err(OdeError::NonFiniteState { t, index, value }),
+        None => Ok(()),
+    }
+}
+
+/// Evaluates f and checks the result, saying where a non-finite value came from.
+#[inline(always)]
+pub(crate) fn eval<S: State, F: FnMut(f64, &S) -> S>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    step_start: f64,
+    stage: usize,
+    fevals: &mut usize,
+) -> Result<S, OdeError> {
+    *fevals += 1;
+    let k = f(t, y);
+    match first_non_finite(&k) {
+        Some((index, value)) => Err(OdeError::RhsNotFinite { t, step_start, stage, index, value }),
+        None => Ok(k),
+    }
+}
