@@ -1,0 +1,92 @@
+//! Errors of the linear-systems crate.
+
+use thiserror::Error;
+
+/// What was wrong with a linear-systems input, with what would be valid.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum LtiError {
+    /// A coefficient or matrix entry was NaN or infinite.
+    #[error("non-finite value in {what}: every coefficient must be a finite number")]
+    NonFinite {
+        /// Which input held the value.
+        what: &'static str,
+    },
+    /// A transfer function's denominator is the zero polynomial.
+    #[error("zero denominator: a transfer function needs a nonzero denominator polynomial")]
+    ZeroDenominator,
+    /// The numerator degree exceeds the denominator degree where a proper system is needed.
+    #[error(
+        "improper transfer function (numerator degree {num_degree} > denominator degree {den_degree}): {what} needs deg N ≤ deg D"
+    )]
+    Improper {
+        /// Degree of the numerator.
+        num_degree: usize,
+        /// Degree of the denominator.
+        den_degree: usize,
+        /// The operation that needs a proper system.
+        what: &'static str,
+    },
+    /// A matrix that must be square is not.
+    #[error("{what} must be square, got {rows}×{cols}")]
+    NotSquare {
+        /// Which matrix.
+        what: &'static str,
+        /// Rows.
+        rows: usize,
+        /// Columns.
+        cols: usize,
+    },
+    /// Matrix or vector dimensions do not fit together.
+    #[error("dimension mismatch in {what}: expected {expected}, found {found}")]
+    DimensionMismatch {
+        /// Which input.
+        what: &'static str,
+        /// The size that would fit.
+        expected: String,
+        /// The size given.
+        found: String,
+    },
+    /// An input or output channel index that does not exist.
+    #[error("{what} index {index} out of range: valid indices are 0..{len}")]
+    IndexOutOfRange {
+        /// Input or output.
+        what: &'static str,
+        /// The index given.
+        index: usize,
+        /// Number of channels.
+        len: usize,
+    },
+    /// A time delay makes the result irrational (not a ratio of polynomials).
+    #[error(
+        "{what} is not rational with time delays (τ = {delay}); remove the delay or use a Padé approximation"
+    )]
+    Delay {
+        /// The operation.
+        what: &'static str,
+        /// The delay involved.
+        delay: f64,
+    },
+    /// An argument outside its valid set.
+    #[error("invalid {what}: {reason}")]
+    InvalidArgument {
+        /// The argument.
+        what: &'static str,
+        /// What is wrong and what would be valid.
+        reason: String,
+    },
+    /// An iterative kernel (eigenvalues, SVD) did not converge.
+    #[error("{what} did not converge")]
+    NoConvergence {
+        /// The kernel.
+        what: &'static str,
+    },
+}
+
+/// Checks that every value is finite.
+pub(crate) fn check_finite<'a>(
+    what: &'static str,
+    v: impl IntoIterator<Item = &'a f64>,
+) -> Result<(), LtiError> {
+    if v.into_iter().all(|x| x.is_finite()) { Ok(()) } else { Err(LtiError::NonFinite { what }) }
+}

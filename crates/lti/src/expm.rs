@@ -1,0 +1,128 @@
+//! The matrix exponential by scaling and squaring with Padé approximants of degree 3–13
+//! (Higham 2005), on faer matrices.
+//!
+//! Book: §15.5, (15.5.3); notes §3.1 (not the Taylor series of the definition and not an
+//! eigendecomposition: defective matrices such as critical damping are common).
+
+use crate::error::{LtiError, check_finite};
+use crate::linalg::{from_faer, to_faer};
+use faer::Mat;
+use faer::linalg::solvers::Solve;
+use nalgebra::DMatrix;
+
+// Padé coefficients b_k of r_m (Higham 2005, Table 2.3 and (2.1)).
+const B3: [f64; 4] = [120.0, 60.0, 12.0, 1.0];
+const B5: [f64; 6] = [30240.0, 15120.0, 3360.0, 420.0, 30.0, 1.0];
+const B7: [f64; 8] = [17297280.0, 8648640.0, 1995840.0, 277200.0, 25200.0, 1512.0, 56.0, 1.0];
+const B9: [f64; 10] = [
+    17643225600.0,
+    8821612800.0,
+    2075673600.0,
+    302702400.0,
+    30270240.0,
+    2162160.0,
+    110880.0,
+    3960.0,
+    90.0,
+    1.0,
+];
+const B13: [f64; 14] = [
+    64764752532480000.0,
+    32382376266240000.0,
+    7771770303897600.0,
+    1187353796428800.0,
+    129060195264000.0,
+    10559470521600.0,
+    670442572800.0,
+    33522128640.0,
+    1323241920.0,
+    40840800.0,
+    960960.0,
+    16380.0,
+    182.0,
+    1.0,
+];
+// θ_m: largest ‖A‖₁ for which r_m has backward error ≤ u (Higham 2005, Table 2.3).
+const THETA: [(usize, f64); 4] =
+    [(3, 1.495585217958292e-2), (5, 2.539398330063230e-1), (7, 9.504178996162932e-1), (9, 2.097847961257068)];
+const THETA13: f64 = 5.371920351148152;
+
+fn norm1(a: &Mat<f64>) -> f64 {
+    (0..a.ncols()).map(|j| (0..a.nrows()).map(|i| a[(i, j)].abs()).sum::<f64>()).fold(0.0, f64::max)
+}
+
+/// e^A for a faer matrix (internal: no checks).
+pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
+    let n = a.nrows();
+    let id = Mat::<f64>::identity(n, n);
+    let nrm = norm1(a);
+    let a2 = a * a;
+    let (u, v, s) = if let Some(&(m, _)) = THETA.iter().find(|(_, t)| nrm <= *t) {
+        // r_m = (V − U)⁻¹(V + U) with U = A Σ b_{2k+1} A^{2k}, V = Σ b_{2k} A^{2k}.
+        let b: &[f64] = match m {
+            3 => &B3,
+            5 => &B5,
+            7 => &B7,
+            _ => &B9,
+        };
+        let mut pow = id.clone();
+        let mut uo = Mat::<f64>::zeros(n, n);
+        let mut ve = Mat::<f64>::zeros(n, n);
+        for k in 0..=m / 2 {
+            uo += faer::Scale(b[2 * k + 1]) * &pow;
+            ve += faer::Scale(b[2 * k]) * &pow;
+            if k < m / 2 {
+                pow = &pow * &a2;
+            }
+        }
+        (a * &uo, ve, 0)
+    } else {
+        // Scale so that ‖A/2ˢ‖₁ ≤ θ₁₃, then r₁₃ (Higham 2005, Algorithm 2.3).
+        let s = (nrm / THETA13).log2().ceil().max(0.0) as i32;
+        let f = 0.5f64.powi(s);
+        let a1 = faer::Scale(f) * a;
+        let a2 = faer::Scale(f * f) * &a2;
+        let a4 = &a2 * &a2;
+        let a6 = &a4 * &a2;
+        let b = &B13;
+        let inner_u = faer::Scale(b[13]) * &a6 + faer::Scale(b[11]) * &a4 + faer::Scale(b[9]) * &a2;
+        let u = &a1
+            * (&a6 * inner_u
+                + faer::Scale(b[7]) * &a6
+                + faer::Scale(b[5]) * &a4
+                + faer::Scale(b[3]) * &a2
+                + faer::Scale(b[1]) * &id);
+        let inner_v = faer::Scale(b[12]) * &a6 + faer::Scale(b[10]) * &a4 + faer::Scale(b[8]) * &a2;
+        let v = &a6 * inner_v
+            + faer::Scale(b[6]) * &a6
+            + faer::Scale(b[4]) * &a4
+            + faer::Scale(b[2]) * &a2
+            + faer::Scale(b[0]) * &id;
+        (u, v, s)
+    };
+    let p = &v + &u;
+    let q = &v - &u;
+    let mut r = q.partial_piv_lu().solve(&p);
+    for _ in 0..s {
+        r = &r * &r;
+    }
+    r
+}
+
+/// The matrix exponential e^A = Σ Aᵏ/k! by scaling and squaring with a [m/m] Padé
+/// approximant, m ∈ {3, 5, 7, 9, 13} chosen from ‖A‖₁ (Higham 2005; Matlab and scipy `expm`).
+///
+/// Book: §15.5, (15.5.3); Ex 15.5.1–15.5.2; 15.20.27, 15.20.59.
+///
+/// # Errors
+/// [`LtiError::NotSquare`] or [`LtiError::NonFinite`].
+pub fn expm(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
+    if a.nrows() != a.ncols() {
+        return Err(LtiError::NotSquare { what: "expm argument", rows: a.nrows(), cols: a.ncols() });
+    }
+    check_finite("expm argument", a.iter())?;
+    if a.nrows() == 0 {
+        return Ok(a.clone());
+    }
+    Ok(from_faer(expm_faer(&to_faer(a)).as_ref()))
+}

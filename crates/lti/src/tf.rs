@@ -1,0 +1,264 @@
+//! SISO transfer functions G(s) = N(s)/D(s)·e^{−τs}, and their interconnections.
+//!
+//! Book: §15.11 (zeros and poles, Def 15.11.2), §15.14, (15.14.7); delay (15.10.2);
+//! feedback (15.18.4).
+
+use crate::error::{LtiError, check_finite};
+use crate::poly::Polynomial;
+use crate::zpk::Zpk;
+use num_complex::Complex64;
+use std::fmt;
+
+/// A single-input single-output transfer function G(s) = N(s)/D(s)·e^{−τs}.
+///
+/// # Conventions
+/// Coefficients in descending powers (Matlab `tf(num, den)`); the delay τ ≥ 0 multiplies by
+/// e^{−τs} (15.10.2). Common factors are *not* cancelled automatically: use
+/// [`TransferFunction::minreal`] (15.14.15, 15.20.37).
+///
+/// Book: §15.11, §15.14, (15.14.7), (15.10.2).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TransferFunction {
+    num: Polynomial,
+    den: Polynomial,
+    delay: f64,
+}
+
+impl TransferFunction {
+    /// G = num/den from coefficient slices in descending powers.
+    ///
+    /// # Errors
+    /// [`LtiError::NonFinite`], or [`LtiError::ZeroDenominator`] when `den` is zero.
+    pub fn new(num: &[f64], den: &[f64]) -> Result<Self, LtiError> {
+        Self::from_polynomials(Polynomial::new(num)?, Polynomial::new(den)?)
+    }
+
+    /// G = N/D from polynomials.
+    ///
+    /// # Errors
+    /// [`LtiError::ZeroDenominator`] when D = 0.
+    pub fn from_polynomials(num: Polynomial, den: Polynomial) -> Result<Self, LtiError> {
+        if den.is_zero() {
+            return Err(LtiError::ZeroDenominator);
+        }
+        Ok(Self { num, den, delay: 0.0 })
+    }
+
+    /// The same transfer function times e^{−τs}.
+    ///
+    /// # Errors
+    /// [`LtiError::InvalidArgument`] unless τ is finite and ≥ 0.
+    pub fn with_delay(mut self, tau: f64) -> Result<Self, LtiError> {
+        if !(tau.is_finite() && tau >= 0.0) {
+            return Err(LtiError::InvalidArgument {
+                what: "delay",
+                reason: format!("τ = {tau}; a delay must be finite and ≥ 0"),
+            });
+        }
+        self.delay = tau;
+        Ok(self)
+    }
+
+    /// The constant (static gain) transfer function k.
+    ///
+    /// # Errors
+    /// [`LtiError::NonFinite`] for a non-finite k.
+    pub fn gain(k: f64) -> Result<Self, LtiError> {
+        Self::new(&[k], &[1.0])
+    }
+
+    /// Numerator N(s).
+    pub fn num(&self) -> &Polynomial {
+        &self.num
+    }
+
+    /// Denominator D(s).
+    pub fn den(&self) -> &Polynomial {
+        &self.den
+    }
+
+    /// Delay τ (0 when none).
+    pub fn delay(&self) -> f64 {
+        self.delay
+    }
+
+    /// deg D − deg N (negative for an improper G). For the zero transfer function, deg D + 1.
+    pub fn relative_degree(&self) -> isize {
+        if self.num.is_zero() {
+            return self.den.degree() as isize + 1;
+        }
+        self.den.degree() as isize - self.num.degree() as isize
+    }
+
+    /// True when deg N ≤ deg D.
+    pub fn is_proper(&self) -> bool {
+        self.relative_degree() >= 0
+    }
+
+    /// True when deg N < deg D.
+    pub fn is_strictly_proper(&self) -> bool {
+        self.relative_degree() > 0
+    }
+
+    /// Errors with [`LtiError::Improper`] unless proper.
+    pub(crate) fn require_proper(&self, what: &'static str) -> Result<(), LtiError> {
+        if self.is_proper() {
+            Ok(())
+        } else {
+            Err(LtiError::Improper { num_degree: self.num.degree(), den_degree: self.den.degree(), what })
+        }
+    }
+
+    /// Errors with [`LtiError::Delay`] if τ ≠ 0.
+    pub(crate) fn require_rational(&self, what: &'static str) -> Result<(), LtiError> {
+        if self.delay == 0.0 { Ok(()) } else { Err(LtiError::Delay { what, delay: self.delay }) }
+    }
+
+    /// Poles: roots of D (Def 15.11.2).
+    ///
+    /// # Errors
+    /// [`LtiError::NoConvergence`] if the eigenvalue iteration fails.
+    pub fn poles(&self) -> Result<Vec<Complex64>, LtiError> {
+        self.den.roots()
+    }
+
+    /// Zeros: roots of N (Def 15.11.2); none for the zero transfer function.
+    ///
+    /// # Errors
+    /// [`LtiError::NoConvergence`] if the eigenvalue iteration fails.
+    pub fn zeros(&self) -> Result<Vec<Complex64>, LtiError> {
+        if self.num.is_zero() { Ok(Vec::new()) } else { self.num.roots() }
+    }
+
+    /// G(s) at a complex point (Horner on N and D, times e^{−τs}). For frequency responses
+    /// prefer [`Zpk::eval`], which does not overflow at large |s| (notes §3.4).
+    pub fn eval(&self, s: Complex64) -> Complex64 {
+        self.num.eval_c(s) / self.den.eval_c(s) * (-self.delay * s).exp()
+    }
+
+    /// The DC gain G(0), `None` when G has a pole at 0 (and N(0) ≠ 0).
+    pub fn dc_gain(&self) -> Option<f64> {
+        let (n0, d0) = (self.num.eval(0.0), self.den.eval(0.0));
+        if d0 == 0.0 {
+            if n0 == 0.0 { self.minreal(1e-9).ok()?.dc_gain() } else { None }
+        } else {
+            Some(n0 / d0)
+        }
+    }
+
+    /// Zero–pole–gain form G = k∏(s − zᵢ)/∏(s − pᵢ)·e^{−τs}.
+    ///
+    /// # Errors
+    /// [`LtiError::NoConvergence`] if a root computation fails.
+    pub fn to_zpk(&self) -> Result<Zpk, LtiError> {
+        let k = if self.num.is_zero() { 0.0 } else { self.num.leading() / self.den.leading() };
+        Zpk::new(self.zeros()?, self.poles()?, k)?.with_delay(self.delay)
+    }
+
+    /// −G.
+    pub fn neg(&self) -> Self {
+        Self { num: self.num.scale(-1.0), den: self.den.clone(), delay: self.delay }
+    }
+
+    /// c·G.
+    pub fn scale(&self, c: f64) -> Self {
+        Self { num: self.num.scale(c), den: self.den.clone(), delay: self.delay }
+    }
+
+    /// Series connection G₂G₁ (delays add).
+    pub fn series(&self, g2: &Self) -> Self {
+        Self { num: self.num.mul(&g2.num), den: self.den.mul(&g2.den), delay: self.delay + g2.delay }
+    }
+
+    /// Parallel connection G₁ + G₂.
+    ///
+    /// # Errors
+    /// [`LtiError::Delay`] when the delays differ (the sum is not rational times one delay).
+    pub fn parallel(&self, g2: &Self) -> Result<Self, LtiError> {
+        if self.delay != g2.delay {
+            return Err(LtiError::Delay { what: "parallel connection", delay: self.delay.max(g2.delay) });
+        }
+        let num = self.num.mul(&g2.den).add(&g2.num.mul(&self.den));
+        Ok(Self { num, den: self.den.mul(&g2.den), delay: self.delay })
+    }
+
+    /// Negative feedback G/(1 + GH) (H in the return path); with H = 1 this is the closed
+    /// loop T = L/(1 + L), and S = 1/(1 + L) of (15.18.4) is `one.feedback(&l)`.
+    ///
+    /// Book: (15.18.4).
+    ///
+    /// # Errors
+    /// [`LtiError::Delay`] with a delay in the loop; [`LtiError::ZeroDenominator`] when
+    /// 1 + GH ≡ 0.
+    pub fn feedback(&self, h: &Self) -> Result<Self, LtiError> {
+        self.require_rational("feedback")?;
+        h.require_rational("feedback")?;
+        // G/(1+GH) = N_g D_h / (D_g D_h + N_g N_h)
+        let num = self.num.mul(&h.den);
+        let den = self.den.mul(&h.den).add(&self.num.mul(&h.num));
+        Self::from_polynomials(num, den)
+    }
+
+    /// Sensitivity S = 1/(1 + L) of the loop L = self.
+    ///
+    /// Book: (15.18.4), (15.18.8).
+    ///
+    /// # Errors
+    /// As [`TransferFunction::feedback`].
+    pub fn sensitivity(&self) -> Result<Self, LtiError> {
+        Self::gain(1.0)?.feedback(self)
+    }
+
+    /// G(s/a) with numerator and denominator scaled so that time runs a times faster
+    /// (ω ↦ aω in the frequency response).
+    ///
+    /// # Errors
+    /// [`LtiError::InvalidArgument`] unless a is finite and > 0.
+    pub fn time_scaled(&self, a: f64) -> Result<Self, LtiError> {
+        if !(a.is_finite() && a > 0.0) {
+            return Err(LtiError::InvalidArgument {
+                what: "time scale",
+                reason: format!("a = {a}; need a > 0"),
+            });
+        }
+        let num = self.num.scale_variable(1.0 / a);
+        let den = self.den.scale_variable(1.0 / a);
+        Ok(Self { num, den, delay: self.delay * a })
+    }
+
+    /// Cancels zero–pole pairs closer than `tol·max(1, |p|)` (Matlab `minreal`); the result is
+    /// rebuilt from the remaining roots with the same high-frequency gain.
+    ///
+    /// Book: (15.14.15), 15.20.37, 15.20.38.
+    ///
+    /// # Errors
+    /// [`LtiError::InvalidArgument`] for a non-finite or negative tolerance;
+    /// [`LtiError::NoConvergence`] if a root computation fails.
+    pub fn minreal(&self, tol: f64) -> Result<Self, LtiError> {
+        check_finite("tolerance", [&tol])?;
+        if tol < 0.0 {
+            return Err(LtiError::InvalidArgument { what: "tolerance", reason: format!("{tol} < 0") });
+        }
+        if self.num.is_zero() {
+            return Ok(Self {
+                num: Polynomial::constant(0.0),
+                den: Polynomial::constant(1.0),
+                delay: self.delay,
+            });
+        }
+        let zpk = self.to_zpk()?.minreal(tol);
+        let mut g = zpk.to_tf()?;
+        g.delay = self.delay;
+        Ok(g)
+    }
+}
+
+impl fmt::Display for TransferFunction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "({}) / ({})", self.num, self.den)?;
+        if self.delay != 0.0 {
+            write!(f, " · exp(-{} s)", self.delay)?;
+        }
+        Ok(())
+    }
+}

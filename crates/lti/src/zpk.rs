@@ -1,0 +1,164 @@
+//! Zero–pole–gain form G(s) = k∏(s − zᵢ)/∏(s − pᵢ)·e^{−τs}, the form in which frequency
+//! responses are evaluated (no overflow at large ω, continuous phase factor by factor).
+//!
+//! Book: (15.18.1)–(15.18.6), 16.8.3; notes §3.4–3.5.
+
+use crate::error::LtiError;
+use crate::poly::Polynomial;
+use crate::tf::TransferFunction;
+use num_complex::Complex64;
+
+/// Zero–pole–gain form G(s) = k∏(s − zᵢ)/∏(s − pᵢ)·e^{−τs}.
+///
+/// Book: (15.18.1)–(15.18.6).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Zpk {
+    zeros: Vec<Complex64>,
+    poles: Vec<Complex64>,
+    gain: f64,
+    delay: f64,
+}
+
+fn finite(z: &[Complex64]) -> bool {
+    z.iter().all(|c| c.re.is_finite() && c.im.is_finite())
+}
+
+impl Zpk {
+    /// A zero–pole–gain system (no delay).
+    ///
+    /// # Errors
+    /// [`LtiError::NonFinite`] for a non-finite zero, pole or gain.
+    pub fn new(zeros: Vec<Complex64>, poles: Vec<Complex64>, gain: f64) -> Result<Self, LtiError> {
+        if !(finite(&zeros) && finite(&poles)) {
+            return Err(LtiError::NonFinite { what: "zeros or poles" });
+        }
+        if !gain.is_finite() {
+            return Err(LtiError::NonFinite { what: "gain" });
+        }
+        Ok(Self { zeros, poles, gain, delay: 0.0 })
+    }
+
+    /// The same system times e^{−τs}.
+    ///
+    /// # Errors
+    /// [`LtiError::InvalidArgument`] unless τ is finite and ≥ 0.
+    pub fn with_delay(mut self, tau: f64) -> Result<Self, LtiError> {
+        if !(tau.is_finite() && tau >= 0.0) {
+            return Err(LtiError::InvalidArgument {
+                what: "delay",
+                reason: format!("τ = {tau}; need τ ≥ 0"),
+            });
+        }
+        self.delay = tau;
+        Ok(self)
+    }
+
+    /// Zeros.
+    pub fn zeros(&self) -> &[Complex64] {
+        &self.zeros
+    }
+
+    /// Poles.
+    pub fn poles(&self) -> &[Complex64] {
+        &self.poles
+    }
+
+    /// Gain k (ratio of leading coefficients).
+    pub fn gain(&self) -> f64 {
+        self.gain
+    }
+
+    /// Delay τ.
+    pub fn delay(&self) -> f64 {
+        self.delay
+    }
+
+    /// G(s) = k∏(s − zᵢ)/∏(s − pᵢ)·e^{−τs}, products interleaved to avoid overflow.
+    pub fn eval(&self, s: Complex64) -> Complex64 {
+        let mut g = Complex64::new(self.gain, 0.0) * (-self.delay * s).exp();
+        let n = self.zeros.len().max(self.poles.len());
+        for i in 0..n {
+            if let Some(z) = self.zeros.get(i) {
+                g *= s - z;
+            }
+            if let Some(p) = self.poles.get(i) {
+                g /= s - p;
+            }
+        }
+        g
+    }
+
+    /// |G(jω)| for ω ≥ 0 (∞ at an imaginary-axis pole, 0 at an imaginary-axis zero).
+    pub fn magnitude(&self, omega: f64) -> f64 {
+        self.eval(Complex64::new(0.0, omega)).norm()
+    }
+
+    /// ∠G(jω) in degrees on the continuous branch (notes §3.5): ∠k + Σ∠(jω − zᵢ) − Σ∠(jω − pᵢ)
+    /// − ωτ, each factor continuous in ω > 0, shifted by a multiple of 360° so that the
+    /// low-frequency phase follows the book's rule (16.6.2): 0° or −180° by the sign of the
+    /// low-frequency gain, plus 90° per zero and −90° per pole at s = 0.
+    ///
+    /// Book: (16.6.2), §16.3; notes §3.5.
+    pub fn phase_deg(&self, omega: f64) -> f64 {
+        let factor = |r: &Complex64, w: f64| -> f64 {
+            // arg(jω − r) = atan2(ω − Im r, −Re r); for Re r > 0 take the branch in [0, 2π) so
+            // the angle does not jump when ω passes Im r.
+            let a = (w - r.im).atan2(-r.re);
+            if r.re > 0.0 && a < 0.0 { a + std::f64::consts::TAU } else { a }
+        };
+        let raw = |w: f64| -> f64 {
+            self.zeros.iter().map(|z| factor(z, w)).sum::<f64>()
+                - self.poles.iter().map(|p| factor(p, w)).sum::<f64>()
+        };
+        // Low-frequency limit of the factor sum, ω → 0⁺.
+        let limit = |r: &Complex64| -> f64 {
+            if r.re == 0.0 && r.im == 0.0 { std::f64::consts::FRAC_PI_2 } else { factor(r, 0.0) }
+        };
+        let raw0 = self.zeros.iter().map(limit).sum::<f64>() - self.poles.iter().map(limit).sum::<f64>();
+        // Book's low-frequency phase: sign of k∏(−zᵢ)/∏(−pᵢ) over the nonzero roots, ±90° per
+        // root at the origin.
+        let origin = |v: &[Complex64]| v.iter().filter(|r| r.re == 0.0 && r.im == 0.0).count() as f64;
+        let k0 = self
+            .zeros
+            .iter()
+            .filter(|r| !(r.re == 0.0 && r.im == 0.0))
+            .fold(Complex64::new(self.gain, 0.0), |acc, z| acc * (-z));
+        let k0 = self.poles.iter().filter(|r| !(r.re == 0.0 && r.im == 0.0)).fold(k0, |acc, p| acc / (-p));
+        let book0 = if k0.re < 0.0 { -std::f64::consts::PI } else { 0.0 }
+            + std::f64::consts::FRAC_PI_2 * (origin(&self.zeros) - origin(&self.poles));
+        let gain_angle = if self.gain < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let turns = ((book0 - raw0 - gain_angle) / std::f64::consts::TAU).round();
+        (gain_angle + raw(omega) + turns * std::f64::consts::TAU - omega * self.delay).to_degrees()
+    }
+
+    /// Cancels zero–pole pairs closer than `tol·max(1, |p|)`, nearest first.
+    pub fn minreal(&self, tol: f64) -> Self {
+        let mut zeros = self.zeros.clone();
+        let mut poles = Vec::new();
+        for p in &self.poles {
+            let best = zeros
+                .iter()
+                .enumerate()
+                .map(|(i, z)| (i, (z - p).norm()))
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+                .filter(|&(_, d)| d <= tol * p.norm().max(1.0));
+            match best {
+                Some((i, _)) => {
+                    zeros.remove(i);
+                }
+                None => poles.push(*p),
+            }
+        }
+        Self { zeros, poles, gain: self.gain, delay: self.delay }
+    }
+
+    /// Back to N/D with N = k∏(s − zᵢ), D = ∏(s − pᵢ).
+    ///
+    /// # Errors
+    /// [`LtiError::NonFinite`] (cannot happen for a validated Zpk).
+    pub fn to_tf(&self) -> Result<TransferFunction, LtiError> {
+        let num = Polynomial::from_roots(&self.zeros)?.scale(self.gain);
+        let den = Polynomial::from_roots(&self.poles)?;
+        TransferFunction::from_polynomials(num, den)?.with_delay(self.delay)
+    }
+}
