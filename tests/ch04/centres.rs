@@ -1,0 +1,1 @@
+//! §4.15–4.18: screw axis, IVCR, IACR, Chasles, rolling.

@@ -1,0 +1,1 @@
+//! §4.19–4.21: worked examples and problems.
