@@ -42,7 +42,12 @@ pub fn bishop_frames<T: Scalar>(
     let unit_t = |t: &Vector<T>| t.unit().ok_or(KinematicsError::Zero { what: "curve tangent" });
     let mut t = unit_t(&tangents[0])?;
     // project u0 perpendicular to t₀
-    let mut u = (*u0 - t * t.dot(u0)).unit().ok_or(KinematicsError::Zero { what: "initial normal ⊥ tangent" })?;
+    let u_perp = *u0 - t * t.dot(u0);
+    // u0 (numerically) parallel to t₀ leaves no normal direction
+    if u_perp.norm().re() <= 64.0 * T::eps() * u0.norm().re() {
+        return Err(KinematicsError::Zero { what: "initial normal ⊥ tangent" });
+    }
+    let mut u = u_perp.unit().ok_or(KinematicsError::Zero { what: "initial normal ⊥ tangent" })?;
     let frame = |t: &Vector<T>, u: &Vector<T>| Frame::from_axes(t, u, &t.cross(u), ORTHONORMAL_TOL);
     let mut out = vec![frame(&t, &u)?];
     for i in 0..points.len() - 1 {
