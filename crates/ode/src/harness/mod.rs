@@ -1,5 +1,11 @@
-//! The work–precision harness: reference problems with exact solutions.
+//! The work–precision harness: reference problems with exact solutions, every method over
+//! a range of tolerances or step counts, recording (error, time, evaluations).
 //!
 //! Book: §4.11; HNW §II.10 (work–precision diagrams).
 
 pub mod elliptic;
+mod problems;
+mod rigid;
+
+pub use problems::{CHAIN_MASSES, Kepler, Oscillator, Pendulum, Reference, Separable, SpringChain};
+pub use rigid::{RigidBody, euler_equations, quaternion_rate};
