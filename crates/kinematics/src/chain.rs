@@ -21,7 +21,7 @@ use crate::{KinematicsError, LabeledFrame};
 ///
 /// Book: §4.13, (4.13.15).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ChainLink<T: Scalar = f64> {
+pub struct LinkMotion<T: Scalar = f64> {
     /// Body k's frame at this instant.
     pub body: LabeledFrame<T>,
     /// ω⃗_{k/k−1}.
@@ -87,7 +87,7 @@ fn shift<T: Scalar>(r: &Vector<T>, v: &Vector<T>, w: &Vector<T>) -> Vector<T> {
 /// # Errors
 /// [`KinematicsError::EmptyChain`]; [`KinematicsError::NonFinite`].
 pub fn chain_kinematics<T: Scalar>(
-    links: &[ChainLink<T>],
+    links: &[LinkMotion<T>],
 ) -> Result<(Vec<JointTwist<T>>, Vec<JointAccel<T>>), KinematicsError> {
     let n = links.len();
     let first = links.first().ok_or(KinematicsError::EmptyChain { what: "chain_kinematics" })?;

@@ -58,17 +58,17 @@ pub enum KinematicsError {
     },
     /// Euler-angle rates at a gimbal lock: the rate matrix S is singular.
     #[error(
-        "gimbal lock for Euler sequence {sequence}: |det S| = {det:e}, condition number {condition:e} exceeds {limit:e}; the middle angle must stay away from {singular_at}"
+        "gimbal lock for Euler sequence {sequence}: |det S| = {det:e} is not above the tolerance {tol:e} (condition number {condition:e}); the middle angle must stay away from {singular_at}"
     )]
     GimbalLock {
-        /// The sequence, e.g. "3-2-1".
+        /// The sequence, e.g. "3-2-1 intrinsic".
         sequence: String,
-        /// det S (cos β for asymmetric, sin β for symmetric sequences).
+        /// det S (±cos β for Tait–Bryan, ±sin β for symmetric sequences).
         det: f64,
-        /// Condition number of S (∞ at the singularity).
+        /// 2-norm condition number of S (∞ at the exact singularity).
         condition: f64,
-        /// The limit it was compared with.
-        limit: f64,
+        /// The tolerance on |det S|.
+        tol: f64,
         /// Where the middle angle makes S singular.
         singular_at: &'static str,
     },

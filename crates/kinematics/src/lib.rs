@@ -6,6 +6,7 @@
 //! ω_{A/B}|_A bug of Fact 4.3.2).
 #![warn(missing_docs)]
 
+pub mod attitude;
 mod bishop;
 mod chain;
 mod curvilinear;
@@ -20,7 +21,7 @@ mod screw;
 mod transport;
 
 pub use bishop::bishop_frames;
-pub use chain::{ChainLink, JointAccel, JointTwist, ResolvedLink, chain_kinematics, chain_velocity_resolved};
+pub use chain::{LinkMotion, JointAccel, JointTwist, ResolvedLink, chain_kinematics, chain_velocity_resolved};
 pub use curvilinear::{Cylindrical, Spherical};
 pub use error::KinematicsError;
 pub use frenet::FrenetSerret;
