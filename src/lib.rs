@@ -14,6 +14,7 @@
 
 pub use nalgebra;
 pub use num_dual;
+pub use vectrix_dynamics as dynamics;
 pub use vectrix_frames as frames;
 pub use vectrix_kinematics as kinematics;
 pub use vectrix_lti as lti;
@@ -26,6 +27,7 @@ pub use vectrix_tensor as tensor;
 /// Everything for notebooks and applications: `use vectrix::prelude::*;`.
 #[allow(unused_imports)] // layers still in progress export empty preludes
 pub mod prelude {
+    pub use vectrix_dynamics::prelude::*;
     pub use vectrix_frames::prelude::*;
     pub use vectrix_kinematics::prelude::*;
     pub use vectrix_lti::prelude::*;
