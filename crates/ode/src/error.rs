@@ -104,6 +104,16 @@ pub enum OdeError {
     /// Dense output was not recorded for this solution.
     #[error("dense output was not recorded; enable it with `.dense(true)`")]
     NoDenseOutput,
+    /// An [`Accuracy`](crate::Accuracy) stricter than the harness could reach.
+    #[error(
+        "requested accuracy {requested:e} is below the strictest measured target {best:e}; ask for ≥ {best:e} or choose a method yourself"
+    )]
+    UnreachableAccuracy {
+        /// The requested tolerance.
+        requested: f64,
+        /// The strictest target in the table.
+        best: f64,
+    },
     /// Vectors of different lengths where equal lengths are needed.
     #[error("dimension mismatch: {what} has length {got}, expected {expected}")]
     DimensionMismatch {

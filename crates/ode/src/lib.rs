@@ -9,7 +9,7 @@
 //!   Crouch–Grossman) over a small [`LieGroup`] trait, and the exact quaternion step
 //!   [`quaternion_exact_step`] (4.11.17);
 //! * a work–precision [`harness`] on reference problems with exact solutions, and the
-//!   `Accuracy` choice derived from it.
+//!   [`Accuracy`] choice derived from it.
 //!
 //! Every run reports its [`Work`]. Bad input returns an [`OdeError`] that says where.
 //!
@@ -18,6 +18,7 @@
 //! *Geometric Numerical Integration*.
 #![warn(missing_docs)]
 
+mod accuracy;
 mod error;
 pub mod explicit;
 pub mod harness;
@@ -26,6 +27,7 @@ pub mod lie;
 mod state;
 mod work;
 
+pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow};
 pub use error::OdeError;
 pub use explicit::{
     Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, HEUN, Pair, RK4, Solution, Tableau,
@@ -38,7 +40,7 @@ pub use work::Work;
 /// `use vectrix_ode::prelude::*;`
 pub mod prelude {
     pub use crate::{
-        Adaptive, Direction, Event, GaussLegendre, LieGroup, LieMethod, OdeError, Pair, Solution, State,
-        Work, integrate_lie, stormer_verlet,
+        Accuracy, Adaptive, Direction, Event, GaussLegendre, LieGroup, LieMethod, OdeError, Pair, Solution,
+        State, Work, integrate_lie, stormer_verlet,
     };
 }

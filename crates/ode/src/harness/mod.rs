@@ -6,6 +6,10 @@
 pub mod elliptic;
 mod problems;
 mod rigid;
+mod run;
+mod suite;
 
 pub use problems::{CHAIN_MASSES, Kepler, Oscillator, Pendulum, Reference, Separable, SpringChain};
 pub use rigid::{RigidBody, euler_equations, quaternion_rate};
+pub use run::{Budget, Method, Point, sweep, sweep_lie, sweep_verlet};
+pub use suite::{Derived, FILE_STEMS, PROBLEMS, cheapest, derive_accuracy, run_all};

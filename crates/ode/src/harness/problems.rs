@@ -25,6 +25,11 @@ pub trait Reference<const N: usize> {
         let e = (y - self.exact(self.t_end())).amax();
         if e.is_finite() { e } else { f64::INFINITY }
     }
+    /// Relative drifts of the geometric invariants (off the group, of T, of |H|) of a final
+    /// state, where the problem has them.
+    fn drift(&self, _y: &SVector<f64, N>) -> Option<[f64; 3]> {
+        None
+    }
 }
 
 /// A separable second-order problem q̈ = a(q), state y = (q, v), for Störmer–Verlet.

@@ -155,4 +155,8 @@ impl Reference<7> for RigidBody {
         let e = (Vector3::new(y[0], y[1], y[2]) - self.exact_omega(self.t_end)).amax();
         if e.is_finite() { e } else { f64::INFINITY }
     }
+    fn drift(&self, y: &SVector<f64, 7>) -> Option<[f64; 3]> {
+        let q = Vector4::new(y[3], y[4], y[5], y[6]);
+        Some(RigidBody::drift(self, &Vector3::new(y[0], y[1], y[2]), q.norm()))
+    }
 }

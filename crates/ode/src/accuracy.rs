@@ -1,0 +1,95 @@
+//! Stating an accuracy instead of a method: [`Accuracy::RelTol`] picks the method and
+//! tolerance that reached that global error at least cost in the work–precision harness.
+
+use crate::explicit::{Adaptive, Pair, Solution};
+use crate::{OdeError, State};
+
+/// The accuracy a user asks for.
+///
+/// Book: §4.11; derived from the harness (`vectrix accuracy`, docs/accuracy.md).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Accuracy {
+    /// Global relative error of the end state, for non-stiff problems whose state components
+    /// are of order one (the scale of the reference problems; set `atol` yourself through
+    /// [`Accuracy::solver`] for other scales).
+    RelTol(f64),
+}
+
+/// One row of [`ACCURACY_TABLE`]: for a global error ≤ `target`, run `pair` at
+/// rtol = atol = `rtol`.
+///
+/// Book: §4.11.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AccuracyRow {
+    /// Global error reached on every non-stiff reference problem.
+    pub target: f64,
+    /// The pair that reached it at least summed wall time.
+    pub pair: Pair,
+    /// The largest swept local tolerance that reached it.
+    pub rtol: f64,
+}
+
+/// The table behind [`Accuracy`], copied from `harness::derive_accuracy` on the full
+/// harness (`cargo run --release -- accuracy`, 2026-11-21). How it was derived: for every
+/// target 10⁻ᵏ and both adaptive pairs, the largest rtol of the sweep 10⁻³…10⁻¹³ whose
+/// end-time error was ≤ target on *all* non-stiff reference problems (oscillator, pendulum
+/// θ₀ = 3, Kepler e = 0, 0.5, 0.9, rigid body); of the two pairs the one with the smaller
+/// summed wall time won. DOP853 won every row: the global error of Kepler e = 0.9 is
+/// 10–100× the local tolerance, which forces tight tolerances where the 8th-order pair is
+/// cheaper. No swept tolerance reached 10⁻¹² everywhere, so the table stops at 10⁻¹¹.
+///
+/// Book: §4.11; HNW §II.10.
+pub const ACCURACY_TABLE: [AccuracyRow; 9] = [
+    AccuracyRow { target: 1e-3, pair: Pair::Dop853, rtol: 1e-6 },
+    AccuracyRow { target: 1e-4, pair: Pair::Dop853, rtol: 1e-7 },
+    AccuracyRow { target: 1e-5, pair: Pair::Dop853, rtol: 1e-8 },
+    AccuracyRow { target: 1e-6, pair: Pair::Dop853, rtol: 1e-9 },
+    AccuracyRow { target: 1e-7, pair: Pair::Dop853, rtol: 1e-9 },
+    AccuracyRow { target: 1e-8, pair: Pair::Dop853, rtol: 1e-11 },
+    AccuracyRow { target: 1e-9, pair: Pair::Dop853, rtol: 1e-11 },
+    AccuracyRow { target: 1e-10, pair: Pair::Dop853, rtol: 1e-12 },
+    AccuracyRow { target: 1e-11, pair: Pair::Dop853, rtol: 1e-13 },
+];
+
+impl Accuracy {
+    /// The table row chosen: the loosest target that is at least as strict as requested.
+    ///
+    /// # Errors
+    /// [`OdeError::NonPositiveTolerance`] for a tolerance ≤ 0 or not finite;
+    /// [`OdeError::UnreachableAccuracy`] below the strictest target of [`ACCURACY_TABLE`].
+    pub fn row(&self) -> Result<AccuracyRow, OdeError> {
+        let Accuracy::RelTol(tol) = *self;
+        crate::error::check_tol("rtol", tol)?;
+        ACCURACY_TABLE.iter().find(|r| r.target <= tol).copied().ok_or(OdeError::UnreachableAccuracy {
+            requested: tol,
+            best: ACCURACY_TABLE[ACCURACY_TABLE.len() - 1].target,
+        })
+    }
+
+    /// The adaptive solver the table selects (rtol = atol from the table).
+    ///
+    /// # Errors
+    /// As [`Accuracy::row`].
+    pub fn solver(&self) -> Result<Adaptive, OdeError> {
+        let row = self.row()?;
+        let a = match row.pair {
+            Pair::Dopri5 => Adaptive::dopri5(),
+            Pair::Dop853 => Adaptive::dop853(),
+        };
+        Ok(a.rtol(row.rtol).atol(row.rtol))
+    }
+
+    /// Solves y′ = f(t, y) on [t0, t1] with the selected solver.
+    ///
+    /// # Errors
+    /// As [`Accuracy::row`] and [`Adaptive::solve`].
+    pub fn solve<S: State, F: FnMut(f64, &S) -> S>(
+        &self,
+        f: F,
+        t0: f64,
+        y0: &S,
+        t1: f64,
+    ) -> Result<Solution<S>, OdeError> {
+        self.solver()?.solve(f, t0, y0, t1)
+    }
+}
