@@ -190,7 +190,7 @@ impl<T: Scalar> Tensor<T> {
     /// Reserved for `vectrix-frames` (see [`crate::Vector::from_hidden`]).
     #[doc(hidden)]
     pub fn from_hidden(p: usize, q: usize, data: Vec<T>) -> Result<Self, TensorError> {
-        let n = Self::components_for(p.saturating_add(q), usize::MAX)?;
+        let n = Self::checked_len(p, q)?;
         if data.len() != n {
             return Err(TensorError::Shape {
                 detail: format!("a ({p}, {q}) tensor has {n} components, got {}", data.len()),
