@@ -60,11 +60,11 @@ pub use rotation::Rotation;
 /// `use vectrix_rotation::prelude::*;`
 pub mod prelude {
     pub use crate::{
-        Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, EulerSolution, Quaternion,
-        RigidDisplacement, Rotation, RotationError, Screw, chain_backward, chain_forward,
-        check_rotation_matrix, compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs,
-        compose_mrp, compose_orientation, compose_quaternion, compose_rotation_matrix, homogeneous,
-        homogeneous_inverse, mrp_shadow, nearest_rotation, orientation_about, quaternion_about,
+        Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, EulerSolution, GIMBAL_LOCK_TOL,
+        Quaternion, ROTATION_TOL, RigidDisplacement, Rotation, RotationError, Screw, chain_backward,
+        chain_forward, check_rotation_matrix, compose_angle_vector, compose_coplanar, compose_euler,
+        compose_gibbs, compose_mrp, compose_orientation, compose_quaternion, compose_rotation_matrix,
+        homogeneous, homogeneous_inverse, mrp_shadow, nearest_rotation, orientation_about, quaternion_about,
         rotation_about,
     };
 }

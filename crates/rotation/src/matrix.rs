@@ -57,11 +57,11 @@ pub fn nearest_rotation<T: Scalar>(m: &Matrix3<T>) -> Result<Matrix3<T>, Rotatio
     let mut u = u;
     // det(U Vᵀ) = −1: flip the column of U belonging to the smallest singular value.
     if (u * v_t).determinant() < T::zero() {
-        let (k, _) =
-            svd.singular_values
-                .iter()
-                .enumerate()
-                .fold((0, svd.singular_values[0]), |acc, (i, s)| if *s < acc.1 { (i, *s) } else { acc });
+        let (k, _) = svd
+            .singular_values
+            .iter()
+            .enumerate()
+            .fold((0, svd.singular_values[0]), |acc, (i, s)| if *s < acc.1 { (i, *s) } else { acc });
         let col = -u.column(k);
         u.set_column(k, &col);
     }

@@ -204,13 +204,13 @@ impl<T: Scalar> Rotation<T> {
         let (xh, yh) = (x.unit()?, y.unit()?);
         let c = xh.dot(&yh);
         let w = xh.cross(&yh);
-        // 1 + cos θ cancels near θ = π: there, use the half-way vector (x̂ + ŷ) instead.
+        // 1 + cos θ cancels near θ = π: there, use θ = atan2(|w|, c) and n̂ = w/|w|; an error
+        // ε/sin θ in n̂ (ill-conditioned near anti-parallel) moves R⃗x̂ by only ε, since n̂ ⊥ x̂.
         let (s, v) = if c.re() > -0.5 {
             (T::one() + c, w)
         } else {
-            let h = xh + yh;
-            let hn = h.norm();
-            if hn.re() <= 8.0 * T::eps() {
+            let wn = w.norm();
+            if wn == T::zero() {
                 // 180° singularity: x̂ ≈ −ŷ, axis ⊥ x̂.
                 let a = Frame::<T>::identity();
                 let xc = vectrix_frames::Resolve::resolve(&xh, &a);
@@ -222,9 +222,8 @@ impl<T: Scalar> Rotation<T> {
                     rotor: Rotor::from_parts_unchecked(T::zero(), Bivector::dual_of(&-n)),
                 });
             }
-            // q = (x̂·ĥ, x̂×ĥ) with ĥ the bisector: cos(θ/2) = x̂·ĥ.
-            let hh = h / hn;
-            (xh.dot(&hh), xh.cross(&hh))
+            let half = wn.atan2(c) * T::lit(0.5);
+            (half.cos(), w * (half.sin() / wn))
         };
         let n = (s * s + v.norm_squared()).sqrt();
         Some(Rotation { rotor: Rotor::from_parts_unchecked(s / n, Bivector::dual_of(&-(v / n))) })

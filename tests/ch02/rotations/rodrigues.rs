@@ -1,0 +1,265 @@
+//! §2.11 Rodrigues's formula and Euler's theorem; §2.8–2.10 rotation basics used by them.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use nalgebra::{Matrix3, Vector3};
+use vectrix::prelude::*;
+
+use super::{assert_mat, assert_vec, rodrigues, rot, unit};
+use crate::support::*;
+
+/// (2.8.7–9): R⃗_{B/A} = F_B𝓕′_A takes the axes of A to those of B; R⃗_{A/B} = R⃗_{B/A}⁻¹ (2.8.12–14).
+#[test]
+fn eq_2_8_7_rotation_between_frames() {
+    let a = Frame::new();
+    let b = rot(&a, [1.0, 2.0, 2.0], 0.7).apply_frame(&a);
+    let r_ba = Rotation::between(&b, &a);
+    assert_vec(&r_ba.apply(&a.i()).resolve(&a), &b.i().resolve(&a), 4.0 * EPS);
+    assert_vec(&r_ba.apply(&a.k()).resolve(&a), &b.k().resolve(&a), 4.0 * EPS);
+    let r_ab = Rotation::between(&a, &b);
+    assert_mat(&r_ab.rotation_matrix_in(&a), &r_ba.inverse().rotation_matrix_in(&a), 4.0 * EPS);
+    // Fact 2.10.1: 𝓡_{B/A} = R⃗_{B/A}|_A = R⃗_{B/A}|_B, columns = B's axes in A.
+    assert_mat(&r_ba.rotation_matrix_in(&a), &b.rotation_rel(&a), 4.0 * EPS);
+    assert_mat(&r_ba.rotation_matrix_in(&b), &b.rotation_rel(&a), 4.0 * EPS);
+    assert_mat(&r_ba.orientation_matrix_in(&a), &b.orientation_rel(&a), 4.0 * EPS);
+}
+
+/// (2.10.33–34) corrected: for y⃗ = R⃗_{B/A}x⃗, y|_B = x|_A (the printed "x|_B" is an erratum).
+#[test]
+fn eq_2_10_34_corrected_components() {
+    let a = Frame::new();
+    let r_ba = rot(&a, [0.0, 0.6, 0.8], 1.3);
+    let b = r_ba.apply_frame(&a);
+    let x = a.vector([0.3, -1.2, 2.0]);
+    let y = r_ba.apply(&x);
+    assert_vec(&y.resolve(&b), &x.resolve(&a), 8.0 * EPS);
+    // Oracle (notes ch1-2a §4c): x|_B = (−2.001036031914, −0.165491940363, 1.224118955273).
+    assert_vec(&x.resolve(&b), &Vector3::new(-2.001036031914, -0.165491940363, 1.224118955273), 1e-12);
+}
+
+/// (2.11.1–6): R_n(θ) = cosθ I + (1−cosθ)nn′ + sinθ n^× = I + (1−cosθ)n^{×2} + sinθ n^×.
+#[test]
+fn eq_2_11_1_rodrigues_formula() {
+    let a = Frame::new();
+    for &(n, th) in &[([1.0, 2.0, 2.0], 0.4), ([0.0, 0.0, 1.0], -2.5), ([-3.0, 1.0, 0.5], 3.0)] {
+        let r = rot(&a, n, th).rotation_matrix_in(&a);
+        assert_mat(&r, &rodrigues(&unit(n), th), 8.0 * EPS);
+        let nx = unit(n).cross_matrix();
+        assert_mat(&r, &(Matrix3::identity() + nx * nx * (1.0 - th.cos()) + nx * th.sin()), 8.0 * EPS);
+    }
+    // Oracles (notes ch1-2a §4c).
+    let r = rot(&a, [1.0, 1.0, 1.0], 2.0 * PI / 3.0).rotation_matrix_in(&a);
+    assert_mat(&r, &Matrix3::new(0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0), 4.0 * EPS);
+    let r = rot(&a, [1.0, 2.0, 2.0], FRAC_PI_2).rotation_matrix_in(&a);
+    assert_mat(&r, &(Matrix3::new(1.0, -4.0, 8.0, 8.0, 4.0, 1.0, -4.0, 7.0, 4.0) / 9.0), 4.0 * EPS);
+}
+
+/// Fact 2.11.1: R n = n (2.11.14); R_n(−θ) = R_{−n}(θ) = R_n(θ)′ (2.11.15–16);
+/// cosθ = (tr R − 1)/2 (2.11.17); sinθ n^× = (R − R′)/2 (2.11.18).
+#[test]
+fn fact_2_11_1_rodrigues_properties() {
+    let a = Frame::new();
+    let (n, th) = ([2.0, -1.0, 0.5], 1.1);
+    let r = rot(&a, n, th);
+    let m = r.rotation_matrix_in(&a);
+    assert_vec(&(m * unit(n)), &unit(n), 4.0 * EPS);
+    let m_neg = rot(&a, n, -th).rotation_matrix_in(&a);
+    assert_mat(&m_neg, &rot(&a, [-2.0, 1.0, -0.5], th).rotation_matrix_in(&a), 4.0 * EPS);
+    assert_mat(&m_neg, &m.transpose(), 4.0 * EPS);
+    assert_close((m.trace() - 1.0) / 2.0, th.cos(), 4.0 * EPS);
+    assert_mat(&(unit(n).cross_matrix() * th.sin()), &((m - m.transpose()) / 2.0), 4.0 * EPS);
+}
+
+/// Fact 2.11.2 (2.11.21–22): y = (|y|/|x|)[cosθ x + sinθ n×x] with θ = θ_{y/x/n}.
+#[test]
+fn fact_2_11_2_rotating_one_vector_onto_another() {
+    let a = Frame::new();
+    let (x, y) = (a.vector([1.0, 2.0, 0.0]), a.vector([-3.0, 0.5, 0.0]));
+    let n = a.k();
+    let th = y.directed_angle_rel(&x, &n).unwrap();
+    let want = (x * th.cos() + n.cross(&x) * th.sin()) * (y.norm() / x.norm());
+    assert_vec(&want.resolve(&a), &y.resolve(&a), 8.0 * EPS);
+    let r = Rotation::from_axis_angle(&n, th).unwrap();
+    assert_vec(&(r.apply(&x) * (y.norm() / x.norm())).resolve(&a), &y.resolve(&a), 8.0 * EPS);
+}
+
+/// Fact 2.11.4: tr R = 3 ⇒ R = I, θ = 0, every axis is an eigenaxis.
+#[test]
+fn fact_2_11_4_identity() {
+    let a = Frame::new();
+    let r = Rotation::between(&a, &a);
+    assert_eq!(r.axis_angle(), AxisAngle::Identity);
+    assert_eq!(r.axis_angle_in(&a).angle(), 0.0);
+    assert_eq!(r.angle_vector_in(&a), Vector3::zeros());
+    assert_eq!(
+        Quaternion::from_rotation_matrix(&Matrix3::<f64>::identity(), ROTATION_TOL).unwrap(),
+        Quaternion::identity()
+    );
+}
+
+/// Fact 2.11.5: tr R = −1 ⇒ θ = π about ±n, nn′ = (R + I)/2, R = −I + 2nnᵀ (2.11.33); vectrix
+/// returns the canonical sign (first nonzero component positive).
+#[test]
+fn fact_2_11_5_half_turn() {
+    let a = Frame::new();
+    let want = Matrix3::new(-7.0, 4.0, 4.0, 4.0, -1.0, 8.0, 4.0, 8.0, -1.0) / 9.0;
+    for n in [[1.0, 2.0, 2.0], [-1.0, -2.0, -2.0]] {
+        let m = rodrigues(&unit(n), PI);
+        assert_mat(&m, &want, 4.0 * EPS);
+        assert_close(m.trace(), -1.0, 4.0 * EPS);
+        let r = Rotation::from_rotation_matrix_in(&a, &want, ROTATION_TOL).unwrap();
+        match r.axis_angle_in(&a) {
+            AxisAngle::HalfTurn(axis) => assert_vec(&axis, &unit([1.0, 2.0, 2.0]), 4.0 * EPS),
+            other => panic!("expected a half turn, got {other:?}"),
+        }
+        let nn = unit([1.0, 2.0, 2.0]) * unit([1.0, 2.0, 2.0]).transpose();
+        assert_mat(&((want + Matrix3::identity()) / 2.0), &nn, 4.0 * EPS);
+        assert_mat(&(-Matrix3::identity() + nn * 2.0), &want, 4.0 * EPS);
+    }
+    // Canonical sign where the first component is zero: n = (0, −1, 0) → (0, 1, 0).
+    let r =
+        Rotation::from_rotation_matrix_in(&a, &Matrix3::from_diagonal(&Vector3::new(-1.0, 1.0, -1.0)), 0.0)
+            .unwrap();
+    assert_eq!(r.axis_angle_in(&a), AxisAngle::HalfTurn(Vector3::new(0.0, 1.0, 0.0)));
+    assert_eq!(r.angle_vector_in(&a), Vector3::new(0.0, PI, 0.0));
+}
+
+/// (2.11.49–51): for −1 < tr < 3, θ ∈ (0, π) and n̂ is unique; θ_{B/A} = θ_{A/B},
+/// n̂_{B/A} = −n̂_{A/B}.
+#[test]
+fn eq_2_11_49_general_eigenaxis() {
+    let a = Frame::new();
+    let r = rot(&a, [1.0, -2.0, 0.5], 2.2);
+    let (AxisAngle::General { axis: n_ba, angle: t_ba }, AxisAngle::General { axis: n_ab, angle: t_ab }) =
+        (r.axis_angle_in(&a), r.inverse().axis_angle_in(&a))
+    else {
+        panic!("general rotation expected");
+    };
+    assert_close(t_ba, 2.2, 4.0 * EPS);
+    assert_close(t_ab, t_ba, 0.0);
+    assert_vec(&n_ba, &unit([1.0, -2.0, 0.5]), 4.0 * EPS);
+    assert_vec(&n_ab, &-n_ba, 0.0);
+    // F2.11.7: −n with θ − 2π is the same rotation; the eigenangle stays in [0, π].
+    let r2 = rot(&a, [-1.0, 2.0, -0.5], 2.2 - 2.0 * PI);
+    assert_close(r2.axis_angle().angle(), 2.2, 8.0 * EPS);
+}
+
+/// Fact 2.11.8 (2.11.53–58): R_{A/B} flips the sign of the sinθ n^× term.
+#[test]
+fn fact_2_11_8_inverse() {
+    let a = Frame::new();
+    let (n, th) = (unit([0.3, 0.4, -1.0]), 0.9);
+    let r_ab = rot(&a, [0.3, 0.4, -1.0], th).inverse().rotation_matrix_in(&a);
+    let want =
+        Matrix3::identity() * th.cos() + n * n.transpose() * (1.0 - th.cos()) - n.cross_matrix() * th.sin();
+    assert_mat(&r_ab, &want, 4.0 * EPS);
+}
+
+/// Fact 2.11.9: the rotation taking x to y (|x| = |y|) is R_{θ̂_{y/x}}(θ_{y/x}); any axis ⊥ x for
+/// parallel or anti-parallel vectors (the printed "unique" over-claims).
+#[test]
+fn fact_2_11_9_rotation_taking_x_to_y() {
+    let a = Frame::new();
+    let cases = [
+        ([1.0, 2.0, 3.0], [-2.0, 0.5, 1.0]),
+        ([1.0, 0.0, 0.0], [1.0, 1e-9, 0.0]),
+        ([1.0, 0.0, 0.0], [-1.0, 1e-9, 0.0]),
+        ([1.0, 2.0, 3.0], [-1.0, -2.0, -3.0]),
+        ([0.0, 0.0, 2.0], [0.0, 0.0, 5.0]),
+    ];
+    for (x, y) in cases {
+        let (x, y) = (a.vector(x), a.vector(y));
+        let r = Rotation::taking(&x, &y).unwrap();
+        let got = r.apply(&x.unit().unwrap());
+        assert_vec(&got.resolve(&a), &y.unit().unwrap().resolve(&a), 16.0 * EPS);
+        if let Some(n) = y.unit_angle_vector_rel(&x) {
+            // Minimal: the angle is θ_{y/x} about θ̂_{y/x}.
+            assert_close(r.axis_angle().angle(), x.angle(&y), 16.0 * EPS);
+            if x.angle(&y) > 1e-6 && x.angle(&y) < PI - 1e-6 {
+                assert_vec(&r.axis_angle().axis().unwrap().resolve(&a), &n.resolve(&a), 1e-9);
+            }
+        }
+    }
+    assert!(Rotation::taking(&Vector::zero(), &a.i()).is_none());
+}
+
+/// Fact 2.11.10 (2.11.59): for n = v×w, n^× = wv′ − vw′.
+#[test]
+fn fact_2_11_10_cross_replacement() {
+    let (v, w) = (Vector3::new(1.0, -2.0, 0.5), Vector3::new(0.3, 0.7, 2.0));
+    assert_mat(&v.cross(&w).cross_matrix(), &(w * v.transpose() - v * w.transpose()), 4.0 * EPS);
+}
+
+/// Fact 2.11.11 (2.11.60–61, corrected: csc(θ_{C/A}/2), and the lost ×): composition of
+/// eigenaxis rotations is quaternion multiplication.
+#[test]
+fn fact_2_11_11_composition_of_eigenaxis_rotations() {
+    let a = Frame::new();
+    let (n_cb, t_cb, n_ba, t_ba) = (Vector3::x(), 0.9, Vector3::new(0.0, 0.6, 0.8), 1.3);
+    let r_ca = rot(&a, n_cb.into(), t_cb) * rot(&a, n_ba.into(), t_ba);
+    let AxisAngle::General { axis, angle } = r_ca.axis_angle_in(&a) else { panic!("general") };
+    // Oracle (notes ch1-2a §4c).
+    assert_close(angle, 1.5430984177761988, 4.0 * EPS);
+    assert_vec(&axis, &Vector3::new(0.496623456355, 0.166906264287, 0.851767246106), 1e-12);
+    // (2.11.60) and the corrected (2.11.61).
+    let (c1, s1, c2, s2) = ((t_cb / 2.0).cos(), (t_cb / 2.0).sin(), (t_ba / 2.0).cos(), (t_ba / 2.0).sin());
+    assert_close((angle / 2.0).cos(), c1 * c2 - s1 * s2 * n_cb.dot(&n_ba), 4.0 * EPS);
+    let n = (n_cb * (s1 * c2) + n_ba * (c1 * s2) + n_cb.cross(&n_ba) * (s1 * s2)) / (angle / 2.0).sin();
+    assert_vec(&axis, &n, 8.0 * EPS);
+}
+
+/// Prob 2.26.9: a quarter turn about k̂_A: 𝓡 = [[0,−1,0],[1,0,0],[0,0,1]], θ = π/2, n = k̂,
+/// q = [√2/2, 0, 0, √2/2], 𝓞 = 𝓡ᵀ.
+#[test]
+fn problem_2_26_9_quarter_turn() {
+    let a = Frame::new();
+    let r = rot(&a, [0.0, 0.0, 1.0], FRAC_PI_2);
+    assert_mat(
+        &r.rotation_matrix_in(&a),
+        &Matrix3::new(0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0),
+        4.0 * EPS,
+    );
+    assert_mat(
+        &r.orientation_matrix_in(&a),
+        &Matrix3::new(0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 1.0),
+        4.0 * EPS,
+    );
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    assert!(super::q_err(&r.quaternion_in(&a), &Quaternion::new(h, 0.0, 0.0, h)) <= 4.0 * EPS);
+}
+
+/// Prob 2.26.13: R_{Sn}(θ) = S R_n(θ) Sᵀ for a rotation S.
+#[test]
+fn problem_2_26_13_conjugated_axis() {
+    let a = Frame::new();
+    let s = rot(&a, [1.0, 1.0, 0.0], 0.8);
+    let n = a.vector([0.2, -0.4, 1.0]);
+    let lhs = Rotation::from_axis_angle(&s.apply(&n), 1.7).unwrap().rotation_matrix_in(&a);
+    let sm = s.rotation_matrix_in(&a);
+    let rhs = sm * Rotation::from_axis_angle(&n, 1.7).unwrap().rotation_matrix_in(&a) * sm.transpose();
+    assert_mat(&lhs, &rhs, 8.0 * EPS);
+}
+
+/// Probs 2.26.15–18: eig R = {1, e^{±jθ}}; (tr R)² = tr R² + 2 tr R; Cayley–Hamilton
+/// R³ − tR² + tR − I = 0; R symmetric ⟺ tr ∈ {−1, 3}.
+#[test]
+fn problems_2_26_15_to_18_trace_identities() {
+    let a = Frame::new();
+    let m = rot(&a, [1.0, 2.0, -1.0], 1.2).rotation_matrix_in(&a);
+    let t = m.trace();
+    assert_close(t * t, (m * m).trace() + 2.0 * t, 16.0 * EPS);
+    let ch = m * m * m - m * m * t + m * t - Matrix3::identity();
+    assert!(ch.amax() <= 32.0 * EPS);
+    let eig = m.complex_eigenvalues();
+    let mut args: Vec<f64> = eig.iter().map(|z| z.im.atan2(z.re).abs()).collect();
+    args.sort_by(f64::total_cmp);
+    assert_close(args[0], 0.0, 1e-7);
+    assert_close(args[2], 1.2, 1e-7);
+    let half = rodrigues(&unit([1.0, 2.0, -1.0]), PI);
+    assert_mat(&half, &half.transpose(), 4.0 * EPS);
+    assert!(mat_is_not_symmetric(&m));
+}
+
+fn mat_is_not_symmetric(m: &Matrix3<f64>) -> bool {
+    (m - m.transpose()).amax() > 1e-3
+}
