@@ -61,10 +61,10 @@ pub use rotation::Rotation;
 pub mod prelude {
     pub use crate::{
         Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, EulerSolution, GIMBAL_LOCK_TOL,
-        Quaternion, ROTATION_TOL, RigidDisplacement, Rotation, RotationError, Screw, chain_backward,
-        chain_forward, check_rotation_matrix, compose_angle_vector, compose_coplanar, compose_euler,
-        compose_gibbs, compose_mrp, compose_orientation, compose_quaternion, compose_rotation_matrix,
-        homogeneous, homogeneous_inverse, mrp_shadow, nearest_rotation, orientation_about, quaternion_about,
-        rotation_about,
+        Quaternion, ROTATION_TOL, RigidDisplacement, Rotation, RotationError, Screw,
+        canonical_half_turn_axis, chain_backward, chain_forward, check_rotation_matrix, compose_angle_vector,
+        compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation, compose_quaternion,
+        compose_rotation_matrix, homogeneous, homogeneous_inverse, mrp_shadow, nearest_rotation,
+        orientation_about, quaternion_about, rotation_about,
     };
 }

@@ -1,0 +1,216 @@
+//! Hard cases: the accuracy sets of DESIGN §6 and named regressions for failures peers shipped.
+//!
+//! Every conversion round-trips to a few ulps at θ ∈ {0, 1e-300, 1e-16, 1e-8, 1e-4, π−1e-4,
+//! π−1e-8, π−1e-12, π} and with the middle Euler angle at gimbal lock ± 10⁻ᵏ (k = 2..16), in
+//! all 12 sequences intrinsic and extrinsic; quaternions are compared up to sign.
+
+mod support;
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use nalgebra::{Matrix3, Vector3};
+use support::{EPS, HARD_ANGLES};
+use vectrix::prelude::*;
+
+/// A few ulps: the round-trip bound asserted below (components of size ≤ 1; angle vectors are
+/// compared relative to π).
+const ULPS: f64 = 4.0 * EPS;
+
+/// Matrix entries are sums of four products of parameters: measured worst 5.2 ulps.
+const MATRIX_ULPS: f64 = 8.0 * EPS;
+
+/// Axes for the hard sets: a coordinate axis, a generic rational axis, a skewed one.
+fn axes() -> [Vector3<f64>; 4] {
+    [
+        Vector3::x(),
+        Vector3::new(1.0, 2.0, 2.0) / 3.0,
+        Vector3::new(-0.3, 0.1, 0.95).normalize(),
+        Vector3::new(0.0, -1.0, 1e-9).normalize(),
+    ]
+}
+
+fn q_err(p: &Quaternion, q: &Quaternion) -> f64 {
+    let d = (p.to_vector4() - q.to_vector4()).amax();
+    let s = (p.to_vector4() + q.to_vector4()).amax();
+    d.min(s)
+}
+
+fn all_sequences() -> impl Iterator<Item = EulerSequence> {
+    EulerSequence::ALL.into_iter().flat_map(|s| [s, s.extrinsic()])
+}
+
+/// Each Euler solution rebuilds q (up to sign).
+fn euler_err(q: &Quaternion, seq: EulerSequence) -> f64 {
+    match EulerAngles::from_quaternion(q, seq) {
+        EulerSolution::Regular { principal, alternate } => {
+            q_err(&principal.quaternion(), q).max(q_err(&alternate.quaternion(), q))
+        }
+        EulerSolution::GimbalLock { representative, .. } => q_err(&representative.quaternion(), q),
+    }
+}
+
+/// Item 7: q ↔ 𝓡 ↔ Θ ↔ g ↔ p ↔ Euler (24 sequences) at every hard angle, a few ulps.
+#[test]
+fn round_trips_at_hard_angles() {
+    for n in axes() {
+        for &th in &HARD_ANGLES {
+            let q = Quaternion::from_axis_angle(&n, th).unwrap();
+            let r = q.rotation_matrix();
+            let ctx = format!("θ = {th:e}, n = {n:?}");
+            assert!(
+                q_err(&Quaternion::from_rotation_matrix(&r, ROTATION_TOL).unwrap(), &q) <= ULPS,
+                "q→𝓡→q {ctx}"
+            );
+            let r2 = Quaternion::from_rotation_matrix_unchecked(&r).rotation_matrix();
+            assert!((r2 - r).amax() <= MATRIX_ULPS, "𝓡→q→𝓡 {ctx}");
+            // Angle vector: exact direction and angle, compared relative to θ ≤ π.
+            let v = q.angle_vector();
+            assert!((v - n * th).amax() <= ULPS * th.max(1.0), "Θ {ctx}: {v:?}");
+            assert!(q_err(&Quaternion::from_angle_vector(&v), &q) <= ULPS, "q→Θ→q {ctx}");
+            assert!(q_err(&Quaternion::from_mrp(&q.mrp()), &q) <= ULPS, "q→p→q {ctx}");
+            match q.gibbs() {
+                Some(g) => assert!(q_err(&Quaternion::from_gibbs(&g), &q) <= ULPS, "q→g→q {ctx}"),
+                None => assert_eq!(q.eta(), 0.0, "{ctx}"),
+            }
+            for seq in all_sequences() {
+                assert!(euler_err(&q, seq) <= ULPS, "q→Euler→q {seq:?} {ctx}: {:e}", euler_err(&q, seq));
+            }
+            // The angle itself, by atan2 (never acos), to a few ulps even at 1e-300.
+            assert!((q.axis_angle().angle() - th).abs() <= ULPS * th, "θ {ctx}");
+        }
+    }
+}
+
+/// Item 7: the middle Euler angle at gimbal lock ± 10⁻ᵏ, k = 2..16, all 24 sequences: the
+/// extracted angles rebuild the matrix to a few ulps and the middle angle is recovered.
+#[test]
+fn euler_near_gimbal_lock() {
+    for seq in all_sequences() {
+        let locks: &[f64] = if seq.is_symmetric() { &[0.0, PI] } else { &[FRAC_PI_2, -FRAC_PI_2] };
+        for &lock in locks {
+            for k in 2..=16 {
+                for side in [-1.0, 1.0] {
+                    let mid = lock + side * 10f64.powi(-k);
+                    let e = EulerAngles::new(seq, [0.7, mid, -2.3]);
+                    let r = e.rotation_matrix();
+                    let sol = EulerAngles::from_rotation_matrix(&r, seq, ROTATION_TOL).unwrap();
+                    let p = sol.principal();
+                    let err = (p.rotation_matrix() - r).amax();
+                    assert!(err <= MATRIX_ULPS, "{seq:?} β = {mid:e}: rebuild error {err:e}");
+                    // Principal β is in [−π/2, π/2] (Tait–Bryan) or [0, π] (symmetric): compare
+                    // with the input folded into that range.
+                    let want = if seq.is_symmetric() { wrap_angle(mid).abs() } else { mid };
+                    let want = if !seq.is_symmetric() && want.abs() > FRAC_PI_2 {
+                        PI.copysign(want) - want
+                    } else {
+                        want
+                    };
+                    assert!((p.angles[1] - want).abs() <= ULPS, "{seq:?} β = {mid:e}: got {:e}", p.angles[1]);
+                }
+            }
+        }
+    }
+}
+
+/// nalgebra#1078 and #1512: `Rotation3::from_matrix` (iterative, started at the identity) turns
+/// a 180° rotation matrix into the identity, because the identity is a stationary point of its
+/// iteration there. vectrix's Shepperd/Markley has no iteration: every half-turn comes back.
+#[test]
+fn issue_nalgebra_1078_1512_half_turn_matrix_is_not_identity() {
+    let a = Frame::new();
+    for n in axes() {
+        let m = -Matrix3::identity() + n * n.transpose() * 2.0; // (2.11.33): 𝓡 = −I + 2nnᵀ
+        let r = Rotation::from_rotation_matrix_in(&a, &m, ROTATION_TOL).unwrap();
+        assert!((r.angle() - PI).abs() <= ULPS * PI, "n = {n:?}: θ = {}", r.angle());
+        assert!((r.rotation_matrix_in(&a) - m).amax() <= MATRIX_ULPS);
+        match r.axis_angle_in(&a) {
+            AxisAngle::HalfTurn(axis) | AxisAngle::General { axis, .. } => {
+                assert!((axis - canonical_half_turn_axis(&n)).amax() <= ULPS, "{axis:?} vs {n:?}")
+            }
+            AxisAngle::Identity => panic!("a half turn came back as the identity"),
+        }
+    }
+}
+
+/// GTSAM Rot3::Logmap, Sophus#1, pytorch3d#188: the log map near π loses accuracy (θ/(2 sinθ)
+/// blows up, acos loses √ε) or returns NaN. vectrix's log through the quaternion and atan2 keeps
+/// a few ulps all the way to π.
+#[test]
+fn issue_sophus_1_pytorch3d_188_log_near_pi() {
+    for n in axes() {
+        for k in 1..=15 {
+            let th = PI - 10f64.powi(-k);
+            let m = Quaternion::from_axis_angle(&n, th).unwrap().rotation_matrix();
+            let v = Quaternion::from_rotation_matrix(&m, ROTATION_TOL).unwrap().angle_vector();
+            assert!(v.iter().all(|x| x.is_finite()));
+            // The matrix itself carries ε-level error, which near π moves the axis by ~ε/(π−θ)·(π−θ).
+            assert!((v - n * th).amax() <= 8.0 * ULPS * PI, "θ = π − 1e-{k}: {v:?} vs {:?}", n * th);
+        }
+    }
+}
+
+/// dm_control#555: gimbal-lock branches with wrong signs for ZYX, XZY and YZX returned angles
+/// that rebuild a different matrix. Every lock branch here rebuilds the matrix, in all 24
+/// sequences, at β = ±π/2 exactly (and 0, π for symmetric sequences).
+#[test]
+fn issue_dm_control_555_gimbal_lock_signs() {
+    let named = [
+        EulerSequence::S321, // ZYX
+        EulerSequence::S132, // XZY
+        EulerSequence::S231, // YZX
+    ];
+    for seq in named.into_iter().chain(all_sequences()) {
+        let locks: &[f64] = if seq.is_symmetric() { &[0.0, PI] } else { &[FRAC_PI_2, -FRAC_PI_2] };
+        for &lock in locks {
+            for (a, c) in [(0.3, 1.1), (-2.0, 2.9), (3.0, -0.4)] {
+                let r = EulerAngles::new(seq, [a, lock, c]).rotation_matrix();
+                let sol = EulerAngles::from_rotation_matrix(&r, seq, ROTATION_TOL).unwrap();
+                let EulerSolution::GimbalLock { combination, sign, representative, .. } = sol else {
+                    panic!("{seq:?} at β = {lock}: lock expected, got {sol:?}")
+                };
+                assert!((representative.rotation_matrix() - r).amax() <= MATRIX_ULPS, "{seq:?} β = {lock}");
+                assert!(congruent(combination, a + f64::from(sign) * c, 8.0 * ULPS), "{seq:?} β = {lock}");
+            }
+        }
+    }
+}
+
+/// scipy#22417: Markley's method fed a non-orthonormal matrix returned a rotation 22.6° away from
+/// the nearest one (scipy's own docs example). vectrix refuses the matrix with a typed error and
+/// projects only on request, by the polar decomposition (the orthogonal Procrustes solution).
+#[test]
+fn issue_scipy_22417_markley_with_non_orthonormal_input() {
+    let a = Frame::new();
+    let m = Matrix3::new(1.0, 2.0, 0.0, 2.0, 5.0, 0.0, 0.0, 0.0, 1.0);
+    assert!(matches!(
+        Rotation::from_rotation_matrix_in(&a, &m, ROTATION_TOL),
+        Err(RotationError::NotOrthonormal { .. })
+    ));
+    let r = Rotation::nearest_in(&a, &m).unwrap().rotation_matrix_in(&a);
+    // Polar factor: Rᵀ M is symmetric positive semidefinite, and R maximises tr(Rᵀ M).
+    let s = r.transpose() * m;
+    assert!((s - s.transpose()).amax() <= 16.0 * EPS * m.norm());
+    assert!(s.symmetric_eigenvalues().iter().all(|&l| l >= -16.0 * EPS * m.norm()));
+    let markley = Quaternion::from_rotation_matrix_unchecked(&m).rotation_matrix();
+    assert!((r.transpose() * m).trace() >= (markley.transpose() * m).trace());
+    // A left-handed matrix is a typed error, never silently flipped.
+    let left = Matrix3::from_diagonal(&Vector3::new(-1.0, 1.0, 1.0));
+    assert!(matches!(
+        Quaternion::from_rotation_matrix(&left, ROTATION_TOL),
+        Err(RotationError::Reflection { .. })
+    ));
+}
+
+/// Tiny angles: θ = 1e-300 keeps its value through every representation (no underflow to the
+/// identity), and exp/log use series branches near 0.
+#[test]
+fn tiny_angle_survives_every_representation() {
+    let a = Frame::new();
+    let v = a.vector([1e-300, -2e-300, 2e-300]);
+    let r = Rotation::exp(&v).unwrap();
+    assert!((r.angle() - 3e-300).abs() <= 4.0 * EPS * 3e-300);
+    let back = r.log().resolve(&a);
+    assert!((back - Vector3::new(1e-300, -2e-300, 2e-300)).amax() <= 4.0 * EPS * 3e-300);
+    let q = r.quaternion_in(&a);
+    assert!((q.gibbs().unwrap() * 2.0 - back).amax() <= 4.0 * EPS * 3e-300);
+}
