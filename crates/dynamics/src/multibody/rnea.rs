@@ -1,0 +1,184 @@
+//! Inverse dynamics by the recursive Newton–Euler algorithm with joint reaction wrenches
+//! (book §7.11).
+
+use nalgebra::Vector3;
+
+use super::model::{Elem, Model};
+use super::spatial::{Xform, cross_force, cross_motion};
+use crate::DynamicsError;
+
+/// The wrench a joint transmits from the parent to the link: force and moment about the link
+/// frame origin (the joint point), components in the link frame.
+///
+/// Book: §7.11, (7.11.20)–(7.11.22) (ℱ_int, the joint reaction wrenches).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JointWrench {
+    /// Force on the link from its parent, resolved in the link frame.
+    pub force: Vector3<f64>,
+    /// Moment on the link from its parent about the joint point, resolved in the link frame.
+    pub moment: Vector3<f64>,
+}
+
+/// Result of inverse dynamics: generalized forces τ and the joint reaction wrenches.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InverseDynamics {
+    /// τ: joint torques/forces, one per velocity coordinate.
+    pub tau: Vec<f64>,
+    /// For each link (user order), the wrench its joint transmits.
+    pub wrenches: Vec<JointWrench>,
+}
+
+/// External wrenches on links for the tree algorithms: force and moment about the link frame
+/// origin, both resolved in the link frame.
+pub type LinkWrenches = [JointWrench];
+
+impl Model {
+    /// Inverse dynamics τ = ID(q, v, v̇) by the recursive Newton–Euler algorithm: an outward
+    /// pass for twists and accelerations, then an inward pass accumulating the per-body
+    /// equations 𝒥𝒜 + 𝒱^×𝒥𝒱 = ℱ_ext + ℱ_in − ℱ_out (7.11.13–15) from the tips to the base.
+    /// Gravity enters as a base acceleration −g. `f_ext` (optional) are external wrenches on
+    /// the links.
+    ///
+    /// Book: §7.11, (7.11.13)–(7.11.22); RBDA Table 5.1.
+    ///
+    /// # Errors
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`].
+    pub fn rnea(
+        &self,
+        q: &[f64],
+        v: &[f64],
+        vdot: &[f64],
+        f_ext: Option<&LinkWrenches>,
+    ) -> Result<InverseDynamics, DynamicsError> {
+        self.check_q(q)?;
+        self.check_v(v, "v")?;
+        self.check_v(vdot, "v̇")?;
+        if let Some(f) = f_ext {
+            crate::error::check_len(f.len(), self.links(), "external wrenches")?;
+        }
+        let mut tau = vec![0.0; self.nv];
+        let mut scratch = Scratch::new(self.segs.len());
+        self.rnea_into(q, v, vdot, f_ext, &mut tau, &mut scratch);
+        let wrenches =
+            self.link_seg.iter().map(|&k| JointWrench { force: scratch.f[k], moment: scratch.n[k] }).collect();
+        Ok(InverseDynamics { tau, wrenches })
+    }
+
+    /// τ only, with caller-provided scratch (no allocation): the hot path of the benches.
+    /// Inputs are not checked; use [`Model::rnea`] for user input.
+    ///
+    /// Book: §7.11.
+    pub fn rnea_unchecked(&self, q: &[f64], v: &[f64], vdot: &[f64], tau: &mut [f64], scratch: &mut Scratch) {
+        self.rnea_into(q, v, vdot, None, tau, scratch);
+    }
+
+    fn rnea_into(
+        &self,
+        q: &[f64],
+        v: &[f64],
+        vdot: &[f64],
+        f_ext: Option<&LinkWrenches>,
+        tau: &mut [f64],
+        s: &mut Scratch,
+    ) {
+        let a0 = -self.gravity;
+        // outward pass: 𝒱_i = X_i 𝒱_p + S q̇_i, 𝒜_i = X_i 𝒜_p + S q̈_i + 𝒱_i ×m S q̇_i
+        for (i, seg) in self.segs.iter().enumerate() {
+            let x = seg.placement.then(&seg.elem.xform(&q[seg.qi..]));
+            let ((wp, vp), (ap, lp)) = match seg.parent {
+                Some(p) => ((s.w[p], s.v[p]), (s.aw[p], s.av[p])),
+                None => ((Vector3::zeros(), Vector3::zeros()), (Vector3::zeros(), a0)),
+            };
+            let (mut w, mut vel) = x.motion(&wp, &vp);
+            let (mut aw, mut av) = x.motion(&ap, &lp);
+            let (sw, sv) = joint_motion(&seg.elem, &v[seg.vi..]);
+            let (saw, sav) = joint_motion(&seg.elem, &vdot[seg.vi..]);
+            w += sw;
+            vel += sv;
+            let (cw, cv) = cross_motion(&w, &vel, &sw, &sv);
+            aw += saw + cw;
+            av += sav + cv;
+            // ℱ_i = 𝒥𝒜 + 𝒱 ×f 𝒥𝒱 − ℱ_ext
+            let (hn, hf) = seg.inertia.apply(&w, &vel);
+            let (in_, if_) = seg.inertia.apply(&aw, &av);
+            let (gn, gf) = cross_force(&w, &vel, &hn, &hf);
+            s.n[i] = in_ + gn;
+            s.f[i] = if_ + gf;
+            s.x[i] = x;
+            (s.w[i], s.v[i], s.aw[i], s.av[i]) = (w, vel, aw, av);
+        }
+        if let Some(fe) = f_ext {
+            for (l, &k) in self.link_seg.iter().enumerate() {
+                s.n[k] -= fe[l].moment;
+                s.f[k] -= fe[l].force;
+            }
+        }
+        // inward pass: τ_i = Sᵀ ℱ_i, ℱ_p += X_iᵀ ℱ_i (7.11.20–22)
+        for i in (0..self.segs.len()).rev() {
+            let seg = &self.segs[i];
+            project_force(&seg.elem, &s.n[i], &s.f[i], &mut tau[seg.vi..]);
+            if let Some(p) = seg.parent {
+                let (np, fp) = s.x[i].force_to_parent(&s.n[i], &s.f[i]);
+                s.n[p] += np;
+                s.f[p] += fp;
+            }
+        }
+    }
+}
+
+/// S q̇ for one elementary joint: (ω, v) in the child frame.
+#[inline(always)]
+pub(crate) fn joint_motion(elem: &Elem, qd: &[f64]) -> (Vector3<f64>, Vector3<f64>) {
+    match elem {
+        Elem::Revolute(a) => (a * qd[0], Vector3::zeros()),
+        Elem::Prismatic(a) => (Vector3::zeros(), a * qd[0]),
+        Elem::Spherical => (Vector3::new(qd[0], qd[1], qd[2]), Vector3::zeros()),
+        Elem::Fixed => (Vector3::zeros(), Vector3::zeros()),
+    }
+}
+
+/// Sᵀ ℱ for one elementary joint, written into `out`.
+#[inline(always)]
+pub(crate) fn project_force(elem: &Elem, n: &Vector3<f64>, f: &Vector3<f64>, out: &mut [f64]) {
+    match elem {
+        Elem::Revolute(a) => out[0] = a.dot(n),
+        Elem::Prismatic(a) => out[0] = a.dot(f),
+        Elem::Spherical => out[..3].copy_from_slice(n.as_slice()),
+        Elem::Fixed => {}
+    }
+}
+
+/// Work space of the tree algorithms (one entry per elementary segment).
+#[derive(Debug, Clone)]
+pub struct Scratch {
+    pub(crate) x: Vec<Xform>,
+    pub(crate) w: Vec<Vector3<f64>>,
+    pub(crate) v: Vec<Vector3<f64>>,
+    pub(crate) aw: Vec<Vector3<f64>>,
+    pub(crate) av: Vec<Vector3<f64>>,
+    pub(crate) n: Vec<Vector3<f64>>,
+    pub(crate) f: Vec<Vector3<f64>>,
+}
+
+impl Scratch {
+    /// Work space for `segments` segments (use [`Model::scratch`]).
+    pub(crate) fn new(segments: usize) -> Self {
+        let z = vec![Vector3::zeros(); segments];
+        Self {
+            x: vec![Xform::identity(); segments],
+            w: z.clone(),
+            v: z.clone(),
+            aw: z.clone(),
+            av: z.clone(),
+            n: z.clone(),
+            f: z,
+        }
+    }
+}
+
+impl Model {
+    /// A work space sized for this model, for the `_unchecked` hot paths.
+    pub fn scratch(&self) -> Scratch {
+        Scratch::new(self.segs.len())
+    }
+}
