@@ -24,3 +24,6 @@ mod centres;
 
 #[path = "ch04/examples.rs"]
 mod examples;
+
+#[path = "ch04/attitude.rs"]
+mod attitude;

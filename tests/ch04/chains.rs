@@ -25,7 +25,7 @@ fn joint<T: Scalar>(t: T, k: usize) -> Vector3<T> {
     (1..=k).fold(Vector3::zeros(), |acc, j| acc + o_k0(t, j).transpose() * Vector3::from(OFFSETS[j - 1]).map(T::lit))
 }
 
-fn build() -> (LabeledFrame, Vec<FrameMotion>, Vec<ChainLink>) {
+fn build() -> (LabeledFrame, Vec<FrameMotion>, Vec<LinkMotion>) {
     let a = LabeledFrame::new("A", Frame::new());
     let names = ["B", "C", "D"];
     let mut rel = Vec::new();
@@ -38,7 +38,7 @@ fn build() -> (LabeledFrame, Vec<FrameMotion>, Vec<ChainLink>) {
     let links = rel
         .iter()
         .enumerate()
-        .map(|(k, m)| ChainLink {
+        .map(|(k, m)| LinkMotion {
             body: *m.body(),
             omega_rel_prev: m.omega(),
             alpha_rel_prev: m.alpha(),

@@ -130,7 +130,8 @@ pub fn angle_vector_rate_spatial<T: Scalar>(th: &Vector3<T>, omega_in_a: &Vector
 /// Book: §4.9 (θ ∈ [0, π]).
 pub fn rewrap_angle_vector<T: Scalar>(th: &Vector3<T>) -> Vector3<T> {
     let theta = th.norm();
-    if theta.re() <= PI || !theta.re().is_finite() {
+    // a few ulps above π is π rounded (e.g. |n̂·π| for a unit n̂): leave it, do not flip to −Θ
+    if theta.re() <= PI * (1.0 + 4.0 * f64::EPSILON) || !theta.re().is_finite() {
         return *th;
     }
     th * (wrap_angle(theta) / theta)
