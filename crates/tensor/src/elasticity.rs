@@ -174,26 +174,34 @@ impl<T: Scalar> Isotropic<T> {
         self.lambda + T::lit(2.0) * self.mu / T::lit(3.0)
     }
 
-    /// The stiffness tensor 𝒦 with c_klmn = 2μ δ_km δ_ln + λ δ_kn δ_lm, so that
-    /// (𝒦⊗ε)_(2,3),(3,1) = 2μ ε + λ (tr ε) I; equivalently
-    /// 𝒦 = 2μ U4 + λ (U4 with its covector slots swapped) (3.4.12).
+    /// The stiffness tensor 𝒦 with c_klmn = μ(δ_km δ_ln + δ_kl δ_mn) + λ δ_kn δ_lm, so that
+    /// (𝒦⊗ε)_(2,3),(3,1) = μ(ε + ε′) + λ (tr ε) I, which is 2μ ε + λ (tr ε) I (3.4.11) for the
+    /// symmetric strains of (3.4.2).
     ///
-    /// Book: (3.4.11), (3.4.12).
+    /// Book: (3.4.5), (3.4.11), (3.4.12).
+    ///
+    /// # Conventions
+    /// Of the tensors giving (3.4.11) on symmetric strains, this is the one with the
+    /// symmetries the book derives in §3.4: c_iklj = c_jkli (σ symmetric; the book's L3981
+    /// prints "c_jklj"), symmetry in the strain slots, and the major symmetry. The book's
+    /// (3.4.12) form 2μ(U4⊗ε)_(2,3),(3,1) + λ(U4⊗ε)_(2,3),(3,2) agrees on symmetric ε.
     pub fn stiffness(&self) -> Tensor<T> {
         let d = |i: usize, j: usize| if i == j { T::one() } else { T::zero() };
         let data = (0..81).map(|idx| {
             let (k, l, m, n) = (idx / 27, (idx / 9) % 3, (idx / 3) % 3, idx % 3);
-            T::lit(2.0) * self.mu * d(k, m) * d(l, n) + self.lambda * d(k, n) * d(l, m)
+            self.mu * (d(k, m) * d(l, n) + d(k, l) * d(m, n)) + self.lambda * d(k, n) * d(l, m)
         });
         Tensor { p: 2, q: 2, data: data.collect() }
     }
 
-    /// Stress σ = 2μ ε + λ (tr ε) I (3.4.11), the closed form of Hooke's law.
+    /// Stress σ = 2μ ε + λ (tr ε) I (3.4.11), the closed form of Hooke's law; evaluated as
+    /// μ(ε + ε′) + λ (tr ε) I so that it equals [`Isotropic::stiffness`] contracted with any ε
+    /// (the two agree on the symmetric strains of (3.4.2)).
     ///
     /// Book: (3.4.11).
     #[inline]
     pub fn stress(&self, eps: &Dyadic<T>) -> Dyadic<T> {
-        *eps * (T::lit(2.0) * self.mu) + Dyadic::identity() * (self.lambda * eps.trace())
+        (*eps + eps.coform()) * self.mu + Dyadic::identity() * (self.lambda * eps.trace())
     }
 
     /// Strain from stress by the compliance law ε = (1+ν)/E σ − ν/E (tr σ) I (3.4.14).

@@ -198,12 +198,13 @@ impl<T: Scalar> Rotor<T> {
     /// Book: (3.9.3), §3.9; DESIGN §4 for the canonical choice.
     ///
     /// # Degenerate inputs
-    /// At θ = π (scalar part 0) n̂ and −n̂ give the same rotation; the axis returned has its
-    /// first nonzero component positive in the reference basis (the frame `Frame::new()`).
+    /// At θ = π (scalar part 0, or below 4ε|B| so that θ = π to rounding) n̂ and −n̂ give the
+    /// same rotation; the axis returned has its first nonzero component positive in the
+    /// reference basis (the frame `Frame::new()`).
     pub fn log(&self) -> Bivector<T> {
         let (s, mut b) = if self.s.re() < 0.0 { (-self.s, -self.b) } else { (self.s, self.b) };
-        if s == T::zero() {
-            // θ = π: canonical axis n̂ = −β⃗/|β⃗| with its first nonzero component positive.
+        if s.re() <= 4.0 * T::eps() * b.c.norm().re() {
+            // θ = π to rounding (|s| ≤ 4ε|B|, θ within ~1e-15 of π): canonical axis n̂ = −β⃗/|β⃗| with its first nonzero component positive.
             let n = -b.c;
             let first = [n.x, n.y, n.z].into_iter().find(|x| *x != T::zero());
             if first.is_some_and(|x| x.re() < 0.0) {

@@ -54,8 +54,12 @@ impl<T: Scalar> Tensor<T> {
             seen[s - 1] = true;
         }
         let src = super::product::strides(n);
-        // Output slot k reads source slot σ(k).
-        let stride: Vec<usize> = sigma.iter().map(|&s| src[s - 1]).collect();
+        // T_σ[i₁…i_n] = T[i_σ(1)…i_σ(n)]: source slot k reads output digit σ(k), so output
+        // slot σ(k) carries source stride k.
+        let mut stride = vec![0usize; n];
+        for (k, &s) in sigma.iter().enumerate() {
+            stride[s - 1] = src[k];
+        }
         let mut data = Vec::with_capacity(self.data.len());
         let mut digits = vec![0usize; n];
         let mut off = 0usize;

@@ -1,0 +1,149 @@
+//! §3.4: stress, strain and the isotropic Hooke's law σ = (𝒦⊗ε)_(2,3),(3,1).
+
+use nalgebra::Matrix3;
+use vectrix::prelude::*;
+
+use crate::common::*;
+use crate::support::{EPS, assert_close};
+
+/// A symmetric strain (3.4.2) in frame `a`.
+fn strain(a: &Frame, e: [f64; 6]) -> Dyadic {
+    a.dyadic(&Matrix3::new(e[0], e[3], e[4], e[3], e[1], e[5], e[4], e[5], e[2]))
+}
+
+#[test]
+fn eq_3_4_12_isotropic_hooke_law_by_contraction() {
+    // (3.4.4), (3.4.11), (3.4.12): σ = (𝒦⊗ε)_(2,3),(3,1) = 2μ ε + λ (tr ε) I
+    //   = 2μ (U4⊗ε)_(2,3),(3,1) + λ (U4⊗ε)_(2,3),(3,2).
+    let a = Frame::new();
+    let m = Isotropic::from_lame(1.2, 0.8).unwrap();
+    let eps = strain(&a, [1e-3, -2e-4, 5e-4, 3e-4, -1e-4, 2e-4]);
+    let by_contraction = hooke(&m.stiffness(), &eps).unwrap();
+    assert_dyadic_eq(&by_contraction, &m.stress(&eps), &a, TOL);
+    let u4 = Tensor::u4();
+    let te = Tensor::from_dyadic(&eps);
+    let first = u4.contracted_product(&te, &[(2, 3), (3, 1)]).unwrap().to_dyadic().unwrap();
+    let second = u4.contracted_product(&te, &[(2, 3), (3, 2)]).unwrap().to_dyadic().unwrap();
+    assert_dyadic_eq(&(first * (2.0 * m.mu()) + second * m.lambda()), &by_contraction, &a, TOL);
+    let map = HookeMap::new(&m.stiffness()).unwrap();
+    assert_dyadic_eq(&map.apply(&eps), &by_contraction, &a, TOL);
+}
+
+#[test]
+fn eq_3_4_5_component_form_and_conventional_c() {
+    // (3.4.5): σ_ij = Σ_kl c_iklj ε_lk with c_klmn = μ(δ_km δ_ln + δ_kl δ_mn) + λ δ_kn δ_lm;
+    // the conventional C_ijkl (σ_ij = C_ijkl ε_kl) is C_ijkl = c_ilkj (ch. 3 notes), here the
+    // textbook λ δ_ij δ_kl + μ(δ_ik δ_jl + δ_il δ_jk).
+    let a = Frame::new();
+    let m = Isotropic::from_lame(2.0, 0.5).unwrap();
+    let k = m.stiffness().resolve(&a);
+    let c = |i: usize, j: usize, k_: usize, l: usize| k[(3 * i + j, 3 * k_ + l)];
+    let d = |i: usize, j: usize| if i == j { 1.0 } else { 0.0 };
+    for i in 0..3 {
+        for j in 0..3 {
+            for p in 0..3 {
+                for q in 0..3 {
+                    let want =
+                        m.mu() * (d(i, p) * d(j, q) + d(i, j) * d(p, q)) + m.lambda() * d(i, q) * d(j, p);
+                    assert_close(c(i, j, p, q), want, 0.0);
+                    // Conventional C_ijpq = c_iqpj.
+                    let conventional =
+                        m.lambda() * d(i, j) * d(p, q) + m.mu() * (d(i, p) * d(j, q) + d(i, q) * d(j, p));
+                    assert_close(c(i, q, p, j), conventional, 0.0);
+                    // L3981 erratum: the symmetry is c_iklj = c_jkli (printed "c_jklj").
+                    assert_close(c(i, j, p, q), c(q, j, p, i), 0.0);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn eq_3_4_16_steel_lame_constants_and_stress() {
+    // (3.4.15–16) for steel, E = 200 GPa, ν = 0.3: μ = 76.923 GPa, λ = 115.385 GPa,
+    // K = 166.667 GPa; ε = diag(1e-3, 0, 0) gives σ = diag(269.23, 115.38, 115.38) MPa
+    // (ch. 3 notes §4, five-digit values, hence the 1e-4 relative tolerance).
+    let a = Frame::new();
+    let steel = Isotropic::from_young_poisson(200e9, 0.3).unwrap();
+    assert_close(steel.mu() / 1e9, 76.923, 1e-4);
+    assert_close(steel.lambda() / 1e9, 115.385, 1e-4);
+    assert_close(steel.bulk() / 1e9, 166.667, 1e-4);
+    let sigma = steel.stress(&strain(&a, [1e-3, 0.0, 0.0, 0.0, 0.0, 0.0])).resolve(&a) / 1e6;
+    for (got, want) in [(sigma[(0, 0)], 269.23), (sigma[(1, 1)], 115.38), (sigma[(2, 2)], 115.38)] {
+        assert_close(got / want, 1.0, 1e-4);
+    }
+    assert_close(sigma[(0, 1)], 0.0, 0.0);
+}
+
+#[test]
+fn eq_3_4_15_lame_and_engineering_constants_round_trip() {
+    // (3.4.15) ν = λ/(2(λ+μ)), E = μ(3λ+2μ)/(λ+μ) inverts (3.4.16).
+    for (e, nu) in [(200e9, 0.3), (1.0, 0.0), (70e9, 0.33), (5.0, -0.5), (1.0, 0.499)] {
+        let m = Isotropic::from_young_poisson(e, nu).unwrap();
+        assert_close(m.young() / e, 1.0, 1e3 * EPS); // 1 − 2ν amplifies rounding near ν = ½
+        assert_close(m.poisson(), nu, 1e3 * EPS);
+    }
+}
+
+#[test]
+fn eq_3_4_14_compliance_inverts_hooke() {
+    // (3.4.14): ε = (1+ν)/E σ − ν/E (tr σ) I recovers the strain (the notes report 1e-19
+    // absolute for 1e-3 strains in steel).
+    let a = Frame::new();
+    let steel = Isotropic::from_young_poisson(200e9, 0.3).unwrap();
+    let eps = strain(&a, [1e-3, -3e-4, 2e-4, 5e-4, 0.0, -1e-4]);
+    assert_dyadic_eq(&steel.strain(&steel.stress(&eps)), &eps, &a, 1e-18);
+}
+
+#[test]
+fn isotropic_stiffness_is_the_same_in_every_frame() {
+    // Notes §2 item 1: isotropic 𝒦 is invariant, 𝒦|_B = 𝒦|_A for all right-handed B.
+    let a = Frame::new();
+    let b = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.vector([1.0, -2.0, 0.5]), 2.3).unwrap());
+    let k = Isotropic::from_lame(1.5, 0.7).unwrap().stiffness();
+    crate::support::assert_close_slice(k.resolve(&b).as_slice(), k.resolve(&a).as_slice(), TOL);
+}
+
+#[test]
+fn invalid_materials_and_stiffness_types_are_errors() {
+    assert!(matches!(Isotropic::from_young_poisson(200e9, 0.5), Err(TensorError::OutOfRange { .. })));
+    assert!(matches!(Isotropic::from_young_poisson(-1.0, 0.3), Err(TensorError::OutOfRange { .. })));
+    assert!(matches!(Isotropic::from_young_poisson(f64::NAN, 0.3), Err(TensorError::OutOfRange { .. })));
+    assert!(matches!(Isotropic::from_lame(1.0, 0.0), Err(TensorError::OutOfRange { .. })));
+    assert!(matches!(Isotropic::from_lame(-1.0, 1.0), Err(TensorError::OutOfRange { .. })));
+    assert!(matches!(Isotropic::from_lame(f64::INFINITY, 1.0), Err(TensorError::NonFinite { .. })));
+    let eps = Dyadic::<f64>::identity();
+    assert!(matches!(hooke(&Tensor::identity(), &eps), Err(TensorError::Shape { .. })));
+    assert!(matches!(HookeMap::new(&Tensor::<f64>::levi_civita()), Err(TensorError::Shape { .. })));
+    let map = HookeMap::new(&Tensor::u4()).unwrap();
+    assert!(matches!(map.apply_many(&[eps], &mut []), Err(TensorError::Shape { .. })));
+}
+
+mod prop {
+    use proptest::prelude::*;
+    use vectrix::prelude::*;
+
+    use crate::common::*;
+    use crate::support::frame;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Hooke's law is frame-free: σ|_B from the frame-free contraction equals the numeric
+        /// contraction of 𝒦|_B ⊗ ε|_B (notes §2 items 1 and 6).
+        #[test]
+        fn hooke_commutes_with_resolution(
+            b in frame(), lam in 0.1..3.0f64, mu in 0.1..3.0f64, e in proptest::array::uniform6(-1.0..1.0f64),
+        ) {
+            let a = Frame::new();
+            let m = Isotropic::from_lame(lam, mu).unwrap();
+            let eps = super::strain(&a, e);
+            let sigma = hooke(&m.stiffness(), &eps).unwrap();
+            let prod = m.stiffness().resolve(&b).kronecker(&Tensor::from_dyadic(&eps).resolve(&b));
+            let want = contract_array(&flat(&prod), 3, 3, &[(2, 3), (3, 1)]);
+            let got: Vec<f64> = sigma.resolve(&b).transpose().iter().copied().collect();
+            crate::support::assert_close_slice(&got, &want, 16.0 * TOL);
+            assert_dyadic_eq(&m.strain(&m.stress(&eps)), &eps, &a, 1e3 * TOL);
+        }
+    }
+}
