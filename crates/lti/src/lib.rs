@@ -8,20 +8,37 @@
 
 mod error;
 mod expm;
+mod freq;
+mod laplace;
 pub mod linalg;
+mod margins;
 mod poly;
+mod rlocus;
+mod routh;
 mod sdof;
 mod ss;
+mod stability;
 mod tf;
+mod time;
 mod zpk;
 
 pub use error::LtiError;
 pub use expm::expm;
+pub use freq::{FrequencyResponse, Nyquist, logspace};
+pub use laplace::{
+    CLUSTER_RTOL, FinalValue, Illegal, PartialFractions, PfTerm, RealTerm, TimeFunction, cluster_roots,
+    final_value,
+};
+pub use margins::{GainCrossover, Margins, PhaseCrossover, sensitivity_integral, wrap_deg};
 pub use num_complex::Complex64;
 pub use poly::{Polynomial, TRIM_RTOL};
+pub use rlocus::{RootLocus, departure_angles, root_locus};
+pub use routh::{RouthArray, routh, stable_gain_intervals};
 pub use sdof::{Mode, Sdof, SdofKind, SdofOutput, modes};
 pub use ss::StateSpace;
+pub use stability::{AXIS_RTOL, StabilityClass, stability_of_matrix, stability_of_polynomial};
 pub use tf::TransferFunction;
+pub use time::{Hold, InputKind, TimeResponse, initial, lsim, response, time_grid};
 pub use zpk::Zpk;
 
 /// `use vectrix_lti::prelude::*;`

@@ -1,0 +1,177 @@
+//! Frequency response (Bode data) evaluated from zero–pole–gain factors, and Nyquist data.
+//!
+//! Book: §16.2–16.6, (16.2.1)–(16.2.5), (16.6.2); 16.8.6, 16.8.14 (Z = N + P); notes §3.4–3.5.
+
+use crate::error::LtiError;
+use crate::routh::routh;
+use crate::ss::StateSpace;
+use crate::tf::TransferFunction;
+use crate::zpk::Zpk;
+use num_complex::Complex64;
+
+/// `n` logarithmically spaced frequencies from 10^a to 10^b (Matlab `logspace`).
+///
+/// # Errors
+/// [`LtiError::InvalidArgument`] unless a < b are finite and n ≥ 2.
+pub fn logspace(a: f64, b: f64, n: usize) -> Result<Vec<f64>, LtiError> {
+    if !(a.is_finite() && b.is_finite() && a < b && n >= 2) {
+        return Err(LtiError::InvalidArgument {
+            what: "logspace",
+            reason: format!("10^{a} … 10^{b} with {n} points; need finite a < b and n ≥ 2"),
+        });
+    }
+    Ok((0..n).map(|k| 10f64.powf(a + (b - a) * k as f64 / (n - 1) as f64)).collect())
+}
+
+/// G(jω) on a frequency grid with magnitude in dB and continuous phase in degrees.
+///
+/// Book: (16.2.1)–(16.2.5), §16.3 (Bode).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrequencyResponse {
+    /// Frequencies ω in rad/s.
+    pub omega: Vec<f64>,
+    /// G(jω).
+    pub response: Vec<Complex64>,
+    /// 20 log₁₀|G(jω)| (−∞ at an imaginary-axis zero, +∞ at a pole).
+    pub magnitude_db: Vec<f64>,
+    /// ∠G(jω) in degrees on the continuous branch of [`Zpk::phase_deg`].
+    pub phase_deg: Vec<f64>,
+}
+
+fn check_omega(omega: &[f64]) -> Result<(), LtiError> {
+    if omega.iter().any(|w| !(w.is_finite() && *w >= 0.0)) {
+        return Err(LtiError::InvalidArgument {
+            what: "frequency grid",
+            reason: "every ω must be finite and ≥ 0".into(),
+        });
+    }
+    Ok(())
+}
+
+impl Zpk {
+    /// Bode data on `omega` (each ω ≥ 0).
+    ///
+    /// # Errors
+    /// [`LtiError::InvalidArgument`] for a negative or non-finite ω.
+    pub fn bode(&self, omega: &[f64]) -> Result<FrequencyResponse, LtiError> {
+        check_omega(omega)?;
+        let response: Vec<Complex64> = omega.iter().map(|&w| self.eval(Complex64::new(0.0, w))).collect();
+        let magnitude_db = response.iter().map(|g| 20.0 * g.norm().log10()).collect();
+        let phase_deg = omega.iter().map(|&w| self.phase_deg(w)).collect();
+        Ok(FrequencyResponse { omega: omega.to_vec(), response, magnitude_db, phase_deg })
+    }
+}
+
+impl TransferFunction {
+    /// Bode data on `omega`, evaluated from the zero–pole–gain factors (no overflow at large
+    /// ω, notes §3.4).
+    ///
+    /// Book: §16.3, 16.8.3–16.8.7.
+    ///
+    /// # Errors
+    /// Root-finding errors; [`LtiError::InvalidArgument`] for a bad grid.
+    pub fn bode(&self, omega: &[f64]) -> Result<FrequencyResponse, LtiError> {
+        self.to_zpk()?.bode(omega)
+    }
+}
+
+impl StateSpace {
+    /// Bode data of one channel, through its transfer function in zero–pole–gain form.
+    ///
+    /// # Errors
+    /// Index, root-finding and grid errors.
+    pub fn bode(&self, output: usize, input: usize, omega: &[f64]) -> Result<FrequencyResponse, LtiError> {
+        self.to_tf(output, input)?.bode(omega)
+    }
+}
+
+/// Nyquist data of a loop L = kN/D: the image of the Nyquist contour (with small
+/// semicircular indentations to the right of imaginary-axis poles) and the encirclement
+/// count of −1.
+///
+/// Book: 16.8.6, 16.8.13–16.8.14, Z = N + P.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Nyquist {
+    /// Contour points s on the upper half (ω from 0⁺ to ∞, indentations included).
+    pub contour: Vec<Complex64>,
+    /// L(s) on the upper half; the lower half is its mirror image (complex conjugate).
+    pub positive: Vec<Complex64>,
+    /// Clockwise encirclements N of −1 by the whole image, N = Z − P.
+    pub encirclements: isize,
+    /// P: open-loop poles in the ORHP.
+    pub open_loop_rhp: usize,
+    /// Z: closed-loop poles (roots of D + N) in the ORHP.
+    pub closed_loop_rhp: usize,
+}
+
+impl TransferFunction {
+    /// Nyquist data with `n` contour points per frequency decade-range (≥ 16).
+    ///
+    /// # Errors
+    /// [`LtiError::Delay`] with a delay (the closed-loop count needs a rational L);
+    /// [`LtiError::Improper`] for an improper L; [`LtiError::InvalidArgument`] if −1 lies on
+    /// the image (a closed-loop pole on the imaginary axis: N is undefined).
+    pub fn nyquist(&self, n: usize) -> Result<Nyquist, LtiError> {
+        self.require_rational("Nyquist encirclement count")?;
+        self.require_proper("Nyquist plot")?;
+        let zpk = self.to_zpk()?;
+        let poles = zpk.poles().to_vec();
+        let cl = self.den().add(self.num());
+        let ra = routh(&cl)?;
+        if ra.imaginary > 0 {
+            return Err(LtiError::InvalidArgument {
+                what: "loop",
+                reason: "−1 lies on the Nyquist plot (closed-loop pole on the imaginary axis)".into(),
+            });
+        }
+        let p = routh(self.den())?;
+        let open_loop_rhp = p.rhp;
+        let closed_loop_rhp = ra.rhp;
+        // Frequency range from the pole/zero magnitudes.
+        let mags: Vec<f64> = poles.iter().chain(zpk.zeros()).map(|z| z.norm()).filter(|m| *m > 0.0).collect();
+        let lo = mags.iter().copied().fold(f64::INFINITY, f64::min).min(1.0) / 100.0;
+        let hi = mags.iter().copied().fold(0.0, f64::max).max(1.0) * 100.0;
+        let n = n.max(16);
+        let omega = logspace(lo.log10(), hi.log10(), n)?;
+        // Imaginary-axis poles at jb (b ≥ 0) with an indentation radius r.
+        let axis: Vec<f64> = poles
+            .iter()
+            .filter(|p| p.re.abs() <= 1e-9 * p.norm().max(1.0) && p.im >= 0.0)
+            .map(|p| p.im)
+            .collect();
+        let r = 1e-3 * lo.max(1e-6);
+        let mut contour = Vec::new();
+        let semicircle = |b: f64, from: f64, to: f64, out: &mut Vec<Complex64>| {
+            for i in 0..=16 {
+                let th = from + (to - from) * i as f64 / 16.0;
+                out.push(Complex64::new(0.0, b) + r * Complex64::from_polar(1.0, th));
+            }
+        };
+        if axis.iter().any(|b| *b == 0.0) {
+            semicircle(0.0, 0.0, std::f64::consts::FRAC_PI_2, &mut contour);
+        } else {
+            contour.push(Complex64::new(0.0, 0.0));
+        }
+        for &w in &omega {
+            if let Some(&b) = axis.iter().find(|&&b| b > 0.0 && (w - b).abs() < r) {
+                let _ = b;
+                continue;
+            }
+            // Insert an indentation when passing a pole at jb.
+            if let Some(&b) =
+                axis.iter().find(|&&b| b > 0.0 && contour.last().is_some_and(|c| c.im < b - r) && w > b + r)
+            {
+                semicircle(b, -std::f64::consts::FRAC_PI_2, std::f64::consts::FRAC_PI_2, &mut contour);
+            }
+            contour.push(Complex64::new(0.0, w));
+        }
+        let positive = contour.iter().map(|&s| zpk.eval(s)).collect();
+        Ok(Nyquist {
+            contour,
+            positive,
+            encirclements: closed_loop_rhp as isize - open_loop_rhp as isize,
+            open_loop_rhp,
+            closed_loop_rhp,
+        })
+    }
+}
