@@ -34,7 +34,11 @@ fn coords(c: [[f64; 3]; 3], t: f64) -> ([f64; 3], [f64; 3], [f64; 3]) {
 }
 
 /// r|_A(t) and its derivatives from a position map applied to dual coordinates.
-fn position_jet(c: [[f64; 3]; 3], t: f64, map: impl Fn([Dual2_64; 3]) -> Vector3<Dual2_64>) -> [Vector3<f64>; 3] {
+fn position_jet(
+    c: [[f64; 3]; 3],
+    t: f64,
+    map: impl Fn([Dual2_64; 3]) -> Vector3<Dual2_64>,
+) -> [Vector3<f64>; 3] {
     let (q, qd, qdd) = coords(c, t);
     let d = |k: usize| Dual2_64::new(q[k], qd[k], qdd[k]);
     let r = map([d(0), d(1), d(2)]);
@@ -64,7 +68,10 @@ fn eq_5_2_10_cylindrical_velocity_and_acceleration() {
     }
     // θ := 0 on the axis (the book's choice)
     assert_eq!(Cylindrical::from_position([0.0, 0.0, 2.0]).unwrap().q, [0.0, 0.0, 2.0]);
-    assert!(matches!(Cylindrical::from_position([f64::NAN, 0.0, 0.0]), Err(KinematicsError::NonFinite { .. })));
+    assert!(matches!(
+        Cylindrical::from_position([f64::NAN, 0.0, 0.0]),
+        Err(KinematicsError::NonFinite { .. })
+    ));
 }
 
 /// r|_A = r_u(cos φ cos θ, cos φ sin θ, −sin φ) (5.3.41–43).
@@ -84,9 +91,15 @@ fn eq_5_3_13_spherical_frame_and_sign_of_phi() {
     let s = Spherical { q: [1.0, th, ph], q_dot: [0.0; 3], q_ddot: [0.0; 3] };
     let (c, sn) = (|x: f64| x.cos(), |x: f64| x.sin());
     let want = Matrix3::new(
-        c(ph) * c(th), c(ph) * sn(th), -sn(ph),
-        -sn(th), c(th), 0.0,
-        sn(ph) * c(th), sn(ph) * sn(th), c(ph),
+        c(ph) * c(th),
+        c(ph) * sn(th),
+        -sn(ph),
+        -sn(th),
+        c(th),
+        0.0,
+        sn(ph) * c(th),
+        sn(ph) * sn(th),
+        c(ph),
     );
     assert!((s.o_sph_a() - want).amax() < TOL);
     // the poles and origin get atan2's values, never NaN

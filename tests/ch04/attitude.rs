@@ -106,7 +106,10 @@ fn problem_4_20_7_gimbal_lock() {
         assert!((s.column(0).into_owned() + Vector3::x()).norm() < TOL);
     }
     let locked = EulerAngles::new(EulerSequence::S313, [0.4, 0.0, -0.2]);
-    assert!(matches!(euler_rates_from_omega_body(&locked, &Vector3::x(), 1e-12), Err(KinematicsError::GimbalLock { .. })));
+    assert!(matches!(
+        euler_rates_from_omega_body(&locked, &Vector3::x(), 1e-12),
+        Err(KinematicsError::GimbalLock { .. })
+    ));
 }
 
 /// exp(Θ^×) by Rodrigues, generic (for dual paths).
@@ -144,7 +147,8 @@ fn eq_4_9_10_angle_vector_jacobians() {
 #[test]
 fn eq_4_9_18_angle_vector_series_and_rewrap() {
     let dir = Vector3::new(1.0, -2.0, 0.5).normalize();
-    for th in [0.0, 1e-300, 1e-16, 1e-8, 1e-3, 1e-2 * (1.0 - 1e-12), 1e-2 * (1.0 + 1e-12), 1.0, PI - 1e-8, PI] {
+    for th in [0.0, 1e-300, 1e-16, 1e-8, 1e-3, 1e-2 * (1.0 - 1e-12), 1e-2 * (1.0 + 1e-12), 1.0, PI - 1e-8, PI]
+    {
         let v = dir * th;
         let prod = jacobian_left(&v) * jacobian_left_inverse(&v).unwrap();
         assert!((prod - Matrix3::identity()).amax() < 8.0 * EPS, "θ = {th}");
@@ -162,8 +166,14 @@ fn eq_4_9_18_angle_vector_series_and_rewrap() {
     let w = rewrap_angle_vector(&big);
     assert!((w.norm() - 0.5 * PI).abs() < TOL && (exp_so3(w) - exp_so3(big)).amax() < TOL);
     assert_eq!(rewrap_angle_vector(&(dir * PI)), dir * PI);
-    assert!(matches!(jacobian_left_inverse(&(dir * (2.0 * PI))), Err(KinematicsError::SingularRateMap { .. })));
-    assert!(matches!(angle_vector_rate_body(&Vector3::new(f64::NAN, 0.0, 0.0), &dir), Err(KinematicsError::NonFinite { .. })));
+    assert!(matches!(
+        jacobian_left_inverse(&(dir * (2.0 * PI))),
+        Err(KinematicsError::SingularRateMap { .. })
+    ));
+    assert!(matches!(
+        angle_vector_rate_body(&Vector3::new(f64::NAN, 0.0, 0.0), &dir),
+        Err(KinematicsError::NonFinite { .. })
+    ));
 }
 
 fn q_path(t: Dual2_64) -> Quaternion<Dual2_64> {
@@ -260,7 +270,10 @@ fn eq_4_7_18_eigenaxis_rates() {
     assert!((td - theta_dot).abs() < TOL && (nd - n_dot).amax() < TOL, "(4.7.29)");
     let (td, nd) = eigenaxis_rates_from_omega_body(theta, &n, &w_b).unwrap();
     assert!((td - theta_dot).abs() < TOL && (nd - n_dot).amax() < TOL, "(4.7.31)");
-    assert!(matches!(eigenaxis_rates_from_omega_spatial(0.0, &n, &w_a), Err(KinematicsError::SingularRateMap { .. })));
+    assert!(matches!(
+        eigenaxis_rates_from_omega_spatial(0.0, &n, &w_a),
+        Err(KinematicsError::SingularRateMap { .. })
+    ));
     // (4.7.36): ω ≈ θ̇n + ½θ²n×ṅ + θṅ, error O(θ³)
     let small = 1e-3;
     let approx = n * theta_dot + n.cross(&n_dot) * (0.5 * small * small) + n_dot * small;
@@ -300,16 +313,29 @@ fn fact_4_8_2_propagation_against_the_exact_solution() {
         let r = propagate_attitude(m, &r0, |_| w, 0.0, t1, n).unwrap();
         assert!((r - exact).amax() < tol, "{m:?}: {:e}", (r - exact).amax());
     }
-    let err = |n| (propagate_attitude(Propagator::QuaternionRk4 { renormalize: false }, &r0, |_| w, 0.0, 20.0, n).unwrap()
-        - r0 * exp_so3(w * 20.0))
-    .amax();
+    let err = |n| {
+        (propagate_attitude(Propagator::QuaternionRk4 { renormalize: false }, &r0, |_| w, 0.0, 20.0, n)
+            .unwrap()
+            - r0 * exp_so3(w * 20.0))
+        .amax()
+    };
     let ratio = err(100) / err(200);
     assert!((12.0..20.0).contains(&ratio), "RK4 order: ratio {ratio}");
     // a gimbal-locked start is an error for Euler angles, bad input for all
     let locked = EulerAngles::new(EulerSequence::S321, [0.1, PI / 2.0, 0.2]).rotation_matrix();
-    let res = propagate_attitude(Propagator::EulerRk4 { sequence: EulerSequence::S321, tol: 1e-12 }, &locked, |_| w, 0.0, 1.0, 10);
+    let res = propagate_attitude(
+        Propagator::EulerRk4 { sequence: EulerSequence::S321, tol: 1e-12 },
+        &locked,
+        |_| w,
+        0.0,
+        1.0,
+        10,
+    );
     assert!(matches!(res, Err(KinematicsError::GimbalLock { .. })));
-    assert!(matches!(propagate_attitude(Propagator::AngleVectorRk4, &r0, |_| w, 0.0, 1.0, 0), Err(KinematicsError::OutOfRange { .. })));
+    assert!(matches!(
+        propagate_attitude(Propagator::AngleVectorRk4, &r0, |_| w, 0.0, 1.0, 0),
+        Err(KinematicsError::OutOfRange { .. })
+    ));
     assert!(propagate_attitude(Propagator::AngleVectorRk4, &(r0 * 2.0), |_| w, 0.0, 1.0, 10).is_err());
 }
 

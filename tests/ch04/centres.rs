@@ -32,7 +32,9 @@ fn eq_4_15_2_invariant_and_screw_axis() {
         let v_p = v_at(&w, &v_q, &a.vector(r));
         assert!((w.dot(&v_p) - w.dot(&v_q)).abs() < TOL * 10.0);
     }
-    let InstantaneousMotion::Screw(s) = screw_axis(&w, &v_q).unwrap() else { panic!("ω ≠ 0 gives a screw") };
+    let InstantaneousMotion::Screw(s) = screw_axis(&w, &v_q).unwrap() else {
+        panic!("ω ≠ 0 gives a screw")
+    };
     for lambda in [0.0, 1.7, -3.0] {
         let p = s.axis.point + s.axis.direction * lambda;
         let v_p = v_at(&w, &v_q, &p);
@@ -61,7 +63,10 @@ fn fact_4_15_3_ivcr() {
     // nonzero pitch or ω = 0: no IVCR
     assert_eq!(ivcr(&w, &a.vector([1.0, 0.0, 0.1]), REL).unwrap(), None);
     assert_eq!(ivcr(&Vector::zero(), &v_q, REL).unwrap(), None);
-    assert!(matches!(ivcr(&a.vector([f64::NAN, 0.0, 0.0]), &v_q, REL), Err(KinematicsError::NonFinite { .. })));
+    assert!(matches!(
+        ivcr(&a.vector([f64::NAN, 0.0, 0.0]), &v_q, REL),
+        Err(KinematicsError::NonFinite { .. })
+    ));
 }
 
 // §4.16: with ω⃗ × α⃗ ≠ 0⃗ the IACR is a unique point (det(α^× + ω^×ω^×) = −|ω×α|², notes).

@@ -22,7 +22,9 @@ fn o_k0<T: Scalar>(t: T, k: usize) -> Matrix3<T> {
 
 /// r_{z_k/z_0}|_A(t).
 fn joint<T: Scalar>(t: T, k: usize) -> Vector3<T> {
-    (1..=k).fold(Vector3::zeros(), |acc, j| acc + o_k0(t, j).transpose() * Vector3::from(OFFSETS[j - 1]).map(T::lit))
+    (1..=k).fold(Vector3::zeros(), |acc, j| {
+        acc + o_k0(t, j).transpose() * Vector3::from(OFFSETS[j - 1]).map(T::lit)
+    })
 }
 
 fn build() -> (LabeledFrame, Vec<FrameMotion>, Vec<LinkMotion>) {
@@ -53,7 +55,7 @@ fn build() -> (LabeledFrame, Vec<FrameMotion>, Vec<LinkMotion>) {
 #[test]
 fn eq_4_13_36_and_4_14_6_chain_velocity_and_acceleration() {
     let (a, rel, links) = build();
-    let (twists, accels) = chain_kinematics(&links).unwrap();
+    let ChainKinematics { twists, accels } = chain_kinematics(&links).unwrap();
     assert_eq!(twists.len(), 4);
     let abs: Vec<FrameMotion> = (1..=3).map(|k| FrameMotion::chain(&rel[..k]).unwrap()).collect();
     for k in 0..=3 {
@@ -82,7 +84,7 @@ fn eq_4_13_36_and_4_14_6_chain_velocity_and_acceleration() {
 #[test]
 fn eq_4_13_38_resolved_chain_velocity() {
     let (_, rel, links) = build();
-    let (twists, _) = chain_kinematics(&links).unwrap();
+    let twists = chain_kinematics(&links).unwrap().twists;
     let resolved: Vec<ResolvedLink> = rel
         .iter()
         .enumerate()

@@ -133,15 +133,17 @@ fn problem_4_21_1_sidereal_day_and_synodic_month() {
 fn problem_4_21_3_gimbal_by_summation() {
     let t = 0.01;
     let (w1, w2) = (20.0 * PI, 90.0 * PI);
-    let (psi, psid, psidd) = (0.6 * (w1 * t).sin(), 0.6 * w1 * (w1 * t).cos(), -0.6 * w1 * w1 * (w1 * t).sin());
+    let (psi, psid, psidd) =
+        (0.6 * (w1 * t).sin(), 0.6 * w1 * (w1 * t).cos(), -0.6 * w1 * w1 * (w1 * t).sin());
     let (th, thd, thdd) = (0.3 * (w2 * t).sin(), 0.3 * w2 * (w2 * t).cos(), -0.3 * w2 * w2 * (w2 * t).sin());
     let spin = 700.0 * 2.0 * PI / 60.0;
     let a = LabeledFrame::new("A", Frame::new());
-    let rot = |name, prev: &LabeledFrame, o: vectrix::nalgebra::Matrix3<f64>, axis: usize, rate: f64, acc: f64| {
-        let f = Frame::from_orientation_rel(&prev.frame, &o, 1e-12).unwrap();
-        let e = f.axis(axis).unwrap();
-        FrameMotion::new(LabeledFrame::new(name, f), *prev, e * rate, e * acc).unwrap()
-    };
+    let rot =
+        |name, prev: &LabeledFrame, o: vectrix::nalgebra::Matrix3<f64>, axis: usize, rate: f64, acc: f64| {
+            let f = Frame::from_orientation_rel(&prev.frame, &o, 1e-12).unwrap();
+            let e = f.axis(axis).unwrap();
+            FrameMotion::new(LabeledFrame::new(name, f), *prev, e * rate, e * acc).unwrap()
+        };
     let b_a = rot("B", &a, o3(psi), 3, psid, psidd);
     let c_b = rot("C", b_a.body(), o1(th), 1, thd, thdd);
     let d_c = rot("D", c_b.body(), o3(spin * t), 3, spin, 0.0);
@@ -167,7 +169,9 @@ fn problem_4_21_2_contact_point_acceleration() {
     let (big_r, phid, x_b) = (0.5, 4.0, 1.3);
     let v = big_r * phid; // no slip
     let b_a = rotating("B", &a, 0.3, phid, 0.0); // ω_{B/A} = φ̇k̂_A, k̂ into the page
-    let centre = VectorJet::new(a.label, f.vector([x_b, -big_r, 0.0]), f.vector([v, 0.0, 0.0]), Vector::zero()).unwrap();
+    let centre =
+        VectorJet::new(a.label, f.vector([x_b, -big_r, 0.0]), f.vector([v, 0.0, 0.0]), Vector::zero())
+            .unwrap();
     let contact = centre.rigid_point(&b_a, f.vector([0.0, big_r, 0.0])).unwrap();
     assert!(contact.rate().norm() < TOL, "(iv) v − Rφ̇ = 0");
     assert!(dist(&contact.second_rate(), &f.vector([0.0, -big_r * phid * phid, 0.0])) < TOL);
@@ -181,8 +185,9 @@ fn problem_4_21_4_relative_acceleration_independent_of_pin() {
     let b_a = rotating("B", &a, 0.0, 3.0, 0.0);
     let r_yx = f.vector([0.4, -0.7, 0.0]);
     for pin_acc in [[0.0, 0.0, 0.0], [2.0, -1.0, 0.0]] {
-        let x = VectorJet::new(a.label, f.vector([1.0, 1.0, 0.0]), f.vector([0.5, 0.0, 0.0]), f.vector(pin_acc))
-            .unwrap();
+        let x =
+            VectorJet::new(a.label, f.vector([1.0, 1.0, 0.0]), f.vector([0.5, 0.0, 0.0]), f.vector(pin_acc))
+                .unwrap();
         let y = x.rigid_point(&b_a, r_yx).unwrap();
         assert!(dist(&(y.second_rate() - x.second_rate()), &(r_yx * -9.0)) < TOL);
     }

@@ -22,9 +22,15 @@ fn euler321_body_rate(c: &[[f64; 3]; 3], t: f64) -> Vector3<f64> {
     };
     let ((_, psid), (th, thd), (ph, phd)) = (jet(0), jet(1), jet(2));
     let s = Matrix3::new(
-        1.0, 0.0, -th.sin(),
-        0.0, ph.cos(), ph.sin() * th.cos(),
-        0.0, -ph.sin(), ph.cos() * th.cos(),
+        1.0,
+        0.0,
+        -th.sin(),
+        0.0,
+        ph.cos(),
+        ph.sin() * th.cos(),
+        0.0,
+        -ph.sin(),
+        ph.cos() * th.cos(),
     );
     s * Vector3::new(phd, thd, psid)
 }
@@ -81,8 +87,8 @@ fn problem_4_20_5_omega_from_axis_rates() {
     assert!(dist(&omega_from_axis_rates(b, &d(0), &d(1), &d(2)), &w) < TOL);
     assert!(dist(&omega_from_axis_rates_projections(b, &d(0), &d(1), &d(2)), &w) < TOL);
     let rates = axis_rates(b, &w);
-    for k in 0..3 {
-        assert!(dist(&rates[k], &d(k)) < TOL, "(4.3.13–15) axis {k}");
+    for (k, rate) in rates.iter().enumerate() {
+        assert!(dist(rate, &d(k)) < TOL, "(4.3.13–15) axis {k}");
     }
 }
 
@@ -164,9 +170,8 @@ fn eq_4_6_7_summation_of_four_frames() {
     assert!(dist(&chain.alpha(), &d_a.alpha()) < TOL);
     // the printed four-frame form (4.6.7)
     let w_d_b = d_c.omega() + c_b.omega();
-    let printed = b_a.alpha() + c_b.alpha() + d_c.alpha()
-        - d_c.omega().cross(&c_b.omega())
-        - w_d_b.cross(&b_a.omega());
+    let printed =
+        b_a.alpha() + c_b.alpha() + d_c.alpha() - d_c.omega().cross(&c_b.omega()) - w_d_b.cross(&b_a.omega());
     assert!(dist(&printed, &d_a.alpha()) < TOL);
 }
 
@@ -206,8 +211,16 @@ mod prop {
     use crate::support::{frame, triple};
     use proptest::prelude::*;
 
-    fn motion(b: &'static str, a: &'static str, fb: Frame, fa: Frame, w: [f64; 3], al: [f64; 3]) -> FrameMotion {
-        FrameMotion::new(LabeledFrame::new(b, fb), LabeledFrame::new(a, fa), fa.vector(w), fa.vector(al)).unwrap()
+    fn motion(
+        b: &'static str,
+        a: &'static str,
+        fb: Frame,
+        fa: Frame,
+        w: [f64; 3],
+        al: [f64; 3],
+    ) -> FrameMotion {
+        FrameMotion::new(LabeledFrame::new(b, fb), LabeledFrame::new(a, fa), fa.vector(w), fa.vector(al))
+            .unwrap()
     }
 
     proptest! {

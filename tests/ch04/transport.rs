@@ -33,7 +33,8 @@ fn jets(a: &LabeledFrame, m: &FrameMotion) -> (VectorJet, VectorJet) {
     let fb = &m.body().frame;
     let [xb, xbd, xbdd] = vec_jet(|t| vec_path(t, &C2), T0);
     let [xa, xad, xadd] = vec_jet(x_in_a, T0);
-    let jb = VectorJet::new(m.body().label, fb.vector(arr(xb)), fb.vector(arr(xbd)), fb.vector(arr(xbdd))).unwrap();
+    let jb = VectorJet::new(m.body().label, fb.vector(arr(xb)), fb.vector(arr(xbd)), fb.vector(arr(xbdd)))
+        .unwrap();
     let v = |x| a.frame.vector(arr(x));
     let ja = VectorJet::new(a.label, v(xa), v(xad), v(xadd)).unwrap();
     (jb, ja)
@@ -96,7 +97,9 @@ fn problem_4_20_12_triple_transport_corrected() {
 #[test]
 fn eq_4_4_12_transport_of_dyads() {
     let (a, m) = setup();
-    let mb = |t: Dual2_64| -> Matrix3<Dual2_64> { o_path(t, &C3) + vec_path(t, &C2) * vec_path(t, &C1).transpose() };
+    let mb = |t: Dual2_64| -> Matrix3<Dual2_64> {
+        o_path(t, &C3) + vec_path(t, &C2) * vec_path(t, &C1).transpose()
+    };
     let ma = |t: Dual2_64| o_path(t, &C1).transpose() * mb(t) * o_path(t, &C1);
     let [b0, b1, _] = mat_jet(mb, T0);
     let [_, a1, _] = mat_jet(ma, T0);
@@ -171,7 +174,10 @@ fn fact_4_1_1_velocity_additivity() {
     assert!(matches!(jb.rate_wrt(a.label), Err(KinematicsError::FrameMismatch { .. })));
     assert!(jb.rate_wrt(m.body().label).is_ok());
     let c = FrameLabel::new("C");
-    assert!(matches!(VectorJet::fixed_in(c, ja.value()).transported(&m), Err(KinematicsError::FrameMismatch { .. })));
+    assert!(matches!(
+        VectorJet::fixed_in(c, ja.value()).transported(&m),
+        Err(KinematicsError::FrameMismatch { .. })
+    ));
 }
 
 // (4.2.1): (R⃗_{B/A}x⃗)^{B•} = R⃗_{B/A}x⃗^{A•}, since (R⃗_{B/A}x⃗)|_B = x|_A.

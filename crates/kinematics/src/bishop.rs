@@ -9,8 +9,8 @@
 use vectrix_frames::{Frame, ORTHONORMAL_TOL};
 use vectrix_tensor::{Scalar, Vector};
 
-use crate::motion::finite_vector;
 use crate::KinematicsError;
+use crate::motion::finite_vector;
 
 /// Bishop frames at the samples (x⃗_i, t̂_i) of a curve (positions relative to any fixed point and
 /// unit tangents), starting from the normal `u0` at sample 0, by the double-reflection method
@@ -67,7 +67,9 @@ pub fn bishop_frames<T: Scalar>(
         let u_next = if c2 == T::zero() { u_l } else { u_l - v2 * (two * v2.dot(&u_l) / c2) };
         // re-orthonormalize against rounding: u ⊥ t, |u| = 1
         t = t_next;
-        u = (u_next - t * t.dot(&u_next)).unit().ok_or(KinematicsError::Zero { what: "transported normal" })?;
+        u = (u_next - t * t.dot(&u_next))
+            .unit()
+            .ok_or(KinematicsError::Zero { what: "transported normal" })?;
         out.push(frame(&t, &u)?);
     }
     Ok(out)

@@ -67,6 +67,17 @@ pub struct JointAccel<T: Scalar = f64> {
     pub alpha_body: Vector<T>,
 }
 
+/// The 6D velocities and accelerations at joints z_0, …, z_n.
+///
+/// Book: §4.13–4.14.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChainKinematics<T: Scalar = f64> {
+    /// 𝒱_0, …, 𝒱_n.
+    pub twists: Vec<JointTwist<T>>,
+    /// 𝒜_0, …, 𝒜_n.
+    pub accels: Vec<JointAccel<T>>,
+}
+
 /// 𝒯_{k/k−1} 𝒳 = [x_v − r⃗_{z_k/z_{k−1}} × x_ω; x_ω] (physical form).
 fn shift<T: Scalar>(r: &Vector<T>, v: &Vector<T>, w: &Vector<T>) -> Vector<T> {
     *v - r.cross(w)
@@ -86,9 +97,7 @@ fn shift<T: Scalar>(r: &Vector<T>, v: &Vector<T>, w: &Vector<T>) -> Vector<T> {
 ///
 /// # Errors
 /// [`KinematicsError::EmptyChain`]; [`KinematicsError::NonFinite`].
-pub fn chain_kinematics<T: Scalar>(
-    links: &[LinkMotion<T>],
-) -> Result<(Vec<JointTwist<T>>, Vec<JointAccel<T>>), KinematicsError> {
+pub fn chain_kinematics<T: Scalar>(links: &[LinkMotion<T>]) -> Result<ChainKinematics<T>, KinematicsError> {
     let n = links.len();
     let first = links.first().ok_or(KinematicsError::EmptyChain { what: "chain_kinematics" })?;
     for l in links {
@@ -136,7 +145,7 @@ pub fn chain_kinematics<T: Scalar>(
             alpha_body,
         });
     }
-    Ok((twists, accels))
+    Ok(ChainKinematics { twists, accels })
 }
 
 /// Link k in resolved form: 𝓞_{k/k−1}, ω_{k/k−1}|_k and r_{z_k/z_{k−1}}|_k.
@@ -161,10 +170,16 @@ pub struct ResolvedLink<T: Scalar = f64> {
 ///
 /// # Errors
 /// [`KinematicsError::EmptyChain`]; [`KinematicsError::NonFinite`].
-pub fn chain_velocity_resolved<T: Scalar>(links: &[ResolvedLink<T>]) -> Result<Vec<Vector6<T>>, KinematicsError> {
+pub fn chain_velocity_resolved<T: Scalar>(
+    links: &[ResolvedLink<T>],
+) -> Result<Vec<Vector6<T>>, KinematicsError> {
     let first = links.first().ok_or(KinematicsError::EmptyChain { what: "chain_velocity_resolved" })?;
     let finite = links.iter().all(|l| {
-        l.o_k_prev.iter().chain(l.omega_rel_prev_in_k.iter()).chain(l.r_joint_prev_joint_in_k.iter()).all(|x| x.re().is_finite())
+        l.o_k_prev
+            .iter()
+            .chain(l.omega_rel_prev_in_k.iter())
+            .chain(l.r_joint_prev_joint_in_k.iter())
+            .all(|x| x.re().is_finite())
     });
     if !finite {
         return Err(KinematicsError::NonFinite { what: "resolved chain link" });

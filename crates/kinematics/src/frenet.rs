@@ -7,8 +7,8 @@
 use vectrix_frames::{Frame, ORTHONORMAL_TOL};
 use vectrix_tensor::{Scalar, Vector};
 
-use crate::motion::finite_vector;
 use crate::KinematicsError;
+use crate::motion::finite_vector;
 
 /// The Frenet–Serret frame F_FS = [ê_t ê_n ê_b] at one point of a curve, with the curve scalars.
 ///

@@ -21,7 +21,10 @@ mod screw;
 mod transport;
 
 pub use bishop::bishop_frames;
-pub use chain::{LinkMotion, JointAccel, JointTwist, ResolvedLink, chain_kinematics, chain_velocity_resolved};
+pub use chain::{
+    ChainKinematics, JointAccel, JointTwist, LinkMotion, ResolvedLink, chain_kinematics,
+    chain_velocity_resolved,
+};
 pub use curvilinear::{Cylindrical, Spherical};
 pub use error::KinematicsError;
 pub use frenet::FrenetSerret;
@@ -32,8 +35,13 @@ pub use poisson::{
     alpha_body_from_orientation_rates, axis_rates, omega_body_from_orientation_rate, omega_from_axis_rates,
     omega_from_axis_rates_projections, omega_spatial_from_rotation_rate, poisson_rate, poisson_rate_spatial,
 };
-pub use rolling::{chasles_velocity, contact_point_velocity, no_slip_velocity, rolls_without_slip, slip_velocity};
-pub use screw::{Iacr, InstantaneousMotion, Line, ScrewAxis, body_point_acceleration, iacr, ivcr, ivcr_coefficient, screw_axis};
+pub use rolling::{
+    chasles_velocity, contact_point_velocity, no_slip_velocity, rolls_without_slip, slip_velocity,
+};
+pub use screw::{
+    Iacr, InstantaneousMotion, Line, ScrewAxis, body_point_acceleration, iacr, ivcr, ivcr_coefficient,
+    screw_axis,
+};
 pub use transport::{double_transport, transport, transport_dyadic, triple_transport};
 
 /// `use vectrix_kinematics::prelude::*;`

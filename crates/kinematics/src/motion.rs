@@ -149,7 +149,8 @@ impl<T: Scalar> FrameMotion<T> {
     /// [`KinematicsError::EmptyChain`]; [`KinematicsError::FrameMismatch`] when a link is not
     /// relative to the previous link's body.
     pub fn chain(links: &[FrameMotion<T>]) -> Result<Self, KinematicsError> {
-        let (first, rest) = links.split_first().ok_or(KinematicsError::EmptyChain { what: "FrameMotion::chain" })?;
+        let (first, rest) =
+            links.split_first().ok_or(KinematicsError::EmptyChain { what: "FrameMotion::chain" })?;
         rest.iter().try_fold(*first, |acc, link| link.compose(&acc))
     }
 

@@ -86,7 +86,12 @@ pub fn poisson_rate_spatial<T: Scalar>(r_b_a: &Matrix3<T>, omega_b_a_in_a: &Vect
 /// ω⃗_{B/A} = ½(î_B × î_B^{A•} + ĵ_B × ĵ_B^{A•} + k̂_B × k̂_B^{A•}).
 ///
 /// Book: P4.20.5, from ê^{A•}_B = ω⃗_{B/A} × ê_B (4.3.13–15).
-pub fn omega_from_axis_rates<T: Scalar>(b: &Frame<T>, i_dot: &Vector<T>, j_dot: &Vector<T>, k_dot: &Vector<T>) -> Vector<T> {
+pub fn omega_from_axis_rates<T: Scalar>(
+    b: &Frame<T>,
+    i_dot: &Vector<T>,
+    j_dot: &Vector<T>,
+    k_dot: &Vector<T>,
+) -> Vector<T> {
     (b.i().cross(i_dot) + b.j().cross(j_dot) + b.k().cross(k_dot)) * T::lit(0.5)
 }
 

@@ -5,8 +5,8 @@
 
 use vectrix_tensor::{Dyadic, Scalar, Vector};
 
-use crate::motion::finite_vector;
 use crate::KinematicsError;
+use crate::motion::finite_vector;
 
 /// A line {p⃗ + λ d̂}: `point` is r⃗_{p/q} (the point of the line nearest q), `direction` is unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,7 +52,10 @@ pub enum InstantaneousMotion<T: Scalar = f64> {
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn screw_axis<T: Scalar>(omega: &Vector<T>, v_q: &Vector<T>) -> Result<InstantaneousMotion<T>, KinematicsError> {
+pub fn screw_axis<T: Scalar>(
+    omega: &Vector<T>,
+    v_q: &Vector<T>,
+) -> Result<InstantaneousMotion<T>, KinematicsError> {
     finite_vector(omega, "ω")?;
     finite_vector(v_q, "v_q")?;
     let w2 = omega.norm_squared();
@@ -83,7 +86,11 @@ pub fn screw_axis<T: Scalar>(omega: &Vector<T>, v_q: &Vector<T>) -> Result<Insta
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn ivcr<T: Scalar>(omega: &Vector<T>, v_q: &Vector<T>, rel_tol: f64) -> Result<Option<Line<T>>, KinematicsError> {
+pub fn ivcr<T: Scalar>(
+    omega: &Vector<T>,
+    v_q: &Vector<T>,
+    rel_tol: f64,
+) -> Result<Option<Line<T>>, KinematicsError> {
     match screw_axis(omega, v_q)? {
         InstantaneousMotion::Screw(s) => {
             let tol = rel_tol * omega.norm().re() * v_q.norm().re();
@@ -124,7 +131,12 @@ pub enum Iacr<T: Scalar = f64> {
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn iacr<T: Scalar>(omega: &Vector<T>, alpha: &Vector<T>, a_q: &Vector<T>, rel_tol: f64) -> Result<Iacr<T>, KinematicsError> {
+pub fn iacr<T: Scalar>(
+    omega: &Vector<T>,
+    alpha: &Vector<T>,
+    a_q: &Vector<T>,
+    rel_tol: f64,
+) -> Result<Iacr<T>, KinematicsError> {
     finite_vector(omega, "ω")?;
     finite_vector(alpha, "α")?;
     finite_vector(a_q, "a_q")?;
@@ -144,7 +156,8 @@ pub fn iacr<T: Scalar>(omega: &Vector<T>, alpha: &Vector<T>, a_q: &Vector<T>, re
         })?;
         return Ok(Iacr::Point(-(m_inv * *a_q)));
     }
-    let line = |point: Vector<T>, dir: &Vector<T>| dir.unit().map(|d| Iacr::Line(Line { point, direction: d }));
+    let line =
+        |point: Vector<T>, dir: &Vector<T>| dir.unit().map(|d| Iacr::Line(Line { point, direction: d }));
     if w2r <= rel_tol * alr {
         // F4.16.2 (ω = 0): α·a_q = 0 needed; (|α|²I − αα′) r = α × a_q
         if alpha.dot(a_q).re().abs() > rel_tol * alr * aq {
@@ -164,7 +177,12 @@ pub fn iacr<T: Scalar>(omega: &Vector<T>, alpha: &Vector<T>, a_q: &Vector<T>, re
 /// for checking IACR results.
 ///
 /// Book: (4.5.3), (4.16.1).
-pub fn body_point_acceleration<T: Scalar>(omega: &Vector<T>, alpha: &Vector<T>, a_q: &Vector<T>, r_p_q: &Vector<T>) -> Vector<T> {
+pub fn body_point_acceleration<T: Scalar>(
+    omega: &Vector<T>,
+    alpha: &Vector<T>,
+    a_q: &Vector<T>,
+    r_p_q: &Vector<T>,
+) -> Vector<T> {
     *a_q + alpha.cross(r_p_q) + omega.cross(&omega.cross(r_p_q))
 }
 

@@ -71,7 +71,10 @@ fn checked_inverse_coefficient<T: Scalar>(th: &Vector3<T>) -> Result<T, Kinemati
     if theta.re() >= 2.0 * PI * (1.0 - 1e-9) {
         return Err(KinematicsError::SingularRateMap {
             representation: "angle vector",
-            detail: format!("|Θ| = {} is at or beyond 2π where J⁻¹ is singular; rewrap to |Θ| ≤ π first", theta.re()),
+            detail: format!(
+                "|Θ| = {} is at or beyond 2π where J⁻¹ is singular; rewrap to |Θ| ≤ π first",
+                theta.re()
+            ),
         });
     }
     Ok(inverse_coefficient(theta))
@@ -108,7 +111,10 @@ pub fn jacobian_right_inverse<T: Scalar>(th: &Vector3<T>) -> Result<Matrix3<T>, 
 ///
 /// # Errors
 /// As [`jacobian_left_inverse`], and for non-finite ω.
-pub fn angle_vector_rate_body<T: Scalar>(th: &Vector3<T>, omega_in_b: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn angle_vector_rate_body<T: Scalar>(
+    th: &Vector3<T>,
+    omega_in_b: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(omega_in_b, "ω")?;
     Ok(jacobian_right_inverse(th)? * omega_in_b)
 }
@@ -119,7 +125,10 @@ pub fn angle_vector_rate_body<T: Scalar>(th: &Vector3<T>, omega_in_b: &Vector3<T
 ///
 /// # Errors
 /// As [`angle_vector_rate_body`].
-pub fn angle_vector_rate_spatial<T: Scalar>(th: &Vector3<T>, omega_in_a: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn angle_vector_rate_spatial<T: Scalar>(
+    th: &Vector3<T>,
+    omega_in_a: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(omega_in_a, "ω")?;
     Ok(jacobian_left_inverse(th)? * omega_in_a)
 }

@@ -12,14 +12,24 @@ use crate::KinematicsError;
 /// ω_{B/A}|_A = θ̇n̂ + (1 − cos θ)n̂×ṅ + sin θ ṅ (4.7.18).
 ///
 /// Book: F4.7.2, (4.7.18).
-pub fn omega_spatial_from_eigenaxis_rates<T: Scalar>(theta: T, theta_dot: T, n: &Vector3<T>, n_dot: &Vector3<T>) -> Vector3<T> {
+pub fn omega_spatial_from_eigenaxis_rates<T: Scalar>(
+    theta: T,
+    theta_dot: T,
+    n: &Vector3<T>,
+    n_dot: &Vector3<T>,
+) -> Vector3<T> {
     n * theta_dot + n.cross(n_dot) * (T::one() - theta.cos()) + n_dot * theta.sin()
 }
 
 /// ω_{B/A}|_B = θ̇n̂ − (1 − cos θ)n̂×ṅ + sin θ ṅ (4.7.19).
 ///
 /// Book: (4.7.19).
-pub fn omega_body_from_eigenaxis_rates<T: Scalar>(theta: T, theta_dot: T, n: &Vector3<T>, n_dot: &Vector3<T>) -> Vector3<T> {
+pub fn omega_body_from_eigenaxis_rates<T: Scalar>(
+    theta: T,
+    theta_dot: T,
+    n: &Vector3<T>,
+    n_dot: &Vector3<T>,
+) -> Vector3<T> {
     n * theta_dot - n.cross(n_dot) * (T::one() - theta.cos()) + n_dot * theta.sin()
 }
 
@@ -30,7 +40,11 @@ pub fn omega_body_from_eigenaxis_rates<T: Scalar>(theta: T, theta_dot: T, n: &Ve
 /// # Errors
 /// [`KinematicsError::SingularRateMap`] at θ = 0 (cot(θ/2) = ∞, n̂ undefined: (4.9.21));
 /// [`KinematicsError::NonFinite`].
-pub fn eigenaxis_rates_from_omega_spatial<T: Scalar>(theta: T, n: &Vector3<T>, omega_in_a: &Vector3<T>) -> Result<(T, Vector3<T>), KinematicsError> {
+pub fn eigenaxis_rates_from_omega_spatial<T: Scalar>(
+    theta: T,
+    n: &Vector3<T>,
+    omega_in_a: &Vector3<T>,
+) -> Result<(T, Vector3<T>), KinematicsError> {
     rates(theta, n, omega_in_a, -T::one())
 }
 
@@ -40,11 +54,20 @@ pub fn eigenaxis_rates_from_omega_spatial<T: Scalar>(theta: T, n: &Vector3<T>, o
 ///
 /// # Errors
 /// As [`eigenaxis_rates_from_omega_spatial`].
-pub fn eigenaxis_rates_from_omega_body<T: Scalar>(theta: T, n: &Vector3<T>, omega_in_b: &Vector3<T>) -> Result<(T, Vector3<T>), KinematicsError> {
+pub fn eigenaxis_rates_from_omega_body<T: Scalar>(
+    theta: T,
+    n: &Vector3<T>,
+    omega_in_b: &Vector3<T>,
+) -> Result<(T, Vector3<T>), KinematicsError> {
     rates(theta, n, omega_in_b, T::one())
 }
 
-fn rates<T: Scalar>(theta: T, n: &Vector3<T>, w: &Vector3<T>, sign: T) -> Result<(T, Vector3<T>), KinematicsError> {
+fn rates<T: Scalar>(
+    theta: T,
+    n: &Vector3<T>,
+    w: &Vector3<T>,
+    sign: T,
+) -> Result<(T, Vector3<T>), KinematicsError> {
     if !(theta.re().is_finite() && n.iter().chain(w.iter()).all(|x| x.re().is_finite())) {
         return Err(KinematicsError::NonFinite { what: "θ, n̂ or ω" });
     }

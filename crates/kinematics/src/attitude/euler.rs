@@ -40,7 +40,11 @@ fn intrinsic<T: Scalar>(ea: &EulerAngles<T>) -> ([Axis; 3], [T; 3], bool) {
 
 /// Reorders the columns of an intrinsic-order matrix back to the caller's angle order.
 fn reorder<T: Scalar>(m: Matrix3<T>, reversed: bool) -> Matrix3<T> {
-    if reversed { Matrix3::from_columns(&[m.column(2).into_owned(), m.column(1).into_owned(), m.column(0).into_owned()]) } else { m }
+    if reversed {
+        Matrix3::from_columns(&[m.column(2).into_owned(), m.column(1).into_owned(), m.column(0).into_owned()])
+    } else {
+        m
+    }
 }
 
 /// The body rate matrix S: ω_{D/A}|_D = S (α̇, β̇, γ̇)ᵀ.
@@ -49,7 +53,10 @@ fn reorder<T: Scalar>(m: Matrix3<T>, reversed: bool) -> Matrix3<T> {
 pub fn euler_rate_matrix_body<T: Scalar>(ea: &EulerAngles<T>) -> Matrix3<T> {
     let ([i, j, k], [_, b, c], rev) = intrinsic(ea);
     let o_k = orientation_about(k, c);
-    reorder(Matrix3::from_columns(&[o_k * orientation_about(j, b) * e::<T>(i), o_k * e::<T>(j), e::<T>(k)]), rev)
+    reorder(
+        Matrix3::from_columns(&[o_k * orientation_about(j, b) * e::<T>(i), o_k * e::<T>(j), e::<T>(k)]),
+        rev,
+    )
 }
 
 /// The spatial rate matrix: ω_{D/A}|_A = [e_i | 𝓡_i(α)e_j | 𝓡_i(α)𝓡_j(β)e_k] (α̇, β̇, γ̇)ᵀ.
@@ -75,7 +82,12 @@ pub fn omega_spatial_from_euler_rates<T: Scalar>(ea: &EulerAngles<T>, rates: [T;
     euler_rate_matrix_spatial(ea) * Vector3::from(rates)
 }
 
-fn solve<T: Scalar>(ea: &EulerAngles<T>, s: Matrix3<T>, w: &Vector3<T>, tol: f64) -> Result<[T; 3], KinematicsError> {
+fn solve<T: Scalar>(
+    ea: &EulerAngles<T>,
+    s: Matrix3<T>,
+    w: &Vector3<T>,
+    tol: f64,
+) -> Result<[T; 3], KinematicsError> {
     if !s.iter().chain(w.iter()).all(|x| x.re().is_finite()) {
         return Err(KinematicsError::NonFinite { what: "Euler angles or ω" });
     }
@@ -98,7 +110,8 @@ fn solve<T: Scalar>(ea: &EulerAngles<T>, s: Matrix3<T>, w: &Vector3<T>, tol: f64
         });
     }
     // adjugate/det: exact for 3×3 and differentiable for dual numbers
-    let cof = |r1: usize, c1: usize, r2: usize, c2: usize| s[(r1, c1)] * s[(r2, c2)] - s[(r1, c2)] * s[(r2, c1)];
+    let cof =
+        |r1: usize, c1: usize, r2: usize, c2: usize| s[(r1, c1)] * s[(r2, c2)] - s[(r1, c2)] * s[(r2, c1)];
     let adj = Matrix3::new(
         cof(1, 1, 2, 2),
         -cof(0, 1, 2, 2),
@@ -121,7 +134,11 @@ fn solve<T: Scalar>(ea: &EulerAngles<T>, s: Matrix3<T>, w: &Vector3<T>, tol: f64
 /// # Errors
 /// [`KinematicsError::GimbalLock`] when |det S| ≤ `tol` (|cos β| or |sin β|), with the
 /// condition number; [`KinematicsError::NonFinite`].
-pub fn euler_rates_from_omega_body<T: Scalar>(ea: &EulerAngles<T>, omega_in_d: &Vector3<T>, tol: f64) -> Result<[T; 3], KinematicsError> {
+pub fn euler_rates_from_omega_body<T: Scalar>(
+    ea: &EulerAngles<T>,
+    omega_in_d: &Vector3<T>,
+    tol: f64,
+) -> Result<[T; 3], KinematicsError> {
     solve(ea, euler_rate_matrix_body(ea), omega_in_d, tol)
 }
 
@@ -131,6 +148,10 @@ pub fn euler_rates_from_omega_body<T: Scalar>(ea: &EulerAngles<T>, omega_in_d: &
 ///
 /// # Errors
 /// As [`euler_rates_from_omega_body`].
-pub fn euler_rates_from_omega_spatial<T: Scalar>(ea: &EulerAngles<T>, omega_in_a: &Vector3<T>, tol: f64) -> Result<[T; 3], KinematicsError> {
+pub fn euler_rates_from_omega_spatial<T: Scalar>(
+    ea: &EulerAngles<T>,
+    omega_in_a: &Vector3<T>,
+    tol: f64,
+) -> Result<[T; 3], KinematicsError> {
     solve(ea, euler_rate_matrix_spatial(ea), omega_in_a, tol)
 }

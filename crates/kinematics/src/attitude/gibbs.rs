@@ -22,7 +22,10 @@ fn check<T: Scalar>(x: &Vector3<T>, y: &Vector3<T>) -> Result<(), KinematicsErro
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn gibbs_rate_body<T: Scalar>(g: &Vector3<T>, omega_in_b: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn gibbs_rate_body<T: Scalar>(
+    g: &Vector3<T>,
+    omega_in_b: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(g, omega_in_b)?;
     Ok((Matrix3::identity() + g * g.transpose() + g.cross_matrix()) * omega_in_b * T::lit(0.5))
 }
@@ -33,7 +36,10 @@ pub fn gibbs_rate_body<T: Scalar>(g: &Vector3<T>, omega_in_b: &Vector3<T>) -> Re
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn gibbs_rate_spatial<T: Scalar>(g: &Vector3<T>, omega_in_a: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn gibbs_rate_spatial<T: Scalar>(
+    g: &Vector3<T>,
+    omega_in_a: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(g, omega_in_a)?;
     Ok((Matrix3::identity() + g * g.transpose() - g.cross_matrix()) * omega_in_a * T::lit(0.5))
 }
@@ -44,7 +50,10 @@ pub fn gibbs_rate_spatial<T: Scalar>(g: &Vector3<T>, omega_in_a: &Vector3<T>) ->
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn omega_body_from_gibbs_rate<T: Scalar>(g: &Vector3<T>, g_dot: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn omega_body_from_gibbs_rate<T: Scalar>(
+    g: &Vector3<T>,
+    g_dot: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(g, g_dot)?;
     Ok((Matrix3::identity() - g.cross_matrix()) * g_dot * (T::lit(2.0) / (T::one() + g.norm_squared())))
 }
@@ -55,7 +64,10 @@ pub fn omega_body_from_gibbs_rate<T: Scalar>(g: &Vector3<T>, g_dot: &Vector3<T>)
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn omega_spatial_from_gibbs_rate<T: Scalar>(g: &Vector3<T>, g_dot: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn omega_spatial_from_gibbs_rate<T: Scalar>(
+    g: &Vector3<T>,
+    g_dot: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(g, g_dot)?;
     Ok((Matrix3::identity() + g.cross_matrix()) * g_dot * (T::lit(2.0) / (T::one() + g.norm_squared())))
 }
@@ -67,10 +79,15 @@ pub fn omega_spatial_from_gibbs_rate<T: Scalar>(g: &Vector3<T>, g_dot: &Vector3<
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn mrp_rate_body<T: Scalar>(p: &Vector3<T>, omega_in_b: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn mrp_rate_body<T: Scalar>(
+    p: &Vector3<T>,
+    omega_in_b: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(p, omega_in_b)?;
     let two = T::lit(2.0);
-    let m = Matrix3::identity() * (T::one() - p.norm_squared()) + p.cross_matrix() * two + p * p.transpose() * two;
+    let m = Matrix3::identity() * (T::one() - p.norm_squared())
+        + p.cross_matrix() * two
+        + p * p.transpose() * two;
     Ok(m * omega_in_b * T::lit(0.25))
 }
 
@@ -80,10 +97,14 @@ pub fn mrp_rate_body<T: Scalar>(p: &Vector3<T>, omega_in_b: &Vector3<T>) -> Resu
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn mrp_rate_spatial<T: Scalar>(p: &Vector3<T>, omega_in_a: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn mrp_rate_spatial<T: Scalar>(
+    p: &Vector3<T>,
+    omega_in_a: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(p, omega_in_a)?;
     let two = T::lit(2.0);
-    let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two + p * p.transpose() * two;
+    let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two
+        + p * p.transpose() * two;
     Ok(m * omega_in_a * T::lit(0.25))
 }
 
@@ -93,10 +114,14 @@ pub fn mrp_rate_spatial<T: Scalar>(p: &Vector3<T>, omega_in_a: &Vector3<T>) -> R
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn omega_body_from_mrp_rate<T: Scalar>(p: &Vector3<T>, p_dot: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn omega_body_from_mrp_rate<T: Scalar>(
+    p: &Vector3<T>,
+    p_dot: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(p, p_dot)?;
     let (two, s) = (T::lit(2.0), T::one() + p.norm_squared());
-    let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two + p * p.transpose() * two;
+    let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two
+        + p * p.transpose() * two;
     Ok(m * p_dot * (T::lit(4.0) / (s * s)))
 }
 
@@ -106,9 +131,14 @@ pub fn omega_body_from_mrp_rate<T: Scalar>(p: &Vector3<T>, p_dot: &Vector3<T>) -
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn omega_spatial_from_mrp_rate<T: Scalar>(p: &Vector3<T>, p_dot: &Vector3<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn omega_spatial_from_mrp_rate<T: Scalar>(
+    p: &Vector3<T>,
+    p_dot: &Vector3<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(p, p_dot)?;
     let (two, s) = (T::lit(2.0), T::one() + p.norm_squared());
-    let m = Matrix3::identity() * (T::one() - p.norm_squared()) + p.cross_matrix() * two + p * p.transpose() * two;
+    let m = Matrix3::identity() * (T::one() - p.norm_squared())
+        + p.cross_matrix() * two
+        + p * p.transpose() * two;
     Ok(m * p_dot * (T::lit(4.0) / (s * s)))
 }

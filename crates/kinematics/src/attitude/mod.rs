@@ -21,8 +21,8 @@ pub use eigenaxis::{
     omega_spatial_from_eigenaxis_rates,
 };
 pub use euler::{
-    euler_rate_matrix_body, euler_rate_matrix_spatial, euler_rates_from_omega_body, euler_rates_from_omega_spatial,
-    omega_body_from_euler_rates, omega_spatial_from_euler_rates,
+    euler_rate_matrix_body, euler_rate_matrix_spatial, euler_rates_from_omega_body,
+    euler_rates_from_omega_spatial, omega_body_from_euler_rates, omega_spatial_from_euler_rates,
 };
 pub use gibbs::{
     gibbs_rate_body, gibbs_rate_spatial, mrp_rate_body, mrp_rate_spatial, omega_body_from_gibbs_rate,

@@ -12,8 +12,8 @@ use vectrix_ode::{LieGroup, LieMethod, integrate_lie, quaternion_exact_step};
 use vectrix_rotation::{EulerAngles, EulerSequence, EulerSolution, Quaternion, ROTATION_TOL, Rotation};
 
 use super::{
-    angle_vector_rate_body, euler_rates_from_omega_body, gibbs_rate_body, mrp_rate_body, quaternion_rate_body,
-    rewrap_angle_vector,
+    angle_vector_rate_body, euler_rates_from_omega_body, gibbs_rate_body, mrp_rate_body,
+    quaternion_rate_body, rewrap_angle_vector,
 };
 use crate::KinematicsError;
 
@@ -63,7 +63,9 @@ struct So3(Matrix3<f64>);
 /// exp(ω^×) by Rodrigues's formula with series for small angles.
 fn so3_exp(w: &Vector3<f64>) -> Matrix3<f64> {
     let th = w.norm();
-    let (a, b) = if th < 1e-4 { (1.0 - th * th / 6.0, 0.5 - th * th / 24.0) } else {
+    let (a, b) = if th < 1e-4 {
+        (1.0 - th * th / 6.0, 0.5 - th * th / 24.0)
+    } else {
         let s = (0.5 * th).sin();
         (th.sin() / th, 2.0 * s * s / (th * th))
     };
@@ -163,8 +165,12 @@ pub fn propagate_attitude(
     t1: f64,
     n: usize,
 ) -> Result<Matrix3<f64>, KinematicsError> {
-    if n == 0 || !(t1 > t0) || !t0.is_finite() || !t1.is_finite() {
-        return Err(KinematicsError::OutOfRange { what: "steps / interval", value: n as f64, valid: "n ≥ 1 and t₀ < t₁, finite" });
+    if n == 0 || t1 <= t0 || !t0.is_finite() || !t1.is_finite() {
+        return Err(KinematicsError::OutOfRange {
+            what: "steps / interval",
+            value: n as f64,
+            valid: "n ≥ 1 and t₀ < t₁, finite",
+        });
     }
     let h = (t1 - t0) / n as f64;
     let a = Frame::new();
@@ -246,15 +252,17 @@ pub fn propagate_attitude(
                 let w = omega_body(t);
                 a.vector([w.x, w.y, w.z])
             };
-            let (r, _) = integrate_lie(m, f, t0, &rot.rotor(), t1, n, |_, _| {})
-                .map_err(|e| KinematicsError::SingularRateMap { representation: "rotor", detail: e.to_string() })?;
+            let (r, _) = integrate_lie(m, f, t0, &rot.rotor(), t1, n, |_, _| {}).map_err(|e| {
+                KinematicsError::SingularRateMap { representation: "rotor", detail: e.to_string() }
+            })?;
             let rot = Rotation::from_rotor(&r).map_err(rotation_err)?;
             Ok(rot.rotation_matrix_in(&a))
         }
         Propagator::MatrixLie(m) => {
             let f = |t: f64, _: &So3| omega_body(t);
-            let (r, _) = integrate_lie(m, f, t0, &So3(*r0), t1, n, |_, _| {})
-                .map_err(|e| KinematicsError::SingularRateMap { representation: "SO(3)", detail: e.to_string() })?;
+            let (r, _) = integrate_lie(m, f, t0, &So3(*r0), t1, n, |_, _| {}).map_err(|e| {
+                KinematicsError::SingularRateMap { representation: "SO(3)", detail: e.to_string() }
+            })?;
             Ok(r.0)
         }
     }

@@ -28,7 +28,10 @@ pub fn quaternion_rate_matrix<T: Scalar>(omega_in_b: &Vector3<T>) -> Matrix4<T> 
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn quaternion_rate_body<T: Scalar>(q: &Quaternion<T>, omega_in_b: &Vector3<T>) -> Result<Vector4<T>, KinematicsError> {
+pub fn quaternion_rate_body<T: Scalar>(
+    q: &Quaternion<T>,
+    omega_in_b: &Vector3<T>,
+) -> Result<Vector4<T>, KinematicsError> {
     check(&[q.a, q.b, q.c, q.d, omega_in_b.x, omega_in_b.y, omega_in_b.z], "q or ω")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let h = T::lit(0.5);
@@ -42,7 +45,10 @@ pub fn quaternion_rate_body<T: Scalar>(q: &Quaternion<T>, omega_in_b: &Vector3<T
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn quaternion_rate_spatial<T: Scalar>(q: &Quaternion<T>, omega_in_a: &Vector3<T>) -> Result<Vector4<T>, KinematicsError> {
+pub fn quaternion_rate_spatial<T: Scalar>(
+    q: &Quaternion<T>,
+    omega_in_a: &Vector3<T>,
+) -> Result<Vector4<T>, KinematicsError> {
     check(&[q.a, q.b, q.c, q.d, omega_in_a.x, omega_in_a.y, omega_in_a.z], "q or ω")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let h = T::lit(0.5);
@@ -57,7 +63,10 @@ pub fn quaternion_rate_spatial<T: Scalar>(q: &Quaternion<T>, omega_in_a: &Vector
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn omega_body_from_quaternion_rate<T: Scalar>(q: &Quaternion<T>, q_dot: &Vector4<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn omega_body_from_quaternion_rate<T: Scalar>(
+    q: &Quaternion<T>,
+    q_dot: &Vector4<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(&[q.a, q.b, q.c, q.d, q_dot.x, q_dot.y, q_dot.z, q_dot.w], "q or q̇")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let (eta_d, eps_d) = (q_dot.x, Vector3::new(q_dot.y, q_dot.z, q_dot.w));
@@ -70,7 +79,10 @@ pub fn omega_body_from_quaternion_rate<T: Scalar>(q: &Quaternion<T>, q_dot: &Vec
 ///
 /// # Errors
 /// [`KinematicsError::NonFinite`].
-pub fn omega_spatial_from_quaternion_rate<T: Scalar>(q: &Quaternion<T>, q_dot: &Vector4<T>) -> Result<Vector3<T>, KinematicsError> {
+pub fn omega_spatial_from_quaternion_rate<T: Scalar>(
+    q: &Quaternion<T>,
+    q_dot: &Vector4<T>,
+) -> Result<Vector3<T>, KinematicsError> {
     check(&[q.a, q.b, q.c, q.d, q_dot.x, q_dot.y, q_dot.z, q_dot.w], "q or q̇")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let (eta_d, eps_d) = (q_dot.x, Vector3::new(q_dot.y, q_dot.z, q_dot.w));
