@@ -37,3 +37,8 @@ pub mod prelude {
     pub use vectrix_statics::prelude::*;
     pub use vectrix_tensor::prelude::*;
 }
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
