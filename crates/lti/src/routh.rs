@@ -64,22 +64,24 @@ pub fn routh(p: &Polynomial) -> Result<RouthArray, LtiError> {
         (0..width).map(|j| c.get(start + 2 * j).copied().unwrap_or(0.0)).collect()
     };
     let mut rows = vec![row_from(0)];
-    if n >= 1 {
-        rows.push(row_from(1));
-    }
     let scale = p.norm_inf();
     let zero_tol = 1e3 * f64::EPSILON * scale;
     let mut epsilon_used = false;
     let mut auxiliary = None;
-    for i in 2..=n {
-        let (r2, r1) = (&rows[i - 2], &rows[i - 1]);
-        let mut next: Vec<f64> = (0..width)
-            .map(|j| {
-                let a = r2.get(j + 1).copied().unwrap_or(0.0);
-                let b = r1.get(j + 1).copied().unwrap_or(0.0);
-                (r1[0] * a - r2[0] * b) / r1[0]
-            })
-            .collect();
+    for i in 1..=n {
+        let mut next: Vec<f64> = if i == 1 {
+            row_from(1)
+        } else {
+            let (r2, r1) = (&rows[i - 2], &rows[i - 1]);
+            (0..width)
+                .map(|j| {
+                    let a = r2.get(j + 1).copied().unwrap_or(0.0);
+                    let b = r1.get(j + 1).copied().unwrap_or(0.0);
+                    (r1[0] * a - r2[0] * b) / r1[0]
+                })
+                .collect()
+        };
+        let r1 = &rows[i - 1];
         let row_scale = next.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         if row_scale <= zero_tol {
             // Special case 2: auxiliary polynomial from row i−1 (power n−i+1, even steps).

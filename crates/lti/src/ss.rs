@@ -153,7 +153,11 @@ impl StateSpace {
         let scale = closed.norm_inf().max(den.norm_inf()) * (1.0 + d.abs());
         let tol = 64.0 * f64::EPSILON * (self.n_states().max(1) as f64) * scale;
         let cleaned: Vec<f64> = num.coeffs().iter().map(|&c| if c.abs() <= tol { 0.0 } else { c }).collect();
-        TransferFunction::from_polynomials(Polynomial::from_vec(cleaned), den)
+        // The same cleanup for the denominator: eigenvalues at 0 come out as ~ε‖A‖, which would
+        // leave a trailing 1e-19 where an exact integrator belongs (15.20.42).
+        let dtol = 64.0 * f64::EPSILON * (self.n_states().max(1) as f64) * den.norm_inf();
+        let den: Vec<f64> = den.coeffs().iter().map(|&c| if c.abs() <= dtol { 0.0 } else { c }).collect();
+        TransferFunction::from_polynomials(Polynomial::from_vec(cleaned), Polynomial::from_vec(den))
     }
 
     /// The controllable companion realisation (15.7.3) of a proper rational G:
