@@ -12,6 +12,7 @@
 
 mod axis;
 mod chart;
+pub mod control;
 mod error;
 mod line;
 mod svg;
