@@ -6,5 +6,11 @@ mod support;
 #[path = "ch02/geometry.rs"]
 mod geometry;
 
+#[path = "ch02/matrices.rs"]
+mod matrices;
+
+#[path = "ch02/nonstandard.rs"]
+mod nonstandard;
+
 #[path = "ch02/rotations.rs"]
 mod rotations;

@@ -27,6 +27,14 @@ impl Frame<f64> {
     }
 }
 
+impl Frame<f64> {
+    /// The same frame over another scalar type, e.g. `a.cast::<Dual64>()` to differentiate
+    /// through resolution in it (derivative parts zero).
+    pub fn cast<U: Scalar>(&self) -> Frame<U> {
+        Frame { axes: self.axes.map(U::lit) }
+    }
+}
+
 impl<T: Scalar> Default for Frame<T> {
     fn default() -> Self {
         Self::identity()
@@ -62,9 +70,17 @@ impl<T: Scalar> Frame<T> {
     /// The frame with axes î, ĵ, k̂.
     ///
     /// # Errors
-    /// [`FrameError::NonFinite`], [`FrameError::NotOrthonormal`] when ‖MᵀM − I‖_max > `tol`
+    /// [`FrameError::NonFinite`], [`FrameError::ZeroAxis`], [`FrameError::NotOrthonormal`] when ‖MᵀM − I‖_max > `tol`
     /// (use [`ORTHONORMAL_TOL`] by default), [`FrameError::LeftHanded`] when î×ĵ = −k̂.
     pub fn from_axes(i: &Vector<T>, j: &Vector<T>, k: &Vector<T>, tol: f64) -> Result<Self, FrameError> {
+        for (x, what) in [(i, "axis î"), (j, "axis ĵ"), (k, "axis k̂")] {
+            if !x.is_finite() {
+                return Err(FrameError::NonFinite { what });
+            }
+            if x.norm() == T::zero() {
+                return Err(FrameError::ZeroAxis { what });
+            }
+        }
         let axes = Matrix3::from_columns(&[*i.hidden(), *j.hidden(), *k.hidden()]);
         check_orthonormal(&axes, tol, "frame axes")?;
         Ok(Self { axes })
@@ -118,9 +134,39 @@ impl<T: Scalar> Frame<T> {
     }
 
     /// x⃗ = F_A x|_A = x₁î + x₂ĵ + x₃k̂ (2.4.15–16): the physical vector with these components.
+    ///
+    /// Book: (2.4.15–16). Unchecked (hot path); [`Frame::try_vector`] rejects NaN/∞.
     #[inline]
     pub fn vector(&self, x: [T; 3]) -> Vector<T> {
         Vector::from_hidden(self.axes * Vector3::from(x))
+    }
+
+    /// As [`Frame::vector`], rejecting non-finite components.
+    ///
+    /// Book: (2.4.15–16).
+    ///
+    /// # Errors
+    /// [`FrameError::NonFinite`] when a component is NaN or ∞.
+    pub fn try_vector(&self, x: [T; 3]) -> Result<Vector<T>, FrameError> {
+        if x.iter().all(|c| c.re().is_finite()) {
+            Ok(self.vector(x))
+        } else {
+            Err(FrameError::NonFinite { what: "vector components" })
+        }
+    }
+
+    /// As [`Frame::dyadic`], rejecting non-finite entries.
+    ///
+    /// Book: (2.10.22).
+    ///
+    /// # Errors
+    /// [`FrameError::NonFinite`] when an entry is NaN or ∞.
+    pub fn try_dyadic(&self, m: &Matrix3<T>) -> Result<Dyadic<T>, FrameError> {
+        if m.iter().all(|c| c.re().is_finite()) {
+            Ok(self.dyadic(m))
+        } else {
+            Err(FrameError::NonFinite { what: "dyadic components" })
+        }
     }
 
     /// The covector whose row of components in this frame is `x` (x⃗′|_A = x|_Aᵀ, (2.4.20)).

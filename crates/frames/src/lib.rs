@@ -15,7 +15,7 @@ mod tensor_resolve;
 pub use error::FrameError;
 pub use frame::{Frame, ORTHONORMAL_TOL};
 pub use gradient::{gradient, gradient_central_difference, gradient_of_inverse_power, gradient_of_norm};
-pub use nonstandard::{Components, MAX_CONDITION, NonstandardFrame};
+pub use nonstandard::{Components, MAX_CONDITION, NonstandardFrame, resolve_dyadic_mixed};
 pub use resolve::{Resolve, change_frame_covector, change_frame_dyadic, change_frame_vector};
 pub use tensor_resolve::change_frame_tensor;
 

@@ -204,9 +204,7 @@ impl<T: Scalar> NonstandardFrame<T> {
     /// Book: §2.23, (2.23.33–56). (2.23.44–45) have index typos and F2.23.12 is printed
     /// wrongly (the correct statement is y|_[A] = G M|_A x|_[A]); see the ch2b notes.
     pub fn resolve_dyadic(&self, m: &Dyadic<T>, left: Components, right: Components) -> Matrix3<T> {
-        // M|_{X,Y} = L_X M L_Yᵀ, with L_A = A⁻¹ and L_[A] = Aᵀ.
-        let lm = self.left(left, m.hidden());
-        self.left(right, &lm.transpose()).transpose()
+        resolve_dyadic_mixed(m, (self, left), (self, right))
     }
 
     /// The dyadic M⃗ whose resolution M|_{X,Y} is `m` (inverse of
@@ -236,4 +234,19 @@ impl<T: Scalar> NonstandardFrame<T> {
     pub fn orientation_rel(&self, a: &NonstandardFrame<T>) -> Matrix3<T> {
         a.lu.solve(&self.axes).unwrap_or_else(Matrix3::zeros).transpose()
     }
+}
+
+/// Mixed resolution in two nonstandard frames, M|_{X,Y} = Σ x_i|_X y_i|_Yᵀ for
+/// M⃗ = Σ x⃗_i y⃗_i′, where X is (frame B, contravariant or covariant) and Y is (frame A, …).
+/// With X = B and Y = A contravariant, (M⃗x⃗)|_B = M|_{B,A} x|_[A] (2.23.53).
+///
+/// Book: §2.23, (2.23.52–56), Fact 2.23.13.
+pub fn resolve_dyadic_mixed<T: Scalar>(
+    m: &Dyadic<T>,
+    left: (&NonstandardFrame<T>, Components),
+    right: (&NonstandardFrame<T>, Components),
+) -> Matrix3<T> {
+    // M|_{X,Y} = L_X M L_Yᵀ, with L_A = A⁻¹ (contravariant) and L_[A] = Aᵀ (covariant).
+    let lm = left.0.left(left.1, m.hidden());
+    right.0.left(right.1, &lm.transpose()).transpose()
 }

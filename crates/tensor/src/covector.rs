@@ -60,6 +60,14 @@ impl<T: Scalar> Covector<T> {
     }
 }
 
+impl Covector<f64> {
+    /// The same covector over another scalar type (see [`Vector::cast`]).
+    #[inline]
+    pub fn cast<U: Scalar>(&self) -> Covector<U> {
+        Covector { c: self.c.map(U::lit) }
+    }
+}
+
 /// x⃗′ y⃗: evaluation of the covector at a vector.
 impl<T: Scalar> Mul<Vector<T>> for Covector<T> {
     type Output = T;

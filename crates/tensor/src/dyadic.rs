@@ -73,17 +73,18 @@ impl<T: Scalar> Dyadic<T> {
     ///
     /// # Errors
     /// [`TensorError::NonFinite`] for NaN/∞; [`TensorError::Singular`] when
-    /// |det(M⃗/‖M⃗‖_F)| ≤ `rel_tol` (scale-free, so the test does not depend on units and does
-    /// not overflow for huge entries). The reported `det` is that of the scaled dyadic.
+    /// |det(M⃗/s)| ≤ `rel_tol` with s the largest |entry| of M⃗ resolved in any frame of the
+    /// hidden basis (scale-free, so the test does not depend on units and does not overflow
+    /// for huge or tiny entries). The reported `det` is that of the scaled dyadic.
     pub fn inverse(&self, rel_tol: f64) -> Result<Dyadic<T>, TensorError> {
         if !self.is_finite() {
             return Err(TensorError::NonFinite { what: "dyadic" });
         }
-        let scale = self.m.norm();
+        let scale = self.max_abs();
         if scale == T::zero() {
             return Err(TensorError::Singular { det: 0.0, tol: rel_tol });
         }
-        // Work with M/‖M‖ so that det neither over- nor underflows: M⁻¹ = (M/s)⁻¹ / s.
+        // Work with M/s, s = max|M_ij|, so that det neither over- nor underflows: M⁻¹ = (M/s)⁻¹/s.
         let m = self.m / scale;
         let det = m.determinant();
         if det.re().abs() <= rel_tol {
@@ -244,16 +245,40 @@ impl<T: Scalar> Dyadic<T> {
         Ok(Self::identity() - xx * (alpha / d) + xx2 * ((alpha * alpha + beta * beta * n2 - beta) / d))
     }
 
-    /// Frobenius norm (frame independent for orthonormal frames).
+    /// Frobenius norm ‖M⃗‖_F = √tr(M⃗′M⃗), frame independent for standard frames; scaled by the
+    /// largest entry so that huge or tiny entries neither overflow nor underflow.
+    ///
+    /// Book: §2.6, (2.10.50) (trace invariance).
     #[inline]
     pub fn norm(&self) -> T {
-        self.m.norm()
+        let s = self.max_abs();
+        if s == T::zero() || !s.re().is_finite() {
+            return s;
+        }
+        let r = s.re();
+        if r > 1e-150 && r < 1e150 {
+            return self.m.norm();
+        }
+        (self.m / s).norm() * s
+    }
+
+    /// Largest |entry| in the hidden basis (a scale, not an invariant).
+    fn max_abs(&self) -> T {
+        self.m.iter().fold(T::zero(), |s, x| if x.abs() > s { x.abs() } else { s })
     }
 
     /// `true` when every component is finite.
     #[inline]
     pub fn is_finite(&self) -> bool {
         crate::scalar::all_finite(self.m.as_slice())
+    }
+}
+
+impl Dyadic<f64> {
+    /// The same dyadic over another scalar type (see [`Vector::cast`]).
+    #[inline]
+    pub fn cast<U: Scalar>(&self) -> Dyadic<U> {
+        Dyadic { m: self.m.map(U::lit) }
     }
 }
 

@@ -222,6 +222,16 @@ impl<T: Scalar> Vector<T> {
     }
 }
 
+impl Vector<f64> {
+    /// The same vector over another scalar type: `x.cast::<Dual64>()` lifts an f64 vector into
+    /// dual numbers (derivative part zero), so frame-free inputs can enter a differentiated
+    /// function (book §2.24).
+    #[inline]
+    pub fn cast<U: Scalar>(&self) -> Vector<U> {
+        Vector { c: self.c.map(U::lit) }
+    }
+}
+
 impl<T: Scalar> Default for Vector<T> {
     fn default() -> Self {
         Self::zero()
