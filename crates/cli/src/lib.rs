@@ -7,6 +7,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod accuracy;
 mod tour;
 
 /// Command-line arguments.
@@ -23,6 +24,19 @@ pub struct Cli {
 pub enum Command {
     /// A short tour: frames, resolution, a rotor, a contraction.
     Tour,
+    /// Work–precision harness of the integrators: writes docs/accuracy/*.svg and prints the
+    /// tables of docs/accuracy.md (`cargo run --release -- accuracy`).
+    Accuracy {
+        /// Directory for the SVG diagrams.
+        #[arg(long, default_value = "docs/accuracy")]
+        out: std::path::PathBuf,
+        /// A few points per line only (seconds instead of a minute).
+        #[arg(long)]
+        quick: bool,
+        /// Also print every measured point.
+        #[arg(long)]
+        all: bool,
+    },
 }
 
 /// Entry point of the binary: parses `std::env::args` and runs.
@@ -31,6 +45,7 @@ pub fn main() -> ExitCode {
     let mut out = std::io::stdout().lock();
     let result = match cli.command {
         None | Some(Command::Tour) => tour::run(&mut out),
+        Some(Command::Accuracy { out: dir, quick, all }) => accuracy::run(&mut out, &dir, quick, all),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
