@@ -461,6 +461,25 @@ mod prop {
             prop_assert!((r * x.cross(&y) - (r * x).cross(&(r * y))).norm() <= 64.0 * EPS * sc);
         }
 
+        /// Tensors (3.6.2): built from T|_A in frame A, resolved in B, equal to the slotwise
+        /// change of frame by 𝓞_{B/A}; and back (round trip), for every type up to order 4.
+        #[test]
+        fn tensor_resolution_is_frame_independent(
+            a in frame(), b in frame(), p in 0usize..3, q in 0usize..3,
+            data in proptest::collection::vec(-1.0..1.0f64, 81),
+        ) {
+            use vectrix::frames::change_frame_tensor;
+            use vectrix::nalgebra::DMatrix;
+            let (rows, cols) = (3usize.pow(p as u32), 3usize.pow(q as u32));
+            let t_a = DMatrix::from_row_slice(rows, cols, &data[..rows * cols]);
+            let t = a.tensor(p, q, &t_a).unwrap();
+            let got = t.resolve(&b);
+            let want = change_frame_tensor(&t_a, p, q, &a, &b).unwrap();
+            prop_assert!((&got - &want).amax() <= 64.0 * EPS * (p + q + 1) as f64);
+            prop_assert!((t.resolve(&a) - &t_a).amax() <= 64.0 * EPS * (p + q + 1) as f64);
+            prop_assert!((b.tensor(p, q, &got).unwrap().resolve(&a) - &t_a).amax() <= 128.0 * EPS * (p + q + 1) as f64);
+        }
+
         /// Jacobi (Prob 2.26.6) and the triple products (2.4.34–37) at all magnitudes.
         #[test]
         fn jacobi_and_triple_products(x in comps(), y in comps(), z in comps()) {

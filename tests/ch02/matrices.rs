@@ -472,3 +472,19 @@ fn eq_3_6_2_tensor_resolution_matches_vectors_and_dyadics() {
     assert_close_slice(tt.resolve(&b).as_slice(), moved.as_slice(), 64.0 * EPS);
     assert!(a.tensor(2, 1, &DMatrix::zeros(3, 9)).is_err());
 }
+
+/// docs/notation.md: for B = A turned by θ = 0.3 about k̂_A, sympy's `B.dcm(A)` is
+/// [[c, s, 0], [−s, c, 0], [0, 0, 1]] and scipy's `Rotation.from_rotvec([0, 0, θ]).as_matrix()`
+/// is its transpose (both checked with sympy/scipy); vectrix's 𝓞_{B/A} and 𝓡_{B/A} match.
+#[test]
+fn notation_orientation_rel_is_sympy_dcm_and_scipy_transpose() {
+    let a = Frame::new();
+    let th: f64 = 0.3;
+    let b = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.k(), th).unwrap());
+    let (c, s) = (th.cos(), th.sin());
+    let sympy_dcm = m3([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]]);
+    // Printed by sympy: B.dcm(A) ≈ [[0.955336, 0.29552, 0], [−0.29552, 0.955336, 0], [0, 0, 1]].
+    assert_close(sympy_dcm[(0, 1)], 0.29552, 1e-5);
+    assert_mat_close(&b.orientation_rel(&a), &sympy_dcm, 4.0 * EPS);
+    assert_mat_close(&b.rotation_rel(&a), &sympy_dcm.transpose(), 4.0 * EPS);
+}

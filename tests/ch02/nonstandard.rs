@@ -54,6 +54,8 @@ fn fact_2_23_3_reciprocal_duality() {
         e[i] = 1.0;
         assert_close_slice(&arr(fa.vector_from_covariant(e).resolve(&s)), &arr(ri.resolve(&s)), 16.0 * EPS);
     }
+    // Fact 2.23.2: the reciprocal axes are independent; their volume is 1/α.
+    assert_close(r.alpha() * fa.alpha(), 1.0, 16.0 * EPS);
     let rr = r.reciprocal();
     for (x, y) in rr.axes().iter().zip(fa.axes()) {
         assert_close_slice(&arr(x.resolve(&s)), &arr(y.resolve(&s)), 16.0 * EPS);
@@ -361,4 +363,67 @@ fn example_2_25_1_position_through_a_chain_of_frames() {
     let got = arr(r.resolve(&a));
     assert_close_slice(&got, &[6.29, 5.27, 1.85], 0.01); // printed, truncated
     assert_close_slice(&got, &[6.297043873556, 5.268593137352, 1.851770098599], 1e-11);
+}
+
+mod prop {
+    //! §2.23 identities on random nonstandard frames, including nearly degenerate ones
+    //! (κ up to ~1e6): duality, x|_[A] = G x|_A, covariant change by 𝓞_{B/A}, (2.23.28),
+    //! M|_[A] = G M|_A G, and round trips. Tolerances scale with κ(A)² (the Gram matrix).
+
+    use proptest::prelude::*;
+
+    use super::*;
+
+    /// Axes: a random standard frame's axes, scaled and sheared, sometimes nearly dependent.
+    fn nonstandard() -> impl Strategy<Value = NonstandardFrame> {
+        (triple(), triple(), triple(), proptest::sample::select(vec![1.0, 1e-2, 1e-4, 1e-6])).prop_filter_map(
+            "independent axes",
+            |(x, y, z, e)| {
+                let s = Frame::new();
+                let a1 = s.vector(x);
+                let a3 = a1 + s.vector(y) * e + s.vector(z) * (e * 0.5);
+                NonstandardFrame::from_axes(&a1, &s.vector(y), &a3, 1e7).ok()
+            },
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(96))]
+
+        #[test]
+        fn nonstandard_identities(fa in nonstandard(), fb in nonstandard(), x in triple(), m in [triple(), triple(), triple()]) {
+            let s = Frame::new();
+            let k2 = fa.condition_number().powi(2).max(fb.condition_number().powi(2));
+            let x = s.vector(x);
+            let xn = x.norm().max(1.0);
+            // Duality (2.23.13).
+            let r = fa.reciprocal();
+            for (i, ri) in r.axes().iter().enumerate() {
+                for (j, aj) in fa.axes().iter().enumerate() {
+                    let d = if i == j { 1.0 } else { 0.0 };
+                    prop_assert!((ri.dot(aj) - d).abs() <= 1e3 * EPS * k2);
+                }
+            }
+            // x|_[A] = G x|_A (2.23.21), residual of the LU solve.
+            let (xc, xv) = (fa.contravariant(&x), fa.covariant(&x));
+            let g = fa.gram();
+            prop_assert!((xv - g * xc).norm() <= 1e3 * EPS * k2 * xn);
+            prop_assert!((fa.vector(arr(xc)) - x).norm() <= 1e3 * EPS * fa.condition_number() * xn);
+            // Covariant change (2.23.27, corrected) and (2.23.28) as 𝓞_{B/A} G_A = G_B 𝓞ᵀ_{A/B}.
+            let o_ba = fb.orientation_rel(&fa);
+            let scale = o_ba.norm().max(1.0);
+            prop_assert!((fb.covariant(&x) - o_ba * xv).norm() <= 1e3 * EPS * k2 * scale * xn);
+            let o_ab = fa.orientation_rel(&fb);
+            let lhs = o_ba * g;
+            prop_assert!((lhs - fb.gram() * o_ab.transpose()).norm() <= 1e4 * EPS * k2 * lhs.norm().max(1.0) * scale);
+            // M|_[A] = G M|_A G (2.23.49) and the round trip through M|_{A,[A]}.
+            let mm = s.dyadic(&Matrix3::from_rows(&m.map(|r| Vector3::from(r).transpose())));
+            let m_cov = fa.resolve_dyadic(&mm, Cov, Cov);
+            let m_con = fa.resolve_dyadic(&mm, Con, Con);
+            let mn = m_cov.norm().max(1.0);
+            prop_assert!((m_cov - g * m_con * g).norm() <= 1e4 * EPS * k2 * k2 * mn);
+            let back = fa.dyadic(&fa.resolve_dyadic(&mm, Con, Cov), Con, Cov).unwrap();
+            prop_assert!((back.resolve(&s) - mm.resolve(&s)).norm() <= 1e4 * EPS * k2 * mm.norm().max(1.0));
+        }
+    }
 }
