@@ -3,6 +3,8 @@
 use thiserror::Error;
 
 /// What went wrong building or using a frame, with what would be valid.
+///
+/// Book: §2.4 (standard frames), §2.23 (nonstandard frames); DESIGN §5.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum FrameError {

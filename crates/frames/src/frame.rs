@@ -6,6 +6,8 @@ use vectrix_tensor::{Covector, Dyadic, Rotor, Scalar, Vector};
 use crate::FrameError;
 
 /// Default orthonormality tolerance: 128·ε, as Drake uses (DESIGN §5).
+///
+/// Book: §2.4 (orthonormal frames), (2.10.6–9).
 pub const ORTHONORMAL_TOL: f64 = 128.0 * f64::EPSILON;
 
 /// A standard frame F_A = [î_A ĵ_A k̂_A] (book (2.4.3)): three orthonormal, right-handed
@@ -21,6 +23,8 @@ pub struct Frame<T: Scalar = f64> {
 impl Frame<f64> {
     /// A first frame F_A, from which others are built (book §2.4). Equivalent to
     /// [`Frame::identity`] for `f64`; dual numbers use `Frame::<T>::identity()`.
+    ///
+    /// Book: §2.4, (2.4.3).
     #[allow(clippy::new_without_default)]
     pub fn new() -> Self {
         Self::identity()
@@ -30,6 +34,8 @@ impl Frame<f64> {
 impl Frame<f64> {
     /// The same frame over another scalar type, e.g. `a.cast::<Dual64>()` to differentiate
     /// through resolution in it (derivative parts zero).
+    ///
+    /// Book: §2.24 (derivatives through resolution).
     pub fn cast<U: Scalar>(&self) -> Frame<U> {
         Frame { axes: self.axes.map(U::lit) }
     }
@@ -63,6 +69,8 @@ fn check_orthonormal<T: Scalar>(m: &Matrix3<T>, tol: f64, what: &'static str) ->
 
 impl<T: Scalar> Frame<T> {
     /// A first frame, generic over the scalar (`Frame::<Dual64>::identity()`).
+    ///
+    /// Book: §2.4, (2.4.3).
     pub fn identity() -> Self {
         Self { axes: Matrix3::identity() }
     }
@@ -72,6 +80,8 @@ impl<T: Scalar> Frame<T> {
     /// # Errors
     /// [`FrameError::NonFinite`], [`FrameError::ZeroAxis`], [`FrameError::NotOrthonormal`] when ‖MᵀM − I‖_max > `tol`
     /// (use [`ORTHONORMAL_TOL`] by default), [`FrameError::LeftHanded`] when î×ĵ = −k̂.
+    ///
+    /// Book: §2.4, (2.4.3); right-handed: î × ĵ = k̂.
     pub fn from_axes(i: &Vector<T>, j: &Vector<T>, k: &Vector<T>, tol: f64) -> Result<Self, FrameError> {
         for (x, what) in [(i, "axis î"), (j, "axis ĵ"), (k, "axis k̂")] {
             if !x.is_finite() {
@@ -88,6 +98,8 @@ impl<T: Scalar> Frame<T> {
 
     /// F_B = R⃗ F_A: the frame whose axes are this frame's axes rotated by the rotor
     /// (book (2.8.9), §3.9). The rotor is assumed unit (it is by construction).
+    ///
+    /// Book: (2.8.9), (3.9.1).
     pub fn rotated_by_rotor(&self, r: &Rotor<T>) -> Self {
         let col = |k: usize| *r.rotate(&Vector::from_hidden(self.axes.column(k).into_owned())).hidden();
         Self { axes: Matrix3::from_columns(&[col(0), col(1), col(2)]) }
@@ -97,6 +109,8 @@ impl<T: Scalar> Frame<T> {
     ///
     /// # Errors
     /// As [`Frame::from_axes`]: the dyad must be a proper rotation within `tol`.
+    ///
+    /// Book: (2.8.9), Fact 2.8.3.
     pub fn rotated_by(&self, r: &Dyadic<T>, tol: f64) -> Result<Self, FrameError> {
         check_orthonormal(r.hidden(), tol, "rotation dyad")?;
         Ok(Self { axes: r.hidden() * self.axes })
@@ -107,6 +121,8 @@ impl<T: Scalar> Frame<T> {
     ///
     /// # Errors
     /// As [`Frame::from_axes`], for 𝓞_{B/A} not orthonormal or det = −1.
+    ///
+    /// Book: (2.10.14–16).
     pub fn from_orientation_rel(a: &Frame<T>, o_ba: &Matrix3<T>, tol: f64) -> Result<Self, FrameError> {
         check_orthonormal(o_ba, tol, "orientation matrix")?;
         // (2.10.16): F_B = F_A 𝓡_{B/A}, 𝓡_{B/A} = 𝓞_{B/A}ᵀ
@@ -114,21 +130,29 @@ impl<T: Scalar> Frame<T> {
     }
 
     /// î of this frame.
+    ///
+    /// Book: (2.4.3).
     pub fn i(&self) -> Vector<T> {
         Vector::from_hidden(self.axes.column(0).into_owned())
     }
 
     /// ĵ of this frame.
+    ///
+    /// Book: (2.4.3).
     pub fn j(&self) -> Vector<T> {
         Vector::from_hidden(self.axes.column(1).into_owned())
     }
 
     /// k̂ of this frame.
+    ///
+    /// Book: (2.4.3).
     pub fn k(&self) -> Vector<T> {
         Vector::from_hidden(self.axes.column(2).into_owned())
     }
 
     /// Axis `n` ∈ {1, 2, 3} (î, ĵ, k̂); `None` otherwise.
+    ///
+    /// Book: (2.4.3).
     pub fn axis(&self, n: usize) -> Option<Vector<T>> {
         (1..=3).contains(&n).then(|| Vector::from_hidden(self.axes.column(n - 1).into_owned()))
     }
@@ -170,6 +194,8 @@ impl<T: Scalar> Frame<T> {
     }
 
     /// The covector whose row of components in this frame is `x` (x⃗′|_A = x|_Aᵀ, (2.4.20)).
+    ///
+    /// Book: (2.4.20).
     #[inline]
     pub fn covector(&self, x: [T; 3]) -> Covector<T> {
         Covector::from_hidden(self.axes * Vector3::from(x))
@@ -177,6 +203,8 @@ impl<T: Scalar> Frame<T> {
 
     /// The physical matrix M⃗ = F_A M|_A 𝓕′_A whose resolution in this frame is `m`
     /// (book (2.10.22)).
+    ///
+    /// Book: (2.10.22), Fact 2.6.5.
     #[inline]
     pub fn dyadic(&self, m: &Matrix3<T>) -> Dyadic<T> {
         Dyadic::from_hidden(self.axes * m * self.axes.transpose())
@@ -213,6 +241,8 @@ impl<T: Scalar> Frame<T> {
     }
 
     /// Reserved for crates that must pass the hidden basis to a peer (benches).
+    ///
+    /// Book: §2.4 (not part of the book: implementation detail).
     #[doc(hidden)]
     pub fn hidden_axes(&self) -> &Matrix3<T> {
         &self.axes

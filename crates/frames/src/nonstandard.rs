@@ -23,9 +23,13 @@ use crate::{Frame, FrameError};
 
 /// Default limit on the 2-norm condition number κ(A) of the axis matrix: 1e8, so that
 /// κ(G) = κ(A)² stays below 1e16 ≈ 1/ε.
+///
+/// Book: §2.23 (linear independence of the axes).
 pub const MAX_CONDITION: f64 = 1e8;
 
 /// Which resolution a slot uses: contravariant x|_A or covariant x|_[A] (book §2.23).
+///
+/// Book: §2.23, (2.23.18–21).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Components {
     /// x|_A: the coefficients in x⃗ = Σ x_i a⃗_i (2.23.18).
@@ -91,22 +95,30 @@ impl<T: Scalar> NonstandardFrame<T> {
     }
 
     /// A standard frame seen as a nonstandard one; its reciprocal frame is itself (§2.23).
+    ///
+    /// Book: §2.23 (a standard frame is its own reciprocal).
     pub fn from_frame(a: &Frame<T>) -> Self {
         let axes = a.axes;
         Self { axes, lu: axes.lu(), lu_t: axes.transpose().lu(), cond: 1.0 }
     }
 
     /// Axis a⃗_n, n ∈ {1, 2, 3}; `None` otherwise.
+    ///
+    /// Book: §2.23, (2.23.1).
     pub fn axis(&self, n: usize) -> Option<Vector<T>> {
         (1..=3).contains(&n).then(|| Vector::from_hidden(self.axes.column(n - 1).into_owned()))
     }
 
     /// The three axes [a⃗₁, a⃗₂, a⃗₃].
+    ///
+    /// Book: §2.23, (2.23.1).
     pub fn axes(&self) -> [Vector<T>; 3] {
         [0, 1, 2].map(|k| Vector::from_hidden(self.axes.column(k).into_owned()))
     }
 
     /// κ₂ of the axis matrix (σ_max/σ_min, real parts): κ(G_A) = κ² (notes ch2b §3.9).
+    ///
+    /// Book: §2.23 (numerics: notes ch2b §3.9).
     pub fn condition_number(&self) -> f64 {
         self.cond
     }
@@ -156,11 +168,15 @@ impl<T: Scalar> NonstandardFrame<T> {
     }
 
     /// x⃗ = Σ x_i a⃗_i from contravariant components (2.23.18).
+    ///
+    /// Book: (2.23.18).
     pub fn vector(&self, x_in_a: [T; 3]) -> Vector<T> {
         Vector::from_hidden(self.axes * Vector3::from(x_in_a))
     }
 
     /// x⃗ = Σ x_[i] a⃗_[i] from covariant components (2.23.20), by solving Aᵀ x⃗ = x|_[A].
+    ///
+    /// Book: (2.23.20–21).
     pub fn vector_from_covariant(&self, x_in_ra: [T; 3]) -> Vector<T> {
         Vector::from_hidden(self.solve_t(&Vector3::from(x_in_ra)))
     }
@@ -212,6 +228,8 @@ impl<T: Scalar> NonstandardFrame<T> {
     ///
     /// # Errors
     /// [`FrameError::NonFinite`] for NaN/∞ entries.
+    ///
+    /// Book: §2.23, (2.23.33–56).
     pub fn dyadic(
         &self,
         m: &Matrix3<T>,

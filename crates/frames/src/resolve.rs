@@ -61,6 +61,8 @@ pub fn change_frame_covector<T: Scalar>(x_in_a: &RowVector3<T>, a: &Frame<T>, b:
 }
 
 /// Change of frame of a resolved dyadic: M|_B = 𝓞_{B/A} M|_A 𝓞_{B/A}ᵀ (book §2.10).
+///
+/// Book: (2.10.38), Fact 2.10.11.
 #[inline]
 pub fn change_frame_dyadic<T: Scalar>(m_in_a: &Matrix3<T>, a: &Frame<T>, b: &Frame<T>) -> Matrix3<T> {
     let o_ba = b.orientation_rel(a);

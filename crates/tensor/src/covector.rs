@@ -16,12 +16,16 @@ pub struct Covector<T: Scalar = f64> {
 
 impl<T: Scalar> Covector<T> {
     /// The zero covector.
+    ///
+    /// Book: §2.1 (covectors).
     #[inline]
     pub fn zero() -> Self {
         Self { c: Vector3::zeros() }
     }
 
     /// Reserved for `vectrix-frames` (see [`Vector::from_hidden`]).
+    ///
+    /// Book: §2.1; DESIGN §1.5.
     #[doc(hidden)]
     #[inline(always)]
     pub fn from_hidden(c: Vector3<T>) -> Self {
@@ -29,6 +33,8 @@ impl<T: Scalar> Covector<T> {
     }
 
     /// Reserved for `vectrix-frames` (see [`Vector::hidden`]).
+    ///
+    /// Book: §2.1; DESIGN §1.5.
     #[doc(hidden)]
     #[inline(always)]
     pub fn hidden(&self) -> &Vector3<T> {
@@ -36,24 +42,32 @@ impl<T: Scalar> Covector<T> {
     }
 
     /// Coform back to the vector: (x⃗′)′ = x⃗ (Fact 2.1.2).
+    ///
+    /// Book: (2.1.6), Fact 2.1.2.
     #[inline]
     pub fn coform(&self) -> Vector<T> {
         Vector { c: self.c }
     }
 
     /// Evaluation x⃗′y⃗ = x⃗·y⃗ (2.1.6).
+    ///
+    /// Book: (2.1.6).
     #[inline]
     pub fn apply(&self, y: &Vector<T>) -> T {
         self.c.dot(&y.c)
     }
 
     /// Magnitude, equal to that of the coform.
+    ///
+    /// Book: (2.1.6), Fact 2.4.2.
     #[inline]
     pub fn norm(&self) -> T {
         self.coform().norm()
     }
 
     /// `true` when every component is finite.
+    ///
+    /// Book: DESIGN §5 (bad input).
     #[inline]
     pub fn is_finite(&self) -> bool {
         crate::scalar::all_finite(self.c.as_slice())
@@ -62,9 +76,22 @@ impl<T: Scalar> Covector<T> {
 
 impl Covector<f64> {
     /// The same covector over another scalar type (see [`Vector::cast`]).
+    ///
+    /// Book: §2.24.
     #[inline]
     pub fn cast<U: Scalar>(&self) -> Covector<U> {
         Covector { c: self.c.map(U::lit) }
+    }
+}
+
+/// x⃗ y⃗′: a vector times a covector is the dyad of (2.6.1), the same as `x.outer(&y)`.
+///
+/// Book: (2.6.1).
+impl<T: Scalar> Mul<Covector<T>> for Vector<T> {
+    type Output = Dyadic<T>;
+    #[inline(always)]
+    fn mul(self, y: Covector<T>) -> Dyadic<T> {
+        Dyadic { m: self.c * y.c.transpose() }
     }
 }
 

@@ -17,18 +17,24 @@ pub struct Dyadic<T: Scalar = f64> {
 
 impl<T: Scalar> Dyadic<T> {
     /// The zero dyadic.
+    ///
+    /// Book: §2.6.
     #[inline]
     pub fn zero() -> Self {
         Self { m: Matrix3::zeros() }
     }
 
     /// The identity I⃗ = F_A 𝓕′_A, the same for every frame A (2.8.1, Fact 2.8.1).
+    ///
+    /// Book: (2.8.1), Fact 2.8.1.
     #[inline]
     pub fn identity() -> Self {
         Self { m: Matrix3::identity() }
     }
 
     /// Reserved for `vectrix-frames` (see [`Vector::from_hidden`]).
+    ///
+    /// Book: §2.6; DESIGN §1.5.
     #[doc(hidden)]
     #[inline(always)]
     pub fn from_hidden(m: Matrix3<T>) -> Self {
@@ -36,6 +42,8 @@ impl<T: Scalar> Dyadic<T> {
     }
 
     /// Reserved for `vectrix-frames` (see [`Vector::hidden`]).
+    ///
+    /// Book: §2.6; DESIGN §1.5.
     #[doc(hidden)]
     #[inline(always)]
     pub fn hidden(&self) -> &Matrix3<T> {
@@ -43,24 +51,32 @@ impl<T: Scalar> Dyadic<T> {
     }
 
     /// M⃗ x⃗.
+    ///
+    /// Book: Fact 2.6.2, (2.6.17).
     #[inline]
     pub fn apply(&self, x: &Vector<T>) -> Vector<T> {
         Vector { c: self.m * x.c }
     }
 
     /// Coform M⃗′, the transpose analogue: (x⃗y⃗′)′ = y⃗x⃗′ (2.6.9).
+    ///
+    /// Book: (2.6.9–12), Fact 2.6.5.
     #[inline]
     pub fn coform(&self) -> Dyadic<T> {
         Dyadic { m: self.m.transpose() }
     }
 
     /// Trace tr M⃗, independent of the frame it is resolved in (Fact 2.6.x).
+    ///
+    /// Book: (2.10.50–51), (2.10.54).
     #[inline]
     pub fn trace(&self) -> T {
         self.m.trace()
     }
 
     /// Determinant det M⃗, independent of the frame (book §2.6).
+    ///
+    /// Book: (2.10.52–53), (2.10.57).
     #[inline]
     pub fn determinant(&self) -> T {
         self.m.determinant()
@@ -108,12 +124,16 @@ impl<T: Scalar> Dyadic<T> {
     }
 
     /// Symmetric part ½(M⃗ + M⃗′).
+    ///
+    /// Book: §2.6 (symmetric M⃗′ = M⃗).
     #[inline]
     pub fn symmetric_part(&self) -> Dyadic<T> {
         Dyadic { m: (self.m + self.m.transpose()) * T::lit(0.5) }
     }
 
     /// Skew-symmetric part ½(M⃗ − M⃗′).
+    ///
+    /// Book: §2.6 (skew M⃗′ = −M⃗), Fact 2.6.1.
     #[inline]
     pub fn skew_part(&self) -> Dyadic<T> {
         Dyadic { m: (self.m - self.m.transpose()) * T::lit(0.5) }
@@ -121,6 +141,8 @@ impl<T: Scalar> Dyadic<T> {
 
     /// Vee: the vector x⃗ with x⃗^× equal to the skew part of M⃗ (inverse of
     /// [`Vector::cross_dyad`] on skew dyadics, book §2.9).
+    ///
+    /// Book: Fact 2.9.3.
     #[inline]
     pub fn vee(&self) -> Vector<T> {
         let m = &self.m;
@@ -268,6 +290,8 @@ impl<T: Scalar> Dyadic<T> {
     }
 
     /// `true` when every component is finite.
+    ///
+    /// Book: DESIGN §5 (bad input).
     #[inline]
     pub fn is_finite(&self) -> bool {
         crate::scalar::all_finite(self.m.as_slice())
@@ -276,6 +300,8 @@ impl<T: Scalar> Dyadic<T> {
 
 impl Dyadic<f64> {
     /// The same dyadic over another scalar type (see [`Vector::cast`]).
+    ///
+    /// Book: §2.24.
     #[inline]
     pub fn cast<U: Scalar>(&self) -> Dyadic<U> {
         Dyadic { m: self.m.map(U::lit) }

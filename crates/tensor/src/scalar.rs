@@ -12,6 +12,8 @@ use num_dual::{Dual2_64, Dual64, DualSVec64, HyperDual64};
 ///
 /// Built on [`nalgebra::RealField`] (which num-dual's types implement) plus `Copy`, so math
 /// bodies read like the book: no `.clone()`.
+///
+/// Book: §1.4; DESIGN §1.4.
 pub trait Scalar: RealField + Copy {
     /// The real part as `f64` (the value itself for `f32`/`f64`; the non-derivative part of a
     /// dual number). Used for tolerances, branch decisions and error messages.

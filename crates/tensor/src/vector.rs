@@ -21,6 +21,8 @@ pub struct Vector<T: Scalar = f64> {
 
 impl<T: Scalar> Vector<T> {
     /// The zero vector 0⃗.
+    ///
+    /// Book: §1.3 (the zero vector 0⃗).
     #[inline]
     pub fn zero() -> Self {
         Self { c: Vector3::zeros() }
@@ -28,6 +30,8 @@ impl<T: Scalar> Vector<T> {
 
     /// Components in the hidden reference basis. Reserved for `vectrix-frames`, the only
     /// layer allowed to see that basis (DESIGN §1.5); every other caller resolves in a frame.
+    ///
+    /// Book: §1.3 (physical vectors have no components); DESIGN §1.5.
     #[doc(hidden)]
     #[inline(always)]
     pub fn from_hidden(c: Vector3<T>) -> Self {
@@ -35,6 +39,8 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// See [`Vector::from_hidden`]: reserved for `vectrix-frames` and peer benches.
+    ///
+    /// Book: §1.3; DESIGN §1.5.
     #[doc(hidden)]
     #[inline(always)]
     pub fn hidden(&self) -> &Vector3<T> {
@@ -42,12 +48,16 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// Dot product x⃗·y⃗ = |x||y|cos θ (2.1.1).
+    ///
+    /// Book: (2.1.1), (2.4.25).
     #[inline]
     pub fn dot(&self, y: &Vector<T>) -> T {
         self.c.dot(&y.c)
     }
 
     /// Cross product x⃗×y⃗ = |x||y| sin θ θ̂_{y/x} (2.2.4).
+    ///
+    /// Book: (2.2.4), (2.4.29–32).
     #[inline]
     pub fn cross(&self, y: &Vector<T>) -> Vector<T> {
         Vector { c: self.c.cross(&y.c) }
@@ -55,6 +65,8 @@ impl<T: Scalar> Vector<T> {
 
     /// Magnitude |x⃗| (2.1.2), computed without overflow or underflow for huge or tiny
     /// components (scaled by the largest component).
+    ///
+    /// Book: (2.1.2), Fact 2.4.2.
     #[inline]
     pub fn norm(&self) -> T {
         let m = self.c.x.abs().max(self.c.y.abs()).max(self.c.z.abs());
@@ -70,6 +82,8 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// |x⃗|².
+    ///
+    /// Book: Fact 2.4.2 (x⃗′x⃗ = |x⃗|²).
     #[inline]
     pub fn norm_squared(&self) -> T {
         self.c.norm_squared()
@@ -85,18 +99,24 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// Coform x⃗′, the covector with x⃗′y⃗ = x⃗·y⃗ (2.1.6).
+    ///
+    /// Book: (2.1.6), Fact 2.1.2.
     #[inline]
     pub fn coform(&self) -> Covector<T> {
         Covector { c: self.c }
     }
 
     /// Outer product x⃗ y⃗′, the dyad of (2.6.1).
+    ///
+    /// Book: (2.6.1), (2.6.15).
     #[inline]
     pub fn outer(&self, y: &Vector<T>) -> Dyadic<T> {
         Dyadic { m: self.c * y.c.transpose() }
     }
 
     /// Cross-product dyad x⃗^×, with x⃗^× y⃗ = x⃗ × y⃗ (2.9.1).
+    ///
+    /// Book: (2.9.1), Fact 2.9.1.
     #[inline]
     pub fn cross_dyad(&self) -> Dyadic<T> {
         Dyadic { m: self.c.cross_matrix() }
@@ -185,6 +205,8 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// Components x|_B = 𝓞 x|_A style map applied in the hidden basis; for frames only.
+    ///
+    /// Book: (2.10.31); DESIGN §1.5.
     #[doc(hidden)]
     #[inline(always)]
     pub fn map_hidden(&self, f: impl FnOnce(&Vector3<T>) -> Vector3<T>) -> Vector<T> {
@@ -192,6 +214,8 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// `true` when every component is finite.
+    ///
+    /// Book: DESIGN §5 (bad input).
     #[inline]
     pub fn is_finite(&self) -> bool {
         crate::scalar::all_finite(self.c.as_slice())
@@ -216,6 +240,8 @@ impl<T: Scalar> Vector<T> {
     }
 
     /// Scalar triple product [x, y, z] = x·(y×z) (2.2.13).
+    ///
+    /// Book: (2.4.36–37), Fact 2.9.7.
     #[inline]
     pub fn triple(&self, y: &Vector<T>, z: &Vector<T>) -> T {
         self.dot(&y.cross(z))
@@ -226,6 +252,8 @@ impl Vector<f64> {
     /// The same vector over another scalar type: `x.cast::<Dual64>()` lifts an f64 vector into
     /// dual numbers (derivative part zero), so frame-free inputs can enter a differentiated
     /// function (book §2.24).
+    ///
+    /// Book: §2.24.
     #[inline]
     pub fn cast<U: Scalar>(&self) -> Vector<U> {
         Vector { c: self.c.map(U::lit) }
