@@ -219,3 +219,80 @@ fn problem_6_15_3_sphere_pyramid() {
     }
     assert_close(mg / (3.0 * 2f64.sqrt()), 0.235_702_260_395_515_8, EPS);
 }
+
+#[test]
+fn problem_6_14_5_equal_moments_about_two_points_need_not_balance() {
+    // P6.14.5: M⃗_{B/w} = M⃗_{B/z} ≠ 0⃗ with w ≠ z does not imply balanced forces: by (6.4.4) it
+    // only forces f⃗_B ∥ r⃗_{z/w}. Counterexample: three non-coplanar forces whose resultant is
+    // parallel to r⃗_{z/w}.
+    let a = Frame::new();
+    let fs = [
+        AppliedForce::new(a.vector([1.0, 0.0, 0.0]), pt(&a, [0.0, 1.0, 0.0])),
+        AppliedForce::new(a.vector([0.0, 1.0, 0.0]), pt(&a, [0.0, 0.0, 1.0])),
+        AppliedForce::new(a.vector([-1.0, -1.0, 1.0]), pt(&a, [1.0, 0.0, 0.0])),
+    ];
+    let w = Point::origin();
+    let z = w.displaced(a.k() * 3.0); // r⃗_{z/w} ∥ f⃗_B = k̂
+    let (mw, mz) = (Wrench::resultant(&fs, &[], w), Wrench::resultant(&fs, &[], z));
+    assert_vec_close(&mw.moment, &mz.moment, 16.0 * EPS);
+    assert!(mw.moment.norm() > 0.5 && !mw.is_balanced(0.5));
+}
+
+#[test]
+fn fact_6_9_2_6_9_3_third_law_sums_in_a_two_body_problem() {
+    // Facts 6.9.2–6.9.3: reaction forces between bodies sum to 0⃗, and so do their moments
+    // about any point. Two blocks stacked on the ground, the upper one loaded off-centre.
+    let a = Frame::new();
+    let mut fb = FreeBodyProblem::new();
+    let (lower, upper) = (fb.add_body(), fb.add_body());
+    fb.apply_force(upper, AppliedForce::new(a.vector([0.0, 0.0, -6.0]), pt(&a, [0.2, 0.1, 2.0]))).unwrap();
+    fb.apply_force(lower, AppliedForce::new(a.vector([0.0, 0.0, -4.0]), pt(&a, [0.0, 0.0, 0.5]))).unwrap();
+    let mut between = vec![];
+    for (x, y) in [(-0.5, -0.5), (0.5, -0.5), (0.0, 0.5)] {
+        between.push(fb.unknown_force(upper, Some(lower), a.k(), pt(&a, [x, y, 1.0])).unwrap());
+        fb.unknown_force(lower, None, a.k(), pt(&a, [x, y, 0.0])).unwrap();
+    }
+    for body in [upper, lower] {
+        fb.unknown_force(body, None, a.i(), pt(&a, [0.0, 0.0, 0.0])).unwrap();
+        fb.unknown_force(body, None, a.j(), pt(&a, [0.0, 0.0, 0.0])).unwrap();
+        fb.unknown_couple(body, None, a.k()).unwrap();
+    }
+    let sol = fb.solve(FREE_BODY_REL_TOL).unwrap().require_determinate().unwrap();
+    // The contact forces carry the upper block's weight, with its moment.
+    let on_upper: Vec<_> =
+        between.iter().map(|&u| AppliedForce::new(sol.reaction(u), pt(&a, [0.0; 3]))).collect();
+    let total: f64 = between.iter().map(|&u| sol.value(u)).sum();
+    assert_close(total, 6.0, 64.0 * EPS);
+    // Third law: the pair (on upper, on lower) sums to zero force and zero moment about any w.
+    let w = pt(&a, [3.0, -1.0, 7.0]);
+    let mut f_sum = Vector::zero();
+    let mut m_sum = Vector::zero();
+    for (&u, p) in between.iter().zip([[-0.5, -0.5, 1.0], [0.5, -0.5, 1.0], [0.0, 0.5, 1.0]]) {
+        let f = sol.reaction(u);
+        for sign in [1.0, -1.0] {
+            let af = AppliedForce::new(f * sign, pt(&a, p));
+            f_sum += af.force;
+            m_sum += af.moment_about(&w);
+        }
+    }
+    assert!(f_sum.norm() <= EPS && m_sum.norm() <= 64.0 * EPS);
+    assert_eq!(on_upper.len(), 3);
+}
+
+#[test]
+fn fact_6_2_15_symmetry_plane_zeroes_products_of_inertia() {
+    // Fact 6.2.15: a plane of symmetry x = 0 makes J_xy = J_xz = 0; two orthogonal planes make
+    // the frame principal.
+    let a = Frame::new();
+    let ps = [
+        (1.0, pt(&a, [1.0, 2.0, 0.5])),
+        (1.0, pt(&a, [-1.0, 2.0, 0.5])),
+        (2.0, pt(&a, [0.0, -1.0, 1.0])),
+        (3.0, pt(&a, [2.0, 0.0, -1.0])),
+        (3.0, pt(&a, [-2.0, 0.0, -1.0])),
+    ];
+    let body = MassProperties::from_particles(&ps).unwrap();
+    let comps = vectrix::statics::InertiaComponents::of(&body.inertia_about_centre(), &a);
+    assert!(comps.products[0].abs() <= 16.0 * EPS && comps.products[1].abs() <= 16.0 * EPS);
+    assert!(comps.products[2].abs() > 0.1, "J_yz need not vanish");
+}

@@ -146,6 +146,15 @@ pub(crate) fn sorted_eigen(m: &Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
 /// [`StaticsError::NotPositiveSemidefinite`], [`StaticsError::RankOne`],
 /// [`StaticsError::TriangleInequality`].
 pub fn check_inertia<T: Scalar>(j: &Dyadic<T>, rel_tol: f64) -> Result<InertiaCheck, StaticsError> {
+    analyse(j, rel_tol).map(|(check, _)| check)
+}
+
+/// [`check_inertia`] that also returns the eigenvectors (columns, working frame, sorted as the
+/// moments), so that principal axes need one eigen-decomposition.
+pub(crate) fn analyse<T: Scalar>(
+    j: &Dyadic<T>,
+    rel_tol: f64,
+) -> Result<(InertiaCheck, Matrix3<f64>), StaticsError> {
     if !j.is_finite() {
         return Err(StaticsError::NonFinite { what: "inertia" });
     }
@@ -156,7 +165,7 @@ pub fn check_inertia<T: Scalar>(j: &Dyadic<T>, rel_tol: f64) -> Result<InertiaCh
     if asymmetry > sym_tol {
         return Err(StaticsError::NotSymmetric { asymmetry, tol: sym_tol });
     }
-    let (mut lam, _) = sorted_eigen(&((m + m.transpose()) * 0.5));
+    let (mut lam, vecs) = sorted_eigen(&((m + m.transpose()) * 0.5));
     let tol = rel_tol * lam[0].abs().max(scale);
     if lam[2] < -tol {
         return Err(StaticsError::NotPositiveSemidefinite { min_moment: lam[2], tol });
@@ -175,5 +184,5 @@ pub fn check_inertia<T: Scalar>(j: &Dyadic<T>, rel_tol: f64) -> Result<InertiaCh
     if excess > tol {
         return Err(StaticsError::TriangleInequality { moments: lam, excess });
     }
-    Ok(InertiaCheck { moments: lam, rank })
+    Ok((InertiaCheck { moments: lam, rank }, vecs))
 }

@@ -3,8 +3,8 @@
 use vectrix_frames::{Frame, ORTHONORMAL_TOL};
 use vectrix_tensor::{Dyadic, Vector};
 
-use crate::basis::{mat_re, vector};
-use crate::inertia::{check_inertia, sorted_eigen};
+use crate::basis::vector;
+use crate::inertia::analyse;
 use crate::{MassProperties, Point, StaticsError};
 
 /// Principal axes of J⃗_{B/z}: the moments λ1 ≥ λ2 ≥ λ3 ≥ 0, a right-handed frame whose
@@ -39,11 +39,9 @@ impl PrincipalAxes {
     /// rel_tol·λ1 are one repeated moment, moments below it are zero.
     ///
     /// # Errors
-    /// As [`check_inertia`].
+    /// As [`crate::check_inertia`].
     pub fn of(j: &Dyadic, rel_tol: f64) -> Result<Self, StaticsError> {
-        let check = check_inertia(j, rel_tol)?;
-        let m = mat_re(j);
-        let (_, s) = sorted_eigen(&((m + m.transpose()) * 0.5));
+        let (check, s) = analyse(j, rel_tol)?;
         let lam = check.moments;
         let tol = rel_tol * lam[0];
         // Clusters of repeated moments (sorted, so neighbours suffice).
@@ -112,7 +110,7 @@ impl MassProperties<f64> {
     /// Book: Fact 6.2.6.
     ///
     /// # Errors
-    /// As [`check_inertia`].
+    /// As [`crate::check_inertia`].
     pub fn principal_axes(&self, z: &Point, rel_tol: f64) -> Result<PrincipalAxes, StaticsError> {
         PrincipalAxes::of(&self.inertia_about(z), rel_tol)
     }
