@@ -459,12 +459,9 @@ fn problem_15_20_17_harmonic_response() {
 #[test]
 fn problem_15_20_26_forced_undamped_oscillator() {
     // 15.20.26: 2q̈ + 17q = 5 sin 2t from rest: q = (5/9)sin 2t − (10/9)√(2/17) sin(√(17/2) t).
-    let q = tf(
-        &[10.0],
-        &Polynomial::new(&[2.0, 0.0, 17.0]).unwrap().mul(&poly(&[1.0, 0.0, 4.0])).coeffs().to_vec(),
-    )
-    .inverse_laplace(CLUSTER_RTOL)
-    .unwrap();
+    let q = tf(&[10.0], Polynomial::new(&[2.0, 0.0, 17.0]).unwrap().mul(&poly(&[1.0, 0.0, 4.0])).coeffs())
+        .inverse_laplace(CLUSTER_RTOL)
+        .unwrap();
     let w = (17.0f64 / 2.0).sqrt();
     for t in [0.5f64, 3.0, 10.0] {
         let want = 5.0 / 9.0 * (2.0 * t).sin() - 10.0 / 9.0 * (2.0f64 / 17.0).sqrt() * (w * t).sin();
@@ -511,7 +508,7 @@ fn problem_15_20_30_routh_and_final_values() {
     assert_eq!(ra.rhp, 2);
     let m = cubic.monic();
     assert_close(m.coeff(2) * m.coeff(1) - m.coeff(0), -1.0 / 9.0, 16.0 * EPS);
-    let y = tf(&[2.0, 0.0, -2.0], &cubic.mul(&Polynomial::s()).coeffs().to_vec());
+    let y = tf(&[2.0, 0.0, -2.0], cubic.mul(&Polynomial::s()).coeffs());
     assert!(matches!(y.final_value(AXIS_RTOL).unwrap(), FinalValue::Illegal(Illegal::RightHalfPlanePole(_))));
     // −2e^{−t}sin 2t ↦ −4/((s+1)² + 4).
     let y = tf(&[1.0], &[1.0, 3.0, 1.0, 0.0]).series(&tf(&[-4.0], &[1.0, 2.0, 5.0]));

@@ -147,7 +147,7 @@ impl TransferFunction {
                 out.push(Complex64::new(0.0, b) + r * Complex64::from_polar(1.0, th));
             }
         };
-        if axis.iter().any(|b| *b == 0.0) {
+        if axis.contains(&0.0) {
             semicircle(0.0, 0.0, std::f64::consts::FRAC_PI_2, &mut contour);
         } else {
             contour.push(Complex64::new(0.0, 0.0));

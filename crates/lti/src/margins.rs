@@ -180,7 +180,7 @@ fn grid_crossings(zpk: &Zpk) -> (Vec<f64>, Vec<f64>) {
     let mags: Vec<f64> =
         zpk.poles().iter().chain(zpk.zeros()).map(|z| z.norm()).filter(|m| *m > 0.0).collect();
     let lo = mags.iter().copied().fold(1.0f64, f64::min) / 1e3;
-    let hi = mags.iter().copied().fold(1.0f64, f64::max).max(1.0 / zpk.delay().max(1e-300).min(1e300)) * 1e3;
+    let hi = mags.iter().copied().fold(1.0f64, f64::max).max(1.0 / zpk.delay().clamp(1e-300, 1e300)) * 1e3;
     let n = 4000;
     let w: Vec<f64> = (0..n).map(|k| lo * (hi / lo).powf(k as f64 / (n - 1) as f64)).collect();
     let mut wg = Vec::new();

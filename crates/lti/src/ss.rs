@@ -233,7 +233,7 @@ impl StateSpace {
         let mut blk = self.c.clone();
         for i in 0..n {
             o.view_mut((i * p, 0), (p, n)).copy_from(&blk);
-            blk = blk * &self.a;
+            blk *= &self.a;
         }
         o
     }
