@@ -1,0 +1,17 @@
+//! Chapter 9: Lagrange's and Hamilton's equations without symbols (book §9.3–9.13).
+//! T, U, R are written once, generic over the scalar; vectrix differentiates them exactly with
+//! dual numbers. Split by topic into `tests/ch09/*.rs`.
+
+mod support;
+
+#[path = "ch09/systems.rs"]
+mod systems;
+
+#[path = "ch09/examples.rs"]
+mod examples;
+
+#[path = "ch09/laws.rs"]
+mod laws;
+
+#[path = "ch09/prop.rs"]
+mod prop;
