@@ -321,3 +321,22 @@ mod prop {
         }
     }
 }
+
+#[test]
+fn rotor_exp_has_exact_derivatives_through_the_series_branch() {
+    // DESIGN §1.4: the kernel runs on dual numbers. d/dθ exp(−𝒥k̂θ/2) = −½ sin(θ/2) − ½ cos(θ/2)𝒥k̂;
+    // at θ = 0 the exp uses its series branch and must still give the exact derivative
+    // (scalar part 0, bivector part −½𝒥k̂).
+    use vectrix::num_dual::Dual64;
+    for theta in [0.0, 1e-9, 0.8, 3.0] {
+        let th = Dual64::from(theta).derivative();
+        let a = Frame::<Dual64>::identity();
+        let k = a.k();
+        let b = Bivector::dual_of(&k) * (th * Dual64::from(-0.5));
+        let r = Rotor::exp(&b);
+        assert_close(r.scalar().eps, -0.5 * (theta / 2.0).sin(), 4.0 * EPS);
+        let db = r.bivector().undual().resolve(&a)[2].eps;
+        assert_close(db, -0.5 * (theta / 2.0).cos(), 4.0 * EPS);
+        assert_close(r.scalar().re(), (theta / 2.0).cos(), 4.0 * EPS);
+    }
+}

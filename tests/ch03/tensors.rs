@@ -375,3 +375,41 @@ mod prop {
         }
     }
 }
+
+#[test]
+fn problem_3_10_1_false_as_stated_contracted_associativity() {
+    // Problem 3.10.1 claims ((T₁⊗T₂)_S⊗T₃)_S = (T₁⊗(T₂⊗T₃)_S)_S. False in general (ch. 3 notes:
+    // for (2, 2) tensors it holds for 18 of the 72 sets S), e.g. for the composition pattern
+    // S = (3,1),(4,2).
+    let a = frame();
+    let t = |s: f64| tensor_from(&a, 2, 2, &(0..81).map(|k| (k as f64 * s).sin()).collect::<Vec<_>>());
+    let (t1, t2, t3) = (t(0.31), t(0.57), t(1.13));
+    let both = |s: &[(usize, usize)]| {
+        let left = t1.contracted_product(&t2, s).unwrap().contracted_product(&t3, s).unwrap();
+        let right = t1.contracted_product(&t2.contracted_product(&t3, s).unwrap(), s).unwrap();
+        left.max_abs_diff(&right).unwrap()
+    };
+    assert!(both(&[(3, 1), (4, 2)]) <= 1e2 * TOL);
+    // Over all 72 two-pair sets S on (4, 4) products, exactly 18 satisfy the claim.
+    let mut sets = Vec::new();
+    for i1 in 1..=4 {
+        for i2 in (i1 + 1)..=4 {
+            for j1 in 1..=4 {
+                for j2 in 1..=4 {
+                    if j1 != j2 {
+                        sets.push([(i1, j1), (i2, j2)]);
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(sets.len(), 72);
+    let holding = sets.iter().filter(|s| both(&s[..]) <= 1e2 * TOL).count();
+    assert_eq!(holding, 18);
+    // For (1, 1) tensors and S = (2,1) it is the associativity of the matrix product.
+    let m = |s: f64| tensor_from(&a, 1, 1, &(0..9).map(|k| (k as f64 * s).cos()).collect::<Vec<_>>());
+    let (m1, m2, m3) = (m(0.2), m(0.9), m(1.7));
+    let left = m1.contracted_product(&m2, &[(2, 1)]).unwrap().contracted_product(&m3, &[(2, 1)]).unwrap();
+    let right = m1.contracted_product(&m2.contracted_product(&m3, &[(2, 1)]).unwrap(), &[(2, 1)]).unwrap();
+    assert_tensor_eq(&left, &right, &a, TOL);
+}
