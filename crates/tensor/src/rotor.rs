@@ -71,9 +71,10 @@ impl<T: Scalar> Rotor<T> {
     /// Book: §3.9; evaluated as x + 2q₀(q⃗×x) + 2q⃗×(q⃗×x), two cross products.
     #[inline]
     pub fn rotate(&self, x: &Vector<T>) -> Vector<T> {
-        let q = self.qv();
-        let t = q.cross(&x.c) * T::lit(2.0);
-        Vector { c: x.c + t * self.s + q.cross(&t) }
+        // With q⃗ = −β⃗ (B = 𝒥β⃗): t = 2q⃗×x = −2β⃗×x, x + q₀t + q⃗×t = x + q₀t − β⃗×t.
+        let beta = &self.b.c;
+        let t = beta.cross(&x.c) * T::lit(-2.0);
+        Vector { c: x.c + t * self.s - beta.cross(&t) }
     }
 
     /// Composition: `a.then(&b)` applies `a` first, then `b`; the result is the geometric
