@@ -55,10 +55,20 @@ impl Zpk {
     /// [`LtiError::InvalidArgument`] for a negative or non-finite ω.
     pub fn bode(&self, omega: &[f64]) -> Result<FrequencyResponse, LtiError> {
         check_omega(omega)?;
-        let response: Vec<Complex64> = omega.iter().map(|&w| self.eval(Complex64::new(0.0, w))).collect();
+        let (response, phase) = crate::sweep::sweep(self, omega, true);
         let magnitude_db = response.iter().map(|g| 20.0 * g.norm().log10()).collect();
-        let phase_deg = omega.iter().map(|&w| self.phase_deg(w)).collect();
+        let phase_deg = phase.into_iter().map(f64::to_degrees).collect();
         Ok(FrequencyResponse { omega: omega.to_vec(), response, magnitude_db, phase_deg })
+    }
+
+    /// G(jω) only (no magnitude or phase), the cheapest sweep (python-control's
+    /// `frequency_response` data).
+    ///
+    /// # Errors
+    /// [`LtiError::InvalidArgument`] for a negative or non-finite ω.
+    pub fn freqresp(&self, omega: &[f64]) -> Result<Vec<Complex64>, LtiError> {
+        check_omega(omega)?;
+        Ok(crate::sweep::sweep(self, omega, false).0)
     }
 }
 

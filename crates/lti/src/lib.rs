@@ -18,6 +18,7 @@ mod routh;
 mod sdof;
 mod ss;
 mod stability;
+mod sweep;
 mod tf;
 mod time;
 mod zpk;

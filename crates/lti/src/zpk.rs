@@ -100,35 +100,32 @@ impl Zpk {
     ///
     /// Book: (16.6.2), §16.3; notes §3.5.
     pub fn phase_deg(&self, omega: f64) -> f64 {
-        let factor = |r: &Complex64, w: f64| -> f64 {
-            // arg(jω − r) = atan2(ω − Im r, −Re r); for Re r > 0 take the branch in [0, 2π) so
-            // the angle does not jump when ω passes Im r.
-            let a = (w - r.im).atan2(-r.re);
-            if r.re > 0.0 && a < 0.0 { a + std::f64::consts::TAU } else { a }
-        };
-        let raw = |w: f64| -> f64 {
-            self.zeros.iter().map(|z| factor(z, w)).sum::<f64>()
-                - self.poles.iter().map(|p| factor(p, w)).sum::<f64>()
-        };
-        // Low-frequency limit of the factor sum, ω → 0⁺.
-        let limit = |r: &Complex64| -> f64 {
-            if r.re == 0.0 && r.im == 0.0 { std::f64::consts::FRAC_PI_2 } else { factor(r, 0.0) }
-        };
+        let raw = self.zeros.iter().map(|z| branch_arg(z, omega)).sum::<f64>()
+            - self.poles.iter().map(|p| branch_arg(p, omega)).sum::<f64>();
+        (self.branch_offset() + raw - omega * self.delay).to_degrees()
+    }
+
+    /// ∠k plus the multiple of 2π that puts the factor-wise phase on the book's
+    /// low-frequency branch (16.6.2), in radians.
+    pub(crate) fn branch_offset(&self) -> f64 {
+        use std::f64::consts::{FRAC_PI_2, PI, TAU};
+        let at_origin = |r: &Complex64| r.re == 0.0 && r.im == 0.0;
+        // Low-frequency limit of the factor sum, ω → 0⁺ (a root at 0 contributes 90°).
+        let limit = |r: &Complex64| if at_origin(r) { FRAC_PI_2 } else { branch_arg(r, 0.0) };
         let raw0 = self.zeros.iter().map(limit).sum::<f64>() - self.poles.iter().map(limit).sum::<f64>();
         // Book's low-frequency phase: sign of k∏(−zᵢ)/∏(−pᵢ) over the nonzero roots, ±90° per
         // root at the origin.
-        let origin = |v: &[Complex64]| v.iter().filter(|r| r.re == 0.0 && r.im == 0.0).count() as f64;
+        let origin = |v: &[Complex64]| v.iter().filter(|r| at_origin(r)).count() as f64;
         let k0 = self
             .zeros
             .iter()
-            .filter(|r| !(r.re == 0.0 && r.im == 0.0))
+            .filter(|r| !at_origin(r))
             .fold(Complex64::new(self.gain, 0.0), |acc, z| acc * (-z));
-        let k0 = self.poles.iter().filter(|r| !(r.re == 0.0 && r.im == 0.0)).fold(k0, |acc, p| acc / (-p));
-        let book0 = if k0.re < 0.0 { -std::f64::consts::PI } else { 0.0 }
-            + std::f64::consts::FRAC_PI_2 * (origin(&self.zeros) - origin(&self.poles));
-        let gain_angle = if self.gain < 0.0 { std::f64::consts::PI } else { 0.0 };
-        let turns = ((book0 - raw0 - gain_angle) / std::f64::consts::TAU).round();
-        (gain_angle + raw(omega) + turns * std::f64::consts::TAU - omega * self.delay).to_degrees()
+        let k0 = self.poles.iter().filter(|r| !at_origin(r)).fold(k0, |acc, p| acc / (-p));
+        let book0 =
+            if k0.re < 0.0 { -PI } else { 0.0 } + FRAC_PI_2 * (origin(&self.zeros) - origin(&self.poles));
+        let gain_angle = if self.gain < 0.0 { PI } else { 0.0 };
+        gain_angle + ((book0 - raw0 - gain_angle) / TAU).round() * TAU
     }
 
     /// Cancels zero–pole pairs closer than `tol·max(1, |p|)`, nearest first.
@@ -161,4 +158,11 @@ impl Zpk {
         let den = Polynomial::from_roots(&self.poles)?;
         TransferFunction::from_polynomials(num, den)?.with_delay(self.delay)
     }
+}
+
+/// arg(jω − r) = atan2(ω − Im r, −Re r), continuous in ω: for Re r > 0 the branch [0, 2π) so
+/// that the angle does not jump when ω passes Im r.
+pub(crate) fn branch_arg(r: &Complex64, w: f64) -> f64 {
+    let a = (w - r.im).atan2(-r.re);
+    if r.re > 0.0 && a < 0.0 { a + std::f64::consts::TAU } else { a }
 }
