@@ -341,6 +341,12 @@ fn dual_numbers_give_exact_derivatives_through_the_kernel() {
     let o = b.orientation_rel(&a).map(|d| d.re);
     let want = o * Vector3::new(3.0, 2.0 * 0.4, 0.0);
     assert_close_slice(&[xb.x.eps, xb.y.eps, xb.z.eps], &arr(want), 8.0 * EPS);
+    // An f64 frame lifted into dual numbers: d/ds of |x|_C(s)| along x|_C = (s, 2s, 2s) is 3.
+    let c = Frame::new().rotated_by_rotor(&Rotor::from_axis_angle(&Frame::new().i(), 0.9).unwrap());
+    let cd = c.cast::<Dual64>();
+    let s = Dual64::new(1.5, 1.0);
+    let v = cd.vector([s, s * 2.0, s * 2.0]);
+    assert_close(v.norm().eps, 3.0, 4.0 * EPS);
 }
 
 mod prop {

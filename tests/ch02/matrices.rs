@@ -28,6 +28,21 @@ fn eq_2_6_3_dyad_rules() {
     let (w, v) = (b.vector([0.0, 1.0, -1.0]), b.vector([2.0, 2.0, 1.0]));
     assert_mat_close(&(xy * w.outer(&v)).resolve(&b), &(x.outer(&v) * y.dot(&w)).resolve(&b), 8.0 * EPS);
     assert_mat_close(&xy.resolve(&b), &(x.resolve(&b) * y.resolve(&b).transpose()), 8.0 * EPS);
+    // x⃗ y⃗′ written as a product of a vector and a covector.
+    assert_eq!(x * y.coform(), xy);
+}
+
+/// (2.9.3): the frame-free form x^× = (î·x)(k̂ĵ′ − ĵk̂′) + (ĵ·x)(îk̂′ − k̂î′) + (k̂·x)(ĵî′ − îĵ′),
+/// the same in every frame.
+#[test]
+fn eq_2_9_3_cross_dyad_from_any_frame() {
+    let (a, b) = frame_b();
+    let x = a.vector([1.0, 2.0, 3.0]);
+    let (i, j, k) = (b.i(), b.j(), b.k());
+    let xx = (k.outer(&j) - j.outer(&k)) * i.dot(&x)
+        + (i.outer(&k) - k.outer(&i)) * j.dot(&x)
+        + (j.outer(&i) - i.outer(&j)) * k.dot(&x);
+    assert_mat_close(&xx.resolve(&a), &x.cross_dyad().resolve(&a), 16.0 * EPS);
 }
 
 /// (2.6.9)–(2.6.12), Fact 2.6.1: (xy′)′ = yx′, (NL)′ = L′N′, (Mz)′ = z′M′; xy′ − yx′ is skew.
@@ -277,6 +292,12 @@ fn fact_2_10_2_orientation_is_transpose_of_rotation() {
     assert_close(o_ba[(0, 1)], b.i().angle(&a.j()).cos(), 8.0 * EPS);
     assert_close_slice(&arr(o_ba.row(2).transpose()), &arr(b.k().resolve(&a)), 8.0 * EPS);
     assert_mat_close(&(o_ba * o_ba.transpose()), &Matrix3::identity(), 8.0 * EPS);
+    // (2.10.13): [î_B; ĵ_B; k̂_B] = 𝓞_{B/A} [î_A; ĵ_A; k̂_A], row by row.
+    let fa = [a.i(), a.j(), a.k()];
+    for (r, e_b) in [b.i(), b.j(), b.k()].iter().enumerate() {
+        let sum = fa[0] * o_ba[(r, 0)] + fa[1] * o_ba[(r, 1)] + fa[2] * o_ba[(r, 2)];
+        assert_close_slice(&arr(sum.resolve(&a)), &arr(e_b.resolve(&a)), 8.0 * EPS);
+    }
 }
 
 /// Facts 2.10.6–2.10.7, (2.10.29)–(2.10.31): x|_B = 𝓞_{B/A}x|_A; I = F_B𝓞_{B/A}𝓕′_A.
