@@ -1,1 +1,125 @@
-//! (in progress)
+//! Property tests for chapter 7: RNEA ∘ ABA = identity on random trees and states, ABA = CRBA,
+//! momenta of rigid particle sets, and collisions.
+
+use proptest::prelude::*;
+use vectrix::dynamics::multibody::{Joint, Link, Model};
+use vectrix::dynamics::restitution_1d;
+use vectrix::nalgebra::{Matrix3, Rotation3, Vector3};
+use vectrix::prelude::*;
+use vectrix::statics::{MassProperties, Point};
+
+use crate::support::triple;
+
+fn joint() -> impl Strategy<Value = Joint> {
+    let axis = || triple().prop_filter("nonzero", |a| Vector3::from(*a).norm() > 0.1).prop_map(Vector3::from);
+    prop_oneof![
+        4 => axis().prop_map(|axis| Joint::Pin { axis }),
+        1 => axis().prop_map(|axis| Joint::Sleeve { axis }),
+        1 => axis().prop_map(|axis| Joint::Collar { axis }),
+        1 => axis().prop_map(|a| {
+            // a direction ⊥ a: a × (any vector not parallel to a)
+            let d = a.cross(&if a.x.abs() < 0.9 * a.norm() { Vector3::x() } else { Vector3::y() });
+            Joint::Slot { axis: a, direction: d }
+        }),
+        1 => Just(Joint::Ball),
+        1 => Just(Joint::Weld),
+    ]
+}
+
+fn link(parent_choice: f64, index: usize) -> impl Strategy<Value = Link> {
+    (joint(), triple(), 0.2..3.0f64, triple(), [0.1..1.0f64, 0.1..1.0f64, 0.1..1.0f64], triple(), triple()).prop_map(
+        move |(joint, offset, mass, com, l, rot, orient)| {
+            // principal moments satisfying the triangle inequality: λ = a + b style sums
+            let lam = Vector3::new(l[1] + l[2], l[0] + l[2], l[0] + l[1]);
+            let r = Rotation3::from_scaled_axis(Vector3::from(rot) * 0.3).into_inner();
+            let parent = if index == 0 { None } else { Some(((parent_choice * index as f64) as usize).min(index - 1)) };
+            let mut link = Link::new(
+                parent,
+                joint,
+                Vector3::from(offset) * 0.1,
+                mass,
+                Vector3::from(com) * 0.05,
+                r * Matrix3::from_diagonal(&lam) * r.transpose(),
+            );
+            link.orientation = Rotation3::from_scaled_axis(Vector3::from(orient) * 0.3).into_inner();
+            link
+        },
+    )
+}
+
+fn tree() -> impl Strategy<Value = Model> {
+    (1usize..9, prop::collection::vec(0.0..1.0f64, 9)).prop_flat_map(|(n, choices)| {
+        (0..n).map(|i| link(choices[i], i)).collect::<Vec<_>>().prop_map(|links| {
+            let mut m = Model::new(&links).expect("valid random tree");
+            m.gravity = Vector3::new(0.0, 0.0, -9.81);
+            m
+        })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+
+    /// §7.11: inverse dynamics undoes forward dynamics, RNEA(q, v, ABA(q, v, τ)) = τ, and the
+    /// O(n) ABA agrees with CRBA + Cholesky.
+    #[test]
+    fn rnea_after_aba_is_identity(model in tree(), seed in prop::collection::vec(-1.0..1.0f64, 64)) {
+        let mut q = model.neutral();
+        for (k, x) in q.iter_mut().enumerate() {
+            *x += 2.0 * seed[k % 64];
+        }
+        let v: Vec<f64> = (0..model.nv()).map(|k| 3.0 * seed[(k + 17) % 64]).collect();
+        let tau: Vec<f64> = (0..model.nv()).map(|k| 5.0 * seed[(k + 33) % 64]).collect();
+        let a = model.aba(&q, &v, &tau, None).unwrap();
+        let back = model.rnea(&q, &v, &a, None).unwrap().tau;
+        let scale = 1.0 + tau.iter().chain(&a).fold(0.0f64, |m, x| m.max(x.abs()));
+        for (x, y) in back.iter().zip(&tau) {
+            // ill-conditioned random trees: relative 1e-8 of the largest term
+            prop_assert!((x - y).abs() <= 1e-8 * scale, "{back:?} vs {tau:?}");
+        }
+        let a2 = model.forward_dynamics_crba(&q, &v, &tau, None).unwrap();
+        let sa = 1.0 + a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        for (x, y) in a.iter().zip(&a2) {
+            prop_assert!((x - y).abs() <= 1e-7 * sa, "{a:?} vs {a2:?}");
+        }
+    }
+
+    /// (7.6.10), (8.1.19): a rigid set of particles moving with (v_c, ω) has momentum m v_c,
+    /// angular momentum about any moving point z equal to Σ r_{y/z} × m v_{y/z}, and kinetic
+    /// energy Σ ½ m|v|².
+    #[test]
+    fn rigid_particle_set_momenta(
+        pts in prop::collection::vec(([0.1..2.0f64], triple()), 2..6),
+        v_c in triple(), omega in triple(), z in triple(), v_z in triple(),
+    ) {
+        let a = Frame::new();
+        let parts: Vec<(f64, Point)> = pts.iter().map(|(m, r)| (m[0], Point::at(a.vector(*r)))).collect();
+        let props = MassProperties::from_particles(&parts).unwrap();
+        let body = RigidBody::new(props, a.vector(v_c), a.vector(omega));
+        let (z, v_z) = (Point::at(a.vector(z)), a.vector(v_z));
+        let (mut h, mut p, mut t) = (Vector::zero(), Vector::zero(), 0.0);
+        for (m, y) in &parts {
+            let v = body.velocity_of(y);
+            p += v * *m;
+            h += y.position_rel(&z).cross(&((v - v_z) * *m));
+            t += 0.5 * m * v.norm_squared();
+        }
+        let scale = 1.0 + 100.0 * (1.0 + body.v_c.norm() + body.omega.norm()).powi(2);
+        prop_assert!((body.momentum() - p).norm() <= 1e-12 * scale);
+        prop_assert!((body.angular_momentum_about(&z, &v_z) - h).norm() <= 1e-12 * scale * 10.0);
+        prop_assert!((body.kinetic_energy() - t).abs() <= 1e-12 * scale);
+    }
+
+    /// Fact 7.13.1: momentum is conserved and the kinetic energy lost is ½(1−e²)μ(u1−u2)² ≥ 0.
+    #[test]
+    fn collisions_conserve_momentum(m1 in 0.1..10.0f64, m2 in 0.1..10.0f64, u1 in -5.0..5.0f64, du in 0.01..5.0f64, e in 0.0..=1.0f64) {
+        let u2 = u1 - du;
+        let (a, b) = restitution_1d(m1, m2, u1, u2, e).unwrap();
+        let scale = (m1 + m2) * (u1.abs() + u2.abs() + 1.0);
+        prop_assert!((m1 * a + m2 * b - m1 * u1 - m2 * u2).abs() <= 1e-14 * scale);
+        let lost = 0.5 * m1 * (u1 * u1 - a * a) + 0.5 * m2 * (u2 * u2 - b * b);
+        let want = vectrix::dynamics::collision_energy_loss(m1, m2, u1, u2, e);
+        prop_assert!((lost - want).abs() <= 1e-12 * scale * scale);
+        prop_assert!(b - a >= -1e-12 * scale);
+    }
+}

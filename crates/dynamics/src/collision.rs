@@ -10,14 +10,22 @@ fn check_e(e: f64) -> Result<(), DynamicsError> {
     if (0.0..=1.0).contains(&e) {
         Ok(())
     } else {
-        Err(DynamicsError::InvalidParameter { what: "coefficient of restitution e", value: e, valid: "0 ≤ e ≤ 1" })
+        Err(DynamicsError::InvalidParameter {
+            what: "coefficient of restitution e",
+            value: e,
+            valid: "0 ≤ e ≤ 1",
+        })
     }
 }
 
 fn check_masses(m1: f64, m2: f64) -> Result<(), DynamicsError> {
     for m in [m1, m2] {
         if !(m.is_finite() && m > 0.0) {
-            return Err(DynamicsError::InvalidParameter { what: "mass", value: m, valid: "a finite number > 0" });
+            return Err(DynamicsError::InvalidParameter {
+                what: "mass",
+                value: m,
+                valid: "a finite number > 0",
+            });
         }
     }
     Ok(())
@@ -102,7 +110,11 @@ pub struct Impact {
 /// # Errors
 /// [`DynamicsError::TorqueOnInertAxis`] for an angular impulse about the axis of a thin body;
 /// statics errors for invalid inertia.
-pub fn impulse_response(props: &MassProperties, at: &Point, impulse: &Vector) -> Result<(Vector, Vector), DynamicsError> {
+pub fn impulse_response(
+    props: &MassProperties,
+    at: &Point,
+    impulse: &Vector,
+) -> Result<(Vector, Vector), DynamicsError> {
     if !(at.is_finite() && impulse.is_finite()) {
         return Err(DynamicsError::NonFinite { what: "impulse or its point" });
     }
@@ -171,7 +183,11 @@ pub fn rigid_impact(
 /// [`DynamicsError::NoPercussionCentre`] when the impulse passes through c (pure translation,
 /// a⃗ = 0) or when a⃗·n̂ ≠ 0 (n̂ not along a principal direction: the motion is a screw and
 /// no point is at rest); errors of [`impulse_response`].
-pub fn centre_of_percussion(props: &MassProperties, at: &Point, normal: &Vector) -> Result<Point, DynamicsError> {
+pub fn centre_of_percussion(
+    props: &MassProperties,
+    at: &Point,
+    normal: &Vector,
+) -> Result<Point, DynamicsError> {
     let n = normal.unit().ok_or(DynamicsError::InvalidParameter {
         what: "impulse direction length",
         value: normal.norm(),
@@ -181,7 +197,9 @@ pub fn centre_of_percussion(props: &MassProperties, at: &Point, normal: &Vector)
     let a = solve_on_range(props, &r_p_c.cross(&n))?;
     let scale = r_p_c.norm() / props.inertia_about_centre().norm().max(f64::MIN_POSITIVE);
     if a.norm() <= 1e-12 * scale {
-        return Err(DynamicsError::NoPercussionCentre { detail: "the impulse passes through the centre of mass" });
+        return Err(DynamicsError::NoPercussionCentre {
+            detail: "the impulse passes through the centre of mass",
+        });
     }
     if a.dot(&n).abs() > 1e-9 * a.norm() {
         return Err(DynamicsError::NoPercussionCentre {

@@ -44,4 +44,3 @@ pub fn eigenaxis_acceleration(
     let s_inv = jacobian_right_inverse(theta)?;
     Ok(s_inv * (omega_dot - s_dot_theta_dot))
 }
-

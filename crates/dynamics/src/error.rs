@@ -49,7 +49,9 @@ pub enum DynamicsError {
         detail: String,
     },
     /// A link whose parent does not exist.
-    #[error("link {link} names parent {parent}, but the tree has only {links} links: the tree is disconnected")]
+    #[error(
+        "link {link} names parent {parent}, but the tree has only {links} links: the tree is disconnected"
+    )]
     Disconnected {
         /// The link.
         link: usize,

@@ -69,10 +69,15 @@ impl Network {
         let n = self.masses.len();
         for &m in &self.masses {
             if !(m.is_finite() && m > 0.0) {
-                return Err(DynamicsError::InvalidParameter { what: "particle mass", value: m, valid: "finite > 0" });
+                return Err(DynamicsError::InvalidParameter {
+                    what: "particle mass",
+                    value: m,
+                    valid: "finite > 0",
+                });
             }
         }
-        let m = DMatrix::from_diagonal(&DVector::from_column_slice(&self.masses)) + laplacian(n, &self.inerters, "b")?;
+        let m = DMatrix::from_diagonal(&DVector::from_column_slice(&self.masses))
+            + laplacian(n, &self.inerters, "b")?;
         Ok((m, laplacian(n, &self.dashpots, "c")?, laplacian(n, &self.springs, "k")?))
     }
 
@@ -105,7 +110,10 @@ impl Network {
     /// As [`Network::matrices`]; [`DynamicsError::SingularMassMatrix`] for an empty network.
     pub fn relative_matrices(&self) -> Result<(DMatrix<f64>, DMatrix<f64>, DMatrix<f64>), DynamicsError> {
         let (m, c, k) = self.matrices()?;
-        let gi = self.gamma().try_inverse().ok_or(DynamicsError::SingularMassMatrix { detail: "Γ is singular".into() })?;
+        let gi = self
+            .gamma()
+            .try_inverse()
+            .ok_or(DynamicsError::SingularMassMatrix { detail: "Γ is singular".into() })?;
         let t = |x: &DMatrix<f64>| gi.transpose() * x * &gi;
         Ok((t(&m), t(&c), t(&k)))
     }
@@ -123,7 +131,9 @@ impl Network {
             crate::error::check_finite(x, what)?;
         }
         let (m, c, k) = self.matrices()?;
-        let rhs = DVector::from_column_slice(f) - c * DVector::from_column_slice(qd) - k * DVector::from_column_slice(q);
+        let rhs = DVector::from_column_slice(f)
+            - c * DVector::from_column_slice(qd)
+            - k * DVector::from_column_slice(q);
         crate::lagrange::cholesky_solve(m, rhs)
     }
 }

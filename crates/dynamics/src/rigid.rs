@@ -113,17 +113,30 @@ impl<T: Scalar> RigidBody<T> {
     /// Zero for the true motion. Generic over the scalar (usable with dual numbers).
     ///
     /// Book: §7.8, (7.8.7), (7.8.10) (pivot), (7.8.13) (z = c).
-    pub fn euler_residual_about(&self, z: &Point<T>, a_z: &Vector<T>, alpha: &Vector<T>, m_z: &Vector<T>) -> Vector<T> {
+    pub fn euler_residual_about(
+        &self,
+        z: &Point<T>,
+        a_z: &Vector<T>,
+        alpha: &Vector<T>,
+        m_z: &Vector<T>,
+    ) -> Vector<T> {
         let j_z = self.props.inertia_about(z);
         let r_c_z = self.props.centre_of_mass().position_rel(z);
-        j_z.apply(alpha) + self.omega.cross(&j_z.apply(&self.omega)) + r_c_z.cross(a_z) * self.props.mass() - *m_z
+        j_z.apply(alpha) + self.omega.cross(&j_z.apply(&self.omega)) + r_c_z.cross(a_z) * self.props.mass()
+            - *m_z
     }
 
     /// Residual of Newton's second law for a body about a body-fixed point z (7.4.17):
     /// m a⃗_z + α⃗ × m r⃗_{c/z} + ω⃗ × (ω⃗ × m r⃗_{c/z}) − f⃗_B.
     ///
     /// Book: (7.4.7), (7.4.17).
-    pub fn newton_residual_about(&self, z: &Point<T>, a_z: &Vector<T>, alpha: &Vector<T>, f: &Vector<T>) -> Vector<T> {
+    pub fn newton_residual_about(
+        &self,
+        z: &Point<T>,
+        a_z: &Vector<T>,
+        alpha: &Vector<T>,
+        f: &Vector<T>,
+    ) -> Vector<T> {
         let m = self.props.mass();
         let mr = self.props.centre_of_mass().position_rel(z) * m;
         *a_z * m + alpha.cross(&mr) + self.omega.cross(&self.omega.cross(&mr)) - *f

@@ -58,7 +58,12 @@ fn hyper(x: &[f64], d1: impl Fn(usize) -> f64, d2: impl Fn(usize) -> f64) -> Vec
 ///
 /// # Errors
 /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`] (input or T).
-pub fn mass_matrix<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> Result<DMatrix<f64>, DynamicsError> {
+pub fn mass_matrix<L: Lagrangian>(
+    sys: &L,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<DMatrix<f64>, DynamicsError> {
     let r = sys.dof();
     check_state(r, q, qd, t)?;
     let qh = hyper(q, |_| 0.0, |_| 0.0);
@@ -84,7 +89,12 @@ pub fn mass_matrix<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> Res
 ///
 /// # Errors
 /// As [`mass_matrix`].
-pub fn lagrange_terms<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> Result<LagrangeTerms, DynamicsError> {
+pub fn lagrange_terms<L: Lagrangian>(
+    sys: &L,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<LagrangeTerms, DynamicsError> {
     let r = sys.dof();
     let mass = mass_matrix(sys, q, qd, t)?;
     let mut momentum = DVector::zeros(r);
@@ -105,7 +115,8 @@ pub fn lagrange_terms<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> 
     let mut dr_dqd = DVector::zeros(r);
     for i in 0..r {
         let qi: Vec<Dual64> = q.iter().enumerate().map(|(k, &x)| Dual64::new(x, f64::from(k == i))).collect();
-        let qdi: Vec<Dual64> = qd.iter().enumerate().map(|(k, &x)| Dual64::new(x, f64::from(k == i))).collect();
+        let qdi: Vec<Dual64> =
+            qd.iter().enumerate().map(|(k, &x)| Dual64::new(x, f64::from(k == i))).collect();
         dt_dq[i] = sys.kinetic(&qi, &qd_d, td).eps;
         du_dq[i] = sys.potential(&qi, td).eps;
         dr_dqd[i] = sys.rayleigh(&q_d, &qdi).eps;
@@ -132,7 +143,12 @@ pub fn lagrange_terms<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> 
 /// # Errors
 /// As [`mass_matrix`]; [`DynamicsError::SingularMassMatrix`] when M is not positive definite
 /// to working precision (Euler angles at gimbal lock, cos Θ = 0 in (9.3.25)).
-pub fn accelerations<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> Result<DVector<f64>, DynamicsError> {
+pub fn accelerations<L: Lagrangian>(
+    sys: &L,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<DVector<f64>, DynamicsError> {
     let terms = lagrange_terms(sys, q, qd, t)?;
     let rhs = terms.rhs();
     cholesky_solve(terms.mass, rhs)
@@ -145,13 +161,19 @@ pub fn accelerations<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> R
 ///
 /// # Errors
 /// As [`mass_matrix`].
-pub fn generalized_momentum<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> Result<DVector<f64>, DynamicsError> {
+pub fn generalized_momentum<L: Lagrangian>(
+    sys: &L,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<DVector<f64>, DynamicsError> {
     let r = sys.dof();
     check_state(r, q, qd, t)?;
     let qv: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
     let mut p = DVector::zeros(r);
     for i in 0..r {
-        let qdi: Vec<Dual64> = qd.iter().enumerate().map(|(k, &x)| Dual64::new(x, f64::from(k == i))).collect();
+        let qdi: Vec<Dual64> =
+            qd.iter().enumerate().map(|(k, &x)| Dual64::new(x, f64::from(k == i))).collect();
         p[i] = sys.kinetic(&qv, &qdi, Dual64::from(t)).eps;
     }
     check_out(p.as_slice(), "∂T/∂q̇")?;

@@ -15,7 +15,12 @@ use crate::error::{check_finite, check_len};
 /// # Errors
 /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
 /// [`DynamicsError::SingularMassMatrix`].
-pub fn velocities_from_momenta<L: Lagrangian>(sys: &L, q: &[f64], p: &[f64], t: f64) -> Result<DVector<f64>, DynamicsError> {
+pub fn velocities_from_momenta<L: Lagrangian>(
+    sys: &L,
+    q: &[f64],
+    p: &[f64],
+    t: f64,
+) -> Result<DVector<f64>, DynamicsError> {
     let r = sys.dof();
     check_len(p.len(), r, "p")?;
     check_finite(p, "p")?;

@@ -56,7 +56,11 @@ pub trait KinematicMap {
 }
 
 /// Positions and rotation matrices 𝓡_{B/A} resolved in one fixed frame A.
-fn evaluate<K: KinematicMap, T: Scalar>(sys: &K, q: &[T], t: T) -> (Vec<Vector3<T>>, Vec<(Vector3<T>, Matrix3<T>)>) {
+fn evaluate<K: KinematicMap, T: Scalar>(
+    sys: &K,
+    q: &[T],
+    t: T,
+) -> (Vec<Vector3<T>>, Vec<(Vector3<T>, Matrix3<T>)>) {
     let a = Frame::<T>::identity();
     let p = sys.particles(q, t).iter().map(|r| r.resolve(&a)).collect();
     let b = sys.bodies(q, t).iter().map(|(r, f)| (r.resolve(&a), f.rotation_rel(&a))).collect();
@@ -161,7 +165,12 @@ pub fn map_mass_matrix<K: KinematicMap>(sys: &K, q: &[f64], t: f64) -> Result<DM
 ///
 /// # Errors
 /// As [`map_mass_matrix`].
-pub fn map_kinetic_energy<K: KinematicMap>(sys: &K, q: &[f64], qd: &[f64], t: f64) -> Result<f64, DynamicsError> {
+pub fn map_kinetic_energy<K: KinematicMap>(
+    sys: &K,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<f64, DynamicsError> {
     Ok(assemble(sys, q, qd, t)?.t_kin)
 }
 
@@ -171,7 +180,12 @@ pub fn map_kinetic_energy<K: KinematicMap>(sys: &K, q: &[f64], qd: &[f64], t: f6
 ///
 /// # Errors
 /// As [`map_mass_matrix`]; [`DynamicsError::SingularMassMatrix`].
-pub fn map_accelerations<K: KinematicMap>(sys: &K, q: &[f64], qd: &[f64], t: f64) -> Result<DVector<f64>, DynamicsError> {
+pub fn map_accelerations<K: KinematicMap>(
+    sys: &K,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<DVector<f64>, DynamicsError> {
     let s = assemble(sys, q, qd, t)?;
     cholesky_solve(s.m, s.rhs)
 }

@@ -77,7 +77,10 @@ pub(crate) fn cholesky_solve(m: DMatrix<f64>, b: DVector<f64>) -> Result<DVector
         let pivot = l[(k, k)] * l[(k, k)];
         if pivot <= SINGULAR_PIVOT_REL_TOL * r as f64 * scale {
             return Err(DynamicsError::SingularMassMatrix {
-                detail: format!("pivot {k} is {pivot:e}, below {:e} × max Mᵢᵢ = {scale:e}", SINGULAR_PIVOT_REL_TOL * r as f64),
+                detail: format!(
+                    "pivot {k} is {pivot:e}, below {:e} × max Mᵢᵢ = {scale:e}",
+                    SINGULAR_PIVOT_REL_TOL * r as f64
+                ),
             });
         }
     }

@@ -47,7 +47,13 @@ impl Model {
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`];
     /// [`DynamicsError::SingularMassMatrix`] when a joint's articulated inertia SᵀIᴬS is not
     /// positive definite (a massless leaf link, or a massless chain end).
-    pub fn aba(&self, q: &[f64], v: &[f64], tau: &[f64], f_ext: Option<&LinkWrenches>) -> Result<Vec<f64>, DynamicsError> {
+    pub fn aba(
+        &self,
+        q: &[f64],
+        v: &[f64],
+        tau: &[f64],
+        f_ext: Option<&LinkWrenches>,
+    ) -> Result<Vec<f64>, DynamicsError> {
         self.check_q(q)?;
         self.check_v(v, "v")?;
         self.check_v(tau, "τ")?;
@@ -128,7 +134,10 @@ impl Model {
                     let D = sv.dot(&U);
                     if !(D > f64::EPSILON * IA.norm().max(f64::MIN_POSITIVE)) {
                         return Err(DynamicsError::SingularMassMatrix {
-                            detail: format!("articulated inertia SᵀIᴬS = {D:e} at velocity coordinate {}", seg.vi),
+                            detail: format!(
+                                "articulated inertia SᵀIᴬS = {D:e} at velocity coordinate {}",
+                                seg.vi
+                            ),
                         });
                     }
                     let u = tau[seg.vi] - sv.dot(&pA);
@@ -140,10 +149,16 @@ impl Model {
                 Elem::Spherical => {
                     let U: Matrix6x3<f64> = IA.fixed_columns::<3>(0).into_owned();
                     let D: Matrix3<f64> = U.fixed_rows::<3>(0).into_owned();
-                    let Dinv = D.cholesky().map(|c| c.inverse()).ok_or_else(|| DynamicsError::SingularMassMatrix {
-                        detail: format!("ball-joint articulated inertia not positive definite at {}", seg.vi),
+                    let Dinv = D.cholesky().map(|c| c.inverse()).ok_or_else(|| {
+                        DynamicsError::SingularMassMatrix {
+                            detail: format!(
+                                "ball-joint articulated inertia not positive definite at {}",
+                                seg.vi
+                            ),
+                        }
                     })?;
-                    let u = Vector3::new(tau[seg.vi], tau[seg.vi + 1], tau[seg.vi + 2]) - pA.fixed_rows::<3>(0);
+                    let u =
+                        Vector3::new(tau[seg.vi], tau[seg.vi + 1], tau[seg.vi + 2]) - pA.fixed_rows::<3>(0);
                     s.U[i] = U;
                     s.Dinv[i] = Dinv;
                     s.u[i] = u;

@@ -199,7 +199,10 @@ fn elems(joint: &Joint, link: usize) -> Result<Vec<Elem>, DynamicsError> {
             if a.dot(&d).abs() > 1e-9 {
                 return Err(DynamicsError::JointGeometry {
                     link,
-                    detail: format!("slot axis and direction have cosine {:e}; they must be perpendicular", a.dot(&d)),
+                    detail: format!(
+                        "slot axis and direction have cosine {:e}; they must be perpendicular",
+                        a.dot(&d)
+                    ),
                 });
             }
             vec![Elem::Prismatic(d), Elem::Revolute(a)]
@@ -267,7 +270,11 @@ impl Model {
             check_finite(l.orientation.as_slice(), "link orientation")?;
             check_finite(l.com.as_slice(), "centre of mass")?;
             if !(l.mass.is_finite() && l.mass >= 0.0) {
-                return Err(DynamicsError::InvalidParameter { what: "link mass", value: l.mass, valid: "finite ≥ 0" });
+                return Err(DynamicsError::InvalidParameter {
+                    what: "link mass",
+                    value: l.mass,
+                    valid: "finite ≥ 0",
+                });
             }
             check_inertia(&Frame::new().dyadic(&l.inertia), INERTIA_REL_TOL)
                 .map_err(|source| DynamicsError::InvalidInertia { what: format!("link {i}"), source })?;
@@ -324,7 +331,14 @@ impl Model {
                 let offset = if i == 0 { Vector3::zeros() } else { Vector3::new(l, 0.0, 0.0) };
                 // alternate ẑ and ŷ axes so that the chain is spatial
                 let axis = if i % 2 == 0 { Vector3::z() } else { Vector3::y() };
-                Link::new(i.checked_sub(1), Joint::Pin { axis }, offset, m, Vector3::new(l / 2.0, 0.0, 0.0), j)
+                Link::new(
+                    i.checked_sub(1),
+                    Joint::Pin { axis },
+                    offset,
+                    m,
+                    Vector3::new(l / 2.0, 0.0, 0.0),
+                    j,
+                )
             })
             .collect();
         Self::new(&links)
@@ -365,7 +379,12 @@ impl Model {
             match s.elem {
                 Elem::Revolute(_) | Elem::Prismatic(_) => out[s.qi] += v[s.vi] * dt,
                 Elem::Spherical => {
-                    let q0 = UnitQuaternion::new_normalize(Quaternion::new(q[s.qi], q[s.qi + 1], q[s.qi + 2], q[s.qi + 3]));
+                    let q0 = UnitQuaternion::new_normalize(Quaternion::new(
+                        q[s.qi],
+                        q[s.qi + 1],
+                        q[s.qi + 2],
+                        q[s.qi + 3],
+                    ));
                     let w = Vector3::new(v[s.vi], v[s.vi + 1], v[s.vi + 2]);
                     let q1 = q0 * UnitQuaternion::from_scaled_axis(w * dt);
                     out[s.qi..s.qi + 4].copy_from_slice(&[q1.w, q1.i, q1.j, q1.k]);

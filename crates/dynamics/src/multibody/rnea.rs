@@ -11,7 +11,7 @@ use crate::DynamicsError;
 /// frame origin (the joint point), components in the link frame.
 ///
 /// Book: §7.11, (7.11.20)–(7.11.22) (ℱ_int, the joint reaction wrenches).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct JointWrench {
     /// Force on the link from its parent, resolved in the link frame.
     pub force: Vector3<f64>,
@@ -59,8 +59,11 @@ impl Model {
         let mut tau = vec![0.0; self.nv];
         let mut scratch = Scratch::new(self.segs.len());
         self.rnea_into(q, v, vdot, f_ext, &mut tau, &mut scratch);
-        let wrenches =
-            self.link_seg.iter().map(|&k| JointWrench { force: scratch.f[k], moment: scratch.n[k] }).collect();
+        let wrenches = self
+            .link_seg
+            .iter()
+            .map(|&k| JointWrench { force: scratch.f[k], moment: scratch.n[k] })
+            .collect();
         Ok(InverseDynamics { tau, wrenches })
     }
 
