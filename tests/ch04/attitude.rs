@@ -337,6 +337,15 @@ fn fact_4_8_2_propagation_against_the_exact_solution() {
         Err(KinematicsError::OutOfRange { .. })
     ));
     assert!(propagate_attitude(Propagator::AngleVectorRk4, &(r0 * 2.0), |_| w, 0.0, 1.0, 10).is_err());
+    // Gibbs through θ = π (§4.12: g undefined there) is a typed error, not garbage
+    let through_pi =
+        propagate_attitude(Propagator::GibbsRk4, &Matrix3::identity(), |_| Vector3::z(), 0.0, 4.0, 4000);
+    assert!(matches!(through_pi, Err(KinematicsError::SingularRateMap { .. })));
+    // MRPs with the shadow switch and the angle vector with rewrap go through θ = π
+    for m in [Propagator::MrpRk4, Propagator::AngleVectorRk4] {
+        let r = propagate_attitude(m, &Matrix3::identity(), |_| Vector3::z(), 0.0, 4.0, 4000).unwrap();
+        assert!((r - exp_so3(Vector3::z() * 4.0)).amax() < 1e-10, "{m:?}");
+    }
 }
 
 mod prop {

@@ -1,7 +1,7 @@
-//! Gibbs-vector rates (book §4.12) and modified-Rodrigues-parameter rates.
+//! Gibbs-vector rates (book §4.12).
 //!
-//! g = ε/η = tan(θ/2)n̂ (undefined at θ = π); p = ε/(1 + η) = tan(θ/4)n̂ (MRP, not in the book).
-//! Components are the same in A and B (F4.12.1), so ġ is the derivative of those components.
+//! g = ε/η = tan(θ/2)n̂ (undefined at θ = π). Components are the same in A and B (F4.12.1), so
+//! ġ is the derivative of those components.
 
 use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
@@ -70,75 +70,4 @@ pub fn omega_spatial_from_gibbs_rate<T: Scalar>(
 ) -> Result<Vector3<T>, KinematicsError> {
     check(g, g_dot)?;
     Ok((Matrix3::identity() + g.cross_matrix()) * g_dot * (T::lit(2.0) / (T::one() + g.norm_squared())))
-}
-
-/// MRP body form: ṗ = ¼[(1 − |p|²)I + 2p^× + 2ppᵀ] ω_B (Schaub & Junkins (3.153); not in the
-/// book, which stops at Gibbs).
-///
-/// Book: extends §4.12.
-///
-/// # Errors
-/// [`KinematicsError::NonFinite`].
-pub fn mrp_rate_body<T: Scalar>(
-    p: &Vector3<T>,
-    omega_in_b: &Vector3<T>,
-) -> Result<Vector3<T>, KinematicsError> {
-    check(p, omega_in_b)?;
-    let two = T::lit(2.0);
-    let m = Matrix3::identity() * (T::one() - p.norm_squared())
-        + p.cross_matrix() * two
-        + p * p.transpose() * two;
-    Ok(m * omega_in_b * T::lit(0.25))
-}
-
-/// MRP spatial form: ṗ = ¼[(1 − |p|²)I − 2p^× + 2ppᵀ] ω_A.
-///
-/// Book: extends §4.12.
-///
-/// # Errors
-/// [`KinematicsError::NonFinite`].
-pub fn mrp_rate_spatial<T: Scalar>(
-    p: &Vector3<T>,
-    omega_in_a: &Vector3<T>,
-) -> Result<Vector3<T>, KinematicsError> {
-    check(p, omega_in_a)?;
-    let two = T::lit(2.0);
-    let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two
-        + p * p.transpose() * two;
-    Ok(m * omega_in_a * T::lit(0.25))
-}
-
-/// MRP inverse, body form: ω_B = 4/(1 + |p|²)² [(1 − |p|²)I − 2p^× + 2ppᵀ] ṗ.
-///
-/// Book: extends §4.12.
-///
-/// # Errors
-/// [`KinematicsError::NonFinite`].
-pub fn omega_body_from_mrp_rate<T: Scalar>(
-    p: &Vector3<T>,
-    p_dot: &Vector3<T>,
-) -> Result<Vector3<T>, KinematicsError> {
-    check(p, p_dot)?;
-    let (two, s) = (T::lit(2.0), T::one() + p.norm_squared());
-    let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two
-        + p * p.transpose() * two;
-    Ok(m * p_dot * (T::lit(4.0) / (s * s)))
-}
-
-/// MRP inverse, spatial form: ω_A = 4/(1 + |p|²)² [(1 − |p|²)I + 2p^× + 2ppᵀ] ṗ.
-///
-/// Book: extends §4.12.
-///
-/// # Errors
-/// [`KinematicsError::NonFinite`].
-pub fn omega_spatial_from_mrp_rate<T: Scalar>(
-    p: &Vector3<T>,
-    p_dot: &Vector3<T>,
-) -> Result<Vector3<T>, KinematicsError> {
-    check(p, p_dot)?;
-    let (two, s) = (T::lit(2.0), T::one() + p.norm_squared());
-    let m = Matrix3::identity() * (T::one() - p.norm_squared())
-        + p.cross_matrix() * two
-        + p * p.transpose() * two;
-    Ok(m * p_dot * (T::lit(4.0) / (s * s)))
 }

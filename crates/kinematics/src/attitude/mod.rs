@@ -9,6 +9,7 @@ mod angle_vector;
 mod eigenaxis;
 mod euler;
 mod gibbs;
+mod mrp;
 mod propagate;
 mod quaternion;
 
@@ -25,10 +26,10 @@ pub use euler::{
     euler_rates_from_omega_spatial, omega_body_from_euler_rates, omega_spatial_from_euler_rates,
 };
 pub use gibbs::{
-    gibbs_rate_body, gibbs_rate_spatial, mrp_rate_body, mrp_rate_spatial, omega_body_from_gibbs_rate,
-    omega_body_from_mrp_rate, omega_spatial_from_gibbs_rate, omega_spatial_from_mrp_rate,
+    gibbs_rate_body, gibbs_rate_spatial, omega_body_from_gibbs_rate, omega_spatial_from_gibbs_rate,
 };
-pub use propagate::{Propagator, propagate_attitude};
+pub use mrp::{mrp_rate_body, mrp_rate_spatial, omega_body_from_mrp_rate, omega_spatial_from_mrp_rate};
+pub use propagate::{GIBBS_LIMIT, Propagator, propagate_attitude};
 pub use quaternion::{
     omega_body_from_quaternion_rate, omega_spatial_from_quaternion_rate, quaternion_rate_body,
     quaternion_rate_matrix, quaternion_rate_spatial,

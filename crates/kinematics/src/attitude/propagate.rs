@@ -17,6 +17,9 @@ use super::{
 };
 use crate::KinematicsError;
 
+/// |g| beyond which [`Propagator::GibbsRk4`] stops: θ within ≈ 2·10⁻⁸ of π.
+pub const GIBBS_LIMIT: f64 = 1e8;
+
 /// How to propagate an attitude.
 ///
 /// Book: §4.8 (constant ω: 𝓡(t) = 𝓡(0)e^{ω^×t}, F4.8.2), §4.9–4.12 (rate equations).
@@ -37,7 +40,8 @@ pub enum Propagator {
         /// Divide q by |q| after every step.
         renormalize: bool,
     },
-    /// RK4 on ġ = ½(I + ggᵀ + g^×)ω_B (4.12.4); breaks down as θ → π.
+    /// RK4 on ġ = ½(I + ggᵀ + g^×)ω_B (4.12.4); stops with
+    /// [`KinematicsError::SingularRateMap`] when |g| exceeds [`GIBBS_LIMIT`] (θ → π).
     GibbsRk4,
     /// RK4 on the MRP rates, switching to the shadow set −p/|p|² when |p| > 1.
     MrpRk4,
@@ -154,8 +158,8 @@ fn rotation_err(e: vectrix_rotation::RotationError) -> KinematicsError {
 /// use the principal solution; a gimbal-locked start is an error).
 ///
 /// # Errors
-/// [`KinematicsError::GimbalLock`] (Euler angles), [`KinematicsError::NonFinite`] (a blown-up
-/// representation, e.g. Gibbs through θ = π), [`KinematicsError::OutOfRange`] for `n = 0` or
+/// [`KinematicsError::GimbalLock`] (Euler angles), [`KinematicsError::SingularRateMap`]
+/// (Gibbs near θ = π), [`KinematicsError::NonFinite`] (a blown-up representation), [`KinematicsError::OutOfRange`] for `n = 0` or
 /// t₁ ≤ t₀, [`KinematicsError::SingularRateMap`] when `r0` is not a rotation.
 pub fn propagate_attitude(
     method: Propagator,
@@ -208,7 +212,19 @@ pub fn propagate_attitude(
         }
         Propagator::GibbsRk4 => {
             let g0 = q0.try_gibbs().map_err(rotation_err)?;
-            let f = |t: f64, y: &Vector3<f64>| gibbs_rate_body(y, &omega_body(t));
+            let f = |t: f64, y: &Vector3<f64>| {
+                // g = tan(θ/2)n̂ is infinite at θ = π (§4.12): stop with a typed error before overflow
+                if y.norm() > GIBBS_LIMIT {
+                    return Err(KinematicsError::SingularRateMap {
+                        representation: "Gibbs vector",
+                        detail: format!(
+                            "|g| = {:e} > {GIBBS_LIMIT:e}: the attitude approaches θ = π, where g is undefined; use quaternions or MRPs",
+                            y.norm()
+                        ),
+                    });
+                }
+                gibbs_rate_body(y, &omega_body(t))
+            };
             let y = run(f, |y| y, g0, t0, h, n)?;
             to_matrix(&Quaternion::from_gibbs(&y))
         }
