@@ -200,7 +200,8 @@ fn hooke(c: &mut Criterion) {
         let (lam, mu) = black_box((1.2, 0.8));
         b.iter(|| {
             black_box(&strains_raw).iter().fold(Matrix3::zeros(), |acc, e| {
-                acc + (e * (2.0 * mu) + Matrix3::identity() * (lam * e.trace()))
+                // The same formula as `Isotropic::stress`: μ(ε + εᵀ) + λ (tr ε) I.
+                acc + ((e + e.transpose()) * mu + Matrix3::identity() * (lam * e.trace()))
             })
         })
     });

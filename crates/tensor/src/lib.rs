@@ -29,8 +29,8 @@ pub use angle::{congruent, wrap_angle};
 pub use bivector::Bivector;
 pub use covector::Covector;
 pub use dyadic::Dyadic;
-pub use error::TensorError;
 pub use elasticity::{HookeMap, Isotropic, hooke};
+pub use error::TensorError;
 pub use multivector::Multivector;
 pub use rotor::{Rotor, reflect};
 pub use scalar::Scalar;
@@ -41,7 +41,7 @@ pub use vector::Vector;
 /// Everything a user of the kernel needs: `use vectrix_tensor::prelude::*;`.
 pub mod prelude {
     pub use crate::{
-        Arg, Bivector, Covector, Dyadic, HookeMap, Isotropic, Multivector, Rotor, Scalar, Tensor, TensorError,
-        Trivector, Vector, congruent, hooke, reflect, wrap_angle,
+        Arg, Bivector, Covector, Dyadic, HookeMap, Isotropic, Multivector, Rotor, Scalar, Tensor,
+        TensorError, Trivector, Vector, congruent, hooke, reflect, wrap_angle,
     };
 }
