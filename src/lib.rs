@@ -15,6 +15,7 @@
 pub use nalgebra;
 pub use num_dual;
 pub use vectrix_dynamics as dynamics;
+pub use vectrix_flight as flight;
 pub use vectrix_frames as frames;
 pub use vectrix_kinematics as kinematics;
 pub use vectrix_lti as lti;
@@ -28,6 +29,7 @@ pub use vectrix_tensor as tensor;
 #[allow(unused_imports)] // layers still in progress export empty preludes
 pub mod prelude {
     pub use vectrix_dynamics::prelude::*;
+    pub use vectrix_flight::prelude::*;
     pub use vectrix_frames::prelude::*;
     pub use vectrix_kinematics::prelude::*;
     pub use vectrix_lti::prelude::*;

@@ -1,0 +1,5 @@
+//! vectrix-flight (in progress).
+#![warn(missing_docs)]
+
+/// `use vectrix_flight::prelude::*;`
+pub mod prelude {}
