@@ -169,8 +169,8 @@ impl Separable<2> for Kepler {
 }
 
 /// Stiff chain of `5` unit masses between two walls, unit springs K = tridiag(−1, 2, −1)
-/// and proportional dashpots C = αK (α = 100): modal roots from −0.01 to −373, stiffness
-/// ratio ≈ 4·10⁴. State y = (x, v); x₀ = (1, 0, 0, 0, 0), v₀ = 0, on [0, 10]. Exact by the
+/// and proportional dashpots C = αK (the harness uses α = 1000: modal roots from −0.001 to
+/// −3732, stiffness ratio ≈ 4·10⁶). State y = (x, v); x₀ = (1, 0, 0, 0, 0), v₀ = 0, on [0, 10]. Exact by the
 /// modes: K vⱼ = λⱼ vⱼ, λⱼ = 2 − 2cos(jπ/6), vⱼ,ᵢ = sin(ijπ/6).
 ///
 /// Book: §4.11; HNW II §IV.1 (stiff problems).

@@ -27,7 +27,7 @@ pub const PROBLEMS: [&str; 7] = [
     "Kepler e=0.5",
     "Kepler e=0.9",
     "rigid body",
-    "stiff chain α=100",
+    "stiff chain α=1000",
 ];
 
 /// File stems of the diagrams, parallel to [`PROBLEMS`].
@@ -65,7 +65,7 @@ pub fn run_all(budget: Budget) -> Vec<Point> {
     for m in [LieMethod::ExponentialEuler, LieMethod::CrouchGrossman3, LieMethod::Rkmk4] {
         pts.extend(sweep_lie(&rb, m, budget));
     }
-    let chain = SpringChain { alpha: 100.0 };
+    let chain = SpringChain { alpha: 1000.0 };
     for m in COMMON {
         pts.extend(sweep(&chain, m, budget));
     }

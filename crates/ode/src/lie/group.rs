@@ -28,7 +28,7 @@ pub trait LieGroup: Clone {
 }
 
 /// Rotors with body angular velocity: 𝔤 = physical vectors ϕ⃗ (rotation vectors),
-/// exp(ϕ⃗) = cos(|ϕ|/2) − sin(|ϕ|/2)𝒥ϕ̂ (3.9.1), product = geometric product, bracket =
+/// exp(ϕ⃗) = exp(−½𝒥ϕ⃗) = cos(|ϕ|/2) − sin(|ϕ|/2)𝒥ϕ̂ (3.9.1, 3.9.3; [`Rotor::exp`]), product = geometric product, bracket =
 /// cross product. y′ = y·ξ is the body form Ṙ = R(−½𝒥ω⃗_b) with ω⃗_b = R̄ω⃗R, the angular
 /// velocity pulled back to the reference frame: ω⃗_b resolved in A has the components of
 /// ω⃗_{B/A} resolved in B (the book's ω_B in (4.11.13)).
@@ -43,11 +43,8 @@ impl LieGroup for Rotor<f64> {
 
     #[inline]
     fn exp(phi: &Vector<f64>) -> Self {
-        // exp(ϕ⃗) = cos(θ/2) − (sin(θ/2)/θ) 𝒥ϕ⃗, θ = |ϕ⃗|; series of sin(θ/2)/θ below 1e-4
-        let theta = phi.norm();
-        let half = 0.5 * theta;
-        let sinc_half = if theta < 1e-4 { 0.5 - theta * theta / 48.0 } else { half.sin() / theta };
-        Rotor::from_parts_unchecked(half.cos(), Bivector::dual_of(phi) * (-sinc_half))
+        // exp(ϕ⃗) = exp(−½𝒥ϕ⃗) = cos(|ϕ|/2) − sin(|ϕ|/2)𝒥ϕ̂ (3.9.3), the kernel's rotor exponential
+        Rotor::exp(&(Bivector::dual_of(phi) * -0.5))
     }
 
     #[inline]
