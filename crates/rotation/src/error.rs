@@ -62,6 +62,9 @@ pub enum RotationError {
         /// The index given.
         index: usize,
     },
+    /// An error from the kernel (e.g. a tensor too large to rotate).
+    #[error(transparent)]
+    Tensor(#[from] vectrix_tensor::TensorError),
     /// An error from the frames layer.
     #[error(transparent)]
     Frame(#[from] vectrix_frames::FrameError),

@@ -163,6 +163,9 @@ impl<T: Scalar> EulerAngles<T> {
     ///
     /// Book: (2.12.33), (2.12.40).
     pub fn rotation_matrix(&self) -> Matrix3<T> {
+        // The product of elementary matrices, not the quaternion route: near gimbal lock the
+        // entries that carry the factor cos β (or sin β) stay relatively accurate here, while
+        // 𝓡(q) forms them by cancellation, which makes the extraction lose ε/cos β.
         let [i, j, k] = self.sequence.axes;
         let [a, b, c] = self.angles;
         match self.sequence.kind {
@@ -185,13 +188,17 @@ impl<T: Scalar> EulerAngles<T> {
     ///
     /// Book: §2.15, F2.15.7 (corrected order, see [`crate::compose_quaternion`]).
     pub fn quaternion(&self) -> Quaternion<T> {
+        self.quaternion_raw().canonical()
+    }
+
+    /// The product of the three elementary factors, not canonicalised.
+    #[inline]
+    fn quaternion_raw(&self) -> Quaternion<T> {
         let [i, j, k] = self.sequence.axes;
         let [a, b, c] = self.angles;
-        let (qa, qb, qc) = (quaternion_about(i, a), quaternion_about(j, b), quaternion_about(k, c));
         match self.sequence.kind {
-            EulerKind::Intrinsic => qa * qb * qc,
-            EulerKind::Extrinsic => qc * qb * qa,
+            EulerKind::Intrinsic => quaternion_about(i, a).times_elementary(j, b).times_elementary(k, c),
+            EulerKind::Extrinsic => quaternion_about(k, c).times_elementary(j, b).times_elementary(i, a),
         }
-        .canonical()
     }
 }

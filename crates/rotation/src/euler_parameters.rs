@@ -143,8 +143,8 @@ impl<T: Scalar> Quaternion<T> {
         if n == T::zero() {
             return Err(RotationError::Zero { what: "rotation axis" });
         }
-        let h = theta * T::lit(0.5);
-        Ok(Self::from_parts(h.cos(), axis * (h.sin() / n)).canonical())
+        let (s, c) = (theta * T::lit(0.5)).sin_cos();
+        Ok(Self::from_parts(c, axis * (s / n)).canonical())
     }
 
     /// Eigenaxis and eigenangle θ = 2 atan2(|ε|, η) ∈ [0, π] (never acos), resolved in the
@@ -176,9 +176,11 @@ impl<T: Scalar> Quaternion<T> {
     #[doc(alias = "from_scaled_axis")]
     #[inline]
     pub fn from_angle_vector(theta: &Vector3<T>) -> Self {
-        let t = norm3(theta);
-        let h = t * T::lit(0.5);
-        Self::from_parts(h.cos(), theta * (T::lit(0.5) * sinc(h))).canonical()
+        let h = norm3(theta) * T::lit(0.5);
+        let (s, c) = h.sin_cos();
+        // ½ sin(h)/h, by series near h = 0 (sinc).
+        let k = if h.re().abs() < 1e-3 { T::lit(0.5) * sinc(h) } else { T::lit(0.5) * s / h };
+        Self::from_parts(c, theta * k).canonical()
     }
 
     /// log: the angle vector Θ = θn̂ with θ ∈ [0, π], from θ = 2 atan2(|ε|, η); the series

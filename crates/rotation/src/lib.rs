@@ -20,10 +20,32 @@
 //!   positive in the frame of resolution).
 //! - Euler sequence i-j-k, angles in the order applied, each about the new frame's axis:
 //!   𝓞_{D/A} = 𝓞_k(γ)𝓞_j(β)𝓞_i(α).
+//!
+//! ```
+//! use vectrix_frames::{Frame, Resolve};
+//! use vectrix_rotation::prelude::*;
+//!
+//! let a = Frame::new();
+//! // F_B = R⃗ F_A, a half turn about (1, 2, 2)/3: the case peers turn into the identity.
+//! let r_ba = Rotation::from_axis_angle(&a.vector([1.0, 2.0, 2.0]), std::f64::consts::PI)?;
+//! let b = r_ba.apply_frame(&a);
+//! assert_eq!(Rotation::between(&b, &a).axis_angle_in(&a).angle(), std::f64::consts::PI);
+//! // 𝓡_{B/A} (active, columns = B's axes in A) and q_{B/A} (Hamilton, scalar first, η ≥ 0).
+//! let r = r_ba.rotation_matrix_in(&a);
+//! let q = Quaternion::from_rotation_matrix(&r, ROTATION_TOL)?;
+//! assert!((q.rotation_matrix() - r).amax() < 1e-15);
+//! // Euler angles: principal and alternate solutions, or gimbal lock as a value.
+//! match r_ba.euler_in(&a, EulerSequence::S321) {
+//!     EulerSolution::Regular { principal, .. } => assert!((principal.rotation_matrix() - r).amax() < 1e-15),
+//!     EulerSolution::GimbalLock { combination, .. } => println!("only Ψ ± Φ = {combination}"),
+//! }
+//! # Ok::<(), RotationError>(())
+//! ```
 #![warn(missing_docs)]
 
 mod axis;
 mod axis_angle;
+mod carry;
 mod compose;
 mod error;
 mod euler;

@@ -4,7 +4,7 @@ use nalgebra::Matrix3;
 use vectrix_tensor::Scalar;
 
 use crate::RotationError;
-use crate::series::{all_finite, max_abs};
+use crate::series::all_finite;
 
 /// Default orthonormality tolerance for checked constructors: 128·ε on ‖MᵀM − I‖_max, as Drake
 /// uses (DESIGN §5). Same value as `vectrix_frames::ORTHONORMAL_TOL`.
@@ -18,11 +18,13 @@ pub const ROTATION_TOL: f64 = 128.0 * f64::EPSILON;
 /// [`RotationError::NonFinite`], [`RotationError::NotOrthonormal`] (with the defect found),
 /// [`RotationError::Reflection`] for det < 0.
 pub fn check_rotation_matrix<T: Scalar>(m: &Matrix3<T>, tol: f64) -> Result<(), RotationError> {
-    if !all_finite(m.iter().copied()) {
+    // ‖MᵀM − I‖_max; a NaN or ∞ entry makes it non-finite, reported as such.
+    let g = m.tr_mul(m) - Matrix3::identity();
+    let defect = g.iter().fold(0.0f64, |d, x| d.max(x.re().abs()));
+    if !defect.is_finite() || g.iter().any(|x| x.re().is_nan()) {
         return Err(RotationError::NonFinite { what: "rotation matrix" });
     }
-    let defect = max_abs((m.tr_mul(m) - Matrix3::identity()).iter().copied());
-    if defect.is_nan() || defect > tol {
+    if defect > tol {
         return Err(RotationError::NotOrthonormal { defect, tol });
     }
     let det = m.determinant().re();

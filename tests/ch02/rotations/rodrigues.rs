@@ -263,3 +263,33 @@ fn problems_2_26_15_to_18_trace_identities() {
 fn mat_is_not_symmetric(m: &Matrix3<f64>) -> bool {
     (m - m.transpose()).amax() > 1e-3
 }
+
+/// §2.8, §2.10 (2.10.38), §3.6: a rotation carries vectors, dyads, frames and tensors: vector
+/// factors x⃗ ↦ R⃗x⃗, covector factors a⃗′ ↦ a⃗′R⃗⁻¹ (so evaluations are invariant), M⃗ ↦ R⃗M⃗R⃗′.
+#[test]
+fn sec_2_8_rotation_carries_vectors_dyads_frames_tensors() {
+    let a = Frame::new();
+    let r = rot(&a, [0.3, -1.0, 0.4], 2.1);
+    let (x, y, z) = (a.vector([1.0, 2.0, -0.5]), a.vector([0.0, -1.0, 3.0]), a.vector([2.0, 0.5, 1.0]));
+    let m = x.outer(&y) + y.outer(&z) * 0.5;
+    let rm = r.to_dyadic();
+    assert_mat(&r.apply_dyadic(&m).resolve(&a), &(rm * m * rm.coform()).resolve(&a), 16.0 * EPS);
+    let b = r.apply_frame(&a);
+    assert_vec(&b.k().resolve(&a), &r.apply(&a.k()).resolve(&a), 4.0 * EPS);
+    // Tensors of type (1,0), (1,1), (2,0), (0,2) and (1,2).
+    let close = |got: &Tensor, want: &Tensor| {
+        let e = got.max_abs_diff(want).expect("same type");
+        assert!(e <= 64.0 * EPS, "tensor differs by {e:e}");
+    };
+    let (rx, ry, rz) = (r.apply(&x), r.apply(&y), r.apply(&z));
+    close(&r.apply_tensor(&Tensor::from_vector(&x)).unwrap(), &Tensor::from_vector(&rx));
+    close(&r.apply_tensor(&Tensor::from_dyadic(&m)).unwrap(), &Tensor::from_dyadic(&r.apply_dyadic(&m)));
+    let t20 = Tensor::from_factors(&[x, y], &[]).unwrap();
+    close(&r.apply_tensor(&t20).unwrap(), &Tensor::from_factors(&[rx, ry], &[]).unwrap());
+    let t02 = Tensor::from_factors(&[], &[x.coform(), y.coform()]).unwrap();
+    close(&r.apply_tensor(&t02).unwrap(), &Tensor::from_factors(&[], &[rx.coform(), ry.coform()]).unwrap());
+    let t12 = Tensor::from_factors(&[z], &[x.coform(), y.coform()]).unwrap();
+    close(&r.apply_tensor(&t12).unwrap(), &Tensor::from_factors(&[rz], &[rx.coform(), ry.coform()]).unwrap());
+    let t21 = Tensor::from_factors(&[z, x], &[y.coform()]).unwrap();
+    close(&r.apply_tensor(&t21).unwrap(), &Tensor::from_factors(&[rz, rx], &[ry.coform()]).unwrap());
+}
