@@ -289,6 +289,27 @@ fn frenet_serret_errors_at_zero_curvature_and_zero_speed() {
     assert!(matches!(nan, Err(KinematicsError::NonFinite { .. })));
 }
 
+// P5.6.2 with dual numbers (DESIGN §1.4): curvature is generic over the scalar, so its exact
+// derivative with respect to the helix radius comes out of one evaluation:
+// dκ/dr = (h² − r²)/(r² + h²)².
+#[test]
+fn problem_5_6_2_helix_curvature_sensitivity_with_dual_numbers() {
+    use vectrix::num_dual::Dual64;
+    let (r, h, s) = (Dual64::new(2.0, 1.0), Dual64::from(0.5), 0.7);
+    let a = Frame::<Dual64>::identity();
+    let c = (r * r + h * h).sqrt();
+    let (ca, sa) = ((Dual64::from(s) / c).cos(), (Dual64::from(s) / c).sin());
+    // r′, r″, r‴ of the arc-length helix, written out
+    let r1 = a.vector([-r * sa / c, r * ca / c, h / c]);
+    let r2 = a.vector([-r * ca / (c * c), -r * sa / (c * c), Dual64::from(0.0)]);
+    let r3 = a.vector([r * sa / (c * c * c), -r * ca / (c * c * c), Dual64::from(0.0)]);
+    let f = FrenetSerret::from_derivatives(&r1, &r2, &r3, 1e-12, 1e-12).unwrap();
+    let (rr, hh) = (2.0f64, 0.5f64);
+    assert!((f.curvature.re - rr / (rr * rr + hh * hh)).abs() < TOL);
+    let want = (hh * hh - rr * rr) / (rr * rr + hh * hh).powi(2);
+    assert!((f.curvature.eps - want).abs() < TOL, "{} vs {want}", f.curvature.eps);
+}
+
 /// Samples (positions, unit tangents) of a curve on [a, b].
 fn samples(f: impl Fn(Dual3_64) -> [Dual3_64; 3], a: f64, b: f64, n: usize) -> (Vec<Vector>, Vec<Vector>) {
     let fa = Frame::new();
