@@ -58,6 +58,8 @@ impl<T: Scalar> Cylindrical<T> {
     }
 
     /// r|_A = (r_r cos θ, r_r sin θ, r_a).
+    ///
+    /// Book: §5.1, §5.3, (5.3.41–43).
     pub fn position_in_a(&self) -> Vector3<T> {
         let [rr, th, ra] = self.q;
         Vector3::new(rr * th.cos(), rr * th.sin(), ra)
@@ -74,6 +76,8 @@ impl<T: Scalar> Cylindrical<T> {
     ///
     /// # Errors
     /// Only for non-finite θ.
+    ///
+    /// Book: §5.1, §5.3, (5.3.13).
     pub fn frame(&self, a: &Frame<T>) -> Result<Frame<T>, KinematicsError> {
         Ok(Frame::from_orientation_rel(a, &self.o_cyl_a(), ORTHONORMAL_TOL)?)
     }
@@ -105,6 +109,8 @@ impl<T: Scalar> Cylindrical<T> {
     ///
     /// # Errors
     /// As [`Cylindrical::frame`].
+    ///
+    /// Book: §5.2, §5.4, (5.2.10), (5.4.2), (5.4.10).
     pub fn kinematics(&self, a: &Frame<T>) -> Result<[Vector<T>; 3], KinematicsError> {
         let f = self.frame(a)?;
         let v = |x: Vector3<T>| f.vector([x.x, x.y, x.z]);
@@ -147,12 +153,16 @@ impl<T: Scalar> Spherical<T> {
     }
 
     /// r|_A = r_u ê_u|_A = r_u (cos φ cos θ, cos φ sin θ, −sin φ).
+    ///
+    /// Book: §5.1, §5.3, (5.3.41–43).
     pub fn position_in_a(&self) -> Vector3<T> {
         let [r, th, ph] = self.q;
         Vector3::new(r * ph.cos() * th.cos(), r * ph.cos() * th.sin(), -r * ph.sin())
     }
 
     /// 𝓞_{sph/A} = 𝓞₂(φ)𝓞₃(θ) (5.3.13).
+    ///
+    /// Book: (5.3.13).
     pub fn o_sph_a(&self) -> Matrix3<T> {
         o2(self.q[2]) * o3(self.q[1])
     }
@@ -161,11 +171,15 @@ impl<T: Scalar> Spherical<T> {
     ///
     /// # Errors
     /// Only for non-finite angles.
+    ///
+    /// Book: §5.1, §5.3, (5.3.13).
     pub fn frame(&self, a: &Frame<T>) -> Result<Frame<T>, KinematicsError> {
         Ok(Frame::from_orientation_rel(a, &self.o_sph_a(), ORTHONORMAL_TOL)?)
     }
 
     /// ω_{sph/A}|_sph = (−θ̇ sin φ, φ̇, θ̇ cos φ), i.e. ω⃗ = θ̇ê_a + φ̇ê_e (5.4.2).
+    ///
+    /// Book: (5.4.2).
     pub fn omega_in_sph(&self) -> Vector3<T> {
         let ([_, _, ph], [_, td, pd]) = (self.q, self.q_dot);
         Vector3::new(-td * ph.sin(), pd, td * ph.cos())
@@ -196,6 +210,8 @@ impl<T: Scalar> Spherical<T> {
     }
 
     /// The Coriolis part 2ṙ_u(θ̇ cos φ ê_e − φ̇ ê_n) of the acceleration, in F_sph (5.4.11).
+    ///
+    /// Book: (5.4.11).
     pub fn coriolis_in_sph(&self) -> Vector3<T> {
         let ([_, _, ph], [rd, td, pd]) = (self.q, self.q_dot);
         Vector3::new(T::zero(), T::lit(2.0) * rd * td * ph.cos(), -T::lit(2.0) * rd * pd)
@@ -205,6 +221,8 @@ impl<T: Scalar> Spherical<T> {
     ///
     /// # Errors
     /// As [`Spherical::frame`].
+    ///
+    /// Book: §5.2, §5.4, (5.2.10), (5.4.2), (5.4.10).
     pub fn kinematics(&self, a: &Frame<T>) -> Result<[Vector<T>; 3], KinematicsError> {
         let f = self.frame(a)?;
         let v = |x: Vector3<T>| f.vector([x.x, x.y, x.z]);

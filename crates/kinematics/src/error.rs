@@ -7,6 +7,8 @@ use crate::FrameLabel;
 /// What went wrong in a kinematics computation, with what would be valid.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
+///
+/// Book: ch. 4–5 (DESIGN §5: one error enum per crate).
 pub enum KinematicsError {
     /// A frame derivative or motion was used with the wrong frame: never a silent mix.
     #[error(

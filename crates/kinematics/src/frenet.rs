@@ -81,6 +81,8 @@ impl<T: Scalar> FrenetSerret<T> {
     }
 
     /// Radius of curvature ρ = 1/κ (5.5.33).
+    ///
+    /// Book: (5.5.33).
     pub fn radius_of_curvature(&self) -> T {
         T::one() / self.curvature
     }
@@ -107,6 +109,8 @@ impl<T: Scalar> FrenetSerret<T> {
     /// # Errors
     /// Only if rounding broke orthonormality beyond `ORTHONORMAL_TOL` (it does not for finite
     /// inputs).
+    ///
+    /// Book: §5.5, (5.5.62).
     pub fn frame(&self) -> Result<Frame<T>, KinematicsError> {
         Ok(Frame::from_axes(&self.tangent, &self.normal, &self.binormal, ORTHONORMAL_TOL)?)
     }

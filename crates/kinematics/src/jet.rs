@@ -30,6 +30,8 @@ impl<T: Scalar> VectorJet<T> {
     ///
     /// # Errors
     /// [`KinematicsError::NonFinite`].
+    ///
+    /// Book: §4.1, (4.1.3).
     pub fn new(wrt: FrameLabel, x: Vector<T>, d1: Vector<T>, d2: Vector<T>) -> Result<Self, KinematicsError> {
         finite_vector(&x, "jet value")?;
         finite_vector(&d1, "jet first derivative")?;
@@ -45,21 +47,29 @@ impl<T: Scalar> VectorJet<T> {
     }
 
     /// The frame of the derivatives.
+    ///
+    /// Book: §4.1, (4.1.3).
     pub fn wrt(&self) -> FrameLabel {
         self.wrt
     }
 
     /// x⃗.
+    ///
+    /// Book: §4.1.
     pub fn value(&self) -> Vector<T> {
         self.x
     }
 
     /// x⃗^{A•} for the tagged frame (for a position: the velocity v⃗_{y/x/A}).
+    ///
+    /// Book: (4.1.3), (4.1.6).
     pub fn rate(&self) -> Vector<T> {
         self.d1
     }
 
     /// x⃗^{A••} (for a position: the acceleration a⃗_{y/x/A}).
+    ///
+    /// Book: (4.1.7).
     pub fn second_rate(&self) -> Vector<T> {
         self.d2
     }
@@ -69,6 +79,8 @@ impl<T: Scalar> VectorJet<T> {
     /// # Errors
     /// [`KinematicsError::FrameMismatch`] when the jet holds derivatives with respect to
     /// another frame.
+    ///
+    /// Book: (4.1.3); Fact 4.3.2 (why frames are checked).
     pub fn rate_wrt(&self, frame: FrameLabel) -> Result<Vector<T>, KinematicsError> {
         check_label("VectorJet::rate_wrt", frame, self.wrt)?;
         Ok(self.d1)
@@ -78,6 +90,8 @@ impl<T: Scalar> VectorJet<T> {
     ///
     /// # Errors
     /// [`KinematicsError::FrameMismatch`].
+    ///
+    /// Book: (4.1.7).
     pub fn second_rate_wrt(&self, frame: FrameLabel) -> Result<Vector<T>, KinematicsError> {
         check_label("VectorJet::second_rate_wrt", frame, self.wrt)?;
         Ok(self.d2)
@@ -159,6 +173,8 @@ impl<T: Scalar> VectorJet<T> {
     ///
     /// # Errors
     /// [`KinematicsError::FrameMismatch`] when the frames differ.
+    ///
+    /// Book: Fact 4.1.1.
     pub fn plus(&self, other: &VectorJet<T>) -> Result<Self, KinematicsError> {
         check_label("VectorJet::plus", self.wrt, other.wrt)?;
         Ok(Self { wrt: self.wrt, x: self.x + other.x, d1: self.d1 + other.d1, d2: self.d2 + other.d2 })
@@ -180,6 +196,8 @@ impl<T: Scalar> DyadicJet<T> {
     ///
     /// # Errors
     /// [`KinematicsError::NonFinite`].
+    ///
+    /// Book: §4.1, (4.1.3).
     pub fn new(wrt: FrameLabel, m: Dyadic<T>, d1: Dyadic<T>) -> Result<Self, KinematicsError> {
         if !m.is_finite() || !d1.is_finite() {
             return Err(KinematicsError::NonFinite { what: "dyadic jet" });
@@ -188,11 +206,15 @@ impl<T: Scalar> DyadicJet<T> {
     }
 
     /// The frame of the derivative.
+    ///
+    /// Book: §4.1, (4.1.3).
     pub fn wrt(&self) -> FrameLabel {
         self.wrt
     }
 
     /// M⃗.
+    ///
+    /// Book: §4.1.
     pub fn value(&self) -> Dyadic<T> {
         self.m
     }
@@ -201,6 +223,8 @@ impl<T: Scalar> DyadicJet<T> {
     ///
     /// # Errors
     /// [`KinematicsError::FrameMismatch`].
+    ///
+    /// Book: (4.1.3); Fact 4.3.2 (why frames are checked).
     pub fn rate_wrt(&self, frame: FrameLabel) -> Result<Dyadic<T>, KinematicsError> {
         check_label("DyadicJet::rate_wrt", frame, self.wrt)?;
         Ok(self.d1)

@@ -24,16 +24,22 @@ pub struct FrameLabel {
 
 impl FrameLabel {
     /// A frame named like the book: `FrameLabel::new("A")`.
+    ///
+    /// Book: §2.4, §4.1.
     pub const fn new(name: &'static str) -> Self {
         Self { name, index: None }
     }
 
     /// The k-th frame of a family, e.g. the links of a chain: `FrameLabel::indexed("link", 3)`.
+    ///
+    /// Book: §4.13 (chains of frames).
     pub const fn indexed(name: &'static str, index: u32) -> Self {
         Self { name, index: Some(index) }
     }
 
     /// The name part.
+    ///
+    /// Book: §2.4.
     pub const fn name(&self) -> &'static str {
         self.name
     }
@@ -61,11 +67,15 @@ pub struct LabeledFrame<T: Scalar = f64> {
 
 impl<T: Scalar> LabeledFrame<T> {
     /// Labels a frame: `LabeledFrame::new("A", a)`.
+    ///
+    /// Book: §2.4, §4.1.
     pub fn new(name: &'static str, frame: Frame<T>) -> Self {
         Self { label: FrameLabel::new(name), frame }
     }
 
     /// Labels a frame with a prepared label.
+    ///
+    /// Book: §2.4.
     pub fn with_label(label: FrameLabel, frame: Frame<T>) -> Self {
         Self { label, frame }
     }

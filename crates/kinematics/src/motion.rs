@@ -75,11 +75,15 @@ impl<T: Scalar> FrameMotion<T> {
     }
 
     /// The moving frame F_B.
+    ///
+    /// Book: §4.2.
     pub fn body(&self) -> &LabeledFrame<T> {
         &self.b
     }
 
     /// The reference frame F_A.
+    ///
+    /// Book: §4.2.
     pub fn reference(&self) -> &LabeledFrame<T> {
         &self.a
     }
@@ -131,6 +135,8 @@ impl<T: Scalar> FrameMotion<T> {
     /// # Errors
     /// [`KinematicsError::FrameMismatch`] unless `self` is relative to the body of `inner`;
     /// [`KinematicsError::SameFrame`] when F_C is F_A.
+    ///
+    /// Book: (4.6.2), (4.6.5), Fact 4.6.1.
     pub fn compose(&self, inner: &FrameMotion<T>) -> Result<Self, KinematicsError> {
         check_label("FrameMotion::compose (C/B after B/A)", inner.b.label, self.a.label)?;
         // (4.6.2), (4.6.5)

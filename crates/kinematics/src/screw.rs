@@ -10,6 +10,8 @@ use crate::motion::finite_vector;
 
 /// A line {p⃗ + λ d̂}: `point` is r⃗_{p/q} (the point of the line nearest q), `direction` is unit.
 #[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// Book: (4.15.6), §4.16.
 pub struct Line<T: Scalar = f64> {
     /// r⃗_{p/q}, the foot of the perpendicular from q.
     pub point: Vector<T>,

@@ -18,6 +18,8 @@ use super::{
 use crate::KinematicsError;
 
 /// |g| beyond which [`Propagator::GibbsRk4`] stops: θ within ≈ 2·10⁻⁸ of π.
+///
+/// Book: §4.12 (g undefined at θ = π).
 pub const GIBBS_LIMIT: f64 = 1e8;
 
 /// How to propagate an attitude.
