@@ -81,14 +81,15 @@ pub struct FreeBodySolution {
 }
 
 impl FreeBodySolution {
-    /// The value of one unknown.
-    pub fn value(&self, u: UnknownId) -> f64 {
-        self.values[u.0]
+    /// The value of one unknown; `None` for an id that belongs to another problem.
+    pub fn value(&self, u: UnknownId) -> Option<f64> {
+        self.values.get(u.0).copied()
     }
 
-    /// The reaction as a vector: value · d̂ (a force, or a couple along its axis).
-    pub fn reaction(&self, u: UnknownId) -> Vector {
-        self.directions[u.0] * self.values[u.0]
+    /// The reaction as a vector: value · d̂ (a force, or a couple along its axis); `None` for
+    /// an id that belongs to another problem.
+    pub fn reaction(&self, u: UnknownId) -> Option<Vector> {
+        Some(*self.directions.get(u.0)? * *self.values.get(u.0)?)
     }
 
     /// The solution, or [`StaticsError::Indeterminate`] when the equations do not fix it.

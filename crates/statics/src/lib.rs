@@ -13,6 +13,24 @@
 //!   inertia matrix is −J_xy ([`InertiaComponents`], [`product_of_inertia`]).
 //! - Principal moments are sorted λ1 ≥ λ2 ≥ λ3 (Fact 6.2.8).
 //! - Magnetic dipoles use Gaussian units, μ₀/4π = 1 (book §6.13); multiply by μ₀/4π for SI.
+//!
+//! ```
+//! use vectrix_frames::{Frame, Resolve};
+//! use vectrix_statics::{INERTIA_REL_TOL, InertiaComponents, MassProperties, Point};
+//!
+//! // Problem 6.14.8: a 3 × 2 × 1 box of mass 6, inertia about a vertex.
+//! let a = Frame::new();
+//! let bx = MassProperties::solid_box(6.0, [3.0, 2.0, 1.0], &a, Point::origin())?;
+//! let vertex = Point::at(a.vector([1.5, 1.0, 0.5]));
+//! let j = bx.inertia_about(&vertex);
+//! // The sign trap: the book's product J_xy = Σ m x̄ȳ = 9 is the matrix entry −9.
+//! assert!((InertiaComponents::of(&j, &a).products[0] - 9.0).abs() < 1e-12);
+//! assert!((j.resolve(&a)[(0, 1)] + 9.0).abs() < 1e-12);
+//! // Principal moments λ1 ≥ λ2 ≥ λ3 and a right-handed principal frame.
+//! let p = bx.principal_axes(&vertex, INERTIA_REL_TOL)?;
+//! assert!((p.moments[2] - 3.41320).abs() < 1e-5);
+//! # Ok::<(), vectrix_statics::StaticsError>(())
+//! ```
 #![warn(missing_docs)]
 
 mod basis;
