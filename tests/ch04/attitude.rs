@@ -283,6 +283,24 @@ fn eq_4_7_18_eigenaxis_rates() {
     assert!((typo - exact).amax() > small.powi(2));
 }
 
+// (4.8.1), F4.8.1 (i): α|_A = θ̈n̂ + θ̇[(1 + cos θ)ṅ + sin θ n̂×ṅ] + (1 − cos θ)n̂×n̈ + sin θ n̈,
+// against the second derivative of 𝓡(t) = exp(Θ(t)^×); at θ = 0 it reduces to θ̈n̂ + 2θ̇ṅ.
+#[test]
+fn eq_4_8_1_eigenaxis_angular_acceleration() {
+    use vectrix::kinematics::alpha_body_from_orientation_rates;
+    let [r0, _, rdd] = mat_jet(|t| exp_so3(theta_path(t)), T0);
+    let al_a = r0 * alpha_body_from_orientation_rates(&r0.transpose(), &rdd.transpose()).unwrap();
+    // θ(t) = |Θ(t)| and n̂(t) = Θ/|Θ| with exact derivatives
+    let th = |t: Dual2_64| theta_path(t).norm();
+    let n = |t: Dual2_64| theta_path(t) / theta_path(t).norm();
+    let d = th(Dual2_64::new(T0, 1.0, 0.0));
+    let [n0, nd, ndd] = vec_jet(n, T0);
+    let got = alpha_spatial_from_eigenaxis_rates([d.re, d.v1, d.v2], &n0, &nd, &ndd);
+    assert!((got - al_a).amax() < 4.0 * TOL, "{got} vs {al_a}");
+    let at_zero = alpha_spatial_from_eigenaxis_rates([0.0, d.v1, d.v2], &n0, &nd, &ndd);
+    assert!((at_zero - (n0 * d.v2 + nd * (2.0 * d.v1))).amax() < TOL, "F4.8.1 (i)");
+}
+
 // F4.8.2: for constant ω_{B/A|B}, 𝓡(t) = 𝓡(0)e^{ω^×t}. Every propagator converges to it; the
 // exact step and the Lie-group methods reproduce it to rounding; RK4 on the rate equations is
 // fourth order (halving h divides the error by ≈ 16).

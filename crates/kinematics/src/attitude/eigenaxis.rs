@@ -33,6 +33,24 @@ pub fn omega_body_from_eigenaxis_rates<T: Scalar>(
     n * theta_dot - n.cross(n_dot) * (T::one() - theta.cos()) + n_dot * theta.sin()
 }
 
+/// α_{B/A}|_A = θ̈n̂ + θ̇[(1 + cos θ)ṅ + sin θ n̂×ṅ] + (1 − cos θ)n̂×n̈ + sin θ n̈ (4.8.1), the
+/// derivative of (4.7.18); at θ = 0 it is θ̈n̂ + 2θ̇ṅ (F4.8.1 i).
+///
+/// Book: (4.8.1), Fact 4.8.1.
+pub fn alpha_spatial_from_eigenaxis_rates<T: Scalar>(
+    theta: [T; 3],
+    n: &Vector3<T>,
+    n_dot: &Vector3<T>,
+    n_ddot: &Vector3<T>,
+) -> Vector3<T> {
+    let [th, thd, thdd] = theta;
+    let (s, c) = (th.sin(), th.cos());
+    n * thdd
+        + (n_dot * (T::one() + c) + n.cross(n_dot) * s) * thd
+        + n.cross(n_ddot) * (T::one() - c)
+        + n_ddot * s
+}
+
 /// (θ̇, ṅ) from ω_{B/A}|_A: θ̇ = n̂·ω (4.7.22), ṅ = ½[cot(θ/2)(I − n̂n̂ᵀ) − n̂^×]ω (4.7.29).
 ///
 /// Book: (4.7.22), (4.7.29).

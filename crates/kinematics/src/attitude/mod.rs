@@ -18,8 +18,8 @@ pub use angle_vector::{
     jacobian_right_inverse, rewrap_angle_vector,
 };
 pub use eigenaxis::{
-    eigenaxis_rates_from_omega_body, eigenaxis_rates_from_omega_spatial, omega_body_from_eigenaxis_rates,
-    omega_spatial_from_eigenaxis_rates,
+    alpha_spatial_from_eigenaxis_rates, eigenaxis_rates_from_omega_body, eigenaxis_rates_from_omega_spatial,
+    omega_body_from_eigenaxis_rates, omega_spatial_from_eigenaxis_rates,
 };
 pub use euler::{
     euler_rate_matrix_body, euler_rate_matrix_spatial, euler_rates_from_omega_body,
