@@ -411,6 +411,13 @@ mod prop {
             prop_assert!((xa.angle(&ya) - xb.angle(&yb)).abs() <= 64.0 * EPS);
             let t = xa.norm() * ya.norm() * za.norm();
             prop_assert!((xa.triple(&ya, &za) - xb.triple(&yb, &zb)).abs() <= 256.0 * EPS * t);
+            // Projectors (2.7.1–2) and cross dyads (2.9.1) built from either frame's inputs.
+            let (pa, pb) = (Dyadic::projector_along(&ya).unwrap(), Dyadic::projector_along(&yb).unwrap());
+            prop_assert!((pa - pb).norm() <= 64.0 * EPS);
+            let (qa, qb) = (Dyadic::projector_perp(&xa).unwrap(), Dyadic::projector_perp(&xb).unwrap());
+            prop_assert!((qa - qb).norm() <= 64.0 * EPS);
+            prop_assert!((xa.cross_dyad() - xb.cross_dyad()).norm() <= 64.0 * EPS * xa.norm());
+            prop_assert!((xa.cross_dyad().vee() - xb).norm() <= 64.0 * EPS * xa.norm());
             let n = xa.cross(&ya);
             if let (Some(da), Some(db)) = (ya.directed_angle_rel(&xa, &n), yb.directed_angle_rel(&xb, &n)) {
                 prop_assert!(congruent(da, db, 64.0 * EPS));

@@ -31,7 +31,6 @@ pub fn wrap_angle<T: Scalar>(a: T) -> T {
 /// Book: Fact 2.1.1.
 #[inline]
 pub fn congruent<T: Scalar>(a: T, b: T, tol: f64) -> bool {
-    let d = wrap_angle(a - b).re().abs();
-    // The wrapped difference of congruent angles sits near 0 or (by rounding) near ±π·2.
-    d <= tol || (core::f64::consts::TAU - d) <= tol
+    // The wrapped difference lies in (−π, π]; for congruent angles it is 0 up to rounding.
+    wrap_angle(a - b).re().abs() <= tol
 }
