@@ -21,6 +21,8 @@ pub struct Dashpot<T: Scalar = f64> {
 impl<T: Scalar> Dashpot<T> {
     /// A dashpot with coefficient c.
     ///
+    /// Book: §6.8, §7.12.
+    ///
     /// # Errors
     /// [`StaticsError::InvalidParameter`] for c < 0 or non-finite.
     pub fn new(c: T) -> Result<Self, StaticsError> {
@@ -41,6 +43,8 @@ impl<T: Scalar> Dashpot<T> {
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (6.8.2).
+    ///
+    /// Book: §6.8, §7.12.
     ///
     /// # Errors
     /// As [`Dashpot::force`].
@@ -70,6 +74,8 @@ pub struct RotationalDashpot<T: Scalar = f64> {
 
 impl<T: Scalar> RotationalDashpot<T> {
     /// A rotational dashpot with coefficient ξ.
+    ///
+    /// Book: §6.8, §7.12.
     ///
     /// # Errors
     /// [`StaticsError::InvalidParameter`] for ξ < 0 or non-finite.
@@ -108,6 +114,8 @@ pub struct Inerter<T: Scalar = f64> {
 impl<T: Scalar> Inerter<T> {
     /// An inerter with inertance b.
     ///
+    /// Book: §6.8, §7.12.
+    ///
     /// # Errors
     /// [`StaticsError::InvalidParameter`] for b < 0 or non-finite.
     pub fn new(b: T) -> Result<Self, StaticsError> {
@@ -137,6 +145,8 @@ impl<T: Scalar> Inerter<T> {
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (7.12.4).
+    ///
+    /// Book: §6.8, §7.12.
     ///
     /// # Errors
     /// As [`Inerter::force`].
@@ -172,6 +182,8 @@ pub struct RotationalInerter<T: Scalar = f64> {
 
 impl<T: Scalar> RotationalInerter<T> {
     /// A rotational inerter with inertance β.
+    ///
+    /// Book: §6.8, §7.12.
     ///
     /// # Errors
     /// [`StaticsError::InvalidParameter`] for β < 0 or non-finite.

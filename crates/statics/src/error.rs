@@ -3,6 +3,8 @@
 use thiserror::Error;
 
 /// What went wrong in a statics computation, with what would be valid.
+///
+/// Book: §6.2 (Facts 6.2.7–6.2.8), §6.7, §6.10, §6.12.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum StaticsError {

@@ -15,13 +15,19 @@ use crate::{AppliedForce, Point, StaticsError};
 
 /// Default relative tolerance for rank and consistency: 2²⁰·ε ≈ 2.3e-10, relative to the
 /// largest singular value and to the size of the loads.
+///
+/// Book: §6.5, §6.10.
 pub const FREE_BODY_REL_TOL: f64 = 1_048_576.0 * f64::EPSILON;
 
 /// A body of a [`FreeBodyProblem`].
+///
+/// Book: §6.5, §6.10.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct BodyId(usize);
 
 /// An unknown reaction of a [`FreeBodyProblem`].
+///
+/// Book: §6.5, §6.10.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct UnknownId(usize);
 
@@ -67,6 +73,8 @@ pub struct FreeBodyProblem {
 }
 
 /// The reactions found by [`FreeBodyProblem::solve`].
+///
+/// Book: §6.5, §6.10.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FreeBodySolution {
     /// One value per unknown, in the order added: the component along the given unit direction.
@@ -82,17 +90,23 @@ pub struct FreeBodySolution {
 
 impl FreeBodySolution {
     /// The value of one unknown; `None` for an id that belongs to another problem.
+    ///
+    /// Book: §6.5, §6.10.
     pub fn value(&self, u: UnknownId) -> Option<f64> {
         self.values.get(u.0).copied()
     }
 
     /// The reaction as a vector: value · d̂ (a force, or a couple along its axis); `None` for
     /// an id that belongs to another problem.
+    ///
+    /// Book: §6.5, §6.10.
     pub fn reaction(&self, u: UnknownId) -> Option<Vector> {
         Some(*self.directions.get(u.0)? * *self.values.get(u.0)?)
     }
 
     /// The solution, or [`StaticsError::Indeterminate`] when the equations do not fix it.
+    ///
+    /// Book: §6.5, §6.10.
     ///
     /// # Errors
     /// [`StaticsError::Indeterminate`].
@@ -110,11 +124,15 @@ impl FreeBodySolution {
 
 impl FreeBodyProblem {
     /// An empty problem.
+    ///
+    /// Book: §6.5, §6.10.
     pub fn new() -> Self {
         Self::default()
     }
 
     /// Adds a body and returns its id.
+    ///
+    /// Book: §6.5, §6.10.
     pub fn add_body(&mut self) -> BodyId {
         self.bodies += 1;
         BodyId(self.bodies - 1)
@@ -130,6 +148,8 @@ impl FreeBodyProblem {
 
     /// A known force f⃗ at y on body `on` (a load, e.g. a weight).
     ///
+    /// Book: §6.5, §6.10.
+    ///
     /// # Errors
     /// [`StaticsError::UnknownBody`], [`StaticsError::NonFinite`].
     pub fn apply_force(&mut self, on: BodyId, f: AppliedForce) -> Result<(), StaticsError> {
@@ -142,6 +162,8 @@ impl FreeBodyProblem {
     }
 
     /// A known couple (torque) M⃗ on body `on`.
+    ///
+    /// Book: §6.5, §6.10.
     ///
     /// # Errors
     /// [`StaticsError::UnknownBody`], [`StaticsError::NonFinite`].
@@ -202,6 +224,8 @@ impl FreeBodyProblem {
     }
 
     /// Number of unknown reactions.
+    ///
+    /// Book: §6.5, §6.10.
     pub fn unknown_count(&self) -> usize {
         self.unknowns.len()
     }

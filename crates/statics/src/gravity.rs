@@ -23,6 +23,8 @@ pub struct UniformGravity<T: Scalar = f64> {
 impl<T: Scalar> UniformGravity<T> {
     /// Gravity with acceleration g⃗.
     ///
+    /// Book: §6.6, (6.6.1).
+    ///
     /// # Errors
     /// [`StaticsError::NonFinite`].
     pub fn new(g: Vector<T>) -> Result<Self, StaticsError> {
@@ -31,6 +33,8 @@ impl<T: Scalar> UniformGravity<T> {
     }
 
     /// g⃗.
+    ///
+    /// Book: §6.6, (6.6.1).
     pub fn acceleration(&self) -> Vector<T> {
         self.g
     }
@@ -70,6 +74,8 @@ pub struct CentralGravity<T: Scalar = f64> {
 impl<T: Scalar> CentralGravity<T> {
     /// A centre with μ = G M ≥ 0.
     ///
+    /// Book: §6.12, (6.12.1).
+    ///
     /// # Errors
     /// [`StaticsError::InvalidParameter`] for μ < 0 or non-finite.
     pub fn new(mu: T) -> Result<Self, StaticsError> {
@@ -77,6 +83,8 @@ impl<T: Scalar> CentralGravity<T> {
     }
 
     /// The centre of mass M: μ = G M with [`GRAVITATIONAL_CONSTANT`].
+    ///
+    /// Book: §6.12, (6.12.1).
     ///
     /// # Errors
     /// [`StaticsError::InvalidMass`].
@@ -86,6 +94,8 @@ impl<T: Scalar> CentralGravity<T> {
     }
 
     /// μ.
+    ///
+    /// Book: §6.12, (6.12.1).
     pub fn mu(&self) -> T {
         self.mu
     }

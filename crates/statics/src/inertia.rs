@@ -16,6 +16,8 @@ use crate::basis::mat_re;
 
 /// Default relative tolerance for inertia checks and clustering of principal moments:
 /// 1024·ε, scaled by the largest principal moment (or the trace).
+///
+/// Book: §6.2, (6.2.4)–(6.2.8), Facts 6.2.7–6.2.8.
 pub const INERTIA_REL_TOL: f64 = 1024.0 * f64::EPSILON;
 
 /// Inertia of a particle of mass m at y about z: m(|r⃗|²I⃗ − r⃗r⃗′) = −m r⃗^× r⃗^×, r⃗ = r⃗_{y/z}.
@@ -72,6 +74,8 @@ pub fn product_of_inertia<T: Scalar>(j: &Dyadic<T>, a: &Vector<T>, b: &Vector<T>
 
 /// Moments and products of inertia of J⃗_{B/z} determined by a frame F_B (book (6.2.4)–(6.2.8)).
 ///
+/// Book: §6.2, (6.2.4)–(6.2.8), Facts 6.2.7–6.2.8.
+///
 /// # Conventions
 /// `products` = [J_xy, J_xz, J_yz] are the book's **positive sums** Σ m x̄ȳ; the matrix
 /// J_{B/z|B} has −J_xy in row 1, column 2. Use [`InertiaComponents::matrix`] for the matrix.
@@ -97,6 +101,8 @@ impl<T: Scalar> InertiaComponents<T> {
     }
 
     /// The resolved inertia matrix J_{B/z|B}, with −J_xy off the diagonal (6.2.4).
+    ///
+    /// Book: §6.2, (6.2.4)–(6.2.8), Facts 6.2.7–6.2.8.
     pub fn matrix(&self) -> Matrix3<T> {
         let [jxx, jyy, jzz] = self.moments;
         let [jxy, jxz, jyz] = self.products;
@@ -104,12 +110,16 @@ impl<T: Scalar> InertiaComponents<T> {
     }
 
     /// The physical inertia dyadic whose components in `b` are these (book (2.10.22), (6.2.4)).
+    ///
+    /// Book: §6.2, (6.2.4)–(6.2.8), Facts 6.2.7–6.2.8.
     pub fn to_dyadic(&self, b: &Frame<T>) -> Dyadic<T> {
         b.dyadic(&self.matrix())
     }
 }
 
 /// Result of validating an inertia dyadic: principal moments and rank.
+///
+/// Book: §6.2, (6.2.4)–(6.2.8), Facts 6.2.7–6.2.8.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InertiaCheck {
     /// Principal moments λ1 ≥ λ2 ≥ λ3 (clamped at 0 when within tolerance of it).

@@ -118,24 +118,32 @@ impl<T: Scalar> MassProperties<T> {
     }
 
     /// m_B (6.1.1).
+    ///
+    /// Book: §6.1–6.2, (6.1.1)–(6.1.2).
     #[inline]
     pub fn mass(&self) -> T {
         self.mass
     }
 
     /// The centre of mass c (6.1.2).
+    ///
+    /// Book: §6.1–6.2, (6.1.1)–(6.1.2).
     #[inline]
     pub fn centre_of_mass(&self) -> Point<T> {
         self.centre
     }
 
     /// The first moment of mass relative to w: m_B r⃗_{c/w} = Σ m_i r⃗_{y_i/w} (6.1.2).
+    ///
+    /// Book: §6.1–6.2, (6.1.1)–(6.1.2).
     #[inline]
     pub fn first_moment_about(&self, w: &Point<T>) -> Vector<T> {
         self.centre.position_rel(w) * self.mass
     }
 
     /// J⃗_{B/c}: the physical inertia matrix about the centre of mass.
+    ///
+    /// Book: §6.1–6.2, (6.1.1)–(6.1.2).
     #[inline]
     pub fn inertia_about_centre(&self) -> Dyadic<T> {
         self.j_c
@@ -199,6 +207,8 @@ impl<T: Scalar> MassProperties<T> {
     }
 
     /// The body translated by d⃗ (inertia about c unchanged).
+    ///
+    /// Book: §6.1–6.2, (6.1.1)–(6.1.2).
     pub fn translated(&self, d: Vector<T>) -> MassProperties<T> {
         MassProperties { centre: self.centre.displaced(d), ..*self }
     }

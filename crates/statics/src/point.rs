@@ -18,18 +18,24 @@ pub struct Point<T: Scalar = f64> {
 
 impl<T: Scalar> Point<T> {
     /// The reference point o itself (r⃗_{o/o} = 0⃗).
+    ///
+    /// Book: §1.3, §6.1.
     #[inline]
     pub fn origin() -> Self {
         Self { r_y_o: Vector::zero() }
     }
 
     /// The point y with r⃗_{y/o} = `r_y_o`.
+    ///
+    /// Book: §1.3, §6.1.
     #[inline]
     pub fn at(r_y_o: Vector<T>) -> Self {
         Self { r_y_o }
     }
 
     /// r⃗_{y/o}: position relative to the reference point.
+    ///
+    /// Book: §1.3, §6.1.
     #[inline]
     pub fn position(&self) -> Vector<T> {
         self.r_y_o
@@ -44,18 +50,24 @@ impl<T: Scalar> Point<T> {
     }
 
     /// The point reached from `self` by the displacement d⃗: r⃗_{z/o} = r⃗_{y/o} + d⃗.
+    ///
+    /// Book: §1.3, §6.1.
     #[inline]
     pub fn displaced(&self, d: Vector<T>) -> Point<T> {
         Point { r_y_o: self.r_y_o + d }
     }
 
     /// |r⃗_{y/x}|.
+    ///
+    /// Book: §1.3, §6.1.
     #[inline]
     pub fn distance(&self, x: &Point<T>) -> T {
         self.position_rel(x).norm()
     }
 
     /// `true` when r⃗_{y/o} is finite.
+    ///
+    /// Book: §1.3, §6.1.
     #[inline]
     pub fn is_finite(&self) -> bool {
         self.r_y_o.is_finite()

@@ -18,6 +18,8 @@ pub struct ForcePair<T: Scalar = f64> {
 
 impl<T: Scalar> ForcePair<T> {
     /// The pair (f⃗, −f⃗).
+    ///
+    /// Book: §6.7, Fact 6.9.1.
     #[inline]
     pub fn from_force_on_y(f_y_w: Vector<T>) -> Self {
         Self { on_y: f_y_w, on_w: -f_y_w }
@@ -62,6 +64,8 @@ pub struct Spring<T: Scalar = f64> {
 impl<T: Scalar> Spring<T> {
     /// A spring with stiffness k and relaxed length d.
     ///
+    /// Book: §6.7, Fact 6.9.1.
+    ///
     /// # Errors
     /// [`StaticsError::InvalidParameter`] when k or d is negative or non-finite.
     pub fn new(k: T, d: T) -> Result<Self, StaticsError> {
@@ -71,11 +75,15 @@ impl<T: Scalar> Spring<T> {
     }
 
     /// Stiffness k.
+    ///
+    /// Book: §6.7, Fact 6.9.1.
     pub fn stiffness(&self) -> T {
         self.k
     }
 
     /// Relaxed length d.
+    ///
+    /// Book: §6.7, Fact 6.9.1.
     pub fn relaxed_length(&self) -> T {
         self.d
     }
@@ -130,6 +138,8 @@ pub struct RotationalSpring<T: Scalar = f64> {
 
 impl<T: Scalar> RotationalSpring<T> {
     /// A rotational spring with stiffness κ and relaxed angle θ₀.
+    ///
+    /// Book: §6.7, Fact 6.9.1.
     ///
     /// # Errors
     /// [`StaticsError::InvalidParameter`] for κ < 0 or non-finite κ, θ₀.

@@ -17,6 +17,8 @@ pub struct AppliedForce<T: Scalar = f64> {
 
 impl<T: Scalar> AppliedForce<T> {
     /// f⃗ applied at y.
+    ///
+    /// Book: §6.4, (6.4.1)–(6.4.2).
     pub fn new(force: Vector<T>, at: Point<T>) -> Self {
         Self { force, at }
     }
@@ -44,6 +46,8 @@ pub struct Wrench<T: Scalar = f64> {
 
 impl<T: Scalar> Wrench<T> {
     /// The zero wrench about w.
+    ///
+    /// Book: §6.4, (6.4.1)–(6.4.2).
     pub fn zero(about: Point<T>) -> Self {
         Self { force: Vector::zero(), moment: Vector::zero(), about }
     }
@@ -99,11 +103,15 @@ impl<T: Scalar> Wrench<T> {
     }
 
     /// The negated wrench (the third-law reaction, Fact 6.9.2–6.9.3).
+    ///
+    /// Book: §6.4, (6.4.1)–(6.4.2).
     pub fn reaction(&self) -> Self {
         Self { force: -self.force, moment: -self.moment, about: self.about }
     }
 
     /// `true` when the forces are balanced, |f⃗_B| ≤ tol (§6.4).
+    ///
+    /// Book: §6.4, (6.4.1)–(6.4.2).
     pub fn is_balanced(&self, tol: f64) -> bool {
         self.force.norm().re() <= tol
     }
