@@ -19,7 +19,11 @@ use support::{EPS, assert_close, triple};
 #[test]
 fn eq_8_1_6_kinetic_energy_about_centre_from_relative_velocities() {
     let a = Frame::new();
-    let parts = [(1.0, a.vector([1.0, 0.0, 2.0])), (2.0, a.vector([-1.0, 3.0, 0.5])), (0.5, a.vector([0.0, -2.0, 1.0]))];
+    let parts = [
+        (1.0, a.vector([1.0, 0.0, 2.0])),
+        (2.0, a.vector([-1.0, 3.0, 0.5])),
+        (0.5, a.vector([0.0, -2.0, 1.0])),
+    ];
     let mb: f64 = parts.iter().map(|p| p.0).sum();
     let v_c = parts.iter().fold(Vector::zero(), |s, (m, v)| s + *v * *m) / mb;
     let t = particles_kinetic_energy(&parts);
@@ -47,11 +51,21 @@ fn eq_8_2_1_work_equals_kinetic_energy_change() {
 #[test]
 fn eq_8_2_4_power_is_rate_of_kinetic_energy() {
     let a = Frame::new();
-    let props = MassProperties::new(1.7, Point::origin(), a.dyadic(&Matrix3::new(2.0, 0.1, 0.0, 0.1, 3.0, -0.2, 0.0, -0.2, 4.0))).unwrap();
+    let props = MassProperties::new(
+        1.7,
+        Point::origin(),
+        a.dyadic(&Matrix3::new(2.0, 0.1, 0.0, 0.1, 3.0, -0.2, 0.0, -0.2, 4.0)),
+    )
+    .unwrap();
     let body = RigidBody::new(props, a.vector([0.5, -0.2, 0.1]), a.vector([0.3, 1.1, -0.7]));
-    let w = Wrench { force: a.vector([0.4, 0.0, -1.0]), moment: a.vector([0.2, -0.3, 0.5]), about: Point::origin() };
+    let w = Wrench {
+        force: a.vector([0.4, 0.0, -1.0]),
+        moment: a.vector([0.2, -0.3, 0.5]),
+        about: Point::origin(),
+    };
     let (a_c, alpha) = body.accelerations(&w).unwrap();
-    let t_dot = props.mass() * body.v_c.dot(&a_c) + body.omega.dot(&props.inertia_about_centre().apply(&alpha));
+    let t_dot =
+        props.mass() * body.v_c.dot(&a_c) + body.omega.dot(&props.inertia_about_centre().apply(&alpha));
     assert_close(power(&w.force, &w.moment, &body.v_c, &body.omega), t_dot, 64.0 * EPS);
 }
 
@@ -61,7 +75,8 @@ fn eq_8_2_4_power_is_rate_of_kinetic_energy() {
 #[test]
 fn fact_8_3_2_uniform_gravity_force_is_plus_mg() {
     let a = Frame::<Dual64>::identity();
-    let g = UniformGravity::new(a.vector([Dual64::from(0.0), Dual64::from(0.0), Dual64::from(-9.81)])).unwrap();
+    let g =
+        UniformGravity::new(a.vector([Dual64::from(0.0), Dual64::from(0.0), Dual64::from(-9.81)])).unwrap();
     let m = Dual64::from(2.5);
     let mut grad = [0.0; 3];
     for (k, gk) in grad.iter_mut().enumerate() {
@@ -140,7 +155,9 @@ fn fact_8_4_1_rigid_body_energy_conserved_gauss_legendre() {
     let period = 2.0 * std::f64::consts::PI; // |ω| ≈ 1
     let mut worst = 0.0f64;
     GaussLegendre::Gauss4
-        .integrate(f, 0.0, &w0, 1e3 * period, 20_000, |_, w: &DVector<f64>| worst = worst.max(((t_of(w) - e0) / e0).abs()))
+        .integrate(f, 0.0, &w0, 1e3 * period, 20_000, |_, w: &DVector<f64>| {
+            worst = worst.max(((t_of(w) - e0) / e0).abs())
+        })
         .unwrap();
     assert!(worst < 1e-10, "relative energy drift {worst:e}");
 }
@@ -161,7 +178,9 @@ fn fact_8_4_1_energy_constant_along_lagrange_flow() {
             -T::lit(9.81) * q[0].cos()
         }
     }
-    let f = |_t: f64, y: &SVector<f64, 2>| SVector::<f64, 2>::new(y[1], accelerations(&Pendulum, &[y[0]], &[y[1]], 0.0).unwrap()[0]);
+    let f = |_t: f64, y: &SVector<f64, 2>| {
+        SVector::<f64, 2>::new(y[1], accelerations(&Pendulum, &[y[0]], &[y[1]], 0.0).unwrap()[0])
+    };
     let y0 = SVector::<f64, 2>::new(2.5, 0.0);
     let sol = Adaptive::dop853().rtol(1e-12).atol(1e-13).solve(f, 0.0, &y0, 50.0).unwrap();
     let e0 = energy(&Pendulum, &[2.5], &[0.0], 0.0).unwrap();

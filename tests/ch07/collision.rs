@@ -63,10 +63,18 @@ fn section_7_13_sphere_collision_and_rigid_impact_agree() {
 #[test]
 fn example_7_14_2_dumbbell_centre_of_percussion() {
     let a = Frame::new();
-    let props = MassProperties::from_particles(&[(1.0, Point::origin()), (2.0, Point::at(a.vector([3.0, 0.0, 0.0])))]).unwrap();
+    let props = MassProperties::from_particles(&[
+        (1.0, Point::origin()),
+        (2.0, Point::at(a.vector([3.0, 0.0, 0.0]))),
+    ])
+    .unwrap();
     let p = Point::at(a.vector([1.0, 0.0, 0.0]));
     let r = centre_of_percussion(&props, &p, &a.j()).unwrap();
-    assert_close_slice(r.position_rel(&props.centre_of_mass()).resolve(&a).as_slice(), &[2.0, 0.0, 0.0], 16.0 * EPS);
+    assert_close_slice(
+        r.position_rel(&props.centre_of_mass()).resolve(&a).as_slice(),
+        &[2.0, 0.0, 0.0],
+        16.0 * EPS,
+    );
     // the body at rest is hit: R does not move just after the impulse (7.14.2–3)
     let (dv, dw) = impulse_response(&props, &p, &(a.j() * 4.0)).unwrap();
     let v_r = dv + dw.cross(&r.position_rel(&props.centre_of_mass()));
@@ -84,7 +92,8 @@ fn example_7_14_2_dumbbell_centre_of_percussion() {
 fn example_7_14_3_bar_centre_of_percussion() {
     let a = Frame::new();
     let l = 1.8;
-    let bar = MassProperties::thin_rod_between(2.5, &Point::origin(), &Point::at(a.vector([l, 0.0, 0.0]))).unwrap();
+    let bar =
+        MassProperties::thin_rod_between(2.5, &Point::origin(), &Point::at(a.vector([l, 0.0, 0.0]))).unwrap();
     for lp in [0.1, 0.3, 2.0 * l / 3.0, 1.7] {
         let r = centre_of_percussion(&bar, &Point::at(a.vector([lp, 0.0, 0.0])), &a.j()).unwrap();
         let want = l * l / (12.0 * (l / 2.0 - lp));
@@ -105,7 +114,9 @@ fn section_7_13_bouncing_ball_zeno_protection() {
     let bounce = |_t: f64, y: &SVector<f64, 2>| SVector::<f64, 2>::new(0.0, -e * y[1]);
     let guard = ZenoGuard { min_interval: 1e-4, max_impacts: 1000 };
     let solver = Adaptive::dop853().rtol(1e-12).atol(1e-12);
-    let run = simulate_with_impacts(&solver, f, gap, bounce, 0.0, &SVector::<f64, 2>::new(h0, 0.0), 10.0, guard).unwrap();
+    let run =
+        simulate_with_impacts(&solver, f, gap, bounce, 0.0, &SVector::<f64, 2>::new(h0, 0.0), 10.0, guard)
+            .unwrap();
     let t1 = (2.0 * h0 / g).sqrt();
     let t_inf = t1 * (1.0 + e) / (1.0 - e);
     let ImpactEnd::Zeno { t } = run.end else { panic!("no Zeno detected: {:?}", run.end) };
@@ -125,9 +136,15 @@ fn impulses_reject_bad_input() {
     let rod = MassProperties::thin_rod(1.0, 2.0, &a.i(), Point::origin()).unwrap();
     let body = RigidBody::new(rod, a.vector([0.0, 0.0, -1.0]), Vector::zero());
     let contact = Point::at(a.vector([0.5, 0.0, 0.0]));
-    assert!(matches!(rigid_impact(&body, None, &contact, &Vector::zero(), 0.5), Err(DynamicsError::InvalidParameter { .. })));
+    assert!(matches!(
+        rigid_impact(&body, None, &contact, &Vector::zero(), 0.5),
+        Err(DynamicsError::InvalidParameter { .. })
+    ));
     // approaching the ground along −k̂ with normal k̂ pointing from body to ground: separating
-    assert!(matches!(rigid_impact(&body, None, &contact, &a.k(), 0.5), Err(DynamicsError::Separating { .. })));
+    assert!(matches!(
+        rigid_impact(&body, None, &contact, &a.k(), 0.5),
+        Err(DynamicsError::Separating { .. })
+    ));
     let imp = rigid_impact(&body, None, &contact, &(-a.k()), 0.5).unwrap();
     assert!(imp.impulse > 0.0);
     let _ = Matrix3::<f64>::zeros();

@@ -72,8 +72,22 @@ fn example_7_15_2_physical_pendulum_reactions() {
 /// The rotating wire of Ex 7.15.3: a pin about ẑ (wire, inertia J about the axis) carrying a
 /// sleeve along the wire's x̂ (bead of mass m, a particle).
 fn wire(j: f64, m: f64) -> Model {
-    let wire = Link::new(None, Joint::Pin { axis: Vector3::z() }, Vector3::zeros(), 1.0, Vector3::zeros(), Matrix3::from_diagonal(&Vector3::new(j, j, j)));
-    let bead = Link::new(Some(0), Joint::Sleeve { axis: Vector3::x() }, Vector3::zeros(), m, Vector3::zeros(), Matrix3::zeros());
+    let wire = Link::new(
+        None,
+        Joint::Pin { axis: Vector3::z() },
+        Vector3::zeros(),
+        1.0,
+        Vector3::zeros(),
+        Matrix3::from_diagonal(&Vector3::new(j, j, j)),
+    );
+    let bead = Link::new(
+        Some(0),
+        Joint::Sleeve { axis: Vector3::x() },
+        Vector3::zeros(),
+        m,
+        Vector3::zeros(),
+        Matrix3::zeros(),
+    );
     Model::new(&[wire, bead]).unwrap()
 }
 
@@ -122,14 +136,31 @@ fn example_7_15_3_free_wire_limit_angle() {
 #[test]
 fn example_7_15_4_ball_on_beam() {
     let (jzz, m, tau) = (0.9, 0.4, 0.6);
-    let beam = Link::new(None, Joint::Pin { axis: Vector3::z() }, Vector3::zeros(), 2.0, Vector3::zeros(), Matrix3::from_diagonal(&Vector3::new(jzz, jzz, jzz)));
-    let ball = Link::new(Some(0), Joint::Sleeve { axis: Vector3::x() }, Vector3::zeros(), m, Vector3::zeros(), Matrix3::zeros());
+    let beam = Link::new(
+        None,
+        Joint::Pin { axis: Vector3::z() },
+        Vector3::zeros(),
+        2.0,
+        Vector3::zeros(),
+        Matrix3::from_diagonal(&Vector3::new(jzz, jzz, jzz)),
+    );
+    let ball = Link::new(
+        Some(0),
+        Joint::Sleeve { axis: Vector3::x() },
+        Vector3::zeros(),
+        m,
+        Vector3::zeros(),
+        Matrix3::zeros(),
+    );
     let mut model = Model::new(&[beam, ball]).unwrap();
     model.gravity = Vector3::new(0.0, -G, 0.0);
     let (th, x, thd, xd) = (0.3, 0.8, -0.5, 0.2);
     let a = model.aba(&[th, x], &[thd, xd], &[tau, 0.0], None).unwrap();
     assert_close(a[1], thd * thd * x - G * th.sin(), 64.0 * EPS);
     assert_close(a[0], (-x * (m * G * th.cos() + 2.0 * m * thd * xd) + tau) / (jzz + m * x * x), 64.0 * EPS);
-    let w = model.rnea(&[th, x], &[thd, xd], &a, Some(&[Default::default(), Default::default()])).unwrap().wrenches[1];
+    let w = model
+        .rnea(&[th, x], &[thd, xd], &a, Some(&[Default::default(), Default::default()]))
+        .unwrap()
+        .wrenches[1];
     assert_close(w.force.y, m * G * th.cos() + 2.0 * m * thd * xd + m * a[0] * x, 64.0 * EPS);
 }

@@ -70,14 +70,18 @@ fn model_rejects_bad_input() {
     let mut not_psd = body(None, Joint::Ball, [0.0; 3]);
     not_psd.inertia = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -0.5));
     assert!(matches!(Model::new(&[not_psd]), Err(DynamicsError::InvalidInertia { .. })));
-    let slot = [body(None, Joint::Slot { axis: Vector3::z(), direction: Vector3::new(0.0, 1.0, 1.0) }, [0.0; 3])];
+    let slot =
+        [body(None, Joint::Slot { axis: Vector3::z(), direction: Vector3::new(0.0, 1.0, 1.0) }, [0.0; 3])];
     assert!(matches!(Model::new(&slot), Err(DynamicsError::JointGeometry { .. })));
     let model = all_joints_tree();
     let mut q = model.neutral();
     q[1] = f64::NAN;
     let zeros = vec![0.0; model.nv()];
     assert!(matches!(model.rnea(&q, &zeros, &zeros, None), Err(DynamicsError::NonFinite { .. })));
-    assert!(matches!(model.aba(&model.neutral(), &zeros[1..], &zeros, None), Err(DynamicsError::DimensionMismatch { .. })));
+    assert!(matches!(
+        model.aba(&model.neutral(), &zeros[1..], &zeros, None),
+        Err(DynamicsError::DimensionMismatch { .. })
+    ));
 }
 
 /// A massless leaf makes the joint-space inertia singular: ABA says so instead of dividing by 0.

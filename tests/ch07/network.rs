@@ -34,7 +34,12 @@ fn eq_7_5_3_laplacians_and_det_gamma() {
 #[test]
 fn eq_7_5_17_corrected_relative_matrices_two_masses() {
     let (m1, m2, c12, k12) = (2.0, 3.0, 0.7, 11.0);
-    let net = Network { masses: vec![m1, m2], springs: vec![pair(0, 1, k12)], dashpots: vec![pair(0, 1, c12)], inerters: vec![] };
+    let net = Network {
+        masses: vec![m1, m2],
+        springs: vec![pair(0, 1, k12)],
+        dashpots: vec![pair(0, 1, c12)],
+        inerters: vec![],
+    };
     let (mt, ct, kt) = net.relative_matrices().unwrap();
     let mb = m1 + m2;
     assert_close_slice(mt.as_slice(), &[m1 * m2 / mb, 0.0, 0.0, 1.0 / mb], 8.0 * EPS);
@@ -67,7 +72,12 @@ fn eq_7_5_18_corrected_relative_matrices_three_masses() {
 #[test]
 fn problem_7_16_2_inerter_adds_to_reduced_mass() {
     let (m1, m2, b, k) = (2.0, 3.0, 0.8, 5.0);
-    let net = Network { masses: vec![m1, m2], springs: vec![pair(0, 1, k)], dashpots: vec![], inerters: vec![pair(0, 1, b)] };
+    let net = Network {
+        masses: vec![m1, m2],
+        springs: vec![pair(0, 1, k)],
+        dashpots: vec![],
+        inerters: vec![pair(0, 1, b)],
+    };
     let q = [0.0, 0.4];
     let qdd = net.accelerations(&q, &[0.0, 0.0], &[0.0, 0.0]).unwrap();
     let mu = m1 * m2 / (m1 + m2);

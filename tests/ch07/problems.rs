@@ -65,8 +65,22 @@ fn problem_7_17_2_platform_with_spinning_dumbbell() {
     let (m, r, l) = (0.6, 0.4, 1.1);
     let (th, w1, w2, w1d, w2d) = (0.5, 1.3, 0.7, -0.4, 0.9);
     let j = Matrix3::from_diagonal(&Vector3::new(2.0 * m * r * r, 2.0 * m * r * r, 0.0));
-    let platform = Link::new(None, Joint::Pin { axis: Vector3::z() }, Vector3::zeros(), 1.0, Vector3::zeros(), Matrix3::identity());
-    let dumbbell = Link::new(Some(0), Joint::Pin { axis: Vector3::y() }, Vector3::new(0.0, l, 0.0), 2.0 * m, Vector3::zeros(), j);
+    let platform = Link::new(
+        None,
+        Joint::Pin { axis: Vector3::z() },
+        Vector3::zeros(),
+        1.0,
+        Vector3::zeros(),
+        Matrix3::identity(),
+    );
+    let dumbbell = Link::new(
+        Some(0),
+        Joint::Pin { axis: Vector3::y() },
+        Vector3::new(0.0, l, 0.0),
+        2.0 * m,
+        Vector3::zeros(),
+        j,
+    );
     let model = Model::new(&[platform, dumbbell]).unwrap();
     let id = model.rnea(&[0.0, th], &[w2, w1], &[w2d, w1d], None).unwrap();
     // the joint wrench at b is resolved in the dumbbell frame: back to the platform frame
@@ -90,7 +104,11 @@ fn problem_7_17_2_platform_with_spinning_dumbbell() {
     let omega = a.vector([0.0, w1, w2]);
     let body = RigidBody::new(props, a.vector([-w2 * l, 0.0, 0.0]), omega);
     let h = body.angular_momentum_about_centre().resolve(&a);
-    assert_close_slice(h.as_slice(), &[-2.0 * m * r * r * w2 * s * c, 2.0 * m * r * r * w1, 2.0 * m * r * r * w2 * s * s], 16.0 * EPS);
+    assert_close_slice(
+        h.as_slice(),
+        &[-2.0 * m * r * r * w2 * s * c, 2.0 * m * r * r * w1, 2.0 * m * r * r * w2 * s * s],
+        16.0 * EPS,
+    );
     let alpha = a.vector([-w1 * w2, w1d, w2d]);
     let moment = props.inertia_about_centre().apply(&alpha) + body.gyroscopic_moment();
     assert_close_slice(moment.resolve(&a).as_slice(), &want, 64.0 * EPS);
@@ -104,9 +122,20 @@ fn problem_7_17_2_platform_with_spinning_dumbbell() {
 fn problem_7_17_5_tilted_cylinder_on_shaft() {
     let (m, r, h, th, tau, omega) = (2.0, 0.3, 1.2, 0.4, 0.7, 3.0);
     // J_c of the cylinder about its own axis (ẑ before tilting), then tilted about ŷ by θ
-    let jc = Matrix3::from_diagonal(&Vector3::new(m * (3.0 * r * r + h * h) / 12.0, m * (3.0 * r * r + h * h) / 12.0, m * r * r / 2.0));
+    let jc = Matrix3::from_diagonal(&Vector3::new(
+        m * (3.0 * r * r + h * h) / 12.0,
+        m * (3.0 * r * r + h * h) / 12.0,
+        m * r * r / 2.0,
+    ));
     let rot = Rotation3::from_axis_angle(&Vector3::y_axis(), th).into_inner();
-    let link = Link::new(None, Joint::Pin { axis: Vector3::z() }, Vector3::zeros(), m, Vector3::zeros(), rot * jc * rot.transpose());
+    let link = Link::new(
+        None,
+        Joint::Pin { axis: Vector3::z() },
+        Vector3::zeros(),
+        m,
+        Vector3::zeros(),
+        rot * jc * rot.transpose(),
+    );
     let model = Model::new(&[link]).unwrap();
     let od = model.aba(&[0.0], &[omega], &[tau], None).unwrap()[0];
     let want = 12.0 * tau / (m * (6.0 * r * r + (h * h - 3.0 * r * r) * th.sin().powi(2)));

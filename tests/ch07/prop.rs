@@ -27,12 +27,16 @@ fn joint() -> impl Strategy<Value = Joint> {
 }
 
 fn link(parent_choice: f64, index: usize) -> impl Strategy<Value = Link> {
-    (joint(), triple(), 0.2..3.0f64, triple(), [0.1..1.0f64, 0.1..1.0f64, 0.1..1.0f64], triple(), triple()).prop_map(
-        move |(joint, offset, mass, com, l, rot, orient)| {
+    (joint(), triple(), 0.2..3.0f64, triple(), [0.1..1.0f64, 0.1..1.0f64, 0.1..1.0f64], triple(), triple())
+        .prop_map(move |(joint, offset, mass, com, l, rot, orient)| {
             // principal moments satisfying the triangle inequality: λ = a + b style sums
             let lam = Vector3::new(l[1] + l[2], l[0] + l[2], l[0] + l[1]);
             let r = Rotation3::from_scaled_axis(Vector3::from(rot) * 0.3).into_inner();
-            let parent = if index == 0 { None } else { Some(((parent_choice * index as f64) as usize).min(index - 1)) };
+            let parent = if index == 0 {
+                None
+            } else {
+                Some(((parent_choice * index as f64) as usize).min(index - 1))
+            };
             let mut link = Link::new(
                 parent,
                 joint,
@@ -43,8 +47,7 @@ fn link(parent_choice: f64, index: usize) -> impl Strategy<Value = Link> {
             );
             link.orientation = Rotation3::from_scaled_axis(Vector3::from(orient) * 0.3).into_inner();
             link
-        },
-    )
+        })
 }
 
 fn tree() -> impl Strategy<Value = Model> {

@@ -15,7 +15,10 @@ fn eq_7_3_1_newton_second_law_particle() {
     let a = Frame::new();
     let acc = particle_acceleration(2.0, &a.vector([4.0, -2.0, 1.0])).unwrap();
     assert_close_slice(acc.resolve(&a).as_slice(), &[2.0, -1.0, 0.5], EPS);
-    assert!(matches!(particle_acceleration(0.0, &a.vector([1.0, 0.0, 0.0])), Err(DynamicsError::InvalidParameter { .. })));
+    assert!(matches!(
+        particle_acceleration(0.0, &a.vector([1.0, 0.0, 0.0])),
+        Err(DynamicsError::InvalidParameter { .. })
+    ));
 }
 
 /// Fact 7.8.? / §7.8 and notes §3: "the axial spin of a rod is inert": a thin rod (rank-2
@@ -51,7 +54,11 @@ fn eq_7_8_7_euler_about_any_body_point() {
     )
     .unwrap();
     let body = RigidBody::new(props, a.vector([0.1, 0.2, -0.3]), a.vector([0.4, -1.1, 0.8]));
-    let wrench = Wrench { force: a.vector([1.0, 2.0, -0.5]), moment: a.vector([0.3, -0.2, 0.7]), about: Point::origin() };
+    let wrench = Wrench {
+        force: a.vector([1.0, 2.0, -0.5]),
+        moment: a.vector([0.3, -0.2, 0.7]),
+        about: Point::origin(),
+    };
     let (a_c, alpha) = body.accelerations(&wrench).unwrap();
     let c = props.centre_of_mass();
     for z in [Point::origin(), Point::at(a.vector([1.0, -2.0, 0.5]))] {
@@ -69,10 +76,16 @@ fn eq_7_8_7_euler_about_any_body_point() {
 #[test]
 fn eq_7_10_9_six_d_form_reproduces_newton_euler() {
     let a = Frame::new();
-    let props = MassProperties::new(1.5, Point::at(a.vector([0.2, 0.1, -0.3])), a.dyadic(&Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 2.5)))).unwrap();
+    let props = MassProperties::new(
+        1.5,
+        Point::at(a.vector([0.2, 0.1, -0.3])),
+        a.dyadic(&Matrix3::from_diagonal(&Vector3::new(1.0, 2.0, 2.5))),
+    )
+    .unwrap();
     let z = Point::at(a.vector([-0.5, 0.4, 0.2]));
     let body = RigidBody::new(props, Vector::zero(), a.vector([0.3, -0.6, 1.2]));
-    let (v_z, a_z, alpha) = (a.vector([0.7, 0.1, -0.2]), a.vector([0.2, -0.9, 0.4]), a.vector([1.1, 0.3, -0.5]));
+    let (v_z, a_z, alpha) =
+        (a.vector([0.7, 0.1, -0.2]), a.vector([0.2, -0.9, 0.4]), a.vector([1.1, 0.3, -0.5]));
     let (f, m) = newton_euler_6d(&props.spatial_inertia(&z), &v_z, &body.omega, &a_z, &alpha);
     assert!(body.newton_residual_about(&z, &a_z, &alpha, &f).norm() < 64.0 * EPS);
     assert!(body.euler_residual_about(&z, &a_z, &alpha, &m).norm() < 64.0 * EPS);
@@ -84,7 +97,8 @@ fn eq_7_10_9_six_d_form_reproduces_newton_euler() {
 fn section_7_9_eigenaxis_form() {
     use vectrix::kinematics::attitude::jacobian_right;
     let j = Matrix3::new(3.0, 0.1, 0.0, 0.1, 4.0, -0.2, 0.0, -0.2, 5.0);
-    let (th, thd, m) = (Vector3::new(0.4, -0.9, 1.3), Vector3::new(0.3, 0.2, -0.5), Vector3::new(0.1, -0.4, 0.2));
+    let (th, thd, m) =
+        (Vector3::new(0.4, -0.9, 1.3), Vector3::new(0.3, 0.2, -0.5), Vector3::new(0.1, -0.4, 0.2));
     let thdd = eigenaxis_acceleration(&j, &th, &thd, &m).unwrap();
     let h = 1e-5;
     let s_dot = (jacobian_right(&(th + thd * h)) - jacobian_right(&(th - thd * h))) / (2.0 * h);
@@ -106,7 +120,9 @@ fn section_7_9_eigenaxis_form() {
 fn intermediate_axis_flip_period_matches_elliptic_function() {
     let b = Frame::new();
     let jd = [1.0, 2.0, 3.0];
-    let props = MassProperties::new(1.0, Point::origin(), b.dyadic(&Matrix3::from_diagonal(&Vector3::from(jd)))).unwrap();
+    let props =
+        MassProperties::new(1.0, Point::origin(), b.dyadic(&Matrix3::from_diagonal(&Vector3::from(jd))))
+            .unwrap();
     let f = |_t: f64, w: &SVector<f64, 3>| {
         let body = RigidBody::new(props, Vector::zero(), b.vector([w[0], w[1], w[2]]));
         let (_, alpha) = body.accelerations(&Wrench::zero(Point::origin())).unwrap();
@@ -114,7 +130,11 @@ fn intermediate_axis_flip_period_matches_elliptic_function() {
     };
     let w0 = SVector::<f64, 3>::new(1e-3, 1.0, 1e-3);
     let mut events = [vectrix::ode::Event::new(|_t, w: &SVector<f64, 3>| w[1])];
-    let sol = Adaptive::dop853().rtol(1e-12).atol(1e-14).solve_with_events(f, 0.0, &w0, 100.0, &mut events).unwrap();
+    let sol = Adaptive::dop853()
+        .rtol(1e-12)
+        .atol(1e-14)
+        .solve_with_events(f, 0.0, &w0, 100.0, &mut events)
+        .unwrap();
     let t: Vec<f64> = sol.events.iter().map(|e| e.t).collect();
     assert!(t.len() >= 3, "{t:?}");
     let two_t: f64 = (0..3).map(|i| jd[i] * w0[i] * w0[i]).sum();

@@ -34,7 +34,7 @@ pub fn eigenaxis_acceleration(
     // (7.9.1): ω = S(Θ) Θ̇
     let omega = jacobian_right(theta) * theta_dot;
     // Ṡ Θ̇ = d/dε [S(Θ + εΘ̇)] Θ̇
-    let th_d: Vector3<Dual64> = theta.zip_map(theta_dot, |x, dx| Dual64::new(x, dx));
+    let th_d: Vector3<Dual64> = theta.zip_map(theta_dot, Dual64::new);
     let s_dot_theta_dot = (jacobian_right(&th_d) * theta_dot.map(Dual64::from)).map(|x| x.eps);
     let chol = j_in_b.cholesky().ok_or_else(|| DynamicsError::SingularMassMatrix {
         detail: "J|_B is not positive definite".into(),

@@ -36,7 +36,7 @@ pub use error::DynamicsError;
 pub use impact::{ImpactEnd, ImpactRun, ZenoGuard, simulate_with_impacts};
 pub use lagrange::{KinematicMap, Lagrangian, MapMasses};
 pub use multibody::{Joint, Link, Model};
-pub use network::{Element, Network};
+pub use network::{Element, Network, NetworkMatrices};
 pub use rigid::{RigidBody, particle_acceleration};
 pub use sixd::{newton_euler_6d, twist_cross_matrix};
 

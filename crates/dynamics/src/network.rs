@@ -9,6 +9,9 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::DynamicsError;
 
+/// (M, C, K) or (M̃, C̃, K̃) of a network (7.5.7).
+pub type NetworkMatrices = (DMatrix<f64>, DMatrix<f64>, DMatrix<f64>);
+
 /// One element between particles i and j (or between particle i and the ground when
 /// `j` is `None`) with coefficient `value` > 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -65,7 +68,7 @@ impl Network {
     /// # Errors
     /// [`DynamicsError::InvalidParameter`] for masses ≤ 0 or negative coefficients;
     /// [`DynamicsError::Disconnected`] for an element naming a missing particle.
-    pub fn matrices(&self) -> Result<(DMatrix<f64>, DMatrix<f64>, DMatrix<f64>), DynamicsError> {
+    pub fn matrices(&self) -> Result<NetworkMatrices, DynamicsError> {
         let n = self.masses.len();
         for &m in &self.masses {
             if !(m.is_finite() && m > 0.0) {
@@ -108,7 +111,7 @@ impl Network {
     ///
     /// # Errors
     /// As [`Network::matrices`]; [`DynamicsError::SingularMassMatrix`] for an empty network.
-    pub fn relative_matrices(&self) -> Result<(DMatrix<f64>, DMatrix<f64>, DMatrix<f64>), DynamicsError> {
+    pub fn relative_matrices(&self) -> Result<NetworkMatrices, DynamicsError> {
         let (m, c, k) = self.matrices()?;
         let gi = self
             .gamma()

@@ -55,12 +55,11 @@ pub trait KinematicMap {
     }
 }
 
+/// Particle positions and body (centre, 𝓡_{B/A}) resolved in A.
+type Resolved<T> = (Vec<Vector3<T>>, Vec<(Vector3<T>, Matrix3<T>)>);
+
 /// Positions and rotation matrices 𝓡_{B/A} resolved in one fixed frame A.
-fn evaluate<K: KinematicMap, T: Scalar>(
-    sys: &K,
-    q: &[T],
-    t: T,
-) -> (Vec<Vector3<T>>, Vec<(Vector3<T>, Matrix3<T>)>) {
+fn evaluate<K: KinematicMap, T: Scalar>(sys: &K, q: &[T], t: T) -> Resolved<T> {
     let a = Frame::<T>::identity();
     let p = sys.particles(q, t).iter().map(|r| r.resolve(&a)).collect();
     let b = sys.bodies(q, t).iter().map(|(r, f)| (r.resolve(&a), f.rotation_rel(&a))).collect();
@@ -130,8 +129,8 @@ fn assemble<K: KinematicMap>(sys: &K, q: &[f64], qd: &[f64], t: f64) -> Result<M
         let omega_dot0 = vee(&(r_ddot * r_ba.transpose() + r_dot * r_dot.transpose()));
         let j_a = r_ba * j_b * r_ba.transpose();
         let mut jw = DMatrix::<f64>::zeros(3, r);
-        for k in 0..r {
-            jw.set_column(k, &vee(&(jr[i][k] * r_ba.transpose())));
+        for (k, d_r) in jr[i].iter().enumerate() {
+            jw.set_column(k, &vee(&(d_r * r_ba.transpose())));
         }
         let j_ad = DMatrix::from_column_slice(3, 3, j_a.as_slice());
         m += jc[i].transpose() * &jc[i] * mb + jw.transpose() * &j_ad * &jw;

@@ -132,7 +132,7 @@ impl Model {
                     };
                     let U = IA * sv;
                     let D = sv.dot(&U);
-                    if !(D > f64::EPSILON * IA.norm().max(f64::MIN_POSITIVE)) {
+                    if D.is_nan() || D <= f64::EPSILON * IA.norm().max(f64::MIN_POSITIVE) {
                         return Err(DynamicsError::SingularMassMatrix {
                             detail: format!(
                                 "articulated inertia SᵀIᴬS = {D:e} at velocity coordinate {}",

@@ -10,5 +10,5 @@ mod rnea;
 mod spatial;
 
 pub use aba::AbaScratch;
-pub use model::{Joint, Link, Model};
+pub use model::{Joint, Link, Model, Pose};
 pub use rnea::{InverseDynamics, JointWrench, LinkWrenches, Scratch};

@@ -104,6 +104,9 @@ impl Link {
     }
 }
 
+/// A link pose: 𝓞_{link/ground} and r_{link origin/ground origin} resolved in the ground frame.
+pub type Pose = (Matrix3<f64>, Vector3<f64>);
+
 /// Elementary joints the book's joints are made of.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Elem {
@@ -424,7 +427,7 @@ impl Model {
     ///
     /// # Errors
     /// As [`Model::integrate`].
-    pub fn poses(&self, q: &[f64]) -> Result<Vec<(Matrix3<f64>, Vector3<f64>)>, DynamicsError> {
+    pub fn poses(&self, q: &[f64]) -> Result<Vec<Pose>, DynamicsError> {
         self.check_q(q)?;
         let mut world: Vec<Xform> = Vec::with_capacity(self.segs.len());
         for s in &self.segs {
