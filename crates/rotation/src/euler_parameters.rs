@@ -8,7 +8,7 @@
 use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
-use crate::series::{all_finite, canonical_sign, norm3, sinc};
+use crate::series::{canonical_sign, norm3, sinc};
 use crate::{AxisAngle, Quaternion, RotationError, check_rotation_matrix};
 
 impl<T: Scalar> Quaternion<T> {
@@ -136,15 +136,18 @@ impl<T: Scalar> Quaternion<T> {
     /// # Errors
     /// [`RotationError::Zero`] for a zero axis, [`RotationError::NonFinite`].
     pub fn from_axis_angle(axis: &Vector3<T>, theta: T) -> Result<Self, RotationError> {
-        if !all_finite(axis.iter().copied().chain([theta])) {
+        let n = norm3(axis);
+        // One test covers every component: |n| and θ are finite exactly when all inputs are.
+        if !(n.re().is_finite() && theta.re().is_finite()) {
             return Err(RotationError::NonFinite { what: "axis or angle" });
         }
-        let n = norm3(axis);
         if n == T::zero() {
             return Err(RotationError::Zero { what: "rotation axis" });
         }
         let (s, c) = (theta * T::lit(0.5)).sin_cos();
-        Ok(Self::from_parts(c, axis * (s / n)).canonical())
+        let q = Self::from_parts(c, axis * (s / n));
+        // η = cos(θ/2) < 0 only for |θ| > π.
+        Ok(if c <= T::zero() { q.canonical() } else { q })
     }
 
     /// Eigenaxis and eigenangle θ = 2 atan2(|ε|, η) ∈ [0, π] (never acos), resolved in the

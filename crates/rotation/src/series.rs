@@ -22,13 +22,15 @@ pub(crate) fn sinc<T: Scalar>(x: T) -> T {
 /// Euclidean norm without underflow or overflow: components of 1e-300 keep their length.
 #[inline]
 pub(crate) fn norm3<T: Scalar>(v: &Vector3<T>) -> T {
+    // Fast path: |v|² neither underflows nor overflows.
+    let n2 = v.norm_squared();
+    let r = n2.re();
+    if r > 1e-290 && r < 1e290 {
+        return n2.sqrt();
+    }
     let m = v.x.abs().max(v.y.abs()).max(v.z.abs());
     if m == T::zero() {
         return m;
-    }
-    let r = m.re();
-    if r > 1e-150 && r < 1e150 {
-        return v.norm();
     }
     (v / m).norm() * m
 }
