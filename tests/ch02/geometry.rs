@@ -493,6 +493,34 @@ mod prop {
             prop_assert!((b.tensor(p, q, &got).unwrap().resolve(&a) - &t_a).amax() <= 128.0 * EPS * (p + q + 1) as f64);
         }
 
+        /// Fact 2.1.1: a ≡ a + 2πk, wrapping lands in (−π, π] and is congruent to its input;
+        /// sums of congruent angles are congruent (viii).
+        #[test]
+        fn congruence_and_wrapping(x in angle(), y in angle(), k in -1000i32..1000) {
+            let shifted = x + TAU * f64::from(k);
+            // Rounding of x + 2πk is |2πk|·ε; allow that.
+            let tol = 8.0 * EPS * (TAU * f64::from(k.abs()) + PI);
+            prop_assert!(congruent(x, shifted, tol));
+            let w = wrap_angle(shifted);
+            prop_assert!(w > -PI && w <= PI);
+            prop_assert!(congruent(w, x, tol));
+            prop_assert!(congruent(x + y, wrap_angle(shifted) + y, 2.0 * tol));
+        }
+
+        /// (2.3.2)–(2.3.4): θ_{x/y/n} = −θ_{y/x/n} and θ_{y/x/−n} = −θ_{y/x/n}, except that π stays
+        /// π; θ_{x/y/−n} = θ_{y/x/n}.
+        #[test]
+        fn directed_angle_symmetries(x in direction(), y in direction()) {
+            let a = Frame::new();
+            let (x, y) = (a.vector(x), a.vector(y));
+            if let Some(n) = x.cross(&y).unit() {
+                let d = y.directed_angle_rel(&x, &n).unwrap();
+                prop_assert!((x.directed_angle_rel(&y, &n).unwrap() + d).abs() <= 64.0 * EPS);
+                prop_assert!((y.directed_angle_rel(&x, &-n).unwrap() + d).abs() <= 64.0 * EPS);
+                prop_assert!((x.directed_angle_rel(&y, &-n).unwrap() - d).abs() <= 64.0 * EPS);
+            }
+        }
+
         /// Jacobi (Prob 2.26.6) and the triple products (2.4.34–37) at all magnitudes.
         #[test]
         fn jacobi_and_triple_products(x in comps(), y in comps(), z in comps()) {
