@@ -509,3 +509,21 @@ fn notation_orientation_rel_is_sympy_dcm_and_scipy_transpose() {
     assert_mat_close(&b.orientation_rel(&a), &sympy_dcm, 4.0 * EPS);
     assert_mat_close(&b.rotation_rel(&a), &sympy_dcm.transpose(), 4.0 * EPS);
 }
+
+/// Fact 3.6.1: (T₁⊗T₂)|_A = T₁|_A ⊗ T₂|_A (Kronecker product, first factor slowest), in any
+/// frame; and a contraction computed frame-free equals the same contraction of the resolved
+/// components (here (M⃗⊗x⃗)_(2,1) = M⃗x⃗, a resolved matrix–vector product).
+#[test]
+fn fact_3_6_1_resolution_of_tensor_product_is_kronecker() {
+    let (a, b) = frame_b();
+    let m = a.dyadic(&m3([[1.0, 2.0, 0.0], [-1.0, 3.0, 4.0], [0.5, 0.0, -2.0]]));
+    let x = b.vector([0.3, -1.2, 2.0]);
+    let (tm, tx) = (Tensor::from_dyadic(&m), Tensor::from_vector(&x));
+    let prod = tm.otimes(&tx).unwrap();
+    for f in [&a, &b] {
+        let want = tm.resolve(f).kronecker(&tx.resolve(f));
+        assert!((prod.resolve(f) - want).amax() < 32.0 * EPS, "(T₁⊗T₂)|_A = T₁|_A ⊗ T₂|_A");
+    }
+    let mx = prod.contract(&[(2, 1)]).unwrap();
+    assert_close_slice(mx.resolve(&b).as_slice(), &arr(m.resolve(&b) * x.resolve(&b)), 32.0 * EPS);
+}
