@@ -8,11 +8,27 @@
 
 use crate::{Bivector, Scalar, Tensor, TensorError, Trivector, Vector};
 
+/// Error-free product (Dekker/Veltkamp, no FMA needed): a·b = p + e exactly, p = fl(ab).
+#[inline(always)]
+fn two_product<T: Scalar>(a: T, b: T) -> (T, T) {
+    // Veltkamp split constant 2^⌈m/2⌉ + 1 for an m-bit significand (2^27 + 1 for f64).
+    let c = if T::eps() < 1e-10 { T::lit(134_217_729.0) } else { T::lit(4097.0) };
+    let split = |x: T| {
+        let t = c * x;
+        let hi = t - (t - x);
+        (hi, x - hi)
+    };
+    let p = a * b;
+    let ((ah, al), (bh, bl)) = (split(a), split(b));
+    let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    (p, e)
+}
+
 /// a·b − c·d to a few ulps of the result, so that nearly parallel vectors keep the relative
 /// accuracy of their wedge (ch. 3 notes, §3 "Cancellation"). Without cancellation
 /// (|ab − cd| ≥ ½(|ab| + |cd|)) the plain formula is already within 3ε relative; otherwise
-/// Kahan's fused-multiply-add algorithm recovers the lost digits (it is slow on targets
-/// without a hardware FMA, hence the fast path).
+/// both products are taken error-free (Dekker) and the cancelling difference is exact
+/// (Sterbenz), the same accuracy as Kahan's FMA algorithm without needing a hardware FMA.
 #[inline(always)]
 pub(crate) fn diff_of_products<T: Scalar>(a: T, b: T, c: T, d: T) -> T {
     let (ab, cd) = (a * b, c * d);
@@ -20,10 +36,11 @@ pub(crate) fn diff_of_products<T: Scalar>(a: T, b: T, c: T, d: T) -> T {
     if plain.abs() + plain.abs() >= ab.abs() + cd.abs() {
         return plain;
     }
-    // Kahan: w = cd rounded, e = w − cd exactly, f = ab − w with one rounding.
-    let e = (-c).mul_add(d, cd);
-    let f = a.mul_add(b, -cd);
-    f + e
+    // ab − cd = (p₁ − p₂) + (e₁ − e₂), p₁ − p₂ exact since p₁ ≈ p₂.
+    let ((p1, e1), (p2, e2)) = (two_product(a, b), two_product(c, d));
+    let r = (p1 - p2) + (e1 - e2);
+    // The split overflows for |x| ≳ 1e300; keep the plain value there.
+    if r.re().is_finite() { r } else { plain }
 }
 
 impl<T: Scalar> Vector<T> {
