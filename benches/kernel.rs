@@ -85,6 +85,16 @@ fn vector_ops(c: &mut Criterion) {
                 .fold(Vector3::zeros(), |acc, (x, y)| acc + x.cross(y))
         })
     });
+    // x∧y = 𝒥(x×y): the nalgebra peer is the cross product; vectrix adds the cancellation-free
+    // differences of products (notes §3), so this row shows the price of that accuracy.
+    g.bench_function("wedge/nalgebra_cross", |b| {
+        b.iter(|| {
+            black_box(&d.nxs)
+                .iter()
+                .zip(black_box(&d.nys))
+                .fold(Vector3::zeros(), |acc, (x, y)| acc + x.cross(y))
+        })
+    });
     g.bench_function("wedge/vectrix", |b| {
         b.iter(|| {
             black_box(&d.xs)

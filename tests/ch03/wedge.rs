@@ -206,6 +206,16 @@ fn dense_and_compressed_round_trip() {
     assert!(matches!(Bivector::from_tensor(&Tensor::<f64>::identity(), TOL), Err(TensorError::Shape { .. })));
     assert!(matches!(Trivector::from_tensor(&not_alt, TOL), Err(TensorError::Shape { .. })));
     assert!(matches!(Tensor::identity().wedge(&Tensor::<f64>::metric()), Err(TensorError::Shape { .. })));
+    // A whole multivector: grade by grade to dense tensors and back.
+    let m = mv(&a, 0.5, [1.0, -2.0, 0.25], [3.0, 0.0, -1.0], 0.75);
+    let parts: Vec<Tensor> = (0..=3).map(|k| m.grade_tensor(k).unwrap()).collect();
+    assert!(m.grade_tensor(4).is_none());
+    assert_mv_eq(&Multivector::from_grade_tensors(&parts, TOL).unwrap(), &m, &a, TOL);
+    assert!(matches!(Multivector::from_grade_tensors(&[not_alt], TOL), Err(TensorError::Shape { .. })));
+    assert!(matches!(
+        Multivector::from_grade_tensors(&[Tensor::<f64>::identity()], TOL),
+        Err(TensorError::Shape { .. })
+    ));
 }
 
 mod prop {

@@ -11,7 +11,7 @@ use core::ops::{Add, Mul, Neg, Sub};
 
 use nalgebra::Vector3;
 
-use crate::{Bivector, Scalar, Trivector, Vector};
+use crate::{Bivector, Scalar, Tensor, TensorError, Trivector, Vector};
 
 /// A multivector s + x⃗ + B + t𝒥 of Cl(3,0) (book §3.8): grades 0–3 with 1, 3, 3, 1
 /// components, frame-free like every kernel object.
@@ -153,6 +153,46 @@ impl<T: Scalar> Multivector<T> {
     /// volume convention, combined): √(⟨S S̃⟩₀).
     pub fn norm(&self) -> T {
         (self.s * self.s + self.v.norm_squared() + self.b.norm_squared() + self.t * self.t).sqrt()
+    }
+
+    /// The grade-k part expanded to its dense alternating (k, 0) tensor (determinant
+    /// convention: x⃗∧y⃗ = x⃗⊗y⃗ − y⃗⊗x⃗, entries ±coefficient, never 1/k!); `None` for k > 3.
+    ///
+    /// Book: (3.7.1), (3.7.11), (3.8.1); ch. 3 notes §3 "Alternating sparsity".
+    pub fn grade_tensor(&self, k: usize) -> Option<Tensor<T>> {
+        match k {
+            0 => Some(Tensor::scalar(self.s)),
+            1 => Some(Tensor::from_vector(&self.vector_part())),
+            2 => Some(self.bivector_part().to_tensor()),
+            3 => Some(self.trivector_part().to_tensor()),
+            _ => None,
+        }
+    }
+
+    /// The multivector Σ of dense alternating (k, 0) tensors, k ∈ 0..=3, compressed
+    /// (inverse of [`Multivector::grade_tensor`]); each must be alternating within `tol`
+    /// relative to its largest component.
+    ///
+    /// # Errors
+    /// [`TensorError::Shape`] for a tensor of mixed type, of order above 3, or not alternating.
+    pub fn from_grade_tensors(parts: &[Tensor<T>], tol: f64) -> Result<Self, TensorError> {
+        let mut m = Self::zero();
+        for t in parts {
+            match (t.p, t.q) {
+                (0, 0) => m.s += t.data[0],
+                (1, 0) => m.v += nalgebra::Vector3::from_column_slice(&t.data),
+                (2, 0) => m.b += Bivector::from_tensor(t, tol)?.c,
+                (3, 0) => m.t += Trivector::from_tensor(t, tol)?.t,
+                (p, q) => {
+                    return Err(TensorError::Shape {
+                        detail: format!(
+                            "a multivector part is an alternating (k, 0) tensor with k ≤ 3, got ({p}, {q})"
+                        ),
+                    });
+                }
+            }
+        }
+        Ok(m)
     }
 
     /// `true` when every component is finite.
