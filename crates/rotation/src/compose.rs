@@ -4,6 +4,8 @@
 use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::{Scalar, Vector, wrap_angle};
 
+use crate::series::wrap_near;
+
 use crate::{EulerAngles, EulerSequence, EulerSolution, Quaternion};
 
 /// 𝓞_{C/A} = 𝓞_{C/B} 𝓞_{B/A} (2.10.45).
@@ -86,6 +88,8 @@ pub fn compose_coplanar<T: Scalar>(th_2: &Vector<T>, th_1: &Vector<T>, tol: f64)
         return Some(Vector::zero());
     };
     // Signed angles about n̂, added and wrapped into (−π, π].
-    let sum = wrap_angle(n.dot(th_2) + n.dot(th_1));
+    let sum = n.dot(th_2) + n.dot(th_1);
+    // One shift suffices below 3π (and stays smooth for dual numbers); beyond, the general wrap.
+    let sum = if sum.re().abs() < 3.0 * core::f64::consts::PI { wrap_near(sum) } else { wrap_angle(sum) };
     Some(n * sum)
 }

@@ -15,7 +15,9 @@
 //! (2.13.17–18) corrected (b ≡ −asin r₁₃, never "b ≡ −r₁₃").
 
 use nalgebra::Matrix3;
-use vectrix_tensor::{Scalar, wrap_angle};
+use vectrix_tensor::Scalar;
+
+use crate::series::wrap_near as wrap_angle;
 
 use crate::{EulerAngles, EulerSequence, Quaternion, RotationError, check_rotation_matrix, rotation_about};
 

@@ -35,6 +35,20 @@ pub(crate) fn norm3<T: Scalar>(v: &Vector3<T>) -> T {
     (v / m).norm() * m
 }
 
+/// Wraps an angle in (−3π, 3π] into (−π, π] with at most one shift of 2π; π stays π (DESIGN
+/// §4). Unlike a floor-based wrap it is smooth for dual numbers (num-dual has no `floor`).
+#[inline]
+pub(crate) fn wrap_near<T: Scalar>(a: T) -> T {
+    let (pi, two_pi) = (T::pi(), T::two_pi());
+    if a > pi {
+        a - two_pi
+    } else if a <= -pi {
+        a + two_pi
+    } else {
+        a
+    }
+}
+
 /// The first nonzero component positive (DESIGN §4, canonical axis at θ = π).
 #[inline]
 pub(crate) fn canonical_sign<T: Scalar>(v: Vector3<T>) -> Vector3<T> {

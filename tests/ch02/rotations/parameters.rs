@@ -315,3 +315,26 @@ fn bad_input_returns_typed_errors() {
     let msg = Rotation::from_rotation_matrix_in(&a, &skew, ROTATION_TOL).unwrap_err().to_string();
     assert!(msg.contains("nearest_rotation"), "{msg}");
 }
+
+/// Generic scalar (DESIGN §1.4): dual numbers flow through exp/log and the Euler extraction, so
+/// dθ/dθ = 1 through q(θ) ↦ angle vector, and d/dψ of the extracted yaw is 1.
+#[test]
+fn dual_numbers_flow_through_conversions() {
+    use vectrix::num_dual::{Dual64, DualNum};
+    let th = Dual64::from(0.7).derivative();
+    let n = Vector3::new(Dual64::from(1.0), Dual64::from(2.0), Dual64::from(2.0));
+    let q = Quaternion::from_axis_angle(&n, th).unwrap();
+    let v = q.angle_vector();
+    assert_close(v.norm().eps, 1.0, 8.0 * EPS);
+    let psi = Dual64::from(0.4).derivative();
+    let e = EulerAngles::new(EulerSequence::S321, [psi, Dual64::from(-0.3), Dual64::from(1.2)]);
+    let back = EulerAngles::from_rotation_matrix_unchecked(
+        &e.rotation_matrix(),
+        EulerSequence::S321,
+        GIMBAL_LOCK_TOL,
+    );
+    let p = back.principal();
+    assert_close(p.angles[0].re(), 0.4, 8.0 * EPS);
+    assert_close(p.angles[0].eps, 1.0, 8.0 * EPS);
+    assert_close(p.angles[1].eps, 0.0, 8.0 * EPS);
+}
