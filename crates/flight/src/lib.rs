@@ -1,5 +1,34 @@
-//! vectrix-flight (in progress).
+//! # vectrix-flight: aircraft flight dynamics
+//!
+//! Aircraft frames and angles, the nonlinear 12-state equations of motion built on the
+//! rigid-body equations of `vectrix-dynamics`, aerodynamic models from stability and control
+//! derivatives, trim, linearization with dual numbers (including the descriptor forms with
+//! α̇ and β̇ terms), longitudinal and lateral models through `vectrix-lti`, and flight modes,
+//! after Bernstein, Goel and Ansari, ch. 10–14, with the errata of the chapter notes
+//! corrected.
+//!
+//! # Conventions
+//! Earth frame F_E with k̂_E down; aircraft frame F_AC with î through the nose, ĵ along the
+//! right wing, k̂ down; 3-2-1 Euler angles (Ψ, Θ, Φ); α = atan2(W, U),
+//! β = atan2(V, √(U²+W²)); state x = [X Y Z U V W Φ Θ Ψ P Q R] (11.5.1).
 #![warn(missing_docs)]
 
+mod catalog;
+mod derivatives;
+mod error;
+mod modes;
+
+pub use catalog::{
+    BUSINESS_JET_U0, boeing_747_longitudinal_a, business_jet_lateral, business_jet_longitudinal,
+};
+pub use derivatives::{Descriptor, LateralDerivatives, LongitudinalDerivatives};
+pub use error::FlightError;
+pub use modes::{
+    FlightMode, LateralModes, LongitudinalModes, characteristic_polynomial, eigenflight, eigenvector,
+    lateral_modes, longitudinal_modes,
+};
+
 /// `use vectrix_flight::prelude::*;`
-pub mod prelude {}
+pub mod prelude {
+    pub use crate::{FlightError, LateralDerivatives, LongitudinalDerivatives};
+}
