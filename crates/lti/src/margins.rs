@@ -101,6 +101,17 @@ fn positive_real_roots(p: &Polynomial) -> Result<Vec<f64>, LtiError> {
     Ok(out)
 }
 
+/// Q(x) with Q(ω²) = p(ω)/ω^shift, from the coefficients of ω^{2k + shift}.
+fn in_omega_squared(p: &Polynomial, shift: usize) -> Polynomial {
+    if p.is_zero() {
+        return p.clone();
+    }
+    let n = p.degree();
+    let m = if n >= shift { (n - shift) / 2 } else { 0 };
+    let asc: Vec<f64> = (0..=m).map(|k| p.coeff(2 * k + shift)).collect();
+    Polynomial::from_vec(asc.into_iter().rev().collect())
+}
+
 /// Newton refinement of a scalar function root from `w`, kept only while |f| decreases.
 fn refine(f: impl Fn(f64) -> f64, w: f64) -> f64 {
     let mut best = w;
@@ -144,9 +155,15 @@ impl TransferFunction {
         let (mut wg, mut wp) = if self.delay() == 0.0 {
             let (nr, ni) = jw_parts(self.num());
             let (dr, di) = jw_parts(self.den());
+            // |N|² − |D|² is even in ω and Im(N conj D) is odd: with x = ω² both halve in
+            // degree (cheaper and better conditioned); ω = √x for the roots x > 0.
             let gain_eq = nr.mul(&nr).add(&ni.mul(&ni)).sub(&dr.mul(&dr).add(&di.mul(&di)));
             let phase_eq = ni.mul(&dr).sub(&nr.mul(&di));
-            (positive_real_roots(&gain_eq)?, positive_real_roots(&phase_eq)?)
+            let sqrt_all = |v: Vec<f64>| v.into_iter().map(f64::sqrt).collect::<Vec<f64>>();
+            (
+                sqrt_all(positive_real_roots(&in_omega_squared(&gain_eq, 0))?),
+                sqrt_all(positive_real_roots(&in_omega_squared(&phase_eq, 1))?),
+            )
         } else {
             grid_crossings(&zpk)
         };
