@@ -82,7 +82,7 @@ impl<T: Scalar> CentralGravity<T> {
         Ok(Self { mu: check_coeff(mu, "gravitational parameter μ", "a finite μ = GM ≥ 0")? })
     }
 
-    /// The centre of mass M: μ = G M with [`GRAVITATIONAL_CONSTANT`].
+    /// An attracting particle of mass M: μ = G M with [`GRAVITATIONAL_CONSTANT`].
     ///
     /// Book: §6.12, (6.12.1).
     ///

@@ -24,8 +24,8 @@ pub const INERTIA_REL_TOL: f64 = 1024.0 * f64::EPSILON;
 ///
 /// Book: §6.2, (6.2.1)–(6.2.3).
 pub fn particle_inertia<T: Scalar>(m: T, r_y_z: &Vector<T>) -> Dyadic<T> {
-    // (6.2.3): J = m(|r|² I − r r′), with m folded into the scalars (fewer products)
-    Dyadic::identity() * (m * r_y_z.norm_squared()) - r_y_z.outer(&(*r_y_z * m))
+    // (6.2.3): J = m(|r|² I − r r′)
+    (Dyadic::identity() * r_y_z.norm_squared() - r_y_z.outer(r_y_z)) * m
 }
 
 /// Parallel-axis theorem: J⃗_{B/z} = J⃗_{B/c} + m_B(|r⃗|²I⃗ − r⃗r⃗′), r⃗ = r⃗_{z/c}.
