@@ -550,7 +550,7 @@ mod prop {
 
         // Event times on x = cos(t − φ) (oscillator with phase): zeros at φ + π/2 + jπ.
         #[test]
-        fn events_on_the_oscillator_at_any_phase(phi in 0.0..6.28f64) {
+        fn events_on_the_oscillator_at_any_phase(phi in 0.0..core::f64::consts::TAU) {
             let y0 = Vector2::new(phi.cos(), phi.sin());
             let mut ev = [Event::new(|_, y: &Vector2<f64>| y[0])];
             let sol = Adaptive::dop853().rtol(1e-12).atol(1e-12)

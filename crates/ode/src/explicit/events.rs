@@ -16,12 +16,15 @@ pub enum Direction {
     Either,
 }
 
+/// The event function g(t, y).
+type EventFn<'a, S> = Box<dyn FnMut(f64, &S) -> f64 + 'a>;
+
 /// An event g(t, y) = 0 with a crossing direction and a terminal flag (stop the
 /// integration at the first such event).
 ///
 /// Book: §4.11; HNW §II.6.
 pub struct Event<'a, S> {
-    pub(crate) g: Box<dyn FnMut(f64, &S) -> f64 + 'a>,
+    pub(crate) g: EventFn<'a, S>,
     pub(crate) direction: Direction,
     pub(crate) terminal: bool,
 }
