@@ -99,7 +99,11 @@ fn kepler(c: &mut Criterion) {
         let mut g = c.benchmark_group(format!("ode/kepler_e{e}_rtol1e-10"));
         g.bench_function("vectrix DOP853", |b| {
             b.iter(|| {
-                Adaptive::dop853().rtol(RTOL).atol(RTOL).solve(|t, y| k.rhs(t, y), 0.0, black_box(&y0), t1).unwrap()
+                Adaptive::dop853()
+                    .rtol(RTOL)
+                    .atol(RTOL)
+                    .solve(|t, y| k.rhs(t, y), 0.0, black_box(&y0), t1)
+                    .unwrap()
             })
         });
         g.bench_function("ode_solvers Dop853", |b| {
@@ -111,7 +115,11 @@ fn kepler(c: &mut Criterion) {
         });
         g.bench_function("vectrix DOPRI5", |b| {
             b.iter(|| {
-                Adaptive::dopri5().rtol(RTOL).atol(RTOL).solve(|t, y| k.rhs(t, y), 0.0, black_box(&y0), t1).unwrap()
+                Adaptive::dopri5()
+                    .rtol(RTOL)
+                    .atol(RTOL)
+                    .solve(|t, y| k.rhs(t, y), 0.0, black_box(&y0), t1)
+                    .unwrap()
             })
         });
         g.bench_function("ode_solvers Dopri5", |b| {
@@ -144,11 +152,14 @@ fn rigid_body(c: &mut Criterion) {
     );
     let mut g = c.benchmark_group("ode/rigidbody_t100_rtol1e-10");
     g.bench_function("vectrix DOP853", |b| {
-        b.iter(|| Adaptive::dop853().rtol(RTOL).atol(ATOL).solve(rigid_rhs, 0.0, black_box(&y0), 100.0).unwrap())
+        b.iter(|| {
+            Adaptive::dop853().rtol(RTOL).atol(ATOL).solve(rigid_rhs, 0.0, black_box(&y0), 100.0).unwrap()
+        })
     });
     g.bench_function("ode_solvers Dop853", |b| {
         b.iter(|| {
-            let mut s = Dop853::new(RigidSys, 0.0, 100.0, 100.0, black_box(Peer7::from_fn(|i, _| y0[i])), RTOL, ATOL);
+            let mut s =
+                Dop853::new(RigidSys, 0.0, 100.0, 100.0, black_box(Peer7::from_fn(|i, _| y0[i])), RTOL, ATOL);
             s.set_output(OutputType::Sparse);
             s.integrate().unwrap()
         })
