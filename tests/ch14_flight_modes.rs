@@ -1,0 +1,272 @@
+//! Chapter 14: linearized longitudinal and lateral models, transfer functions, modes and
+//! eigenflight (business jet of Tables 14.1–14.2, 747 of §14.7.3).
+//!
+//! Numbers are the book's printed values at the book's printed precision, or (marked [C])
+//! values the chapter notes computed independently from the printed data.
+mod support;
+
+use support::{EPS, assert_close};
+use vectrix::flight::*;
+use vectrix::lti::Complex64;
+
+/// Half a unit in the last printed digit: the tolerance for a value printed with `digits`
+/// decimals.
+fn printed(digits: i32) -> f64 {
+    0.5 * 10f64.powi(-digits)
+}
+
+fn jet_long_a() -> nalgebra::DMatrix<f64> {
+    business_jet_longitudinal().state_space().unwrap().a().clone()
+}
+
+fn jet_lat_a() -> nalgebra::DMatrix<f64> {
+    business_jet_lateral().state_space().unwrap().a().clone()
+}
+
+#[test]
+fn eq_14_1_13_business_jet_a_matrix_corrected() {
+    // (14.1.13): A = Υ⁻¹A₀. The book prints row 3 with (U₀ − Z_α̇)²; the correct single power
+    // (notes [T]) gives the [C] rows below (printed to 6 significant digits).
+    let a = jet_long_a();
+    let want = [
+        [-0.0074, 8.9782, 0.0, -32.2],
+        [-2.05623e-4, -0.659358, 0.995961, 0.0],
+        [9.83524e-4, -7.17377, -1.34426, 0.0],
+        [0.0, 0.0, 1.0, 0.0],
+    ];
+    for i in 0..4 {
+        for j in 0..4 {
+            assert_close(a[(i, j)], want[i][j], 5e-6 * want[i][j].abs().max(1.0));
+        }
+    }
+    let sys = business_jet_longitudinal().state_space().unwrap();
+    let b = sys.b();
+    // B = Υ⁻¹B₀ = [0, Z_δe/(U₀ − Z_α̇), M_δe + M_α̇ Z_δe/(U₀ − Z_α̇), 0]: [C] −0.06242 (the
+    // notes' −0.062416 carries a rounded U₀) and −17.64834.
+    assert_close(b[(1, 0)], -0.06242, printed(5));
+    assert_close(b[(2, 0)], -17.64834, 5e-6);
+    assert_eq!((b[(0, 0)], b[(3, 0)]), (0.0, 0.0));
+}
+
+#[test]
+fn problem_14_9_4_business_jet_longitudinal_characteristic_polynomial() {
+    // P14.9.4: s⁴ + 2.01s³ + 8.05s² + 0.085s + 0.068; [C] s⁴ + 2.011s³ + 8.048s² + 0.0848s + 0.0684.
+    let sys = business_jet_longitudinal().state_space().unwrap();
+    let p = characteristic_polynomial(&sys).unwrap();
+    let want = [1.0, 2.011, 8.048, 0.0848, 0.0684];
+    let digits = [3, 3, 3, 4, 4];
+    for k in 0..5 {
+        assert_close(p.coeffs()[k], want[k], printed(digits[k]));
+    }
+    // Routh: all first-column entries positive, so the jet is longitudinally stable.
+    let r = vectrix::lti::routh(&p).unwrap();
+    assert!(r.is_hurwitz());
+}
+
+#[test]
+fn section_14_7_business_jet_short_period_and_phugoid() {
+    // [C]: short period −1.001 ± 2.649j (ωn 2.832, ζ 0.3535, T½ 0.692 s);
+    // phugoid −0.0042 ± 0.0922j (ωn 0.0923, ζ 0.0457, T½ 164 s).
+    let m = longitudinal_modes(&jet_long_a()).unwrap();
+    let sp = m.short_period;
+    assert_close(sp.eigenvalue().re, -1.001, printed(3));
+    assert_close(sp.eigenvalue().im, 2.649, printed(3));
+    assert_close(sp.natural_frequency(), 2.8324, printed(4));
+    assert_close(sp.damping_ratio(), 0.3535, printed(4));
+    assert_close(sp.time_to_half().unwrap(), 0.692, printed(3));
+    let ph = m.phugoid;
+    assert_close(ph.eigenvalue().re, -0.0042, printed(4));
+    assert_close(ph.eigenvalue().im, 0.0922, printed(4));
+    assert_close(ph.damping_ratio(), 0.0457, printed(4));
+    assert_close(ph.time_to_half().unwrap(), 164.0, printed(0));
+}
+
+#[test]
+fn eq_14_2_7_business_jet_transfer_functions() {
+    // (14.2.7)/(14.2.8) labels are swapped in the book [T]: θ/δe has the quadratic numerator.
+    // [C]: θ/δe = (−17.648s² − 11.319s − 0.11593)/p, δα/δe = (−0.06242s³ − 17.661s² − 0.13069s
+    // − 0.11883)/p, u/δe = (−0.5604s² + 409.71s + 360.28)/p.
+    let sys = business_jet_longitudinal().state_space().unwrap();
+    let theta = sys.to_tf(3, 0).unwrap();
+    let num = theta.num().coeffs().to_vec();
+    let lead = theta.den().leading();
+    let got: Vec<f64> = num.iter().map(|c| c / lead).collect();
+    assert_eq!(got.len(), 3, "θ/δe has a quadratic numerator");
+    for (g, w) in got.iter().zip([-17.648, -11.319, -0.11593]) {
+        assert_close(*g, w, 5e-4 * w.abs());
+    }
+    let alpha = sys.to_tf(1, 0).unwrap();
+    let lead = alpha.den().leading();
+    for (g, w) in alpha.num().coeffs().iter().zip([-0.06242, -17.661, -0.13069, -0.11883]) {
+        assert_close(g / lead, w, 5e-4 * w.abs());
+    }
+    let u = sys.to_tf(0, 0).unwrap();
+    let lead = u.den().leading();
+    let un: Vec<f64> = u.num().trim(1e-12).coeffs().iter().map(|c| c / lead).collect();
+    for (g, w) in un.iter().rev().zip([360.28, 409.71, -0.5604]) {
+        assert_close(*g, w, 5e-4 * w.abs());
+    }
+    // (14.2.9): leading numerator coefficient of δα/δe is CB = Z_δe/(U₀ − Z_α̇).
+    let d = business_jet_longitudinal();
+    assert_close(alpha.num().leading() / lead, d.z_de / (d.u0 - d.z_alpha_dot), 64.0 * EPS);
+}
+
+#[test]
+fn eq_14_2_13_business_jet_impulse_final_range_and_altitude() {
+    // (14.2.13), (14.2.17) [C]: x∞/δē = D_u/H = 5268.8 ft/(rad·s); h∞/δē = U₀(D_θ − D_α)/H = 28.62.
+    let sys = business_jet_longitudinal().state_space().unwrap();
+    let du = sys.to_tf(0, 0).unwrap();
+    let x_inf = du.num().eval(0.0) / du.den().eval(0.0);
+    assert_close(x_inf, 5268.8, 0.05);
+    let dt = sys.to_tf(3, 0).unwrap();
+    let da = sys.to_tf(1, 0).unwrap();
+    let h_inf =
+        BUSINESS_JET_U0 * (dt.num().eval(0.0) / dt.den().eval(0.0) - da.num().eval(0.0) / da.den().eval(0.0));
+    assert_close(h_inf, 28.62, printed(2));
+}
+
+#[test]
+fn section_14_3_business_jet_lateral_a_and_b() {
+    // [C] A rows for x = [r, δβ, p, φ] and B for [δa, δr].
+    let sys = business_jet_lateral().state_space().unwrap();
+    let want = [
+        [-0.113316, 2.82474, 4.28355e-4, 0.0],
+        [-0.998861, -0.0820623, 0.0, 0.0476949],
+        [0.155273, -4.13896, -0.436493, 0.0],
+        [0.0, 0.0, 1.0, 0.0],
+    ];
+    for i in 0..4 {
+        for j in 0..4 {
+            assert_close(sys.a()[(i, j)], want[i][j], 5e-6 * want[i][j].abs().max(1e-3));
+        }
+    }
+    let b = [[-0.32323, -1.67871], [0.0, 0.015513], [6.76619, 0.62724], [0.0, 0.0]];
+    for i in 0..4 {
+        for j in 0..2 {
+            assert_close(sys.b()[(i, j)], b[i][j], 5e-5 * b[i][j].abs().max(1e-3));
+        }
+    }
+    let p = characteristic_polynomial(&sys).unwrap();
+    for (k, w) in [1.0, 0.631871, 2.91604, 1.43127, 0.00145011].iter().enumerate() {
+        assert_close(p.coeffs()[k], *w, 5e-6 * w.abs());
+    }
+}
+
+#[test]
+fn section_14_8_business_jet_dutch_roll_roll_spiral() {
+    // [C]: Dutch roll −0.065 ± 1.687j (ωn 1.6883, ζ 0.0384); roll −0.501 (τ 1.996 s);
+    // spiral −0.00102 (τ 985 s, stable).
+    let m = lateral_modes(&jet_lat_a()).unwrap();
+    assert_close(m.dutch_roll.eigenvalue().re, -0.065, printed(3));
+    assert_close(m.dutch_roll.eigenvalue().im, 1.687, printed(3));
+    assert_close(m.dutch_roll.natural_frequency(), 1.6883, printed(4));
+    assert_close(m.dutch_roll.damping_ratio(), 0.0384, printed(4));
+    assert_close(m.roll.eigenvalue().re, -0.501, printed(3));
+    assert_close(m.roll.time_constant().unwrap(), 1.996, printed(3));
+    assert_close(m.spiral.eigenvalue().re, -0.00102, printed(5));
+    assert_close(m.spiral.time_constant().unwrap(), 985.0, printed(0) * 2.0);
+}
+
+#[test]
+fn section_14_8_lateral_without_product_of_inertia() {
+    // [C]: with J_xz = 0 the Dutch roll is −0.0685 ± 1.6978j and the roll root −0.4954.
+    let mut d = business_jet_lateral();
+    d.jxz = 0.0;
+    let m = lateral_modes(d.state_space().unwrap().a()).unwrap();
+    assert_close(m.dutch_roll.eigenvalue().re, -0.0685, printed(4));
+    assert_close(m.dutch_roll.eigenvalue().im, 1.6978, printed(4));
+    assert_close(m.roll.eigenvalue().re, -0.4954, printed(4));
+}
+
+#[test]
+fn eq_14_4_19_business_jet_heading_after_impulse() {
+    // (14.4.19) [C]: ψ∞ = (D_r/H′)δā; per unit impulse aileron 584.6, rudder −170.25 rad/(rad·s).
+    // ψ̇ = r, so ψ∞ = lim s·(1/s)·r̂(s) = r/δ at s = 0.
+    let sys = business_jet_lateral().state_space().unwrap();
+    let ra = sys.to_tf(0, 0).unwrap();
+    let rr = sys.to_tf(0, 1).unwrap();
+    assert_close(ra.num().eval(0.0) / ra.den().eval(0.0), 584.6, printed(1));
+    assert_close(rr.num().eval(0.0) / rr.den().eval(0.0), -170.25, printed(2));
+}
+
+#[test]
+fn section_14_7_3_boeing_747_modes_and_table_14_3() {
+    // §14.7.3: λ_ph = −0.0087 ± 0.074j, λ_sp = −1.206 ± 1.49j; ωn,ph 0.0745, ζ_ph 0.117;
+    // ωn,sp 1.92, ζ_sp 0.628. Table 14.3: T_ph 84.34 s, T½ 79.5 s; T_sp 3.27 s, T½ 0.57 s.
+    let a = boeing_747_longitudinal_a();
+    let m = longitudinal_modes(&a).unwrap();
+    let (ph, sp) = (m.phugoid, m.short_period);
+    assert_close(ph.eigenvalue().re, -0.0087, printed(4));
+    assert_close(ph.eigenvalue().im, 0.074, printed(3));
+    assert_close(sp.eigenvalue().re, -1.206, printed(3));
+    assert_close(sp.eigenvalue().im, 1.49, printed(2));
+    assert_close(ph.natural_frequency(), 0.0745, printed(4));
+    assert_close(ph.damping_ratio(), 0.117, printed(3));
+    assert_close(sp.natural_frequency(), 1.92, printed(2));
+    assert_close(sp.damping_ratio(), 0.628, printed(3) * 2.0); // [C] 0.6286 rounds to 0.629
+    // Table 14.3 periods T = 2π/ωn (undamped) and half-amplitude times
+    assert_close(ph.period().unwrap(), 84.34, 0.05);
+    assert_close(ph.time_to_half().unwrap(), 79.5, 0.15); // [C] 79.58: the book truncates
+    assert_close(sp.period().unwrap(), 3.27, printed(2));
+    assert_close(sp.time_to_half().unwrap(), 0.57, printed(2));
+    // [C] damped periods 84.9 s and 4.21 s
+    assert_close(ph.damped_period().unwrap(), 84.9, printed(1));
+    assert_close(sp.damped_period().unwrap(), 4.21, printed(2));
+}
+
+#[test]
+fn eq_14_7_5_boeing_747_phugoid_eigenvector() {
+    // §14.7.3: phugoid eigenvector with u = 1: (1, −9.6e−5 − j5.0e−7, 1.74e−4 − j8.4e−6,
+    // −3.8e−4 − j2.3e−3). The printed ∠q = −2.83° is a typo for −2.774° ([C]; the printed
+    // −0.0484 rad is right).
+    let a = boeing_747_longitudinal_a();
+    let ph = longitudinal_modes(&a).unwrap().phugoid;
+    let v = eigenvector(&a, ph.eigenvalue(), 0).unwrap();
+    let want = [
+        Complex64::new(1.0, 0.0),
+        Complex64::new(-9.6e-5, -5.0e-7),
+        Complex64::new(1.74e-4, -8.4e-6),
+        Complex64::new(-3.8e-4, -2.3e-3),
+    ];
+    for (g, w) in v.iter().zip(want) {
+        // two printed significant digits of the largest part
+        assert!((g - w).norm() <= 0.05 * w.norm(), "{g} vs {w}");
+    }
+    assert_close(v[2].arg(), -0.0484, printed(4));
+    assert_close(v[2].arg().to_degrees(), -2.774, printed(3));
+    assert_close(v[3].arg().to_degrees(), -99.48, 0.1);
+}
+
+#[test]
+fn eq_14_6_13_eigenflight_is_a_solution() {
+    // (14.6.7): x(t) = Re(e^{λt}v) solves ẋ = Ax; check by central differences of the
+    // closed form against A x(t) for the business-jet short period.
+    let a = jet_long_a();
+    let sp = longitudinal_modes(&a).unwrap().short_period;
+    let v = eigenvector(&a, sp.eigenvalue(), 1).unwrap();
+    for &t in &[0.0, 0.7, 2.5] {
+        let h = 1e-5;
+        let xp = eigenflight(sp.eigenvalue(), &v, t + h);
+        let xm = eigenflight(sp.eigenvalue(), &v, t - h);
+        let x = nalgebra::DVector::from_vec(eigenflight(sp.eigenvalue(), &v, t));
+        let ax = &a * x;
+        for i in 0..4 {
+            // central difference error O(h²|λ|³) ≈ 1e-9 relative
+            assert_close((xp[i] - xm[i]) / (2.0 * h), ax[i], 1e-6 * (1.0 + ax[i].abs()));
+        }
+    }
+}
+
+#[test]
+fn eq_14_1_7_singular_descriptor_is_an_error() {
+    // Υ is singular when U₀ = Z_α̇; non-finite derivatives are rejected.
+    let mut d = business_jet_longitudinal();
+    d.z_alpha_dot = d.u0;
+    assert!(matches!(d.state_space(), Err(FlightError::SingularDescriptor { .. })));
+    let mut d = business_jet_longitudinal();
+    d.m_q = f64::NAN;
+    assert!(matches!(d.state_space(), Err(FlightError::NonFinite { .. })));
+    let mut l = business_jet_lateral();
+    l.jxx = -1.0;
+    assert!(matches!(l.state_space(), Err(FlightError::InvalidParameter { .. })));
+}
