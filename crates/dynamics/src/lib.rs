@@ -24,6 +24,7 @@ pub mod lagrange;
 pub mod multibody;
 mod network;
 mod rigid;
+pub mod scene;
 mod sixd;
 
 pub use collision::{

@@ -1,0 +1,554 @@
+//! From a scene file to a validated scene: names resolved to indices, joints to a
+//! [`Model`](crate::Model), shapes to mass properties, effects to their resolved form.
+//!
+//! Book: §7.11 (trees), §6.1–6.2 (mass properties), §1.5 (joints).
+
+use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
+
+use super::SceneError;
+use super::error::line_col;
+use super::spec::{Attach, EffectSpec, JointSpec, MassSpec, Profile, SceneSpec};
+use crate::multibody::{Joint, Link, Model};
+
+/// A body after validation: indices, offsets and mass properties in link components.
+#[derive(Debug, Clone)]
+pub(crate) struct Body {
+    pub name: String,
+    pub parent: Option<usize>,
+    pub joint: JointSpec,
+    /// 𝓞_{J/P}: joint frame relative to the parent link frame.
+    pub orient: Matrix3<f64>,
+    pub mass: f64,
+    pub com: Vector3<f64>,
+    pub inertia: Matrix3<f64>,
+    pub qi: usize,
+    pub vi: usize,
+}
+
+/// A point of a body (or of the ground, `None`), link components.
+pub(crate) type At = (Option<usize>, Vector3<f64>);
+
+/// Effects with names resolved.
+#[derive(Debug, Clone)]
+pub(crate) enum Effect {
+    /// Enters the model as its base acceleration (no per-body work in the right-hand side).
+    Uniform {
+        g: Vector3<f64>,
+    },
+    Central {
+        mu: f64,
+        centre: Vector3<f64>,
+    },
+    Mutual {
+        g: f64,
+    },
+    Spring {
+        a: At,
+        b: At,
+        k: f64,
+        d: f64,
+    },
+    Dashpot {
+        a: At,
+        b: At,
+        c: f64,
+    },
+    Inerter {
+        a: At,
+        b: At,
+        b_in: f64,
+    },
+    RotSpring {
+        dof: usize,
+        kappa: f64,
+        angle: f64,
+    },
+    RotDashpot {
+        dof: usize,
+        xi: f64,
+    },
+    RotInerter {
+        dof: usize,
+        beta: f64,
+    },
+    Dipoles {
+        list: Vec<(usize, Vector3<f64>)>,
+    },
+    Force {
+        at: At,
+        dir: Vector3<f64>,
+        profile: Profile,
+    },
+    Torque {
+        body: usize,
+        dir: Vector3<f64>,
+        profile: Profile,
+    },
+    Spheres {
+        a: usize,
+        b: usize,
+        ra: f64,
+        rb: f64,
+        e: f64,
+        mu: f64,
+    },
+    Plane {
+        body: usize,
+        r: f64,
+        point: Vector3<f64>,
+        n: Vector3<f64>,
+        e: f64,
+        mu: f64,
+    },
+    Rolling {
+        body: usize,
+        disk: bool,
+        r: f64,
+        point: Vector3<f64>,
+        n: Vector3<f64>,
+    },
+}
+
+/// Context for error locations.
+pub(crate) struct Src<'a> {
+    pub file: &'a str,
+    pub text: &'a str,
+}
+
+impl Src<'_> {
+    /// An `Invalid` error located at the first occurrence of `needle` (or at 1:1).
+    pub fn err(&self, needle: &str, path: impl Into<String>, message: impl Into<String>) -> SceneError {
+        let off = if needle.is_empty() { None } else { self.text.find(needle) };
+        let (line, column) = off.map_or((1, 1), |o| line_col(self.text, o));
+        SceneError::Invalid {
+            file: self.file.into(),
+            line,
+            column,
+            path: path.into(),
+            message: message.into(),
+        }
+    }
+}
+
+/// (nq, nv) of a joint.
+pub(crate) fn dims(j: &JointSpec) -> (usize, usize) {
+    match j {
+        JointSpec::Pin { .. } | JointSpec::Sleeve { .. } => (1, 1),
+        JointSpec::Collar { .. } | JointSpec::Slot { .. } => (2, 2),
+        JointSpec::Ball => (4, 3),
+        JointSpec::Weld => (0, 0),
+        JointSpec::Free => (7, 6),
+    }
+}
+
+/// Index of the rotation angle among a joint's velocity coordinates, if it has one angle.
+fn angle_dof(j: &JointSpec) -> Option<usize> {
+    match j {
+        JointSpec::Pin { .. } => Some(0),
+        JointSpec::Collar { .. } | JointSpec::Slot { .. } => Some(1),
+        _ => None,
+    }
+}
+
+fn v3(a: [f64; 3]) -> Vector3<f64> {
+    Vector3::new(a[0], a[1], a[2])
+}
+
+/// Mass m, centre offset, J_{B/c} (link components) of a mass spec.
+fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), String> {
+    let pos = |x: f64, what: &str| {
+        if x > 0.0 { Ok(x) } else { Err(format!("{what} = {x}; valid: a finite number > 0")) }
+    };
+    Ok(match m {
+        MassSpec::Particle { mass } => (pos(*mass, "mass")?, Matrix3::zeros()),
+        MassSpec::Sphere { mass, radius } => {
+            let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
+            (m, Matrix3::identity() * (0.4 * m * r * r))
+        }
+        MassSpec::Box { mass, sides } => {
+            let m = pos(*mass, "mass")?;
+            let [a, b, c] = [pos(sides[0], "side")?, pos(sides[1], "side")?, pos(sides[2], "side")?];
+            let d = Vector3::new(b * b + c * c, a * a + c * c, a * a + b * b) * (m / 12.0);
+            (m, Matrix3::from_diagonal(&d))
+        }
+        MassSpec::Rod { mass, length } => {
+            let (m, l) = (pos(*mass, "mass")?, pos(*length, "length")?);
+            (m, Matrix3::from_diagonal(&Vector3::new(0.0, m * l * l / 12.0, m * l * l / 12.0)))
+        }
+        MassSpec::Disk { mass, radius } => {
+            let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
+            (m, Matrix3::from_diagonal(&Vector3::new(m * r * r / 4.0, m * r * r / 4.0, m * r * r / 2.0)))
+        }
+        MassSpec::Value { mass, principal, matrix } => {
+            let m = pos(*mass, "mass")?;
+            match (principal, matrix) {
+                (Some(p), None) => (m, Matrix3::from_diagonal(&v3(*p))),
+                (None, Some(r)) => (m, Matrix3::from_fn(|i, j| r[i][j])),
+                _ => return Err("give exactly one of `principal` or `matrix`".into()),
+            }
+        }
+    })
+}
+
+/// Checks every number of the spec is finite (TOML admits `inf` and `nan`).
+fn check_finite(spec: &SceneSpec, src: &Src) -> Result<(), SceneError> {
+    fn walk(v: &toml::Value, path: &str, bad: &mut Option<String>) {
+        match v {
+            toml::Value::Float(x) if !x.is_finite() && bad.is_none() => *bad = Some(path.to_string()),
+            toml::Value::Array(a) => {
+                a.iter().enumerate().for_each(|(i, x)| walk(x, &format!("{path}[{i}]"), bad))
+            }
+            toml::Value::Table(t) => t.iter().for_each(|(k, x)| walk(x, &format!("{path}.{k}"), bad)),
+            _ => {}
+        }
+    }
+    let value = toml::Value::try_from(spec).map_err(|e| src.err("", "scene", e.to_string()))?;
+    let mut bad = None;
+    walk(&value, "", &mut bad);
+    if let Some(path) = bad {
+        let needle = ["nan", "inf"].iter().find(|n| src.text.contains(*n)).copied().unwrap_or("");
+        return Err(src.err(
+            needle,
+            path.trim_start_matches('.'),
+            "non-finite number; valid: finite numbers",
+        ));
+    }
+    Ok(())
+}
+
+/// The validated parts of a scene.
+pub(crate) struct Built {
+    pub model: Model,
+    pub bodies: Vec<Body>,
+    pub effects: Vec<Effect>,
+    pub q0: Vec<f64>,
+    pub v0: Vec<f64>,
+}
+
+/// Validates `spec` and assembles the model and the effects.
+pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
+    check_finite(spec, src)?;
+    if !(spec.duration > 0.0) {
+        return Err(src.err("duration", "duration", format!("{} s; valid: > 0", spec.duration)));
+    }
+    if spec.samples == 0 || spec.samples > 1_000_000 {
+        return Err(src.err("samples", "samples", format!("{}; valid: 1 ..= 1000000", spec.samples)));
+    }
+    if spec.bodies.is_empty() {
+        return Err(src.err("", "bodies", "no bodies; valid: at least one [[bodies]] table"));
+    }
+    let names: Vec<&str> = spec.bodies.iter().map(|b| b.name.as_str()).collect();
+    let index = |name: &str, path: &str| -> Result<Option<usize>, SceneError> {
+        if name == "ground" {
+            return Ok(None);
+        }
+        names.iter().position(|n| *n == name).map(Some).ok_or_else(|| {
+            src.err(
+                &format!("\"{name}\""),
+                path,
+                format!("unknown body `{name}`; valid: ground, {}", names.join(", ")),
+            )
+        })
+    };
+    let body_of = |name: &str, path: &str| -> Result<usize, SceneError> {
+        index(name, path)?.ok_or_else(|| src.err(name, path, "the ground cannot move; valid: a body name"))
+    };
+    let mut bodies = Vec::new();
+    let (mut nq, mut nv) = (0, 0);
+    for (i, b) in spec.bodies.iter().enumerate() {
+        let path = format!("bodies[{i}]");
+        let here = format!("\"{}\"", b.name);
+        if b.name == "ground" || names[..i].contains(&b.name.as_str()) {
+            return Err(src.err(&here, &path, format!("body name `{}` is reserved or repeated", b.name)));
+        }
+        let parent = index(&b.parent, &format!("{path}.parent"))?;
+        if parent == Some(i) {
+            return Err(src.err(&here, &path, "a body cannot be its own parent; joints must form a tree"));
+        }
+        let orient = match &b.frame {
+            None => Matrix3::identity(),
+            Some(f) => {
+                let fr = spec.frames.iter().find(|x| &x.name == f).ok_or_else(|| {
+                    src.err(
+                        f,
+                        format!("{path}.frame"),
+                        format!("unknown frame `{f}`; declare it in [[frames]]"),
+                    )
+                })?;
+                let axis = Unit::try_new(v3(fr.axis), 1e-12)
+                    .ok_or_else(|| src.err(&fr.name, "frames", "zero axis; valid: a nonzero vector"))?;
+                // 𝓞_{J/G} = 𝓡ᵀ of the active rotation of the ground axes
+                Rotation3::from_axis_angle(&axis, fr.angle).matrix().transpose()
+            }
+        };
+        let (mass, inertia) = mass_props(&b.mass).map_err(|m| src.err(&here, format!("{path}.mass"), m))?;
+        let (jq, jv) = dims(&b.joint);
+        bodies.push(Body {
+            name: b.name.clone(),
+            parent,
+            joint: b.joint.clone(),
+            orient,
+            mass,
+            com: v3(b.com),
+            inertia,
+            qi: nq,
+            vi: nv,
+        });
+        nq += jq;
+        nv += jv;
+    }
+    let links: Vec<Link> = spec
+        .bodies
+        .iter()
+        .zip(&bodies)
+        .map(|(s, b)| {
+            let joint = match s.joint {
+                JointSpec::Pin { axis } => Joint::Pin { axis: v3(axis) },
+                JointSpec::Sleeve { axis } => Joint::Sleeve { axis: v3(axis) },
+                JointSpec::Collar { axis } => Joint::Collar { axis: v3(axis) },
+                JointSpec::Slot { axis, direction } => {
+                    Joint::Slot { axis: v3(axis), direction: v3(direction) }
+                }
+                JointSpec::Ball => Joint::Ball,
+                JointSpec::Weld => Joint::Weld,
+                JointSpec::Free => Joint::Free,
+            };
+            let mut l = Link::new(b.parent, joint, v3(s.offset), b.mass, b.com, b.inertia);
+            l.orientation = b.orient;
+            l
+        })
+        .collect();
+    let model = Model::new(&links).map_err(|e| {
+        let i = match &e {
+            crate::DynamicsError::Cyclic { link } | crate::DynamicsError::ZeroAxis { link, .. } => *link,
+            crate::DynamicsError::JointGeometry { link, .. } => *link,
+            _ => 0,
+        };
+        src.err(
+            &format!("\"{}\"", names[i]),
+            format!("bodies[{i}]"),
+            format!("{e} (joints must form a tree)"),
+        )
+    })?;
+    let mut q0 = model.neutral();
+    let mut v0 = vec![0.0; model.nv()];
+    for (i, (s, b)) in spec.bodies.iter().zip(&bodies).enumerate() {
+        let (jq, jv) = dims(&b.joint);
+        let here = format!("\"{}\"", b.name);
+        if let Some(q) = &s.q {
+            if q.len() != jq {
+                return Err(src.err(
+                    &here,
+                    format!("bodies[{i}].q"),
+                    format!("{} values; valid: {jq} for this joint", q.len()),
+                ));
+            }
+            q0[b.qi..b.qi + jq].copy_from_slice(q);
+        }
+        if let Some(v) = &s.v {
+            if v.len() != jv {
+                return Err(src.err(
+                    &here,
+                    format!("bodies[{i}].v"),
+                    format!("{} values; valid: {jv} for this joint", v.len()),
+                ));
+            }
+            v0[b.vi..b.vi + jv].copy_from_slice(v);
+        }
+    }
+    // normalizes quaternions and rejects zero ones
+    q0 = model
+        .integrate(&q0, &vec![0.0; model.nv()], 0.0)
+        .map_err(|e| src.err("q =", "bodies.q", e.to_string()))?;
+    let effects = spec
+        .effects
+        .iter()
+        .enumerate()
+        .map(|(i, e)| effect(e, &format!("effects[{i}]"), &bodies, &index, &body_of, src))
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut model = model;
+    for e in &effects {
+        if let Effect::Uniform { g } = e {
+            model.gravity += g;
+        }
+    }
+    Ok(Built { model, bodies, effects, q0, v0 })
+}
+
+fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> {
+    if x >= 0.0 { Ok(x) } else { Err(src.err(what, path, format!("{what} = {x}; valid: ≥ 0"))) }
+}
+
+fn unit(x: [f64; 3], what: &str, path: &str, src: &Src) -> Result<Vector3<f64>, SceneError> {
+    let v = v3(x);
+    let n = v.norm();
+    if n > 1e-12 {
+        Ok(v / n)
+    } else {
+        Err(src.err(what, path, format!("{what} is zero; valid: a nonzero vector")))
+    }
+}
+
+type Index<'a> = dyn Fn(&str, &str) -> Result<Option<usize>, SceneError> + 'a;
+type BodyOf<'a> = dyn Fn(&str, &str) -> Result<usize, SceneError> + 'a;
+
+fn effect(
+    e: &EffectSpec,
+    path: &str,
+    bodies: &[Body],
+    index: &Index,
+    body_of: &BodyOf,
+    src: &Src,
+) -> Result<Effect, SceneError> {
+    let at = |a: &Attach| -> Result<At, SceneError> { Ok((index(&a.body, path)?, v3(a.point))) };
+    let dof = |name: &str| -> Result<usize, SceneError> {
+        let b = &bodies[body_of(name, path)?];
+        angle_dof(&b.joint).map(|k| b.vi + k).ok_or_else(|| {
+            src.err(
+                name,
+                path,
+                format!("body `{name}` has no single joint angle; valid: a pin, collar or slot joint"),
+            )
+        })
+    };
+    let free = |name: &str| -> Result<usize, SceneError> {
+        let i = body_of(name, path)?;
+        if bodies[i].joint != JointSpec::Free || bodies[i].parent.is_some() {
+            return Err(src.err(
+                name,
+                path,
+                format!("body `{name}` must be free and on the ground for impacts and rolling"),
+            ));
+        }
+        Ok(i)
+    };
+    let restitution = |x: f64| {
+        if (0.0..=1.0).contains(&x) {
+            Ok(x)
+        } else {
+            Err(src.err("restitution", path, format!("e = {x}; valid: 0 ≤ e ≤ 1")))
+        }
+    };
+    check_profile(e, path, src)?;
+    Ok(match e {
+        EffectSpec::UniformGravity { g } => Effect::Uniform { g: v3(*g) },
+        EffectSpec::CentralGravity { mu, centre } => {
+            Effect::Central { mu: nonneg(*mu, "mu", path, src)?, centre: v3(*centre) }
+        }
+        EffectSpec::MutualGravitation { g } => Effect::Mutual { g: nonneg(*g, "g", path, src)? },
+        EffectSpec::Spring { a, b, k, length } => Effect::Spring {
+            a: at(a)?,
+            b: at(b)?,
+            k: nonneg(*k, "k", path, src)?,
+            d: nonneg(*length, "length", path, src)?,
+        },
+        EffectSpec::Dashpot { a, b, c } => {
+            Effect::Dashpot { a: at(a)?, b: at(b)?, c: nonneg(*c, "c", path, src)? }
+        }
+        EffectSpec::Inerter { a, b, inertance } => {
+            Effect::Inerter { a: at(a)?, b: at(b)?, b_in: nonneg(*inertance, "inertance", path, src)? }
+        }
+        EffectSpec::RotationalSpring { body, kappa, angle } => {
+            Effect::RotSpring { dof: dof(body)?, kappa: nonneg(*kappa, "kappa", path, src)?, angle: *angle }
+        }
+        EffectSpec::RotationalDashpot { body, xi } => {
+            Effect::RotDashpot { dof: dof(body)?, xi: nonneg(*xi, "xi", path, src)? }
+        }
+        EffectSpec::RotationalInerter { body, beta } => {
+            Effect::RotInerter { dof: dof(body)?, beta: nonneg(*beta, "beta", path, src)? }
+        }
+        EffectSpec::Dipoles { dipoles } => Effect::Dipoles {
+            list: dipoles
+                .iter()
+                .map(|d| Ok((body_of(&d.body, path)?, v3(d.moment))))
+                .collect::<Result<_, SceneError>>()?,
+        },
+        EffectSpec::Force { at: a, direction, profile } => {
+            Effect::Force { at: at(a)?, dir: v3(*direction), profile: profile.clone() }
+        }
+        EffectSpec::Torque { body, direction, profile } => {
+            Effect::Torque { body: body_of(body, path)?, dir: v3(*direction), profile: profile.clone() }
+        }
+        EffectSpec::ContactSpheres { a, b, radius_a, radius_b, restitution: e, friction } => {
+            Effect::Spheres {
+                a: free(a)?,
+                b: free(b)?,
+                ra: nonneg(*radius_a, "radius_a", path, src)?,
+                rb: nonneg(*radius_b, "radius_b", path, src)?,
+                e: restitution(*e)?,
+                mu: nonneg(*friction, "friction", path, src)?,
+            }
+        }
+        EffectSpec::ContactPlane { body, radius, point, normal, restitution: e, friction } => Effect::Plane {
+            body: free(body)?,
+            r: nonneg(*radius, "radius", path, src)?,
+            point: v3(*point),
+            n: unit(*normal, "normal", path, src)?,
+            e: restitution(*e)?,
+            mu: nonneg(*friction, "friction", path, src)?,
+        },
+        EffectSpec::Rolling { body, shape, radius, point, normal } => {
+            let disk = match shape.as_str() {
+                "disk" => true,
+                "sphere" => false,
+                s => return Err(src.err(s, path, format!("shape `{s}`; valid: sphere, disk"))),
+            };
+            Effect::Rolling {
+                body: free(body)?,
+                disk,
+                r: nonneg(*radius, "radius", path, src)?,
+                point: v3(*point),
+                n: unit(*normal, "normal", path, src)?,
+            }
+        }
+    })
+}
+
+fn check_profile(e: &EffectSpec, path: &str, src: &Src) -> Result<(), SceneError> {
+    let p = match e {
+        EffectSpec::Force { profile, .. } | EffectSpec::Torque { profile, .. } => profile,
+        _ => return Ok(()),
+    };
+    match p {
+        Profile::Ramp { t0, t1, .. } if t1 <= t0 => {
+            Err(src.err("ramp", path, format!("t1 = {t1} ≤ t0 = {t0}; valid: t1 > t0")))
+        }
+        Profile::Table { t, value }
+            if t.len() != value.len() || t.is_empty() || t.windows(2).any(|w| w[1] <= w[0]) =>
+        {
+            Err(src.err(
+                "table",
+                path,
+                "valid: `t` and `value` of equal nonzero length, `t` strictly increasing",
+            ))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// f(t) of a profile.
+pub(crate) fn eval_profile(p: &Profile, t: f64) -> f64 {
+    match p {
+        Profile::Constant { value } => *value,
+        Profile::Step { at, before, after } => {
+            if t < *at {
+                *before
+            } else {
+                *after
+            }
+        }
+        Profile::Ramp { t0, t1, from, to } => from + (to - from) * ((t - t0) / (t1 - t0)).clamp(0.0, 1.0),
+        Profile::Sine { amplitude, omega, phase, offset } => offset + amplitude * (omega * t + phase).sin(),
+        Profile::Table { t: ts, value } => {
+            let k = ts.partition_point(|&x| x <= t);
+            if k == 0 {
+                value[0]
+            } else if k == ts.len() {
+                value[k - 1]
+            } else {
+                let s = (t - ts[k - 1]) / (ts[k] - ts[k - 1]);
+                value[k - 1] + s * (value[k] - value[k - 1])
+            }
+        }
+    }
+}

@@ -1,0 +1,124 @@
+//! Impacts of spheres with each other and with fixed planes: restitution along the normal
+//! and Coulomb friction (sticking impulse capped at μ times the normal impulse), applied as
+//! velocity jumps between integration steps.
+//!
+//! Book: §7.13 (collisions, restitution e (7.13.18)), §7.14 (impulses on rigid bodies).
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::Scene;
+use super::build::Effect;
+use super::kin::Kin;
+
+/// Tangential speed below which friction does nothing.
+const STICK_EPS: f64 = 1e-12;
+
+/// A free body's response: inverse mass, inverse inertia (ground), centre, velocity of the
+/// contact point.
+struct Resp {
+    i: usize,
+    m_inv: f64,
+    j_inv: Matrix3<f64>,
+    d: Vector3<f64>,
+    vp: Vector3<f64>,
+}
+
+impl Resp {
+    /// Velocity change of the contact point per unit impulse along u, projected on u.
+    fn k(&self, u: &Vector3<f64>) -> f64 {
+        u.dot(&(u * self.m_inv + (self.j_inv * self.d.cross(u)).cross(&self.d)))
+    }
+}
+
+impl Scene {
+    fn resp(&self, kin: &Kin, i: usize, d: Vector3<f64>) -> Resp {
+        let b = &self.built.bodies[i];
+        let e = kin.poses[i].0;
+        let j_inv = e.transpose() * b.inertia.try_inverse().unwrap_or_else(Matrix3::zeros) * e;
+        let (c, vc) = kin.point(&(Some(i), b.com));
+        let _ = c;
+        Resp { i, m_inv: 1.0 / b.mass, j_inv, d, vp: vc + kin.omega[i].cross(&d) }
+    }
+
+    /// Applies impulse `j` (ground) at the contact of `r` to the velocity coordinates.
+    fn kick(&self, kin: &Kin, r: &Resp, j: &Vector3<f64>, v: &mut [f64]) {
+        let b = &self.built.bodies[r.i];
+        let (e, _) = kin.poses[r.i];
+        let dw = r.j_inv * r.d.cross(j);
+        let dvc = j * r.m_inv;
+        let dvo = dvc - dw.cross(&(e.transpose() * b.com));
+        let lin = b.orient * dvo;
+        let ang = e * dw;
+        for k in 0..3 {
+            v[b.vi + k] += lin[k];
+            v[b.vi + 3 + k] += ang[k];
+        }
+    }
+
+    /// True when a declared contact could close within `dt` (then the caller substeps).
+    pub(crate) fn contact_near(&self, kin: &Kin, dt: f64) -> bool {
+        let c = |i: usize| kin.point(&(Some(i), self.built.bodies[i].com));
+        self.built.effects.iter().any(|e| match e {
+            Effect::Spheres { a, b, ra, rb, .. } => {
+                let ((xa, va), (xb, vb)) = (c(*a), c(*b));
+                let gap = (xa - xb).norm() - ra - rb;
+                gap <= 2.0 * (va - vb).norm() * dt + 1e-9 * (ra + rb)
+            }
+            Effect::Plane { body, r, point, n, .. } => {
+                let (x, v) = c(*body);
+                (x - point).dot(n) - r <= 2.0 * v.norm() * dt + 1e-9 * r
+            }
+            _ => false,
+        })
+    }
+
+    /// Resolves every touching, approaching contact once; returns how many impacts occurred.
+    pub(crate) fn impacts(&self, kin: &Kin, v: &mut [f64]) -> usize {
+        let mut count = 0;
+        for e in &self.built.effects {
+            let (ra_, rb_, n, e_, mu) = match e {
+                Effect::Spheres { a, b, ra, rb, e, mu } => {
+                    let (xa, xb) = (
+                        kin.point(&(Some(*a), self.built.bodies[*a].com)).0,
+                        kin.point(&(Some(*b), self.built.bodies[*b].com)).0,
+                    );
+                    let Some(n) = (xa - xb).try_normalize(1e-300) else { continue };
+                    if (xa - xb).norm() > ra + rb {
+                        continue;
+                    }
+                    (self.resp(kin, *a, -n * *ra), Some(self.resp(kin, *b, n * *rb)), n, *e, *mu)
+                }
+                Effect::Plane { body, r, point, n, e, mu } => {
+                    let x = kin.point(&(Some(*body), self.built.bodies[*body].com)).0;
+                    if (x - point).dot(n) > *r {
+                        continue;
+                    }
+                    (self.resp(kin, *body, -n * *r), None, *n, *e, *mu)
+                }
+                _ => continue,
+            };
+            let u = ra_.vp - rb_.as_ref().map_or(Vector3::zeros(), |r| r.vp);
+            let un = u.dot(&n);
+            if un >= 0.0 {
+                continue;
+            }
+            let kn = ra_.k(&n) + rb_.as_ref().map_or(0.0, |r| r.k(&n));
+            let jn = -(1.0 + e_) * un / kn;
+            let mut j = n * jn;
+            let ut = u - n * un;
+            if mu > 0.0
+                && let Some(t) = ut.try_normalize(STICK_EPS)
+            {
+                let kt = ra_.k(&t) + rb_.as_ref().map_or(0.0, |r| r.k(&t));
+                let jt = (ut.norm() / kt).min(mu * jn);
+                j -= t * jt;
+            }
+            self.kick(kin, &ra_, &j, v);
+            if let Some(rb) = &rb_ {
+                self.kick(kin, rb, &(-j), v);
+            }
+            count += 1;
+        }
+        count
+    }
+}

@@ -1,0 +1,185 @@
+//! Which conservation laws the declared effects imply, and the quantities themselves:
+//! T + U, p = Σ m v_c, H_z = Σ (r_c − z) × m v_c + J ω.
+//!
+//! Book: §8.3 (conservative forces, energy), §7.4 (momentum), §7.6 (angular momentum about a
+//! point), Fact 7.x (conservation when the external moment about z vanishes).
+
+use nalgebra::Vector3;
+use serde::Serialize;
+
+use super::Scene;
+use super::build::{Built, Effect};
+use super::forces::{centre, potential};
+use super::kin::Kin;
+use super::spec::JointSpec;
+
+/// A conservation law implied by the declared effects.
+///
+/// Book: §7.4, §7.6, §8.3.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum Invariant {
+    /// T + U: every declared effect is conservative (no dashpots, applied loads, lossy impacts).
+    Energy,
+    /// p: no external force (every root joint free, no field of the ground, no plane).
+    Momentum,
+    /// H about a fixed point: every external force passes through it, no external torque.
+    AngularMomentum {
+        /// The point (ground components).
+        about: [f64; 3],
+    },
+    /// The component of H about a fixed point along a fixed axis (uniform gravity along it).
+    AngularMomentumAlong {
+        /// The point.
+        about: [f64; 3],
+        /// The axis (unit, ground components).
+        axis: [f64; 3],
+    },
+}
+
+impl Invariant {
+    /// Short name (`energy`, `momentum`, `angular_momentum`).
+    pub fn name(&self) -> &'static str {
+        match self {
+            Invariant::Energy => "energy",
+            Invariant::Momentum => "momentum",
+            _ => "angular_momentum",
+        }
+    }
+}
+
+/// Invariants implied by the declared effects.
+pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
+    let mut conservative = true;
+    let mut external_force = false; // a force on the system not through one fixed point
+    let mut points: Vec<Vector3<f64>> = Vec::new(); // external forces pass through these
+    let mut uniform: Option<Vector3<f64>> = None;
+    for body in &b.bodies {
+        if body.parent.is_none() {
+            match body.joint {
+                JointSpec::Free => {}
+                JointSpec::Ball => points.push(Vector3::zeros()), // pivot at the ground origin + offset below
+                _ => external_force = true,
+            }
+        }
+    }
+    // ball pivots sit at their offsets: recover them from the model's first poses
+    if let Ok(p) = b.model.poses(&b.q0) {
+        let mut k = 0;
+        for (i, body) in b.bodies.iter().enumerate() {
+            if body.parent.is_none() && body.joint == JointSpec::Ball {
+                points[k] = p[i].1;
+                k += 1;
+            }
+        }
+    }
+    for e in &b.effects {
+        match e {
+            Effect::Uniform { g } => uniform = Some(uniform.unwrap_or_default() + g),
+            Effect::Central { centre, .. } => points.push(*centre),
+            Effect::Spring { a, b: bb, .. } | Effect::Inerter { a, b: bb, .. } => {
+                for end in [a, bb] {
+                    if end.0.is_none() {
+                        points.push(end.1);
+                    }
+                }
+            }
+            Effect::Dashpot { a, b: bb, .. } => {
+                conservative = false;
+                for end in [a, bb] {
+                    if end.0.is_none() {
+                        points.push(end.1);
+                    }
+                }
+            }
+            Effect::RotSpring { .. } | Effect::RotInerter { .. } => external_force = true,
+            Effect::RotDashpot { .. } => {
+                conservative = false;
+                external_force = true;
+            }
+            Effect::Force { .. } | Effect::Torque { .. } => {
+                conservative = false;
+                external_force = true;
+            }
+            Effect::Spheres { e, mu, .. } => conservative &= *e == 1.0 && *mu == 0.0,
+            Effect::Plane { e, mu, .. } => {
+                conservative &= *e == 1.0 && *mu == 0.0;
+                external_force = true;
+            }
+            Effect::Rolling { .. } => external_force = true,
+            Effect::Mutual { .. } | Effect::Dipoles { .. } => {}
+        }
+    }
+    let mut out = Vec::new();
+    if conservative {
+        out.push(Invariant::Energy);
+    }
+    if external_force {
+        return out;
+    }
+    let first = points.first().copied();
+    let single = points.iter().all(|p| (p - first.unwrap_or_default()).norm() <= 1e-12 * (1.0 + p.norm()));
+    if points.is_empty() && uniform.is_none() {
+        out.push(Invariant::Momentum);
+    }
+    if !single {
+        return out;
+    }
+    let about = first.unwrap_or_default();
+    match uniform {
+        None => out.push(Invariant::AngularMomentum { about: about.into() }),
+        Some(g) if g.norm() > 0.0 => {
+            out.push(Invariant::AngularMomentumAlong { about: about.into(), axis: g.normalize().into() })
+        }
+        Some(_) => out.push(Invariant::AngularMomentum { about: about.into() }),
+    }
+    out
+}
+
+impl Scene {
+    /// Kinetic energy T = Σ ½ m v_c² + ½ ω·J ω (+ ½ b ℓ̇² of inerters), from a full [`Kin`].
+    pub(crate) fn kinetic(&self, kin: &Kin, v: &[f64]) -> f64 {
+        let mut t = 0.0;
+        for (i, b) in self.built.bodies.iter().enumerate() {
+            let (e, _) = kin.poses[i];
+            let (_, vc) = kin.point(&(Some(i), b.com));
+            let w = e * kin.omega[i];
+            t += 0.5 * b.mass * vc.norm_squared() + 0.5 * w.dot(&(b.inertia * w));
+        }
+        for e in &self.built.effects {
+            match e {
+                Effect::Inerter { a, b, b_in } => {
+                    let (pa, va) = kin.point(a);
+                    let (pb, vb) = kin.point(b);
+                    let rate = (pb - pa).try_normalize(1e-300).map_or(0.0, |r| r.dot(&(vb - va)));
+                    t += 0.5 * b_in * rate * rate;
+                }
+                Effect::RotInerter { dof, beta } => t += 0.5 * beta * v[*dof] * v[*dof],
+                _ => {}
+            }
+        }
+        t
+    }
+
+    /// Total energy T + U.
+    pub(crate) fn energy(&self, kin: &Kin, q: &[f64], v: &[f64]) -> f64 {
+        let q_angle = |dof: usize| self.angle_of_dof(q, dof);
+        self.kinetic(kin, v) + potential(&self.built.effects, &self.built.bodies, kin, &self.ground, &q_angle)
+    }
+
+    /// p = Σ m v_c.
+    pub(crate) fn momentum(&self, kin: &Kin) -> Vector3<f64> {
+        self.built.bodies.iter().enumerate().map(|(i, b)| kin.point(&(Some(i), b.com)).1 * b.mass).sum()
+    }
+
+    /// H about the fixed point z: Σ (r_c − z) × m v_c + J_c ω (7.6.x).
+    pub(crate) fn angular_momentum(&self, kin: &Kin, z: &Vector3<f64>) -> Vector3<f64> {
+        let mut h = Vector3::zeros();
+        for (i, b) in self.built.bodies.iter().enumerate() {
+            let (e, _) = kin.poses[i];
+            let (_, vc) = kin.point(&(Some(i), b.com));
+            let rc = centre(kin, b, i);
+            h += (rc - z).cross(&vc) * b.mass + e.transpose() * (b.inertia * (e * kin.omega[i]));
+        }
+        h
+    }
+}

@@ -1,0 +1,155 @@
+//! Link poses and twists of a scene's tree in the ground frame, the attitude rate q̇ of the
+//! coordinates, and velocities of points fixed in bodies.
+//!
+//! Book: §4.5 (angular velocity adds along a chain), §5.x transport theorem
+//! v_y = v_x + ω × r_{y/x}; (4.11.x) quaternion kinematics q̇ = ½ q ⊗ (0, ω).
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::build::{At, Body};
+use super::spec::JointSpec;
+use crate::multibody::{Model, Pose};
+
+/// Poses and twists: for each link 𝓞_{link/ground}, r_{origin}, ω and v_{origin} (ground).
+#[derive(Debug, Clone)]
+pub(crate) struct Kin {
+    pub poses: Vec<Pose>,
+    pub omega: Vec<Vector3<f64>>,
+    pub vel: Vec<Vector3<f64>>,
+}
+
+fn unit(a: &[f64; 3]) -> Vector3<f64> {
+    Vector3::new(a[0], a[1], a[2]).normalize()
+}
+
+/// Link twists for the velocities `v`, given the poses (bodies in any order: parents are
+/// resolved recursively through `order`, parents first).
+pub(crate) fn twists(
+    bodies: &[Body],
+    order: &[usize],
+    poses: &[Pose],
+    v: &[f64],
+) -> (Vec<Vector3<f64>>, Vec<Vector3<f64>>) {
+    let n = bodies.len();
+    let mut omega = vec![Vector3::zeros(); n];
+    let mut vel = vec![Vector3::zeros(); n];
+    for &i in order {
+        let b = &bodies[i];
+        let (e_p, r_p, w_p, v_p) = match b.parent {
+            Some(p) => (poses[p].0, poses[p].1, omega[p], vel[p]),
+            None => (Matrix3::identity(), Vector3::zeros(), Vector3::zeros(), Vector3::zeros()),
+        };
+        // 𝓞_{J/G} = 𝓞_{J/P} 𝓞_{P/G}; ground components of a joint-frame vector x: 𝓞_{J/G}ᵀ x
+        let e_j = b.orient * e_p;
+        let (e_l, r_l) = poses[i];
+        let vv = &v[b.vi..];
+        let (w_rel, v_rel) = match &b.joint {
+            JointSpec::Pin { axis } => (e_j.transpose() * unit(axis) * vv[0], Vector3::zeros()),
+            JointSpec::Sleeve { axis } => (Vector3::zeros(), e_j.transpose() * unit(axis) * vv[0]),
+            JointSpec::Collar { axis } => {
+                let a = e_j.transpose() * unit(axis);
+                (a * vv[1], a * vv[0])
+            }
+            JointSpec::Slot { axis, direction } => {
+                (e_j.transpose() * unit(axis) * vv[1], e_j.transpose() * unit(direction) * vv[0])
+            }
+            JointSpec::Ball => (e_l.transpose() * Vector3::new(vv[0], vv[1], vv[2]), Vector3::zeros()),
+            JointSpec::Free => (
+                e_l.transpose() * Vector3::new(vv[3], vv[4], vv[5]),
+                e_j.transpose() * Vector3::new(vv[0], vv[1], vv[2]),
+            ),
+            JointSpec::Weld => (Vector3::zeros(), Vector3::zeros()),
+        };
+        omega[i] = w_p + w_rel;
+        vel[i] = v_p + w_p.cross(&(r_l - r_p)) + v_rel;
+    }
+    (omega, vel)
+}
+
+/// Poses and twists at (q, v).
+pub(crate) fn kinematics(
+    model: &Model,
+    bodies: &[Body],
+    order: &[usize],
+    q: &[f64],
+    v: &[f64],
+) -> Result<Kin, String> {
+    let poses = model.poses(q).map_err(|e| e.to_string())?;
+    let (omega, vel) = twists(bodies, order, &poses, v);
+    Ok(Kin { poses, omega, vel })
+}
+
+impl Kin {
+    /// Ground position and velocity of a point fixed in a body (or in the ground).
+    pub fn point(&self, at: &At) -> (Vector3<f64>, Vector3<f64>) {
+        match at.0 {
+            None => (at.1, Vector3::zeros()),
+            Some(i) => {
+                let (e, r) = self.poses[i];
+                let d = e.transpose() * at.1;
+                (r + d, self.vel[i] + self.omega[i].cross(&d))
+            }
+        }
+    }
+}
+
+/// Parents before children.
+pub(crate) fn tree_order(bodies: &[Body]) -> Vec<usize> {
+    let depth = |mut i: usize| {
+        let mut d = 0;
+        while let Some(p) = bodies[i].parent {
+            d += 1;
+            i = p;
+            if d > bodies.len() {
+                break;
+            }
+        }
+        d
+    };
+    let mut order: Vec<usize> = (0..bodies.len()).collect();
+    order.sort_by_key(|&i| (depth(i), i));
+    order
+}
+
+/// q̇ from v: scalar joints q̇ = v, quaternions q̇ = ½ q ⊗ (0, ω_link), free translation ẋ = v.
+pub(crate) fn qdot(bodies: &[Body], q: &[f64], v: &[f64], out: &mut [f64]) {
+    let quat = |qq: &[f64], w: &[f64], o: &mut [f64]| {
+        let (e0, e1, e2, e3) = (qq[0], qq[1], qq[2], qq[3]);
+        let (p, r, s) = (w[0], w[1], w[2]);
+        o[0] = 0.5 * (-e1 * p - e2 * r - e3 * s);
+        o[1] = 0.5 * (e0 * p + e2 * s - e3 * r);
+        o[2] = 0.5 * (e0 * r + e3 * p - e1 * s);
+        o[3] = 0.5 * (e0 * s + e1 * r - e2 * p);
+    };
+    for b in bodies {
+        let (qi, vi) = (b.qi, b.vi);
+        match b.joint {
+            JointSpec::Pin { .. } | JointSpec::Sleeve { .. } => out[qi] = v[vi],
+            JointSpec::Collar { .. } | JointSpec::Slot { .. } => {
+                out[qi] = v[vi];
+                out[qi + 1] = v[vi + 1];
+            }
+            JointSpec::Ball => quat(&q[qi..qi + 4], &v[vi..vi + 3], &mut out[qi..qi + 4]),
+            JointSpec::Free => {
+                out[qi..qi + 3].copy_from_slice(&v[vi..vi + 3]);
+                quat(&q[qi + 3..qi + 7], &v[vi + 3..vi + 6], &mut out[qi + 3..qi + 7]);
+            }
+            JointSpec::Weld => {}
+        }
+    }
+}
+
+/// Renormalizes every quaternion of q.
+pub(crate) fn normalize(bodies: &[Body], q: &mut [f64]) {
+    for b in bodies {
+        let k = match b.joint {
+            JointSpec::Ball => b.qi,
+            JointSpec::Free => b.qi + 3,
+            _ => continue,
+        };
+        let n = q[k..k + 4].iter().map(|x| x * x).sum::<f64>().sqrt();
+        if n > 0.0 {
+            q[k..k + 4].iter_mut().for_each(|x| *x /= n);
+        }
+    }
+}

@@ -1,0 +1,212 @@
+//! Scenes: a TOML file declares bodies, joints, effects, the run and the outputs; the
+//! simulator assembles exactly the declared effects, computes exactly the requested outputs,
+//! and checks the invariants that the declared effects imply.
+//!
+//! ```
+//! use vectrix_dynamics::scene::{DEFAULT_SCENE, Scene};
+//! let scene = Scene::from_toml(DEFAULT_SCENE, "default.toml").unwrap();
+//! assert_eq!(scene.spec().name, "tennis_racket");
+//! ```
+//!
+//! Book: §7.11 (trees), ch. 6 (force elements), §7.13 (impacts), §8.3 (energy).
+
+mod build;
+mod error;
+mod forces;
+mod impacts;
+mod invariants;
+mod kin;
+mod outputs;
+mod rhs;
+mod run;
+pub mod spec;
+
+pub use error::SceneError;
+pub use invariants::Invariant;
+pub use run::{Drift, Run, RunWork};
+pub use spec::SceneSpec;
+
+use build::{Built, Src, build};
+use forces::Ground;
+use outputs::Output;
+use vectrix_ode::explicit::Adaptive;
+
+use crate::Model;
+
+/// The embedded default scene: a free rigid body spinning near its intermediate axis (the
+/// tennis-racket flip, Dzhanibekov effect).
+///
+/// Book: §7.8 (Euler's equation), §8.x (torque-free motion, energy and |H| conserved).
+pub const DEFAULT_SCENE: &str = include_str!("default.toml");
+
+/// Which parts of the right-hand side the declared effects need.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Needs {
+    /// Poses and twists for force elements (none: ABA alone, gravity as base acceleration).
+    pub loads: bool,
+    pub inerters: bool,
+    pub rolling: bool,
+    pub impacts: bool,
+}
+
+/// A rolling body must start touching its plane: |(c − p)·n − r| small (for a disk, the
+/// lowest rim point).
+fn check_rolling_start(b: &Built, src: &Src) -> Result<(), SceneError> {
+    let Ok(poses) = b.model.poses(&b.q0) else { return Ok(()) };
+    for e in &b.effects {
+        if let build::Effect::Rolling { body, disk, r, point, n } = e {
+            let (el, rl) = poses[*body];
+            let c = rl + el.transpose() * b.bodies[*body].com;
+            let reach = if *disk {
+                let k = el.transpose() * nalgebra::Vector3::z();
+                r * (1.0 - k.dot(n).powi(2)).max(0.0).sqrt()
+            } else {
+                *r
+            };
+            let gap = (c - point).dot(n) - reach;
+            if gap.abs() > 1e-9 * (1.0 + r) {
+                let name = &b.bodies[*body].name;
+                return Err(src.err(
+                    name,
+                    "effects.rolling",
+                    format!(
+                        "body `{name}` starts {gap:e} m off its rolling plane; valid: touching it (gap 0)"
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A validated scene, ready to run.
+///
+/// Book: §7.11; ch. 6.
+pub struct Scene {
+    spec: SceneSpec,
+    pub(crate) built: Built,
+    pub(crate) order: Vec<usize>,
+    pub(crate) ground: Ground,
+    pub(crate) needs: Needs,
+    pub(crate) solver: Adaptive,
+    pub(crate) outputs: Vec<Output>,
+    invariants: Vec<Invariant>,
+}
+
+impl std::fmt::Debug for Scene {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Scene").field("spec", &self.spec).finish_non_exhaustive()
+    }
+}
+
+impl Scene {
+    /// Parses and validates a scene file; `file` names it in error messages.
+    ///
+    /// Book: — (file format).
+    ///
+    /// # Errors
+    /// [`SceneError::Parse`] (syntax, unknown keys, wrong types) and [`SceneError::Invalid`]
+    /// (unknown names, joints that do not form a tree, non-finite or out-of-range numbers),
+    /// both with line and column.
+    pub fn from_toml(text: &str, file: &str) -> Result<Self, SceneError> {
+        let spec: SceneSpec = toml::from_str(text).map_err(|e| {
+            let (line, column) = e.span().map_or((1, 1), |s| error::line_col(text, s.start));
+            SceneError::Parse { file: file.into(), line, column, message: e.message().trim().to_string() }
+        })?;
+        Self::build(spec, &Src { file, text })
+    }
+
+    /// Validates a scene given as a value (errors are located in its TOML form).
+    ///
+    /// # Errors
+    /// As [`Scene::from_toml`].
+    pub fn from_spec(spec: SceneSpec) -> Result<Self, SceneError> {
+        let text = toml::to_string(&spec).unwrap_or_default();
+        Self::build(spec, &Src { file: "<scene>", text: &text })
+    }
+
+    fn build(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
+        let built = build(&spec, src)?;
+        let order = kin::tree_order(&built.bodies);
+        let solver = run::solver(&spec, src)?;
+        let outputs = outputs::parse(&spec, &built, src)?;
+        let invariants = invariants::derive(&built);
+        let mut needs = Needs::default();
+        for e in &built.effects {
+            use build::Effect as E;
+            match e {
+                E::Uniform { .. } | E::RotSpring { .. } | E::RotDashpot { .. } => {}
+                E::Inerter { .. } | E::RotInerter { .. } => needs.inerters = true,
+                E::Rolling { .. } => needs.rolling = true,
+                E::Spheres { .. } | E::Plane { .. } => needs.impacts = true,
+                _ => needs.loads = true,
+            }
+            if matches!(e, E::RotSpring { .. } | E::RotDashpot { .. }) {
+                needs.loads = true;
+            }
+        }
+        check_rolling_start(&built, src)?;
+        for c in &spec.checks {
+            if !["energy", "momentum", "angular_momentum"].contains(&c.as_str()) {
+                return Err(src.err(
+                    c,
+                    "checks",
+                    format!("unknown check `{c}`; valid: energy, momentum, angular_momentum"),
+                ));
+            }
+        }
+        Ok(Self { spec, built, order, ground: Ground::new(), needs, solver, outputs, invariants })
+    }
+
+    /// The scene as declared.
+    pub fn spec(&self) -> &SceneSpec {
+        &self.spec
+    }
+
+    /// The scene file text (TOML) of [`Scene::spec`]: load → save → load gives the same scene.
+    ///
+    /// # Errors
+    /// [`SceneError::Invalid`] if serialization fails (it does not for validated scenes).
+    pub fn to_toml(&self) -> Result<String, SceneError> {
+        toml::to_string(&self.spec).map_err(|e| SceneError::Invalid {
+            file: "<scene>".into(),
+            line: 1,
+            column: 1,
+            path: "scene".into(),
+            message: e.to_string(),
+        })
+    }
+
+    /// The assembled multibody model (its `gravity` is nonzero only if gravity is declared).
+    pub fn model(&self) -> &Model {
+        &self.built.model
+    }
+
+    /// The invariants that the declared effects imply (whether or not they are checked).
+    pub fn invariants(&self) -> &[Invariant] {
+        &self.invariants
+    }
+
+    /// The initial state y₀ = (q₀, v₀).
+    pub fn initial_state(&self) -> Vec<f64> {
+        [self.built.q0.as_slice(), self.built.v0.as_slice()].concat()
+    }
+
+    /// The right-hand side y′ = f(t, y) with exactly the declared effects.
+    ///
+    /// # Errors
+    /// [`SceneError::Run`] when the dynamics fail (singular mass matrix, coincident points).
+    pub fn derivative(&self, t: f64, y: &[f64]) -> Result<Vec<f64>, SceneError> {
+        if y.len() != self.built.model.nq() + self.built.model.nv() {
+            return Err(SceneError::Run {
+                t,
+                message: format!(
+                    "state of length {}, expected {}",
+                    y.len(),
+                    self.built.model.nq() + self.built.model.nv()
+                ),
+            });
+        }
+        self.deriv(t, y).map_err(|message| SceneError::Run { t, message })
+    }
+}

@@ -1,0 +1,136 @@
+//! The requested outputs: names, CSV columns and their values at a state. Only these are
+//! computed.
+//!
+//! Book: §7.4, §7.6, §8.1 (momentum, angular momentum, energy).
+
+use nalgebra::Vector3;
+
+use super::Scene;
+use super::SceneError;
+use super::build::{Built, Src, dims};
+use super::forces::centre;
+use super::kin::Kin;
+use super::spec::SceneSpec;
+
+/// One requested output.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Output {
+    Q,
+    V,
+    Energy,
+    Momentum,
+    AngularMomentum,
+    Position(usize),
+    Velocity(usize),
+    Omega(usize),
+    OmegaBody(usize),
+    Coordinates(usize),
+    Speeds(usize),
+}
+
+const VALID: &str = "q, v, energy, momentum, angular_momentum, position:BODY, velocity:BODY, omega:BODY, \
+omega_body:BODY, coordinates:BODY, speeds:BODY";
+
+/// Parses the `outputs` list.
+pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output>, SceneError> {
+    spec.outputs
+        .iter()
+        .map(|o| {
+            let bad = || src.err(o, "outputs", format!("unknown output `{o}`; valid: {VALID}"));
+            let (kind, body) = match o.split_once(':') {
+                Some((k, name)) => {
+                    let i = b.bodies.iter().position(|x| x.name == name).ok_or_else(|| {
+                        src.err(o, "outputs", format!("unknown body `{name}` in output `{o}`"))
+                    })?;
+                    (k, Some(i))
+                }
+                None => (o.as_str(), None),
+            };
+            Ok(match (kind, body) {
+                ("q", None) => Output::Q,
+                ("v", None) => Output::V,
+                ("energy", None) => Output::Energy,
+                ("momentum", None) => Output::Momentum,
+                ("angular_momentum", None) => Output::AngularMomentum,
+                ("position", Some(i)) => Output::Position(i),
+                ("velocity", Some(i)) => Output::Velocity(i),
+                ("omega", Some(i)) => Output::Omega(i),
+                ("omega_body", Some(i)) => Output::OmegaBody(i),
+                ("coordinates", Some(i)) => Output::Coordinates(i),
+                ("speeds", Some(i)) => Output::Speeds(i),
+                _ => return Err(bad()),
+            })
+        })
+        .collect()
+}
+
+fn xyz(prefix: &str) -> Vec<String> {
+    ["x", "y", "z"].iter().map(|c| format!("{prefix}.{c}")).collect()
+}
+
+impl Scene {
+    /// Column names of trajectory.csv (after `t`).
+    pub(crate) fn columns(&self) -> Vec<String> {
+        let b = &self.built;
+        let name = |i: usize| b.bodies[i].name.clone();
+        let mut cols = Vec::new();
+        for o in &self.outputs {
+            match o {
+                Output::Q => cols.extend((0..b.model.nq()).map(|k| format!("q{k}"))),
+                Output::V => cols.extend((0..b.model.nv()).map(|k| format!("v{k}"))),
+                Output::Energy => cols.push("energy".into()),
+                Output::Momentum => cols.extend(xyz("momentum")),
+                Output::AngularMomentum => cols.extend(xyz("angular_momentum")),
+                Output::Position(i) => cols.extend(xyz(&format!("position:{}", name(*i)))),
+                Output::Velocity(i) => cols.extend(xyz(&format!("velocity:{}", name(*i)))),
+                Output::Omega(i) => cols.extend(xyz(&format!("omega:{}", name(*i)))),
+                Output::OmegaBody(i) => cols.extend(xyz(&format!("omega_body:{}", name(*i)))),
+                Output::Coordinates(i) => cols.extend(
+                    (0..dims(&b.bodies[*i].joint).0).map(|k| format!("coordinates:{}.{k}", name(*i))),
+                ),
+                Output::Speeds(i) => {
+                    cols.extend((0..dims(&b.bodies[*i].joint).1).map(|k| format!("speeds:{}.{k}", name(*i))))
+                }
+            }
+        }
+        cols
+    }
+
+    /// The point about which `angular_momentum` is reported: that of the invariant, else the origin.
+    pub(crate) fn h_point(&self) -> Vector3<f64> {
+        self.invariants()
+            .iter()
+            .find_map(|i| match i {
+                super::Invariant::AngularMomentum { about }
+                | super::Invariant::AngularMomentumAlong { about, .. } => Some(Vector3::from(*about)),
+                _ => None,
+            })
+            .unwrap_or_default()
+    }
+
+    /// Values of the requested outputs at (q, v).
+    pub(crate) fn row(&self, kin: &Kin, q: &[f64], v: &[f64], out: &mut Vec<f64>) {
+        let b = &self.built;
+        for o in &self.outputs {
+            match o {
+                Output::Q => out.extend_from_slice(q),
+                Output::V => out.extend_from_slice(v),
+                Output::Energy => out.push(self.energy(kin, q, v)),
+                Output::Momentum => out.extend(self.momentum(kin).iter()),
+                Output::AngularMomentum => out.extend(self.angular_momentum(kin, &self.h_point()).iter()),
+                Output::Position(i) => out.extend(centre(kin, &b.bodies[*i], *i).iter()),
+                Output::Velocity(i) => out.extend(kin.point(&(Some(*i), b.bodies[*i].com)).1.iter()),
+                Output::Omega(i) => out.extend(kin.omega[*i].iter()),
+                Output::OmegaBody(i) => out.extend((kin.poses[*i].0 * kin.omega[*i]).iter()),
+                Output::Coordinates(i) => {
+                    let bd = &b.bodies[*i];
+                    out.extend_from_slice(&q[bd.qi..bd.qi + dims(&bd.joint).0]);
+                }
+                Output::Speeds(i) => {
+                    let bd = &b.bodies[*i];
+                    out.extend_from_slice(&v[bd.vi..bd.vi + dims(&bd.joint).1]);
+                }
+            }
+        }
+    }
+}

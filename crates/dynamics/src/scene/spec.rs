@@ -1,0 +1,422 @@
+//! The scene file format (TOML, serde): what a scene declares. Every table rejects unknown
+//! keys, so a misspelt key is an error with its line and column, not a silent default.
+//!
+//! Book: §7.11 (trees of bodies and joints), ch. 6 (force elements), §7.13 (collisions).
+
+use serde::{Deserialize, Serialize};
+
+/// A whole scene: bodies joined in a tree, the effects acting on them, the run and the outputs.
+///
+/// Book: §7.11, ch. 6.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneSpec {
+    /// Name of the scene (the output folder `out/<name>/`).
+    pub name: String,
+    /// End time of the run, t ∈ [0, duration] [s].
+    pub duration: f64,
+    /// Global relative accuracy asked for (picks method and tolerance, `vectrix_ode::Accuracy`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub accuracy: Option<f64>,
+    /// An explicit method instead of an accuracy.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub method: Option<MethodSpec>,
+    /// Number of output samples (rows of trajectory.csv after the initial one).
+    #[serde(default = "default_samples")]
+    pub samples: usize,
+    /// Named frames (orientations relative to the ground) that joints may be placed in.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub frames: Vec<FrameSpec>,
+    /// The bodies, each joined to its parent (or to the ground).
+    pub bodies: Vec<BodySpec>,
+    /// The effects acting: only these are assembled.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub effects: Vec<EffectSpec>,
+    /// Quantities written to trajectory.csv and plotted.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub outputs: Vec<String>,
+    /// Invariants whose drift is measured (`energy`, `momentum`, `angular_momentum`), if the
+    /// declared effects imply they hold.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub checks: Vec<String>,
+}
+
+fn default_samples() -> usize {
+    200
+}
+
+/// An integration method chosen by name.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MethodSpec {
+    /// `dopri5` or `dop853`.
+    pub name: String,
+    /// Relative (= absolute) local tolerance.
+    pub rtol: f64,
+}
+
+/// A named frame: the ground frame rotated by `angle` [rad] about `axis` (ground components).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrameSpec {
+    /// Name used by `BodySpec::frame`.
+    pub name: String,
+    /// Rotation axis, ground components (nonzero).
+    pub axis: [f64; 3],
+    /// Rotation angle [rad] (right-hand rule).
+    pub angle: f64,
+}
+
+/// One body: mass properties, the joint to its parent and its initial joint state.
+///
+/// # Conventions
+/// `offset` is the joint point relative to the parent's link origin, parent components; the
+/// link frame coincides with the joint frame at q = 0; `com` is in link components.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodySpec {
+    /// Unique name (`ground` is reserved).
+    pub name: String,
+    /// Parent body name, `ground` when omitted.
+    #[serde(default = "ground", skip_serializing_if = "is_ground")]
+    pub parent: String,
+    /// The joint into the parent.
+    pub joint: JointSpec,
+    /// Joint point relative to the parent link origin (parent components).
+    #[serde(default)]
+    pub offset: [f64; 3],
+    /// Orientation of the joint frame: a frame of `frames` (relative to the ground, and only
+    /// for bodies on the ground), identity when omitted.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub frame: Option<String>,
+    /// Mass properties.
+    pub mass: MassSpec,
+    /// Centre of mass relative to the link origin (link components).
+    #[serde(default)]
+    pub com: [f64; 3],
+    /// Initial joint coordinates (length nq of the joint; neutral when omitted).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q: Option<Vec<f64>>,
+    /// Initial joint velocities (length nv of the joint; zero when omitted).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub v: Option<Vec<f64>>,
+}
+
+fn ground() -> String {
+    "ground".into()
+}
+
+fn is_ground(s: &String) -> bool {
+    s == "ground"
+}
+
+/// The book's joints (§1.5) plus weld and free; axes in the joint frame.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum JointSpec {
+    /// Rotation about `axis`: q = [θ].
+    Pin {
+        /// Axis.
+        axis: [f64; 3],
+    },
+    /// Translation along `axis`: q = [s].
+    Sleeve {
+        /// Axis.
+        axis: [f64; 3],
+    },
+    /// Translation along and rotation about `axis`: q = [s, θ].
+    Collar {
+        /// Axis.
+        axis: [f64; 3],
+    },
+    /// Translation along `direction`, rotation about `axis` ⊥ direction: q = [s, θ].
+    Slot {
+        /// Pin axis.
+        axis: [f64; 3],
+        /// Groove direction.
+        direction: [f64; 3],
+    },
+    /// Spherical: q = quaternion (η, ε₁, ε₂, ε₃), v = ω in the link frame.
+    Ball,
+    /// Rigid attachment.
+    Weld,
+    /// Six degrees of freedom: q = (x, y, z, η, ε₁, ε₂, ε₃), v = (ẋ, ẏ, ż, ω in the link).
+    Free,
+}
+
+/// Mass properties by shape or by value (about the centre of mass, link components).
+///
+/// Book: §6.1–6.2, Table of shapes (§6.14 problems).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)]
+pub enum MassSpec {
+    /// A particle (zero inertia; needs a parent joint that leaves no rotation free about it).
+    Particle {
+        /// Mass [kg].
+        mass: f64,
+    },
+    /// Solid sphere: J = (2/5) m r² I.
+    Sphere {
+        /// Mass [kg].
+        mass: f64,
+        /// Radius [m].
+        radius: f64,
+    },
+    /// Solid box with sides along the link axes: J_x = m(b² + c²)/12, ….
+    Box {
+        /// Mass [kg].
+        mass: f64,
+        /// Side lengths along x, y, z [m].
+        sides: [f64; 3],
+    },
+    /// Thin rod along the link x axis: J = m l²/12 about y and z.
+    Rod {
+        /// Mass [kg].
+        mass: f64,
+        /// Length [m].
+        length: f64,
+    },
+    /// Uniform disk with normal along the link z axis: J_z = m r²/2, J_x = J_y = m r²/4.
+    Disk {
+        /// Mass [kg].
+        mass: f64,
+        /// Radius [m].
+        radius: f64,
+    },
+    /// Given values: mass and the inertia matrix J_{B/c} (principal moments, or full rows).
+    Value {
+        /// Mass [kg].
+        mass: f64,
+        /// Principal moments [J_x, J_y, J_z] about the link axes.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        principal: Option<[f64; 3]>,
+        /// Full matrix rows (entries, so products of inertia enter as −J_xy).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        matrix: Option<[[f64; 3]; 3]>,
+    },
+}
+
+/// A point fixed in a body (link components) or in the ground (`body = "ground"`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Attach {
+    /// Body name or `ground`.
+    pub body: String,
+    /// The point relative to the link origin, link components.
+    #[serde(default)]
+    pub point: [f64; 3],
+}
+
+/// A scalar function of time for applied forces and torques.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Profile {
+    /// f(t) = value.
+    Constant {
+        /// Value.
+        value: f64,
+    },
+    /// f(t) = before for t < at, after otherwise.
+    Step {
+        /// Switching time.
+        at: f64,
+        /// Value before.
+        #[serde(default)]
+        before: f64,
+        /// Value after.
+        after: f64,
+    },
+    /// Linear from `from` at t0 to `to` at t1, constant outside.
+    Ramp {
+        /// Start time.
+        t0: f64,
+        /// End time (> t0).
+        t1: f64,
+        /// Value until t0.
+        #[serde(default)]
+        from: f64,
+        /// Value from t1.
+        to: f64,
+    },
+    /// offset + amplitude sin(ω t + phase).
+    Sine {
+        /// Amplitude.
+        amplitude: f64,
+        /// Angular frequency ω [rad/s].
+        omega: f64,
+        /// Phase [rad].
+        #[serde(default)]
+        phase: f64,
+        /// Offset.
+        #[serde(default)]
+        offset: f64,
+    },
+    /// Piecewise-linear through (t, value) points (t increasing), constant outside.
+    Table {
+        /// Times, strictly increasing.
+        t: Vec<f64>,
+        /// Values.
+        value: Vec<f64>,
+    },
+}
+
+/// One effect. Only declared effects are assembled.
+///
+/// Book: ch. 6 (force elements §6.7–6.13), §7.13 (collisions), §7.x rolling.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum EffectSpec {
+    /// Uniform gravity g (ground components) on every body (6.11).
+    UniformGravity {
+        /// g [m/s²].
+        g: [f64; 3],
+    },
+    /// Central gravity toward a fixed point: f = −μ m r̂/|r|² (6.12.1).
+    CentralGravity {
+        /// μ = G M [m³/s²].
+        mu: f64,
+        /// The attracting point (ground components).
+        #[serde(default)]
+        centre: [f64; 3],
+    },
+    /// Mutual gravitation between every pair of bodies (centres of mass), constant G.
+    MutualGravitation {
+        /// Gravitational constant.
+        g: f64,
+    },
+    /// Translational spring f = −k(|r| − d) r̂ between two points (6.7.1).
+    Spring {
+        /// One end.
+        a: Attach,
+        /// Other end.
+        b: Attach,
+        /// Stiffness k [N/m].
+        k: f64,
+        /// Relaxed length d [m].
+        #[serde(default)]
+        length: f64,
+    },
+    /// Dashpot f = −c (d|r|/dt) r̂ between two points (6.8.1).
+    Dashpot {
+        /// One end.
+        a: Attach,
+        /// Other end.
+        b: Attach,
+        /// Damping c [N s/m].
+        c: f64,
+    },
+    /// Inerter f = −b (d²|r|/dt²) r̂ between two points (6.8); enters the mass matrix.
+    Inerter {
+        /// One end.
+        a: Attach,
+        /// Other end.
+        b: Attach,
+        /// Inertance b [kg].
+        inertance: f64,
+    },
+    /// Rotational spring on a one-angle joint: τ = −κ(θ − θ₀).
+    RotationalSpring {
+        /// The body whose joint it acts on (pin, collar or slot: the angle).
+        body: String,
+        /// κ [N m/rad].
+        kappa: f64,
+        /// θ₀ [rad].
+        #[serde(default)]
+        angle: f64,
+    },
+    /// Rotational dashpot on a one-angle joint: τ = −ξ θ̇.
+    RotationalDashpot {
+        /// The body.
+        body: String,
+        /// ξ [N m s/rad].
+        xi: f64,
+    },
+    /// Rotational inerter on a one-angle joint: τ = −β θ̈ (adds β to the joint's mass).
+    RotationalInerter {
+        /// The body.
+        body: String,
+        /// β [kg m²].
+        beta: f64,
+    },
+    /// Magnetic dipoles fixed in bodies, interacting pairwise (6.13.11), (6.13.18).
+    Dipoles {
+        /// The dipoles.
+        dipoles: Vec<DipoleSpec>,
+    },
+    /// Applied force along a fixed ground direction, magnitude a function of time.
+    Force {
+        /// Where it acts.
+        at: Attach,
+        /// Direction (ground components; scaled by the profile).
+        direction: [f64; 3],
+        /// Magnitude profile.
+        profile: Profile,
+    },
+    /// Applied torque about a fixed ground direction, magnitude a function of time.
+    Torque {
+        /// The body.
+        body: String,
+        /// Direction (ground components).
+        direction: [f64; 3],
+        /// Magnitude profile.
+        profile: Profile,
+    },
+    /// Impacts of two spheres (free bodies) with restitution e and Coulomb friction μ.
+    ContactSpheres {
+        /// First sphere.
+        a: String,
+        /// Second sphere.
+        b: String,
+        /// Radius of a.
+        radius_a: f64,
+        /// Radius of b.
+        radius_b: f64,
+        /// Coefficient of restitution e ∈ [0, 1].
+        restitution: f64,
+        /// Coulomb friction μ ≥ 0.
+        #[serde(default)]
+        friction: f64,
+    },
+    /// Impacts of a sphere (free body) on a fixed plane.
+    ContactPlane {
+        /// The sphere.
+        body: String,
+        /// Its radius.
+        radius: f64,
+        /// A point of the plane (ground components).
+        #[serde(default)]
+        point: [f64; 3],
+        /// Plane normal (ground components, toward the allowed side).
+        normal: [f64; 3],
+        /// e ∈ [0, 1].
+        restitution: f64,
+        /// μ ≥ 0.
+        #[serde(default)]
+        friction: f64,
+    },
+    /// Rolling without slip of a sphere or a disk (a free body, centre at its link origin)
+    /// on a fixed plane.
+    Rolling {
+        /// The body.
+        body: String,
+        /// `sphere` or `disk` (disk normal = link z axis).
+        shape: String,
+        /// Radius.
+        radius: f64,
+        /// A point of the plane.
+        #[serde(default)]
+        point: [f64; 3],
+        /// Plane normal (toward the body).
+        normal: [f64; 3],
+    },
+}
+
+/// A magnetic dipole m (link components) at the body's centre of mass.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DipoleSpec {
+    /// The body.
+    pub body: String,
+    /// Moment m (link components), in units where μ₀/4π = 1.
+    pub moment: [f64; 3],
+}
