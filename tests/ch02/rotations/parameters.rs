@@ -320,7 +320,7 @@ fn bad_input_returns_typed_errors() {
 /// dθ/dθ = 1 through q(θ) ↦ angle vector, and d/dψ of the extracted yaw is 1.
 #[test]
 fn dual_numbers_flow_through_conversions() {
-    use vectrix::num_dual::{Dual64, DualNum};
+    use vectrix::num_dual::Dual64;
     let th = Dual64::from(0.7).derivative();
     let n = Vector3::new(Dual64::from(1.0), Dual64::from(2.0), Dual64::from(2.0));
     let q = Quaternion::from_axis_angle(&n, th).unwrap();
