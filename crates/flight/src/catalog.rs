@@ -92,3 +92,87 @@ pub fn boeing_747_longitudinal_a() -> DMatrix<f64> {
     ]);
     a
 }
+
+/// Assumed business-jet airframe behind Tables 14.1–14.2 (the book gives only the
+/// dimensional derivatives and J_xx, J_zz, J_xz): weight 13,000 lb, S = 230 ft², c̄ = 7 ft,
+/// b = 34 ft, J_yy = 18,800 slug·ft², ρ = 0.000588 slug/ft³ (40,000 ft), C_D0 = 0.03.
+///
+/// Book: Tables 14.1, 14.2 (J_xx, J_zz, J_xz); the other values are assumptions of a
+/// Learjet-class aircraft, chosen only to give the nondimensional model a scale.
+pub const BUSINESS_JET_WEIGHT: f64 = 13_000.0;
+
+/// A nonlinear business-jet [`Aircraft`] whose coefficients invert the definitions of
+/// Tables 14.1–14.2 at U₀ = 400 kt, so that its dual-number linearization at the level trim
+/// reproduces Tables 14.1–14.2 (the thrust-speed derivative M_Tu is folded into C_mu). Its
+/// body frame is the stability frame of that trim (α₀ = 0, §12.4).
+///
+/// Book: Tables 14.1, 14.2; §12.4; (13.3.9)–(13.3.12).
+pub fn business_jet() -> crate::Aircraft {
+    use crate::{Aircraft, Airframe, Coefficients, Geometry};
+    let lon = business_jet_longitudinal();
+    let lat = business_jet_lateral();
+    let (g, u0) = (lon.g, lon.u0);
+    let m = BUSINESS_JET_WEIGHT / g;
+    let jyy = 18_800.0;
+    let geometry = Geometry { area: 230.0, chord: 7.0, span: 34.0 };
+    let rho = 0.000_588;
+    let qs = 0.5 * rho * u0 * u0 * geometry.area;
+    let (cb, b) = (geometry.chord, geometry.span);
+    // level trim at α = 0: lift = weight
+    let cl0 = m * g / qs;
+    let cd0 = 0.03;
+    // Z_α = −p_d0S(C_Lα + C_D0)/m; X_α = p_d0S(C_L0 − 2K C_L0 C_Lα)/m
+    let cl_alpha = -lon.z_alpha * m / qs - cd0;
+    let k_induced = (cl0 - lon.x_alpha * m / qs) / (2.0 * cl0 * cl_alpha);
+    // Z_u = −p_d0S(2C_L0 + C_Lu)/(mU₀); X_u = −p_d0S(2C_D0 + C_Du + 2K C_L0 C_Lu)/(mU₀)
+    let cl_u = -lon.z_u * m * u0 / qs - 2.0 * cl0;
+    let cd_u = -lon.x_u * m * u0 / qs - 2.0 * cd0 - 2.0 * k_induced * cl0 * cl_u;
+    let rate_l = 2.0 * m * u0 / (qs * cb);
+    let rate_m = 2.0 * jyy * u0 / (qs * cb * cb);
+    let rate_y = 2.0 * m * u0 / (qs * b);
+    let (jxx, jzz) = (lat.jxx, lat.jzz);
+    let rate_roll = 2.0 * jxx * u0 / (qs * b * b);
+    let rate_n = 2.0 * jzz * u0 / (qs * b * b);
+    let coefficients = Coefficients {
+        u_ref: u0,
+        cl0,
+        cl_u,
+        cl_alpha,
+        cl_q: -lon.z_q * rate_l,
+        cl_alpha_dot: -lon.z_alpha_dot * rate_l,
+        cl_de: -lon.z_de * m / qs,
+        cd_par: cd0 - k_induced * cl0 * cl0,
+        k_induced,
+        cd_u,
+        cm0: 0.0,
+        cm_u: (lon.m_u + lon.m_tu) * jyy * u0 / (qs * cb),
+        cm_alpha: lon.m_alpha * jyy / (qs * cb),
+        cm_q: lon.m_q * rate_m,
+        cm_alpha_dot: lon.m_alpha_dot * rate_m,
+        cm_de: lon.m_de * jyy / (qs * cb),
+        ce_beta: -lat.y_beta * m / qs - cd0,
+        ce_beta_dot: -lat.y_beta_dot * rate_y,
+        ce_p: -lat.y_p * rate_y,
+        ce_r: -lat.y_r * rate_y,
+        ce_da: -lat.y_da * m / qs,
+        ce_dr: -lat.y_dr * m / qs,
+        croll_beta: lat.l_beta * jxx / (qs * b),
+        croll_beta_dot: lat.l_beta_dot * rate_roll,
+        croll_p: lat.l_p * rate_roll,
+        croll_r: lat.l_r * rate_roll,
+        croll_da: lat.l_da * jxx / (qs * b),
+        croll_dr: lat.l_dr * jxx / (qs * b),
+        cn_beta: lat.n_beta * jzz / (qs * b),
+        cn_beta_dot: lat.n_beta_dot * rate_n,
+        cn_p: lat.n_p * rate_n,
+        cn_r: lat.n_r * rate_n,
+        cn_da: lat.n_da * jzz / (qs * b),
+        cn_dr: lat.n_dr * jzz / (qs * b),
+    };
+    // the data are fixed and physical: J_xz² ≪ J_xx J_zz, all moments positive
+    let airframe = match Airframe::new(m, jxx, jyy, jzz, lat.jxz) {
+        Ok(a) => a,
+        Err(e) => unreachable!("business-jet data are valid: {e}"),
+    };
+    Aircraft { airframe, geometry, coefficients, rho, g, thrust_angle: 0.0 }
+}

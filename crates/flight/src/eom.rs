@@ -81,8 +81,9 @@ impl Airframe {
     fn mass_properties<T: Scalar>(&self) -> Result<MassProperties<T>, FlightError> {
         let f = Frame::<T>::identity();
         let j = self.inertia_matrix().map(T::lit);
-        MassProperties::new(T::lit(self.mass), Point::origin(), f.dyadic(&j))
-            .map_err(|_| FlightError::InvalidParameter { what: "inertia", value: self.jxz, valid: "a physical inertia" })
+        MassProperties::new(T::lit(self.mass), Point::origin(), f.dyadic(&j)).map_err(|_| {
+            FlightError::InvalidParameter { what: "inertia", value: self.jxz, valid: "a physical inertia" }
+        })
     }
 }
 
@@ -181,7 +182,8 @@ pub fn state_derivative<T: Scalar>(
     let v_dot = -omega.cross(&v) + (f_aero + f_thrust) / m + g_ac;
     // (11.5.12–14): J ω̇ = M − ω × Jω, with ω × Jω from the dynamics crate's rigid body
     let frame = Frame::<T>::identity();
-    let body = RigidBody::new(airframe.mass_properties::<T>()?, frame.vector(x.velocity), frame.vector(x.omega));
+    let body =
+        RigidBody::new(airframe.mass_properties::<T>()?, frame.vector(x.velocity), frame.vector(x.omega));
     let gyro = vectrix_frames::Resolve::resolve(&body.gyroscopic_moment(), &frame);
     let rhs = Vector3::new(fm.roll, fm.pitch, fm.yaw) - gyro;
     let (jxx, jyy, jzz, jxz) = airframe.inertia();

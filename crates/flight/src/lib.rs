@@ -13,21 +13,30 @@
 //! β = atan2(V, √(U²+W²)); state x = [X Y Z U V W Φ Θ Ψ P Q R] (11.5.1).
 #![warn(missing_docs)]
 
+mod aero;
 mod angles;
 mod catalog;
 mod derivatives;
 mod eom;
 mod error;
+mod linearize;
 mod modes;
 mod rates;
+mod table;
+mod trim;
 
+pub use aero::{
+    Aircraft, Coefficients, Controls, Geometry, aero_angle_rates, cm_alpha_from_static_margin,
+    induced_drag_factor, static_margin,
+};
 pub use angles::{AeroAngles, Euler321, FlightPathAngles, o_s_ac, o_w_ac, o_w_s, o1, o2, o3};
 pub use catalog::{
-    BUSINESS_JET_U0, boeing_747_longitudinal_a, business_jet_lateral, business_jet_longitudinal,
+    BUSINESS_JET_U0, BUSINESS_JET_WEIGHT, boeing_747_longitudinal_a, business_jet, business_jet_lateral, business_jet_longitudinal,
 };
 pub use derivatives::{Descriptor, LateralDerivatives, LongitudinalDerivatives};
 pub use eom::{AircraftState, Airframe, ForcesMoments, state_derivative};
 pub use error::FlightError;
+pub use linearize::{Linearization, linearize};
 pub use modes::{
     FlightMode, LateralModes, LongitudinalModes, characteristic_polynomial, eigenflight, eigenvector,
     lateral_modes, longitudinal_modes,
@@ -36,8 +45,11 @@ pub use rates::{
     GIMBAL_LOCK_TOL, body_rates, euler_rate_matrix, euler_rates, orientation_from_quaternion,
     quaternion_from_euler321, quaternion_rates,
 };
+pub use trim::{Trim, TrimLimits, TrimSpec, trim};
 
 /// `use vectrix_flight::prelude::*;`
 pub mod prelude {
-    pub use crate::{AeroAngles, Euler321, FlightError, FlightPathAngles, LateralDerivatives, LongitudinalDerivatives};
+    pub use crate::{
+        AeroAngles, Euler321, FlightError, FlightPathAngles, LateralDerivatives, LongitudinalDerivatives,
+    };
 }
