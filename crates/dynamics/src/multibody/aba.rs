@@ -19,6 +19,8 @@ pub struct AbaScratch {
     Dinv: Vec<Matrix3<f64>>,
     u: Vec<Vector3<f64>>,
     a: Vec<Vector6<f64>>,
+    w: Vec<Vector3<f64>>,
+    v: Vec<Vector3<f64>>,
 }
 
 impl Model {
@@ -34,6 +36,8 @@ impl Model {
             Dinv: vec![Matrix3::zeros(); n],
             u: vec![Vector3::zeros(); n],
             a: vec![Vector6::zeros(); n],
+            w: vec![Vector3::zeros(); n],
+            v: vec![Vector3::zeros(); n],
         }
     }
 
@@ -91,13 +95,11 @@ impl Model {
         s: &mut AbaScratch,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
-        let mut w = vec![Vector3::zeros(); n];
-        let mut vel = vec![Vector3::zeros(); n];
         // pass 1 (outward): twists, bias accelerations c = 𝒱 ×m S q̇, bias forces 𝒱 ×f 𝒥𝒱
         for (i, seg) in self.segs.iter().enumerate() {
             let x = seg.placement.then(&seg.elem.xform(&q[seg.qi..]));
             let (wp, vp) = match seg.parent {
-                Some(p) => (w[p], vel[p]),
+                Some(p) => (s.w[p], s.v[p]),
                 None => (Vector3::zeros(), Vector3::zeros()),
             };
             let (mut wi, mut vi) = x.motion(&wp, &vp);
@@ -111,7 +113,7 @@ impl Model {
             s.c[i] = join(&cw, &cv);
             s.IA[i] = seg.inertia.matrix();
             s.pA[i] = join(&bn, &bf);
-            (w[i], vel[i]) = (wi, vi);
+            (s.w[i], s.v[i]) = (wi, vi);
         }
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
@@ -144,7 +146,9 @@ impl Model {
                     s.U[i].set_column(0, &U);
                     s.Dinv[i][(0, 0)] = 1.0 / D;
                     s.u[i][0] = u;
-                    (IA - U * U.transpose() / D, pA + (IA - U * U.transpose() / D) * s.c[i] + U * (u / D))
+                    let Ia = IA - U * (U.transpose() / D);
+                    let pa = pA + Ia * s.c[i] + U * (u / D);
+                    (Ia, pa)
                 }
                 Elem::Spherical => {
                     let U: Matrix6x3<f64> = IA.fixed_columns::<3>(0).into_owned();
@@ -168,11 +172,9 @@ impl Model {
                 Elem::Fixed => (IA, pA + IA * s.c[i]),
             };
             if let Some(p) = seg.parent {
-                let X = s.x[i].matrix();
-                s.IA[p] += X.transpose() * Ia * X;
-                let (pn, pf) = split(&pa);
-                let (np, fp) = s.x[i].force_to_parent(&pn, &pf);
-                s.pA[p] += join(&np, &fp);
+                let add = s.x[i].inertia_to_parent(&Ia);
+                s.IA[p] += add;
+                s.pA[p] += s.x[i].force6_to_parent(&pa);
             }
         }
         // pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈

@@ -1,12 +1,11 @@
 //! The joint-space mass matrix by the composite-rigid-body algorithm, and forward dynamics
 //! by CRBA + Cholesky (the cross-check of the articulated-body algorithm).
-#![allow(non_snake_case)]
 
 use nalgebra::{DMatrix, DVector, Matrix6, Vector6};
 
 use super::model::{Elem, Model};
 use super::rnea::LinkWrenches;
-use super::spatial::join;
+use super::spatial::{Xform, join};
 use crate::DynamicsError;
 
 /// The columns of S for one elementary joint (6-vectors in (ω, v) ordering).
@@ -36,39 +35,39 @@ impl Model {
     /// [`Model::crba`] without input checks.
     pub fn crba_unchecked(&self, q: &[f64]) -> DMatrix<f64> {
         let n = self.segs.len();
-        let X: Vec<Matrix6<f64>> =
-            self.segs.iter().map(|s| s.placement.then(&s.elem.xform(&q[s.qi..])).matrix()).collect();
-        let mut Ic: Vec<Matrix6<f64>> = self.segs.iter().map(|s| s.inertia.matrix()).collect();
+        let x: Vec<Xform> = self.segs.iter().map(|s| s.placement.then(&s.elem.xform(&q[s.qi..]))).collect();
+        let subspaces: Vec<Vec<Vector6<f64>>> = self.segs.iter().map(|s| subspace(&s.elem)).collect();
+        // composite inertias, tip to base: Iᶜ_p += Xᵀ Iᶜ_i X
+        let mut ic: Vec<Matrix6<f64>> = self.segs.iter().map(|s| s.inertia.matrix()).collect();
         for i in (0..n).rev() {
             if let Some(p) = self.segs[i].parent {
-                let add = X[i].transpose() * Ic[i] * X[i];
-                Ic[p] += add;
+                let add = x[i].inertia_to_parent(&ic[i]);
+                ic[p] += add;
             }
         }
-        let mut H = DMatrix::zeros(self.nv, self.nv);
+        let mut h = DMatrix::zeros(self.nv, self.nv);
         for i in 0..n {
-            let si = subspace(&self.segs[i].elem);
-            for (ki, s) in si.iter().enumerate() {
+            for (ki, s) in subspaces[i].iter().enumerate() {
                 let row = self.segs[i].vi + ki;
-                // F = Iᶜ_i S_i, carried towards the base
-                let mut F = Ic[i] * s;
-                for (kj, sj) in si.iter().enumerate() {
-                    H[(row, self.segs[i].vi + kj)] = sj.dot(&F);
+                // F = Iᶜ_i S_i, carried towards the base: H_ij = S_jᵀ F
+                let mut f = ic[i] * s;
+                for (kj, sj) in subspaces[i].iter().enumerate() {
+                    h[(row, self.segs[i].vi + kj)] = sj.dot(&f);
                 }
                 let mut j = i;
                 while let Some(p) = self.segs[j].parent {
-                    F = X[j].transpose() * F;
+                    f = x[j].force6_to_parent(&f);
                     j = p;
-                    for (kj, sj) in subspace(&self.segs[j].elem).iter().enumerate() {
+                    for (kj, sj) in subspaces[j].iter().enumerate() {
                         let col = self.segs[j].vi + kj;
-                        let hij = sj.dot(&F);
-                        H[(row, col)] = hij;
-                        H[(col, row)] = hij;
+                        let hij = sj.dot(&f);
+                        h[(row, col)] = hij;
+                        h[(col, row)] = hij;
                     }
                 }
             }
         }
-        H
+        h
     }
 
     /// Forward dynamics by H(q) v̇ = τ − C(q, v), C from [`Model::rnea`] with v̇ = 0, solved
@@ -88,8 +87,8 @@ impl Model {
         self.check_v(tau, "τ")?;
         let zero = vec![0.0; self.nv];
         let bias = self.rnea(q, v, &zero, f_ext)?.tau;
-        let H = self.crba_unchecked(q);
+        let h = self.crba_unchecked(q);
         let rhs = DVector::from_iterator(self.nv, tau.iter().zip(&bias).map(|(t, c)| t - c));
-        crate::lagrange::cholesky_solve(H, rhs).map(|x| x.as_slice().to_vec())
+        crate::lagrange::cholesky_solve(h, rhs).map(|x| x.as_slice().to_vec())
     }
 }

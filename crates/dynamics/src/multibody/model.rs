@@ -138,10 +138,22 @@ impl Elem {
         match self {
             // passive rotation about a by θ: E = 𝓡(a, θ)ᵀ
             Elem::Revolute(a) => {
+                // E = 𝓡(a, θ)ᵀ = c I − s a^× + (1 − c) a aᵀ (Rodrigues, transposed)
                 let (s, c) = q[0].sin_cos();
-                let ax = a.cross_matrix();
-                let r = Matrix3::identity() + ax * s + ax * ax * (1.0 - c);
-                Xform { E: r.transpose(), r: Vector3::zeros() }
+                let k = 1.0 - c;
+                let (x, y, z) = (a.x, a.y, a.z);
+                let e = Matrix3::new(
+                    c + k * x * x,
+                    k * x * y + s * z,
+                    k * x * z - s * y,
+                    k * x * y - s * z,
+                    c + k * y * y,
+                    k * y * z + s * x,
+                    k * x * z + s * y,
+                    k * y * z - s * x,
+                    c + k * z * z,
+                );
+                Xform { E: e, r: Vector3::zeros() }
             }
             Elem::Prismatic(a) => Xform { E: Matrix3::identity(), r: a * q[0] },
             Elem::Spherical => {

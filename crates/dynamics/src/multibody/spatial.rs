@@ -27,6 +27,36 @@ impl Xform {
         Xform { E: inner.E * self.E, r: self.r + self.E.tr_mul(&inner.r) }
     }
 
+    /// Xᵀ I X for a symmetric 6×6 inertia in (ω, v) ordering, by 3×3 blocks: rotate
+    /// (A, B, C) → (EᵀAE, EᵀBE, EᵀCE), then shift by r: B'' = B' + r^×C',
+    /// A'' = A' + r^×B'ᵀ − B'r^× − r^×C'r^× (RBDA §2.12, transformed inertia).
+    #[inline(always)]
+    pub fn inertia_to_parent(&self, ia: &Matrix6<f64>) -> Matrix6<f64> {
+        let a = ia.fixed_view::<3, 3>(0, 0).into_owned();
+        let b = ia.fixed_view::<3, 3>(0, 3).into_owned();
+        let c = ia.fixed_view::<3, 3>(3, 3).into_owned();
+        let et = self.E.transpose();
+        let (a1, b1, c1) = (et * a * self.E, et * b * self.E, et * c * self.E);
+        let rx = self.r.cross_matrix();
+        let rc = rx * c1;
+        let b2 = b1 + rc;
+        let a2 = a1 + rx * b1.transpose() - b1 * rx - rc * rx;
+        let mut out = Matrix6::zeros();
+        out.fixed_view_mut::<3, 3>(0, 0).copy_from(&a2);
+        out.fixed_view_mut::<3, 3>(0, 3).copy_from(&b2);
+        out.fixed_view_mut::<3, 3>(3, 0).copy_from(&b2.transpose());
+        out.fixed_view_mut::<3, 3>(3, 3).copy_from(&c1);
+        out
+    }
+
+    /// Xᵀ f for a force 6-vector (n, f).
+    #[inline(always)]
+    pub fn force6_to_parent(&self, x: &Vector6<f64>) -> Vector6<f64> {
+        let (n, f) = split(x);
+        let (np, fp) = self.force_to_parent(&n, &f);
+        join(&np, &fp)
+    }
+
     /// Motion vector from P to C: ω_C = Eω, v_C = E(v − r×ω).
     #[inline(always)]
     pub fn motion(&self, w: &Vector3<f64>, v: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
@@ -41,6 +71,7 @@ impl Xform {
     }
 
     /// The 6×6 motion transform ^C X_P in (ω, v) ordering.
+    #[cfg(test)]
     pub fn matrix(&self) -> Matrix6<f64> {
         let mut x = Matrix6::zeros();
         x.fixed_view_mut::<3, 3>(0, 0).copy_from(&self.E);
@@ -114,4 +145,28 @@ pub(crate) fn join(a: &Vector3<f64>, b: &Vector3<f64>) -> Vector6<f64> {
 #[inline(always)]
 pub(crate) fn split(x: &Vector6<f64>) -> (Vector3<f64>, Vector3<f64>) {
     (Vector3::new(x[0], x[1], x[2]), Vector3::new(x[3], x[4], x[5]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The block formula for Xᵀ I X equals the 6×6 product.
+    #[test]
+    fn inertia_to_parent_matches_matrix_product() {
+        let x = Xform {
+            E: nalgebra::Rotation3::from_scaled_axis(Vector3::new(0.3, -0.7, 0.4)).into_inner(),
+            r: Vector3::new(0.5, -0.2, 0.9),
+        };
+        let i = BodyInertia::from_centre(
+            1.3,
+            &Vector3::new(0.1, 0.4, -0.3),
+            &Matrix3::new(2.0, 0.1, 0.0, 0.1, 3.0, 0.2, 0.0, 0.2, 4.0),
+        )
+        .matrix();
+        let want = x.matrix().transpose() * i * x.matrix();
+        assert!((x.inertia_to_parent(&i) - want).norm() < 1e-13 * want.norm());
+        let f = Vector6::new(0.1, 0.2, 0.3, -0.4, 0.5, -0.6);
+        assert!((x.force6_to_parent(&f) - x.matrix().transpose() * f).norm() < 1e-14);
+    }
 }

@@ -30,7 +30,11 @@ pub(crate) fn solver(spec: &SceneSpec, src: &Src) -> Result<Adaptive, SceneError
             "dopri5" => Adaptive::dopri5(),
             "dop853" => Adaptive::dop853(),
             n => {
-                return Err(src.err(n, "method.name", format!("unknown method `{n}`; valid: dopri5, dop853")));
+                return Err(src.err(
+                    n,
+                    "method.name",
+                    format!("unknown method `{n}`; valid: dopri5, dop853"),
+                ));
             }
         };
         return Ok(a.rtol(m.rtol).atol(m.rtol));
