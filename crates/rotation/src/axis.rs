@@ -46,7 +46,7 @@ impl Axis {
 }
 
 /// Elementary orientation matrix 𝓞_i(θ) (2.12.14–16), passive: 𝓞_{B/A} when F_B = R⃗_{î_A}(θ)F_A
-/// (and likewise for axes 2, 3). 𝓞₁(θ) = [[1,0,0],[0,c,s],[0,−s,c]].
+/// (and likewise for axes 2, 3). 𝓞₁(θ) = `[[1,0,0],[0,c,s],[0,−s,c]]`.
 ///
 /// Book: (2.12.14–16), Fact 2.12.1, Fact 2.13.1.
 #[doc(alias = "O1")]
@@ -58,7 +58,7 @@ pub fn orientation_about<T: Scalar>(axis: Axis, theta: T) -> Matrix3<T> {
 }
 
 /// Elementary rotation matrix 𝓡_i(θ) = 𝓞_i(θ)ᵀ (active, right-hand rule).
-/// 𝓡₃(θ) = [[c,−s,0],[s,c,0],[0,0,1]].
+/// 𝓡₃(θ) = `[[c,−s,0],[s,c,0],[0,0,1]]`.
 ///
 /// Book: (2.12.17–19).
 #[doc(alias = "R1")]
