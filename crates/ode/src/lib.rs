@@ -13,6 +13,22 @@
 //!
 //! Every run reports its [`Work`]. Bad input returns an [`OdeError`] that says where.
 //!
+//! ```
+//! use nalgebra::Vector2;
+//! use vectrix_ode::{Accuracy, Adaptive, Direction, Event};
+//! // ẍ = −x from x = 1 at rest: x = cos t; stop where x crosses 0 downwards (t = π/2)
+//! let f = |_: f64, y: &Vector2<f64>| Vector2::new(y[1], -y[0]);
+//! let mut stop = [Event::new(|_, y: &Vector2<f64>| y[0]).direction(Direction::Falling).terminal(true)];
+//! let sol = Adaptive::dop853().rtol(1e-12).atol(1e-12)
+//!     .solve_with_events(f, 0.0, &Vector2::new(1.0, 0.0), 10.0, &mut stop)?;
+//! assert!((sol.t.last().unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-10);
+//! // or state the accuracy and let the harness table choose the method
+//! let sol = Accuracy::RelTol(1e-9).solve(f, 0.0, &Vector2::new(1.0, 0.0), 10.0)?;
+//! assert!((sol.last()[0] - 10f64.cos()).abs() < 1e-9);
+//! println!("{}", sol.work); // f-evals, accepted/rejected steps, Jacobians, wall time
+//! # Ok::<(), vectrix_ode::OdeError>(())
+//! ```
+//!
 //! Book: §4.11 (integration of the attitude rate equations); HNW = Hairer, Nørsett &
 //! Wanner, *Solving Ordinary Differential Equations I*; HLW = Hairer, Lubich & Wanner,
 //! *Geometric Numerical Integration*.

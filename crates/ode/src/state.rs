@@ -19,6 +19,14 @@ pub trait State: Clone {
     fn dim(&self) -> usize {
         self.as_slice().len()
     }
+    /// self ← self + a·x, the one kernel of every Runge–Kutta stage (overridden by
+    /// fixed-size types so that it unrolls).
+    #[inline(always)]
+    fn add_scaled(&mut self, a: f64, x: &Self) {
+        for (o, xi) in self.as_mut_slice().iter_mut().zip(x.as_slice()) {
+            *o += a * xi;
+        }
+    }
 }
 
 impl<const N: usize> State for SVector<f64, N> {
@@ -29,6 +37,10 @@ impl<const N: usize> State for SVector<f64, N> {
     #[inline(always)]
     fn as_mut_slice(&mut self) -> &mut [f64] {
         nalgebra::Matrix::as_mut_slice(self)
+    }
+    #[inline(always)]
+    fn add_scaled(&mut self, a: f64, x: &Self) {
+        *self += x * a;
     }
 }
 
@@ -80,15 +92,9 @@ impl State for f64 {
 #[inline(always)]
 pub(crate) fn combine<S: State>(y: &S, h: f64, c: &[f64], k: &[S]) -> S {
     let mut out = y.clone();
-    {
-        let o = out.as_mut_slice();
-        for (cj, kj) in c.iter().zip(k) {
-            if *cj != 0.0 {
-                let a = h * cj;
-                for (oi, ki) in o.iter_mut().zip(kj.as_slice()) {
-                    *oi += a * ki;
-                }
-            }
+    for (cj, kj) in c.iter().zip(k) {
+        if *cj != 0.0 {
+            out.add_scaled(h * cj, kj);
         }
     }
     out

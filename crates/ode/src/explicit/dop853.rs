@@ -34,18 +34,27 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
     // y₁ = y + h Σ bᵢ kᵢ (8th order)
     let y1 = combine(y, h, &B, k);
     let (rtol, atol) = tol;
+    // 5th-order estimate e₅ = Σ eᵢ kᵢ; 3rd-order e₃ = Σ bᵢkᵢ − (bhh₁k₁ + bhh₂k₉ + bhh₃k₁₂)
+    let mut e5 = y.clone();
+    e5.as_mut_slice().fill(0.0);
+    let mut e3 = e5.clone();
+    for j in 0..12 {
+        if E[j] != 0.0 {
+            e5.add_scaled(E[j], &k[j]);
+        }
+        if B[j] != 0.0 {
+            e3.add_scaled(B[j], &k[j]);
+        }
+    }
+    e3.add_scaled(-BHH[0], &k[0]);
+    e3.add_scaled(-BHH[1], &k[8]);
+    e3.add_scaled(-BHH[2], &k[11]);
     let (mut err5, mut err3) = (0.0, 0.0);
-    for i in 0..y.dim() {
-        let (yi, y1i) = (y.as_slice()[i], y1.as_slice()[i]);
+    let parts = y.as_slice().iter().zip(y1.as_slice()).zip(e5.as_slice().iter().zip(e3.as_slice()));
+    for ((yi, y1i), (e5i, e3i)) in parts {
         let sk = atol + rtol * yi.abs().max(y1i.abs());
-        let kk = |j: usize| k[j].as_slice()[i];
-        let bsum: f64 = B.iter().enumerate().map(|(j, b)| b * kk(j)).sum();
-        // 3rd-order estimate: Σbᵢkᵢ − (bhh₁k₁ + bhh₂k₉ + bhh₃k₁₂)
-        let e3 = bsum - BHH[0] * kk(0) - BHH[1] * kk(8) - BHH[2] * kk(11);
-        // 5th-order estimate: Σ eᵢ kᵢ
-        let e5: f64 = E[..12].iter().enumerate().map(|(j, e)| e * kk(j)).sum();
-        err3 += (e3 / sk).powi(2);
-        err5 += (e5 / sk).powi(2);
+        err3 += (e3i / sk).powi(2);
+        err5 += (e5i / sk).powi(2);
     }
     let mut deno = err5 + 0.01 * err3;
     if deno <= 0.0 {

@@ -29,11 +29,18 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
         k.push(ki);
     }
     let (rtol, atol) = tol;
+    // local error estimate h Σ eᵢ kᵢ
+    let mut e = y.clone();
+    e.as_mut_slice().fill(0.0);
+    for (ej, kj) in DOPRI5_E.iter().zip(k.iter()) {
+        if *ej != 0.0 {
+            e.add_scaled(h * ej, kj);
+        }
+    }
     let mut err = 0.0;
-    for i in 0..y.dim() {
-        let sk = atol + rtol * y.as_slice()[i].abs().max(y1.as_slice()[i].abs());
-        let e: f64 = DOPRI5_E.iter().zip(k.iter()).map(|(e, kj)| e * kj.as_slice()[i]).sum();
-        err += (h * e / sk).powi(2);
+    for ((yi, y1i), ei) in y.as_slice().iter().zip(y1.as_slice()).zip(e.as_slice()) {
+        let sk = atol + rtol * yi.abs().max(y1i.abs());
+        err += (ei / sk).powi(2);
     }
     Ok((y1, (err / y.dim() as f64).sqrt()))
 }

@@ -56,6 +56,7 @@ impl Reference<2> for Oscillator {
     fn t_end(&self) -> f64 {
         10.0
     }
+    #[inline]
     fn rhs(&self, _: f64, y: &Vector2<f64>) -> Vector2<f64> {
         Vector2::new(y[1], -y[0])
     }
@@ -90,6 +91,7 @@ impl Reference<2> for Pendulum {
     fn t_end(&self) -> f64 {
         10.0
     }
+    #[inline]
     fn rhs(&self, _: f64, y: &Vector2<f64>) -> Vector2<f64> {
         Vector2::new(y[1], -y[0].sin())
     }
@@ -146,6 +148,7 @@ impl Reference<4> for Kepler {
     fn t_end(&self) -> f64 {
         20.0
     }
+    #[inline]
     fn rhs(&self, _: f64, y: &Vector4<f64>) -> Vector4<f64> {
         let r2 = y[0] * y[0] + y[1] * y[1];
         let r3 = r2 * r2.sqrt();
@@ -170,8 +173,8 @@ impl Separable<2> for Kepler {
 
 /// Stiff chain of `5` unit masses between two walls, unit springs K = tridiag(−1, 2, −1)
 /// and proportional dashpots C = αK (the harness uses α = 1000: modal roots from −0.001 to
-/// −3732, stiffness ratio ≈ 4·10⁶). State y = (x, v); x₀ = (1, 0, 0, 0, 0), v₀ = 0, on [0, 10]. Exact by the
-/// modes: K vⱼ = λⱼ vⱼ, λⱼ = 2 − 2cos(jπ/6), vⱼ,ᵢ = sin(ijπ/6).
+/// −3732, stiffness ratio ≈ 4·10⁶). State y = (x, v); x₀ = (1, 0, 0, 0, 0), v₀ = 0, on
+/// [0, 10]. Exact by the modes: K vⱼ = λⱼ vⱼ, λⱼ = 2 − 2cos(jπ/6), vⱼ,ᵢ = sin(ijπ/6).
 ///
 /// Book: §4.11; HNW II §IV.1 (stiff problems).
 #[derive(Debug, Clone, Copy)]
@@ -205,6 +208,7 @@ impl Reference<10> for SpringChain {
     fn t_end(&self) -> f64 {
         10.0
     }
+    #[inline]
     fn rhs(&self, _: f64, y: &SVector<f64, 10>) -> SVector<f64, 10> {
         let n = CHAIN_MASSES;
         let mut d = SVector::<f64, 10>::zeros();

@@ -37,6 +37,7 @@ impl Default for RigidBody {
 }
 
 /// Euler's equations ω̇ = I⁻¹(Iω × ω) in principal axes.
+#[inline]
 pub fn euler_equations(i: &[f64; 3], w: &Vector3<f64>) -> Vector3<f64> {
     Vector3::new(
         (i[1] - i[2]) * w[1] * w[2] / i[0],
@@ -46,6 +47,7 @@ pub fn euler_equations(i: &[f64; 3], w: &Vector3<f64>) -> Vector3<f64> {
 }
 
 /// q̇ = ½ q ⊗ (0, ω_B) for q = (η, ε) scalar first (4.11.13).
+#[inline]
 pub fn quaternion_rate(q: &Vector4<f64>, w: &Vector3<f64>) -> Vector4<f64> {
     let (eta, e) = (q[0], Vector3::new(q[1], q[2], q[3]));
     let de = (w * eta + e.cross(w)) * 0.5;
@@ -139,6 +141,7 @@ impl Reference<7> for RigidBody {
     fn t_end(&self) -> f64 {
         self.t_end
     }
+    #[inline]
     fn rhs(&self, _: f64, y: &SVector<f64, 7>) -> SVector<f64, 7> {
         let w = Vector3::new(y[0], y[1], y[2]);
         let q = Vector4::new(y[3], y[4], y[5], y[6]);
