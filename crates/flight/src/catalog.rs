@@ -95,7 +95,7 @@ pub fn boeing_747_longitudinal_a() -> DMatrix<f64> {
 
 /// Assumed business-jet airframe behind Tables 14.1–14.2 (the book gives only the
 /// dimensional derivatives and J_xx, J_zz, J_xz): weight 13,000 lb, S = 230 ft², c̄ = 7 ft,
-/// b = 34 ft, J_yy = 18,800 slug·ft², ρ = 0.000588 slug/ft³ (40,000 ft), C_D0 = 0.03.
+/// b = 34 ft, J_yy = 25,000 slug·ft² (J_zz ≤ J_xx + J_yy needs J_yy ≥ 19,170), ρ = 0.000588 slug/ft³ (40,000 ft), C_D0 = 0.03.
 ///
 /// Book: Tables 14.1, 14.2 (J_xx, J_zz, J_xz); the other values are assumptions of a
 /// Learjet-class aircraft, chosen only to give the nondimensional model a scale.
@@ -113,7 +113,7 @@ pub fn business_jet() -> crate::Aircraft {
     let lat = business_jet_lateral();
     let (g, u0) = (lon.g, lon.u0);
     let m = BUSINESS_JET_WEIGHT / g;
-    let jyy = 18_800.0;
+    let jyy = 25_000.0;
     let geometry = Geometry { area: 230.0, chord: 7.0, span: 34.0 };
     let rho = 0.000_588;
     let qs = 0.5 * rho * u0 * u0 * geometry.area;
