@@ -1,0 +1,258 @@
+//! Chapter 10: aircraft frames and angles (earth, aircraft, stability, wind frames), angle of
+//! attack and sideslip, heading/flight-path/bank angles, angular velocity and attitude rates.
+//!
+//! Problem answers are the chapter notes' [C] values (the book prints no answers), at the
+//! notes' printed precision.
+mod support;
+
+use nalgebra::{Matrix3, Vector3};
+use support::{EPS, assert_close};
+use vectrix::flight::*;
+
+fn printed(digits: i32) -> f64 {
+    0.5 * 10f64.powi(-digits)
+}
+
+fn deg(x: f64) -> f64 {
+    x.to_radians()
+}
+
+#[test]
+fn problem_10_11_1_alpha_beta_and_stability_wind_velocity() {
+    // P10.11.1: V = (72, −6.3, −43) m/s ⇒ α = −30.847°, β = −4.296°, V|_S = (83.863, −6.3, 0),
+    // V|_W = (84.099, 0, 0).
+    let a: AeroAngles = AeroAngles::from_body_velocity([72.0, -6.3, -43.0]);
+    assert_close(a.alpha.to_degrees(), -30.847, printed(3));
+    assert_close(a.beta.to_degrees(), -4.296, printed(3));
+    let v = Vector3::new(72.0, -6.3, -43.0);
+    let v_s = o_s_ac(a.alpha) * v;
+    for (g, w) in v_s.iter().zip([83.863, -6.3, 0.0]) {
+        assert_close(*g, w, printed(3));
+    }
+    let v_w = o_w_ac(a.alpha, a.beta) * v;
+    for (g, w) in v_w.iter().zip([84.099, 0.0, 0.0]) {
+        assert_close(*g, w, printed(3));
+    }
+}
+
+#[test]
+fn problem_10_11_2_and_3_body_velocity_from_alpha_beta() {
+    // P10.11.2: α = 14°, V = 94 ⇒ V|_AC = (91.208, 0, 22.741). P10.11.3: α = 10°, β = −19°,
+    // V = 80 ⇒ V|_AC = (74.492, −26.046, 13.135), V|_S = (75.642, −26.046, 0).
+    let a = AeroAngles { airspeed: 94.0, alpha: deg(14.0), beta: 0.0 };
+    for (g, w) in a.body_velocity().iter().zip([91.208, 0.0, 22.741]) {
+        assert_close(*g, w, printed(3));
+    }
+    let a = AeroAngles { airspeed: 80.0, alpha: deg(10.0), beta: deg(-19.0) };
+    let v = a.body_velocity();
+    for (g, w) in v.iter().zip([74.492, -26.046, 13.135]) {
+        assert_close(*g, w, printed(3));
+    }
+    let v_s = o_s_ac(a.alpha) * Vector3::from(v);
+    for (g, w) in v_s.iter().zip([75.642, -26.046, 0.0]) {
+        assert_close(*g, w, printed(3));
+    }
+}
+
+#[test]
+fn problem_10_11_4_gravity_in_aircraft_and_stability_frames() {
+    // P10.11.4: (Ψ, Θ, Φ) = (22, 5, −24)°, α = −17°, g = 9.8 ⇒ g|_AC = (−0.8541, −3.9709, 8.9187),
+    // g|_S = (−3.4244, −3.9709, 8.2793) m/s².
+    let e = Euler321::new(deg(22.0), deg(5.0), deg(-24.0));
+    let g_ac = e.o_ac_e() * Vector3::new(0.0, 0.0, 9.8);
+    for (g, w) in g_ac.iter().zip([-0.8541, -3.9709, 8.9187]) {
+        assert_close(*g, w, printed(4));
+    }
+    let g_s = o_s_ac(deg(-17.0)) * g_ac;
+    for (g, w) in g_s.iter().zip([-3.4244, -3.9709, 8.2793]) {
+        assert_close(*g, w, printed(4));
+    }
+}
+
+#[test]
+fn problem_10_11_5_position_in_aircraft_frame() {
+    // P10.11.5: r_E = (6.2, −14.1, 65.2), (Ψ, Θ, Φ) = (62, 7, −12)° ⇒ r_AC = (−17.414, −25.043,
+    // 59.648); |r| = 66.995 in both frames.
+    let e = Euler321::new(deg(62.0), deg(7.0), deg(-12.0));
+    let r_e = Vector3::new(6.2, -14.1, 65.2);
+    let r_ac = e.o_ac_e() * r_e;
+    for (g, w) in r_ac.iter().zip([-17.414, -25.043, 59.648]) {
+        assert_close(*g, w, printed(3));
+    }
+    assert_close(r_ac.norm(), 66.995, printed(3));
+    assert_close(r_e.norm(), r_ac.norm(), 8.0 * EPS);
+}
+
+#[test]
+fn problem_10_11_6_roll_changes_alpha_and_beta() {
+    // P10.11.6: α = −13°, β = 24°, V = 85 ⇒ V_AC = (75.661, 34.573, −17.468); after a +23°
+    // roll V_AC = (75.661, 24.999, −29.588), α = −21.358°, β = 17.104°.
+    let a = AeroAngles { airspeed: 85.0, alpha: deg(-13.0), beta: deg(24.0) };
+    let v = a.body_velocity();
+    for (g, w) in v.iter().zip([75.661, 34.573, -17.468]) {
+        assert_close(*g, w, printed(3));
+    }
+    let v2 = o1(deg(23.0)) * Vector3::from(v);
+    for (g, w) in v2.iter().zip([75.661, 24.999, -29.588]) {
+        assert_close(*g, w, printed(3));
+    }
+    let a2: AeroAngles = AeroAngles::from_body_velocity([v2[0], v2[1], v2[2]]);
+    assert_close(a2.alpha.to_degrees(), -21.358, printed(3));
+    assert_close(a2.beta.to_degrees(), 17.104, printed(3));
+}
+
+#[test]
+fn problem_10_11_7_body_rates_and_inverse() {
+    // P10.11.7: (Φ, Θ, Ψ) = (−52, −29, 14)°, rates (16, −7, 19)°/s ⇒ (P, Q, R) =
+    // (25.2114, −17.4046, 4.7148)°/s; the inverse (10.9.9) round-trips.
+    let e = Euler321::new(deg(14.0), deg(-29.0), deg(-52.0));
+    let rates = [deg(16.0), deg(-7.0), deg(19.0)];
+    let pqr = body_rates(&e, rates);
+    for (g, w) in pqr.iter().zip([25.2114, -17.4046, 4.7148]) {
+        assert_close(g.to_degrees(), w, printed(4));
+    }
+    let back = euler_rates(&e, pqr).unwrap();
+    for (g, w) in back.iter().zip(rates) {
+        assert_close(*g, w, 8.0 * EPS);
+    }
+}
+
+#[test]
+fn eq_10_6_18_alpha_beta_defined_at_zero_speed() {
+    // (10.6.18): if the velocity has no component in the plane of symmetry, the book sets
+    // α = 0; at zero speed also β = 0. No NaN.
+    let a: AeroAngles = AeroAngles::from_body_velocity([0.0, 0.0, 0.0]);
+    assert_eq!((a.airspeed, a.alpha, a.beta), (0.0, 0.0, 0.0));
+    let a: AeroAngles = AeroAngles::from_body_velocity([0.0, 5.0, 0.0]);
+    assert_eq!(a.alpha, 0.0);
+    assert_close(a.beta, std::f64::consts::FRAC_PI_2, 2.0 * EPS);
+    // flying backwards: α = π (never −π for W = +0)
+    let a: AeroAngles = AeroAngles::from_body_velocity([-10.0, 0.0, 0.0]);
+    assert_close(a.alpha, std::f64::consts::PI, 2.0 * EPS);
+}
+
+#[test]
+fn eq_10_9_9_gimbal_lock_is_an_error_quaternion_is_not() {
+    // (10.9.9) divides by cos Θ (det S = cos Θ): Err at Θ = ±90°; the quaternion rates of
+    // (9.7.37) are regular there.
+    let e = Euler321::new(0.3, std::f64::consts::FRAC_PI_2, 0.2);
+    assert!(matches!(euler_rates(&e, [0.1, 0.2, 0.3]), Err(FlightError::GimbalLock { .. })));
+    let q = quaternion_from_euler321(&e);
+    let qd = quaternion_rates(q, [0.1, 0.2, 0.3]);
+    assert!(qd.iter().all(|v| v.is_finite()));
+    // q·q̇ = 0: the rate keeps |q| = 1
+    let dot: f64 = q.iter().zip(qd).map(|(a, b)| a * b).sum();
+    assert_close(dot, 0.0, 8.0 * EPS);
+}
+
+#[test]
+fn eq_10_3_16_orientation_matrix_entries() {
+    // (10.3.16): 𝓞_{AC/E}(1,3) = −sin Θ, (2,3) = sin Φ cos Θ, (3,3) = cos Φ cos Θ, and the
+    // quaternion of the same angles gives the same matrix.
+    let e = Euler321::new(0.7, -0.4, 1.1);
+    let o = e.o_ac_e();
+    assert_close(o[(0, 2)], -(-0.4f64).sin(), 4.0 * EPS);
+    assert_close(o[(1, 2)], 1.1f64.sin() * (-0.4f64).cos(), 4.0 * EPS);
+    assert_close(o[(2, 2)], 1.1f64.cos() * (-0.4f64).cos(), 4.0 * EPS);
+    let oq = orientation_from_quaternion(quaternion_from_euler321(&e));
+    assert!((o - oq).amax() <= 8.0 * EPS);
+    assert!((o * o.transpose() - Matrix3::identity()).amax() <= 8.0 * EPS);
+}
+
+mod prop {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn angle() -> impl Strategy<Value = f64> {
+        prop_oneof![-3.1f64..3.1, Just(0.0), Just(1e-9), Just(-1e-9)]
+    }
+    fn pitch() -> impl Strategy<Value = f64> {
+        prop_oneof![-1.5f64..1.5, Just(1.5707), Just(-1.5707), Just(0.0)]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+
+        #[test]
+        fn fact_10_8_5_wings_level_no_sideslip(psi in angle(), theta in -1.2f64..1.2, alpha in -0.3f64..0.3) {
+            // Fact 10.8.5(i): Φ = β = 0 ⇒ μ = 0, η = Ψ, Θ = α + γ.
+            let e = Euler321::new(psi, theta, 0.0);
+            let fp = FlightPathAngles::from_attitude(&e, alpha, 0.0);
+            prop_assert!(fp.mu.abs() <= 64.0 * EPS);
+            prop_assert!((fp.eta - psi).abs() <= 64.0 * EPS);
+            prop_assert!((theta - (alpha + fp.gamma)).abs() <= 64.0 * EPS);
+        }
+
+        #[test]
+        fn fact_10_8_6_level_path_no_bank(psi in -1.0f64..1.0, beta in -0.4f64..0.4, theta in -0.5f64..0.5) {
+            // Fact 10.8.6(ii): Φ = μ = γ = 0 ⇒ Θ = α, Ψ = η − β. With Φ = 0 and α = Θ the
+            // path is level; then μ = 0 and η = Ψ + β.
+            let e = Euler321::new(psi, theta, 0.0);
+            let fp = FlightPathAngles::from_attitude(&e, theta, beta);
+            prop_assert!(fp.gamma.abs() <= 64.0 * EPS);
+            prop_assert!(fp.mu.abs() <= 64.0 * EPS);
+            prop_assert!((psi - (fp.eta - beta)).abs() <= 64.0 * EPS);
+        }
+
+        #[test]
+        fn eq_10_8_4_wind_frame_two_ways(psi in angle(), theta in -1.4f64..1.4, phi in angle(),
+                                         alpha in -0.5f64..0.5, beta in -0.5f64..0.5) {
+            // (10.8.4): 𝓞₁(μ)𝓞₂(γ)𝓞₃(η) = 𝓞₃(β)𝓞₂(−α)𝓞₁(Φ)𝓞₂(Θ)𝓞₃(Ψ) (away from γ = ±90°),
+            // and P10.11.10 [C]: sin μ = (sin Φ cos Θ + sin β sin γ)/(cos β cos γ).
+            let e = Euler321::new(psi, theta, phi);
+            let fp = FlightPathAngles::from_attitude(&e, alpha, beta);
+            prop_assume!(fp.gamma.cos() > 1e-3);
+            let lhs = fp.o_w_e();
+            let rhs = o_w_ac(alpha, beta) * e.o_ac_e();
+            prop_assert!((lhs - rhs).amax() <= 1e3 * EPS);
+            let sin_mu = (phi.sin() * theta.cos() + beta.sin() * fp.gamma.sin()) / (beta.cos() * fp.gamma.cos());
+            prop_assert!((fp.mu.sin() - sin_mu).abs() <= 1e4 * EPS);
+        }
+
+        #[test]
+        fn eq_10_6_28_alpha_beta_round_trip(v in 0.1f64..300.0, alpha in -3.1f64..3.1, beta in -1.5f64..1.5) {
+            // (10.6.28) and (10.6.18), (10.6.27) are inverse for α ∈ (−π, π], |β| < π/2.
+            let a = AeroAngles { airspeed: v, alpha, beta };
+            let b: AeroAngles = AeroAngles::from_body_velocity(a.body_velocity());
+            prop_assert!((b.airspeed - v).abs() <= 16.0 * EPS * v);
+            prop_assert!((b.alpha - alpha).abs() <= 1e3 * EPS);
+            prop_assert!((b.beta - beta).abs() <= 1e3 * EPS);
+        }
+
+        #[test]
+        fn eq_10_9_8_rates_round_trip_or_gimbal_lock(phi in angle(), theta in pitch(), psi in angle(),
+                                                     p in -1.0f64..1.0, q in -1.0f64..1.0, r in -1.0f64..1.0) {
+            // (10.9.8)/(10.9.9) are inverse where cos Θ ≠ 0; near ±90° either Err or finite.
+            let e = Euler321::new(psi, theta, phi);
+            match euler_rates(&e, [p, q, r]) {
+                Ok(rates) => {
+                    let back = body_rates(&e, rates);
+                    let tol = 64.0 * EPS / theta.cos().abs().max(1e-300);
+                    for (b, w) in back.iter().zip([p, q, r]) {
+                        prop_assert!((b - w).abs() <= tol);
+                    }
+                }
+                Err(FlightError::GimbalLock { cos_theta }) => prop_assert!(cos_theta.abs() < GIMBAL_LOCK_TOL),
+                Err(e) => prop_assert!(false, "{e}"),
+            }
+        }
+
+        #[test]
+        fn eq_10_9_23_quaternion_rate_matches_poisson(phi in angle(), theta in pitch(), psi in angle(),
+                                                      p in -1.0f64..1.0, q in -1.0f64..1.0, r in -1.0f64..1.0) {
+            // Poisson (10.9.23): 𝓞̇ = −ω^× 𝓞 for 𝓞 = 𝓞_{AC/E}; check d/dt of the quaternion's
+            // orientation matrix against it, through the chain rule in the direction q̇.
+            let e = Euler321::new(psi, theta, phi);
+            let q0 = quaternion_from_euler321(&e);
+            let qd = quaternion_rates(q0, [p, q, r]);
+            let h = 1e-6;
+            let qp: [f64; 4] = std::array::from_fn(|i| q0[i] + h * qd[i]);
+            let qm: [f64; 4] = std::array::from_fn(|i| q0[i] - h * qd[i]);
+            let od = (orientation_from_quaternion(qp) - orientation_from_quaternion(qm)) / (2.0 * h);
+            let w = Vector3::new(p, q, r);
+            let poisson = -w.cross_matrix() * orientation_from_quaternion(q0);
+            // central difference: O(h²) ≈ 1e-12 plus roundoff ε/h ≈ 2e-10
+            prop_assert!((od - poisson).amax() <= 1e-8);
+        }
+    }
+}
