@@ -45,18 +45,19 @@ pub fn induced_drag_factor(oswald: f64, aspect_ratio: f64) -> f64 {
 }
 
 /// C_mα = ((x_c − x_ac)/c̄) C_Lα (13.5.30): negative (statically stable) iff the centre of
-/// mass x_c is ahead of the aerodynamic centre x_ac (x measured forward along î_AC).
+/// mass is ahead of the aerodynamic centre. x_c and x_ac are measured aft from the wing's
+/// leading edge (the book's chordwise stations), so "ahead" means x_c < x_ac.
 ///
 /// Book: (13.5.30).
 pub fn cm_alpha_from_static_margin(x_c: f64, x_ac: f64, chord: f64, cl_alpha: f64) -> f64 {
     (x_c - x_ac) / chord * cl_alpha
 }
 
-/// Static margin (x_c − x_ac)/c̄ (positive = stable with x forward) of (13.5.30).
+/// Static margin (x_ac − x_c)/c̄ = −C_mα/C_Lα (positive = statically stable) of (13.5.30).
 ///
 /// Book: (13.5.30).
 pub fn static_margin(cm_alpha: f64, cl_alpha: f64) -> f64 {
-    cm_alpha / cl_alpha
+    -cm_alpha / cl_alpha
 }
 
 /// Nondimensional stability and control derivatives (absolute, about α = β = 0 of the body
@@ -155,6 +156,68 @@ pub struct Aircraft {
 }
 
 impl Aircraft {
+    /// Checks that every coefficient and parameter is finite and ρ, g, S, c̄, b > 0.
+    ///
+    /// # Errors
+    /// [`FlightError::NonFinite`] for a non-finite coefficient; [`FlightError::InvalidParameter`]
+    /// for a non-positive density, gravity or geometry.
+    pub fn check(&self) -> Result<(), FlightError> {
+        let c = &self.coefficients;
+        let all = [
+            c.u_ref,
+            c.cl0,
+            c.cl_u,
+            c.cl_alpha,
+            c.cl_q,
+            c.cl_alpha_dot,
+            c.cl_de,
+            c.cd_par,
+            c.k_induced,
+            c.cd_u,
+            c.cm0,
+            c.cm_u,
+            c.cm_alpha,
+            c.cm_q,
+            c.cm_alpha_dot,
+            c.cm_de,
+            c.ce_beta,
+            c.ce_beta_dot,
+            c.ce_p,
+            c.ce_r,
+            c.ce_da,
+            c.ce_dr,
+            c.croll_beta,
+            c.croll_beta_dot,
+            c.croll_p,
+            c.croll_r,
+            c.croll_da,
+            c.croll_dr,
+            c.cn_beta,
+            c.cn_beta_dot,
+            c.cn_p,
+            c.cn_r,
+            c.cn_da,
+            c.cn_dr,
+            self.thrust_angle,
+        ];
+        if all.iter().any(|v| !v.is_finite()) {
+            return Err(FlightError::NonFinite { what: "aerodynamic coefficients" });
+        }
+        let g = &self.geometry;
+        for (what, value) in [
+            ("ρ", self.rho),
+            ("g", self.g),
+            ("wing area S", g.area),
+            ("chord c̄", g.chord),
+            ("span b", g.span),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(FlightError::InvalidParameter { what, value, valid: "a finite number > 0" });
+            }
+        }
+        Ok(())
+    }
+
     /// Dynamic pressure p_d = ½ρV² (13.3.1).
     ///
     /// Book: §13.3.

@@ -292,3 +292,35 @@ impl LateralDerivatives {
         self.descriptor()?.to_state_space("lateral model")
     }
 }
+
+impl LongitudinalDerivatives {
+    /// Short-period approximation (u = 0, Z_α̇ = Z_q = M_α̇ = M_Tα = 0):
+    /// p(s) = s² − (M_q + Z_α/U₀)s + (M_qZ_α/U₀ − M_α), so ω_sp = √(M_qZ_α/U₀ − M_α),
+    /// ζ_sp = −(M_q + Z_α/U₀)/(2ω_sp).
+    ///
+    /// Book: §14.7, (14.7.23)–(14.7.29).
+    ///
+    /// # Errors
+    /// From `vectrix-lti` for non-finite data.
+    pub fn short_period_approximation(&self) -> Result<vectrix_lti::Polynomial, FlightError> {
+        let za = self.z_alpha / self.u0;
+        Ok(vectrix_lti::Polynomial::new(&[1.0, -(self.m_q + za), self.m_q * za - self.m_alpha])?)
+    }
+
+    /// Phugoid approximation (δα ≈ 0) (14.7.14):
+    /// p(s) = s² − (X_u + X_Tu − (Z_u + Z_Tu)X_q/(U₀ + Z_q))s − (Z_u + Z_Tu)g/(U₀ + Z_q).
+    ///
+    /// Book: (14.7.14)–(14.7.22).
+    ///
+    /// # Errors
+    /// From `vectrix-lti` for non-finite data.
+    pub fn phugoid_approximation(&self) -> Result<vectrix_lti::Polynomial, FlightError> {
+        let zu = self.z_u + self.z_tu;
+        let d = self.u0 + self.z_q;
+        Ok(vectrix_lti::Polynomial::new(&[
+            1.0,
+            -(self.x_u + self.x_tu - zu * self.x_q / d),
+            -zu * self.g / d,
+        ])?)
+    }
+}

@@ -36,7 +36,11 @@ pub struct Linearization {
 /// [`FlightError::NonFinite`] for a non-finite derivative; [`FlightError::SingularDescriptor`]
 /// if E is singular (U₀ − Z_α̇ = 0); errors of the equations of motion.
 pub fn linearize(ac: &Aircraft, trim: &Trim) -> Result<Linearization, FlightError> {
+    ac.check()?;
     let x0 = trim.state.to_array();
+    if x0.iter().chain(trim.controls.to_array().iter()).any(|v| !v.is_finite()) {
+        return Err(FlightError::NonFinite { what: "trim state or controls" });
+    }
     let u0 = trim.controls.to_array();
     let xd0 = [0.0; 12];
     let mut e = DMatrix::zeros(12, 12);

@@ -147,10 +147,11 @@ fn bounds(spec: &TrimSpec, lim: &TrimLimits) -> Vec<(f64, f64)> {
 /// Book: §12.1; notes ch9-14 §3 (bounded Newton/LM against stall and negative thrust).
 ///
 /// # Errors
-/// [`FlightError::InvalidParameter`] for a non-positive airspeed or |γ| ≥ π/2;
+/// [`Aircraft::check`] errors; [`FlightError::InvalidParameter`] for a non-positive airspeed or |γ| ≥ π/2;
 /// [`FlightError::TrimFailed`] naming the condition with the largest residual when the solve
 /// stalls (e.g. the elevator at its limit cannot zero the pitching moment).
 pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, FlightError> {
+    ac.check()?;
     let (v, names): (f64, &[&str]) = match spec {
         TrimSpec::Straight { airspeed, gamma } => {
             if !(gamma.is_finite() && gamma.abs() < 1.5) {
