@@ -138,9 +138,7 @@ fn conversions(c: &mut Criterion) {
         UnitQuaternion::from_scaled_axis(*v)
     });
     // matrix → angle vector
-    run(c, "matrix_to_rotvec", "vectrix", &d.mat, |m| {
-        Quaternion::from_rotation_matrix_unchecked(m).angle_vector()
-    });
+    run(c, "matrix_to_rotvec", "vectrix", &d.mat, Quaternion::angle_vector_of_rotation_matrix);
     run(c, "matrix_to_rotvec", "nalgebra Rotation3::scaled_axis", &d.na_r, |r| r.scaled_axis());
     // axis-angle
     run(c, "quaternion_to_axis_angle", "vectrix axis_angle", &d.quat, |q| q.axis_angle());

@@ -128,7 +128,7 @@ fn main() {
     worst("matrix → angle vector", "nalgebra: Rotation3::scaled_axis", &|n, th| {
         let m = input_m(n, th);
         let want = n * th;
-        let v = Quaternion::from_rotation_matrix(&m, ROTATION_TOL).expect("rotation").angle_vector();
+        let v = Quaternion::angle_vector_of_rotation_matrix(&m);
         let na = Rotation3::from_matrix_unchecked(m).scaled_axis();
         let e =
             |x: Vector3<f64>| (x - want).amax().min(if th == PI { (x + want).amax() } else { f64::INFINITY });

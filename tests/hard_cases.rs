@@ -67,6 +67,10 @@ fn round_trips_at_hard_angles() {
             let v = q.angle_vector();
             assert!((v - n * th).amax() <= ULPS * th.max(1.0), "Θ {ctx}: {v:?}");
             assert!(q_err(&Quaternion::from_angle_vector(&v), &q) <= ULPS, "q→Θ→q {ctx}");
+            let vm = Quaternion::angle_vector_of_rotation_matrix(&r);
+            let vm_err =
+                (vm - n * th).amax().min(if th == PI { (vm + n * th).amax() } else { f64::INFINITY });
+            assert!(vm_err <= ULPS * th.max(1.0), "𝓡→Θ {ctx}: {vm:?}");
             assert!(q_err(&Quaternion::from_mrp(&q.mrp()), &q) <= ULPS, "q→p→q {ctx}");
             match q.gibbs() {
                 Some(g) => assert!(q_err(&Quaternion::from_gibbs(&g), &q) <= ULPS, "q→g→q {ctx}"),

@@ -34,11 +34,29 @@ impl<T: Scalar> Quaternion<T> {
     /// Book: §2.15 (2.15.8–10), largest pivot among {tr 𝓡, 𝓡₁₁, 𝓡₂₂, 𝓡₃₃}.
     #[inline]
     pub fn from_rotation_matrix_unchecked(r: &Matrix3<T>) -> Self {
+        let q = Self::shepperd_unnormalized(r);
+        (q * (T::one() / q.norm())).canonical()
+    }
+
+    /// The angle vector (log map) of a rotation matrix 𝓡, through the unnormalised Shepperd
+    /// quaternion: θ = 2 atan2(|ε|, η) and ε/|ε| do not depend on the scale, so the
+    /// normalisation is skipped. Unchecked (the matrix must be a rotation).
+    ///
+    /// Book: §2.14 (log map), §2.15; notes ch2b §3.5.
+    #[doc(alias = "as_rotvec")]
+    #[inline]
+    pub fn angle_vector_of_rotation_matrix(r: &Matrix3<T>) -> Vector3<T> {
+        Self::shepperd_unnormalized(r).angle_vector()
+    }
+
+    /// 4·(pivot component)·q for the largest pivot (Markley's columns).
+    #[inline]
+    fn shepperd_unnormalized(r: &Matrix3<T>) -> Self {
         let (r11, r22, r33) = (r[(0, 0)], r[(1, 1)], r[(2, 2)]);
         let tr = r11 + r22 + r33;
         let one = T::one();
         // Each candidate is 4·(pivot component)·q; the largest pivot has no cancellation.
-        let q = if tr >= r11 && tr >= r22 && tr >= r33 {
+        if tr >= r11 && tr >= r22 && tr >= r33 {
             // (2.15.8–10): 4η·[η; ε], η = ½√(1 + tr 𝓡)
             Self::new(one + tr, r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)])
         } else if r11 >= r22 && r11 >= r33 {
@@ -62,8 +80,7 @@ impl<T: Scalar> Quaternion<T> {
                 r[(1, 2)] + r[(2, 1)],
                 one + r33 - r11 - r22,
             )
-        };
-        (q * (one / q.norm())).canonical()
+        }
     }
 
     /// The canonical sign: η ≥ 0, and at η = 0 (θ = π) the first nonzero component of ε
