@@ -1,20 +1,37 @@
 //! # vectrix-cli: the `vectrix` command
 //!
-//! With no arguments it runs the main job. Subcommands are added as the layers land.
+//! * `vectrix` (no arguments) and `vectrix run [SCENE]`: run a scene (the embedded default,
+//!   the tennis-racket flip, when no file is given) and write `out/<scene>/` with
+//!   `trajectory.csv`, `summary.json` and one SVG per requested output.
+//! * `vectrix check SCENE`: validate without running.
+//! * `vectrix sweep SCENE --param PATH=v1,v2,…`: parameter sweeps in parallel (rayon).
+//! * `vectrix tour`, `vectrix accuracy`: the kernel tour and the integrators' work–precision
+//!   harness.
+//!
+//! [`run_with_args`] is the library entry the binary and the tests call.
+//!
+//! Book: §7.11, ch. 6, §7.13 (what a scene simulates); §4.11 (integration).
 #![warn(missing_docs)]
 
+use std::ffi::OsString;
+use std::io::Write;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
 mod accuracy;
+mod check;
+mod output;
+mod run;
+mod sweep;
 mod tour;
 
 /// Command-line arguments.
 #[derive(Debug, Parser)]
 #[command(name = "vectrix", version, about = "Frame-free geometry, kinematics, statics and dynamics")]
 pub struct Cli {
-    /// What to run; the tour when omitted.
+    /// What to run; the default scene when omitted.
     #[command(subcommand)]
     pub command: Option<Command>,
 }
@@ -22,6 +39,35 @@ pub struct Cli {
 /// Subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
+    /// Runs a scene file (the embedded tennis-racket scene when omitted) and writes
+    /// out/<scene>/ with trajectory.csv, summary.json and SVG plots.
+    Run {
+        /// The scene file (TOML).
+        scene: Option<PathBuf>,
+        /// Parent directory of the output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// No progress bar.
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Validates a scene file without running it.
+    Check {
+        /// The scene file (TOML).
+        scene: PathBuf,
+    },
+    /// Runs a scene for every value of one or more parameters, in parallel.
+    Sweep {
+        /// The scene file (TOML).
+        scene: PathBuf,
+        /// `PATH=v1,v2,…` with PATH a dotted path into the file (`effects.0.k`,
+        /// `bodies.1.mass.mass`, `duration`); several give the Cartesian product.
+        #[arg(long, required = true)]
+        param: Vec<String>,
+        /// Parent directory of the output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
     /// A short tour: frames, resolution, a rotor, a contraction.
     Tour,
     /// Work–precision harness of the integrators: writes docs/accuracy/*.svg and prints the
@@ -29,7 +75,7 @@ pub enum Command {
     Accuracy {
         /// Directory for the SVG diagrams.
         #[arg(long, default_value = "docs/accuracy")]
-        out: std::path::PathBuf,
+        out: PathBuf,
         /// A few points per line only (seconds instead of a minute).
         #[arg(long)]
         quick: bool,
@@ -39,17 +85,36 @@ pub enum Command {
     },
 }
 
+/// Parses `args` (the first is the program name) and runs, printing to `out`.
+///
+/// # Errors
+/// Argument errors (clap's message), scene errors with line and column, I/O errors.
+pub fn run_with_args<I, T>(args: I, out: &mut impl Write) -> Result<(), Box<dyn std::error::Error>>
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = Cli::try_parse_from(args)?;
+    match cli.command {
+        None => run::run(out, None, &PathBuf::from("out"), false),
+        Some(Command::Run { scene, out: dir, quiet }) => run::run(out, scene.as_deref(), &dir, quiet),
+        Some(Command::Check { scene }) => check::check(out, &scene),
+        Some(Command::Sweep { scene, param, out: dir }) => sweep::sweep(out, &scene, &param, &dir),
+        Some(Command::Tour) => tour::run(out),
+        Some(Command::Accuracy { out: dir, quick, all }) => accuracy::run(out, &dir, quick, all),
+    }
+}
+
 /// Entry point of the binary: parses `std::env::args` and runs.
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
     let mut out = std::io::stdout().lock();
-    let result = match cli.command {
-        None | Some(Command::Tour) => tour::run(&mut out),
-        Some(Command::Accuracy { out: dir, quick, all }) => accuracy::run(&mut out, &dir, quick, all),
-    };
-    match result {
+    match run_with_args(std::env::args_os(), &mut out) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
+            if let Some(c) = e.downcast_ref::<clap::Error>() {
+                let _ = c.print();
+                return if c.use_stderr() { ExitCode::FAILURE } else { ExitCode::SUCCESS };
+            }
             eprintln!("error: {e}");
             ExitCode::FAILURE
         }

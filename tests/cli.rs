@@ -1,0 +1,126 @@
+//! The `vectrix` command through its library entry `vectrix_cli::run_with_args`, with a
+//! temporary output directory: run (default and file), check, sweep, bad files, atomic output.
+//!
+//! Book: §7.8 (the default scene), §7.11/ch. 6 (scenes).
+
+use std::path::{Path, PathBuf};
+
+use vectrix::dynamics::scene::Scene;
+use vectrix_cli::run_with_args;
+
+/// A fresh temporary directory for one test.
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("vectrix-cli-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn cli(args: &[&str]) -> Result<String, String> {
+    let mut out = Vec::new();
+    let r = run_with_args(std::iter::once("vectrix").chain(args.iter().copied()), &mut out);
+    let text = String::from_utf8_lossy(&out).to_string();
+    r.map(|()| text).map_err(|e| e.to_string())
+}
+
+fn example(name: &str) -> String {
+    format!("{}/examples/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Writes a shortened copy of an example scene into `dir` (tests keep runs short).
+fn short_copy(dir: &Path, name: &str, duration: f64, samples: usize) -> String {
+    let text = std::fs::read_to_string(example(name)).unwrap();
+    let scene = Scene::from_toml(&text, name).unwrap();
+    let mut spec = scene.spec().clone();
+    spec.duration = duration;
+    spec.samples = samples;
+    let p = dir.join(format!("{name}.toml"));
+    std::fs::write(&p, Scene::from_spec(spec).unwrap().to_toml().unwrap()).unwrap();
+    p.display().to_string()
+}
+
+#[test]
+fn run_default_scene_writes_complete_output() {
+    // `vectrix run` with no scene runs the embedded tennis-racket flip.
+    let dir = temp_dir("default");
+    let out = cli(&["run", "--quiet", "--out", dir.to_str().unwrap()]).unwrap();
+    assert!(out.contains("tennis_racket") && out.contains("energy"), "{out}");
+    let d = dir.join("tennis_racket");
+    let csv = std::fs::read_to_string(d.join("trajectory.csv")).unwrap();
+    assert!(csv.starts_with("t,omega_body:racket.x,omega_body:racket.y,omega_body:racket.z,energy"));
+    assert_eq!(csv.lines().count(), 1 + 801);
+    // summary.json: three checked invariants, each with a small relative drift
+    let summary = std::fs::read_to_string(d.join("summary.json")).unwrap();
+    let rel: Vec<f64> = summary
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix("\"max_rel\": "))
+        .map(|x| x.trim_end_matches(',').parse().unwrap())
+        .collect();
+    assert_eq!(rel.len(), 3, "{summary}");
+    assert!(rel.iter().all(|r| *r < 1e-6), "{rel:?}");
+    assert!(summary.contains("\"fevals\"") && summary.contains("\"wall_seconds\""));
+    for svg in ["omega_body_racket.svg", "energy.svg", "angular_momentum.svg"] {
+        assert!(std::fs::read_to_string(d.join(svg)).unwrap().contains("<svg"), "{svg}");
+    }
+    // no temporary folder is left behind
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().starts_with('.'))
+        .collect();
+    assert!(leftovers.is_empty());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn run_scene_file_and_rerun_replaces_output() {
+    let dir = temp_dir("file");
+    let scene = short_copy(&dir, "kepler_orbit", 1.0, 20);
+    let o = dir.join("out");
+    cli(&["run", &scene, "--quiet", "--out", o.to_str().unwrap()]).unwrap();
+    cli(&["run", &scene, "--quiet", "--out", o.to_str().unwrap()]).unwrap();
+    let csv = std::fs::read_to_string(o.join("kepler_orbit/trajectory.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 22);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn check_valid_and_invalid_scenes() {
+    let out = cli(&["check", &example("heavy_top")]).unwrap();
+    assert!(out.contains("ok") && out.contains("energy, angular_momentum"), "{out}");
+    let dir = temp_dir("check");
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "name = \"b\"\nduration = 1.0\nbodys = []\n").unwrap();
+    let e = cli(&["check", bad.to_str().unwrap()]).unwrap_err();
+    assert!(e.contains("bad.toml:3:1") && e.contains("bodies"), "{e}");
+    // a failed run writes nothing
+    let o = dir.join("out");
+    assert!(cli(&["run", bad.to_str().unwrap(), "--out", o.to_str().unwrap()]).is_err());
+    assert!(!o.join("b").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn sweep_runs_every_value() {
+    let dir = temp_dir("sweep");
+    let scene = short_copy(&dir, "spring_dashpot_chain", 0.5, 10);
+    let o = dir.join("out");
+    let out = cli(&["sweep", &scene, "--param", "effects.0.k=1,2,4", "--out", o.to_str().unwrap()]).unwrap();
+    assert_eq!(out.lines().filter(|l| l.starts_with("| effects.0.k=")).count(), 3, "{out}");
+    for k in ["1", "2", "4"] {
+        assert!(
+            o.join(format!("spring_dashpot_chain-sweep/spring_dashpot_chain_effects_0_k_{k}/trajectory.csv"))
+                .exists(),
+            "{k}"
+        );
+    }
+    let e = cli(&["sweep", &scene, "--param", "effects.0.nope=1"]).unwrap_err();
+    assert!(e.contains("nope"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn tour_and_unknown_subcommand() {
+    assert!(cli(&["tour"]).unwrap().contains("tour"));
+    assert!(cli(&["frobnicate"]).is_err());
+}
