@@ -142,20 +142,29 @@ pub fn response(
     let (p, nt) = (sys.n_outputs(), t.len());
     let mut y = vec![vec![0.0; nt]; p];
     let mut x = vec![vec![0.0; nt]; n];
-    let mut z = Mat::<f64>::zeros(nz, 1);
+    // Dense row-major copies for the hot loop: one small matrix–vector product per sample.
+    let phi: Vec<f64> = (0..nz * nz).map(|q| step[(q / nz, q % nz)]).collect();
+    let c: Vec<f64> = (0..p * n).map(|q| sys.c()[(q / n, q % n)]).collect();
+    let d: Vec<f64> = (0..p).map(|o| sys.d()[(o, input)]).collect();
+    let mut z = vec![0.0; nz];
+    let mut zn = vec![0.0; nz];
     for k in first..nt {
-        z = if k == first { expm_faer(&(faer::Scale(t[k] - delay) * &m)) * &z0 } else { &step * &z };
+        if k == first {
+            let z1 = expm_faer(&(faer::Scale(t[k] - delay) * &m)) * &z0;
+            z.iter_mut().enumerate().for_each(|(i, zi)| *zi = z1[(i, 0)]);
+        } else {
+            for (i, zi) in zn.iter_mut().enumerate() {
+                *zi = phi[i * nz..(i + 1) * nz].iter().zip(&z).map(|(a, b)| a * b).sum();
+            }
+            std::mem::swap(&mut z, &mut zn);
+        }
         for i in 0..n {
-            x[i][k] = z[(i, 0)];
+            x[i][k] = z[i];
         }
         // y = Cx + Du, with u the input value (the impulse's Dδ is reported separately).
-        let u = if extra >= 1 { z[(n, 0)] } else { 0.0 };
+        let u = if extra >= 1 { z[n] } else { 0.0 };
         for (o, yo) in y.iter_mut().enumerate() {
-            let mut acc = sys.d()[(o, input)] * u;
-            for i in 0..n {
-                acc += sys.c()[(o, i)] * z[(i, 0)];
-            }
-            yo[k] = acc;
+            yo[k] = d[o] * u + c[o * n..(o + 1) * n].iter().zip(&z[..n]).map(|(a, b)| a * b).sum::<f64>();
         }
     }
     let impulse_weight = (0..p)
