@@ -555,3 +555,18 @@ mod prop {
         }
     }
 }
+
+/// Fact 2.1.1 on dual numbers: wrapping an angle subtracts whole turns, so d/dt wrap(t) = 1
+/// away from the cut. Regression: `floor` is undefined for num-dual types, and the wrap once
+/// called it (found by the rotation layer).
+#[test]
+fn fact_2_1_1_wrap_angle_on_dual_numbers_keeps_the_derivative() {
+    use vectrix::num_dual::Dual64;
+    let t = Dual64::new(7.0, 1.0);
+    let w = wrap_angle(t);
+    assert_close(w.re, 7.0 - std::f64::consts::TAU, 4.0 * EPS);
+    assert_eq!(w.eps, 1.0);
+    let u = wrap_angle(Dual64::new(-3.0 * std::f64::consts::PI, 2.0));
+    assert_close(u.re, std::f64::consts::PI, 4.0 * EPS);
+    assert_eq!(u.eps, 2.0);
+}

@@ -15,8 +15,10 @@ pub fn wrap_angle<T: Scalar>(a: T) -> T {
     if !a.re().is_finite() {
         return a;
     }
-    // r ∈ [−π, π) by rounding, then map −π to +π.
-    let mut r = a - two_pi * ((a + pi) / two_pi).floor();
+    // r ∈ [−π, π) by subtracting k turns, then map −π to +π. The integer k is taken from the
+    // real part, so dual numbers (whose `floor` is not defined) keep their derivative parts.
+    let k = ((a.re() + core::f64::consts::PI) / core::f64::consts::TAU).floor();
+    let mut r = a - two_pi * T::lit(k);
     if r <= -pi {
         r += two_pi;
     }
