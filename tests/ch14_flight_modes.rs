@@ -3,6 +3,7 @@
 //!
 //! Numbers are the book's printed values at the book's printed precision, or (marked [C])
 //! values the chapter notes computed independently from the printed data.
+#![allow(clippy::needless_range_loop)] // matrix entries read as the book's A(i, j)
 mod support;
 
 use support::{EPS, assert_close};

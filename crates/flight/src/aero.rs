@@ -338,7 +338,7 @@ impl Aircraft {
     /// [`FlightError::NonFinite`]; errors of [`state_derivative`].
     pub fn dynamics(&self, x: &AircraftState, u: &Controls) -> Result<AircraftState, FlightError> {
         let v = x.aero_angles().airspeed;
-        if !(v > 0.0) {
+        if v.is_nan() || v <= 0.0 {
             return Err(FlightError::InvalidParameter { what: "airspeed", value: v, valid: "V > 0" });
         }
         let (mut ad, mut bd) = (0.0, 0.0);
