@@ -41,7 +41,7 @@ fn states(n: usize, count: usize) -> Vec<Vec<f64>> {
         .map(|_| {
             (0..n)
                 .map(|_| {
-                    x = (x * 997.0 + 0.318_309_886).fract();
+                    x = (x * 997.0 + 0.412_345_678).fract();
                     2.0 * x - 1.0
                 })
                 .collect()
