@@ -131,7 +131,8 @@ fn notebook_03_rotations() {
     // cell 4
     let e = EulerAngles::new(EulerSequence::S321, [deg(40.0), deg(-20.0), deg(75.0)]);
     let r = e.rotation_matrix();
-    match EulerAngles::from_rotation_matrix(&r, EulerSequence::S321, ROTATION_TOL).expect("a rotation matrix") {
+    match EulerAngles::from_rotation_matrix(&r, EulerSequence::S321, ROTATION_TOL).expect("a rotation matrix")
+    {
         EulerSolution::Regular { principal, alternate } => {
             let p: Vec<f64> = principal.angles.iter().map(|x| x.to_degrees()).collect();
             let q: Vec<f64> = alternate.angles.iter().map(|x| x.to_degrees()).collect();
@@ -215,7 +216,8 @@ fn notebook_04_kinematics() {
         }
         series.push((name, pts));
     }
-    let mut chart = LineChart::new("Attitude propagation error (Fact 4.8.2)", "steps", "max |R − R_exact|").log_log();
+    let mut chart =
+        LineChart::new("Attitude propagation error (Fact 4.8.2)", "steps", "max |R − R_exact|").log_log();
     for (name, pts) in series {
         chart = chart.with_series(name, pts);
     }
@@ -280,7 +282,11 @@ fn notebook_06_dynamics_and_scenes() {
     )
     .expect("valid mass properties");
     let body = RigidBody::new(props, a.vector([0.1, 0.2, -0.3]), a.vector([0.4, -1.1, 0.8]));
-    let wrench = Wrench { force: a.vector([1.0, 2.0, -0.5]), moment: a.vector([0.3, -0.2, 0.7]), about: Point::origin() };
+    let wrench = Wrench {
+        force: a.vector([1.0, 2.0, -0.5]),
+        moment: a.vector([0.3, -0.2, 0.7]),
+        about: Point::origin(),
+    };
     let (a_c, alpha) = body.accelerations(&wrench).expect("positive-definite inertia");
     println!("a_c|A = {:?}", a_c.resolve(&a));
     println!("α|A = {:?}", alpha.resolve(&a));
@@ -396,20 +402,34 @@ fn notebook_08_aircraft() {
     use vectrix::plot::control;
     // cell 3
     let jet = business_jet();
-    let level = trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.0 }, TrimLimits::default())
-        .expect("the jet trims in level flight");
-    println!("level: α₀ = {:.3e} rad, δe₀ = {:.3e}, thrust = {:.1}, residual {:.1e}",
-        level.state.aero_angles().alpha, level.controls.elevator, level.controls.thrust, level.residual);
-    let climb = trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.05 }, TrimLimits::default())
-        .expect("a gentle climb trims");
+    let level =
+        trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.0 }, TrimLimits::default())
+            .expect("the jet trims in level flight");
+    println!(
+        "level: α₀ = {:.3e} rad, δe₀ = {:.3e}, thrust = {:.1}, residual {:.1e}",
+        level.state.aero_angles().alpha,
+        level.controls.elevator,
+        level.controls.thrust,
+        level.residual
+    );
+    let climb =
+        trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.05 }, TrimLimits::default())
+            .expect("a gentle climb trims");
     println!("climb γ = 0.05: thrust = {:.1} (more than level)", climb.controls.thrust);
     // cell 4
     let long = business_jet_longitudinal().state_space().expect("valid derivatives");
     let lat = business_jet_lateral().state_space().expect("valid derivatives");
     let lm = longitudinal_modes(long.a()).expect("two oscillatory pairs");
     let sm = lateral_modes(lat.a()).expect("one pair, two real roots");
-    for (name, m) in [("short period", lm.short_period), ("phugoid", lm.phugoid), ("Dutch roll", sm.dutch_roll)] {
-        println!("{name}: λ = {:.4}, ωn = {:.4} rad/s, ζ = {:.4}", m.eigenvalue(), m.natural_frequency(), m.damping_ratio());
+    for (name, m) in
+        [("short period", lm.short_period), ("phugoid", lm.phugoid), ("Dutch roll", sm.dutch_roll)]
+    {
+        println!(
+            "{name}: λ = {:.4}, ωn = {:.4} rad/s, ζ = {:.4}",
+            m.eigenvalue(),
+            m.natural_frequency(),
+            m.damping_ratio()
+        );
     }
     println!("roll: λ = {:.4}; spiral: λ = {:.5}", sm.roll.eigenvalue(), sm.spiral.eigenvalue());
     println!("characteristic polynomial: {:?}", characteristic_polynomial(&long).expect("roots").coeffs());
@@ -449,8 +469,12 @@ fn notebook_09_linear_systems() {
     // cell 4
     let w = logspace(-2.0, 2.0, 200).expect("valid range");
     let (b1, b2) = (l.bode(&w).expect("finite"), led.bode(&w).expect("finite"));
-    let fig = control::bode("Problem 16.8.11", &[("L", &b1), ("L·lead", &b2)], Some(&l.margins().expect("margins")))
-        .expect("nonempty");
+    let fig = control::bode(
+        "Problem 16.8.11",
+        &[("L", &b1), ("L·lead", &b2)],
+        Some(&l.margins().expect("margins")),
+    )
+    .expect("nonempty");
     let svg = fig.to_svg().expect("finite data");
     println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
     // cell 5
