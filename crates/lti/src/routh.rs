@@ -5,7 +5,6 @@
 
 use crate::error::LtiError;
 use crate::poly::Polynomial;
-use crate::stability::AXIS_RTOL;
 
 /// A Routh array and what it says about the roots.
 ///
@@ -190,7 +189,6 @@ pub fn stable_gain_intervals(num: &Polynomial, den: &Polynomial) -> Result<Vec<(
             }
         }
     }
-    let _ = AXIS_RTOL;
     Ok(out)
 }
 
