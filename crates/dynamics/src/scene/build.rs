@@ -228,7 +228,7 @@ pub(crate) struct Built {
 /// Validates `spec` and assembles the model and the effects.
 pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
     check_finite(spec, src)?;
-    if !(spec.duration > 0.0) {
+    if spec.duration.is_nan() || spec.duration <= 0.0 {
         return Err(src.err("duration", "duration", format!("{} s; valid: > 0", spec.duration)));
     }
     if spec.samples == 0 || spec.samples > 1_000_000 {

@@ -52,8 +52,8 @@ impl Scene {
         for e in &b.effects {
             match e {
                 Effect::Inerter { a: pa, b: pb, b_in } => {
-                    let g0 = self.rate_rows(q, &[pa.clone(), pb.clone()], true)?;
-                    let g1 = self.rate_rows(&q1, &[pa.clone(), pb.clone()], true)?;
+                    let g0 = self.rate_row(q, &[*pa, *pb])?;
+                    let g1 = self.rate_row(&q1, &[*pa, *pb])?;
                     let g = g0.row(0).transpose();
                     let gdot_v = ((g1.row(0) - g0.row(0)) * &vv)[0] / FD_STEP;
                     m_tot += &g * g.transpose() * *b_in;
@@ -90,13 +90,12 @@ impl Scene {
     }
 
     /// Row of ℓ̇ = r̂·(v_b − v_a) as a linear function of v (one row), for an inerter.
-    fn rate_rows(&self, q: &[f64], ends: &[super::build::At], _: bool) -> Result<DMatrix<f64>, String> {
+    fn rate_row(&self, q: &[f64], ends: &[super::build::At; 2]) -> Result<DMatrix<f64>, String> {
         let b = &self.built;
         let n = b.model.nv();
         let poses = b.model.poses(q).map_err(|e| e.to_string())?;
         let mut row = DMatrix::zeros(1, n);
         let mut e = vec![0.0; n];
-        let mut rhat = Vector3::zeros();
         for k in 0..n {
             e.iter_mut().for_each(|x| *x = 0.0);
             e[k] = 1.0;
@@ -104,10 +103,9 @@ impl Scene {
             let kin = Kin { poses: poses.clone(), omega, vel };
             let (pa, va) = kin.point(&ends[0]);
             let (pb, vb) = kin.point(&ends[1]);
-            rhat = (pb - pa).try_normalize(1e-300).ok_or("inerter ends coincide")?;
+            let rhat = (pb - pa).try_normalize(1e-300).ok_or("inerter ends coincide")?;
             row[(0, k)] = rhat.dot(&(vb - va));
         }
-        let _ = rhat;
         Ok(row)
     }
 

@@ -23,7 +23,7 @@ const CONTACT_SUBSTEPS: usize = 50;
 /// The solver a scene asks for: `method`, else `accuracy`, else `Accuracy::RelTol(1e-6)`.
 pub(crate) fn solver(spec: &SceneSpec, src: &Src) -> Result<Adaptive, SceneError> {
     if let Some(m) = &spec.method {
-        if !(m.rtol > 0.0) {
+        if m.rtol.is_nan() || m.rtol <= 0.0 {
             return Err(src.err("rtol", "method.rtol", format!("rtol = {}; valid: > 0", m.rtol)));
         }
         let a = match m.name.as_str() {
