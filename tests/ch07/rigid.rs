@@ -21,7 +21,7 @@ fn eq_7_3_1_newton_second_law_particle() {
     ));
 }
 
-/// Fact 7.8.? / §7.8 and notes §3: "the axial spin of a rod is inert": a thin rod (rank-2
+/// §7.8 and notes ch6-8 §3: "the axial spin of a rod is inert": a thin rod (rank-2
 /// inertia) under a transverse torque has α⃗·ê = 0, and a torque about its own axis is refused.
 #[test]
 fn thin_rod_axial_spin_is_inert() {

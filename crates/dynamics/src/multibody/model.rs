@@ -1,4 +1,4 @@
-//! Kinematic trees of rigid bodies connected by the book's joints (book §1.? joint table,
+//! Kinematic trees of rigid bodies connected by the book's joints (book §1.5, Table 1.3,
 //! §7.11), in reduced coordinates.
 #![allow(non_snake_case)]
 
