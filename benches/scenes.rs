@@ -15,7 +15,11 @@ fn chain(n: usize) -> String {
     );
     for i in 0..n {
         let axis = if i % 2 == 0 { "[0.0, 0.0, 1.0]" } else { "[0.0, 1.0, 0.0]" };
-        let parent = if i == 0 { String::new() } else { format!("parent = \"l{}\"\noffset = [0.3, 0.0, 0.0]\n", i - 1) };
+        let parent = if i == 0 {
+            String::new()
+        } else {
+            format!("parent = \"l{}\"\noffset = [0.3, 0.0, 0.0]\n", i - 1)
+        };
         s += &format!(
             "\n[[bodies]]\nname = \"l{i}\"\n{parent}joint = {{ type = \"pin\", axis = {axis} }}\nmass = {{ shape = \"rod\", mass = 1.0, length = 0.3 }}\ncom = [0.15, 0.0, 0.0]\nq = [0.1]\n"
         );
@@ -62,7 +66,9 @@ fn scenes(c: &mut Criterion) {
     steps_per_second("orbit with contact declared", &contact);
     let mut g = c.benchmark_group("scenes");
     g.sample_size(10);
-    g.bench_function("default_tennis_racket_10s", |b| b.iter(|| black_box(default.run(&mut |_| {}).expect("runs"))));
+    g.bench_function("default_tennis_racket_10s", |b| {
+        b.iter(|| black_box(default.run(&mut |_| {}).expect("runs")))
+    });
     g.bench_function("chain12_1s", |b| b.iter(|| black_box(chain12.run(&mut |_| {}).expect("runs"))));
     g.bench_function("orbit_no_contact", |b| b.iter(|| black_box(free.run(&mut |_| {}).expect("runs"))));
     g.bench_function("orbit_contact_declared_never_touching", |b| {
