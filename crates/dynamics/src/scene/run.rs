@@ -59,6 +59,8 @@ pub struct Drift {
 }
 
 /// What the run cost.
+///
+/// Book: §4.11.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct RunWork {
     /// Right-hand side evaluations.
@@ -74,6 +76,8 @@ pub struct RunWork {
 }
 
 /// The result of a run: sampled outputs, invariant drift, work.
+///
+/// Book: §4.11, §8.3.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Run {
     /// Scene name.

@@ -46,6 +46,8 @@ fn default_samples() -> usize {
 }
 
 /// An integration method chosen by name.
+///
+/// Book: §4.11.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MethodSpec {
@@ -56,6 +58,8 @@ pub struct MethodSpec {
 }
 
 /// A named frame: the ground frame rotated by `angle` [rad] about `axis` (ground components).
+///
+/// Book: §2.10 (frames rotated about an axis).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FrameSpec {
@@ -72,6 +76,8 @@ pub struct FrameSpec {
 /// # Conventions
 /// `offset` is the joint point relative to the parent's link origin, parent components; the
 /// link frame coincides with the joint frame at q = 0; `com` is in link components.
+///
+/// Book: §7.11, §6.1–6.2.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct BodySpec {
@@ -111,6 +117,8 @@ fn is_ground(s: &String) -> bool {
 }
 
 /// The book's joints (§1.5) plus weld and free; axes in the joint frame.
+///
+/// Book: §1.5, Table 1.3.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 pub enum JointSpec {
@@ -197,6 +205,8 @@ pub enum MassSpec {
 }
 
 /// A point fixed in a body (link components) or in the ground (`body = "ground"`).
+///
+/// Book: §6.7.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Attach {
@@ -208,6 +218,8 @@ pub struct Attach {
 }
 
 /// A scalar function of time for applied forces and torques.
+///
+/// Book: §7.x (applied loads as functions of time).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Profile {
@@ -412,6 +424,8 @@ pub enum EffectSpec {
 }
 
 /// A magnetic dipole m (link components) at the body's centre of mass.
+///
+/// Book: §6.13.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DipoleSpec {
