@@ -271,3 +271,32 @@ fn eq_14_1_7_singular_descriptor_is_an_error() {
     l.jxx = -1.0;
     assert!(matches!(l.state_space(), Err(FlightError::InvalidParameter { .. })));
 }
+
+#[test]
+fn section_14_7_doublet_response_and_mode_figures() {
+    // An elevator doublet excites the short period; after it the response decays at the
+    // short-period rate and the phugoid remains. The SVG figures are drawn by vectrix-plot.
+    assert_eq!(doublet(0.5, 1.0, 1.0, 2.0), 0.0);
+    assert_eq!(doublet(1.5, 1.0, 1.0, 2.0), 2.0);
+    assert_eq!(doublet(2.5, 1.0, 1.0, 2.0), -2.0);
+    assert_eq!(doublet(3.0, 1.0, 1.0, 2.0), 0.0);
+    let sys = business_jet_longitudinal().state_space().unwrap();
+    let r = doublet_response(&sys, 0, 0.01, 1.0, 20.0, 400).unwrap();
+    // pitch rate right after the doublet starts is nose-down for δe > 0 (trailing edge down)
+    let k = r.t.iter().position(|&t| t > 1.2).unwrap();
+    assert!(r.y[2][k] < 0.0);
+    let svg = doublet_response_svg(
+        "Business jet: elevator doublet",
+        &sys,
+        0,
+        0.01,
+        1.0,
+        20.0,
+        &["u", "δα", "q", "θ"],
+    )
+    .unwrap();
+    assert!(svg.contains("<svg"));
+    let poles = sys.poles().unwrap();
+    assert!(modes_svg("Business jet longitudinal modes", &poles).unwrap().contains("<svg"));
+    assert!(matches!(modes_svg("empty", &[]), Err(FlightError::Plot { .. })));
+}

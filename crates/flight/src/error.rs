@@ -58,6 +58,12 @@ pub enum FlightError {
         /// What was found.
         reason: String,
     },
+    /// A figure could not be drawn.
+    #[error("plot failed: {reason}")]
+    Plot {
+        /// The plotting layer's message.
+        reason: String,
+    },
     /// An error from the linear-systems layer.
     #[error(transparent)]
     Lti(#[from] vectrix_lti::LtiError),

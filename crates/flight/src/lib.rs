@@ -21,6 +21,7 @@ mod eom;
 mod error;
 mod linearize;
 mod modes;
+mod plots;
 mod rates;
 mod table;
 mod trim;
@@ -42,6 +43,7 @@ pub use modes::{
     FlightMode, LateralModes, LongitudinalModes, characteristic_polynomial, eigenflight, eigenvector,
     lateral_modes, longitudinal_modes,
 };
+pub use plots::{doublet, doublet_response, doublet_response_svg, modes_svg};
 pub use rates::{
     GIMBAL_LOCK_TOL, body_rates, euler_rate_matrix, euler_rates, orientation_from_quaternion,
     quaternion_from_euler321, quaternion_rates,
