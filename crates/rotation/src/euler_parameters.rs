@@ -38,14 +38,32 @@ impl<T: Scalar> Quaternion<T> {
         (q * (T::one() / q.norm())).canonical()
     }
 
-    /// The angle vector (log map) of a rotation matrix 𝓡, through the unnormalised Shepperd
-    /// quaternion: θ = 2 atan2(|ε|, η) and ε/|ε| do not depend on the scale, so the
-    /// normalisation is skipped. Unchecked (the matrix must be a rotation).
+    /// The angle vector (log map) of a rotation matrix 𝓡. For tr 𝓡 > 0 (θ < 2π/3) directly
+    /// from the antisymmetric part and the trace, θ = atan2(|vee(𝓡 − 𝓡ᵀ)|, tr 𝓡 − 1); nearer
+    /// the half turn through the unnormalised Shepperd quaternion, θ = 2 atan2(|ε|, η) (scale
+    /// free, so the normalisation is skipped). Unchecked (the matrix must be a rotation).
     ///
     /// Book: §2.14 (log map), §2.15; notes ch2b §3.5.
     #[doc(alias = "as_rotvec")]
     #[inline]
     pub fn angle_vector_of_rotation_matrix(r: &Matrix3<T>) -> Vector3<T> {
+        let tr = r[(0, 0)] + r[(1, 1)] + r[(2, 2)];
+        if tr.re() > 0.0 {
+            // θ < 2π/3, away from the half turn: no quaternion needed. From Rodrigues (2.11.1),
+            // vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and tr 𝓡 − 1 = 2 cos θ, so θ = atan2(|v|, tr − 1) is
+            // accurate at every angle in range, and Θ = (θ / 2 sin θ) v.
+            let v = Vector3::new(r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)]);
+            let s = norm3(&v);
+            let theta = s.atan2(tr - T::one());
+            // θ / (2 sin θ) = ½(1 + θ²/6 + 7θ⁴/360 + …); the θ⁴ term is below ε for θ < 1e-4.
+            let k = if theta.re() < 1e-4 {
+                T::lit(0.5) * (T::one() + theta * theta / T::lit(6.0))
+            } else {
+                theta / s
+            };
+            return v * k;
+        }
+        // Near the half turn the antisymmetric part vanishes: take the largest Shepperd pivot.
         Self::shepperd_unnormalized(r).angle_vector()
     }
 
