@@ -167,7 +167,12 @@ mod prop {
         prop_oneof![-3.1f64..3.1, Just(0.0), Just(1e-9), Just(-1e-9)]
     }
     fn pitch() -> impl Strategy<Value = f64> {
-        prop_oneof![-1.5f64..1.5, Just(std::f64::consts::FRAC_PI_2), Just(-std::f64::consts::FRAC_PI_2 + 1e-9), Just(0.0)]
+        prop_oneof![
+            -1.5f64..1.5,
+            Just(std::f64::consts::FRAC_PI_2),
+            Just(-std::f64::consts::FRAC_PI_2 + 1e-9),
+            Just(0.0)
+        ]
     }
 
     proptest! {

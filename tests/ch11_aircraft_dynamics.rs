@@ -148,10 +148,11 @@ mod prop {
         #![proptest_config(ProptestConfig::with_cases(24))]
 
         #[test]
-        fn linear_model_matches_finite_differences(v in 600.0f64..760.0, gamma in -0.08f64..0.08, k in 0usize..12) {
+        fn linear_model_matches_finite_differences(v in 600.0f64..760.0, gamma in -0.03f64..0.08, k in 0usize..12) {
             // The dual-number A (column k) equals central differences of the explicit nonlinear
             // ẋ = f(x, u) (which resolves α̇, β̇ by fixed point): step h = 1e-4·scale_k gives
-            // O(h²) truncation ≈ 1e-8 relative.
+            // O(h²) truncation ≈ 1e-8 relative. (Steeper descents need negative thrust: trim
+            // then fails on U̇ = 0, as it should; see ch12.)
             let ac = business_jet();
             let t = trim(&ac, TrimSpec::Straight { airspeed: v, gamma }, TrimLimits::default()).unwrap();
             let lin = linearize(&ac, &t).unwrap();
