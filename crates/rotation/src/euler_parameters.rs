@@ -38,7 +38,7 @@ impl<T: Scalar> Quaternion<T> {
         (q * (T::one() / q.norm())).canonical()
     }
 
-    /// The angle vector (log map) of a rotation matrix 𝓡. For tr 𝓡 > 0 (θ < 2π/3) directly
+    /// The angle vector (log map) of a rotation matrix 𝓡. For tr 𝓡 > −0.9 (θ < 162°) directly
     /// from the antisymmetric part and the trace, θ = atan2(|vee(𝓡 − 𝓡ᵀ)|, tr 𝓡 − 1); nearer
     /// the half turn through the unnormalised Shepperd quaternion, θ = 2 atan2(|ε|, η) (scale
     /// free, so the normalisation is skipped). Unchecked (the matrix must be a rotation).
@@ -48,8 +48,9 @@ impl<T: Scalar> Quaternion<T> {
     #[inline]
     pub fn angle_vector_of_rotation_matrix(r: &Matrix3<T>) -> Vector3<T> {
         let tr = r[(0, 0)] + r[(1, 1)] + r[(2, 2)];
-        if tr.re() > 0.0 {
-            // θ < 2π/3, away from the half turn: no quaternion needed. From Rodrigues (2.11.1),
+        if tr.re() > -0.9 {
+            // cos θ > −0.95 (θ < 162°), away from the half turn: no quaternion needed; |v| =
+            // 2 sin θ > 0.62 keeps the axis to a few ulps. From Rodrigues (2.11.1),
             // vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and tr 𝓡 − 1 = 2 cos θ, so θ = atan2(|v|, tr − 1) is
             // accurate at every angle in range, and Θ = (θ / 2 sin θ) v.
             let v = Vector3::new(r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)]);
