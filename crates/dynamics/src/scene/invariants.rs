@@ -166,6 +166,23 @@ impl Scene {
         self.kinetic(kin, v) + potential(&self.built.effects, &self.built.bodies, kin, &self.ground, &q_angle)
     }
 
+    /// Sum of the magnitudes of an invariant's terms: the scale of its relative drift.
+    pub(crate) fn invariant_scale(&self, inv: &Invariant, kin: &Kin, v: &[f64]) -> f64 {
+        let bodies = self.built.bodies.iter().enumerate();
+        match inv {
+            Invariant::Energy => self.kinetic(kin, v),
+            Invariant::Momentum => bodies.map(|(i, b)| b.mass * kin.point(&(Some(i), b.com)).1.norm()).sum(),
+            Invariant::AngularMomentum { about } | Invariant::AngularMomentumAlong { about, .. } => bodies
+                .map(|(i, b)| {
+                    let (e, _) = kin.poses[i];
+                    let vc = kin.point(&(Some(i), b.com)).1;
+                    let r = centre(kin, b, i) - Vector3::from(*about);
+                    b.mass * r.norm() * vc.norm() + (b.inertia * (e * kin.omega[i])).norm()
+                })
+                .sum(),
+        }
+    }
+
     /// p = Σ m v_c.
     pub(crate) fn momentum(&self, kin: &Kin) -> Vector3<f64> {
         self.built.bodies.iter().enumerate().map(|(i, b)| kin.point(&(Some(i), b.com)).1 * b.mass).sum()

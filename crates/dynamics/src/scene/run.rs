@@ -54,7 +54,9 @@ pub struct Drift {
     pub initial: f64,
     /// max |x(t) − x(0)| (vector norm for vectors).
     pub max_abs: f64,
-    /// max_abs / max(|x(0)|, tiny).
+    /// max_abs / scale, scale = max(|x(0)|, the sum of the magnitudes of its terms at t = 0)
+    /// (T for energy, Σ m|v_c| for momentum, Σ |r × m v| + |J ω| for H), so that an
+    /// invariant whose value is zero still gets a meaningful relative drift.
     pub max_rel: f64,
 }
 
@@ -123,6 +125,7 @@ impl Run {
 struct Tracker {
     inv: Invariant,
     x0: Option<Vector3<f64>>,
+    scale: f64,
     max: f64,
 }
 
@@ -154,7 +157,7 @@ impl Scene {
             .invariants()
             .iter()
             .filter(|i| spec.checks.iter().any(|c| c == i.name()))
-            .map(|i| Tracker { inv: i.clone(), x0: None, max: 0.0 })
+            .map(|i| Tracker { inv: i.clone(), x0: None, scale: 0.0, max: 0.0 })
             .collect();
         let want_kin = !self.outputs.is_empty() || !trackers.is_empty() || self.needs.impacts;
         let mut y = self.initial_state();
@@ -221,6 +224,9 @@ impl Scene {
                 run.rows.push(row);
                 for tr in &mut trackers {
                     let x = self.invariant_value(&tr.inv, &kin, q, v);
+                    if tr.x0.is_none() {
+                        tr.scale = self.invariant_scale(&tr.inv, &kin, v);
+                    }
                     let x0 = *tr.x0.get_or_insert(x);
                     tr.max = tr.max.max((x - x0).norm());
                 }
@@ -235,7 +241,7 @@ impl Scene {
                     invariant: tr.inv,
                     initial,
                     max_abs: tr.max,
-                    max_rel: tr.max / initial.max(f64::MIN_POSITIVE),
+                    max_rel: tr.max / initial.max(tr.scale).max(f64::MIN_POSITIVE),
                 }
             })
             .collect();
