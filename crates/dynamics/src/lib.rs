@@ -43,6 +43,6 @@ pub use sixd::{newton_euler_6d, twist_cross_matrix};
 
 /// `use vectrix_dynamics::prelude::*;`
 pub mod prelude {
-    pub use crate::{DynamicsError, Joint, KinematicMap, Lagrangian, Link, MapMasses, Model, RigidBody};
     pub use crate::scene::{Scene, SceneError};
+    pub use crate::{DynamicsError, Joint, KinematicMap, Lagrangian, Link, MapMasses, Model, RigidBody};
 }
