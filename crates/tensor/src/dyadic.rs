@@ -106,20 +106,7 @@ impl<T: Scalar> Dyadic<T> {
         if det.re().abs() <= rel_tol {
             return Err(TensorError::Singular { det: det.re(), tol: rel_tol });
         }
-        let cof = |r1: usize, c1: usize, r2: usize, c2: usize| {
-            m[(r1, c1)] * m[(r2, c2)] - m[(r1, c2)] * m[(r2, c1)]
-        };
-        let adj = Matrix3::new(
-            cof(1, 1, 2, 2),
-            -cof(0, 1, 2, 2),
-            cof(0, 1, 1, 2),
-            -cof(1, 0, 2, 2),
-            cof(0, 0, 2, 2),
-            -cof(0, 0, 1, 2),
-            cof(1, 0, 2, 1),
-            -cof(0, 0, 2, 1),
-            cof(0, 0, 1, 1),
-        );
+        let adj = adjugate(&m);
         Ok(Dyadic { m: adj / (det * scale) })
     }
 
@@ -356,4 +343,24 @@ impl<T: Scalar> Neg for Dyadic<T> {
     fn neg(self) -> Dyadic<T> {
         Dyadic { m: -self.m }
     }
+}
+
+/// The adjugate adj(M) of a resolved 3×3 matrix, with M adj(M) = det(M) I: exact, division-free
+/// and differentiable for dual numbers, so M⁻¹ = adj(M)/det(M) wherever det(M) ≠ 0.
+///
+/// Book: §2.6 (inverse of a physical matrix), Cramer's rule.
+pub fn adjugate<T: Scalar>(m: &Matrix3<T>) -> Matrix3<T> {
+    let cof =
+        |r1: usize, c1: usize, r2: usize, c2: usize| m[(r1, c1)] * m[(r2, c2)] - m[(r1, c2)] * m[(r2, c1)];
+    Matrix3::new(
+        cof(1, 1, 2, 2),
+        -cof(0, 1, 2, 2),
+        cof(0, 1, 1, 2),
+        -cof(1, 0, 2, 2),
+        cof(0, 0, 2, 2),
+        -cof(0, 0, 1, 2),
+        cof(1, 0, 2, 1),
+        -cof(0, 0, 2, 1),
+        cof(0, 0, 1, 1),
+    )
 }

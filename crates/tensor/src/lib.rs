@@ -28,7 +28,7 @@ mod wedge;
 pub use angle::{congruent, wrap_angle};
 pub use bivector::Bivector;
 pub use covector::Covector;
-pub use dyadic::Dyadic;
+pub use dyadic::{Dyadic, adjugate};
 pub use elasticity::{HookeMap, Isotropic, hooke};
 pub use error::TensorError;
 pub use multivector::Multivector;

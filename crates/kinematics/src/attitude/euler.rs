@@ -110,19 +110,7 @@ fn solve<T: Scalar>(
         });
     }
     // adjugate/det: exact for 3×3 and differentiable for dual numbers
-    let cof =
-        |r1: usize, c1: usize, r2: usize, c2: usize| s[(r1, c1)] * s[(r2, c2)] - s[(r1, c2)] * s[(r2, c1)];
-    let adj = Matrix3::new(
-        cof(1, 1, 2, 2),
-        -cof(0, 1, 2, 2),
-        cof(0, 1, 1, 2),
-        -cof(1, 0, 2, 2),
-        cof(0, 0, 2, 2),
-        -cof(0, 0, 1, 2),
-        cof(1, 0, 2, 1),
-        -cof(0, 0, 2, 1),
-        cof(0, 0, 1, 1),
-    );
+    let adj = vectrix_tensor::adjugate(&s);
     let r = adj * w / det;
     Ok([r.x, r.y, r.z])
 }
