@@ -220,13 +220,17 @@ fn tiny_angle_survives_every_representation() {
 }
 
 /// The log of a rotation matrix at tiny angles must be *relatively* accurate (a few ulps of θ,
-/// not of 1): the direct branch for tr 𝓡 > −0.9 uses vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and atan2, and must
+/// not of 1): the direct branch for tr 𝓡 > −0.9 uses vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and asin of whichever of sin θ, cos θ is well conditioned, and must
 /// match the Shepperd route it replaced as the fast path (GTSAM/Sophus-style logs lost these
 /// digits with acos).
 #[test]
 fn matrix_log_is_relatively_accurate_at_tiny_and_moderate_angles() {
     for n in axes() {
-        for th in [1e-300, 1e-100, 1e-16, 1e-8, 1e-5, 1e-4, 1e-3, 0.5, 2.0, 2.5, 2.8, 2.83, 3.0, 3.1] {
+        // 0.7954 and 2.3462 straddle the asin/acos switches at cos θ = ±0.7
+        for th in [
+            1e-300, 1e-100, 1e-16, 1e-8, 1e-5, 1e-4, 1e-3, 0.5, 0.7953, 0.7955, 1.5, 2.0, 2.3461, 2.3463,
+            2.5, 2.8, 2.83, 3.0, 3.1,
+        ] {
             let q = Quaternion::from_axis_angle(&n, th).unwrap();
             let r = q.rotation_matrix();
             let vm = Quaternion::angle_vector_of_rotation_matrix(&r);

@@ -39,7 +39,8 @@ impl<T: Scalar> Quaternion<T> {
     }
 
     /// The angle vector (log map) of a rotation matrix 𝓡. For tr 𝓡 > −0.9 (θ < 162°) directly
-    /// from the antisymmetric part and the trace, θ = atan2(|vee(𝓡 − 𝓡ᵀ)|, tr 𝓡 − 1); nearer
+    /// from sin θ = ½|vee(𝓡 − 𝓡ᵀ)| or cos θ = ½(tr 𝓡 − 1), whichever is well conditioned
+    /// (asin of the sine below 45.6° and above 134.4°, of the cosine between); nearer
     /// the half turn through the unnormalised Shepperd quaternion, θ = 2 atan2(|ε|, η) (scale
     /// free, so the normalisation is skipped). Unchecked (the matrix must be a rotation).
     ///
@@ -51,11 +52,23 @@ impl<T: Scalar> Quaternion<T> {
         if tr.re() > -0.9 {
             // cos θ > −0.95 (θ < 162°), away from the half turn: no quaternion needed; |v| =
             // 2 sin θ > 0.62 keeps the axis to a few ulps. From Rodrigues (2.11.1),
-            // vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and tr 𝓡 − 1 = 2 cos θ, so θ = atan2(|v|, tr − 1) is
-            // accurate at every angle in range, and Θ = (θ / 2 sin θ) v.
+            // vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and tr 𝓡 − 1 = 2 cos θ, so θ follows from sin θ or
+            // cos θ, whichever is well conditioned, and Θ = (θ / 2 sin θ) v.
             let v = Vector3::new(r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)]);
             let s = norm3(&v);
-            let theta = s.atan2(tr - T::one());
+            // θ from whichever of sin θ = s/2 and cos θ = c is well conditioned (libm's asin
+            // is about twice as fast as atan2): asin(s/2) below 45.6° (c > 0.7), π/2 − asin(c)
+            // for |c| ≤ 0.7, π − asin(s/2) above 134.4°; the derivative of asin is ≤ 1.41
+            // on |x| ≤ 0.72, so each branch is accurate to a few ulps, like atan2(s, c).
+            let c = (tr - T::one()) * T::lit(0.5);
+            let cr = c.re();
+            let theta = if cr > 0.7 {
+                (s * T::lit(0.5)).asin()
+            } else if cr >= -0.7 {
+                T::lit(core::f64::consts::FRAC_PI_2) - c.asin()
+            } else {
+                T::lit(core::f64::consts::PI) - (s * T::lit(0.5)).asin()
+            };
             // θ / (2 sin θ) = ½(1 + θ²/6 + 7θ⁴/360 + …); the θ⁴ term is below ε for θ < 1e-4.
             let k = if theta.re() < 1e-4 {
                 T::lit(0.5) * (T::one() + theta * theta / T::lit(6.0))
