@@ -222,7 +222,8 @@ impl Adaptive {
             // step-size factor: fac = err^{expo1} / fac_old^β / safe, clamped
             let fac11 = err.powf(expo1);
             if err <= 1.0 {
-                let fac = (fac11 / fac_old.powf(beta) / safe).clamp(1.0 / fac_max, 1.0 / fac_min);
+                let stab = if beta == 0.0 { 1.0 } else { fac_old.powf(beta) };
+                let fac = (fac11 / stab / safe).clamp(1.0 / fac_max, 1.0 / fac_min);
                 let mut h_new = (h / fac).min(h_max);
                 if last_rejected {
                     h_new = h_new.min(h);

@@ -2,7 +2,7 @@
 
 use super::dense::{DenseStep, hermite_part, weighted};
 use super::dop853_coefficients::{A, B, BHH, C, D, E};
-use crate::state::{State, combine, eval};
+use crate::state::{State, check_stages, combine, eval, eval_unchecked};
 use crate::{OdeError, Work};
 
 /// Nodes of the 12 stages of the 8th-order solution (c₁₂ = 1).
@@ -25,27 +25,28 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
     work: &mut Work,
 ) -> Result<(S, f64), OdeError> {
     k.truncate(1);
-    for i in 1..12 {
-        // kᵢ = f(t + cᵢh, y + h Σ aᵢⱼ kⱼ)
-        let yi = combine(y, h, A12[i], k);
-        let ki = eval(f, t + C12[i] * h, &yi, t, i + 1, &mut work.fevals)?;
-        k.push(ki);
+    // kᵢ = f(t + cᵢh, y + h Σ aᵢⱼ kⱼ), unrolled so that every row of A is a constant
+    macro_rules! stages {
+        ($($i:literal)*) => {$(
+            let yi = combine(y, h, A12[$i], k);
+            let ki = eval_unchecked(f, t + C12[$i] * h, &yi, &mut work.fevals);
+            k.push(ki);
+        )*};
     }
-    // y₁ = y + h Σ bᵢ kᵢ (8th order)
-    let y1 = combine(y, h, &B, k);
-    let (rtol, atol) = tol;
-    // 5th-order estimate e₅ = Σ eᵢ kᵢ; 3rd-order e₃ = Σ bᵢkᵢ − (bhh₁k₁ + bhh₂k₉ + bhh₃k₁₂)
-    let mut e5 = y.clone();
-    e5.as_mut_slice().fill(0.0);
-    let mut e3 = e5.clone();
+    stages!(1 2 3 4 5 6 7 8 9 10 11);
+    check_stages(k, 1, t, h, &C12)?;
+    // Σ bᵢ kᵢ once: y₁ = y + h Σ bᵢ kᵢ (8th order), and the 3rd-order estimate
+    // e₃ = Σ bᵢkᵢ − (bhh₁k₁ + bhh₂k₉ + bhh₃k₁₂); the 5th-order estimate e₅ = Σ eᵢ kᵢ.
+    let mut e3 = k[0].clone();
+    e3.as_mut_slice().fill(0.0);
+    let mut e5 = e3.clone();
     for j in 0..12 {
-        if E[j] != 0.0 {
-            e5.add_scaled(E[j], &k[j]);
-        }
-        if B[j] != 0.0 {
-            e3.add_scaled(B[j], &k[j]);
-        }
+        e3.add_scaled(B[j], &k[j]);
+        e5.add_scaled(E[j], &k[j]);
     }
+    let mut y1 = y.clone();
+    y1.add_scaled(h, &e3);
+    let (rtol, atol) = tol;
     e3.add_scaled(-BHH[0], &k[0]);
     e3.add_scaled(-BHH[1], &k[8]);
     e3.add_scaled(-BHH[2], &k[11]);

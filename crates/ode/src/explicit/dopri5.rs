@@ -2,7 +2,7 @@
 
 use super::dense::{DenseStep, hermite_part, weighted};
 use super::tableau::{DOPRI5, DOPRI5_D, DOPRI5_E};
-use crate::state::{State, combine, eval};
+use crate::state::{State, check_stages, combine, eval_unchecked};
 use crate::{OdeError, Work};
 
 /// Stages 2..=7 from k₁ = `k[0]` (stage 7 is f(t + h, y₁), first same as last); returns y₁
@@ -19,23 +19,24 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
     work: &mut Work,
 ) -> Result<(S, f64), OdeError> {
     k.truncate(1);
-    let mut y1 = y.clone();
-    for i in 1..7 {
-        let yi = combine(y, h, DOPRI5.a[i], k);
-        let ki = eval(f, t + DOPRI5.c[i] * h, &yi, t, i + 1, &mut work.fevals)?;
-        if i == 6 {
-            y1 = yi; // row 7 of A is b: the stage-7 argument is y₁
-        }
-        k.push(ki);
+    // unrolled so that every row of A is a constant
+    macro_rules! stages {
+        ($($i:literal)*) => {$(
+            let yi = combine(y, h, DOPRI5.a[$i], k);
+            k.push(eval_unchecked(f, t + DOPRI5.c[$i] * h, &yi, &mut work.fevals));
+        )*};
     }
+    stages!(1 2 3 4 5);
+    // row 7 of A is b: the stage-7 argument is y₁
+    let y1 = combine(y, h, DOPRI5.a[6], k);
+    k.push(eval_unchecked(f, t + DOPRI5.c[6] * h, &y1, &mut work.fevals));
+    check_stages(k, 1, t, h, DOPRI5.c)?;
     let (rtol, atol) = tol;
     // local error estimate h Σ eᵢ kᵢ
     let mut e = y.clone();
     e.as_mut_slice().fill(0.0);
     for (ej, kj) in DOPRI5_E.iter().zip(k.iter()) {
-        if *ej != 0.0 {
-            e.add_scaled(h * ej, kj);
-        }
+        e.add_scaled(h * ej, kj);
     }
     let mut err = 0.0;
     for ((yi, y1i), ei) in y.as_slice().iter().zip(y1.as_slice()).zip(e.as_slice()) {
