@@ -159,6 +159,40 @@ fn eq_10_3_16_orientation_matrix_entries() {
     assert!((o * o.transpose() - Matrix3::identity()).amax() <= 8.0 * EPS);
 }
 
+#[test]
+fn eq_10_9_18_determinant_is_cos_gamma_and_10_9_20_22_invert_it() {
+    // det[î_W ĵ_G k̂_F]|_AC = cos γ (below (10.9.22)), and the columns a, b, c of
+    // (10.9.20)–(10.9.22) are its inverse: wind_angle_rates ∘ body_rates_from_wind_angle_rates
+    // is the identity, with α̇ and β̇ entering through (10.9.17).
+    for (alpha, beta, mu, gamma) in [(0.3, -0.2, 0.7, 0.4), (-0.1, 0.5, -2.0, -1.2), (0.0, 0.0, 0.0, 0.0)] {
+        let w = wind_angle_rate_matrix(alpha, beta, mu, gamma);
+        assert_close(w.determinant(), f64::cos(gamma), 16.0 * EPS);
+        // columns are unit vectors (10.9.14–16)
+        for j in 0..3 {
+            assert_close(w.column(j).norm(), 1.0, 8.0 * EPS);
+        }
+        let aero = AeroAngles { airspeed: 100.0, alpha, beta };
+        let path = FlightPathAngles { eta: 0.9, gamma, mu };
+        let rates = [0.11, -0.07, 0.05];
+        let (alpha_dot, beta_dot) = (0.02, -0.03);
+        let pqr = body_rates_from_wind_angle_rates(&aero, &path, rates, alpha_dot, beta_dot);
+        let back = wind_angle_rates(&aero, &path, pqr, alpha_dot, beta_dot).unwrap();
+        for (b, r) in back.iter().zip(rates) {
+            assert_close(*b, r, 32.0 * EPS / f64::cos(gamma));
+        }
+    }
+}
+
+#[test]
+fn eq_10_9_19_vertical_flight_path_is_an_error() {
+    // det = cos γ: (10.9.19) has no solution on a vertical flight path.
+    let aero = AeroAngles { airspeed: 50.0, alpha: 0.1, beta: 0.0 };
+    let path = FlightPathAngles { eta: 0.0, gamma: std::f64::consts::FRAC_PI_2, mu: 0.0 };
+    let e = wind_angle_rates(&aero, &path, [0.1, 0.0, 0.0], 0.0, 0.0).unwrap_err();
+    assert!(matches!(e, FlightError::VerticalFlightPath { .. }), "{e}");
+    assert!(e.to_string().contains("γ = ±90°"));
+}
+
 mod prop {
     use super::*;
     use proptest::prelude::*;
@@ -240,6 +274,31 @@ mod prop {
                 Err(FlightError::GimbalLock { cos_theta }) => prop_assert!(cos_theta.abs() < GIMBAL_LOCK_TOL),
                 Err(e) => prop_assert!(false, "{e}"),
             }
+        }
+
+        #[test]
+        fn eq_10_9_17_wind_angle_rates_are_the_derivatives_of_eta_gamma_mu(
+            psi in angle(), theta in -1.2f64..1.2, phi in angle(), alpha in -0.5f64..0.5, beta in -0.5f64..0.5,
+            rates in proptest::array::uniform3(-1.0f64..1.0), alpha_dot in -0.5f64..0.5, beta_dot in -0.5f64..0.5,
+        ) {
+            // Differentiate (η, γ, μ) of (10.8.4) exactly with dual numbers along a motion with
+            // Euler-angle rates [Φ̇, Θ̇, Ψ̇] and α̇, β̇, and compare with (10.9.19)–(10.9.22)
+            // fed with ω|_AC = S(Φ, Θ)[Φ̇, Θ̇, Ψ̇] (10.9.8).
+            use num_dual::Dual64;
+            let [phi_dot, theta_dot, psi_dot] = rates;
+            let d = |x: f64, dx: f64| Dual64::new(x, dx);
+            let e = Euler321::new(d(psi, psi_dot), d(theta, theta_dot), d(phi, phi_dot));
+            let path_d = FlightPathAngles::from_attitude(&e, d(alpha, alpha_dot), d(beta, beta_dot));
+            let path = FlightPathAngles { eta: path_d.eta.re, gamma: path_d.gamma.re, mu: path_d.mu.re };
+            prop_assume!(path.gamma.cos() > 1e-2);
+            let pqr = body_rates(&Euler321::new(psi, theta, phi), [phi_dot, theta_dot, psi_dot]);
+            let aero = AeroAngles { airspeed: 1.0, alpha, beta };
+            let [mu_dot, gamma_dot, eta_dot] = wind_angle_rates(&aero, &path, pqr, alpha_dot, beta_dot).unwrap();
+            // conditioning 1/cos γ ≤ 100 and 1/cos Θ (from the atan2 extraction)
+            let tol = 1e4 * EPS / path.gamma.cos();
+            prop_assert!((mu_dot - path_d.mu.eps).abs() <= tol, "μ̇ {} vs {}", mu_dot, path_d.mu.eps);
+            prop_assert!((gamma_dot - path_d.gamma.eps).abs() <= tol, "γ̇ {} vs {}", gamma_dot, path_d.gamma.eps);
+            prop_assert!((eta_dot - path_d.eta.eps).abs() <= tol, "η̇ {} vs {}", eta_dot, path_d.eta.eps);
         }
 
         #[test]

@@ -45,8 +45,9 @@ pub use modes::{
 };
 pub use plots::{doublet, doublet_response, doublet_response_svg, modes_svg};
 pub use rates::{
-    GIMBAL_LOCK_TOL, body_rates, euler_rate_matrix, euler_rates, orientation_from_quaternion,
-    quaternion_from_euler321, quaternion_rates,
+    GIMBAL_LOCK_TOL, body_rates, body_rates_from_wind_angle_rates, euler_rate_matrix, euler_rates,
+    orientation_from_quaternion, quaternion_from_euler321, quaternion_rates, wind_angle_rate_matrix,
+    wind_angle_rates,
 };
 pub use trim::{Trim, TrimLimits, TrimSpec, trim};
 

@@ -1,7 +1,9 @@
 //! Angular velocity and attitude rates: Euler-angle rates (10.9.8–9) with an error at
-//! gimbal lock, and quaternion rates as the singularity-free alternative.
+//! gimbal lock, quaternion rates as the singularity-free alternative, and the rates of the
+//! flight-path angles μ, γ, η (10.9.17–22) with an error on a vertical flight path.
 //!
-//! Book: §10.9, (10.9.1), (10.9.8), (10.9.9), (10.9.23); §9.7 (9.7.37); notes ch9-14 §3.
+//! Book: §10.9, (10.9.1), (10.9.8), (10.9.9), (10.9.10)–(10.9.22), (10.9.23); §9.7 (9.7.37);
+//! notes ch9-14 §3.
 //!
 //! # Conventions
 //! ω⃗_{AC/E}|_AC = [P, Q, R]. The quaternion is q_{AC/E} = (η, ε) Hamilton, scalar first, with
@@ -104,4 +106,87 @@ pub fn orientation_from_quaternion<T: Scalar>(q: [T; 4]) -> Matrix3<T> {
         one - two * (x * x + y * y),
     );
     r.transpose()
+}
+
+/// The matrix [î_W|_AC  ĵ_G|_AC  k̂_F|_AC] of (10.9.18), columns (10.9.14)–(10.9.16):
+/// ω|_AC = [î_W ĵ_G k̂_F]|_AC [μ̇, γ̇, η̇] + α̇ ĵ_AC|_AC − β̇ k̂_S|_AC (10.9.17); det = cos γ.
+///
+/// Book: (10.9.14)–(10.9.18).
+pub fn wind_angle_rate_matrix<T: Scalar>(alpha: T, beta: T, mu: T, gamma: T) -> Matrix3<T> {
+    let (sa, ca) = (alpha.sin(), alpha.cos());
+    let (sb, cb) = (beta.sin(), beta.cos());
+    let (sm, cm) = (mu.sin(), mu.cos());
+    let (sg, cg) = (gamma.sin(), gamma.cos());
+    // î_W (10.9.14), ĵ_G (10.9.15), k̂_F (10.9.16), as columns
+    Matrix3::new(
+        ca * cb,
+        sa * sm - ca * sb * cm,
+        -(sa * cm + ca * sb * sm) * cg - ca * cb * sg,
+        sb,
+        cb * cm,
+        cb * sm * cg - sb * sg,
+        sa * cb,
+        -ca * sm - sa * sb * cm,
+        (ca * cm - sa * sb * sm) * cg - sa * cb * sg,
+    )
+}
+
+/// ω|_AC = [P, Q, R] from the rates of the flight-path angles [μ̇, γ̇, η̇] and of the
+/// aerodynamic angles α̇, β̇ (10.9.17): the angular velocity as the sum of the five relative
+/// angular velocities F_AC/F_S/F_W/F_G/F_F/F_E (10.9.10–11).
+///
+/// Book: (10.9.10)–(10.9.17).
+pub fn body_rates_from_wind_angle_rates<T: Scalar>(
+    aero: &crate::AeroAngles<T>,
+    path: &crate::FlightPathAngles<T>,
+    mu_gamma_eta_dot: [T; 3],
+    alpha_dot: T,
+    beta_dot: T,
+) -> [T; 3] {
+    let w = wind_angle_rate_matrix(aero.alpha, aero.beta, path.mu, path.gamma)
+        * nalgebra::Vector3::from(mu_gamma_eta_dot);
+    let (sa, ca) = (aero.alpha.sin(), aero.alpha.cos());
+    // + α̇ ĵ_AC|_AC − β̇ k̂_S|_AC, k̂_S|_AC = [−sin α, 0, cos α] (10.9.13)
+    [w[0] + beta_dot * sa, w[1] + alpha_dot, w[2] - beta_dot * ca]
+}
+
+/// [μ̇, γ̇, η̇] from ω|_AC = [P, Q, R] and α̇, β̇: (10.9.19) with the columns a, b, c of the
+/// inverse written out (10.9.20)–(10.9.22),
+/// [μ̇, γ̇, η̇] = [a b c] [P − β̇ sin α, Q − α̇, R + β̇ cos α].
+///
+/// Book: (10.9.19)–(10.9.22).
+///
+/// # Errors
+/// [`FlightError::VerticalFlightPath`] when |cos γ| < [`GIMBAL_LOCK_TOL`] (the determinant
+/// of (10.9.18) is cos γ: heading and bank of the velocity are undefined on a vertical path).
+pub fn wind_angle_rates<T: Scalar>(
+    aero: &crate::AeroAngles<T>,
+    path: &crate::FlightPathAngles<T>,
+    pqr: [T; 3],
+    alpha_dot: T,
+    beta_dot: T,
+) -> Result<[T; 3], FlightError> {
+    let cg = path.gamma.cos();
+    if cg.re().abs() < GIMBAL_LOCK_TOL || !cg.re().is_finite() {
+        return Err(FlightError::VerticalFlightPath { cos_gamma: cg.re() });
+    }
+    let (sa, ca) = (aero.alpha.sin(), aero.alpha.cos());
+    let (sb, cb) = (aero.beta.sin(), aero.beta.cos());
+    let (sm, cm) = (path.mu.sin(), path.mu.cos());
+    let sg = path.gamma.sin();
+    let [p, q, r] = pqr;
+    let x = [p - beta_dot * sa, q - alpha_dot, r + beta_dot * ca];
+    // columns a (10.9.20), b (10.9.21), c (10.9.22), each over cos γ
+    let a = [
+        -sa * cm * sg + ca * cb * cg - ca * sb * sm * sg,
+        (sa * sm - ca * sb * cm) * cg,
+        -sa * cm - ca * sb * sm,
+    ];
+    let b = [sb * cg + cb * sm * sg, cb * cm * cg, cb * sm];
+    let c = [
+        ca * cm * sg + sa * cb * cg - sa * sb * sm * sg,
+        (-ca * sm - sa * sb * cm) * cg,
+        ca * cm - sa * sb * sm,
+    ];
+    Ok([0, 1, 2].map(|i| (a[i] * x[0] + b[i] * x[1] + c[i] * x[2]) / cg))
 }
