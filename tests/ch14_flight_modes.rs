@@ -300,3 +300,161 @@ fn section_14_7_doublet_response_and_mode_figures() {
     assert!(modes_svg("Business jet longitudinal modes", &poles).unwrap().contains("<svg"));
     assert!(matches!(modes_svg("empty", &[]), Err(FlightError::Plot { .. })));
 }
+
+/// Flight scenes (§14.2 control inputs, §14.6–14.7 modes): an aircraft in a TOML file, trimmed,
+/// linearized and flown by the nonlinear and the linear model side by side.
+mod flight_scene {
+    use super::*;
+    use vectrix::dynamics::scene::SceneError;
+    use vectrix::flight::scene::FlightScene;
+
+    fn example(name: &str) -> String {
+        let p = format!("{}/examples/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+        std::fs::read_to_string(p).unwrap()
+    }
+
+    fn with(text: &str, from: &str, to: &str) -> String {
+        assert!(text.contains(from), "{from}");
+        text.replacen(from, to, 1)
+    }
+
+    #[test]
+    fn section_14_7_business_jet_doublet_scene_modes_and_linear_agreement() {
+        let text = with(&example("business_jet_doublet"), "duration = 120.0", "duration = 30.0");
+        let text = with(&text, "samples = 1201", "samples = 301");
+        let scene = FlightScene::from_toml(&text, "business_jet_doublet.toml").unwrap();
+        // trim residual ≤ 1e-10 (issue 10), level: Θ = α (Fact 10.8.5 with γ = 0)
+        let trim = scene.linearization().trim;
+        assert!(trim.residual <= 1e-10, "{}", trim.residual);
+        assert_close(trim.state.attitude.theta, trim.state.aero_angles().alpha, 4.0 * EPS);
+        let run = scene.run().unwrap();
+        // the five modes of Tables 14.1–14.2 at the book's printed precision (§14.7, §14.8)
+        let names: Vec<&str> = run.modes.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["short period", "phugoid", "Dutch roll", "roll", "spiral"]);
+        let book = [(-1.001, 2.649, 3), (-0.0042, 0.0922, 4), (-0.065, 1.687, 3), (-0.501, 0.0, 3)];
+        for (m, (re, im, d)) in run.modes.iter().zip(book) {
+            assert_close(m.re, re, printed(d));
+            assert_close(m.im, im, printed(d));
+        }
+        assert_close(run.modes[4].re, -0.00102, printed(5));
+        assert_eq!(run.poles.len(), 8);
+        // t = 0 is the trim; the doublet moves α and q, and the linear model follows the
+        // nonlinear one to a small fraction of the excursion during the short period
+        let alpha = run.outputs.iter().position(|o| o == "alpha").unwrap();
+        assert_eq!(run.nonlinear[alpha][0], trim.state.aero_angles().alpha);
+        assert!(run.max_excursion(alpha) > 0.03);
+        assert!(run.max_linear_error(alpha).unwrap() < 0.01 * run.max_excursion(alpha));
+        // the elevator output is trim + doublet: +0.01 on [1, 2), −0.01 on [2, 3)
+        let de = run.outputs.iter().position(|o| o == "elevator").unwrap();
+        let at = |t: f64| run.nonlinear[de][run.t.iter().position(|&s| (s - t).abs() < 1e-9).unwrap()];
+        assert_close(at(1.5) - trim.controls.elevator, 0.01, 1e-15);
+        assert_close(at(2.5) - trim.controls.elevator, -0.01, 1e-15);
+        assert_eq!(at(3.5), trim.controls.elevator);
+        assert!(run.to_csv().starts_with("t,u,u_linear,alpha,alpha_linear"));
+        assert!(run.summary_json().contains("\"short period\""));
+        assert!(run.response_svg(alpha).unwrap().contains("<svg"));
+        assert!(run.modes_svg().unwrap().contains("<svg"));
+    }
+
+    #[test]
+    fn linear_response_error_is_quadratic_in_the_input_amplitude() {
+        // The linearization is exact to first order, so |nonlinear − linear| scales as A²:
+        // a tenfold smaller doublet leaves a hundredfold smaller gap (the second-order terms,
+        // e.g. the induced drag of the short-period lift excursion, dominate it).
+        let base = with(&example("business_jet_doublet"), "duration = 120.0", "duration = 20.0");
+        let base = with(&base, "samples = 1201", "samples = 201");
+        let gap = |a: &str| {
+            let text = with(&base, "amplitude = 0.01", &format!("amplitude = {a}"));
+            let run = FlightScene::from_toml(&text, "s.toml").unwrap().run().unwrap();
+            let q = run.outputs.iter().position(|o| o == "q").unwrap();
+            (run.max_linear_error(q).unwrap(), run.max_excursion(q))
+        };
+        let (g1, x1) = gap("0.004");
+        let (g2, x2) = gap("0.0004");
+        assert!((x1 / x2 - 10.0).abs() < 0.05, "excursion is linear in A: {}", x1 / x2);
+        // slope 2 on a log–log scale; third-order terms shift it by a few hundredths here
+        let slope = (g1 / g2).log10();
+        assert!((slope - 2.0).abs() < 0.05, "gap ratio {} (slope {slope})", g1 / g2);
+    }
+
+    #[test]
+    fn level_turn_scene_couples_and_leaves_out_linear_positions() {
+        let text = with(&example("business_jet_turn_rudder"), "duration = 30.0", "duration = 10.0");
+        let text = with(&text, "samples = 601", "samples = 101");
+        let text = with(&text, "outputs = [", "outputs = [\"x\", \"y\", ");
+        let scene = FlightScene::from_toml(&text, "turn.toml").unwrap();
+        let trim = scene.linearization().trim;
+        assert!(trim.residual <= 1e-10);
+        // coordinated turn: tan Φ ≈ V Ψ̇ / g (12.1, small α), right bank for a right turn
+        let v: f64 = 675.124;
+        let phi = trim.state.attitude.phi;
+        assert!((phi.tan() - v * 0.0523599 / 32.2).abs() < 0.01, "Φ = {phi}");
+        let run = scene.run().unwrap();
+        assert!(run.modes.iter().all(|m| m.name.starts_with("mode ")));
+        assert!(run.linear[0].is_none() && run.linear[1].is_none());
+        assert!(run.linear[2..].iter().all(Option::is_some));
+        // Ψ grows at the turn rate, less what the left-yawing rudder pulse took off (the linear
+        // model, reference Ψ̇t plus δΨ, agrees)
+        let psi = run.outputs.iter().position(|o| o == "psi").unwrap();
+        let last = run.nonlinear[psi].len() - 1;
+        let psi_end = run.nonlinear[psi][last];
+        let psi_lin = run.linear[psi].as_ref().unwrap()[last];
+        assert!(psi_end < 0.0523599 * 10.0 && psi_end > 0.0523599 * 10.0 - 0.05, "Ψ(10 s) = {psi_end}");
+        assert!((psi_end - psi_lin).abs() < 2e-3, "Ψ {psi_end} vs linear {psi_lin}");
+        assert!(!run.to_csv().lines().next().unwrap().contains("x_linear"));
+    }
+
+    fn invalid(text: &str) -> (usize, String, String) {
+        match FlightScene::from_toml(text, "bad.toml").unwrap_err() {
+            SceneError::Invalid { line, path, message, .. } => (line, path, message),
+            SceneError::Parse { line, message, .. } => (line, "<parse>".into(), message),
+            e => panic!("unexpected {e}"),
+        }
+    }
+
+    #[test]
+    fn bad_flight_scenes_are_typed_errors_with_line_and_valid_values() {
+        let ok = example("business_jet_doublet");
+        let line_of = |needle: &str| ok.lines().position(|l| l.contains(needle)).unwrap() + 1;
+        let (line, path, msg) = invalid(&with(&ok, "control = \"elevator\"", "control = \"flaps\""));
+        assert_eq!((line, path.as_str()), (line_of("control ="), "inputs[0].control"));
+        assert!(msg.contains("valid: elevator, aileron, rudder, thrust"), "{msg}");
+        let (_, path, msg) = invalid(&with(&ok, "\"theta\"", "\"pitch\""));
+        assert_eq!(path, "outputs");
+        assert!(msg.contains("unknown output `pitch`") && msg.contains("theta"), "{msg}");
+        let (_, path, msg) = invalid(&with(&ok, "width = 1.0\n", ""));
+        assert_eq!(path, "inputs[0].width");
+        assert!(msg.contains("needs `width`"), "{msg}");
+        let (_, _, msg) =
+            invalid(&with(&ok, "model = \"business_jet\"", "model = \"business_jet\"\nmass = -3.0"));
+        assert!(msg.contains("mass = -3") && msg.contains("> 0"), "{msg}");
+        let (_, path, msg) = invalid(&with(
+            &ok,
+            "model = \"business_jet\"",
+            "model = \"business_jet\"\ncoefficients = { cm_alfa = -1.0 }",
+        ));
+        assert_eq!(path, "aircraft.coefficients.cm_alfa");
+        assert!(msg.contains("unknown coefficient") && msg.contains("cm_alpha"), "{msg}");
+        let (_, _, msg) = invalid(&with(&ok, "model = \"business_jet\"", "model = \"cessna\""));
+        assert!(msg.contains("valid: business_jet"), "{msg}");
+        // unreachable trim: far too slow to carry the weight within the α limit
+        let (line, path, msg) = invalid(&with(&ok, "airspeed = 675.124", "airspeed = 60.0"));
+        assert_eq!((line, path.as_str()), (line_of("[trim]"), "trim"));
+        // the message names the condition left unmet (here the largest residual, U̇ = 0)
+        assert!(msg.contains("cannot trim") && msg.contains("= 0 ("), "{msg}");
+        let (_, _, msg) = invalid(
+            &with(&ok, "gamma = 0.0", "gamma = 0.0\nturn_rate = 0.1\n")
+                .replace("gamma = 0.0", "gamma = 0.05"),
+        );
+        assert!(msg.contains("not both"), "{msg}");
+        let (_, path, msg) = invalid(&with(&ok, "shape = \"doublet\"", "shape = \"sine\""));
+        assert_eq!(path, "inputs[0].shape");
+        assert!(msg.contains("valid: doublet, step, pulse"), "{msg}");
+        // unknown keys are parse errors at their line
+        let (line, path, msg) = invalid(&with(&ok, "gamma = 0.0", "gama = 0.0"));
+        assert_eq!((line, path.as_str()), (line_of("gamma = 0.0"), "<parse>"));
+        assert!(msg.contains("gama"), "{msg}");
+        let (_, path, _) = invalid(&with(&ok, "duration = 120.0", "duration = -1.0"));
+        assert_eq!(path, "duration");
+    }
+}

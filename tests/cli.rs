@@ -124,3 +124,57 @@ fn tour_and_unknown_subcommand() {
     assert!(cli(&["tour"]).unwrap().contains("tour"));
     assert!(cli(&["frobnicate"]).is_err());
 }
+
+/// A flight scene (an `[aircraft]` table) through `run` and `check`: trim, modes, nonlinear
+/// and linear responses, one SVG per output and the pole map (§14.2, §14.7).
+#[test]
+fn run_and_check_flight_scene() {
+    let dir = temp_dir("flight");
+    let text = std::fs::read_to_string(example("business_jet_doublet")).unwrap();
+    let text = text.replacen("duration = 120.0", "duration = 10.0", 1).replacen(
+        "samples = 1201",
+        "samples = 101",
+        1,
+    );
+    let path = dir.join("jet.toml");
+    std::fs::write(&path, text).unwrap();
+    let p = path.display().to_string();
+    let checked = cli(&["check", &p]).unwrap();
+    assert!(checked.contains("ok — flight scene `business_jet_doublet`"), "{checked}");
+    let out_dir = dir.join("out").display().to_string();
+    let printed = cli(&["run", &p, "--out", &out_dir, "--quiet"]).unwrap();
+    assert!(printed.contains("short period  λ = -1.00129 ± 2.64949j"), "{printed}");
+    let dest = dir.join("out").join("business_jet_doublet");
+    for f in [
+        "trajectory.csv",
+        "summary.json",
+        "modes.svg",
+        "u.svg",
+        "alpha.svg",
+        "q.svg",
+        "theta.svg",
+        "elevator.svg",
+    ] {
+        assert!(dest.join(f).is_file(), "{f} missing");
+    }
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dest.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["modes"].as_array().unwrap().len(), 5);
+    assert!(summary["trim"]["residual"].as_f64().unwrap() <= 1e-10);
+    let csv = std::fs::read_to_string(dest.join("trajectory.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 102);
+    // sweeps take multibody scenes only, and say so
+    let e = cli(&["sweep", &p, "--param", "duration=1,2"]).unwrap_err();
+    assert!(e.contains("flight scene"), "{e}");
+    // a bad flight scene is reported with file, line and what is valid
+    std::fs::write(
+        &path,
+        std::fs::read_to_string(example("business_jet_doublet"))
+            .unwrap()
+            .replace("control = \"elevator\"", "control = \"flaps\""),
+    )
+    .unwrap();
+    let e = cli(&["check", &p]).unwrap_err();
+    assert!(e.contains("jet.toml:") && e.contains("valid: elevator, aileron, rudder, thrust"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,4 +1,5 @@
-//! Scene output: `trajectory.csv`, `summary.json` and one SVG per requested output, written
+//! Scene output: `trajectory.csv`, `summary.json` and one SVG per requested output (flight
+//! scenes add `modes.svg`), written
 //! to a temporary folder and renamed into place, so that a folder that exists is complete.
 //!
 //! Book: — (reporting).
@@ -7,6 +8,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 use vectrix_dynamics::scene::{Drift, Invariant, Run, RunWork, Scene};
+use vectrix_flight::scene::FlightRun;
 use vectrix_plot::LineChart;
 
 /// Contents of summary.json.
@@ -45,16 +47,7 @@ fn file_stem(o: &str) -> String {
 
 /// Writes `<parent>/<scene>/` atomically (temp folder + rename); returns its path.
 pub(crate) fn write(parent: &Path, scene: &Scene, run: &Run) -> Result<PathBuf, Box<dyn std::error::Error>> {
-    let name = file_stem(&scene.spec().name);
-    std::fs::create_dir_all(parent)?;
-    let tmp =
-        parent.join(format!(".{name}.partial-{}-{:?}", std::process::id(), std::thread::current().id()));
-    let tmp = PathBuf::from(file_stem_path(&tmp));
-    if tmp.exists() {
-        std::fs::remove_dir_all(&tmp)?;
-    }
-    std::fs::create_dir_all(&tmp)?;
-    let result = (|| -> Result<(), Box<dyn std::error::Error>> {
+    write_dir(parent, &scene.spec().name, |tmp| {
         std::fs::write(tmp.join("trajectory.csv"), run.to_csv())?;
         let summary = Summary {
             scene: &run.scene,
@@ -76,8 +69,40 @@ pub(crate) fn write(parent: &Path, scene: &Scene, run: &Run) -> Result<PathBuf, 
             std::fs::write(tmp.join(format!("{}.svg", file_stem(o))), chart.to_svg()?)?;
         }
         Ok(())
-    })();
-    if let Err(e) = result {
+    })
+}
+
+/// Writes a flight scene's `<parent>/<scene>/`: trajectory.csv (nonlinear and linear columns),
+/// summary.json (trim, modes, linear-model error), one SVG per output and modes.svg.
+pub(crate) fn write_flight(parent: &Path, run: &FlightRun) -> Result<PathBuf, Box<dyn std::error::Error>> {
+    write_dir(parent, &run.scene, |tmp| {
+        std::fs::write(tmp.join("trajectory.csv"), run.to_csv())?;
+        std::fs::write(tmp.join("summary.json"), run.summary_json())?;
+        for (k, o) in run.outputs.iter().enumerate() {
+            std::fs::write(tmp.join(format!("{}.svg", file_stem(o))), run.response_svg(k)?)?;
+        }
+        std::fs::write(tmp.join("modes.svg"), run.modes_svg()?)?;
+        Ok(())
+    })
+}
+
+/// Creates `<parent>/<name>/` atomically: `fill` writes into a temp folder that is renamed
+/// into place only when it succeeds.
+fn write_dir(
+    parent: &Path,
+    name: &str,
+    fill: impl FnOnce(&Path) -> Result<(), Box<dyn std::error::Error>>,
+) -> Result<PathBuf, Box<dyn std::error::Error>> {
+    let name = file_stem(name);
+    std::fs::create_dir_all(parent)?;
+    let tmp =
+        parent.join(format!(".{name}.partial-{}-{:?}", std::process::id(), std::thread::current().id()));
+    let tmp = PathBuf::from(file_stem_path(&tmp));
+    if tmp.exists() {
+        std::fs::remove_dir_all(&tmp)?;
+    }
+    std::fs::create_dir_all(&tmp)?;
+    if let Err(e) = fill(&tmp) {
         let _ = std::fs::remove_dir_all(&tmp);
         return Err(e);
     }

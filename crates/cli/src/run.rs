@@ -9,6 +9,7 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
 use vectrix_dynamics::scene::{DEFAULT_SCENE, Run, Scene};
+use vectrix_flight::scene::FlightScene;
 
 /// Runs a loaded scene with a progress bar that appears only after half a second.
 pub(crate) fn simulate(scene: &Scene, quiet: bool) -> Result<Run, Box<dyn std::error::Error>> {
@@ -76,12 +77,55 @@ pub fn run(
     quiet: bool,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let scene = match path {
-        Some(p) => crate::check::load(p)?,
+        Some(p) => match crate::check::load_any(p)? {
+            crate::check::Loaded::Bodies(s) => *s,
+            crate::check::Loaded::Flight(f) => return run_flight(out, &f, dir),
+        },
         None => Scene::from_toml(DEFAULT_SCENE, "<default scene>")?,
     };
     let run = simulate(&scene, quiet)?;
     let dest = crate::output::write(dir, &scene, &run)?;
     print_summary(out, &scene, &run)?;
+    writeln!(out, "wrote {}", dest.display())?;
+    Ok(())
+}
+
+/// `vectrix run` on a flight scene: trim, nonlinear and linear responses, modes.
+fn run_flight(
+    out: &mut impl Write,
+    scene: &FlightScene,
+    dir: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let start = Instant::now();
+    let run = scene.run()?;
+    let dest = crate::output::write_flight(dir, &run)?;
+    writeln!(
+        out,
+        "flight scene `{}`: t = 0 … {} s, {} samples, {} f-evals, {} steps, {:.3} s wall",
+        run.scene,
+        scene.spec().duration,
+        run.t.len(),
+        run.fevals,
+        run.steps,
+        start.elapsed().as_secs_f64()
+    )?;
+    for m in &run.modes {
+        writeln!(
+            out,
+            "  {:<13} λ = {:+.5} ± {:.5}j  ωn = {:.4} rad/s  ζ = {:.4}",
+            m.name, m.re, m.im, m.natural_frequency, m.damping_ratio
+        )?;
+    }
+    for (k, o) in run.outputs.iter().enumerate() {
+        match run.max_linear_error(k) {
+            Some(e) => writeln!(
+                out,
+                "  {o:<9} max excursion {:.3e}, linear model off by ≤ {e:.2e}",
+                run.max_excursion(k)
+            )?,
+            None => writeln!(out, "  {o:<9} max excursion {:.3e}", run.max_excursion(k))?,
+        }
+    }
     writeln!(out, "wrote {}", dest.display())?;
     Ok(())
 }

@@ -23,6 +23,7 @@ mod linearize;
 mod modes;
 mod plots;
 mod rates;
+pub mod scene;
 mod table;
 mod trim;
 

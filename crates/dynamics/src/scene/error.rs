@@ -44,8 +44,11 @@ pub enum SceneError {
     },
 }
 
-/// 1-based (line, column) of byte `offset` in `src`.
-pub(crate) fn line_col(src: &str, offset: usize) -> (usize, usize) {
+/// 1-based (line, column) of byte `offset` in `src` (columns count characters), for locating
+/// scene errors; shared with the flight layer's scene files.
+///
+/// Book: — (file format).
+pub fn line_col(src: &str, offset: usize) -> (usize, usize) {
     let mut offset = offset.min(src.len());
     while !src.is_char_boundary(offset) {
         offset -= 1;

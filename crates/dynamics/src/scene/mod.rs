@@ -21,7 +21,7 @@ mod rhs;
 mod run;
 pub mod spec;
 
-pub use error::SceneError;
+pub use error::{SceneError, line_col};
 pub use invariants::Invariant;
 pub use run::{Drift, Run, RunWork};
 pub use spec::SceneSpec;
