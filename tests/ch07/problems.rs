@@ -1,7 +1,7 @@
 //! §7.17 problems with the solutions of §7.18 (numbers from the notes, [C] = recomputed).
 
 use vectrix::dynamics::lagrange::accelerations;
-use vectrix::dynamics::multibody::{Joint, Link, Model};
+use vectrix::dynamics::multibody::{Joint, JointWrench, Link, Model};
 use vectrix::nalgebra::{Matrix3, Rotation3, Vector3};
 use vectrix::prelude::*;
 use vectrix::statics::{MassProperties, Point};
@@ -146,4 +146,204 @@ fn problem_7_17_5_tilted_cylinder_on_shaft() {
     assert_close(w.moment.x, -od * k, 64.0 * EPS);
     assert_close(w.moment.y, -omega * omega * k, 64.0 * EPS);
     assert_close(w.moment.z, tau, 64.0 * EPS);
+}
+
+/// P7.17.3 (§7.18): a uniform shaft (m₁, length l₁, radius r₁) and a uniform disk (m₂,
+/// thickness l₂, radius r₂) welded at distance d from the shaft's left end, the disk's normal
+/// at θ to the shaft; J_{B₃/c₃} resolved in F_A (î_A along the shaft, the disk's normal in the
+/// î_A–ĵ_A plane): "[[α₁ + δ₁, δ₂, 0], [δ₃, β₁ + m₁l₄² + δ₄ + m₂l₅², 0], [0, 0, β₁ + m₁l₄² +
+/// β₂ + m₂l₅²]], m₃ = m₁ + m₂, l₃ = l₁/2 + (m₂/m₃)(d − l₁/2), l₄ = (m₂/m₃)(l₁/2 − d),
+/// l₅ = d − l₁/2 + (m₂/m₃)(l₁/2 − d), α_i = ½m_ir_i², β_i = m_i(3r_i² + l_i²)/12,
+/// δ₁ = α₂cos²θ + β₂sin²θ, δ₂ = δ₃ = (−α₂ + β₂) cos θ sin θ, δ₄ = α₂sin²θ + β₂cos²θ."
+/// Interpretation (figure-based): the statement fixes ĵ_A only up to sign, and the printed
+/// sign of δ₂ is the one for the disk normal n̂ = cos θ î_A − sin θ ĵ_A; with ĵ_A reversed
+/// (n̂ = cos θ î_A + sin θ ĵ_A) the off-diagonal entries change sign, checked below.
+#[test]
+fn problem_7_17_3_disk_welded_on_shaft() {
+    // F_A turned away from the base frame, so that no entry is exact by accident
+    let base = Frame::new();
+    let f_a = base.rotated_by_rotor(&Rotor::from_axis_angle(&base.vector([1.0, -2.0, 0.5]), 0.8).unwrap());
+    let f_a_flipped = Frame::from_axes(&f_a.i(), &-f_a.j(), &-f_a.k(), ORTHONORMAL_TOL).unwrap();
+    let left = Point::at(base.vector([0.3, -1.2, 0.8]));
+    // (m₁, l₁, r₁, m₂, l₂, r₂, d, θ): disk off-centre, near the left end, at the middle
+    // (l₄ = l₅ = 0), at the right end; θ = 0 and π/2 included
+    for (m1, l1, r1, m2, l2, r2, d, th) in [
+        (2.0, 1.5, 0.05, 3.0, 0.1, 0.4, 0.9, 0.3),
+        (0.7, 2.0, 0.1, 1.3, 0.05, 0.6, 0.25, 1.2),
+        (5.0, 0.8, 0.2, 0.5, 0.3, 0.25, 0.4, 0.0),
+        (1.0, 3.0, 0.08, 4.0, 0.2, 1.0, 3.0, std::f64::consts::FRAC_PI_2),
+    ] {
+        let shaft =
+            MassProperties::cylinder(m1, r1, l1, &f_a.i(), left.displaced(f_a.i() * (0.5 * l1))).unwrap();
+        let normal = f_a.i() * th.cos() - f_a.j() * th.sin();
+        let disk = MassProperties::cylinder(m2, r2, l2, &normal, left.displaced(f_a.i() * d)).unwrap();
+        // (6.2.23): the union, about its own centre of mass
+        let b3 = shaft.combine(&disk);
+
+        let m3 = m1 + m2;
+        let l3 = 0.5 * l1 + m2 / m3 * (d - 0.5 * l1);
+        let l4 = m2 / m3 * (0.5 * l1 - d);
+        let l5 = d - 0.5 * l1 + m2 / m3 * (0.5 * l1 - d);
+        let (a1, a2) = (0.5 * m1 * r1 * r1, 0.5 * m2 * r2 * r2);
+        let (b1, b2) = (m1 * (3.0 * r1 * r1 + l1 * l1) / 12.0, m2 * (3.0 * r2 * r2 + l2 * l2) / 12.0);
+        let (c, s) = (th.cos(), th.sin());
+        let (d1, d2, d3, d4) =
+            (a2 * c * c + b2 * s * s, (b2 - a2) * c * s, (b2 - a2) * c * s, a2 * s * s + b2 * c * c);
+        let yy = b1 + m1 * l4 * l4 + d4 + m2 * l5 * l5;
+        let zz = b1 + m1 * l4 * l4 + b2 + m2 * l5 * l5;
+
+        assert_close(b3.mass(), m3, 4.0 * EPS);
+        let r_c3 = b3.centre_of_mass().position_rel(&left).resolve(&f_a);
+        assert_close_slice(r_c3.as_slice(), &[l3, 0.0, 0.0], 64.0 * EPS);
+        let j = b3.inertia_about_centre();
+        let want = Matrix3::new(a1 + d1, d2, 0.0, d3, yy, 0.0, 0.0, 0.0, zz);
+        assert_close_slice(j.resolve(&f_a).as_slice(), want.as_slice(), 64.0 * EPS);
+        // ĵ_A → −ĵ_A (and k̂_A → −k̂_A): only the signs of δ₂ = δ₃ change
+        let flipped = Matrix3::new(a1 + d1, -d2, 0.0, -d3, yy, 0.0, 0.0, 0.0, zz);
+        assert_close_slice(j.resolve(&f_a_flipped).as_slice(), flipped.as_slice(), 64.0 * EPS);
+    }
+}
+
+/// P7.17.4 (§7.18): a uniform bar (m, l) pinned at a on a vertical shaft that spins at the
+/// constant rate Ω, at θ from the vertical, held by a horizontal cable: "T = ½mg tan θ +
+/// ⅓mlΩ² sin θ, f_ay = −½mg tan θ + ⅙mlΩ² sin θ, f_az = mg."
+/// Interpretation (figure-based): a is the bar's lower end, the pin axis is perpendicular to
+/// the plane of shaft and bar, the bar leans outward and the cable runs horizontally from its
+/// upper end to the shaft; ĵ is horizontal in that plane, pointing from the bar toward the
+/// shaft (the cable's pull), and k̂ is up. The book prints no torque at a: [C] it is zero,
+/// since Ḣ_{/a} = Ω k̂ × J_{/a} Ω k̂ lies along the pin axis, where gravity and the cable
+/// balance it.
+#[test]
+fn problem_7_17_4_bar_on_spinning_shaft_held_by_cable() {
+    // (m, l, θ, Ω, g), including the static case Ω = 0 of the hint
+    for (m, l, th, omega, g) in [
+        (1.5, 0.8, 0.6, 2.5, 9.81),
+        (0.7, 2.0, 1.1, 0.9, 9.81),
+        (2.0, 1.3, 0.3, 0.0, 9.81),
+        (1.0, 1.0, 0.9, 4.0, 1.62),
+    ] {
+        // massless shaft about ẑ; the bar along its link ẑ, tilted outward (toward the shaft's
+        // x̂) by the pin about ŷ at a, which sits on the shaft axis
+        let shaft = Link::new(
+            None,
+            Joint::Pin { axis: Vector3::z() },
+            Vector3::zeros(),
+            0.0,
+            Vector3::zeros(),
+            Matrix3::zeros(),
+        );
+        let j_c = Matrix3::from_diagonal(&Vector3::new(m * l * l / 12.0, m * l * l / 12.0, 0.0));
+        let bar = Link::new(
+            Some(0),
+            Joint::Pin { axis: Vector3::y() },
+            Vector3::new(0.0, 0.0, 0.4),
+            m,
+            Vector3::new(0.0, 0.0, 0.5 * l),
+            j_c,
+        );
+        let mut model = Model::new(&[shaft, bar]).unwrap();
+        model.gravity = Vector3::new(0.0, 0.0, -g);
+        let r_y = Rotation3::from_axis_angle(&Vector3::y_axis(), th);
+        // the cable pulls the upper end (l ẑ in the bar frame) by −T x̂ of the shaft frame
+        let cable = |t: f64| {
+            let f = r_y.inverse() * Vector3::new(-t, 0.0, 0.0);
+            [JointWrench::default(), JointWrench { force: f, moment: Vector3::new(0.0, 0.0, l).cross(&f) }]
+        };
+        let (q, v, vdot) = ([0.7, th], [omega, 0.0], [0.0, 0.0]);
+        let id = |t: f64| model.rnea(&q, &v, &vdot, Some(&cable(t))).unwrap();
+        // θ stays constant with a frictionless pin: τ_pin(T) = 0, and τ_pin is affine in T
+        let (tau0, tau1) = (id(0.0).tau[1], id(1.0).tau[1]);
+        let t = -tau0 / (tau1 - tau0);
+        let want_t = 0.5 * m * g * th.tan() + m * l * omega * omega * th.sin() / 3.0;
+        assert_close(t, want_t, 64.0 * EPS);
+
+        // the joint wrench on the bar at a, back to the shaft frame: (ĵ, k̂) = (−x̂, ẑ)
+        let w = id(t).wrenches[1];
+        let f_a = r_y * w.force;
+        let f_ay = -0.5 * m * g * th.tan() + m * l * omega * omega * th.sin() / 6.0;
+        assert_close_slice(f_a.as_slice(), &[-f_ay, 0.0, m * g], 64.0 * EPS);
+        // no torque at a, and none to keep the shaft turning: scale m g l
+        let scale = m * g * l;
+        assert_close_slice((r_y * w.moment / scale).as_slice(), &[0.0; 3], 64.0 * EPS);
+        assert_close(id(t).tau[0] / scale, 0.0, 64.0 * EPS);
+    }
+}
+
+/// P7.17.6 (§7.18): a vertical shaft spinning at the constant rate Ω > 0 carries a horizontal
+/// arm (length l₁) with a frictionless pin at its end; a slanted bar (m, l₂) hangs from the pin
+/// at θ below the horizontal and its tip slides on the ground with friction μ:
+/// "f_ay = −½mg sin θ − ⅙mΩ²[2l₂ + 6l₁cos θ + l₂cos²θ + 3l₁ tan θ sin θ],
+/// f_az = −⅙mΩ² sin θ (3l₁ + l₂ cos θ) + ½mg cos θ, f_b = ⅙m[3g − Ω²(2l₂ sin θ + 3l₁ tan θ)],
+/// f_ax = −μf_b, f_f = μf_b, M_az = μl₂f_b", in F_C: ĵ_C along the bar toward the ground,
+/// î_C out of the page, k̂_C = î_C × ĵ_C. The notes verify f_b only; the other printed forms
+/// are checked here too, and hold as printed.
+/// Interpretation (figure-based): the bar slants outward (away from the shaft) and down, the
+/// pin axis is î_C, and the tip moves into the page (−î_C) so that friction is +μf_b î_C;
+/// M_az is the reaction couple of the pin on the bar (the total M_{B/c} also has the
+/// gyroscopic component −(ml₂²/12)Ω² sin θ cos θ along î_C, so it cannot be meant).
+#[test]
+fn problem_7_17_6_slanted_bar_sliding_on_ground() {
+    // (m, l₁, l₂, θ, Ω, μ, g), all with f_b > 0 (the tip stays on the ground)
+    for (m, l1, l2, th, omega, mu, g) in [
+        (1.2, 0.5, 1.0, 0.6, 1.5, 0.3, 9.81),
+        (2.0, 1.0, 1.5, 1.0, 2.0, 0.5, 9.81),
+        (0.8, 0.3, 0.7, 0.2, 3.0, 0.1, 9.81),
+        (3.0, 0.0, 1.2, 0.8, 1.0, 0.8, 1.62),
+    ] {
+        // massless shaft and arm about ẑ; the bar along its link x̂, turned by θ about ŷ at the
+        // pin, so that it points along cos θ x̂ − sin θ ẑ of the shaft frame: out and down
+        let shaft = Link::new(
+            None,
+            Joint::Pin { axis: Vector3::z() },
+            Vector3::zeros(),
+            0.0,
+            Vector3::zeros(),
+            Matrix3::zeros(),
+        );
+        let j_c = Matrix3::from_diagonal(&Vector3::new(0.0, m * l2 * l2 / 12.0, m * l2 * l2 / 12.0));
+        let bar = Link::new(
+            Some(0),
+            Joint::Pin { axis: Vector3::y() },
+            Vector3::new(l1, 0.0, 0.0),
+            m,
+            Vector3::new(0.5 * l2, 0.0, 0.0),
+            j_c,
+        );
+        let mut model = Model::new(&[shaft, bar]).unwrap();
+        model.gravity = Vector3::new(0.0, 0.0, -g);
+        let r_y = Rotation3::from_axis_angle(&Vector3::y_axis(), th);
+        let tip = Vector3::new(l2, 0.0, 0.0);
+        // the tip moves along Ω ẑ × r_tip; friction opposes it with magnitude μ f_b
+        let r_tip = Vector3::new(l1, 0.0, 0.0) + r_y * tip;
+        let v_hat = Vector3::z().cross(&r_tip).normalize();
+        let ground = |f_b: f64| {
+            let f = r_y.inverse() * (Vector3::z() * f_b - v_hat * (mu * f_b));
+            [JointWrench::default(), JointWrench { force: f, moment: tip.cross(&f) }]
+        };
+        let (q, v, vdot) = ([-0.4, th], [omega, 0.0], [0.0, 0.0]);
+        let id = |f_b: f64| model.rnea(&q, &v, &vdot, Some(&ground(f_b))).unwrap();
+        // θ stays constant with a frictionless pin: τ_pin(f_b) = 0, affine in f_b
+        let (tau0, tau1) = (id(0.0).tau[1], id(1.0).tau[1]);
+        let f_b = -tau0 / (tau1 - tau0);
+        let (c, s, t) = (th.cos(), th.sin(), th.tan());
+        let w2 = omega * omega;
+        let want_fb = m / 6.0 * (3.0 * g - w2 * (2.0 * l2 * s + 3.0 * l1 * t));
+        assert!(want_fb > 0.0, "parameters must keep the tip on the ground");
+        // f_b is a difference of terms of size mg (the second case cancels to ~1% of mg):
+        // the error is a few ε of mg, well inside 64ε
+        assert_close(f_b, want_fb, 64.0 * EPS);
+
+        // F_C in the bar's link frame: î_C = −ŷ, ĵ_C = x̂ (along the bar), k̂_C = ẑ
+        let in_c = |x: Vector3<f64>| [-x.y, x.x, x.z];
+        let w = id(f_b).wrenches[1];
+        let f_ay =
+            -0.5 * m * g * s - m * w2 / 6.0 * (2.0 * l2 + 6.0 * l1 * c + l2 * c * c + 3.0 * l1 * t * s);
+        let f_az = -m * w2 / 6.0 * s * (3.0 * l1 + l2 * c) + 0.5 * m * g * c;
+        assert_close_slice(&in_c(w.force), &[-mu * f_b, f_ay, f_az], 64.0 * EPS);
+        // the pin couple: M_az = μ l₂ f_b, the other components zero
+        assert_close_slice(&in_c(w.moment), &[0.0, 0.0, mu * l2 * f_b], 64.0 * EPS);
+        // the ground's force in F_C: friction f_f = μ f_b along î_C
+        let f_ground = ground(f_b)[1].force;
+        assert_close(in_c(f_ground)[0], mu * f_b, 64.0 * EPS);
+    }
 }
