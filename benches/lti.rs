@@ -54,6 +54,9 @@ fn benches(c: &mut Criterion) {
     c.bench_function("lti/freqresp tf incl. roots (n=10, 1000 w)", |b| {
         b.iter(|| black_box(&g).to_zpk().and_then(|z| z.freqresp(&w)))
     });
+    c.bench_function("lti/freqresp tf (guarded Horner in -w^2, n=10, 1000 w)", |b| {
+        b.iter(|| black_box(&g).freqresp(&w))
+    });
     c.bench_function("lti/bode tf (dB + continuous phase, incl. roots)", |b| {
         b.iter(|| black_box(&g).bode(&w))
     });

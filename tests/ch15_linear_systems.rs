@@ -76,6 +76,44 @@ fn problem_15_20_2_eigenvalues_trace_determinant() {
 }
 
 #[test]
+fn eq_15_3_5_eigenvalues_of_matrices_that_stall_plain_qr() {
+    // The cyclic permutation matrices are fixed points of the unshifted and of the plain
+    // Francis double-shift QR step: only the exceptional shifts move them. Their eigenvalues are
+    // the n-th roots of unity.
+    for n in [3usize, 4, 5, 8, 13] {
+        let a = DMatrix::from_fn(n, n, |i, j| if i == (j + 1) % n { 1.0 } else { 0.0 });
+        let ev = linalg::eigenvalues(&a).unwrap();
+        assert_eq!(ev.len(), n);
+        for z in &ev {
+            assert_close(z.norm(), 1.0, 64.0 * EPS);
+            // z is an n-th root of unity: zⁿ = 1
+            assert!((z.powu(n as u32) - Complex64::new(1.0, 0.0)).norm() <= 1e3 * EPS, "n = {n}: {z}");
+        }
+    }
+    // a Jordan block with a tiny corner: eigenvalues on a circle of radius δ^{1/n} (δ = 1e-12,
+    // n = 6: radius 1e-2) — the textbook example of eigenvalue sensitivity.
+    let n = 6;
+    let a = DMatrix::from_fn(n, n, |i, j| {
+        if j == i + 1 {
+            1.0
+        } else if i == n - 1 && j == 0 {
+            1e-12
+        } else {
+            0.0
+        }
+    });
+    for z in linalg::eigenvalues(&a).unwrap() {
+        assert_close(z.norm(), 1e-2, 1e-12);
+    }
+    // zero, identity and a 1×1 matrix
+    assert!(linalg::eigenvalues(&DMatrix::zeros(4, 4)).unwrap().iter().all(|z| z.norm() == 0.0));
+    assert!(
+        linalg::eigenvalues(&DMatrix::identity(5, 5)).unwrap().iter().all(|z| *z == Complex64::new(1.0, 0.0))
+    );
+    assert_eq!(linalg::eigenvalues(&dmatrix![-3.5]).unwrap(), vec![Complex64::new(-3.5, 0.0)]);
+}
+
+#[test]
 fn problem_15_20_5_roots_equal_companion_eigenvalues() {
     // 15.20.5: p = s³ + 3s² + 5s − 2 has roots −1.6641 ± 1.8230j and 0.3283.
     let r = sorted(poly(&[1.0, 3.0, 5.0, -2.0]).roots().unwrap());
@@ -806,6 +844,38 @@ mod prop {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(96))]
+
+        /// Eigenvalues (15.3.5) of random matrices, small and above the 64×64 switch to the
+        /// library solver: they sum to the trace, and each is an eigenvalue to backward-stable
+        /// accuracy (the smallest singular value of A − λI is tiny relative to ‖A‖).
+        #[test]
+        fn eigenvalues_sum_to_trace_and_are_eigenvalues(
+            n in prop_oneof![1usize..12, Just(20usize), Just(70usize)],
+            seed in any::<u64>(),
+            scale in prop_oneof![Just(1.0f64), Just(1e-8), Just(1e8)],
+        ) {
+            let mut x = seed | 1;
+            let mut next = || {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                (x >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+            };
+            let a = DMatrix::from_fn(n, n, |_, _| next() * scale);
+            let ev = linalg::eigenvalues(&a).unwrap();
+            prop_assert_eq!(ev.len(), n);
+            let norm = a.norm();
+            let sum: Complex64 = ev.iter().sum();
+            prop_assert!((sum.re - a.trace()).abs() <= 1e3 * EPS * norm * n as f64);
+            prop_assert!(sum.im.abs() <= 1e3 * EPS * norm * n as f64);
+            if n <= 20 {
+                for l in &ev {
+                    let m = a.map(|v| Complex64::new(v, 0.0)) - DMatrix::<Complex64>::identity(n, n) * *l;
+                    let smin = m.singular_values().min();
+                    prop_assert!(smin <= 1e4 * EPS * norm, "n = {}, λ = {}, σ_min = {:e}", n, l, smin);
+                }
+            }
+        }
 
         /// The Routh count equals the number of ORHP roots (§15.17).
         #[test]

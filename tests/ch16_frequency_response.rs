@@ -391,6 +391,33 @@ fn frequency_tools_reject_bad_input() {
 
 // ---------------------------------------------------------------- properties
 
+#[test]
+fn eq_16_2_4_guarded_coefficient_evaluation_matches_factored_form() {
+    // G(jω) from the coefficients (even/odd Horner in −ω² with a rounding bound) equals the
+    // zero–pole–gain evaluation; where the bound is too loose it falls back to that form:
+    // a lightly damped pole (ζ = 1e-7) sampled at resonance, a zero on the axis (G = 0
+    // exactly), and ω so large that the powers overflow.
+    let wn: f64 = 3.0;
+    let zeta = 1e-7;
+    let g = tf(&[1.0, 0.0, 4.0], &[1.0, 2.0 * zeta * wn, wn * wn, 0.5]);
+    let w: Vec<f64> = [0.0, 0.5, 2.0, wn, 1e2, 1e40, 1e200].to_vec();
+    let fast = g.freqresp(&w).unwrap();
+    let slow = g.to_zpk().unwrap().freqresp(&w).unwrap();
+    for (a, b) in fast.iter().zip(&slow) {
+        assert!((a - b).norm() <= 1e-12 * b.norm().max(1e-300), "{a} vs {b}");
+    }
+    assert_eq!(fast[2], Complex64::new(0.0, 0.0)); // the zero at s = ±2j
+    assert!(fast[6].norm() < 1e-300 && fast[6].norm().is_finite());
+    // well-conditioned points take the direct path and agree with the factored form to ~ε
+    let g = tf(&[2.0, 1.0], &[1.0, 3.0, 5.0, 1.0]).with_delay(0.3).unwrap();
+    let w = logspace(-2.0, 3.0, 200).unwrap();
+    let (fast, slow) = (g.freqresp(&w).unwrap(), g.to_zpk().unwrap().freqresp(&w).unwrap());
+    for (a, b) in fast.iter().zip(&slow) {
+        assert!((a - b).norm() <= 64.0 * EPS * b.norm(), "{a} vs {b}");
+    }
+    assert!(g.freqresp(&[-1.0]).is_err());
+}
+
 mod prop {
     use super::*;
     use proptest::prelude::*;
@@ -433,6 +460,28 @@ mod prop {
                 }
                 prop_assert!((b.phase_deg[i] - want).abs() <= 1e-9 * want.abs().max(1.0), "ω = {}: {} vs {}", wi, b.phase_deg[i], want);
                 prop_assert!((b.response[i] - g).norm() <= 1e-12 * g.norm().max(1.0));
+            }
+        }
+
+        /// The guarded coefficient evaluation G(jω) (16.2.4) agrees with the zero–pole–gain one
+        /// to 1e-10 relative (its guarantee) on random systems, lightly damped ones included.
+        #[test]
+        fn tf_freqresp_agrees_with_factored_form(
+            zeros in proptest::collection::vec(root(), 0..3),
+            poles in proptest::collection::vec(root(), 1..5),
+            k in prop_oneof![-3.0..-0.1f64, 0.1..3.0f64],
+        ) {
+            let zeros: Vec<Complex64> = zeros.into_iter().flatten().collect();
+            let poles: Vec<Complex64> = poles.into_iter().flatten().collect();
+            let g = Zpk::new(zeros, poles, k).unwrap().to_tf().unwrap();
+            let w = logspace(-3.0, 3.0, 301).unwrap();
+            let fast = g.freqresp(&w).unwrap();
+            let slow = g.to_zpk().unwrap().freqresp(&w).unwrap();
+            for (a, b) in fast.iter().zip(&slow) {
+                if !b.norm().is_finite() {
+                    continue; // a pole on the axis at this ω
+                }
+                prop_assert!((a - b).norm() <= 2e-10 * b.norm() + 1e-300, "{} vs {}", a, b);
             }
         }
 

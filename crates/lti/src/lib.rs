@@ -9,6 +9,7 @@
 mod error;
 mod expm;
 mod freq;
+mod hqr;
 mod laplace;
 pub mod linalg;
 mod margins;
@@ -25,7 +26,7 @@ mod zpk;
 
 pub use error::LtiError;
 pub use expm::expm;
-pub use freq::{FrequencyResponse, Nyquist, logspace};
+pub use freq::{FREQRESP_RTOL, FrequencyResponse, Nyquist, logspace};
 pub use laplace::{
     CLUSTER_RTOL, FinalValue, Illegal, PartialFractions, PfTerm, RealTerm, TimeFunction, cluster_roots,
     final_value,

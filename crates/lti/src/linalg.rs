@@ -1,4 +1,5 @@
-//! Dense kernels on nalgebra matrices, delegating eigenvalues and SVD to faer.
+//! Dense kernels on nalgebra matrices: eigenvalues by the in-crate Hessenberg QR for small
+//! matrices (faer above 64×64), SVD by faer.
 //!
 //! Book: §15.3 (eigenvalues), §15.20.2 (`eig`).
 
@@ -80,8 +81,38 @@ pub fn eigenvalues(a: &DMatrix<f64>) -> Result<Vec<Complex64>, LtiError> {
     if a.nrows() == 0 {
         return Ok(Vec::new());
     }
+    eigenvalues_balanced(a, false)
+}
+
+/// Largest n handled by the in-crate Hessenberg QR ([`crate::hqr`]); larger matrices go to
+/// faer's blocked eigensolver.
+const SMALL: usize = 64;
+
+/// Eigenvalues of an upper Hessenberg matrix (a companion matrix (15.7.3)): as
+/// [`eigenvalues`], without the reduction to Hessenberg form. The caller guarantees the shape.
+pub(crate) fn eigenvalues_hessenberg(a: &DMatrix<f64>) -> Result<Vec<Complex64>, LtiError> {
+    eigenvalues_balanced(a, true)
+}
+
+fn eigenvalues_balanced(a: &DMatrix<f64>, hessenberg: bool) -> Result<Vec<Complex64>, LtiError> {
+    // balancing is a diagonal similarity: it keeps the Hessenberg shape
     let b = balance(a);
-    let ev = to_faer(&b).eigenvalues().map_err(|_| LtiError::NoConvergence { what: "eigenvalues" })?;
+    let n = b.nrows();
+    let small = (n <= SMALL)
+        .then(|| {
+            let mut w = crate::hqr::Work::from_fn(n, |i, j| b[(i, j)]);
+            if !hessenberg {
+                w.hessenberg();
+            }
+            w.hqr()
+        })
+        .flatten()
+        .filter(|ev| ev.iter().all(|z| z.re.is_finite() && z.im.is_finite()));
+    let ev = match small {
+        Some(ev) => ev,
+        // larger, or the 30-iteration limit was hit: faer's blocked multishift QR
+        None => to_faer(&b).eigenvalues().map_err(|_| LtiError::NoConvergence { what: "eigenvalues" })?,
+    };
     let scale = a.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
     Ok(tidy_conjugates(ev, scale))
 }

@@ -227,9 +227,14 @@ impl Polynomial {
                 0.0
             }
         });
-        let raw = linalg::eigenvalues(&comp)?;
-        for r in raw {
-            roots.push(core.polish(r));
+        let raw = linalg::eigenvalues_hessenberg(&comp)?;
+        // Newton polishing helps simple roots; inside a cluster (a multiple root split by
+        // roundoff into ~ε^{1/k}) it moves the members unevenly and spoils their mean, which
+        // the QR iteration gets right to O(ε) (the trace), so clusters are left as computed.
+        for (i, &r) in raw.iter().enumerate() {
+            let near =
+                raw.iter().enumerate().any(|(j, &o)| j != i && (o - r).norm() <= 1e-3 * r.norm().max(1.0));
+            roots.push(if near { r } else { core.polish(r) });
         }
         Ok(linalg::tidy_conjugates(roots, core.norm_inf() / c0.abs()))
     }
