@@ -80,19 +80,27 @@ impl Work {
 
     /// Eigenvalues of the (upper Hessenberg) matrix by the Francis double-shift QR iteration;
     /// `None` if some eigenvalue needs more than 30 iterations.
-    pub(crate) fn hqr(mut self) -> Option<Vec<Complex64>> {
+    pub(crate) fn hqr(self) -> Option<Vec<Complex64>> {
         let n = self.n;
         let mut out = vec![Complex64::new(0.0, 0.0); n];
         if n == 0 {
             return Some(out);
         }
-        // 1-based indices below, as in the published algorithm: A(i, j) = a[(i−1)n + j−1]
-        let a = |w: &Self, i: isize, j: isize| w.at(i as usize - 1, j as usize - 1);
-        let set = |w: &mut Self, i: isize, j: isize, v: f64| w.set(i as usize - 1, j as usize - 1, v);
+        // 1-based indices below, as in the published algorithm: A(i, j) = h[i·(n + 1) + j]
+        let n1 = n + 1;
+        let mut h = vec![0.0; n1 * n1];
+        for i in 0..n {
+            h[(i + 1) * n1 + 1..(i + 1) * n1 + 1 + n].copy_from_slice(&self.a[i * n..(i + 1) * n]);
+        }
+        macro_rules! a {
+            ($i:expr, $j:expr) => {
+                h[($i) as usize * n1 + ($j) as usize]
+            };
+        }
         let mut anorm = 0.0;
         for i in 1..=n as isize {
             for j in (i - 1).max(1)..=n as isize {
-                anorm += a(&self, i, j).abs();
+                anorm += a!(i, j).abs();
             }
         }
         let mut nn = n as isize;
@@ -105,24 +113,24 @@ impl Work {
                 // a single small subdiagonal element splits the matrix
                 let mut l = nn;
                 while l >= 2 {
-                    let mut s = a(&self, l - 1, l - 1).abs() + a(&self, l, l).abs();
+                    let mut s = a!(l - 1, l - 1).abs() + a!(l, l).abs();
                     if s == 0.0 {
                         s = anorm;
                     }
-                    if a(&self, l, l - 1).abs() + s == s {
-                        set(&mut self, l, l - 1, 0.0);
+                    if a!(l, l - 1).abs() + s == s {
+                        a!(l, l - 1) = 0.0;
                         break;
                     }
                     l -= 1;
                 }
-                let mut x = a(&self, nn, nn);
+                let mut x = a!(nn, nn);
                 if l == nn {
                     out[nn as usize - 1] = Complex64::new(x + t, 0.0);
                     nn -= 1;
                     break;
                 }
-                let mut y = a(&self, nn - 1, nn - 1);
-                let mut w = a(&self, nn, nn - 1) * a(&self, nn - 1, nn);
+                let mut y = a!(nn - 1, nn - 1);
+                let mut w = a!(nn, nn - 1) * a!(nn - 1, nn);
                 if l == nn - 1 {
                     // a 2×2 block: two real roots or a conjugate pair
                     p = 0.5 * (y - x);
@@ -148,10 +156,10 @@ impl Work {
                     // exceptional shift
                     t += x;
                     for i in 1..=nn {
-                        let v = a(&self, i, i) - x;
-                        set(&mut self, i, i, v);
+                        let v = a!(i, i) - x;
+                        a!(i, i) = v;
                     }
-                    let s = a(&self, nn, nn - 1).abs() + a(&self, nn - 1, nn - 2).abs();
+                    let s = a!(nn, nn - 1).abs() + a!(nn - 1, nn - 2).abs();
                     x = 0.75 * s;
                     y = x;
                     w = -0.4375 * s * s;
@@ -161,12 +169,12 @@ impl Work {
                 let mut m = nn - 2;
                 let mut z;
                 loop {
-                    z = a(&self, m, m);
+                    z = a!(m, m);
                     let r0 = x - z;
                     let s0 = y - z;
-                    p = (r0 * s0 - w) / a(&self, m + 1, m) + a(&self, m, m + 1);
-                    q = a(&self, m + 1, m + 1) - z - r0 - s0;
-                    r = a(&self, m + 2, m + 1);
+                    p = (r0 * s0 - w) / a!(m + 1, m) + a!(m, m + 1);
+                    q = a!(m + 1, m + 1) - z - r0 - s0;
+                    r = a!(m + 2, m + 1);
                     let s = p.abs() + q.abs() + r.abs();
                     p /= s;
                     q /= s;
@@ -174,26 +182,26 @@ impl Work {
                     if m == l {
                         break;
                     }
-                    let u = a(&self, m, m - 1).abs() * (q.abs() + r.abs());
-                    let v = p.abs() * (a(&self, m - 1, m - 1).abs() + z.abs() + a(&self, m + 1, m + 1).abs());
+                    let u = a!(m, m - 1).abs() * (q.abs() + r.abs());
+                    let v = p.abs() * (a!(m - 1, m - 1).abs() + z.abs() + a!(m + 1, m + 1).abs());
                     if u + v == v {
                         break;
                     }
                     m -= 1;
                 }
                 for i in m + 2..=nn {
-                    set(&mut self, i, i - 2, 0.0);
+                    a!(i, i - 2) = 0.0;
                     if i != m + 2 {
-                        set(&mut self, i, i - 3, 0.0);
+                        a!(i, i - 3) = 0.0;
                     }
                 }
                 // double QR step on rows l..nn and columns m..nn
                 let mut k = m;
                 while k < nn {
                     if k != m {
-                        p = a(&self, k, k - 1);
-                        q = a(&self, k + 1, k - 1);
-                        r = if k != nn - 1 { a(&self, k + 2, k - 1) } else { 0.0 };
+                        p = a!(k, k - 1);
+                        q = a!(k + 1, k - 1);
+                        r = if k != nn - 1 { a!(k + 2, k - 1) } else { 0.0 };
                         x = p.abs() + q.abs() + r.abs();
                         if x != 0.0 {
                             p /= x;
@@ -205,11 +213,11 @@ impl Work {
                     if s != 0.0 {
                         if k == m {
                             if l != m {
-                                let v = -a(&self, k, k - 1);
-                                set(&mut self, k, k - 1, v);
+                                let v = -a!(k, k - 1);
+                                a!(k, k - 1) = v;
                             }
                         } else {
-                            set(&mut self, k, k - 1, -s * x);
+                            a!(k, k - 1) = -s * x;
                         }
                         p += s;
                         x = p / s;
@@ -218,29 +226,29 @@ impl Work {
                         q /= p;
                         r /= p;
                         for j in k..=nn {
-                            let mut pp = a(&self, k, j) + q * a(&self, k + 1, j);
+                            let mut pp = a!(k, j) + q * a!(k + 1, j);
                             if k != nn - 1 {
-                                pp += r * a(&self, k + 2, j);
-                                let v = a(&self, k + 2, j) - pp * z;
-                                set(&mut self, k + 2, j, v);
+                                pp += r * a!(k + 2, j);
+                                let v = a!(k + 2, j) - pp * z;
+                                a!(k + 2, j) = v;
                             }
-                            let v = a(&self, k + 1, j) - pp * y;
-                            set(&mut self, k + 1, j, v);
-                            let v = a(&self, k, j) - pp * x;
-                            set(&mut self, k, j, v);
+                            let v = a!(k + 1, j) - pp * y;
+                            a!(k + 1, j) = v;
+                            let v = a!(k, j) - pp * x;
+                            a!(k, j) = v;
                         }
                         let mmin = if nn < k + 3 { nn } else { k + 3 };
                         for i in l..=mmin {
-                            let mut pp = x * a(&self, i, k) + y * a(&self, i, k + 1);
+                            let mut pp = x * a!(i, k) + y * a!(i, k + 1);
                             if k != nn - 1 {
-                                pp += z * a(&self, i, k + 2);
-                                let v = a(&self, i, k + 2) - pp * r;
-                                set(&mut self, i, k + 2, v);
+                                pp += z * a!(i, k + 2);
+                                let v = a!(i, k + 2) - pp * r;
+                                a!(i, k + 2) = v;
                             }
-                            let v = a(&self, i, k + 1) - pp * q;
-                            set(&mut self, i, k + 1, v);
-                            let v = a(&self, i, k) - pp;
-                            set(&mut self, i, k, v);
+                            let v = a!(i, k + 1) - pp * q;
+                            a!(i, k + 1) = v;
+                            let v = a!(i, k) - pp;
+                            a!(i, k) = v;
                         }
                     }
                     k += 1;

@@ -141,7 +141,7 @@ pub(crate) fn tidy_conjugates(mut v: Vec<Complex64>, scale: f64) -> Vec<Complex6
         let target = v[i].conj();
         let partner = (0..v.len())
             .filter(|&j| !used[j] && v[j].im != 0.0 && v[j].im.signum() != v[i].im.signum())
-            .min_by(|&j, &k| (v[j] - target).norm().total_cmp(&(v[k] - target).norm()));
+            .min_by(|&j, &k| (v[j] - target).norm_sqr().total_cmp(&(v[k] - target).norm_sqr()));
         match partner {
             Some(j) => {
                 used[j] = true;

@@ -232,8 +232,10 @@ impl Polynomial {
         // roundoff into ~ε^{1/k}) it moves the members unevenly and spoils their mean, which
         // the QR iteration gets right to O(ε) (the trace), so clusters are left as computed.
         for (i, &r) in raw.iter().enumerate() {
-            let near =
-                raw.iter().enumerate().any(|(j, &o)| j != i && (o - r).norm() <= 1e-3 * r.norm().max(1.0));
+            let near = raw
+                .iter()
+                .enumerate()
+                .any(|(j, &o)| j != i && (o - r).norm_sqr() <= 1e-6 * r.norm_sqr().max(1.0));
             roots.push(if near { r } else { core.polish(r) });
         }
         Ok(linalg::tidy_conjugates(roots, core.norm_inf() / c0.abs()))
@@ -242,17 +244,16 @@ impl Polynomial {
     /// A few Newton steps on p from `r`, kept only while |p| decreases.
     fn polish(&self, r: Complex64) -> Complex64 {
         let mut best = r;
-        let (mut pb, _) = self.eval_with_derivative(r);
+        let (mut pb, mut db) = self.eval_with_derivative(r);
         for _ in 0..4 {
-            let (p, dp) = self.eval_with_derivative(best);
-            if dp.norm() == 0.0 || p.norm() == 0.0 {
+            if db.norm_sqr() == 0.0 || pb.norm_sqr() == 0.0 {
                 break;
             }
-            let next = best - p / dp;
-            let (pn, _) = self.eval_with_derivative(next);
-            if pn.norm() < pb.norm() {
-                best = next;
-                pb = pn;
+            let next = best - pb / db;
+            let (pn, dn) = self.eval_with_derivative(next);
+            // |·|² orders like |·| without hypot (an under- or overflowed square stops early)
+            if pn.norm_sqr() < pb.norm_sqr() {
+                (best, pb, db) = (next, pn, dn);
             } else {
                 break;
             }

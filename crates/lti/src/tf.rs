@@ -22,6 +22,18 @@ pub struct TransferFunction {
     num: Polynomial,
     den: Polynomial,
     delay: f64,
+    roots: RootCache,
+}
+
+/// Zeros and poles, computed once per transfer function on first use (they depend on N and D
+/// only, never on the delay); ignored by `==`.
+#[derive(Debug, Clone, Default)]
+struct RootCache(std::sync::OnceLock<(Vec<Complex64>, Vec<Complex64>)>);
+
+impl PartialEq for RootCache {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl TransferFunction {
@@ -41,7 +53,7 @@ impl TransferFunction {
         if den.is_zero() {
             return Err(LtiError::ZeroDenominator);
         }
-        Ok(Self { num, den, delay: 0.0 })
+        Ok(Self { num, den, delay: 0.0, roots: RootCache::default() })
     }
 
     /// The same transfer function times e^{−τs}.
@@ -119,7 +131,17 @@ impl TransferFunction {
     /// # Errors
     /// [`LtiError::NoConvergence`] if the eigenvalue iteration fails.
     pub fn poles(&self) -> Result<Vec<Complex64>, LtiError> {
-        self.den.roots()
+        Ok(self.roots()?.1.clone())
+    }
+
+    /// (zeros, poles), from the cache or computed (and cached) now.
+    fn roots(&self) -> Result<&(Vec<Complex64>, Vec<Complex64>), LtiError> {
+        if let Some(r) = self.roots.0.get() {
+            return Ok(r);
+        }
+        let zeros = if self.num.is_zero() { Vec::new() } else { self.num.roots()? };
+        let poles = self.den.roots()?;
+        Ok(self.roots.0.get_or_init(|| (zeros, poles)))
     }
 
     /// Zeros: roots of N (Def 15.11.2); none for the zero transfer function.
@@ -127,7 +149,7 @@ impl TransferFunction {
     /// # Errors
     /// [`LtiError::NoConvergence`] if the eigenvalue iteration fails.
     pub fn zeros(&self) -> Result<Vec<Complex64>, LtiError> {
-        if self.num.is_zero() { Ok(Vec::new()) } else { self.num.roots() }
+        Ok(self.roots()?.0.clone())
     }
 
     /// G(s) at a complex point (Horner on N and D, times e^{−τs}). For frequency responses
@@ -157,17 +179,27 @@ impl TransferFunction {
 
     /// −G.
     pub fn neg(&self) -> Self {
-        Self { num: self.num.scale(-1.0), den: self.den.clone(), delay: self.delay }
+        Self {
+            num: self.num.scale(-1.0),
+            den: self.den.clone(),
+            delay: self.delay,
+            roots: RootCache::default(),
+        }
     }
 
     /// c·G.
     pub fn scale(&self, c: f64) -> Self {
-        Self { num: self.num.scale(c), den: self.den.clone(), delay: self.delay }
+        Self { num: self.num.scale(c), den: self.den.clone(), delay: self.delay, roots: RootCache::default() }
     }
 
     /// Series connection G₂G₁ (delays add).
     pub fn series(&self, g2: &Self) -> Self {
-        Self { num: self.num.mul(&g2.num), den: self.den.mul(&g2.den), delay: self.delay + g2.delay }
+        Self {
+            num: self.num.mul(&g2.num),
+            den: self.den.mul(&g2.den),
+            delay: self.delay + g2.delay,
+            roots: RootCache::default(),
+        }
     }
 
     /// Parallel connection G₁ + G₂.
@@ -179,7 +211,7 @@ impl TransferFunction {
             return Err(LtiError::Delay { what: "parallel connection", delay: self.delay.max(g2.delay) });
         }
         let num = self.num.mul(&g2.den).add(&g2.num.mul(&self.den));
-        Ok(Self { num, den: self.den.mul(&g2.den), delay: self.delay })
+        Ok(Self { num, den: self.den.mul(&g2.den), delay: self.delay, roots: RootCache::default() })
     }
 
     /// Negative feedback G/(1 + GH) (H in the return path); with H = 1 this is the closed
@@ -223,7 +255,7 @@ impl TransferFunction {
         }
         let num = self.num.scale_variable(1.0 / a);
         let den = self.den.scale_variable(1.0 / a);
-        Ok(Self { num, den, delay: self.delay * a })
+        Ok(Self { num, den, delay: self.delay * a, roots: RootCache::default() })
     }
 
     /// Cancels zero–pole pairs closer than `tol·max(1, |p|)` (Matlab `minreal`); the result is
@@ -244,6 +276,7 @@ impl TransferFunction {
                 num: Polynomial::constant(0.0),
                 den: Polynomial::constant(1.0),
                 delay: self.delay,
+                roots: RootCache::default(),
             });
         }
         let zpk = self.to_zpk()?.minreal(tol);
