@@ -6,8 +6,8 @@
 
 use crate::error::{LtiError, check_finite};
 use crate::linalg::{from_faer, to_faer};
-use faer::Mat;
 use faer::linalg::solvers::Solve;
+use faer::{Accum, Mat};
 use nalgebra::DMatrix;
 
 // Padé coefficients b_k of r_m (Higham 2005, Table 2.3 and (2.1)).
@@ -55,6 +55,40 @@ fn norm1(a: &Mat<f64>) -> f64 {
     (0..a.ncols()).map(|j| (0..a.nrows()).map(|i| a[(i, j)].abs()).sum::<f64>()).fold(0.0, f64::max)
 }
 
+/// dst ← A·B (`Replace`) or dst ← dst + A·B (`Add`), with faer's global parallelism (as its `*`).
+fn mul_into(dst: &mut Mat<f64>, acc: Accum, a: &Mat<f64>, b: &Mat<f64>) {
+    faer::linalg::matmul::matmul(
+        dst.as_mut(),
+        acc,
+        a.as_ref(),
+        b.as_ref(),
+        1.0,
+        faer::get_global_parallelism(),
+    );
+}
+
+/// m ← c·m.
+fn scale_in_place(m: &mut Mat<f64>, c: f64) {
+    for j in 0..m.ncols() {
+        for x in m.col_as_slice_mut(j) {
+            *x *= c;
+        }
+    }
+}
+
+/// dst ← Σ cₖMₖ + d·I (column slices of an owned faer matrix are contiguous).
+fn combine(dst: &mut Mat<f64>, terms: [(f64, &Mat<f64>); 3], d: f64) {
+    let [(c0, m0), (c1, m1), (c2, m2)] = terms;
+    for j in 0..dst.ncols() {
+        let (x0, x1, x2) = (m0.col_as_slice(j), m1.col_as_slice(j), m2.col_as_slice(j));
+        let out = dst.col_as_slice_mut(j);
+        for (((o, a), b), c) in out.iter_mut().zip(x0).zip(x1).zip(x2) {
+            *o = c0 * a + c1 * b + c2 * c;
+        }
+        out[j] += d;
+    }
+}
+
 /// e^A for a faer matrix (internal: no checks).
 pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
     let n = a.nrows();
@@ -81,34 +115,47 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
         }
         (a * &uo, ve, 0)
     } else {
-        // Scale so that ‖A/2ˢ‖₁ ≤ θ₁₃, then r₁₃ (Higham 2005, Algorithm 2.3).
+        // Scale so that ‖A/2ˢ‖₁ ≤ θ₁₃, then r₁₃ (Higham 2005, Algorithm 2.3), with six
+        // n×n buffers in all (allocation churn, not arithmetic, dominated at n = 100)
         let s = (nrm / THETA13).log2().ceil().max(0.0) as i32;
         let f = 0.5f64.powi(s);
-        let a1 = faer::Scale(f) * a;
-        let a2 = faer::Scale(f * f) * &a2;
-        let a4 = &a2 * &a2;
-        let a6 = &a4 * &a2;
+        let mut a1 = a.clone();
+        scale_in_place(&mut a1, f);
+        let mut a2 = a2;
+        scale_in_place(&mut a2, f * f);
+        let mut a4 = Mat::<f64>::zeros(n, n);
+        mul_into(&mut a4, Accum::Replace, &a2, &a2);
+        let mut a6 = Mat::<f64>::zeros(n, n);
+        mul_into(&mut a6, Accum::Replace, &a4, &a2);
         let b = &B13;
-        let inner_u = faer::Scale(b[13]) * &a6 + faer::Scale(b[11]) * &a4 + faer::Scale(b[9]) * &a2;
-        let u = &a1
-            * (&a6 * inner_u
-                + faer::Scale(b[7]) * &a6
-                + faer::Scale(b[5]) * &a4
-                + faer::Scale(b[3]) * &a2
-                + faer::Scale(b[1]) * &id);
-        let inner_v = faer::Scale(b[12]) * &a6 + faer::Scale(b[10]) * &a4 + faer::Scale(b[8]) * &a2;
-        let v = &a6 * inner_v
-            + faer::Scale(b[6]) * &a6
-            + faer::Scale(b[4]) * &a4
-            + faer::Scale(b[2]) * &a2
-            + faer::Scale(b[0]) * &id;
+        // U = A[A6(b13A6 + b11A4 + b9A2) + b7A6 + b5A4 + b3A2 + b1I]
+        let mut w = Mat::<f64>::zeros(n, n);
+        combine(&mut w, [(b[13], &a6), (b[11], &a4), (b[9], &a2)], 0.0);
+        let mut t = Mat::<f64>::zeros(n, n);
+        combine(&mut t, [(b[7], &a6), (b[5], &a4), (b[3], &a2)], b[1]);
+        mul_into(&mut t, Accum::Add, &a6, &w);
+        let mut u = Mat::<f64>::zeros(n, n);
+        mul_into(&mut u, Accum::Replace, &a1, &t);
+        // V = A6(b12A6 + b10A4 + b8A2) + b6A6 + b4A4 + b2A2 + b0I
+        combine(&mut w, [(b[12], &a6), (b[10], &a4), (b[8], &a2)], 0.0);
+        let mut v = t;
+        combine(&mut v, [(b[6], &a6), (b[4], &a4), (b[2], &a2)], b[0]);
+        mul_into(&mut v, Accum::Add, &a6, &w);
         (u, v, s)
     };
-    let p = &v + &u;
-    let q = &v - &u;
+    // p = v + u and q = v − u in place of v and u (no new matrices)
+    let (mut p, mut q) = (v, u);
+    for j in 0..n {
+        for (pij, qij) in p.col_as_slice_mut(j).iter_mut().zip(q.col_as_slice_mut(j)) {
+            (*pij, *qij) = (*pij + *qij, *pij - *qij);
+        }
+    }
     let mut r = q.partial_piv_lu().solve(&p);
+    // s squarings between two buffers
+    let mut tmp = Mat::<f64>::zeros(n, n);
     for _ in 0..s {
-        r = &r * &r;
+        mul_into(&mut tmp, Accum::Replace, &r, &r);
+        std::mem::swap(&mut r, &mut tmp);
     }
     r
 }
