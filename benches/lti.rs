@@ -60,6 +60,9 @@ fn benches(c: &mut Criterion) {
     c.bench_function("lti/bode tf first call (roots + dB + continuous phase)", |b| {
         b.iter(|| black_box(fresh()).bode(&w))
     });
+    c.bench_function("lti/freqresp ss (ss→tf, G(jω), n=10, 1000 w)", |b| {
+        b.iter(|| black_box(&sys).to_tf(0, 0).and_then(|g| g.freqresp(&w)))
+    });
     c.bench_function("lti/bode ss (ss→tf→zpk, dB + phase)", |b| {
         b.iter(|| black_box(&sys).bode(0, 0, &w))
     });

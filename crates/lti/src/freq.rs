@@ -56,7 +56,14 @@ impl Zpk {
     pub fn bode(&self, omega: &[f64]) -> Result<FrequencyResponse, LtiError> {
         check_omega(omega)?;
         let (response, phase) = crate::sweep::sweep(self, omega, true);
-        let magnitude_db = response.iter().map(|g| 20.0 * g.norm().log10()).collect();
+        // 10 log₁₀|G|² skips hypot; where |G|² would under- or overflow, 20 log₁₀|G|
+        let magnitude_db = response
+            .iter()
+            .map(|g| {
+                let n2 = g.norm_sqr();
+                if n2.is_normal() { 10.0 * n2.log10() } else { 20.0 * g.norm().log10() }
+            })
+            .collect();
         let phase_deg = phase.into_iter().map(f64::to_degrees).collect();
         Ok(FrequencyResponse { omega: omega.to_vec(), response, magnitude_db, phase_deg })
     }

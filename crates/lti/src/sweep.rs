@@ -61,8 +61,13 @@ fn mul_factor(
         let a = -r.re;
         let b = omega[i] - r.im;
         let (fa, fb) = if pole {
-            // 1/(a + jb) by Smith's algorithm: no overflow of a² + b² at huge ω
-            if a.abs() >= b.abs() {
+            // 1/(a + jb) = (a − jb)/(a² + b²), one division; Smith's algorithm only where
+            // a² + b² over- or underflows (huge ω or roots)
+            let d = a * a + b * b;
+            if d.is_normal() {
+                let inv = 1.0 / d;
+                (a * inv, -b * inv)
+            } else if a.abs() >= b.abs() {
                 let (r, d) = (b / a, a + b * (b / a));
                 (1.0 / d, -r / d)
             } else {

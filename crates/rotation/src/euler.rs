@@ -162,6 +162,7 @@ impl<T: Scalar> EulerAngles<T> {
     /// 𝓡_{D/A}: 𝓡_i(α)𝓡_j(β)𝓡_k(γ) intrinsic (2.12.33), 𝓡_k(γ)𝓡_j(β)𝓡_i(α) extrinsic.
     ///
     /// Book: (2.12.33), (2.12.40).
+    #[inline]
     pub fn rotation_matrix(&self) -> Matrix3<T> {
         // The product of elementary matrices, not the quaternion route: near gimbal lock the
         // entries that carry the factor cos β (or sin β) stay relatively accurate here, while
@@ -187,6 +188,7 @@ impl<T: Scalar> EulerAngles<T> {
     /// canonical η ≥ 0.
     ///
     /// Book: §2.15, F2.15.7 (corrected order, see [`crate::compose_quaternion`]).
+    #[inline]
     pub fn quaternion(&self) -> Quaternion<T> {
         self.quaternion_raw().canonical()
     }

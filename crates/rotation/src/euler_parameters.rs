@@ -143,6 +143,7 @@ impl<T: Scalar> Quaternion<T> {
     /// erratum for 2a² + 2b² − 1.
     #[inline]
     #[doc(alias = "to_rotation_matrix")]
+    #[inline]
     pub fn rotation_matrix(&self) -> Matrix3<T> {
         let (a, b, c, d) = (self.a, self.b, self.c, self.d);
         let two = T::lit(2.0);
@@ -184,7 +185,16 @@ impl<T: Scalar> Quaternion<T> {
     ///
     /// # Errors
     /// [`RotationError::Zero`] for a zero axis, [`RotationError::NonFinite`].
+    #[inline]
     pub fn from_axis_angle(axis: &Vector3<T>, theta: T) -> Result<Self, RotationError> {
+        // A unit axis (|n̂|² within 4ε of 1, so |n̂| within 2ε) needs no normalisation: the
+        // quaternion's norm is then 1 to rounding either way.
+        let n2 = axis.norm_squared();
+        if (n2.re() - 1.0).abs() <= 4.0 * f64::EPSILON && theta.re().is_finite() {
+            let (s, c) = (theta * T::lit(0.5)).sin_cos();
+            let q = Self::from_parts(c, axis * s);
+            return Ok(if c <= T::zero() { q.canonical() } else { q });
+        }
         let n = norm3(axis);
         // One test covers every component: |n| and θ are finite exactly when all inputs are.
         if !(n.re().is_finite() && theta.re().is_finite()) {
@@ -204,6 +214,7 @@ impl<T: Scalar> Quaternion<T> {
     /// `HalfTurn` only for η = 0 (canonical axis sign there).
     ///
     /// Book: §2.11, Facts 2.11.4–5, (2.11.49); notes ch2b §3.1.
+    #[inline]
     pub fn axis_angle(&self) -> AxisAngle<T, Vector3<T>> {
         let q = self.canonical();
         let e = q.epsilon();
