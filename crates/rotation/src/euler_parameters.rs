@@ -143,7 +143,6 @@ impl<T: Scalar> Quaternion<T> {
     /// erratum for 2a² + 2b² − 1.
     #[inline]
     #[doc(alias = "to_rotation_matrix")]
-    #[inline]
     pub fn rotation_matrix(&self) -> Matrix3<T> {
         let (a, b, c, d) = (self.a, self.b, self.c, self.d);
         let two = T::lit(2.0);
