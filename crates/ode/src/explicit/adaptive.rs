@@ -182,14 +182,12 @@ impl Adaptive {
         let safe = 0.9;
 
         let mut work = Work::default();
-        let mut sol = Solution {
-            t: vec![t0],
-            y: vec![y0.clone()],
-            events: Vec::new(),
-            terminated: false,
-            work,
-            dense: Vec::new(),
-        };
+        // room for a typical run's accepted steps up front (no early reallocations)
+        let (mut ts, mut ys) = (Vec::with_capacity(256), Vec::with_capacity(256));
+        ts.push(t0);
+        ys.push(y0.clone());
+        let mut sol =
+            Solution { t: ts, y: ys, events: Vec::new(), terminated: false, work, dense: Vec::new() };
         let mut t = t0;
         let mut y = y0.clone();
         let mut k: Vec<S> = Vec::with_capacity(16);
