@@ -37,7 +37,7 @@ use std::collections::BTreeMap;
 
 use nalgebra::DVector;
 use serde::{Deserialize, Serialize};
-use vectrix_dynamics::scene::{SceneError, line_col};
+use vectrix_dynamics::scene::SceneError;
 use vectrix_lti::Complex64;
 use vectrix_ode::OdeError;
 use vectrix_ode::explicit::Adaptive;
@@ -321,15 +321,7 @@ struct Src<'a> {
 
 impl Src<'_> {
     fn err(&self, needle: &str, path: &str, message: impl Into<String>) -> SceneError {
-        let off = if needle.is_empty() { None } else { self.text.find(needle) };
-        let (line, column) = off.map_or((1, 1), |o| line_col(self.text, o));
-        SceneError::Invalid {
-            file: self.file.into(),
-            line,
-            column,
-            path: path.into(),
-            message: message.into(),
-        }
+        SceneError::invalid_at(self.text, self.file, needle, path, message)
     }
 }
 
@@ -473,10 +465,8 @@ impl FlightScene {
     /// [`SceneError::Invalid`] (bad values, unknown names, a trim that cannot be reached — the
     /// message names the condition that could not be met), each with line and column.
     pub fn from_toml(text: &str, file: &str) -> Result<Self, SceneError> {
-        let spec: FlightSceneSpec = toml::from_str(text).map_err(|e| {
-            let (line, column) = e.span().map_or((1, 1), |s| line_col(text, s.start));
-            SceneError::Parse { file: file.into(), line, column, message: e.message().trim().to_string() }
-        })?;
+        let spec: FlightSceneSpec =
+            toml::from_str(text).map_err(|e| SceneError::from_toml(&e, text, file))?;
         let src = Src { file, text };
         if !(spec.duration.is_finite() && spec.duration > 0.0) {
             return Err(src.err(

@@ -6,7 +6,6 @@
 use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
 
 use super::SceneError;
-use super::error::line_col;
 use super::spec::{Attach, EffectSpec, JointSpec, MassSpec, Profile, SceneSpec};
 use crate::multibody::{Joint, Link, Model};
 
@@ -118,15 +117,7 @@ pub(crate) struct Src<'a> {
 impl Src<'_> {
     /// An `Invalid` error located at the first occurrence of `needle` (or at 1:1).
     pub fn err(&self, needle: &str, path: impl Into<String>, message: impl Into<String>) -> SceneError {
-        let off = if needle.is_empty() { None } else { self.text.find(needle) };
-        let (line, column) = off.map_or((1, 1), |o| line_col(self.text, o));
-        SceneError::Invalid {
-            file: self.file.into(),
-            line,
-            column,
-            path: path.into(),
-            message: message.into(),
-        }
+        SceneError::invalid_at(self.text, self.file, needle, path, message)
     }
 }
 

@@ -44,11 +44,31 @@ pub enum SceneError {
     },
 }
 
-/// 1-based (line, column) of byte `offset` in `src` (columns count characters), for locating
-/// scene errors; shared with the flight layer's scene files.
-///
-/// Book: — (file format).
-pub fn line_col(src: &str, offset: usize) -> (usize, usize) {
+impl SceneError {
+    /// A [`SceneError::Parse`] from a TOML error, located in `text` (shared by every kind of
+    /// scene file: multibody here, flight in `vectrix-flight`).
+    pub fn from_toml(e: &toml::de::Error, text: &str, file: &str) -> Self {
+        let (line, column) = e.span().map_or((1, 1), |s| line_col(text, s.start));
+        Self::Parse { file: file.into(), line, column, message: e.message().trim().to_string() }
+    }
+
+    /// A [`SceneError::Invalid`] located at the first occurrence of `needle` in `text` (1:1
+    /// when it does not occur).
+    pub fn invalid_at(
+        text: &str,
+        file: &str,
+        needle: &str,
+        path: impl Into<String>,
+        message: impl Into<String>,
+    ) -> Self {
+        let off = if needle.is_empty() { None } else { text.find(needle) };
+        let (line, column) = off.map_or((1, 1), |o| line_col(text, o));
+        Self::Invalid { file: file.into(), line, column, path: path.into(), message: message.into() }
+    }
+}
+
+/// 1-based (line, column) of byte `offset` in `src` (columns count characters).
+pub(crate) fn line_col(src: &str, offset: usize) -> (usize, usize) {
     let mut offset = offset.min(src.len());
     while !src.is_char_boundary(offset) {
         offset -= 1;

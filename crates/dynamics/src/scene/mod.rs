@@ -21,7 +21,7 @@ mod rhs;
 mod run;
 pub mod spec;
 
-pub use error::{SceneError, line_col};
+pub use error::SceneError;
 pub use invariants::Invariant;
 pub use run::{Drift, Run, RunWork};
 pub use spec::SceneSpec;
@@ -109,10 +109,7 @@ impl Scene {
     /// (unknown names, joints that do not form a tree, non-finite or out-of-range numbers),
     /// both with line and column.
     pub fn from_toml(text: &str, file: &str) -> Result<Self, SceneError> {
-        let spec: SceneSpec = toml::from_str(text).map_err(|e| {
-            let (line, column) = e.span().map_or((1, 1), |s| error::line_col(text, s.start));
-            SceneError::Parse { file: file.into(), line, column, message: e.message().trim().to_string() }
-        })?;
+        let spec: SceneSpec = toml::from_str(text).map_err(|e| SceneError::from_toml(&e, text, file))?;
         Self::build(spec, &Src { file, text })
     }
 
