@@ -442,6 +442,31 @@ fn notebook_08_aircraft() {
     let w = logspace(-3.0, 2.0, 300).expect("valid range");
     let bode = control::bode("θ/δe", &[("θ/δe", &theta.bode(&w).expect("finite"))], None).expect("nonempty");
     println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{}\nEVCXR_END_CONTENT", bode.to_svg().expect("finite"));
+    // cell 6
+    use vectrix::flight::scene::FlightScene;
+    let text = r#"
+    name = "doublet"
+    duration = 10.0
+    samples = 201
+    outputs = ["alpha", "q"]
+    [aircraft]
+    model = "business_jet"
+    [trim]
+    airspeed = 675.124
+    [[inputs]]
+    control = "elevator"
+    shape = "doublet"
+    start = 1.0
+    width = 1.0
+    amplitude = 0.01
+    "#;
+    let scene = FlightScene::from_toml(text, "doublet.toml").expect("valid scene");
+    let run = scene.run().expect("finite flight");
+    for m in &run.modes {
+        println!("{:<13} λ = {:+.4} ± {:.4}j", m.name, m.re, m.im);
+    }
+    println!("α: excursion {:.2e} rad, linear model off by ≤ {:.1e}", run.max_excursion(0), run.max_linear_error(0).expect("defined"));
+    println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{}\nEVCXR_END_CONTENT", run.response_svg(1).expect("drawable"));
 }
 
 /// `docs/notebooks/09-linear-systems.ipynb`
