@@ -148,6 +148,25 @@ fn problem_7_17_5_tilted_cylinder_on_shaft() {
     assert_close(w.moment.z, tau, 64.0 * EPS);
 }
 
+/// The massless vertical shaft of P7.17.4 and P7.17.6: the root link, a pin about ẑ.
+fn massless_vertical_shaft() -> Link {
+    Link::new(
+        None,
+        Joint::Pin { axis: Vector3::z() },
+        Vector3::zeros(),
+        0.0,
+        Vector3::zeros(),
+        Matrix3::zeros(),
+    )
+}
+
+/// The zero of an affine function x ↦ f(x) (a pin torque that is affine in an unknown force),
+/// from its values at 0 and 1.
+fn zero_of_affine(f: impl Fn(f64) -> f64) -> f64 {
+    let (f0, f1) = (f(0.0), f(1.0));
+    -f0 / (f1 - f0)
+}
+
 /// P7.17.3 (§7.18): a uniform shaft (m₁, length l₁, radius r₁) and a uniform disk (m₂,
 /// thickness l₂, radius r₂) welded at distance d from the shaft's left end, the disk's normal
 /// at θ to the shaft; J_{B₃/c₃} resolved in F_A (î_A along the shaft, the disk's normal in the
@@ -224,14 +243,7 @@ fn problem_7_17_4_bar_on_spinning_shaft_held_by_cable() {
     ] {
         // massless shaft about ẑ; the bar along its link ẑ, tilted outward (toward the shaft's
         // x̂) by the pin about ŷ at a, which sits on the shaft axis
-        let shaft = Link::new(
-            None,
-            Joint::Pin { axis: Vector3::z() },
-            Vector3::zeros(),
-            0.0,
-            Vector3::zeros(),
-            Matrix3::zeros(),
-        );
+        let shaft = massless_vertical_shaft();
         let j_c = Matrix3::from_diagonal(&Vector3::new(m * l * l / 12.0, m * l * l / 12.0, 0.0));
         let bar = Link::new(
             Some(0),
@@ -252,8 +264,7 @@ fn problem_7_17_4_bar_on_spinning_shaft_held_by_cable() {
         let (q, v, vdot) = ([0.7, th], [omega, 0.0], [0.0, 0.0]);
         let id = |t: f64| model.rnea(&q, &v, &vdot, Some(&cable(t))).unwrap();
         // θ stays constant with a frictionless pin: τ_pin(T) = 0, and τ_pin is affine in T
-        let (tau0, tau1) = (id(0.0).tau[1], id(1.0).tau[1]);
-        let t = -tau0 / (tau1 - tau0);
+        let t = zero_of_affine(|t| id(t).tau[1]);
         let want_t = 0.5 * m * g * th.tan() + m * l * omega * omega * th.sin() / 3.0;
         assert_close(t, want_t, 64.0 * EPS);
 
@@ -292,14 +303,7 @@ fn problem_7_17_6_slanted_bar_sliding_on_ground() {
     ] {
         // massless shaft and arm about ẑ; the bar along its link x̂, turned by θ about ŷ at the
         // pin, so that it points along cos θ x̂ − sin θ ẑ of the shaft frame: out and down
-        let shaft = Link::new(
-            None,
-            Joint::Pin { axis: Vector3::z() },
-            Vector3::zeros(),
-            0.0,
-            Vector3::zeros(),
-            Matrix3::zeros(),
-        );
+        let shaft = massless_vertical_shaft();
         let j_c = Matrix3::from_diagonal(&Vector3::new(0.0, m * l2 * l2 / 12.0, m * l2 * l2 / 12.0));
         let bar = Link::new(
             Some(0),
@@ -323,8 +327,7 @@ fn problem_7_17_6_slanted_bar_sliding_on_ground() {
         let (q, v, vdot) = ([-0.4, th], [omega, 0.0], [0.0, 0.0]);
         let id = |f_b: f64| model.rnea(&q, &v, &vdot, Some(&ground(f_b))).unwrap();
         // θ stays constant with a frictionless pin: τ_pin(f_b) = 0, affine in f_b
-        let (tau0, tau1) = (id(0.0).tau[1], id(1.0).tau[1]);
-        let f_b = -tau0 / (tau1 - tau0);
+        let f_b = zero_of_affine(|f_b| id(f_b).tau[1]);
         let (c, s, t) = (th.cos(), th.sin(), th.tan());
         let w2 = omega * omega;
         let want_fb = m / 6.0 * (3.0 * g - w2 * (2.0 * l2 * s + 3.0 * l1 * t));
