@@ -102,7 +102,9 @@ mod prop {
             let b = r_ba.apply_frame(&a);
             let c = r_cb_a.apply_frame(&b);
             let (r_cb, r_ca) = (Rotation::between(&c, &b), Rotation::between(&c, &a));
-            assert_mat(&(r_cb * r_ba).rotation_matrix_in(&a), &r_ca.rotation_matrix_in(&a), 16.0 * EPS);
+            // six rounded steps apart (two frame rotations, two `between`, a product, a
+            // resolution), each a few ε per entry: 21ε seen over 2·10⁴ cases, 32ε allowed
+            assert_mat(&(r_cb * r_ba).rotation_matrix_in(&a), &r_ca.rotation_matrix_in(&a), 32.0 * EPS);
             let (o_cb, o_ba, o_ca) = (c.orientation_rel(&b), b.orientation_rel(&a), c.orientation_rel(&a));
             assert_mat(&compose_orientation(&o_cb, &o_ba), &o_ca, 16.0 * EPS);
             let (rm_cb, rm_ba) = (c.rotation_rel(&b), b.rotation_rel(&a));
