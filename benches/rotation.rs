@@ -188,5 +188,44 @@ fn conversions(c: &mut Criterion) {
     run(c, "nearest_rotation", "vectrix polar (SVD)", &d.mat, nearest_rotation);
 }
 
-criterion_group!(benches, compose_apply, conversions);
+/// Batched conversions, 1e6 rotations per call like scipy's batched `Rotation` (per-rotation
+/// figures: divide by 1e6, or read criterion's throughput line). The one-rotation function in a
+/// loop runs beside each batched call, on the same data.
+fn batched(c: &mut Criterion) {
+    const M: usize = 1_000_000;
+    let mut s = 0x2545_F491_4F6C_DD1Du64;
+    let quat: Vec<Quaternion> = (0..M)
+        .map(|_| {
+            let q =
+                Quaternion::new(rng(&mut s) - 0.5, rng(&mut s) - 0.5, rng(&mut s) - 0.5, rng(&mut s) - 0.5);
+            q.normalize().expect("nonzero").canonical()
+        })
+        .collect();
+    let rotvec: Vec<Vector3<f64>> = quat.iter().map(|q| q.angle_vector()).collect();
+    let mut g = c.benchmark_group("batched_1e6");
+    g.throughput(Throughput::Elements(M as u64));
+    g.sample_size(20);
+    g.bench_function("from_rotvec: Quaternion::from_angle_vectors", |b| {
+        b.iter(|| Quaternion::from_angle_vectors(black_box(&rotvec)).expect("finite"))
+    });
+    g.bench_function("from_rotvec: loop of from_angle_vector", |b| {
+        b.iter(|| black_box(&rotvec).iter().map(Quaternion::from_angle_vector).collect::<Vec<_>>())
+    });
+    for (name, seq) in [("ZYX", EulerSequence::S321), ("zxz", EulerSequence::S313.extrinsic())] {
+        g.bench_function(format!("as_euler('{name}'): EulerAngles::from_quaternions"), |b| {
+            b.iter(|| EulerAngles::from_quaternions(black_box(&quat), seq).expect("unit"))
+        });
+        g.bench_function(format!("as_euler('{name}'): loop of from_quaternion"), |b| {
+            b.iter(|| {
+                black_box(&quat)
+                    .iter()
+                    .map(|q| EulerAngles::from_quaternion(q, seq).principal())
+                    .collect::<Vec<_>>()
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, compose_apply, conversions, batched);
 criterion_main!(benches);

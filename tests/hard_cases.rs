@@ -241,3 +241,176 @@ fn matrix_log_is_relatively_accurate_at_tiny_and_moderate_angles() {
         }
     }
 }
+
+// ---- Batched conversions (SIMD) ---------------------------------------------------------
+
+/// Angle vectors for the batched exponential map: every hard angle on every axis, both signs,
+/// then angles past π (non-canonical input, the range-reduced path: up to 10⁵ rad, and 10⁶
+/// rad, which the one-rotation code takes), in a count that is not a multiple of the block.
+fn batch_angle_vectors() -> Vec<Vector3<f64>> {
+    let mut v = Vec::new();
+    for n in axes() {
+        for &th in HARD_ANGLES.iter().chain(&[0.5, 1.0, 2.0, 3.0]) {
+            v.push(n * th);
+            v.push(-n * th);
+        }
+    }
+    let canonical = v.len();
+    for n in axes() {
+        for th in [PI + 1e-12, 3.5, 2.0 * PI, 2.0 * PI - 1e-9, 7.0, 100.0, 12345.678, 1e5, 1e6] {
+            v.push(n * th);
+        }
+    }
+    // Then canonical again, so that blocks of each kind follow one another.
+    v.extend_from_within(..canonical);
+    v
+}
+
+/// The batched exponential map agrees with `from_angle_vector` element by element to a few
+/// ulps, times |Θ| past 1 (up to sign only at |Θ| = π, where both signs are canonical within
+/// rounding).
+#[test]
+fn batched_from_angle_vectors_matches_one_by_one() {
+    let thetas = batch_angle_vectors();
+    let batch = Quaternion::from_angle_vectors(&thetas).unwrap();
+    let mut into = vec![Quaternion::identity(); thetas.len()];
+    Quaternion::from_angle_vectors_into(&thetas, &mut into).unwrap();
+    assert_eq!(batch, into);
+    for (t, q) in thetas.iter().zip(&batch) {
+        let one = Quaternion::from_angle_vector(t);
+        let err = if (t.norm() - PI).abs() < 1e-15 {
+            q_err(q, &one)
+        } else {
+            (q.to_vector4() - one.to_vector4()).amax()
+        };
+        // Past |Θ| = 1 the input's own rounding limits both to ε·|Θ|/2 (h = |Θ|/2 is rounded).
+        assert!(err <= ULPS * t.norm().max(1.0), "Θ = {t:?}: batch {q:?} vs {one:?}");
+        assert!(q.eta() >= 0.0, "canonical sign at Θ = {t:?}");
+    }
+}
+
+/// Every hard rotation, every sequence: the batched Euler angles agree with
+/// `from_quaternion` to a few ulps (angles compared modulo 2π), the alternate solution too, and
+/// at gimbal lock the batch holds exactly the one-rotation `GimbalLock` value.
+#[test]
+fn batched_euler_angles_match_one_by_one() {
+    let mut qs = Vec::new();
+    for n in axes() {
+        for &th in &HARD_ANGLES {
+            qs.push(Quaternion::from_axis_angle(&n, th).unwrap());
+        }
+    }
+    for seq in all_sequences() {
+        let mut batch_qs = qs.clone();
+        let locks: &[f64] = if seq.is_symmetric() { &[0.0, PI] } else { &[FRAC_PI_2, -FRAC_PI_2] };
+        for &lock in locks {
+            for k in 2..=16 {
+                for side in [-1.0, 0.0, 1.0] {
+                    let mid = lock + side * 10f64.powi(-k);
+                    batch_qs.push(EulerAngles::new(seq, [0.7, mid, -2.3]).quaternion());
+                }
+            }
+        }
+        let batch = EulerAngles::from_quaternions(&batch_qs, seq).unwrap();
+        assert_eq!((batch.len(), batch.sequence()), (batch_qs.len(), seq));
+        let mut n_locks = 0;
+        for (i, q) in batch_qs.iter().enumerate() {
+            let one = EulerAngles::from_quaternion(q, seq);
+            let got = batch.solution(i).unwrap();
+            match (one, got) {
+                (EulerSolution::GimbalLock { .. }, _) => {
+                    n_locks += 1;
+                    assert_eq!(got, one, "{seq:?} lock at {i}");
+                    assert_eq!(batch.principal(i).unwrap(), one.principal());
+                }
+                (
+                    EulerSolution::Regular { principal: p1, alternate: a1 },
+                    EulerSolution::Regular { principal: p2, alternate: a2 },
+                ) => {
+                    for (x, y) in p1.angles.iter().zip(&p2.angles).chain(a1.angles.iter().zip(&a2.angles)) {
+                        let d = wrap_angle(x - y).abs();
+                        assert!(d <= ULPS * PI, "{seq:?} q = {q:?}: {p1:?} vs {p2:?}");
+                    }
+                    // Near the lock the round trip loses ~ε/cos β one by one too; the batch
+                    // rebuilds q no worse.
+                    let (e1, e2) = (q_err(&p1.quaternion(), q), q_err(&p2.quaternion(), q));
+                    assert!(e2 <= e1 + ULPS, "{seq:?} rebuild at {i}: {e2:e} (one by one {e1:e})");
+                }
+                _ => panic!("{seq:?} at {i}: batch {got:?} vs one {one:?}"),
+            }
+        }
+        assert_eq!(batch.gimbal_locks().len(), n_locks, "{seq:?}");
+        assert!(n_locks >= 2, "{seq:?}: the exact locks are in the set");
+        assert!(batch.gimbal_locks().windows(2).all(|w| w[0].0 < w[1].0), "ascending");
+        assert_eq!(batch.solution(batch_qs.len()), None);
+    }
+}
+
+/// Bad input to a batched conversion is an error naming the element; lengths must match.
+#[test]
+fn batched_conversions_reject_bad_input_by_index() {
+    let mut thetas = vec![Vector3::new(0.1, 0.2, 0.3); 100];
+    thetas[70].y = f64::NAN;
+    let err = Quaternion::from_angle_vectors(&thetas).unwrap_err();
+    assert!(
+        matches!(&err, RotationError::AtElement { index: 70, source }
+            if matches!(**source, RotationError::NonFinite { .. })),
+        "{err:?}"
+    );
+    assert!(err.to_string().contains("element 70"), "{err}");
+    thetas[70].y = f64::INFINITY;
+    assert!(matches!(
+        Quaternion::from_angle_vectors(&thetas),
+        Err(RotationError::AtElement { index: 70, .. })
+    ));
+    let mut short = vec![Quaternion::identity(); 99];
+    assert_eq!(
+        Quaternion::from_angle_vectors_into(&thetas, &mut short),
+        Err(RotationError::LengthMismatch { input: 100, output: 99 })
+    );
+
+    let mut qs = vec![Quaternion::identity(); 130];
+    qs[129] = Quaternion::new(1.0, 1e-6, 0.0, 0.0); // |q| − 1 = 5e-13 > ROTATION_TOL
+    let err = EulerAngles::from_quaternions(&qs, EulerSequence::S321).unwrap_err();
+    assert!(
+        matches!(&err, RotationError::AtElement { index: 129, source }
+            if matches!(**source, RotationError::NotUnit { .. })),
+        "{err:?}"
+    );
+    qs[129] = Quaternion::identity();
+    qs[5].c = f64::NAN;
+    assert!(matches!(
+        EulerAngles::from_quaternions(&qs, EulerSequence::S313),
+        Err(RotationError::AtElement { index: 5, .. })
+    ));
+    // Empty input is an empty result.
+    assert!(Quaternion::from_angle_vectors(&[]).unwrap().is_empty());
+    assert!(EulerAngles::from_quaternions(&[], EulerSequence::S321).unwrap().is_empty());
+}
+
+proptest::proptest! {
+    /// Batched and one-by-one conversions agree on random batches biased toward the hard
+    /// angles (both directions of every axis, lengths not a multiple of the block).
+    #[test]
+    fn batched_conversions_agree_with_one_by_one(
+        items in proptest::collection::vec((support::direction(), support::angle()), 0..150),
+        seq_index in 0usize..24,
+    ) {
+        let thetas: Vec<Vector3<f64>> =
+            items.iter().map(|(n, th)| Vector3::from(*n).normalize() * *th).collect();
+        let qs = Quaternion::from_angle_vectors(&thetas).unwrap();
+        for (t, q) in thetas.iter().zip(&qs) {
+            let one = Quaternion::from_angle_vector(t);
+            proptest::prop_assert!(q_err(q, &one) <= ULPS, "Θ = {:?}", t);
+        }
+        let seq = all_sequences().nth(seq_index).unwrap();
+        let batch = EulerAngles::from_quaternions(&qs, seq).unwrap();
+        for (i, q) in qs.iter().enumerate() {
+            let one = EulerAngles::from_quaternion(q, seq).principal().angles;
+            let got = batch.principal(i).unwrap().angles;
+            for (x, y) in got.iter().zip(&one) {
+                proptest::prop_assert!(wrap_angle(x - y).abs() <= ULPS * PI, "{:?}: {:?} vs {:?}", seq, got, one);
+            }
+        }
+    }
+}

@@ -62,10 +62,33 @@ pub enum RotationError {
         /// The index given.
         index: usize,
     },
+    /// A batched conversion found bad input at one element.
+    #[error("element {index} of the batch: {source}")]
+    AtElement {
+        /// Index of the offending element.
+        index: usize,
+        /// What was wrong with it.
+        source: Box<RotationError>,
+    },
+    /// An output buffer whose length differs from the input's.
+    #[error("output buffer holds {output} elements but the input has {input}: they must be equal")]
+    LengthMismatch {
+        /// Input length.
+        input: usize,
+        /// Output length.
+        output: usize,
+    },
     /// An error from the kernel (e.g. a tensor too large to rotate).
     #[error(transparent)]
     Tensor(#[from] vectrix_tensor::TensorError),
     /// An error from the frames layer.
     #[error(transparent)]
     Frame(#[from] vectrix_frames::FrameError),
+}
+
+impl RotationError {
+    /// `err` at element `index` of a batch.
+    pub(crate) fn at(index: usize, err: RotationError) -> Self {
+        RotationError::AtElement { index, source: Box::new(err) }
+    }
 }

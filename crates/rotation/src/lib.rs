@@ -45,6 +45,7 @@
 
 mod axis;
 mod axis_angle;
+mod batch;
 mod carry;
 mod compose;
 mod error;
@@ -59,9 +60,11 @@ mod resolved;
 mod rigid;
 mod rotation;
 mod series;
+mod vmath;
 
 pub use axis::{Axis, orientation_about, quaternion_about, rotation_about};
 pub use axis_angle::AxisAngle;
+pub use batch::EulerBatch;
 pub use compose::{
     compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation,
     compose_quaternion, compose_rotation_matrix,
@@ -82,8 +85,8 @@ pub use rotation::Rotation;
 /// `use vectrix_rotation::prelude::*;`
 pub mod prelude {
     pub use crate::{
-        Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, EulerSolution, GIMBAL_LOCK_TOL,
-        Quaternion, ROTATION_TOL, RigidDisplacement, Rotation, RotationError, Screw,
+        Axis, AxisAngle, ChainLink, EulerAngles, EulerBatch, EulerKind, EulerSequence, EulerSolution,
+        GIMBAL_LOCK_TOL, Quaternion, ROTATION_TOL, RigidDisplacement, Rotation, RotationError, Screw,
         canonical_half_turn_axis, chain_backward, chain_forward, check_rotation_matrix, compose_angle_vector,
         compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation, compose_quaternion,
         compose_rotation_matrix, homogeneous, homogeneous_inverse, mrp_shadow, nearest_rotation,

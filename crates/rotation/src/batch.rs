@@ -1,0 +1,477 @@
+//! Batched conversions: many rotations per call, in SIMD.
+//!
+//! One call converts a whole slice, like scipy's `Rotation.from_rotvec(array)` or
+//! `Rotation.as_euler(seq)`. The transcendental functions are fdlibm's kernels written without
+//! branches, so the loop runs four rotations per instruction with AVX2 and FMA. Those
+//! features are detected when the program runs, and the portable build is used on other CPUs.
+//! Each element agrees with its one-rotation counterpart
+//! ([`Quaternion::from_angle_vector`], [`EulerAngles::from_quaternion`]) to a few ulps: the
+//! kernels are within 1 ulp of the platform's `libm` (tested in `vmath`).
+//!
+//! The rare cases are left to the one-rotation code, element by element, so nothing differs
+//! there:
+//! - angles beyond the reduction range (|Θ| > 4·10⁵);
+//! - a quaternion at exactly η = 0 (which needs the canonical sign);
+//! - gimbal lock;
+//! - bad input, which becomes an error naming the element
+//!   ([`RotationError::AtElement`]).
+//!
+//! Book: §2.13 (Euler angles, Facts 2.13.3–8), §2.14–2.15 (angle vector and Euler parameters).
+
+use nalgebra::Vector3;
+
+use crate::euler_extract::GIMBAL_LOCK_TOL;
+use crate::series::wrap_near;
+use crate::vmath::{HALF_PI_SQUARED, SIN_COS_MAX, atan2, cos_sinc_of_square, madd, sin_cos};
+use crate::{EulerAngles, EulerSequence, EulerSolution, Quaternion, ROTATION_TOL, RotationError};
+
+/// Elements per block: the block's structure-of-arrays buffers stay in L1.
+const BLOCK: usize = 64;
+
+/// `true` when the CPU has fused multiply–add (fixed at compile time except on x86-64, where
+/// [`run_simd`] detects AVX2 + FMA when the program runs).
+const FMA_BUILTIN: bool = cfg!(any(target_feature = "fma", target_arch = "aarch64"));
+
+/// Defines `$name(args)`, which runs `$body::<true>` compiled for AVX2 + FMA when the CPU has
+/// them (detected when the program runs) and the portable build `$body::<FMA_BUILTIN>` otherwise.
+macro_rules! simd_entry {
+    ($name:ident => $body:ident ($($arg:ident : $ty:ty),*)) => {
+        fn $name($($arg: $ty),*) -> Result<(), RotationError> {
+            #[cfg(target_arch = "x86_64")]
+            {
+                #[target_feature(enable = "avx2,fma")]
+                fn avx2_fma($($arg: $ty),*) -> Result<(), RotationError> {
+                    $body::<true>($($arg),*)
+                }
+                if !FMA_BUILTIN && std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+                    // SAFETY: AVX2 and FMA were detected on this CPU just above.
+                    return unsafe { avx2_fma($($arg),*) };
+                }
+            }
+            $body::<FMA_BUILTIN>($($arg),*)
+        }
+    };
+}
+
+simd_entry!(exp_simd => exp_all(thetas: &[Vector3<f64>], out: &mut [Quaternion<f64>]));
+simd_entry!(exp_vec_simd => exp_vec(thetas: &[Vector3<f64>], out: &mut Vec<Quaternion<f64>>));
+simd_entry!(euler_simd => euler_all(
+    qs: &[Quaternion<f64>],
+    sequence: EulerSequence,
+    angles: &mut [[f64; 3]],
+    locks: &mut Vec<(usize, EulerSolution<f64>)>
+));
+
+impl Quaternion<f64> {
+    /// The exponential map of many angle vectors at once: q = (cos(θ/2), sin(θ/2) n̂) for
+    /// each Θ = θn̂, canonical (η ≥ 0), in SIMD. Element by element it agrees with
+    /// [`Quaternion::from_angle_vector`] to a few ulps; scipy's `Rotation.from_rotvec(array)`
+    /// is the peer.
+    ///
+    /// Book: §2.14 (2.14.3), §2.15 (2.15.5–6).
+    ///
+    /// # Errors
+    /// [`RotationError::AtElement`] wrapping [`RotationError::NonFinite`] for the first angle
+    /// vector with a NaN or infinite component.
+    ///
+    /// ```
+    /// use nalgebra::Vector3;
+    /// use vectrix_rotation::Quaternion;
+    ///
+    /// let thetas = [Vector3::new(0.0, 0.0, std::f64::consts::FRAC_PI_2), Vector3::zeros()];
+    /// let qs = Quaternion::from_angle_vectors(&thetas)?;
+    /// assert!((qs[0].a - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-16);
+    /// assert_eq!(qs[1], Quaternion::identity());
+    /// # Ok::<(), vectrix_rotation::RotationError>(())
+    /// ```
+    #[doc(alias = "from_rotvec")]
+    pub fn from_angle_vectors(thetas: &[Vector3<f64>]) -> Result<Vec<Self>, RotationError> {
+        let mut out = Vec::with_capacity(thetas.len());
+        exp_vec_simd(thetas, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`Quaternion::from_angle_vectors`] into a buffer the caller owns (no allocation).
+    ///
+    /// Book: §2.14, §2.15.
+    ///
+    /// # Errors
+    /// [`RotationError::LengthMismatch`] when `out.len() != thetas.len()`; otherwise as
+    /// [`Quaternion::from_angle_vectors`] (on error `out` holds partial results).
+    pub fn from_angle_vectors_into(thetas: &[Vector3<f64>], out: &mut [Self]) -> Result<(), RotationError> {
+        if out.len() != thetas.len() {
+            return Err(RotationError::LengthMismatch { input: thetas.len(), output: out.len() });
+        }
+        exp_simd(thetas, out)
+    }
+}
+
+/// One lane of the exponential map: the canonical quaternion and whether the lane is rare
+/// (|Θ|/2 beyond the reduction range, non-finite, or η = 0 exactly).
+#[inline(always)]
+fn exp_lane<const F: bool>(x: f64, y: f64, z: f64) -> ((f64, f64, f64, f64), bool) {
+    let h = 0.5 * madd::<F>(x, x, madd::<F>(y, y, z * z)).sqrt();
+    let (s, c) = sin_cos::<F>(h);
+    // ½ sin(h)/h → ½ at h = 0 (and below 1e-154, where h² underflows, sin h = h).
+    let k = if h == 0.0 { 0.5 } else { 0.5 * s / h };
+    // Canonical sign η ≥ 0 (η = 0 exactly goes to the one-rotation code).
+    let k = if c < 0.0 { -k } else { k };
+    ((c.abs(), x * k, y * k, z * k), h.is_nan() | (h > SIN_COS_MAX) | (c == 0.0))
+}
+
+/// u = |Θ|²/4 = h².
+#[inline(always)]
+fn half_angle_squared<const F: bool>(v: &Vector3<f64>) -> f64 {
+    0.25 * madd::<F>(v.x, v.x, madd::<F>(v.y, v.y, v.z * v.z))
+}
+
+/// The exponential map over all blocks (see [`Quaternion::from_angle_vectors`]).
+#[inline(always)]
+fn exp_all<const F: bool>(thetas: &[Vector3<f64>], out: &mut [Quaternion<f64>]) -> Result<(), RotationError> {
+    for (b, (inp, outp)) in thetas.chunks(BLOCK).zip(out.chunks_mut(BLOCK)).enumerate() {
+        exp_block::<F>(b * BLOCK, inp, outp)?;
+    }
+    Ok(())
+}
+
+/// The exponential map into a new vector, block by block without initialising it first.
+#[inline(always)]
+fn exp_vec<const F: bool>(
+    thetas: &[Vector3<f64>],
+    out: &mut Vec<Quaternion<f64>>,
+) -> Result<(), RotationError> {
+    let mut buf = [Quaternion::identity(); BLOCK];
+    for (b, inp) in thetas.chunks(BLOCK).enumerate() {
+        exp_block::<F>(b * BLOCK, inp, &mut buf[..inp.len()])?;
+        out.extend_from_slice(&buf[..inp.len()]);
+    }
+    Ok(())
+}
+
+/// One block (≤ [`BLOCK`] elements starting at `start`) of the exponential map.
+#[inline(always)]
+fn exp_block<const F: bool>(
+    start: usize,
+    inp: &[Vector3<f64>],
+    outp: &mut [Quaternion<f64>],
+) -> Result<(), RotationError> {
+    let mut rare = false;
+    // |Θ| ≤ π in the whole block (the range of scipy's and `angle_vector`'s output): the even
+    // series in h², without sqrt, range reduction or division.
+    if inp.iter().fold(true, |ok, v| ok & (half_angle_squared::<F>(v) <= HALF_PI_SQUARED)) {
+        for (v, q) in inp.iter().zip(outp.iter_mut()) {
+            let (c, sinc) = cos_sinc_of_square::<F>(half_angle_squared::<F>(v));
+            // Canonical sign η ≥ 0 (η = 0 exactly goes to the one-rotation code).
+            let k = if c < 0.0 { -0.5 * sinc } else { 0.5 * sinc };
+            *q = Quaternion::new(c.abs(), v.x * k, v.y * k, v.z * k);
+            rare |= c == 0.0;
+        }
+    } else {
+        // Any |Θ|: h = |Θ|/2 reduced modulo π/2, on structure-of-arrays copies.
+        let (mut x, mut y, mut z) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
+        for (i, v) in inp.iter().enumerate() {
+            (x[i], y[i], z[i]) = (v.x, v.y, v.z);
+        }
+        let (mut qa, mut qb, mut qc, mut qd) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
+        for i in 0..BLOCK {
+            let (q, r) = exp_lane::<F>(x[i], y[i], z[i]);
+            (qa[i], qb[i], qc[i], qd[i]) = q;
+            rare |= r;
+        }
+        for (i, q) in outp.iter_mut().enumerate() {
+            *q = Quaternion::new(qa[i], qb[i], qc[i], qd[i]);
+        }
+    }
+    if rare {
+        for (i, (v, q)) in inp.iter().zip(outp.iter_mut()).enumerate() {
+            if !(v.x.is_finite() && v.y.is_finite() && v.z.is_finite()) {
+                return Err(RotationError::at(start + i, RotationError::NonFinite { what: "angle vector" }));
+            }
+            if 0.5 * v.norm() > SIN_COS_MAX || q.a == 0.0 {
+                *q = Quaternion::from_angle_vector(v);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Principal Euler angles of many rotations, from [`EulerAngles::from_quaternions`]: one
+/// `[α, β, γ]` per rotation (in the order applied), the gimbal-locked elements listed with
+/// their full [`EulerSolution`], and the alternate solutions on request.
+///
+/// Book: §2.13, Facts 2.13.3–8.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EulerBatch {
+    sequence: EulerSequence,
+    angles: Vec<[f64; 3]>,
+    locks: Vec<(usize, EulerSolution<f64>)>,
+}
+
+impl EulerBatch {
+    /// The sequence of every element.
+    pub fn sequence(&self) -> EulerSequence {
+        self.sequence
+    }
+
+    /// Number of rotations.
+    pub fn len(&self) -> usize {
+        self.angles.len()
+    }
+
+    /// `true` for an empty batch.
+    pub fn is_empty(&self) -> bool {
+        self.angles.is_empty()
+    }
+
+    /// The principal angles [α, β, γ] (order applied) of each rotation; at gimbal lock the
+    /// representative (combination, β, 0), as scipy's `as_euler` does (scipy also warns).
+    pub fn angles(&self) -> &[[f64; 3]] {
+        &self.angles
+    }
+
+    /// The angles, consuming the batch.
+    pub fn into_angles(self) -> Vec<[f64; 3]> {
+        self.angles
+    }
+
+    /// The gimbal-locked elements, ascending: (index, [`EulerSolution::GimbalLock`]).
+    pub fn gimbal_locks(&self) -> &[(usize, EulerSolution<f64>)] {
+        &self.locks
+    }
+
+    /// Element `i` as [`EulerAngles`] (the principal solution or the lock representative);
+    /// `None` past the end.
+    pub fn principal(&self, i: usize) -> Option<EulerAngles<f64>> {
+        self.angles.get(i).map(|a| EulerAngles::new(self.sequence, *a))
+    }
+
+    /// Element `i` as the full [`EulerSolution`], what [`EulerAngles::from_quaternion`] returns
+    /// for it: `Regular` with the principal and the alternate solution, or `GimbalLock`.
+    /// `None` past the end.
+    ///
+    /// Book: Facts 2.13.3–8 (the alternate is (α+π, π−β, γ+π) for Tait–Bryan sequences and
+    /// (α+π, −β, γ+π) for symmetric ones, wrapped into (−π, π]).
+    pub fn solution(&self, i: usize) -> Option<EulerSolution<f64>> {
+        let a = *self.angles.get(i)?;
+        if let Ok(k) = self.locks.binary_search_by_key(&i, |(j, _)| *j) {
+            return Some(self.locks[k].1);
+        }
+        let pi = core::f64::consts::PI;
+        let middle = if self.sequence.is_symmetric() { -a[1] } else { pi - a[1] };
+        let alternate = [a[0] + pi, middle, a[2] + pi].map(wrap_near);
+        Some(EulerSolution::Regular {
+            principal: EulerAngles::new(self.sequence, a),
+            alternate: EulerAngles::new(self.sequence, alternate),
+        })
+    }
+}
+
+impl EulerAngles<f64> {
+    /// Euler angles of many rotations at once from their Euler parameters q_{D/A}, in SIMD:
+    /// the generic atan2/hypot extraction of [`EulerAngles::from_rotation_matrix_unchecked`]
+    /// on the entries of 𝓡(q). Element by element it agrees with
+    /// [`EulerAngles::from_quaternion`] to a few ulps, and gimbal lock is decided by that
+    /// function itself. scipy's `Rotation.as_euler(seq)` is the peer.
+    ///
+    /// Book: §2.13, Facts 2.13.3–8 (corrected signs), (2.15.14).
+    ///
+    /// # Errors
+    /// [`RotationError::AtElement`] for the first quaternion that is not finite
+    /// ([`RotationError::NonFinite`]) or not a unit quaternion within [`ROTATION_TOL`]
+    /// ([`RotationError::NotUnit`]).
+    ///
+    /// ```
+    /// use vectrix_rotation::{EulerAngles, EulerSequence, Quaternion};
+    ///
+    /// let e = EulerAngles::new(EulerSequence::S321, [0.3, -0.2, 0.1]);
+    /// let batch = EulerAngles::from_quaternions(&[e.quaternion(); 3], EulerSequence::S321)?;
+    /// assert!((batch.angles()[2][0] - 0.3).abs() < 1e-15);
+    /// assert!(batch.gimbal_locks().is_empty());
+    /// # Ok::<(), vectrix_rotation::RotationError>(())
+    /// ```
+    #[doc(alias = "as_euler")]
+    pub fn from_quaternions(
+        qs: &[Quaternion<f64>],
+        sequence: EulerSequence,
+    ) -> Result<EulerBatch, RotationError> {
+        let mut batch = EulerBatch { sequence, angles: vec![[0.0; 3]; qs.len()], locks: Vec::new() };
+        let (angles, locks) = (&mut batch.angles, &mut batch.locks);
+        euler_simd(qs, sequence, angles, locks)?;
+        Ok(batch)
+    }
+}
+
+/// Parity ε of the zero-based axes (i, j, ·): +1 cyclic, −1 anticyclic.
+fn parity(i: usize, j: usize) -> f64 {
+    if (j + 3 - i) % 3 == 1 { 1.0 } else { -1.0 }
+}
+
+/// Euler extraction over all blocks (see [`EulerAngles::from_quaternions`]).
+#[inline(always)]
+fn euler_all<const F: bool>(
+    qs: &[Quaternion<f64>],
+    sequence: EulerSequence,
+    angles: &mut [[f64; 3]],
+    locks: &mut Vec<(usize, EulerSolution<f64>)>,
+) -> Result<(), RotationError> {
+    let (seq, reversed) = sequence.as_intrinsic_reversed();
+    let [ai, aj, ak] = seq.axes();
+    let (i, j, k) = (ai.i0(), aj.i0(), ak.i0());
+    let e = parity(i, j);
+    let symmetric = i == k;
+    let m_ = 3 - i - j; // the third axis of a symmetric sequence
+    // Flag lanes near the lock for the one-rotation code, which decides (its hypot may differ
+    // from sqrt(u² + v²) in the last bit).
+    let lock_flag = 2.0 * GIMBAL_LOCK_TOL;
+    for (b, (inp, outp)) in qs.chunks(BLOCK).zip(angles.chunks_mut(BLOCK)).enumerate() {
+        let mut m = [[0.0; BLOCK]; 9];
+        let mut rare = false;
+        {
+            let (mut qa, mut qb, mut qc, mut qd) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
+            for (l, q) in inp.iter().enumerate() {
+                (qa[l], qb[l], qc[l], qd[l]) = (q.a, q.b, q.c, q.d);
+            }
+            if inp.len() < BLOCK {
+                qa[inp.len()..].fill(1.0); // padding: the identity, never rare
+            }
+            let [m0, m1, m2, m3, m4, m5, m6, m7, m8] = &mut m;
+            for l in 0..BLOCK {
+                let (a, b, c, d) = (qa[l], qb[l], qc[l], qd[l]);
+                // 𝓡(q), (2.15.14), as `Quaternion::rotation_matrix`.
+                let (bb, cc, dd) = (b * b, c * c, d * d);
+                let (ab, ac, ad, bc, bd, cd) = (a * b, a * c, a * d, b * c, b * d, c * d);
+                m0[l] = 1.0 - 2.0 * (cc + dd);
+                m1[l] = 2.0 * (bc - ad);
+                m2[l] = 2.0 * (ac + bd);
+                m3[l] = 2.0 * (ad + bc);
+                m4[l] = 1.0 - 2.0 * (bb + dd);
+                m5[l] = 2.0 * (cd - ab);
+                m6[l] = 2.0 * (bd - ac);
+                m7[l] = 2.0 * (ab + cd);
+                m8[l] = 1.0 - 2.0 * (bb + cc);
+                let n2 = a * a + bb + cc + dd;
+                rare |= n2.is_nan() | ((n2 - 1.0).abs() > ROTATION_TOL);
+            }
+        }
+        let (mut al, mut be, mut ga) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
+        let r = |row: usize, col: usize| &m[3 * row + col];
+        if !symmetric {
+            // Tait–Bryan: β = atan2(ε𝓡_ik, hypot(𝓡_ii, 𝓡_ij)), α = atan2(−ε𝓡_jk, 𝓡_kk),
+            // γ = atan2(−ε𝓡_ij, 𝓡_ii).
+            let (rii, rij, rik, rjk, rkk) = (r(i, i), r(i, j), r(i, k), r(j, k), r(k, k));
+            for l in 0..BLOCK {
+                let cb = madd::<F>(rii[l], rii[l], rij[l] * rij[l]).sqrt();
+                be[l] = atan2::<F>(e * rik[l], cb);
+                al[l] = atan2::<F>(-e * rjk[l], rkk[l]);
+                ga[l] = atan2::<F>(-e * rij[l], rii[l]);
+                rare |= cb <= lock_flag;
+            }
+        } else {
+            // Symmetric: β = atan2(hypot(𝓡_ij, 𝓡_im), 𝓡_ii), α = atan2(𝓡_ji, −ε𝓡_mi),
+            // γ = atan2(𝓡_ij, ε𝓡_im).
+            let (rii, rij, rim, rji, rmi) = (r(i, i), r(i, j), r(i, m_), r(j, i), r(m_, i));
+            for l in 0..BLOCK {
+                let sb = madd::<F>(rij[l], rij[l], rim[l] * rim[l]).sqrt();
+                be[l] = atan2::<F>(sb, rii[l]);
+                al[l] = atan2::<F>(rji[l], -e * rmi[l]);
+                ga[l] = atan2::<F>(rij[l], e * rim[l]);
+                rare |= sb <= lock_flag;
+            }
+        }
+        for (l, out) in outp.iter_mut().enumerate() {
+            // atan2 ∈ [−π, π]; −π becomes π as in the one-rotation code.
+            let (a, g) = (wrap_near(al[l]), wrap_near(ga[l]));
+            *out = if reversed { [g, be[l], a] } else { [a, be[l], g] };
+        }
+        if rare {
+            for (l, (q, out)) in inp.iter().zip(outp.iter_mut()).enumerate() {
+                let index = b * BLOCK + l;
+                if !(q.a.is_finite() && q.b.is_finite() && q.c.is_finite() && q.d.is_finite()) {
+                    return Err(RotationError::at(index, RotationError::NonFinite { what: "quaternion" }));
+                }
+                let defect = (q.norm() - 1.0).abs();
+                if defect > ROTATION_TOL {
+                    return Err(RotationError::at(
+                        index,
+                        RotationError::NotUnit { defect, tol: ROTATION_TOL },
+                    ));
+                }
+                let s = EulerAngles::from_quaternion(q, sequence);
+                if let EulerSolution::GimbalLock { representative, .. } = s {
+                    *out = representative.angles;
+                    locks.push((index, s));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn xorshift(s: &mut u64) -> f64 {
+        *s ^= *s << 13;
+        *s ^= *s >> 7;
+        *s ^= *s << 17;
+        (*s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    }
+
+    /// Blocks of canonical angle vectors (|Θ| ≤ π, the series path), then blocks up to
+    /// |Θ| = 40 (the reduced path), then canonical again; 300 is not a multiple of the block.
+    fn thetas() -> Vec<Vector3<f64>> {
+        let mut s = 0x0123_4567_89AB_CDEFu64;
+        (0..300)
+            .map(|i| {
+                let scale = if (128..192).contains(&i) { 40.0 } else { 3.6 };
+                let v = Vector3::new(xorshift(&mut s), xorshift(&mut s), xorshift(&mut s)) * scale;
+                if scale < 4.0 && v.norm() > core::f64::consts::PI { v * 0.5 } else { v }
+            })
+            .collect()
+    }
+
+    /// The portable build (F = false) and the fused one (F = true; a software `fma` on CPUs
+    /// without one) both agree with the one-rotation exponential map to a few ulps × |Θ|.
+    #[test]
+    fn both_builds_of_the_exponential_map_match_one_by_one() {
+        let th = thetas();
+        for fused in [false, true] {
+            let mut out = vec![Quaternion::identity(); th.len()];
+            if fused { exp_all::<true>(&th, &mut out) } else { exp_all::<false>(&th, &mut out) }.unwrap();
+            let mut v = Vec::new();
+            if fused { exp_vec::<true>(&th, &mut v) } else { exp_vec::<false>(&th, &mut v) }.unwrap();
+            assert_eq!(out, v);
+            for (t, q) in th.iter().zip(&out) {
+                let one = Quaternion::from_angle_vector(t);
+                let err = (q.to_vector4() - one.to_vector4()).amax();
+                assert!(err <= 4.0 * f64::EPSILON * t.norm().max(1.0), "fused = {fused}, Θ = {t:?}: {err:e}");
+            }
+        }
+    }
+
+    /// Both builds of the Euler extraction agree with the one-rotation code in every sequence.
+    #[test]
+    fn both_builds_of_the_euler_extraction_match_one_by_one() {
+        let qs: Vec<Quaternion<f64>> = thetas().iter().map(Quaternion::from_angle_vector).collect();
+        for seq in EulerSequence::ALL.into_iter().flat_map(|s| [s, s.extrinsic()]) {
+            for fused in [false, true] {
+                let (mut angles, mut locks) = (vec![[0.0; 3]; qs.len()], Vec::new());
+                if fused {
+                    euler_all::<true>(&qs, seq, &mut angles, &mut locks)
+                } else {
+                    euler_all::<false>(&qs, seq, &mut angles, &mut locks)
+                }
+                .unwrap();
+                assert!(locks.is_empty());
+                for (q, a) in qs.iter().zip(&angles) {
+                    let one = EulerAngles::from_quaternion(q, seq).principal().angles;
+                    for (x, y) in a.iter().zip(&one) {
+                        let d = wrap_near(x - y).abs();
+                        assert!(d <= 4.0 * f64::EPSILON * 4.0, "{seq:?} fused = {fused}: {a:?} vs {one:?}");
+                    }
+                }
+            }
+        }
+    }
+}
