@@ -181,8 +181,43 @@ fn main() {
             (e, Some(q_err(na4(&UnitQuaternion::from_euler_angles(r, p, y)), vx4(&q))))
         },
     );
+    // The batched (SIMD) conversions on the whole hard set in one call each.
+    {
+        let cases: Vec<(Vector3<f64>, f64)> =
+            axes().into_iter().flat_map(|n| HARD.iter().map(move |&th| (n, th))).collect();
+        let thetas: Vec<Vector3<f64>> = cases.iter().map(|(n, th)| n * *th).collect();
+        let qs = Quaternion::from_angle_vectors(&thetas).expect("finite");
+        let v = cases.iter().zip(&qs).map(|((n, th), q)| q_err(vx4(q), truth_q(n, *th))).fold(0.0, f64::max);
+        let na = cases
+            .iter()
+            .map(|(n, th)| q_err(na4(&UnitQuaternion::from_scaled_axis(n * *th)), truth_q(n, *th)))
+            .fold(0.0, f64::max);
+        rows.push(Row {
+            name: "angle vector → quaternion, batched",
+            vectrix: v,
+            nalgebra: Some(na),
+            note: "`Quaternion::from_angle_vectors`; nalgebra one by one (no batch call)",
+        });
+        let unit: Vec<Quaternion> =
+            cases.iter().map(|(n, th)| Quaternion::from_axis_angle(n, *th).expect("axis")).collect();
+        let mut e = 0.0f64;
+        for s in EulerSequence::ALL.into_iter().flat_map(|s| [s, s.extrinsic()]) {
+            let batch = EulerAngles::from_quaternions(&unit, s).expect("unit");
+            for (i, q) in unit.iter().enumerate() {
+                let p = batch.principal(i).expect("in range");
+                e = e.max(q_err(vx4(&p.quaternion()), vx4(q)));
+            }
+        }
+        rows.push(Row {
+            name: "quaternion → Euler (24 sequences) → quaternion, batched",
+            vectrix: e,
+            nalgebra: None,
+            note: "`EulerAngles::from_quaternions`; no nalgebra batch",
+        });
+    }
     // Gimbal lock: 3-2-1 with the pitch at ±π/2 ± 10⁻ᵏ.
     let (mut v_mid, mut n_mid, mut v_reb, mut n_reb) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let (mut b_mid, mut b_reb, mut q_reb, mut nq_reb) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for lock in [FRAC_PI_2, -FRAC_PI_2] {
         for k in 2..=16 {
             for side in [-1.0, 1.0] {
@@ -194,6 +229,15 @@ fn main() {
                     .expect("rotation")
                     .principal();
                 v_mid = v_mid.max((p.angles[1] - want).abs());
+                let q = e.quaternion();
+                let one = EulerAngles::from_quaternion(&q, EulerSequence::S321).principal();
+                q_reb = q_reb.max((one.rotation_matrix() - m).amax());
+                let (r, pi, y) = q.to_unit_quaternion().euler_angles();
+                nq_reb = nq_reb.max((Rotation3::from_euler_angles(r, pi, y).matrix() - m).amax());
+                let b = EulerAngles::from_quaternions(&[q], EulerSequence::S321).expect("unit");
+                let pb = b.principal(0).expect("one");
+                b_mid = b_mid.max((pb.angles[1] - want).abs());
+                b_reb = b_reb.max((pb.rotation_matrix() - m).amax());
                 v_reb = v_reb.max((p.rotation_matrix() - m).amax());
                 let (r, pi, y) = Rotation3::from_matrix_unchecked(m).euler_angles();
                 n_mid = n_mid.max((pi - want).abs());
@@ -211,6 +255,25 @@ fn main() {
         name: "matrix → 3-2-1 → matrix, ±π/2 ± 1e-k",
         vectrix: v_reb,
         nalgebra: Some(n_reb),
+        note: "rebuild error",
+    });
+
+    rows.push(Row {
+        name: "quaternion → 3-2-1 → matrix, ±π/2 ± 1e-k",
+        vectrix: q_reb,
+        nalgebra: Some(nq_reb),
+        note: "rebuild error; nalgebra: UnitQuaternion::euler_angles",
+    });
+    rows.push(Row {
+        name: "quaternion → 3-2-1 pitch, ±π/2 ± 1e-k, batched",
+        vectrix: b_mid,
+        nalgebra: None,
+        note: "`EulerAngles::from_quaternions`",
+    });
+    rows.push(Row {
+        name: "quaternion → 3-2-1 → matrix, ±π/2 ± 1e-k, batched",
+        vectrix: b_reb,
+        nalgebra: None,
         note: "rebuild error",
     });
 

@@ -268,8 +268,8 @@ impl EulerBatch {
 
 impl EulerAngles<f64> {
     /// Euler angles of many rotations at once from their Euler parameters q_{D/A}, in SIMD:
-    /// the generic atan2/hypot extraction of [`EulerAngles::from_rotation_matrix_unchecked`]
-    /// on the entries of 𝓡(q). Element by element it agrees with
+    /// the quaternion-pair extraction of [`EulerAngles::from_quaternion`] (accurate through
+    /// gimbal lock, where the route through 𝓡(q) is not). Element by element it agrees with
     /// [`EulerAngles::from_quaternion`] to a few ulps, and gimbal lock is decided by that
     /// function itself. scipy's `Rotation.as_euler(seq)` is the peer.
     ///
@@ -302,11 +302,13 @@ impl EulerAngles<f64> {
 }
 
 /// Parity ε of the zero-based axes (i, j, ·): +1 cyclic, −1 anticyclic.
-fn parity(i: usize, j: usize) -> f64 {
+const fn parity(i: usize, j: usize) -> f64 {
     if (j + 3 - i) % 3 == 1 { 1.0 } else { -1.0 }
 }
 
-/// Euler extraction over all blocks (see [`EulerAngles::from_quaternions`]).
+/// Euler extraction over all blocks (see [`EulerAngles::from_quaternions`]): one loop per
+/// intrinsic sequence (i, j, k), monomorphised so the component indices are constants, straight
+/// from the quaternions into the angles.
 #[inline(always)]
 fn euler_all<const F: bool>(
     qs: &[Quaternion<f64>],
@@ -316,76 +318,78 @@ fn euler_all<const F: bool>(
 ) -> Result<(), RotationError> {
     let (seq, reversed) = sequence.as_intrinsic_reversed();
     let [ai, aj, ak] = seq.axes();
-    let (i, j, k) = (ai.i0(), aj.i0(), ak.i0());
-    let e = parity(i, j);
-    let symmetric = i == k;
-    let m_ = 3 - i - j; // the third axis of a symmetric sequence
+    macro_rules! by_sequence {
+        ($(($i:literal, $j:literal, $k:literal)),*) => {
+            match (ai.i0(), aj.i0(), ak.i0()) {
+                $(($i, $j, $k) => euler_seq::<F, $i, $j, $k>(qs, sequence, reversed, angles, locks),)*
+                _ => unreachable!("EulerSequence holds distinct adjacent axes"),
+            }
+        };
+    }
+    by_sequence!(
+        (0, 1, 2),
+        (0, 2, 1),
+        (1, 2, 0),
+        (1, 0, 2),
+        (2, 0, 1),
+        (2, 1, 0),
+        (0, 1, 0),
+        (0, 2, 0),
+        (1, 2, 1),
+        (1, 0, 1),
+        (2, 0, 2),
+        (2, 1, 2)
+    )
+}
+
+/// [`euler_all`] for the intrinsic sequence (I, J, K) (zero-based; `reversed` for an extrinsic
+/// one, whose angles come out in the opposite order).
+#[inline(always)]
+fn euler_seq<const F: bool, const I: usize, const J: usize, const K: usize>(
+    qs: &[Quaternion<f64>],
+    sequence: EulerSequence,
+    reversed: bool,
+    angles: &mut [[f64; 3]],
+    locks: &mut Vec<(usize, EulerSolution<f64>)>,
+) -> Result<(), RotationError> {
+    let e = parity(I, J);
+    let m = 3 - I - J; // the third axis of a symmetric sequence (I = K)
     // Flag lanes near the lock for the one-rotation code, which decides (its hypot may differ
-    // from sqrt(u² + v²) in the last bit).
+    // from sqrt(x² + y²) in the last bit).
     let lock_flag = 2.0 * GIMBAL_LOCK_TOL;
-    for (b, (inp, outp)) in qs.chunks(BLOCK).zip(angles.chunks_mut(BLOCK)).enumerate() {
-        let mut m = [[0.0; BLOCK]; 9];
+    for (blk, (inp, outp)) in qs.chunks(BLOCK).zip(angles.chunks_mut(BLOCK)).enumerate() {
         let mut rare = false;
-        {
-            let (mut qa, mut qb, mut qc, mut qd) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
-            for (l, q) in inp.iter().enumerate() {
-                (qa[l], qb[l], qc[l], qd[l]) = (q.a, q.b, q.c, q.d);
+        for (q, out) in inp.iter().zip(outp.iter_mut()) {
+            // The half-sum/half-difference pairs of `EulerAngles::from_quaternion` (Bernardes &
+            // Viollet), the same formulas in the same order.
+            let (w, comp) = (q.a, [q.b, q.c, q.d]);
+            let (alpha, beta, gamma, measure);
+            if I != K {
+                let (qi, qj, qk) = (comp[I], comp[J], comp[K]);
+                let (a, b, c, d) = (w + qj, qi + e * qk, w - qj, qi - e * qk);
+                measure = madd::<F>(a, a, b * b).sqrt() * madd::<F>(c, c, d * d).sqrt();
+                beta = atan2::<F>(2.0 * (w * qj + e * qi * qk), measure);
+                let (phi_p, phi_m) = (atan2::<F>(b, a), atan2::<F>(d, c));
+                alpha = phi_p + phi_m;
+                gamma = e * (phi_p - phi_m);
+            } else {
+                let (a, b, c, d) = (w, comp[I], comp[J], e * comp[m]);
+                let (h_ab, h_cd) = (madd::<F>(a, a, b * b).sqrt(), madd::<F>(c, c, d * d).sqrt());
+                beta = 2.0 * atan2::<F>(h_cd, h_ab);
+                let (th_p, th_m) = (atan2::<F>(b, a), atan2::<F>(d, c));
+                alpha = th_p + th_m;
+                gamma = th_p - th_m;
+                measure = 2.0 * h_ab * h_cd;
             }
-            if inp.len() < BLOCK {
-                qa[inp.len()..].fill(1.0); // padding: the identity, never rare
-            }
-            let [m0, m1, m2, m3, m4, m5, m6, m7, m8] = &mut m;
-            for l in 0..BLOCK {
-                let (a, b, c, d) = (qa[l], qb[l], qc[l], qd[l]);
-                // 𝓡(q), (2.15.14), as `Quaternion::rotation_matrix`.
-                let (bb, cc, dd) = (b * b, c * c, d * d);
-                let (ab, ac, ad, bc, bd, cd) = (a * b, a * c, a * d, b * c, b * d, c * d);
-                m0[l] = 1.0 - 2.0 * (cc + dd);
-                m1[l] = 2.0 * (bc - ad);
-                m2[l] = 2.0 * (ac + bd);
-                m3[l] = 2.0 * (ad + bc);
-                m4[l] = 1.0 - 2.0 * (bb + dd);
-                m5[l] = 2.0 * (cd - ab);
-                m6[l] = 2.0 * (bd - ac);
-                m7[l] = 2.0 * (ab + cd);
-                m8[l] = 1.0 - 2.0 * (bb + cc);
-                let n2 = a * a + bb + cc + dd;
-                rare |= n2.is_nan() | ((n2 - 1.0).abs() > ROTATION_TOL);
-            }
-        }
-        let (mut al, mut be, mut ga) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
-        let r = |row: usize, col: usize| &m[3 * row + col];
-        if !symmetric {
-            // Tait–Bryan: β = atan2(ε𝓡_ik, hypot(𝓡_ii, 𝓡_ij)), α = atan2(−ε𝓡_jk, 𝓡_kk),
-            // γ = atan2(−ε𝓡_ij, 𝓡_ii).
-            let (rii, rij, rik, rjk, rkk) = (r(i, i), r(i, j), r(i, k), r(j, k), r(k, k));
-            for l in 0..BLOCK {
-                let cb = madd::<F>(rii[l], rii[l], rij[l] * rij[l]).sqrt();
-                be[l] = atan2::<F>(e * rik[l], cb);
-                al[l] = atan2::<F>(-e * rjk[l], rkk[l]);
-                ga[l] = atan2::<F>(-e * rij[l], rii[l]);
-                rare |= cb <= lock_flag;
-            }
-        } else {
-            // Symmetric: β = atan2(hypot(𝓡_ij, 𝓡_im), 𝓡_ii), α = atan2(𝓡_ji, −ε𝓡_mi),
-            // γ = atan2(𝓡_ij, ε𝓡_im).
-            let (rii, rij, rim, rji, rmi) = (r(i, i), r(i, j), r(i, m_), r(j, i), r(m_, i));
-            for l in 0..BLOCK {
-                let sb = madd::<F>(rij[l], rij[l], rim[l] * rim[l]).sqrt();
-                be[l] = atan2::<F>(sb, rii[l]);
-                al[l] = atan2::<F>(rji[l], -e * rmi[l]);
-                ga[l] = atan2::<F>(rij[l], e * rim[l]);
-                rare |= sb <= lock_flag;
-            }
-        }
-        for (l, out) in outp.iter_mut().enumerate() {
-            // atan2 ∈ [−π, π]; −π becomes π as in the one-rotation code.
-            let (a, g) = (wrap_near(al[l]), wrap_near(ga[l]));
-            *out = if reversed { [g, be[l], a] } else { [a, be[l], g] };
+            let (alpha, gamma) = (wrap_near(alpha), wrap_near(gamma));
+            *out = if reversed { [gamma, beta, alpha] } else { [alpha, beta, gamma] };
+            let n2 =
+                madd::<F>(w, w, madd::<F>(comp[0], comp[0], madd::<F>(comp[1], comp[1], comp[2] * comp[2])));
+            rare |= (measure <= lock_flag) | n2.is_nan() | ((n2 - 1.0).abs() > ROTATION_TOL);
         }
         if rare {
             for (l, (q, out)) in inp.iter().zip(outp.iter_mut()).enumerate() {
-                let index = b * BLOCK + l;
+                let index = blk * BLOCK + l;
                 if !(q.a.is_finite() && q.b.is_finite() && q.c.is_finite() && q.d.is_finite()) {
                     return Err(RotationError::at(index, RotationError::NonFinite { what: "quaternion" }));
                 }

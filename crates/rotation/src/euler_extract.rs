@@ -92,11 +92,84 @@ impl<T: Scalar> EulerAngles<T> {
         Ok(Self::from_rotation_matrix_unchecked(r, sequence, GIMBAL_LOCK_TOL))
     }
 
-    /// Extraction from the Euler parameters q_{D/A} (through 𝓡(q), exact to a few ulps).
+    /// Extraction from the Euler parameters q_{D/A}, straight from the quaternion (never
+    /// through 𝓡(q)), lock tolerance [`GIMBAL_LOCK_TOL`].
     ///
-    /// Book: §2.13, §2.15.
+    /// Why not through 𝓡(q)? Near gimbal lock the entries of 𝓡(q) that fix α and γ are
+    /// O(cos β) but carry absolute rounding errors of order ε (e.g. 1 − 2(b² + c²)). So α and γ
+    /// come out with independent errors ε/cos β, and the rebuilt rotation is off by as much:
+    /// 0.2 at β = π/2 − 1e-15.
+    ///
+    /// Here the quaternion is split into two pairs whose angles are the half sum and half
+    /// difference of the outer angles (Bernardes & Viollet 2022, the method scipy ≥ 1.11 uses).
+    /// Near the lock only the ill-determined one of them is inexact, and that error cancels
+    /// in the rotation. With q = q_i(α)⊗q_j(β)⊗q_k(γ), ε the parity of (i, j, ·), and q_i, q_j,
+    /// q_k the components of q:
+    ///
+    /// - Tait–Bryan: A = η + q_j = (c + s) cos φ₊, B = q_i + εq_k = (c + s) sin φ₊,
+    ///   C = η − q_j = (c − s) cos φ₋ and D = q_i − εq_k = (c − s) sin φ₋, where
+    ///   (c, s) = (cos β/2, sin β/2) and φ± = (α ± εγ)/2. Then
+    ///   β = atan2(2(ηq_j + εq_iq_k), |A, B|·|C, D|), α = φ₊ + φ₋ and γ = ε(φ₊ − φ₋).
+    /// - Symmetric (m the third axis, ε the parity of (i, j, m)):
+    ///   (η, q_i) = cos(β/2)(cos θ₊, sin θ₊) and (q_j, εq_m) = sin(β/2)(cos θ₋, sin θ₋), where
+    ///   θ± = (α ± γ)/2. Then β = 2 atan2(|q_j, q_m|, |η, q_i|), α = θ₊ + θ₋ and γ = θ₊ − θ₋.
+    ///
+    /// The lock test is the one [`EulerAngles::from_rotation_matrix_unchecked`] applies:
+    /// cos β = |A, B|·|C, D| (Tait–Bryan) or sin β = 2|η, q_i|·|q_j, q_m| (symmetric) at most
+    /// 4ε. At the lock the determined combination is 2φ₊ or 2φ₋ (2θ₊ or 2θ₋).
+    ///
+    /// Book: §2.13 (Facts 2.13.3–8), §2.15; Bernardes & Viollet, "Quaternion to Euler angles
+    /// conversion: a direct, general and computationally efficient method", PLoS ONE 17 (2022).
     pub fn from_quaternion(q: &Quaternion<T>, sequence: EulerSequence) -> EulerSolution<T> {
-        Self::from_rotation_matrix_unchecked(&q.rotation_matrix(), sequence, GIMBAL_LOCK_TOL)
+        let (seq, reversed) = sequence.as_intrinsic_reversed();
+        let [ai, aj, ak] = seq.axes();
+        let (i, j, k) = (ai.i0(), aj.i0(), ak.i0());
+        let comp = [q.b, q.c, q.d];
+        let (w, pi) = (q.a, T::pi());
+        let two = T::lit(2.0);
+        let (alpha, beta, gamma, lock_measure, sign, plus_determined);
+        if i != k {
+            let e = T::lit(parity(i, j));
+            let (qi, qj, qk) = (comp[i], comp[j], comp[k]);
+            let (a, b, c, d) = (w + qj, qi + e * qk, w - qj, qi - e * qk);
+            let cos_beta = a.hypot(b) * c.hypot(d);
+            beta = (two * (w * qj + e * qi * qk)).atan2(cos_beta);
+            let (phi_p, phi_m) = (b.atan2(a), d.atan2(c));
+            alpha = phi_p + phi_m;
+            gamma = e * (phi_p - phi_m);
+            lock_measure = cos_beta.re();
+            sign = if (e * beta).re() >= 0.0 { 1 } else { -1 };
+            plus_determined = if beta.re() >= 0.0 { two * phi_p } else { two * phi_m };
+        } else {
+            let m = 3 - i - j;
+            let e = T::lit(parity(i, j));
+            let (a, b, c, d) = (w, comp[i], comp[j], e * comp[m]);
+            let (h_ab, h_cd) = (a.hypot(b), c.hypot(d));
+            beta = two * h_cd.atan2(h_ab);
+            let (th_p, th_m) = (b.atan2(a), d.atan2(c));
+            alpha = th_p + th_m;
+            gamma = th_p - th_m;
+            lock_measure = (two * h_ab * h_cd).re();
+            sign = if h_ab.re() >= h_cd.re() { 1 } else { -1 };
+            plus_determined = if sign > 0 { two * th_p } else { two * th_m };
+        }
+        let out = |a: T, b: T, c: T| {
+            let ang = if reversed { [c, b, a] } else { [a, b, c] };
+            EulerAngles::new(sequence, ang.map(wrap_angle))
+        };
+        if lock_measure <= GIMBAL_LOCK_TOL {
+            let combination = wrap_angle(plus_determined);
+            let applied = if reversed && sign < 0 { wrap_angle(-combination) } else { combination };
+            return EulerSolution::GimbalLock {
+                middle: beta,
+                combination: applied,
+                sign,
+                representative: out(combination, beta, T::zero()),
+            };
+        }
+        let alternate =
+            if i != k { out(alpha + pi, pi - beta, gamma + pi) } else { out(alpha + pi, -beta, gamma + pi) };
+        EulerSolution::Regular { principal: out(alpha, beta, gamma), alternate }
     }
 
     /// The generic extraction without the orthonormality check, with the lock tolerance
