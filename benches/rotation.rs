@@ -2,6 +2,9 @@
 //! the same run (DESIGN §6). Each iteration processes a batch of N random rotations, so the
 //! figures are per rotation (divide by N; criterion's throughput line shows elements/s).
 //!
+//! The `batched_1e6` group times the batched (SIMD) conversions on 10⁶ rotations per call, the
+//! size of scipy's batched calls.
+//!
 //! Run: `cargo bench --bench rotation -- --warm-up-time 1 --measurement-time 3`.
 //! Peer (scipy, batched, per rotation): `~/.venv-peers/bin/python ../shared/peers/bench_rotation.py`.
 

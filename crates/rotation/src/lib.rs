@@ -11,6 +11,9 @@
 //!   sequences (intrinsic as the book, extrinsic as an option), elementary 𝓞_i and 𝓡_i.
 //! - Rigid displacements, [`Screw`]s (Chasles made constructive), chains and homogeneous
 //!   transforms.
+//! - Batched conversions in SIMD for many rotations per call (scipy's batched `Rotation` is the
+//!   peer): [`Quaternion::from_angle_vectors`] and [`EulerAngles::from_quaternions`] (an
+//!   [`EulerBatch`]), each equal to the one-rotation function to a few ulps.
 //!
 //! # Conventions
 //! - 𝓡_{B/A} = R⃗_{B/A}|_A is active (columns = B's axes resolved in A); 𝓞_{B/A} = 𝓡_{B/A}ᵀ is
