@@ -2,7 +2,8 @@
 //!
 //! One call converts a whole slice, like scipy's `Rotation.from_rotvec(array)` or
 //! `Rotation.as_euler(seq)`. The transcendental functions are fdlibm's kernels written without
-//! branches, so the loop runs four rotations per instruction with AVX2 and FMA. Those
+//! branches (and, for angle vectors with |Θ| ≤ π, the Taylor series of cos h and sin h / h in
+//! h²), so the loop runs four rotations per instruction with AVX2 and FMA. Those
 //! features are detected when the program runs, and the portable build is used on other CPUs.
 //! Each element agrees with its one-rotation counterpart
 //! ([`Quaternion::from_angle_vector`], [`EulerAngles::from_quaternion`]) to a few ulps: the
@@ -25,11 +26,12 @@ use crate::series::wrap_near;
 use crate::vmath::{HALF_PI_SQUARED, SIN_COS_MAX, atan2, cos_sinc_of_square, madd, sin_cos};
 use crate::{EulerAngles, EulerSequence, EulerSolution, Quaternion, ROTATION_TOL, RotationError};
 
-/// Elements per block: the block's structure-of-arrays buffers stay in L1.
+/// Elements per block: the unit of the fast-path choice (all |Θ| ≤ π) and of the rare-element
+/// fix-up.
 const BLOCK: usize = 64;
 
-/// `true` when the CPU has fused multiply–add (fixed at compile time except on x86-64, where
-/// [`run_simd`] detects AVX2 + FMA when the program runs).
+/// `true` when the build target guarantees fused multiply–add (aarch64, or x86-64 compiled with
+/// `+fma`); otherwise `simd_entry!` detects AVX2 + FMA when the program runs.
 const FMA_BUILTIN: bool = cfg!(any(target_feature = "fma", target_arch = "aarch64"));
 
 /// Defines `$name(args)`, which runs `$body::<true>` compiled for AVX2 + FMA when the CPU has
@@ -167,19 +169,11 @@ fn exp_block<const F: bool>(
             rare |= c == 0.0;
         }
     } else {
-        // Any |Θ|: h = |Θ|/2 reduced modulo π/2, on structure-of-arrays copies.
-        let (mut x, mut y, mut z) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
-        for (i, v) in inp.iter().enumerate() {
-            (x[i], y[i], z[i]) = (v.x, v.y, v.z);
-        }
-        let (mut qa, mut qb, mut qc, mut qd) = ([0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK], [0.0; BLOCK]);
-        for i in 0..BLOCK {
-            let (q, r) = exp_lane::<F>(x[i], y[i], z[i]);
-            (qa[i], qb[i], qc[i], qd[i]) = q;
+        // Any |Θ|: h = |Θ|/2 reduced modulo π/2.
+        for (v, q) in inp.iter().zip(outp.iter_mut()) {
+            let ((a, b, c, d), r) = exp_lane::<F>(v.x, v.y, v.z);
+            *q = Quaternion::new(a, b, c, d);
             rare |= r;
-        }
-        for (i, q) in outp.iter_mut().enumerate() {
-            *q = Quaternion::new(qa[i], qb[i], qc[i], qd[i]);
         }
     }
     if rare {
