@@ -21,7 +21,7 @@
 
 use nalgebra::Vector3;
 
-use crate::euler_extract::GIMBAL_LOCK_TOL;
+use crate::euler_extract::{GIMBAL_LOCK_TOL, assemble, parity};
 use crate::series::wrap_near;
 use crate::vmath::{HALF_PI_SQUARED, SIN_COS_MAX, atan2, cos_sinc_of_square, madd, sin_cos};
 use crate::{EulerAngles, EulerSequence, EulerSolution, Quaternion, ROTATION_TOL, RotationError};
@@ -250,13 +250,10 @@ impl EulerBatch {
         if let Ok(k) = self.locks.binary_search_by_key(&i, |(j, _)| *j) {
             return Some(self.locks[k].1);
         }
-        let pi = core::f64::consts::PI;
-        let middle = if self.sequence.is_symmetric() { -a[1] } else { pi - a[1] };
-        let alternate = [a[0] + pi, middle, a[2] + pi].map(wrap_near);
-        Some(EulerSolution::Regular {
-            principal: EulerAngles::new(self.sequence, a),
-            alternate: EulerAngles::new(self.sequence, alternate),
-        })
+        // Back to the intrinsic order the extraction works in, then its common ending.
+        let (_, reversed) = self.sequence.as_intrinsic_reversed();
+        let intrinsic = if reversed { [a[2], a[1], a[0]] } else { a };
+        Some(assemble(self.sequence, reversed, intrinsic, None))
     }
 }
 
@@ -293,11 +290,6 @@ impl EulerAngles<f64> {
         euler_simd(qs, sequence, angles, locks)?;
         Ok(batch)
     }
-}
-
-/// Parity ε of the zero-based axes (i, j, ·): +1 cyclic, −1 anticyclic.
-const fn parity(i: usize, j: usize) -> f64 {
-    if (j + 3 - i) % 3 == 1 { 1.0 } else { -1.0 }
 }
 
 /// Euler extraction over all blocks (see [`EulerAngles::from_quaternions`]): one loop per

@@ -71,7 +71,7 @@ impl<T: Scalar> EulerSolution<T> {
 
 /// Parity ε of the zero-based axes (i, j, k) all distinct: +1 cyclic, −1 anticyclic.
 #[inline]
-fn parity(i: usize, j: usize) -> f64 {
+pub(crate) const fn parity(i: usize, j: usize) -> f64 {
     if (j + 3 - i) % 3 == 1 { 1.0 } else { -1.0 }
 }
 
@@ -125,7 +125,7 @@ impl<T: Scalar> EulerAngles<T> {
         let [ai, aj, ak] = seq.axes();
         let (i, j, k) = (ai.i0(), aj.i0(), ak.i0());
         let comp = [q.b, q.c, q.d];
-        let (w, pi) = (q.a, T::pi());
+        let w = q.a;
         let two = T::lit(2.0);
         let (alpha, beta, gamma, lock_measure, sign, plus_determined);
         if i != k {
@@ -153,23 +153,8 @@ impl<T: Scalar> EulerAngles<T> {
             sign = if h_ab.re() >= h_cd.re() { 1 } else { -1 };
             plus_determined = if sign > 0 { two * th_p } else { two * th_m };
         }
-        let out = |a: T, b: T, c: T| {
-            let ang = if reversed { [c, b, a] } else { [a, b, c] };
-            EulerAngles::new(sequence, ang.map(wrap_angle))
-        };
-        if lock_measure <= GIMBAL_LOCK_TOL {
-            let combination = wrap_angle(plus_determined);
-            let applied = if reversed && sign < 0 { wrap_angle(-combination) } else { combination };
-            return EulerSolution::GimbalLock {
-                middle: beta,
-                combination: applied,
-                sign,
-                representative: out(combination, beta, T::zero()),
-            };
-        }
-        let alternate =
-            if i != k { out(alpha + pi, pi - beta, gamma + pi) } else { out(alpha + pi, -beta, gamma + pi) };
-        EulerSolution::Regular { principal: out(alpha, beta, gamma), alternate }
+        let lock = (lock_measure <= GIMBAL_LOCK_TOL).then_some((plus_determined, sign));
+        assemble(sequence, reversed, [alpha, beta, gamma], lock)
     }
 
     /// The generic extraction without the orthonormality check, with the lock tolerance
@@ -184,7 +169,6 @@ impl<T: Scalar> EulerAngles<T> {
         let (seq, reversed) = sequence.as_intrinsic_reversed();
         let [ai, aj, ak] = seq.axes();
         let (i, j, k) = (ai.i0(), aj.i0(), ak.i0());
-        let pi = T::pi();
         let (alpha, beta, gamma, lock_measure, sign);
         if i != k {
             // Tait–Bryan: 𝓡_ik = ε sin β, 𝓡_ii = cos β cos γ, 𝓡_ij = −ε cos β sin γ, …
@@ -208,26 +192,48 @@ impl<T: Scalar> EulerAngles<T> {
             // F2.13.8 (corrected): β = 0 fixes α + γ, β = π fixes α − γ.
             sign = if r[(i, i)].re() >= 0.0 { 1 } else { -1 };
         }
-        let out = |a: T, b: T, c: T| {
-            let ang = if reversed { [c, b, a] } else { [a, b, c] };
-            EulerAngles::new(sequence, ang.map(wrap_angle))
-        };
-        if lock_measure <= lock_tol {
-            // Gimbal lock: set γ = 0, then 𝓡_i(α) = 𝓡 𝓡_j(β)ᵀ and α is the combination.
+        // Gimbal lock: set γ = 0, then 𝓡_i(α) = 𝓡 𝓡_j(β)ᵀ and α is the combination.
+        let lock = (lock_measure <= lock_tol).then(|| {
             let m = r * rotation_about(aj, -beta);
             let (p, q) = ((i + 1) % 3, (i + 2) % 3);
-            let combination = wrap_angle(m[(q, p)].atan2(m[(p, p)]));
-            // Extrinsic: the reversed sequence fixes γ + sign·α = sign·(α + sign·γ).
-            let applied = if reversed && sign < 0 { wrap_angle(-combination) } else { combination };
-            return EulerSolution::GimbalLock {
-                middle: beta,
-                combination: applied,
-                sign,
-                representative: out(combination, beta, T::zero()),
-            };
-        }
-        let alternate =
-            if i != k { out(alpha + pi, pi - beta, gamma + pi) } else { out(alpha + pi, -beta, gamma + pi) };
-        EulerSolution::Regular { principal: out(alpha, beta, gamma), alternate }
+            (m[(q, p)].atan2(m[(p, p)]), sign)
+        });
+        assemble(sequence, reversed, [alpha, beta, gamma], lock)
+    }
+}
+
+/// The common end of both extractions: from the intrinsic angles (α, β, γ) of
+/// `sequence.as_intrinsic_reversed()` (`reversed` for an extrinsic sequence), the solution in
+/// the order applied. `lock` is `Some((α + sign·γ, sign))` at gimbal lock, unwrapped.
+///
+/// Book: Facts 2.13.3–8: the alternate solution is (α+π, π−β, γ+π) for Tait–Bryan sequences
+/// and (α+π, −β, γ+π) for symmetric ones; at the lock (F2.13.5, F2.13.8 corrected) the
+/// representative is (combination, β, 0).
+pub(crate) fn assemble<T: Scalar>(
+    sequence: EulerSequence,
+    reversed: bool,
+    [alpha, beta, gamma]: [T; 3],
+    lock: Option<(T, i8)>,
+) -> EulerSolution<T> {
+    let out = |a: T, b: T, c: T| {
+        let ang = if reversed { [c, b, a] } else { [a, b, c] };
+        EulerAngles::new(sequence, ang.map(wrap_angle))
+    };
+    if let Some((combination, sign)) = lock {
+        let combination = wrap_angle(combination);
+        // Extrinsic: the reversed sequence fixes γ + sign·α = sign·(α + sign·γ).
+        let applied = if reversed && sign < 0 { wrap_angle(-combination) } else { combination };
+        return EulerSolution::GimbalLock {
+            middle: beta,
+            combination: applied,
+            sign,
+            representative: out(combination, beta, T::zero()),
+        };
+    }
+    let pi = T::pi();
+    let middle = if sequence.is_symmetric() { -beta } else { pi - beta };
+    EulerSolution::Regular {
+        principal: out(alpha, beta, gamma),
+        alternate: out(alpha + pi, middle, gamma + pi),
     }
 }
