@@ -22,7 +22,7 @@
 use nalgebra::Vector3;
 
 use crate::euler_extract::{GIMBAL_LOCK_TOL, assemble, parity};
-use crate::series::wrap_near;
+use crate::series::{all_finite, wrap_near};
 use crate::vmath::{HALF_PI_SQUARED, SIN_COS_MAX, atan2, cos_sinc_of_square, madd, sin_cos};
 use crate::{EulerAngles, EulerSequence, EulerSolution, Quaternion, ROTATION_TOL, RotationError};
 
@@ -178,7 +178,7 @@ fn exp_block<const F: bool>(
     }
     if rare {
         for (i, (v, q)) in inp.iter().zip(outp.iter_mut()).enumerate() {
-            if !(v.x.is_finite() && v.y.is_finite() && v.z.is_finite()) {
+            if !all_finite([v.x, v.y, v.z]) {
                 return Err(RotationError::at(start + i, RotationError::NonFinite { what: "angle vector" }));
             }
             if 0.5 * v.norm() > SIN_COS_MAX || q.a == 0.0 {
@@ -376,16 +376,7 @@ fn euler_seq<const F: bool, const I: usize, const J: usize, const K: usize>(
         if rare {
             for (l, (q, out)) in inp.iter().zip(outp.iter_mut()).enumerate() {
                 let index = blk * BLOCK + l;
-                if !(q.a.is_finite() && q.b.is_finite() && q.c.is_finite() && q.d.is_finite()) {
-                    return Err(RotationError::at(index, RotationError::NonFinite { what: "quaternion" }));
-                }
-                let defect = (q.norm() - 1.0).abs();
-                if defect > ROTATION_TOL {
-                    return Err(RotationError::at(
-                        index,
-                        RotationError::NotUnit { defect, tol: ROTATION_TOL },
-                    ));
-                }
+                q.check_unit(ROTATION_TOL).map_err(|err| RotationError::at(index, err))?;
                 let s = EulerAngles::from_quaternion(q, sequence);
                 if let EulerSolution::GimbalLock { representative, .. } = s {
                     *out = representative.angles;

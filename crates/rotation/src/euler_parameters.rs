@@ -131,6 +131,21 @@ impl<T: Scalar> Quaternion<T> {
         }
     }
 
+    /// `Ok` when every component is finite and |‖𝐪‖ − 1| ≤ `tol`: the check of every checked
+    /// constructor that takes Euler parameters.
+    ///
+    /// Book: (2.15.20) (‖q‖ = 1).
+    pub(crate) fn check_unit(&self, tol: f64) -> Result<(), RotationError> {
+        if !crate::series::all_finite([self.a, self.b, self.c, self.d]) {
+            return Err(RotationError::NonFinite { what: "quaternion" });
+        }
+        let defect = (self.norm().re() - 1.0).abs();
+        if defect > tol {
+            return Err(RotationError::NotUnit { defect, tol });
+        }
+        Ok(())
+    }
+
     /// `true` when |‖𝐪‖ − 1| ≤ `tol`.
     #[inline]
     pub fn is_unit(&self, tol: f64) -> bool {

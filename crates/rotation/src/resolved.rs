@@ -92,13 +92,7 @@ impl<T: Scalar> Rotation<T> {
     /// # Errors
     /// [`RotationError::NonFinite`], [`RotationError::NotUnit`].
     pub fn from_quaternion_in(a: &Frame<T>, q: &Quaternion<T>, tol: f64) -> Result<Self, RotationError> {
-        if !crate::series::all_finite([q.a, q.b, q.c, q.d]) {
-            return Err(RotationError::NonFinite { what: "quaternion" });
-        }
-        let defect = (q.norm().re() - 1.0).abs();
-        if defect > tol {
-            return Err(RotationError::NotUnit { defect, tol });
-        }
+        q.check_unit(tol)?;
         Ok(Self::from_quaternion_parts(a, q))
     }
 
