@@ -15,3 +15,6 @@ mod laws;
 
 #[path = "ch09/prop.rs"]
 mod prop;
+
+#[path = "ch09/problems.rs"]
+mod problems;
