@@ -18,3 +18,6 @@ mod prop;
 
 #[path = "ch09/problems.rs"]
 mod problems;
+
+#[path = "ch09/sections.rs"]
+mod sections;
