@@ -320,3 +320,9 @@ mod prop {
         }
     }
 }
+
+#[path = "ch10/problems.rs"]
+mod problems;
+
+#[path = "ch10/sections.rs"]
+mod sections;
