@@ -199,3 +199,9 @@ mod prop {
         }
     }
 }
+
+#[path = "ch11/problems.rs"]
+mod problems;
+
+#[path = "ch11/sections.rs"]
+mod sections;
