@@ -134,3 +134,9 @@ fn section_12_6_linearization_reproduces_tables_14_1_and_14_2() {
         }
     }
 }
+
+#[path = "ch12/linearization.rs"]
+mod linearization;
+
+#[path = "ch12/problems.rs"]
+mod problems;
