@@ -173,3 +173,12 @@ fn non_finite_derivatives_are_errors() {
     ac.rho = -1.0;
     assert!(matches!(ac.check(), Err(FlightError::InvalidParameter { .. })));
 }
+
+#[path = "ch13/common.rs"]
+mod common;
+
+#[path = "ch13/sections.rs"]
+mod sections;
+
+#[path = "ch13/problems.rs"]
+mod problems;
