@@ -458,3 +458,12 @@ mod flight_scene {
         assert_eq!(path, "duration");
     }
 }
+
+#[path = "ch14/common.rs"]
+mod common;
+
+#[path = "ch14/problems.rs"]
+mod problems;
+
+#[path = "ch14/sections.rs"]
+mod sections;
