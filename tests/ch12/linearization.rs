@@ -109,7 +109,7 @@ fn theta0() -> impl Strategy<Value = f64> {
 /// A heading Ψ₀, with the hard values 0, ±π/2 and π.
 fn psi0() -> impl Strategy<Value = f64> {
     prop_oneof![
-        4 => -3.14..3.14f64,
+        4 => -std::f64::consts::PI..std::f64::consts::PI,
         1 => prop::sample::select(vec![0.0, FRAC_PI_2, -FRAC_PI_2, std::f64::consts::PI]),
     ]
 }
