@@ -9,6 +9,7 @@ use proptest::prelude::*;
 use vectrix::flight::*;
 use vectrix::nalgebra::Vector3;
 use vectrix::num_dual::Dual64;
+use vectrix::prelude::*;
 
 use crate::common::{GEOMETRY, RHO, U0, Var, aircraft, coefficients, partials, qs};
 use crate::support::EPS;
@@ -182,5 +183,39 @@ proptest! {
             let drag = Dual64::from(0.02) + lift * lift * k;
             prop_assert!((drag.eps - corrected[i]).abs() <= 8.0 * EPS * corrected[i].abs().max(1e-300));
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// §13.5.1.4, (13.5.4)–(13.5.11): dihedral Γ tilts the right wing's normal k̂_n toward ĵ_AC, so
+    /// the normal component of the flow on it is V_n1 + V_n2 = V sin Γ + W cos Γ and the change due
+    /// to dihedral is ΔV_n = W cos Γ + V sin Γ − W ≈ VΓ (13.5.8); the right wing's angle of attack
+    /// grows by δα with tan δα = ΔV_n/U, δα ≈ δβΓ (13.5.10–11), the left wing's falls by as much:
+    /// sideslip to the right rolls the aircraft left, C_lβ < 0. Frame-free: the wing frames are
+    /// F_AC turned by ∓Γ about î_AC. The small-angle error is third order,
+    /// |δα − δβΓ| ≤ |δβΓ|(δβ² + Γ²) for |δβ|, |Γ| ≤ 0.3 (from the Taylor series of atan(tan δβ sin Γ)).
+    #[test]
+    fn eq_13_5_11_dihedral_effect(
+        u in 100.0..900.0f64, beta in -0.3..0.3f64, gamma in 0.0..0.3f64,
+    ) {
+        let ac = Frame::new();
+        let vel = ac.vector(AeroAngles { airspeed: u, alpha: 0.0, beta }.body_velocity());
+        let [_, v, w] = AeroAngles { airspeed: u, alpha: 0.0, beta }.body_velocity();
+        let right = Frame::from_orientation_rel(&ac, &o1(-gamma), 1e-12).unwrap();
+        let left = Frame::from_orientation_rel(&ac, &o1(gamma), 1e-12).unwrap();
+        // right wing up: its span axis has a component along −k̂_AC (up)
+        prop_assert!(right.j().dot(&ac.k()) <= 0.0);
+        let vn = vel.dot(&right.k());
+        prop_assert!((vn - (v * gamma.sin() + w * gamma.cos())).abs() <= 8.0 * EPS * u);
+        let u_axis = vel.dot(&ac.i());
+        let d_alpha_r = vn.atan2(u_axis) - w.atan2(u_axis);
+        let d_alpha_l = vel.dot(&left.k()).atan2(u_axis) - w.atan2(u_axis);
+        prop_assert!((d_alpha_r + d_alpha_l).abs() <= 8.0 * EPS);
+        // W = 0: tan δα = ΔV_n/U = tan δβ sin Γ exactly (13.5.10)
+        prop_assert!((d_alpha_r - (beta.tan() * gamma.sin()).atan()).abs() <= 8.0 * EPS);
+        let approx = beta * gamma;
+        prop_assert!((d_alpha_r - approx).abs() <= approx.abs() * (beta * beta + gamma * gamma) + 8.0 * EPS);
     }
 }
