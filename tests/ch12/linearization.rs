@@ -313,20 +313,15 @@ fn section_12_4_stability_axes_and_erratum_12_4_11() {
     }
 }
 
-/// §12.5 (Ψ₀ = 0) and §12.6: the state-space model ẋ = Ax + Bu of (12.6.1)–(12.6.2) built from
-/// the summary (12.5.1)–(12.5.12) equals the Jacobian of the nonlinear model. The book prints B
-/// (12.6.4) with rows 10–12 (ṗ, q̇, ṙ) all zero: the rotational equations (12.5.10)–(12.5.12)
-/// put J⁻¹ there (erratum, notes [T]), [ṗ, ṙ] = (1/Γ)[[J_zz, J_xz], [J_xz, J_xx]][l, n] with
-/// Γ = J_xxJ_zz − J_xz²; the A of §12.6 is absent from the text and is assembled here.
+/// §12.5 (Ψ₀ = 0): the summary (12.5.1)–(12.5.12), assembled as the state matrix A of the
+/// state-space model (12.6.1) — which §12.6 leaves out — equals the Jacobian of the nonlinear
+/// model. ((12.5.7) prints mü for mu̇.)
 #[test]
-fn section_12_6_state_space_model_and_erratum_12_6_4() {
+fn section_12_5_summary_is_the_jacobian_at_psi0_zero() {
     let frame = airframe();
-    let (jxx, jyy, jzz, jxz) = frame.inertia();
-    let gam = jxx * jzz - jxz * jxz;
-    let m = frame.mass();
     for (u0, th0) in [(150.0, 0.12), (90.0, -0.3), (220.0, 0.0)] {
         let (x0, u_0) = steady(&frame, u0, th0, 0.0);
-        let (a, b) = jacobians(&frame, &x0, &u_0);
+        let (a, _) = jacobians(&frame, &x0, &u_0);
         let w0 = x0[W];
         let (st, ct) = th0.sin_cos();
         let mut a_book = DMatrix::<f64>::zeros(12, 12);
@@ -365,6 +360,22 @@ fn section_12_6_state_space_model_and_erratum_12_6_4() {
                 );
             }
         }
+    }
+}
+
+/// §12.6, (12.6.4) corrected: the input matrix B of ẋ = Ax + Bu for u of (12.6.2). The book
+/// prints rows 10–12 (ṗ, q̇, ṙ) all zero; the rotational equations (12.5.10)–(12.5.12) put J⁻¹
+/// there (erratum, notes [T]): [ṗ, ṙ] = (1/Γ)[[J_zz, J_xz], [J_xz, J_xx]][l, n],
+/// Γ = J_xxJ_zz − J_xz², q̇ = m/J_yy, for the aerodynamic and the thrust moments alike.
+#[test]
+fn section_12_6_input_matrix_and_erratum_12_6_4() {
+    let frame = airframe();
+    let (jxx, jyy, jzz, jxz) = frame.inertia();
+    let gam = jxx * jzz - jxz * jxz;
+    let m = frame.mass();
+    for (u0, th0) in [(150.0, 0.12), (90.0, -0.3), (220.0, 0.0)] {
+        let (x0, u_0) = steady(&frame, u0, th0, 0.0);
+        let (_, b) = jacobians(&frame, &x0, &u_0);
         let mut b_book = DMatrix::<f64>::zeros(12, 11);
         // rows 4–6 of (12.6.4) as printed
         b_book[(U, 0)] = 1.0 / m;

@@ -219,3 +219,47 @@ proptest! {
         prop_assert!((d_alpha_r - approx).abs() <= approx.abs() * (beta * beta + gamma * gamma) + 8.0 * EPS);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+
+    /// §13.1, §13.4 and the nondimensional variables of §13.3: C_D, C_E, C_L = force/(p_dS),
+    /// C_l = L_A/(p_dSb), C_m = M_A/(p_dSc̄), C_n = N_A/(p_dSb) (13.4.1–3) with the rates scaled
+    /// as bp/2V, c̄q/2V, br/2V make the coefficients depend on the flight only through α, β,
+    /// the nondimensional rates and the controls: a geometrically scaled copy of the aircraft
+    /// (S ↦ k²S, b, c̄ ↦ kb, kc̄) flying at another speed and density with the same nondimensional
+    /// state has the same coefficients (dynamic similarity).
+    #[test]
+    fn section_13_4_coefficients_are_similarity_invariants(
+        k in 0.2..5.0f64, v1 in 200.0..800.0f64, v2 in 200.0..800.0f64, rho2 in 0.0003..0.003f64,
+        alpha in -0.3..0.3f64, beta in -0.3..0.3f64, rates in [-0.05..0.05f64, -0.05..0.05f64, -0.05..0.05f64],
+        ctrl in [-0.2..0.2f64, -0.2..0.2f64, -0.2..0.2f64],
+    ) {
+        // the speed derivatives are taken about each aircraft's own U₀ = its speed here
+        let c = Coefficients { cl_u: 0.0, cd_u: 0.0, cm_u: 0.0, ..coefficients() };
+        let a1 = aircraft(c);
+        let geo2 = Geometry { area: k * k * GEOMETRY.area, chord: k * GEOMETRY.chord, span: k * GEOMETRY.span };
+        let a2 = Aircraft { geometry: geo2, rho: rho2, ..aircraft(c) };
+        let coeffs = |ac: &Aircraft, v: f64| {
+            let g = ac.geometry;
+            // nondimensional rates (bp/2V, c̄q/2V, br/2V) → dimensional
+            let pqr = [rates[0] * 2.0 * v / g.span, rates[1] * 2.0 * v / g.chord, rates[2] * 2.0 * v / g.span];
+            let x = AircraftState {
+                position: [0.0; 3],
+                velocity: AeroAngles { airspeed: v, alpha, beta }.body_velocity(),
+                attitude: Euler321::default(),
+                omega: pqr,
+            };
+            let u = Controls { elevator: ctrl[0], aileron: ctrl[1], rudder: ctrl[2], thrust: 0.0 };
+            let fm = ac.forces(&x, &u, 0.0, 0.0);
+            let pds = ac.dynamic_pressure(v) * g.area;
+            [fm.drag / pds, fm.side_drag / pds, fm.lift / pds, fm.roll / (pds * g.span), fm.pitch / (pds * g.chord), fm.yaw / (pds * g.span)]
+        };
+        let (c1, c2) = (coeffs(&a1, v1), coeffs(&a2, v2));
+        // each coefficient sums ≲ 10 terms of size ≤ 5 (coefficients ≤ 15 times angles, rates and
+        // controls ≤ 0.3): an absolute rounding bound of 64 ε · 50
+        for i in 0..6 {
+            prop_assert!((c1[i] - c2[i]).abs() <= 64.0 * EPS * 50.0, "coefficient {i}: {} vs {}", c1[i], c2[i]);
+        }
+    }
+}
