@@ -75,7 +75,7 @@ fn agrees_with_printed<L: Lagrangian>(
 
 /// |got − want| ≤ tol (absolute).
 #[track_caller]
-fn assert_abs(got: f64, want: f64, tol: f64) {
+pub fn assert_abs(got: f64, want: f64, tol: f64) {
     assert!(
         (got - want).abs() <= tol,
         "got {got:e}, want {want:e}, |err| = {:e} > {tol:e}",

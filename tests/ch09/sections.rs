@@ -14,17 +14,8 @@ use vectrix::num_dual::{Dual64, HyperDual64};
 use vectrix::prelude::*;
 use vectrix::rotation::{Axis, orientation_about};
 
+use super::problems::assert_abs;
 use crate::support::EPS;
-
-/// |got − want| ≤ tol (absolute).
-#[track_caller]
-fn assert_abs(got: f64, want: f64, tol: f64) {
-    assert!(
-        (got - want).abs() <= tol,
-        "got {got:e}, want {want:e}, |err| = {:e} > {tol:e}",
-        (got - want).abs()
-    );
-}
 
 /// x^× with x^× y = x × y.
 fn cross<T: Scalar>(x: &Vector3<T>) -> Matrix3<T> {

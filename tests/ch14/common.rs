@@ -115,3 +115,20 @@ pub fn f104() -> DMatrix<f64> {
     ]);
     a
 }
+
+/// (A, B) extended by k states whose rates are linear in the state: row i of `rows` lists the
+/// (column, coefficient) pairs of the i-th new rate, e.g. ψ̇ = r, ẏ = U₀(δβ + ψ) (14.3.17) or
+/// ẋ = u, ḣ = U₀(θ − δα) (14.1.15). The new states have no input.
+pub fn augment(a: &DMatrix<f64>, b: &DMatrix<f64>, rows: &[&[(usize, f64)]]) -> (DMatrix<f64>, DMatrix<f64>) {
+    let (n, m, k) = (a.nrows(), b.ncols(), rows.len());
+    let mut aa = DMatrix::zeros(n + k, n + k);
+    aa.view_mut((0, 0), (n, n)).copy_from(a);
+    for (i, row) in rows.iter().enumerate() {
+        for &(j, c) in row.iter() {
+            aa[(n + i, j)] = c;
+        }
+    }
+    let mut bb = DMatrix::zeros(n + k, m);
+    bb.view_mut((0, 0), (n, m)).copy_from(b);
+    (aa, bb)
+}

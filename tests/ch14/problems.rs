@@ -11,7 +11,7 @@ use vectrix::lti::{Complex64, FinalValue, StateSpace, expm, final_value, routh};
 use vectrix::nalgebra::{DMatrix, DVector};
 use vectrix::num_dual::{Dual64, DualNum};
 
-use crate::common::{f104, longitudinal, printed};
+use crate::common::{augment, f104, longitudinal, printed};
 use crate::support::EPS;
 
 /// Sample points s for frequency-domain identities: on and off the imaginary axis.
@@ -81,11 +81,7 @@ fn problem_14_9_3_rudder_impulse_leaves_a_new_heading() {
     let lat = business_jet_lateral();
     let sys4 = lat.state_space().unwrap();
     // augmented with ψ̇ = r (12.4.17): x = [r, δβ, p, φ, ψ]
-    let mut a = DMatrix::zeros(5, 5);
-    a.view_mut((0, 0), (4, 4)).copy_from(sys4.a());
-    a[(4, 0)] = 1.0;
-    let mut b = DMatrix::zeros(5, 2);
-    b.view_mut((0, 0), (4, 2)).copy_from(sys4.b());
+    let (a, b) = augment(sys4.a(), sys4.b(), &[&[(0, 1.0)]]);
     let sys = StateSpace::new(a.clone(), b.clone(), DMatrix::identity(5, 5), DMatrix::zeros(5, 2)).unwrap();
     let psi = sys.to_tf(4, 1).unwrap();
     assert_eq!(psi.den().zero_roots(), 1, "ψ/δr has exactly one pole at s = 0");
@@ -213,11 +209,7 @@ fn problem_14_9_7_f104_phugoid_eigenflight() {
     let x0: Vec<f64> = v.iter().map(|z| (c * z).re).collect();
     assert!((x0[2] - theta0).abs() <= 4.0 * EPS * theta0);
     // augmented state [u, δα, θ, θ̇, x, h]
-    let mut aa = DMatrix::zeros(6, 6);
-    aa.view_mut((0, 0), (4, 4)).copy_from(&a);
-    aa[(4, 0)] = 1.0;
-    aa[(5, 1)] = -u0;
-    aa[(5, 2)] = u0;
+    let (aa, _) = augment(&a, &DMatrix::zeros(4, 1), &[&[(0, 1.0)], &[(1, -u0), (2, u0)]]);
     let y0 = DVector::from_iterator(6, x0.iter().copied().chain([0.0, 0.0]));
     let period = 2.0 * PI / lam.im;
     for k in 1..=30 {

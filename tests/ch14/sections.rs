@@ -10,7 +10,7 @@ use vectrix::lti::{Complex64, FinalValue, StateSpace, final_value};
 use vectrix::nalgebra::DMatrix;
 use vectrix::num_dual::Dual64;
 
-use crate::common::{lateral, longitudinal, resolvent_b};
+use crate::common::{augment, lateral, longitudinal, resolvent_b};
 use crate::support::EPS;
 
 /// Sample points s off the poles.
@@ -94,13 +94,7 @@ proptest! {
     #[test]
     fn eq_14_1_15_six_state_longitudinal_corrected(d in longitudinal()) {
         let sys4 = d.state_space().unwrap();
-        let mut a = DMatrix::zeros(6, 6);
-        a.view_mut((0, 0), (4, 4)).copy_from(sys4.a());
-        a[(4, 0)] = 1.0;
-        a[(5, 1)] = -d.u0;
-        a[(5, 3)] = d.u0;
-        let mut b = DMatrix::zeros(6, 1);
-        b.view_mut((0, 0), (4, 1)).copy_from(sys4.b());
+        let (a, b) = augment(sys4.a(), sys4.b(), &[&[(0, 1.0)], &[(1, -d.u0), (3, d.u0)]]);
         prop_assert_eq!(a[(3, 2)], 1.0);
         for (re, im) in S {
             let s = Complex64::new(re, im);
@@ -118,13 +112,7 @@ proptest! {
     #[test]
     fn eq_14_3_17_six_state_lateral_drift(d in lateral()) {
         let sys4 = d.state_space().unwrap();
-        let mut a = DMatrix::zeros(6, 6);
-        a.view_mut((0, 0), (4, 4)).copy_from(sys4.a());
-        a[(4, 0)] = 1.0;
-        a[(5, 1)] = d.u0;
-        a[(5, 4)] = d.u0;
-        let mut b = DMatrix::zeros(6, 2);
-        b.view_mut((0, 0), (4, 2)).copy_from(sys4.b());
+        let (a, b) = augment(sys4.a(), sys4.b(), &[&[(0, 1.0)], &[(1, d.u0), (4, d.u0)]]);
         for (re, im) in S {
             let s = Complex64::new(re, im);
             let g6 = resolvent_b(&a, &b, s);
@@ -145,13 +133,7 @@ proptest! {
 fn eq_14_4_25_drift_diverges_after_an_aileron_impulse() {
     let d = business_jet_lateral();
     let sys4 = d.state_space().unwrap();
-    let mut a = DMatrix::zeros(6, 6);
-    a.view_mut((0, 0), (4, 4)).copy_from(sys4.a());
-    a[(4, 0)] = 1.0;
-    a[(5, 1)] = d.u0;
-    a[(5, 4)] = d.u0;
-    let mut b = DMatrix::zeros(6, 2);
-    b.view_mut((0, 0), (4, 2)).copy_from(sys4.b());
+    let (a, b) = augment(sys4.a(), sys4.b(), &[&[(0, 1.0)], &[(1, d.u0), (4, d.u0)]]);
     let sys = StateSpace::new(a, b, DMatrix::identity(6, 6), DMatrix::zeros(6, 2)).unwrap();
     let gy = sys.to_tf(5, 0).unwrap();
     let gr = sys4.to_tf(0, 0).unwrap();
