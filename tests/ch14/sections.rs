@@ -13,7 +13,10 @@ use vectrix::num_dual::Dual64;
 use crate::common::{augment, lateral, longitudinal, resolvent_b};
 use crate::support::EPS;
 
-/// Sample points s off the poles.
+/// Sample points s off the poles. The frequency-domain identities below compare complex linear
+/// solves of (sI − A) (or the book's 3 × 3 matrix) for derivatives spanning ≈ 1e6 in size; at
+/// these points the systems are well conditioned (κ ≲ 1e5), so a relative 1e-9 keeps a factor
+/// of ≈ 100 over the rounding they lose.
 const S: [(f64, f64); 4] = [(0.0, 0.3), (0.1, 1.7), (-0.2, 4.0), (2.0, -0.5)];
 
 /// max |a − b| over entries, relative to max |b|.
