@@ -5,9 +5,8 @@ use std::time::Instant;
 
 use super::dense::DenseStep;
 use super::events::{Event, EventHit, crosses, locate};
-use super::{dop853, dopri5};
-use crate::error::{check_interval, check_step, check_tol};
-use crate::state::{State, check_state, eval};
+use super::stepper::Stepper;
+use crate::state::{State, eval};
 use crate::{OdeError, Work};
 
 /// The embedded pair of an adaptive explicit method.
@@ -157,128 +156,55 @@ impl Adaptive {
     /// As [`Adaptive::solve`].
     pub fn solve_with_events<S: State, F: FnMut(f64, &S) -> S>(
         &self,
-        mut f: F,
+        f: F,
         t0: f64,
         y0: &S,
         t1: f64,
         events: &mut [Event<'_, S>],
     ) -> Result<Solution<S>, OdeError> {
         let start = Instant::now();
-        check_interval(t0, t1)?;
-        check_tol("rtol", self.rtol)?;
-        check_tol("atol", self.atol)?;
-        let h_max = self.h_max.unwrap_or(t1 - t0);
-        check_step(h_max)?;
-        if let Some(h0) = self.h0 {
-            check_step(h0)?;
-        }
-        check_state(t0, y0)?;
-        let tol = (self.rtol, self.atol);
-        let (order, beta, fac_min, fac_max) = match self.pair {
-            Pair::Dopri5 => (5.0, 0.04, 0.2, 10.0),
-            Pair::Dop853 => (8.0, 0.0, 0.333, 6.0),
-        };
-        let expo1 = 1.0 / order - beta * 0.75;
-        let safe = 0.9;
-
-        let mut work = Work::default();
+        let mut st = Stepper::new(self, f, t0, y0.clone(), t1)?;
         // room for a typical run's accepted steps up front (no early reallocations)
         let (mut ts, mut ys) = (Vec::with_capacity(256), Vec::with_capacity(256));
         ts.push(t0);
         ys.push(y0.clone());
-        let mut sol =
-            Solution { t: ts, y: ys, events: Vec::new(), terminated: false, work, dense: Vec::new() };
-        let mut t = t0;
-        let mut y = y0.clone();
-        let mut k: Vec<S> = Vec::with_capacity(16);
-        k.push(eval(&mut f, t, &y, t, 1, &mut work.fevals)?);
-        let mut h = match self.h0 {
-            Some(h0) => h0.min(h_max),
-            None => initial_step(&mut f, t, &y, &k[0], order, h_max, tol, &mut work)?,
+        let mut sol = Solution {
+            t: ts,
+            y: ys,
+            events: Vec::new(),
+            terminated: false,
+            work: Work::default(),
+            dense: Vec::new(),
         };
-        let mut g_prev: Vec<f64> = events.iter_mut().map(|e| (e.g)(t, &y)).collect();
-        let mut fac_old = 1e-4_f64;
-        let mut last_rejected = false;
+        let mut g_prev: Vec<f64> = events.iter_mut().map(|e| (e.g)(t0, y0)).collect();
         let want_dense = self.dense || !events.is_empty();
-
-        loop {
-            if work.accepted + work.rejected >= self.max_steps {
-                return Err(OdeError::TooManySteps { t, max_steps: self.max_steps });
-            }
-            if 0.1 * h.abs() <= t.abs() * f64::EPSILON {
-                return Err(OdeError::StepSizeUnderflow { t, h });
-            }
-            // last step lands exactly on t1 (Hairer: if t + 1.01h ≥ t1, h = t1 − t)
-            let last = t + 1.01 * h >= t1;
-            if last {
-                h = t1 - t;
-            }
-            let (y1, err) = match self.pair {
-                Pair::Dopri5 => dopri5::step(&mut f, t, &y, h, &mut k, tol, &mut work)?,
-                Pair::Dop853 => dop853::step(&mut f, t, &y, h, &mut k, tol, &mut work)?,
-            };
-            // step-size factor: fac = err^{expo1} / fac_old^β / safe, clamped
-            let fac11 = err.powf(expo1);
-            if err <= 1.0 {
-                let stab = if beta == 0.0 { 1.0 } else { fac_old.powf(beta) };
-                let fac = (fac11 / stab / safe).clamp(1.0 / fac_max, 1.0 / fac_min);
-                let mut h_new = (h / fac).min(h_max);
-                if last_rejected {
-                    h_new = h_new.min(h);
+        while !st.done() {
+            st.step()?;
+            let (t, t_new) = (st.step_start().unwrap_or(t0), st.t());
+            let dense = if want_dense { Some(st.dense()?.clone()) } else { None };
+            // events: sign changes of g over [t, t_new], located on the dense output
+            if let Some(d) = &dense
+                && !events.is_empty()
+                && let Some(t_stop) = self.find_events(events, &mut g_prev, d, t, t_new, st.y(), &mut sol)
+            {
+                sol.t.push(t_stop);
+                sol.y.push(d.eval(t_stop));
+                sol.terminated = true;
+                if self.dense {
+                    sol.dense.push(d.clone());
                 }
-                fac_old = err.max(1e-4);
-                work.accepted += 1;
-                last_rejected = false;
-                let t_new = if last { t1 } else { t + h };
-                // f(t + h, y₁): FSAL stage of DOPRI5, the next k₁ (and k₁₃) for DOP853
-                let f1 = match self.pair {
-                    Pair::Dopri5 => k[6].clone(),
-                    Pair::Dop853 => eval(&mut f, t_new, &y1, t, 13, &mut work.fevals)?,
-                };
-                let dense = if want_dense {
-                    Some(match self.pair {
-                        Pair::Dopri5 => dopri5::dense(t, &y, &y1, h, &k),
-                        Pair::Dop853 => dop853::dense(&mut f, t, &y, &y1, h, &mut k, &f1, &mut work)?,
-                    })
-                } else {
-                    None
-                };
-                // events: sign changes of g over [t, t_new], located on the dense output
-                if let Some(d) = &dense
-                    && !events.is_empty()
-                    && let Some(t_stop) = self.find_events(events, &mut g_prev, d, t, t_new, &y1, &mut sol)
-                {
-                    sol.t.push(t_stop);
-                    sol.y.push(d.eval(t_stop));
-                    sol.terminated = true;
-                    if self.dense {
-                        sol.dense.push(d.clone());
-                    }
-                    break;
-                }
-                if self.dense
-                    && let Some(d) = dense
-                {
-                    sol.dense.push(d);
-                }
-                t = t_new;
-                y = y1;
-                k.clear();
-                k.push(f1);
-                sol.t.push(t);
-                sol.y.push(y.clone());
-                if last {
-                    break;
-                }
-                h = h_new;
-            } else {
-                h /= (fac11 / safe).min(1.0 / fac_min);
-                work.rejected += 1;
-                last_rejected = true;
+                break;
             }
+            if self.dense
+                && let Some(d) = dense
+            {
+                sol.dense.push(d);
+            }
+            sol.t.push(t_new);
+            sol.y.push(st.y().clone());
         }
-        work.wall = start.elapsed();
-        sol.work = work;
+        sol.work = st.work();
+        sol.work.wall = start.elapsed();
         Ok(sol)
     }
 
@@ -319,7 +245,7 @@ impl Adaptive {
 /// Hairer's starting step `hinit`: h with ‖h f₀‖ ≈ 0.01‖y₀‖, refined by an estimate of
 /// the second derivative so that the first local error is near the tolerance.
 #[allow(clippy::too_many_arguments)]
-fn initial_step<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn initial_step<S: State, F: FnMut(f64, &S) -> S>(
     f: &mut F,
     t: f64,
     y: &S,
