@@ -17,6 +17,7 @@ mod impacts;
 mod invariants;
 mod kin;
 mod outputs;
+mod query;
 mod rhs;
 mod run;
 mod source;
@@ -24,6 +25,7 @@ pub mod spec;
 
 pub use error::SceneError;
 pub use invariants::Invariant;
+pub use query::StateQuery;
 pub use run::{
     DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, Drift, InvariantValue, MAX_SAMPLE_VALUES, MAX_SAMPLES, Run,
     RunControl, RunWork, Stop, StopReason,

@@ -122,6 +122,17 @@ impl Scene {
         Ok(acc.as_slice().to_vec())
     }
 
+    /// M + Σ b g gᵀ: the mass matrix with the translational inerters (g: the row of ℓ̇ = g·v).
+    pub(crate) fn mass_with_inerters(&self, q: &[f64], mut m: DMatrix<f64>) -> Result<DMatrix<f64>, String> {
+        for e in &self.built.effects {
+            if let Effect::Inerter { a: pa, b: pb, b_in } = e {
+                let g = self.rate_row(q, &[*pa, *pb])?.row(0).transpose();
+                m += &g * g.transpose() * *b_in;
+            }
+        }
+        Ok(m)
+    }
+
     /// Row of ℓ̇ = r̂·(v_b − v_a) as a linear function of v (one row), for an inerter.
     fn rate_row(&self, q: &[f64], ends: &[super::build::At; 2]) -> Result<DMatrix<f64>, String> {
         let b = &self.built;
