@@ -487,3 +487,194 @@ fn issue_16_weld_only_scene_runs() {
     assert_eq!(d.max_abs, 0.0);
     assert!(matches!(d.initial, InvariantValue::Scalar(u) if (u - 9.81 * 3.0).abs() < 1e-12));
 }
+
+// ----------------------------------------------------------- item 8: the format reference
+
+/// The backticked names after "expected" in a serde message (`expected one of `a`, `b``).
+fn expected_names(message: &str) -> Vec<String> {
+    let Some((_, tail)) = message.split_once("expected") else { return vec![] };
+    tail.split('`').skip(1).step_by(2).map(str::to_string).collect()
+}
+
+/// The message of loading `text`, which must fail.
+fn message_of(text: &str) -> String {
+    match vectrix::flight::scene::AnyScene::from_toml(text, "probe.toml") {
+        Err(SceneError::Parse { message, .. }) | Err(SceneError::Invalid { message, .. }) => message,
+        other => panic!("expected an error, got {other:?}"),
+    }
+}
+
+#[test]
+fn issue_16_scene_reference_documents_every_key_and_variant() {
+    let doc = std::fs::read_to_string(format!("{}/docs/scenes.md", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let mut missing = Vec::new();
+    let mut need = |what: &str, names: Vec<String>| {
+        assert!(!names.is_empty(), "{what}: no names found (probe broken)");
+        for n in names {
+            if !doc.contains(&format!("`{n}`"))
+                && !doc.contains(&format!("`{n} "))
+                && !doc.contains(&format!("`{n}:"))
+            {
+                missing.push(format!("{what}: {n}"));
+            }
+        }
+    };
+    let base = "name = \"p\"\nduration = 1.0\n";
+    let body = |joint: &str, mass: &str, extra: &str| {
+        format!("{base}[[bodies]]\nname = \"b\"\njoint = {joint}\nmass = {mass}\n{extra}")
+    };
+    let sphere = "{ shape = \"sphere\", mass = 1.0, radius = 0.1 }";
+    let free = "{ type = \"free\" }";
+    need("top-level key", expected_names(&message_of(&format!("{base}zzz = 1\n"))));
+    need("body key", expected_names(&message_of(&body(free, sphere, "zzz = 1\n"))));
+    let joints = expected_names(&message_of(&body("{ type = \"zzz\" }", sphere, "")));
+    for j in &joints {
+        let fields =
+            expected_names(&message_of(&body(&format!("{{ type = \"{j}\", zzz = 1 }}"), sphere, "")));
+        need(&format!("joint {j} key"), if fields.is_empty() { vec![j.clone()] } else { fields });
+    }
+    need("joint type", joints);
+    let shapes = expected_names(&message_of(&body(free, "{ shape = \"zzz\" }", "")));
+    for s in &shapes {
+        need(
+            &format!("shape {s} key"),
+            expected_names(&message_of(&body(free, &format!("{{ shape = \"{s}\", zzz = 1 }}"), ""))),
+        );
+    }
+    need("mass shape", shapes);
+    let scene = |effect: &str| format!("{}\n[[effects]]\n{effect}\n", body(free, sphere, ""));
+    let effects = expected_names(&message_of(&scene("type = \"zzz\"")));
+    for e in &effects {
+        need(
+            &format!("effect {e} key"),
+            expected_names(&message_of(&scene(&format!("type = \"{e}\"\nzzz = 1")))),
+        );
+    }
+    need("effect type", effects);
+    let force = |profile: &str| {
+        scene(&format!("type = \"torque\"\nbody = \"b\"\ndirection = [0.0, 0.0, 1.0]\nprofile = {profile}"))
+    };
+    let kinds = expected_names(&message_of(&force("{ kind = \"zzz\" }")));
+    for k in &kinds {
+        need(
+            &format!("profile {k} key"),
+            expected_names(&message_of(&force(&format!("{{ kind = \"{k}\", zzz = 1 }}")))),
+        );
+    }
+    need("profile kind", kinds);
+    need(
+        "point key",
+        expected_names(&message_of(&scene(
+            "type = \"spring\"\nk = 1.0\na = { body = \"b\", zzz = 1 }\nb = { body = \"ground\" }",
+        ))),
+    );
+    need(
+        "method key",
+        expected_names(&message_of(&format!(
+            "{base}method = {{ name = \"dop853\", rtol = 1e-6, zzz = 1 }}\n"
+        ))),
+    );
+    need(
+        "frame key",
+        expected_names(&message_of(&format!(
+            "{base}[[frames]]\nname = \"f\"\naxis = [1.0, 0.0, 0.0]\nangle = 0.1\nzzz = 1\n"
+        ))),
+    );
+    need(
+        "dipole key",
+        expected_names(&message_of(&scene(
+            "type = \"dipoles\"\ndipoles = [{ body = \"b\", moment = [0.0, 0.0, 1.0], zzz = 1 }]",
+        ))),
+    );
+    // outputs and checks: the valid lists of their error messages
+    let valid = |m: String| -> Vec<String> {
+        m.split("valid:")
+            .nth(1)
+            .unwrap_or("")
+            .split(',')
+            .map(|w| w.trim().trim_end_matches(":BODY").to_string())
+            .filter(|w| !w.is_empty())
+            .collect()
+    };
+    need(
+        "output",
+        valid(message_of(&format!(
+            "{base}outputs = [\"zzz\"]\n[[bodies]]\nname = \"b\"\njoint = {free}\nmass = {sphere}\n"
+        ))),
+    );
+    need(
+        "check",
+        valid(message_of(&format!(
+            "{base}checks = [\"zzz\"]\n[[bodies]]\nname = \"b\"\njoint = {free}\nmass = {sphere}\n"
+        ))),
+    );
+    // flight scenes
+    let flight =
+        "name = \"f\"\nduration = 1.0\n[aircraft]\nmodel = \"business_jet\"\n[trim]\nairspeed = 675.0\n";
+    need("flight key", expected_names(&message_of(&format!("zzz = 1\n{flight}"))));
+    need(
+        "aircraft key",
+        expected_names(&message_of(
+            &flight.replace("model = \"business_jet\"", "model = \"business_jet\"\nzzz = 1"),
+        )),
+    );
+    need(
+        "trim key",
+        expected_names(&message_of(&flight.replace("airspeed = 675.0", "airspeed = 675.0\nzzz = 1"))),
+    );
+    need(
+        "input key",
+        expected_names(&message_of(&format!(
+            "{flight}[[inputs]]\ncontrol = \"elevator\"\nshape = \"step\"\nstart = 0.0\namplitude = 0.01\nzzz = 1\n"
+        ))),
+    );
+    need("flight output", vectrix::flight::scene::OUTPUT_NAMES.iter().map(|s| s.to_string()).collect());
+    assert!(missing.is_empty(), "docs/scenes.md lacks: {missing:#?}");
+}
+
+#[test]
+fn issue_16_worked_example_bead_on_free_wire() {
+    // Book Ex 7.15.3 with J = m = x₀ = θ̇₀ = 1: c₀ = (J + m x²)θ̇ = 2, E = 1, and the wire's
+    // angle as a function of the bead's position is the elliptic integral
+    // θ(x) = ∫₁ˣ √2 du/√(u⁴ − 1) = ∫₀^{acosh x} √2 ds/√(1 + cosh² s) (u = cosh s), θ∞ = K(½).
+    let text = std::fs::read_to_string(format!(
+        "{}/examples/scenes/bead_on_free_wire.toml",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap();
+    let r = run(&Scene::from_toml(&text, "bead_on_free_wire.toml").unwrap());
+    let (theta, x) = (r.column("coordinates:wire.0").unwrap(), r.column("coordinates:bead.0").unwrap());
+    let theta_of = |x: f64| -> f64 {
+        // composite Gauss–Legendre (5 points) on 400 panels of a smooth integrand
+        let (a, b) = (0.0, x.acosh());
+        let nodes = [
+            (0.0, 128.0 / 225.0),
+            (0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
+            (-0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
+            (0.906_179_845_938_664, 0.236_926_885_056_189_1),
+            (-0.906_179_845_938_664, 0.236_926_885_056_189_1),
+        ];
+        let n = 400;
+        let h = (b - a) / n as f64;
+        (0..n)
+            .map(|k| {
+                let c = a + (k as f64 + 0.5) * h;
+                nodes
+                    .iter()
+                    .map(|(z, w)| w * 0.5 * h * 2f64.sqrt() / (1.0 + (c + 0.5 * h * z).cosh().powi(2)).sqrt())
+                    .sum::<f64>()
+            })
+            .sum()
+    };
+    let mut worst: f64 = 0.0;
+    for k in (1..r.t.len()).step_by(50) {
+        worst = worst.max((theta[k] - theta_of(x[k])).abs());
+    }
+    assert!(worst < 1e-8, "θ(x) off by {worst:e}");
+    // θ approaches K(½) = 1.854074677301372 from below
+    let last = *theta.last().unwrap();
+    assert!(last < 1.854_074_677_301_372 && last > 1.80, "{last}");
+    for d in &r.drift {
+        assert!(d.max_rel < 1e-8, "{:?}", d);
+    }
+}

@@ -121,9 +121,9 @@ pub(crate) fn dims(j: &JointSpec) -> (usize, usize) {
     match j {
         JointSpec::Pin { .. } | JointSpec::Sleeve { .. } => (1, 1),
         JointSpec::Collar { .. } | JointSpec::Slot { .. } => (2, 2),
-        JointSpec::Ball => (4, 3),
-        JointSpec::Weld => (0, 0),
-        JointSpec::Free => (7, 6),
+        JointSpec::Ball {} => (4, 3),
+        JointSpec::Weld {} => (0, 0),
+        JointSpec::Free {} => (7, 6),
     }
 }
 
@@ -133,11 +133,11 @@ pub(crate) fn layout(j: &JointSpec) -> (&'static str, &'static str) {
         JointSpec::Pin { .. } => ("q = [θ] rad", "v = [θ̇] rad/s"),
         JointSpec::Sleeve { .. } => ("q = [s] m", "v = [ṡ] m/s"),
         JointSpec::Collar { .. } | JointSpec::Slot { .. } => ("q = [s m, θ rad]", "v = [ṡ m/s, θ̇ rad/s]"),
-        JointSpec::Ball => {
+        JointSpec::Ball {} => {
             ("q = [η, ε₁, ε₂, ε₃] (unit quaternion)", "v = [ω₁, ω₂, ω₃] rad/s in the link frame")
         }
-        JointSpec::Weld => ("q = [] (no coordinates)", "v = []"),
-        JointSpec::Free => (
+        JointSpec::Weld {} => ("q = [] (no coordinates)", "v = []"),
+        JointSpec::Free {} => (
             "q = [x, y, z m, η, ε₁, ε₂, ε₃]",
             "v = [ẋ, ẏ, ż m/s in the joint frame, ω₁, ω₂, ω₃ rad/s in the link frame]",
         ),
@@ -147,8 +147,8 @@ pub(crate) fn layout(j: &JointSpec) -> (&'static str, &'static str) {
 /// Index of the quaternion among a joint's coordinates, if it has one.
 pub(crate) fn quat_index(j: &JointSpec) -> Option<usize> {
     match j {
-        JointSpec::Ball => Some(0),
-        JointSpec::Free => Some(3),
+        JointSpec::Ball {} => Some(0),
+        JointSpec::Free {} => Some(3),
         _ => None,
     }
 }
@@ -364,9 +364,9 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
                 JointSpec::Slot { axis, direction } => {
                     Joint::Slot { axis: v3(axis), direction: v3(direction) }
                 }
-                JointSpec::Ball => Joint::Ball,
-                JointSpec::Weld => Joint::Weld,
-                JointSpec::Free => Joint::Free,
+                JointSpec::Ball {} => Joint::Ball,
+                JointSpec::Weld {} => Joint::Weld,
+                JointSpec::Free {} => Joint::Free,
             };
             let mut l = Link::new(b.parent, joint, v3(s.offset), b.mass, b.com, b.inertia);
             l.orientation = b.orient;
@@ -477,7 +477,7 @@ fn effect(
     };
     let free = |name: &str, k: &str| -> Result<usize, SceneError> {
         let i = body_of(name, &key(k))?;
-        if bodies[i].joint != JointSpec::Free || bodies[i].parent.is_some() {
+        if !matches!(bodies[i].joint, JointSpec::Free {}) || bodies[i].parent.is_some() {
             return Err(src.invalid(
                 key(k),
                 format!("body `{name}` must be on a free joint to the ground for impacts and rolling"),

@@ -60,12 +60,12 @@ pub(crate) fn twists_into(
                 (a * vv[1], a * vv[0])
             }
             JointSpec::Slot { .. } => (e_j.tr_mul(&b.axis) * vv[1], e_j.tr_mul(&b.direction) * vv[0]),
-            JointSpec::Ball => (e_l.transpose() * Vector3::new(vv[0], vv[1], vv[2]), Vector3::zeros()),
-            JointSpec::Free => (
+            JointSpec::Ball {} => (e_l.transpose() * Vector3::new(vv[0], vv[1], vv[2]), Vector3::zeros()),
+            JointSpec::Free {} => (
                 e_l.transpose() * Vector3::new(vv[3], vv[4], vv[5]),
                 e_j.transpose() * Vector3::new(vv[0], vv[1], vv[2]),
             ),
-            JointSpec::Weld => (Vector3::zeros(), Vector3::zeros()),
+            JointSpec::Weld {} => (Vector3::zeros(), Vector3::zeros()),
         };
         omega[i] = w_p + w_rel;
         vel[i] = v_p + w_p.cross(&(r_l - r_p)) + v_rel;
@@ -157,12 +157,12 @@ pub(crate) fn qdot(bodies: &[Body], q: &[f64], v: &[f64], out: &mut [f64]) {
                 out[qi] = v[vi];
                 out[qi + 1] = v[vi + 1];
             }
-            JointSpec::Ball => quat(&q[qi..qi + 4], &v[vi..vi + 3], &mut out[qi..qi + 4]),
-            JointSpec::Free => {
+            JointSpec::Ball {} => quat(&q[qi..qi + 4], &v[vi..vi + 3], &mut out[qi..qi + 4]),
+            JointSpec::Free {} => {
                 out[qi..qi + 3].copy_from_slice(&v[vi..vi + 3]);
                 quat(&q[qi + 3..qi + 7], &v[vi + 3..vi + 6], &mut out[qi + 3..qi + 7]);
             }
-            JointSpec::Weld => {}
+            JointSpec::Weld {} => {}
         }
     }
 }
@@ -171,8 +171,8 @@ pub(crate) fn qdot(bodies: &[Body], q: &[f64], v: &[f64], out: &mut [f64]) {
 pub(crate) fn normalize(bodies: &[Body], q: &mut [f64]) {
     for b in bodies {
         let k = match b.joint {
-            JointSpec::Ball => b.qi,
-            JointSpec::Free => b.qi + 3,
+            JointSpec::Ball {} => b.qi,
+            JointSpec::Free {} => b.qi + 3,
             _ => continue,
         };
         let n = q[k..k + 4].iter().map(|x| x * x).sum::<f64>().sqrt();

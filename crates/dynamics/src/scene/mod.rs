@@ -26,6 +26,7 @@ pub mod spec;
 pub use error::SceneError;
 pub use invariants::Invariant;
 pub use query::StateQuery;
+pub use rhs::SceneRhs;
 pub use run::{
     DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, Drift, InvariantValue, MAX_SAMPLE_VALUES, MAX_SAMPLES, Run,
     RunControl, RunWork, Stop, StopReason,

@@ -126,11 +126,11 @@ impl Scene {
                 JointSpec::Pin { .. } => vec![a],
                 JointSpec::Sleeve { .. } => vec![l],
                 JointSpec::Collar { .. } | JointSpec::Slot { .. } => vec![l, a],
-                JointSpec::Ball if speed => vec![a; 3],
-                JointSpec::Ball => vec!["1"; 4],
-                JointSpec::Free if speed => vec![l, l, l, a, a, a],
-                JointSpec::Free => vec![l, l, l, "1", "1", "1", "1"],
-                JointSpec::Weld => vec![],
+                JointSpec::Ball {} if speed => vec![a; 3],
+                JointSpec::Ball {} => vec!["1"; 4],
+                JointSpec::Free {} if speed => vec![l, l, l, a, a, a],
+                JointSpec::Free {} => vec![l, l, l, "1", "1", "1", "1"],
+                JointSpec::Weld {} => vec![],
             }
         };
         let all = |speed: bool| -> Vec<&'static str> {

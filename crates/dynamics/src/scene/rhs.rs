@@ -7,10 +7,10 @@
 
 use nalgebra::{DMatrix, DVector, Vector3};
 
-use super::Scene;
 use super::build::Effect;
 use super::forces::{Loads, apply};
 use super::kin::{Kin, kinematics_into, qdot, twists};
+use super::{Scene, SceneError};
 use crate::multibody::{AbaScratch, JointWrench, Pose};
 
 /// Finite-difference step for the rates Ġv and ġᵀv of constraint and inerter rows.
@@ -38,7 +38,51 @@ impl RhsScratch {
     }
 }
 
+/// A reusable evaluator of a scene's right-hand side y′ = f(t, y), y = (q, v): its work space
+/// is allocated once, so an evaluation allocates nothing (the scene's own loads, ABA and
+/// joint kinematics; inerters and rolling still build small matrices). For your own
+/// integrators, sensitivity studies and benches.
+///
+/// Book: §7.11 (ABA), ch. 6 (the declared loads).
+pub struct SceneRhs<'a> {
+    scene: &'a Scene,
+    scratch: RhsScratch,
+}
+
+impl std::fmt::Debug for SceneRhs<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SceneRhs").field("scene", &self.scene.spec().name).finish_non_exhaustive()
+    }
+}
+
+impl SceneRhs<'_> {
+    /// y′ = f(t, y) into `out` (both of length nq + nv).
+    ///
+    /// # Errors
+    /// [`SceneError::Run`] for wrong lengths, or when the dynamics fail (a singular mass
+    /// matrix, coincident points).
+    pub fn eval(&mut self, t: f64, y: &[f64], out: &mut [f64]) -> Result<(), SceneError> {
+        let n = self.scene.built.model.nq() + self.scene.built.model.nv();
+        if y.len() != n || out.len() != n {
+            return Err(SceneError::Run {
+                t,
+                message: format!(
+                    "state of length {} and output of length {}; valid: {n} each",
+                    y.len(),
+                    out.len()
+                ),
+            });
+        }
+        self.scene.deriv_into(t, y, out, &mut self.scratch).map_err(|message| SceneError::Run { t, message })
+    }
+}
+
 impl Scene {
+    /// A reusable, allocation-free evaluator of the right-hand side (see [`SceneRhs`]).
+    pub fn rhs(&self) -> SceneRhs<'_> {
+        SceneRhs { scene: self, scratch: RhsScratch::new(self) }
+    }
+
     /// y′ = (q̇, v̇) at (t, y) into `out`: q̇ from the joint kinematics, v̇ by ABA with the
     /// declared loads (only when some are declared), then inerters and rolling.
     pub(crate) fn deriv_into(

@@ -154,12 +154,13 @@ pub enum JointSpec {
         /// Groove direction.
         direction: [f64; 3],
     },
-    /// Spherical: q = quaternion (η, ε₁, ε₂, ε₃), v = ω in the link frame.
-    Ball,
+    /// Spherical: q = quaternion (η, ε₁, ε₂, ε₃), v = ω in the link frame. (Written `{}` so
+    /// that an unknown key in its table is an error, as in every other table.)
+    Ball {},
     /// Rigid attachment.
-    Weld,
+    Weld {},
     /// Six degrees of freedom: q = (x, y, z, η, ε₁, ε₂, ε₃), v = (ẋ, ẏ, ż, ω in the link).
-    Free,
+    Free {},
 }
 
 /// Mass properties by shape or by value (about the centre of mass, link components).
