@@ -12,7 +12,7 @@ use vectrix::nalgebra::{Matrix3, Vector3};
 use vectrix::num_dual::{Dual2_64, Dual3_64, DualNum};
 use vectrix::prelude::*;
 
-use support::EPS;
+use support::{EPS, assert_printed, assert_printed_slice};
 
 /// Exact derivatives: rounding only, on O(1)–O(10) data.
 const TOL: f64 = 1024.0 * EPS;
@@ -162,13 +162,13 @@ fn problem_5_7_1_bowling_coriolis() {
         let cor = double_transport(&Vector::zero(), &v_b, &Vector::zero(), &w, &Vector::zero());
         let horiz = cor - f.i() * cor.dot(&f.i());
         assert!((horiz.norm() - 2.0 * omega * v * lat.sin()).abs() < 1e-15);
-        assert!((horiz.norm() - 8.25e-4).abs() < 5e-7);
+        assert_printed(horiz.norm(), "8.25e-4");
         // a free ball (a⃗ ≈ 0⃗ w.r.t. the stars) accelerates by −2ω⃗×v⃗ relative to the Earth:
         // to the right of the heading, i.e. v⃗ × (−2ω⃗×v⃗) points down (−ê_u)
         assert!(v_b.cross(&(-horiz)).dot(&f.i()) < 0.0);
     }
     let offset = omega * lat.sin() * l * l / v;
-    assert!((offset - 2.16e-3).abs() < 1e-5);
+    assert_printed(offset, "2.16e-3");
 }
 
 /// r′, r″, r‴ of a curve given over `Dual3_64`.
@@ -200,7 +200,7 @@ fn problem_5_6_2_helix() {
         assert!((f.speed - 1.0).abs() < TOL);
         assert!((f.curvature - r / (r * r + h * h)).abs() < TOL);
         assert!((f.torsion - h / (r * r + h * h)).abs() < TOL);
-        assert!((f.curvature - 0.470588).abs() < 1e-6 && (f.torsion - 0.117647).abs() < 1e-6);
+        assert_printed_slice(&[f.curvature, f.torsion], &["0.470588", "0.117647"]);
         // the normal points at the axis
         let p = Frame::new().vector([(s / 4.25f64.sqrt()).cos(), (s / 4.25f64.sqrt()).sin(), 0.0]);
         assert!(dist(&f.normal, &(-p)) < TOL);
@@ -219,7 +219,7 @@ fn problem_5_6_3_log_spiral_arc_length_from_the_pole() {
         assert!(f.torsion.abs() < TOL, "planar");
     }
     let f = fs(spiral, 0.4).unwrap();
-    assert!((f.curvature - 0.473988).abs() < 1e-6);
+    assert_printed(f.curvature, "0.473988");
     let s_from_zero = 2f64.sqrt() * (0.4f64.exp() - 1.0);
     assert!((f.curvature - 1.0 / s_from_zero).abs() > 0.5);
 }
@@ -236,7 +236,7 @@ fn problem_5_6_4_catenary_corrected() {
         assert!((f.curvature - a / (s * s + a * a)).abs() < TOL);
     }
     let f = fs(cat, 0.8).unwrap();
-    assert!((f.curvature - 0.507953).abs() < 1e-6);
+    assert_printed(f.curvature, "0.507953");
     let s = a * (0.8 / a).sinh();
     assert!((f.curvature - a / (s * s + a)).abs() > 1e-2, "the printed form is wrong");
 }

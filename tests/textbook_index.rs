@@ -4,6 +4,8 @@
 //!
 //! Regenerate after adding tests: `VECTRIX_BLESS=1 cargo test --test textbook_index`.
 
+mod support;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -233,4 +235,36 @@ fn section_tags_parse_the_book_numbering() {
         titles().get(&(2, 11)).map(String::as_str),
         Some("Eigenaxis Rotations and Rodrigues's Formula")
     );
+}
+
+/// The assertions of `tests/support` mean what their names say: a printed value is checked to
+/// half a unit of its last digit (never scaled by the value), a relative tolerance scales with
+/// |want|, an absolute one does not.
+#[test]
+fn support_assertions_have_the_semantics_their_names_say() {
+    use support::*;
+    let fails = |f: fn()| std::panic::catch_unwind(f).is_err();
+    assert_eq!(parse_printed("985"), (985.0, 1.0));
+    assert_eq!(parse_printed("-0.0042"), (-0.0042, 1e-4));
+    assert_eq!(parse_printed("1.5e-3"), (1.5e-3, 1e-4));
+    // "985" is ±0.5, not ±985 (the old scaled helper's failure, issue 20)
+    assert_printed(985.49, "985");
+    assert!(fails(|| assert_printed(985.51, "985")));
+    assert!(fails(|| assert_printed(1.0, "985")));
+    assert_printed(-0.00424, "-0.0042");
+    assert!(fails(|| assert_printed(-0.00426, "-0.0042")));
+    // truncation: 6.297 prints as 6.29 when chopped, but not 6.30
+    assert_truncated(6.297, "6.29");
+    assert_truncated(-99.485, "-99.48");
+    assert!(fails(|| assert_truncated(6.289, "6.29")));
+    assert!(fails(|| assert_truncated(6.297, "6.30")));
+    // relative scales with |want|, absolute does not
+    assert_rel(1000.0 + 1e-10, 1000.0, 1e-12);
+    assert!(fails(|| assert_abs(1000.0 + 1e-10, 1000.0, 1e-12)));
+    assert!(fails(|| assert_rel(1e-13, 0.0, 1.0)));
+    // slices: abs per entry; rel against the largest |want|; NaN always fails
+    assert_rel_slice(&[100.0, 1e-13], &[100.0, 0.0], 1e-15);
+    assert!(fails(|| assert_abs_slice(&[100.0, 1e-13], &[100.0, 0.0], 1e-15)));
+    assert!(fails(|| assert_abs_slice(&[f64::NAN], &[0.0], 1.0)));
+    assert!(fails(|| assert_rel(f64::NAN, 1.0, 1.0)));
 }
