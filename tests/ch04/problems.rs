@@ -51,7 +51,9 @@ fn omega_in_body(
     t: f64,
 ) -> (Matrix3<f64>, Matrix3<f64>, Vector3<f64>, Vector3<f64>) {
     let [o0, o1, o2] = mat_jet(path, t);
-    let vee = |m: Matrix3<f64>| 0.5 * Vector3::new(m[(2, 1)] - m[(1, 2)], m[(0, 2)] - m[(2, 0)], m[(1, 0)] - m[(0, 1)]);
+    let vee = |m: Matrix3<f64>| {
+        0.5 * Vector3::new(m[(2, 1)] - m[(1, 2)], m[(0, 2)] - m[(2, 0)], m[(1, 0)] - m[(0, 1)])
+    };
     let w = vee(-o1 * o0.transpose());
     let wd = vee(-o2 * o0.transpose() - o1 * o1.transpose());
     (o0, o1, w, wd)
@@ -264,8 +266,13 @@ fn problem_4_21_5_bar_driving_a_rolling_disk() {
     let bar_wd = a_b.dot(&f.k().cross(&r_ba)) / r_ba.norm_squared();
     let disk = FrameMotion::new(LabeledFrame::new("D", *f), g, f.k() * -w, f.k() * -wd).unwrap();
     let bar = FrameMotion::new(LabeledFrame::new("L", *f), g, f.k() * bar_w, f.k() * bar_wd).unwrap();
-    let c = VectorJet::new(g.label, f.vector([0.0, big_r, 0.0]), f.vector([big_r * w, 0.0, 0.0]), f.vector([big_r * wd, 0.0, 0.0]))
-        .unwrap();
+    let c = VectorJet::new(
+        g.label,
+        f.vector([0.0, big_r, 0.0]),
+        f.vector([big_r * w, 0.0, 0.0]),
+        f.vector([big_r * wd, 0.0, 0.0]),
+    )
+    .unwrap();
     let b = c.rigid_point(&disk, f.vector([-big_r, 0.0, 0.0])).unwrap();
     assert!(dist(&b.second_rate(), &a_b) <= 16.0 * EPS * w * w);
     let a = b.rigid_point(&bar, -r_ba).unwrap();
@@ -293,9 +300,15 @@ fn problem_4_21_6_pin_in_the_slot_of_a_rolling_wheel() {
         let thdd = -2.0 * d * v * v * sec2 * th.tan() / (big_r + d * sec2).powi(3);
         // wheel frame W: ĵ_W along the slot (θ clockwise from the vertical)
         let w_frame = Frame::from_orientation_rel(&f, &o3(-th), 1e-12).unwrap();
-        let wheel = FrameMotion::new(LabeledFrame::new("W", w_frame), g, f.k() * -thd, f.k() * -thdd).unwrap();
-        let c = VectorJet::new(g.label, f.vector([big_r * th, big_r, 0.0]), f.vector([big_r * thd, 0.0, 0.0]), f.vector([big_r * thdd, 0.0, 0.0]))
-            .unwrap();
+        let wheel =
+            FrameMotion::new(LabeledFrame::new("W", w_frame), g, f.k() * -thd, f.k() * -thdd).unwrap();
+        let c = VectorJet::new(
+            g.label,
+            f.vector([big_r * th, big_r, 0.0]),
+            f.vector([big_r * thd, 0.0, 0.0]),
+            f.vector([big_r * thdd, 0.0, 0.0]),
+        )
+        .unwrap();
         // the pin at distance s = d sec θ along the slot, s(t) moving with θ
         let s = d / th.cos();
         let sd = d * th.tan() / th.cos() * thd;
@@ -304,8 +317,16 @@ fn problem_4_21_6_pin_in_the_slot_of_a_rolling_wheel() {
         let rel = VectorJet::new(wheel.body().label, e * s, e * sd, e * sdd).unwrap();
         let pin = c.moving_point(&wheel, &rel).unwrap();
         assert_abs(pin.value().dot(&f.j()) - big_r, d, 8.0 * EPS);
-        assert!(dist(&pin.rate(), &f.vector([v, 0.0, 0.0])) <= 32.0 * EPS * v, "θ = {th}: {:?}", pin.rate().resolve(&f));
-        assert!(pin.second_rate().norm() <= 64.0 * EPS * v * v / d, "θ = {th}: {:?}", pin.second_rate().resolve(&f));
+        assert!(
+            dist(&pin.rate(), &f.vector([v, 0.0, 0.0])) <= 32.0 * EPS * v,
+            "θ = {th}: {:?}",
+            pin.rate().resolve(&f)
+        );
+        assert!(
+            pin.second_rate().norm() <= 64.0 * EPS * v * v / d,
+            "θ = {th}: {:?}",
+            pin.second_rate().resolve(&f)
+        );
     }
 }
 
@@ -324,20 +345,32 @@ fn problem_4_21_7_wheel_on_a_hub_rolling_on_a_circle() {
     for phi in [0.0, 0.7, 2.5] {
         // hub frame H: î_H = ê_r along the axle at azimuth φ
         let h_frame = Frame::from_orientation_rel(&f, &o3(phi), 1e-12).unwrap();
-        let hub = FrameMotion::new(LabeledFrame::new("H", h_frame), g, f.k() * big_w, Vector::zero()).unwrap();
+        let hub =
+            FrameMotion::new(LabeledFrame::new("H", h_frame), g, f.k() * big_w, Vector::zero()).unwrap();
         // wheel relative to the hub: spin −ω ê_r, so that the contact point is at rest
-        let wheel_h = FrameMotion::new(LabeledFrame::new("W", h_frame), *hub.body(), h_frame.i() * -w, Vector::zero()).unwrap();
+        let wheel_h =
+            FrameMotion::new(LabeledFrame::new("W", h_frame), *hub.body(), h_frame.i() * -w, Vector::zero())
+                .unwrap();
         let wheel = wheel_h.compose(&hub).unwrap();
         let b = VectorJet::fixed_in(g.label, Vector::zero()).rigid_point(&hub, h_frame.i() * big_r).unwrap();
         let c = b.rigid_point(&wheel, f.k() * -r).unwrap();
         assert!(c.rate().norm() <= 16.0 * EPS * big_w * big_r, "v_c = {:?}", c.rate().resolve(&f));
         let want = h_frame.i() * (big_w * big_w * big_r) + f.k() * (w * w * r);
-        assert!(dist(&c.second_rate(), &want) <= 64.0 * EPS * w * w * r, "{:?}", c.second_rate().resolve(&h_frame));
+        assert!(
+            dist(&c.second_rate(), &want) <= 64.0 * EPS * w * w * r,
+            "{:?}",
+            c.second_rate().resolve(&h_frame)
+        );
         // ωr = ΩR is the only spin that keeps the contact point at rest
-        let slip = FrameMotion::new(LabeledFrame::new("W", h_frame), *hub.body(), h_frame.i() * (-1.1 * w), Vector::zero())
-            .unwrap()
-            .compose(&hub)
-            .unwrap();
+        let slip = FrameMotion::new(
+            LabeledFrame::new("W", h_frame),
+            *hub.body(),
+            h_frame.i() * (-1.1 * w),
+            Vector::zero(),
+        )
+        .unwrap()
+        .compose(&hub)
+        .unwrap();
         assert!(b.rigid_point(&slip, f.k() * -r).unwrap().rate().norm() > 0.05 * w * r);
     }
 }

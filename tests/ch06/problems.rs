@@ -4,7 +4,8 @@
 use vectrix::num_dual::{Dual64, DualNum};
 use vectrix::prelude::*;
 use vectrix::statics::{
-    AppliedForce, MassProperties, Point, Spring, UniformGravity, Wrench, moment_of_inertia, product_of_inertia,
+    AppliedForce, MassProperties, Point, Spring, UniformGravity, Wrench, moment_of_inertia,
+    product_of_inertia,
 };
 
 use crate::common::pt;
@@ -37,7 +38,8 @@ fn section_6_11_internal_forces_of_a_newtonian_body_are_balanced() {
     let (my, mz) = (a.vector([1.0, 0.0, 0.0]), a.vector([0.0, 1.0, 0.0]));
     let r = a.vector([2.0, 0.0, 0.0]);
     let p = vectrix::statics::dipole_interaction(&mz, &my, &r).unwrap();
-    let pair = [AppliedForce::new(p.force_on_z, Point::at(r)), AppliedForce::new(-p.force_on_z, Point::origin())];
+    let pair =
+        [AppliedForce::new(p.force_on_z, Point::at(r)), AppliedForce::new(-p.force_on_z, Point::origin())];
     let total = Wrench::resultant(&pair, &[], Point::origin());
     assert!(total.force.norm() <= 4.0 * EPS);
     assert!(total.moment.norm() > 0.1, "the force couple of two dipoles has a moment");
@@ -55,7 +57,8 @@ fn problem_6_14_1_particles_are_at_rest_relative_to_the_centre_in_the_body_frame
     let r_ba = Rotor::from_axis_angle(&axis, t * 1.3 + t * t * 0.4).unwrap();
     let b = a.rotated_by_rotor(&r_ba);
     let p = a.vector([t * 2.0, (t * 3.0).sin(), t * t * -0.5]);
-    let body = [([1.0, 0.0, 0.0], 2.0), ([0.0, 1.5, -0.5], 1.0), ([-0.3, 0.2, 2.0], 3.5), ([0.4, -1.0, 0.0], 0.5)];
+    let body =
+        [([1.0, 0.0, 0.0], 2.0), ([0.0, 1.5, -0.5], 1.0), ([-0.3, 0.2, 2.0], 3.5), ([0.4, -1.0, 0.0], 0.5)];
     let particles: Vec<(Dual64, Point<Dual64>)> = body
         .iter()
         .map(|(x_b, m)| (Dual64::from(*m), Point::at(p + b.vector(x_b.map(Dual64::from)))))
@@ -79,16 +82,21 @@ fn problem_6_14_1_particles_are_at_rest_relative_to_the_centre_in_the_body_frame
 fn problem_6_14_6_moments_and_products_as_quadratic_forms() {
     let a = Frame::new();
     let f = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.vector([0.3, 1.0, -0.7]), 0.9).unwrap());
-    let parts = [(2.0, [1.0, 0.5, -0.3]), (1.0, [-0.4, 1.2, 0.8]), (3.0, [0.2, -0.6, 1.5]), (0.5, [1.1, 1.0, 1.0])];
+    let parts =
+        [(2.0, [1.0, 0.5, -0.3]), (1.0, [-0.4, 1.2, 0.8]), (3.0, [0.2, -0.6, 1.5]), (0.5, [1.1, 1.0, 1.0])];
     let particles: Vec<(f64, Point)> = parts.iter().map(|(m, x)| (*m, pt(&a, *x))).collect();
     let body = MassProperties::from_particles(&particles).unwrap();
     let z = pt(&a, [0.1, -0.2, 0.3]);
     let j = body.inertia_about(&z);
     // Σ m|n̂ × r|² and Σ m (â·r)(b̂·r), directly from the particles (6.2.3–6.2.8)
-    let direct_moment =
-        |n: &Vector| particles.iter().map(|(m, y)| m * n.cross(&y.position_rel(&z)).norm_squared()).sum::<f64>();
+    let direct_moment = |n: &Vector| {
+        particles.iter().map(|(m, y)| m * n.cross(&y.position_rel(&z)).norm_squared()).sum::<f64>()
+    };
     let direct_product = |u: &Vector, v: &Vector| {
-        particles.iter().map(|(m, y)| m * u.dot(&y.position_rel(&z)) * v.dot(&y.position_rel(&z))).sum::<f64>()
+        particles
+            .iter()
+            .map(|(m, y)| m * u.dot(&y.position_rel(&z)) * v.dot(&y.position_rel(&z)))
+            .sum::<f64>()
     };
     let scale = j.norm();
     let m = j.resolve(&f);
@@ -132,7 +140,11 @@ fn problem_6_15_1_bar_with_a_zero_length_spring_and_a_torsional_spring() {
         let r_ca = e * l;
         let f_on_c = Spring::new(k, 0.0).unwrap().force(&(r_ca - r_ba)).unwrap();
         let m_a = AppliedForce::new(f_on_c, Point::at(r_ca)).moment_about(&Point::origin());
-        assert_abs_slice(m_a.resolve(&a).as_slice(), (e.cross(&r_ba) * (k * l)).resolve(&a).as_slice(), 16.0 * EPS * k * l * d);
+        assert_abs_slice(
+            m_a.resolve(&a).as_slice(),
+            (e.cross(&r_ba) * (k * l)).resolve(&a).as_slice(),
+            16.0 * EPS * k * l * d,
+        );
         assert_abs(f_on_c.dot(&e), k * (e.dot(&r_ba) - l), 16.0 * EPS * k * (l + d));
         // the torsional spring that balances it at θ
         let kappa = k * l * d * f64::sin(beta - theta) / theta;
@@ -160,7 +172,11 @@ fn problem_6_15_2_triangle_pinned_to_a_wall_and_a_rope() {
     let (y1, y2) = (pt(&a, [-2.5, -h, 0.0]), pt(&a, [-0.7, -h, 0.0]));
     let body = MassProperties::from_particles(&[(m1, y1), (m2, y2)]).unwrap();
     let want_c = (y1.position() * m1 + y2.position() * m2) * (1.0 / (m1 + m2));
-    assert_rel_slice(body.centre_of_mass().position().resolve(&a).as_slice(), want_c.resolve(&a).as_slice(), 4.0 * EPS);
+    assert_rel_slice(
+        body.centre_of_mass().position().resolve(&a).as_slice(),
+        want_c.resolve(&a).as_slice(),
+        4.0 * EPS,
+    );
     // M from the moment balance about P
     let x = |y: &Point| y.position().dot(&a.i()) - p.position().dot(&a.i());
     let big_m = -(m1 * x(&y1) + m2 * x(&y2)) / h;
