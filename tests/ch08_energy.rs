@@ -129,6 +129,8 @@ fn problem_8_5_1_free_dashpot_network_settles_to_centre_velocity() {
     let y0 = SVector::<f64, 6>::from_column_slice(&[0.0, 0.0, 0.0, v0[0], v0[1], v0[2]]);
     let sol = Adaptive::dop853().rtol(1e-11).atol(1e-13).solve(f, 0.0, &y0, 40.0).unwrap();
     let y = sol.last();
+    // DOP853 (rtol 1e-11, atol 1e-13) to t = 40, where the dashpots have damped the relative
+    // motion to well below the integration error
     for i in 3..6 {
         assert_abs(y[i], v_c, 1e-9);
     }
@@ -185,6 +187,7 @@ fn fact_8_4_1_energy_constant_along_lagrange_flow() {
     let sol = Adaptive::dop853().rtol(1e-12).atol(1e-13).solve(f, 0.0, &y0, 50.0).unwrap();
     let e0 = energy(&Pendulum, &[2.5], &[0.0], 0.0).unwrap();
     for y in &sol.y {
+        // DOP853 at rtol 1e-12 over 50 time units: the energy drifts by far less than 1e-9
         assert_rel(energy(&Pendulum, &[y[0]], &[y[1]], 0.0).unwrap(), e0, 1e-9);
     }
 }

@@ -224,9 +224,10 @@ mod prop {
                 got.sort_by(|p, q| p.0.total_cmp(&q.0));
             }
             for (g, w) in got.iter().zip(&want) {
-                // R is normal, so even repeated eigenvalues (θ = 0, π) move only by the backward
-                // error of the Schur iteration, c·ε‖R‖ with c up to a few hundred (Bauer–Fike)
-                prop_assert!((g.0 - w.0).abs() <= 256.0 * EPS && (g.1 - w.1).abs() <= 256.0 * EPS, "{got:?} vs {want:?}");
+                // R is normal, so even clustered eigenvalues (θ near 0 or π) move only by the
+                // backward error of the Schur iteration (Bauer–Fike); nalgebra's deflation leaves
+                // up to ~1.4e-13 on the cluster of a near-identity rotation (seen at θ = 1e-8)
+                prop_assert!((g.0 - w.0).abs() <= 1e-12 && (g.1 - w.1).abs() <= 1e-12, "{got:?} vs {want:?}");
             }
             if let AxisAngle::General { axis, .. } | AxisAngle::HalfTurn(axis) = r.axis_angle_in(&a) {
                 assert_abs_slice((m * axis).as_slice(), axis.as_slice(), 8.0 * EPS);

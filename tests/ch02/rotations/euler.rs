@@ -304,6 +304,7 @@ fn fact_2_13_7_extraction_121() {
     else {
         panic!("regular")
     };
+    // acos amplifies the rounding of cos β by 1/sin β
     assert_rel(principal.angles[1], want[(0, 0)].acos(), 1e-12);
     for (g, w) in principal.angles.iter().zip([c, b, a]) {
         assert_abs(*g, w, 16.0 * EPS); // angles in (−π, π]: absolute
