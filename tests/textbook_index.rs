@@ -100,7 +100,7 @@ fn tags_of(name: &str) -> Vec<Tag> {
             let (ch, sec, items) = match run.len() {
                 1 => (prev.ch, prev.sec, run.clone()),
                 2 => (run[0], run[1], Vec::new()),
-                _ if run.len() >= 6 && run.len() % 3 == 0 => {
+                _ if run.len() >= 6 && run.len().is_multiple_of(3) => {
                     last = push_run(&mut tags, prev.kind, &run);
                     i += 1 + run.len();
                     continue;
@@ -130,7 +130,7 @@ fn tags_of(name: &str) -> Vec<Tag> {
 
 /// The tags of one run of numbers after a kind word; returns the last.
 fn push_run(tags: &mut Vec<Tag>, kind: Kind, run: &[u32]) -> Option<Tag> {
-    if run.len() >= 6 && run.len() % 3 == 0 {
+    if run.len() >= 6 && run.len().is_multiple_of(3) {
         for t in run.chunks(3) {
             tags.push(Tag { kind, ch: t[0], sec: t[1], item: Some(t[2]) });
         }

@@ -14,6 +14,9 @@ use vectrix::statics::{MassProperties, Point, Spring, UniformGravity, Wrench};
 
 use crate::support::{EPS, assert_abs, assert_rel, direction, triple};
 
+/// One particle's position, velocity, external force (components in F_A) and mass.
+type ParticleData = ([f64; 3], [f64; 3], [f64; 3], f64);
+
 /// Particles with positions, velocities and external forces, joined by springs (internal
 /// forces that obey the third law along the line, a Newtonian body, §6.11).
 struct System {
@@ -25,7 +28,7 @@ struct System {
 }
 
 impl System {
-    fn sample(a: &Frame, data: &[([f64; 3], [f64; 3], [f64; 3], f64)]) -> Self {
+    fn sample(a: &Frame, data: &[ParticleData]) -> Self {
         Self {
             m: data.iter().map(|d| d.3).collect(),
             r: data.iter().map(|d| a.vector(d.0)).collect(),
@@ -53,7 +56,7 @@ impl System {
     }
 }
 
-fn particle() -> impl Strategy<Value = ([f64; 3], [f64; 3], [f64; 3], f64)> {
+fn particle() -> impl Strategy<Value = ParticleData> {
     (triple(), triple(), triple(), 0.2..5.0f64)
 }
 
@@ -231,9 +234,10 @@ fn problem_7_16_1_contact_force_between_pushed_bodies() {
 
 /// P7.16.3 (§7.16, printed solution): a dumbbell y₁, y₂ (link ℓ along î_B), f⃗ = f₁î_B + f₂ĵ_B at p
 /// on the link: ω̇ = (r⃗_{p/c}·î_B) f₂/J_zz, J_zz = m₁m₂ℓ²/(m₁+m₂);
-/// f⃗_{R1} = m₁m₂ℓ/(m₁+m₂) (ω²î_B − ω̇ĵ_B) + m₁/(m₁+m₂) f⃗, f⃗_{R2} = m₁m₂ℓ/(m₁+m₂)(−ω²î_B + ω̇ĵ_B)
-/// + m₂/(m₁+m₂) f⃗. The reactions are mᵢ a⃗_{yᵢ}, with the particle accelerations from vectrix's
-/// rigid body (Euler's equation, rank 2) and rigid-point kinematics.
+/// f⃗_{R1} = m₁m₂ℓ/(m₁+m₂) (ω²î_B − ω̇ĵ_B) + m₁/(m₁+m₂) f⃗ and
+/// f⃗_{R2} = m₁m₂ℓ/(m₁+m₂)(−ω²î_B + ω̇ĵ_B) + m₂/(m₁+m₂) f⃗. The reactions are mᵢ a⃗_{yᵢ}, with the
+/// particle accelerations from vectrix's rigid body (Euler's equation, rank 2) and rigid-point
+/// kinematics.
 #[test]
 fn problem_7_16_3_reactions_on_a_dumbbell_pushed_along_its_link() {
     let a = Frame::new();
