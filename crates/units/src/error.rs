@@ -123,7 +123,9 @@ pub enum UnitError {
     },
     /// The converted value (or the number as written) is nonzero but below the smallest normal
     /// `f64` (2.2e−308): refused rather than silently flushed to zero or subnormal.
-    #[error("`{text}` underflows in {target}: the nonzero value is below the smallest normal f64 (2.225e-308)")]
+    #[error(
+        "`{text}` underflows in {target}: the nonzero value is below the smallest normal f64 (2.225e-308)"
+    )]
     Underflow {
         /// The quantity string.
         text: String,

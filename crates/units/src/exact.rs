@@ -294,7 +294,9 @@ mod tests {
     // integers below 2⁵³ (IEEE 754 division is correctly rounded).
     #[test]
     fn small_ratios_match_ieee_division() {
-        for (n, d) in [(1, 3), (2, 3), (3048, 10000), (45_359_237, 100_000_000), (1, 7), (22, 7), (1 << 52, 3)] {
+        for (n, d) in
+            [(1, 3), (2, 3), (3048, 10000), (45_359_237, 100_000_000), (1, 7), (22, 7), (1 << 52, 3)]
+        {
             assert_eq!(ratio(n, d).to_f64(), Rounded::Value(n as f64 / d as f64), "{n}/{d}");
         }
     }

@@ -154,7 +154,9 @@ impl<'a> Parser<'a> {
             frac = self.digits();
         }
         if int.is_empty() && frac.is_empty() {
-            return Err(self.malformed(start..self.pos.max(start + 1).min(self.text.len()), "expected a number"));
+            return Err(
+                self.malformed(start..self.pos.max(start + 1).min(self.text.len()), "expected a number")
+            );
         }
         let mut exp: i64 = 0;
         if matches!(self.peek(), Some('e' | 'E')) {
@@ -271,7 +273,9 @@ impl<'a> Parser<'a> {
         match self.peek() {
             Some('(') => {
                 if self.depth == MAX_DEPTH {
-                    return Err(self.malformed(self.here(), format!("parentheses nested deeper than {MAX_DEPTH}")));
+                    return Err(
+                        self.malformed(self.here(), format!("parentheses nested deeper than {MAX_DEPTH}"))
+                    );
                 }
                 self.bump();
                 self.depth += 1;
@@ -288,12 +292,18 @@ impl<'a> Parser<'a> {
             Some('1') => {
                 self.bump();
                 if self.peek().is_some_and(|c| c.is_ascii_digit() || c == '.') {
-                    return Err(self.malformed(start..self.pos + 1, "a unit may contain the number 1 only (as in `1/s`)"));
+                    return Err(self.malformed(
+                        start..self.pos + 1,
+                        "a unit may contain the number 1 only (as in `1/s`)",
+                    ));
                 }
                 Ok(Unit::one())
             }
             Some(c) if is_symbol_start(c) => {
-                while self.peek().is_some_and(|c| c.is_alphanumeric() || c == '_' || c == '°' || c == 'µ') {
+                while self
+                    .peek()
+                    .is_some_and(|c| c.is_alphabetic() || c.is_ascii_digit() || c == '_' || c == '°')
+                {
                     self.bump();
                 }
                 let token = &self.text[start..self.pos];
@@ -302,10 +312,10 @@ impl<'a> Parser<'a> {
                     None => Err(self.unknown(token, start..self.pos)),
                 }
             }
-            Some(c) => Err(self.malformed(
-                self.here(),
-                format!("unexpected `{c}`: expected a unit symbol, `1` or `(`"),
-            )),
+            Some(c) => {
+                Err(self
+                    .malformed(self.here(), format!("unexpected `{c}`: expected a unit symbol, `1` or `(`")))
+            }
             None => Err(self.malformed(self.pos..self.pos, "expected a unit symbol after the operator")),
         }
     }
@@ -364,7 +374,8 @@ pub(crate) fn quantity(text: &str) -> Result<Parsed, UnitError> {
 fn representable(p: &Parser<'_>, number: &Decimal, span: &Range<usize>) -> Result<f64, UnitError> {
     let target = || "the number as written".to_string();
     let err_over = || UnitError::Overflow { text: p.text.to_string(), span: span.clone(), target: target() };
-    let err_under = || UnitError::Underflow { text: p.text.to_string(), span: span.clone(), target: target() };
+    let err_under =
+        || UnitError::Underflow { text: p.text.to_string(), span: span.clone(), target: target() };
     if number.digits.is_empty() {
         return Ok(if number.negative { -0.0 } else { 0.0 });
     }

@@ -31,8 +31,11 @@ pub enum UnitSystem {
     Imperial,
 }
 
+/// A unit as (symbol, exponent) factors.
+type Factors = &'static [(&'static str, i8)];
+
 /// Named units preferred over the base-unit product, per system: (dimension, SI, imperial).
-const PREFERRED: [(Dimension, &[(&str, i8)], &[(&str, i8)]); 10] = [
+const PREFERRED: [(Dimension, Factors, Factors); 10] = [
     (Dimension::FORCE, &[("N", 1)], &[("lbf", 1)]),
     (Dimension::MOMENT, &[("N", 1), ("m", 1)], &[("ft", 1), ("lbf", 1)]),
     (Dimension::POWER, &[("W", 1)], &[("ft", 1), ("lbf", 1), ("s", -1)]),
@@ -40,7 +43,11 @@ const PREFERRED: [(Dimension, &[(&str, i8)], &[(&str, i8)]); 10] = [
     (Dimension::FREQUENCY, &[("Hz", 1)], &[("Hz", 1)]),
     (Dimension::STIFFNESS, &[("N", 1), ("m", -1)], &[("lbf", 1), ("ft", -1)]),
     (Dimension::DAMPING, &[("N", 1), ("s", 1), ("m", -1)], &[("lbf", 1), ("s", 1), ("ft", -1)]),
-    (Dimension::ROTATIONAL_STIFFNESS, &[("N", 1), ("m", 1), ("rad", -1)], &[("ft", 1), ("lbf", 1), ("rad", -1)]),
+    (
+        Dimension::ROTATIONAL_STIFFNESS,
+        &[("N", 1), ("m", 1), ("rad", -1)],
+        &[("ft", 1), ("lbf", 1), ("rad", -1)],
+    ),
     (
         Dimension::ROTATIONAL_DAMPING,
         &[("N", 1), ("m", 1), ("s", 1), ("rad", -1)],

@@ -72,7 +72,13 @@ pub(crate) const ATOMS: [Atom; 25] = [
     atom("slug", Dimension::MASS, (LBF_NUM, 3048, -9, 0), false, "slug = lbf*s^2/ft"),
     atom("kn", Dimension::VELOCITY, (1852, 3600, 0, 0), false, "knot = nmi/h = 1852/3600 m/s"),
     atom("mph", Dimension::VELOCITY, (1_609_344, 3600, -3, 0), false, "mile per hour = mi/h"),
-    atom("psi", Dimension::PRESSURE, (LBF_NUM, 64_516, -5, 0), false, "pound-force per square inch = lbf/in^2"),
+    atom(
+        "psi",
+        Dimension::PRESSURE,
+        (LBF_NUM, 64_516, -5, 0),
+        false,
+        "pound-force per square inch = lbf/in^2",
+    ),
 ];
 
 /// Standard gravity g₀ = 9.80665 m/s² (written `g0`; `g` is the gram).
@@ -80,7 +86,8 @@ pub(crate) const G0: Atom =
     atom("g0", Dimension::ACCELERATION, (980_665, 1, -5, 0), false, "standard gravity = 9.80665 m/s^2");
 
 /// Alternative spellings: (alias, symbol it stands for).
-pub(crate) const ALIASES: [(&str, &str); 5] = [("sec", "s"), ("°", "deg"), ("kt", "kn"), ("lbm", "lb"), ("hr", "h")];
+pub(crate) const ALIASES: [(&str, &str); 5] =
+    [("sec", "s"), ("°", "deg"), ("kt", "kn"), ("lbm", "lb"), ("hr", "h")];
 
 /// SI prefixes: (symbol, power of ten). `u` and `μ` (Greek mu) are accepted for `µ` (micro sign).
 pub(crate) const PREFIXES: [(&str, i8); 18] = [

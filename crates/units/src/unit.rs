@@ -160,7 +160,11 @@ impl Unit {
         if pi != 0 {
             let p = big_from_digits(PI_DIGITS).pow(pi.unsigned_abs() as u32);
             let one = crate::exact::Big::from_u64(1);
-            if pi > 0 { r.scale(&p, &one) } else { r.scale(&one, &p) }
+            if pi > 0 {
+                r.scale(&p, &one)
+            } else {
+                r.scale(&one, &p)
+            }
             pow10 += PI_EXP10 * pi;
         }
         r.scale_pow10(pow10);
