@@ -24,6 +24,7 @@ pub use vectrix_plot as plot;
 pub use vectrix_rotation as rotation;
 pub use vectrix_statics as statics;
 pub use vectrix_tensor as tensor;
+pub mod units;
 
 /// Everything for notebooks and applications: `use vectrix::prelude::*;`.
 #[allow(unused_imports)] // layers still in progress export empty preludes
