@@ -25,5 +25,7 @@
 
 mod physical;
 
-pub use physical::{AsPhysical, CrossKind, Physical, TypedMassProperties, mass_properties, principal_mass_properties};
+pub use physical::{
+    AsPhysical, CrossKind, Physical, TypedMassProperties, mass_properties, principal_mass_properties,
+};
 pub use vectrix_units::*;
