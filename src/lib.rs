@@ -14,6 +14,8 @@
 
 pub use nalgebra;
 pub use num_dual;
+#[cfg(feature = "uom")]
+pub use uom;
 pub use vectrix_dynamics as dynamics;
 pub use vectrix_flight as flight;
 pub use vectrix_frames as frames;

@@ -66,7 +66,7 @@ fn eq_15_19_2_slug_is_14_59_kg() {
 }
 
 #[test]
-fn section_15_19_1_weights_of_a_kilogram_and_a_slug() {
+fn sec_15_19_1_weights_of_a_kilogram_and_a_slug() {
     // §15.19.1: "On the surface of the Earth, 1 kg weighs 9.8 N, while 1 slug weighs 32.2 lb."
     // Weight = m g₀: 1 kg·g₀ = 9.80665 N exactly; 1 slug·g₀ = g₀/ft lbf = 32.17404855643… lbf.
     assert_eq!(in_unit("1 kg*g0", "N"), 9.806_65);
@@ -148,7 +148,7 @@ fn problem_15_20_24_same_form_different_dimensions() {
 }
 
 #[test]
-fn section_1_6_kinds_of_physical_vectors_are_typed() {
+fn sec_1_6_kinds_of_physical_vectors_are_typed() {
     // §1.6: position, force, moment, velocity, momentum, angular velocity are distinct kinds
     // of physical vectors; the typed layer keeps them apart and gives products their kind:
     // M⃗ = r⃗ × f⃗ (§6.3), ω⃗ × r⃗ is a velocity (§4.8), p⃗ = m v⃗.
@@ -196,7 +196,7 @@ fn section_1_6_kinds_of_physical_vectors_are_typed() {
 }
 
 #[test]
-fn section_6_2_mass_properties_from_book_units() {
+fn sec_6_2_mass_properties_from_book_units() {
     // §6.1–6.2 with the business jet's printed inertia (Table 14.2: J_xx = 27,915,
     // J_zz = 47,085 slug·ft²) and an assumed J_yy: the typed constructor converts to the SI
     // kernel exactly, and the typed read gives back the printed numbers within two roundings.
@@ -225,7 +225,7 @@ fn section_6_2_mass_properties_from_book_units() {
 }
 
 #[test]
-fn section_15_19_business_jet_modes_are_unit_independent() {
+fn sec_15_19_business_jet_modes_are_unit_independent() {
     // Tables 14.1–14.2 converted exactly to SI describe the same aircraft: eigenvalues (in
     // 1/s) do not depend on the unit of length, since the SI state matrix is D A D⁻¹ with
     // D = diag(0.3048, 1, 1, 1) up to one rounding per entry. A backward-stable eigensolver
@@ -248,7 +248,7 @@ fn section_15_19_business_jet_modes_are_unit_independent() {
 }
 
 #[test]
-fn section_15_19_business_jet_trims_alike_in_si_and_imperial() {
+fn sec_15_19_business_jet_trims_alike_in_si_and_imperial() {
     // The nonlinear aircraft built from the exactly converted data is the same aircraft:
     // nondimensional coefficients agree to rounding, the level trim at U₀ = 400 kt has the same
     // angle of attack and elevator (radians) and thrust (converted lbf → N), and the
@@ -284,4 +284,15 @@ fn section_15_19_business_jet_trims_alike_in_si_and_imperial() {
         let nearest = pm.iter().map(|q| (q - p).norm()).fold(f64::INFINITY, f64::min);
         assert!(nearest <= 1e-10 * (1.0 + p.norm()), "pole {p} has no SI twin (off by {nearest:e})");
     }
+}
+
+#[test]
+fn eq_14_7_3_boeing_747_gravity_entry_is_in_feet() {
+    // (14.7.3) prints A(1,4) = −3.22e1 for the 747 while the book states u in m/s (P14.9.5):
+    // the entry is −g in ft/s² (g₀ = 32.174 ft/s², printed as 32.2 to half a unit of its last
+    // digit), not in m/s² (9.80665). The catalogue keeps it as printed.
+    let a = vectrix::flight::boeing_747_longitudinal_a();
+    let g_ft = in_unit("1 g0", "ft/s^2");
+    assert_printed(-a[(0, 3)], g_ft, 0.05);
+    assert!((-a[(0, 3)] - si("1 g0", Dimension::ACCELERATION)).abs() > 20.0);
 }
