@@ -574,8 +574,9 @@ fn notebook_10_units() {
     )
     .expect("physical inertia");
     let jj = mp.inertia_resolved(&a);
-    for k in 0..3 {
-        println!("J[{k}{k}] = {:.6} kg·m² = {:.6} slug·ft²", jj[k][k].si(), jj[k][k].value_in("slug*ft^2").expect("unit"));
+    for (k, row) in jj.iter().enumerate() {
+        let jkk = row[k];
+        println!("J[{k}{k}] = {:.6} kg·m² = {:.6} slug·ft²", jkk.si(), jkk.value_in("slug*ft^2").expect("unit"));
     }
     // cell 7
     let g0 = Quantity::parse("1 g0").and_then(|q| q.to_si(Dimension::ACCELERATION)).expect("an acceleration");
