@@ -113,6 +113,17 @@ impl<'a> Parser<'a> {
         self.pos..self.pos + len
     }
 
+    /// An optional `+` or `-`; true for `-`.
+    fn sign(&mut self) -> bool {
+        match self.peek() {
+            Some(c @ ('-' | '+')) => {
+                self.bump();
+                c == '-'
+            }
+            _ => false,
+        }
+    }
+
     fn digits(&mut self) -> &'a str {
         let start = self.pos;
         while self.peek().is_some_and(|c| c.is_ascii_digit()) {
@@ -124,17 +135,7 @@ impl<'a> Parser<'a> {
     /// number = [+-]? (digits ["." digits?] | "." digits) ([eE] [+-]? digits)?
     fn number(&mut self) -> Result<(Decimal, Range<usize>), UnitError> {
         let start = self.pos;
-        let negative = match self.peek() {
-            Some('-') => {
-                self.bump();
-                true
-            }
-            Some('+') => {
-                self.bump();
-                false
-            }
-            _ => false,
-        };
+        let negative = self.sign();
         // inf, infinity, nan: a finite number is required
         let rest = &self.text[self.pos..];
         let word_len = rest.find(|c: char| !c.is_ascii_alphabetic()).unwrap_or(rest.len());
@@ -162,17 +163,7 @@ impl<'a> Parser<'a> {
         if matches!(self.peek(), Some('e' | 'E')) {
             let save = self.pos;
             self.bump();
-            let sign = match self.peek() {
-                Some('-') => {
-                    self.bump();
-                    -1
-                }
-                Some('+') => {
-                    self.bump();
-                    1
-                }
-                _ => 1,
-            };
+            let sign = if self.sign() { -1 } else { 1 };
             let e = self.digits();
             if e.is_empty() {
                 // not an exponent: `e` starts something else (and will be reported there)
@@ -227,17 +218,7 @@ impl<'a> Parser<'a> {
         let exp_start = self.pos;
         let n: i64 = if self.peek() == Some('^') {
             self.bump();
-            let neg = match self.peek() {
-                Some('-') => {
-                    self.bump();
-                    true
-                }
-                Some('+') => {
-                    self.bump();
-                    false
-                }
-                _ => false,
-            };
+            let neg = self.sign();
             let d = self.digits();
             if d.is_empty() {
                 return Err(self.malformed(exp_start..self.pos, "expected an integer exponent after `^`"));
