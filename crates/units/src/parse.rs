@@ -15,7 +15,7 @@
 
 use core::ops::Range;
 
-use crate::exact::{Ratio, Rounded, big_from_digits};
+use crate::exact::{Big, Ratio, Rounded, big_from_digits};
 use crate::table::{resolve, suggestions};
 use crate::{MAX_EXPONENT, Unit, UnitError};
 
@@ -36,7 +36,7 @@ pub(crate) struct Decimal {
 impl Decimal {
     /// The exact magnitude as a ratio and an estimate of its log₁₀ (0 for zero).
     pub(crate) fn magnitude(&self) -> (Ratio, f64) {
-        let mut r = Ratio { num: big_from_digits(&self.digits), den: crate::exact::Big::from_u64(1) };
+        let mut r = Ratio { num: big_from_digits(&self.digits), den: Big::from_u64(1) };
         if self.digits.is_empty() {
             return (r, 0.0);
         }

@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use crate::exact::{PI_DIGITS, PI_EXP10, Ratio, Rounded, big_from_digits, ratio_of_f64};
+use crate::exact::{Big, PI_DIGITS, PI_EXP10, Ratio, Rounded, big_from_digits, ratio_of_f64};
 use crate::table::{ATOMS, AtomId, G0_INDEX, PREFIXES, atom_of};
 use crate::{Dimension, MAX_EXPONENT, UnitError};
 
@@ -52,8 +52,7 @@ impl Unit {
         Self { terms: Vec::new(), dimension: Dimension::DIMENSIONLESS }
     }
 
-    /// The unit of a symbol with a power of ten prefix; `None` for an unknown symbol or a
-    /// prefix the symbol does not take.
+    /// The unit of one table symbol with a power-of-ten prefix (0 for none).
     pub(crate) fn atom(prefix: i8, atom: AtomId) -> Self {
         let dimension = atom_of(atom).dimension;
         Self { terms: vec![Term { atom, prefix, exp: 1 }], dimension }
@@ -152,14 +151,14 @@ impl Unit {
             let e = i64::from(t.exp) * i64::from(sign);
             pow10 += (i64::from(a.pow10) + i64::from(t.prefix)) * e;
             pi += i64::from(a.pi) * e;
-            let (n, d) = (crate::exact::Big::from_u64(a.num), crate::exact::Big::from_u64(a.den));
+            let (n, d) = (Big::from_u64(a.num), Big::from_u64(a.den));
             let (n, d) = (n.pow(e.unsigned_abs() as u32), d.pow(e.unsigned_abs() as u32));
             if e > 0 { r.scale(&n, &d) } else { r.scale(&d, &n) }
         }
         // π^k enters as (PI_DIGITS · 10^PI_EXP10)^k
         if pi != 0 {
             let p = big_from_digits(PI_DIGITS).pow(pi.unsigned_abs() as u32);
-            let one = crate::exact::Big::from_u64(1);
+            let one = Big::from_u64(1);
             if pi > 0 {
                 r.scale(&p, &one)
             } else {
