@@ -59,6 +59,7 @@
 //! [`UnitError::Underflow`], never ∞, 0 or a subnormal.
 #![warn(missing_docs)]
 
+mod converter;
 mod dimension;
 mod error;
 mod exact;
@@ -72,6 +73,7 @@ mod unit;
 #[cfg(feature = "uom")]
 mod uom_interop;
 
+pub use converter::Converter;
 pub use dimension::{Dimension, MAX_EXPONENT};
 pub use error::{UnitError, valid_units};
 pub use kind::{Kind, Measure};
@@ -83,5 +85,5 @@ pub use unit::Unit;
 
 /// `use vectrix_units::prelude::*;`
 pub mod prelude {
-    pub use crate::{Dimension, Measure, Number, Quantity, Unit, UnitError, UnitSystem};
+    pub use crate::{Converter, Dimension, Measure, Number, Quantity, Unit, UnitError, UnitSystem};
 }

@@ -123,6 +123,15 @@ impl UnitSystem {
         Ok(if unit == Unit::one() { format!("{v:?}") } else { format!("{v:?} {unit}") })
     }
 
+    /// A [`Converter`](crate::Converter) from SI to this system's unit for `dimension`, for
+    /// writing many values (two roundings each instead of one).
+    ///
+    /// # Errors
+    /// As [`crate::Converter::new`] (never for the units of these two systems).
+    pub fn converter(self, dimension: Dimension) -> Result<crate::Converter, UnitError> {
+        crate::Converter::new(&self.unit(dimension))
+    }
+
     /// The system's name as written on a command line: `si`, `imperial`.
     pub fn name(self) -> &'static str {
         match self {
