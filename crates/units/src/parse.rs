@@ -155,9 +155,8 @@ impl<'a> Parser<'a> {
             frac = self.digits();
         }
         if int.is_empty() && frac.is_empty() {
-            return Err(
-                self.malformed(start..self.pos.max(start + 1).min(self.text.len()), "expected a number")
-            );
+            // span the sign (if any) and the character found instead of a digit
+            return Err(self.malformed(start..self.here().end, "expected a number"));
         }
         let mut exp: i64 = 0;
         if matches!(self.peek(), Some('e' | 'E')) {

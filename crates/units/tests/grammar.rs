@@ -106,11 +106,12 @@ fn unknown_units_suggest_and_list_what_is_valid() {
 
 #[test]
 fn malformed_quantities_say_what_was_expected() {
-    let cases: [(&str, core::ops::Range<usize>, &str); 12] = [
+    let cases: [(&str, core::ops::Range<usize>, &str); 13] = [
         ("", 0..0, "empty quantity"),
         ("   ", 0..3, "empty quantity"),
         ("m", 0..1, "expected a number"),
-        ("- 3 m", 0..1, "expected a number"),
+        ("- 3 m", 0..2, "expected a number"),
+        ("µ", 0..2, "expected a number"),
         ("3 kg m", 5..6, "join factors with `*`"),
         ("3 m2", 2..4, "write `m^2`"),
         ("3 m^", 3..4, "integer exponent"),
