@@ -123,6 +123,17 @@ impl Big {
         b
     }
 
+    /// self >>= 1.
+    fn shr1(&mut self) {
+        let mut carry = 0u32;
+        for limb in self.limbs.iter_mut().rev() {
+            let next = *limb & 1;
+            *limb = (*limb >> 1) | (carry << 31);
+            carry = next;
+        }
+        self.trim();
+    }
+
     fn cmp_big(&self, other: &Big) -> Ordering {
         self.limbs
             .len()
@@ -215,14 +226,16 @@ impl Ratio {
         } else {
             (self.num.clone(), self.den.shl((-s) as u64))
         };
-        // binary long division: q = ⌊A/B⌋ < 2⁵⁷, remainder left in a
+        // binary long division: q = ⌊A/B⌋ < 2⁵⁷, remainder left in a; t = B·2^i, halved
+        // in place from i = 56 down to 0
         let mut q: u64 = 0;
+        let mut t = b.shl(56);
         for i in (0..57u64).rev() {
-            let t = b.shl(i);
             if a.cmp_big(&t) != Ordering::Less {
                 a.sub_assign(&t);
                 q |= 1 << i;
             }
+            t.shr1();
         }
         let sticky = !a.is_zero();
         // keep 53 bits, round half to even with the dropped bits and the sticky remainder
