@@ -759,3 +759,52 @@ fn issue_21_outputs_in_imperial_units() {
     assert_eq!(o.status.code(), Some(1));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn issue_16_a_cancelled_run_keeps_what_it_computed() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use vectrix::dynamics::scene::RunControl;
+    let scene = kepler_scene(0.9, 4.0, 400, 1e-10);
+    let cancel = AtomicBool::new(false);
+    let mut progress = |f: f64| {
+        if f > 0.3 {
+            cancel.store(true, Ordering::Relaxed);
+        }
+    };
+    let r = scene.run_with(RunControl { progress: &mut progress, cancel: Some(&cancel) }).unwrap();
+    let stop = r.stop.as_ref().expect("stopped");
+    assert_eq!(stop.reason, StopReason::Interrupted);
+    assert!(r.t.len() > 100 && r.t.len() < 401, "{}", r.t.len());
+    assert!(*r.t.last().unwrap() <= stop.t);
+    // what was computed is right
+    assert!(kepler_error(&r, 0.9) < 1e-6);
+}
+
+#[cfg(unix)]
+#[test]
+fn issue_16_ctrl_c_writes_the_rows_computed_marked_incomplete() {
+    // a long run, interrupted by SIGINT: exit code 130, output written, "complete": false
+    let dir = temp_dir("sigint");
+    let text = pendulum("name = \"long\"").replace("duration = 0.2", "duration = 1e6\nmax_steps = 100000000");
+    std::fs::write(dir.join("l.toml"), text).unwrap();
+    let child = Command::new(env!("CARGO_BIN_EXE_vectrix"))
+        .current_dir(&dir)
+        .args(["run", "l.toml", "--quiet", "--out", "o"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let ok = Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+    assert!(ok.success());
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(130), "{}", String::from_utf8_lossy(&o.stderr));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("o/long/summary.json")).unwrap()).unwrap();
+    assert_eq!(s["complete"], serde_json::Value::Bool(false));
+    assert_eq!(s["stop"]["reason"], "interrupted");
+    let rows = s["rows"].as_u64().unwrap();
+    let csv = std::fs::read_to_string(dir.join("o/long/trajectory.csv")).unwrap();
+    assert_eq!(csv.lines().count() as u64, rows + 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -134,6 +134,8 @@ where
 /// Entry point of the binary: parses `std::env::args` and runs. Exit codes: 0 done, 1 error
 /// or a run stopped by its budget (output written, marked incomplete), 130 interrupted.
 pub fn main() -> ExitCode {
+    // Ctrl-C stops a run cleanly from the first instant on (the handler sets a flag)
+    run::interrupted();
     let mut out = std::io::stdout().lock();
     match run_with_args(std::env::args_os(), &mut out) {
         Ok(Outcome::Complete) => ExitCode::SUCCESS,
