@@ -374,7 +374,12 @@ mod flight_scene {
         assert_abs(at(1.5) - trim.controls.elevator, 0.01, 1e-15);
         assert_abs(at(2.5) - trim.controls.elevator, -0.01, 1e-15);
         assert_eq!(at(3.5), trim.controls.elevator);
-        assert!(run.to_csv().starts_with("t,u,u_linear,alpha,alpha_linear"));
+        // flown in the catalogue's units (the book's): u in ft/s, angles in rad
+        assert!(
+            run.to_csv().starts_with("t [s],u [ft/s],u_linear [ft/s],alpha [rad],alpha_linear [rad]"),
+            "{}",
+            run.to_csv().lines().next().unwrap_or("")
+        );
         assert!(run.summary_json().contains("\"short period\""));
         assert!(run.response_svg(alpha).unwrap().contains("<svg"));
         assert!(run.modes_svg().unwrap().contains("<svg"));

@@ -173,6 +173,16 @@ fn run_and_check_flight_scene() {
     assert!(summary["trim"]["residual"].as_f64().unwrap() <= 1e-10);
     let csv = std::fs::read_to_string(dest.join("trajectory.csv")).unwrap();
     assert_eq!(csv.lines().count(), 102);
+    // outputs in SI by default (the aircraft flies in the book's ft and slug): u in m/s, exactly
+    // the trim airspeed's u component × 0.3048
+    assert!(csv.starts_with("t [s],u [m/s],u_linear [m/s]"), "{}", csv.lines().next().unwrap_or(""));
+    assert_eq!(summary["units"], "si");
+    let imperial = cli(&["run", &p, "--out", &out_dir, "--quiet", "--units", "imperial"]).unwrap();
+    assert!(imperial.contains("wrote"));
+    let csv_ft = std::fs::read_to_string(dest.join("trajectory.csv")).unwrap();
+    assert!(csv_ft.starts_with("t [s],u [ft/s]"));
+    let u0 = |c: &str| -> f64 { c.lines().nth(1).unwrap().split(',').nth(1).unwrap().parse().unwrap() };
+    assert!((u0(&csv) - u0(&csv_ft) * 0.3048).abs() <= 2.0 * f64::EPSILON * u0(&csv));
     // sweeps take multibody scenes only, and say so
     let e = cli(&["sweep", &p, "--param", "duration=1,2"]).unwrap_err();
     assert!(e.contains("flight scene"), "{e}");

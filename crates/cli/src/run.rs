@@ -179,7 +179,7 @@ pub fn run(
     let scene = match path {
         Some(p) => match load(p)? {
             AnyScene::Bodies(s) => *s,
-            AnyScene::Flight(f) => return run_flight(out, &f, dir, quiet),
+            AnyScene::Flight(f) => return run_flight(out, &f, dir, quiet, units),
         },
         None => Scene::from_toml(DEFAULT_SCENE, "<default scene>")?,
     };
@@ -201,12 +201,14 @@ fn run_flight(
     scene: &FlightScene,
     dir: &Path,
     quiet: bool,
+    units: UnitSystem,
 ) -> Result<Outcome, BoxError> {
     crate::output::preflight(dir, &scene.spec().name)?;
     let start = Instant::now();
     let mut bar = Progress::new(&scene.spec().name, quiet);
     let run = scene.run_with(RunControl { progress: &mut |f| bar.update(f), cancel: Some(interrupted()) })?;
     bar.finish();
+    let run = run.in_units(units)?;
     let dest = write_dir(dir, &run.scene, |tmp| crate::report::write_flight(tmp, &run))?;
     writeln!(
         out,

@@ -283,6 +283,25 @@ pub struct FlightRun {
     pub steps: usize,
     /// `Some` when the run was cancelled: the samples end where the nonlinear run stopped.
     pub stop: Option<Stop>,
+    /// The unit of each output (`ft/s`, `rad`, `lbf`): the catalogue's (the book's imperial
+    /// units) unless converted by [`FlightRun::in_units`].
+    pub units: Vec<String>,
+    /// The unit system of the outputs (`imperial` as flown, or `si`).
+    pub unit_system: &'static str,
+}
+
+/// The dimension of a flight output (by its name in [`OUTPUT_NAMES`]).
+///
+/// Book: (11.5.1), (10.6.18), (10.8.1).
+pub fn output_dimension(name: &str) -> vectrix_units::Dimension {
+    use vectrix_units::Dimension as D;
+    match name {
+        "x" | "y" | "z" => D::LENGTH,
+        "u" | "v" | "w" | "airspeed" => D::VELOCITY,
+        "p" | "q" | "r" => D::ANGULAR_VELOCITY,
+        "thrust" => D::FORCE,
+        _ => D::ANGLE,
+    }
 }
 
 /// Samples and work of one integration.
@@ -331,6 +350,8 @@ impl AnyScene {
 #[derive(Serialize)]
 struct Summary<'a> {
     scene: &'a str,
+    /// The unit system of the outputs; each output's unit is in `outputs`.
+    units: &'static str,
     /// `false` when the run was cancelled (see `stop`).
     complete: bool,
     stop: &'a Option<Stop>,
@@ -359,6 +380,7 @@ struct TrimSummary {
 #[derive(Serialize)]
 struct OutputSummary<'a> {
     name: &'a str,
+    unit: &'a str,
     /// max |nonlinear − trim value| over the run
     max_excursion: f64,
     /// max |nonlinear − linear| (None where the linear column is undefined)
@@ -797,6 +819,12 @@ impl FlightScene {
             fevals: nl.fevals,
             steps: nl.steps,
             stop,
+            units: self
+                .outputs
+                .iter()
+                .map(|&o| UnitSystem::Imperial.label(output_dimension(OUTPUT_NAMES[o])))
+                .collect(),
+            unit_system: UnitSystem::Imperial.name(),
         })
     }
 
@@ -857,11 +885,11 @@ impl FlightScene {
 impl FlightRun {
     /// CSV: `t`, then for each output its nonlinear column and `<name>_linear` (where defined).
     pub fn to_csv(&self) -> String {
-        let mut s = String::from("t");
-        for (name, lin) in self.outputs.iter().zip(&self.linear) {
-            s.push_str(&format!(",{name}"));
+        let mut s = String::from("t [s]");
+        for ((name, lin), unit) in self.outputs.iter().zip(&self.linear).zip(&self.units) {
+            s.push_str(&format!(",{name} [{unit}]"));
             if lin.is_some() {
-                s.push_str(&format!(",{name}_linear"));
+                s.push_str(&format!(",{name}_linear [{unit}]"));
             }
         }
         s.push('\n');
@@ -891,11 +919,43 @@ impl FlightRun {
         v.iter().map(|x| (x - v[0]).abs()).fold(0.0, f64::max)
     }
 
+    /// The run with every output written in `system` (flight scenes fly in the catalogue's
+    /// units, the book's imperial ones), converted exactly.
+    ///
+    /// Book: §15.19.
+    ///
+    /// # Errors
+    /// [`SceneError::Run`] when a value overflows in the new unit.
+    pub fn in_units(mut self, system: UnitSystem) -> Result<Self, SceneError> {
+        let fail = |e: vectrix_units::UnitError| SceneError::Run { t: 0.0, message: e.to_string() };
+        for (k, name) in self.outputs.iter().enumerate() {
+            let d = output_dimension(name);
+            let (from, to) =
+                (UnitSystem::Imperial.converter(d).map_err(fail)?, system.converter(d).map_err(fail)?);
+            let conv = |x: &mut f64| -> Result<(), SceneError> {
+                *x = to.from_si(from.to_si(*x).map_err(fail)?).map_err(fail)?;
+                Ok(())
+            };
+            for x in &mut self.nonlinear[k] {
+                conv(x)?;
+            }
+            if let Some(l) = &mut self.linear[k] {
+                for x in l {
+                    conv(x)?;
+                }
+            }
+            self.units[k] = system.label(d);
+        }
+        self.unit_system = system.name();
+        Ok(self)
+    }
+
     /// summary.json: trim, modes, and per output the excursion and the linear model's error.
     pub fn summary_json(&self) -> String {
         let (s, c) = (&self.trim.state, &self.trim.controls);
         let summary = Summary {
             scene: &self.scene,
+            units: self.unit_system,
             complete: self.stop.is_none(),
             stop: &self.stop,
             rows: self.t.len(),
@@ -914,6 +974,7 @@ impl FlightRun {
             outputs: (0..self.outputs.len())
                 .map(|k| OutputSummary {
                     name: &self.outputs[k],
+                    unit: &self.units[k],
                     max_excursion: self.max_excursion(k),
                     max_linear_error: self.max_linear_error(k),
                 })
@@ -933,9 +994,12 @@ impl FlightRun {
             reason: format!("output index {k} out of range (0..{})", self.outputs.len()),
         })?;
         let pts = |v: &[f64]| self.t.iter().copied().zip(v.iter().copied()).collect::<Vec<_>>();
-        let mut chart =
-            vectrix_plot::LineChart::new(format!("{}: {name}", self.scene), "t [s]", name.as_str())
-                .with_series("nonlinear", pts(&self.nonlinear[k]));
+        let mut chart = vectrix_plot::LineChart::new(
+            format!("{}: {name}", self.scene),
+            "t [s]",
+            format!("{name} [{}]", self.units[k]),
+        )
+        .with_series("nonlinear", pts(&self.nonlinear[k]));
         if let Some(l) = &self.linear[k] {
             chart = chart.with_series("linear", pts(l));
         }
