@@ -43,15 +43,20 @@ impl Axis {
             lo = 10f64.powf(a);
             hi = 10f64.powf(b);
         } else {
-            if hi - lo <= 1e-12 * lo.abs().max(hi.abs()).max(1e-300) {
+            // Half-spans throughout: hi/2 − lo/2 is finite for every finite pair, where
+            // hi − lo overflows for data over ±1e308.
+            if half_span(lo, hi) <= 0.5e-12 * lo.abs().max(hi.abs()).max(1e-300) {
                 let d = if lo == 0.0 { 1.0 } else { 0.5 * lo.abs() };
-                lo -= d;
-                hi += d;
+                lo = (lo - d).max(-f64::MAX);
+                hi = (hi + d).min(f64::MAX);
             }
             if nice {
-                let step = nice_step(hi - lo);
-                lo = (lo / step).floor() * step;
-                hi = (hi / step).ceil() * step;
+                let step = nice_step(half_span(lo, hi));
+                let (a, b) = ((lo / step).floor() * step, (hi / step).ceil() * step);
+                // Rounding out to whole steps may pass ±f64::MAX: keep the data range there.
+                if a.is_finite() && b.is_finite() {
+                    (lo, hi) = (a, b);
+                }
             }
         }
         Ok(Self { lo, hi, log })
@@ -62,7 +67,7 @@ impl Axis {
         if self.log {
             (v.log10() - self.lo.log10()) / (self.hi.log10() - self.lo.log10())
         } else {
-            (v - self.lo) / (self.hi - self.lo)
+            (0.5 * v - 0.5 * self.lo) / half_span(self.lo, self.hi)
         }
     }
 
@@ -85,7 +90,7 @@ impl Axis {
             }
             out
         } else {
-            let step = nice_step(self.hi - self.lo);
+            let step = nice_step(half_span(self.lo, self.hi));
             let first = (self.lo / step - 1e-9).ceil() as i64;
             let last = (self.hi / step + 1e-9).floor() as i64;
             let decimals = (-step.log10().floor()).max(0.0) as usize;
@@ -103,9 +108,16 @@ impl Axis {
     }
 }
 
-/// A step of 1, 2 or 5 × 10^k giving about six intervals over `span`.
-pub(crate) fn nice_step(span: f64) -> f64 {
-    let raw = span / 6.0;
+/// (hi − lo)/2 without overflow: finite for every finite pair.
+#[inline]
+pub(crate) fn half_span(lo: f64, hi: f64) -> f64 {
+    0.5 * hi - 0.5 * lo
+}
+
+/// A step of 1, 2 or 5 × 10^k giving about six intervals over a span of 2·`half` (the half
+/// span, so that a span beyond f64::MAX still has a step).
+pub(crate) fn nice_step(half: f64) -> f64 {
+    let raw = half / 3.0;
     let mag = 10f64.powf(raw.log10().floor());
     let f = raw / mag;
     let m = if f < 1.5 {

@@ -80,6 +80,7 @@ pub fn compose_euler<T: Scalar>(
 ///
 /// Book: §2.19, F2.19.1, F2.19.3.
 pub fn compose_coplanar<T: Scalar>(th_2: &Vector<T>, th_1: &Vector<T>, tol: f64) -> Option<Vector<T>> {
+    vectrix_tensor::check_tolerance(tol, "tol").ok()?;
     let (n2, n1) = (th_2.norm(), th_1.norm());
     if th_2.cross(th_1).norm().re() > tol * (n2 * n1).re() {
         return None;

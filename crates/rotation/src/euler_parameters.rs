@@ -24,6 +24,7 @@ impl<T: Scalar> Quaternion<T> {
     #[doc(alias = "from_dcm")]
     #[doc(alias = "from_matrix")]
     pub fn from_rotation_matrix(r: &Matrix3<T>, tol: f64) -> Result<Self, RotationError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         check_rotation_matrix(r, tol)?;
         Ok(Self::from_rotation_matrix_unchecked(r))
     }
@@ -311,6 +312,12 @@ impl<T: Scalar> Quaternion<T> {
     pub fn from_gibbs(g: &Vector3<T>) -> Self {
         let n = norm3(g);
         let one = T::one();
+        if n.re().is_infinite() {
+            // θ = π, the limit |g| → ∞: the axis is the direction of the infinite components
+            // ((∞, 1, 0) is the half turn about î). NaN input stays NaN.
+            let d = g.map(|x| if x.re().is_infinite() { x.signum() } else { x * T::zero() });
+            return Self::from_parts(T::zero(), d / norm3(&d)).canonical();
+        }
         if n > one {
             // (1/n, ĝ)/√(1 + 1/n²): no overflow of g·g near θ = π.
             let r = one / n;
@@ -336,8 +343,22 @@ impl<T: Scalar> Quaternion<T> {
     /// Book: extends §2.17.
     #[inline]
     pub fn from_mrp(p: &Vector3<T>) -> Self {
-        let p2 = p.norm_squared();
         let one = T::one();
+        let n = norm3(p);
+        if n.re() > 1.0 && n.re().is_finite() {
+            // |p| > 1, in terms of r = 1/|p| and p̂ so that |p|² never overflows:
+            // q₀ = (1 − |p|²)/(1 + |p|²) = (r² − 1)/(r² + 1), q⃗ = 2p/(1 + |p|²) = 2r p̂/(r² + 1)
+            let r = one / n;
+            let k = one / (r * r + one);
+            return Self::from_parts((r * r - one) * k, (p / n) * (T::lit(2.0) * r * k)).canonical();
+        }
+        if n.re().is_infinite() {
+            // |p| → ∞: the shadow −p/|p|² → 0, the identity.
+            return Self::identity();
+        }
+        // (2.17.x, MRP): q = ((1 − |p|²), 2p)/(1 + |p|²); |p|² ≤ 1 cannot overflow, and its
+        // underflow for tiny p is harmless (q₀ = 1, q⃗ = 2p).
+        let p2 = p.norm_squared();
         let k = one / (one + p2);
         Self::from_parts((one - p2) * k, p * (T::lit(2.0) * k)).canonical()
     }

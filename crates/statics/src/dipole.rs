@@ -17,7 +17,8 @@ use crate::spring::{check_vec, unit_sep};
 /// [`StaticsError::CoincidentPoints`] for r⃗ = 0⃗.
 pub fn dipole_field_dyadic<T: Scalar>(r_z_y: &Vector<T>) -> Result<Dyadic<T>, StaticsError> {
     let (r_hat, len) = unit_sep(r_z_y, "magnetic dipoles")?;
-    Ok((r_hat.outer(&r_hat) * T::lit(3.0) - Dyadic::identity()) * (T::one() / (len * len * len)))
+    let d = (r_hat.outer(&r_hat) * T::lit(3.0) - Dyadic::identity()) * (T::one() / (len * len * len));
+    if d.is_finite() { Ok(d) } else { Err(StaticsError::Overflow { what: "dipole field 1/|r|³" }) }
 }
 
 /// The field of the dipole m⃗_y at z: B⃗_y(r⃗_{z/y}) = (3(r̂·m⃗_y)r̂ − m⃗_y)/|r⃗|³ (6.13.1).
@@ -28,7 +29,7 @@ pub fn dipole_field_dyadic<T: Scalar>(r_z_y: &Vector<T>) -> Result<Dyadic<T>, St
 /// [`StaticsError::CoincidentPoints`]; [`StaticsError::NonFinite`].
 pub fn dipole_field<T: Scalar>(m_y: &Vector<T>, r_z_y: &Vector<T>) -> Result<Vector<T>, StaticsError> {
     check_vec(m_y, "dipole moment")?;
-    Ok(dipole_field_dyadic(r_z_y)?.apply(m_y))
+    crate::gravity::finite_or_overflow(dipole_field_dyadic(r_z_y)?.apply(m_y), "dipole field")
 }
 
 /// Forces and torques between the dipoles m⃗_z at z and m⃗_y at y.

@@ -111,7 +111,8 @@ impl<T: Scalar> CentralGravity<T> {
         check_mass(m, "attracted particle")?;
         let (r_hat, len) = unit_sep(r_y_x, "central gravity")?;
         // (6.12.1): r̂_{x/y} = −r̂_{y/x}
-        Ok(r_hat * (-self.mu * m / (len * len)))
+        let f = r_hat * (-self.mu * m / len / len);
+        finite_or_overflow(f, "central gravity force")
     }
 
     /// Potential U = −μ m/|r⃗_{y/x}| (8.3.10).
@@ -122,7 +123,8 @@ impl<T: Scalar> CentralGravity<T> {
     /// [`StaticsError::CoincidentPoints`] for r⃗_{y/x} = 0⃗.
     pub fn potential(&self, m: T, r_y_x: &Vector<T>) -> Result<T, StaticsError> {
         let (_, len) = unit_sep(r_y_x, "central gravity")?;
-        Ok(-self.mu * m / len)
+        let u = -self.mu * m / len;
+        if u.re().is_finite() { Ok(u) } else { Err(StaticsError::Overflow { what: "central gravity potential" }) }
     }
 }
 
@@ -218,4 +220,10 @@ pub fn centre_of_gravity<T: Scalar>(
         return Err(StaticsError::ZeroMass { what: "centre of gravity (zero total weight)" });
     }
     Ok(y0.displaced(first / total))
+}
+
+/// `Ok(v)` when every component is finite, else [`StaticsError::Overflow`]: finite inputs whose
+/// true result exceeds the largest finite number (|r⃗| = 1e-200 in an inverse-square law).
+pub(crate) fn finite_or_overflow<T: Scalar>(v: Vector<T>, what: &'static str) -> Result<Vector<T>, StaticsError> {
+    if v.is_finite() { Ok(v) } else { Err(StaticsError::Overflow { what }) }
 }

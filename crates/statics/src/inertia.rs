@@ -156,6 +156,7 @@ pub(crate) fn sorted_eigen(m: &Matrix3<f64>) -> ([f64; 3], Matrix3<f64>) {
 /// [`StaticsError::NotPositiveSemidefinite`], [`StaticsError::RankOne`],
 /// [`StaticsError::TriangleInequality`].
 pub fn check_inertia<T: Scalar>(j: &Dyadic<T>, rel_tol: f64) -> Result<InertiaCheck, StaticsError> {
+        vectrix_tensor::check_tolerance(rel_tol, "rel_tol")?;
     analyse(j, rel_tol).map(|(check, _)| check)
 }
 

@@ -93,6 +93,7 @@ impl<T: Scalar> Dyadic<T> {
     /// hidden basis (scale-free, so the test does not depend on units and does not overflow
     /// for huge or tiny entries). The reported `det` is that of the scaled dyadic.
     pub fn inverse(&self, rel_tol: f64) -> Result<Dyadic<T>, TensorError> {
+        crate::check_tolerance(rel_tol, "rel_tol")?;
         if !self.is_finite() {
             return Err(TensorError::NonFinite { what: "dyadic" });
         }

@@ -30,7 +30,7 @@ pub use bivector::Bivector;
 pub use covector::Covector;
 pub use dyadic::{Dyadic, adjugate};
 pub use elasticity::{HookeMap, Isotropic, hooke};
-pub use error::TensorError;
+pub use error::{TensorError, check_tolerance};
 pub use multivector::Multivector;
 pub use rotor::{Rotor, reflect};
 pub use scalar::Scalar;

@@ -66,6 +66,7 @@ impl<T: Scalar> Trivector<T> {
     /// # Errors
     /// [`TensorError::Shape`] for another type or a tensor that is not alternating.
     pub fn from_tensor(t: &Tensor<T>, tol: f64) -> Result<Self, TensorError> {
+        crate::check_tolerance(tol, "tol")?;
         if (t.p, t.q) != (3, 0) {
             return Err(TensorError::Shape {
                 detail: format!("a trivector is a (3, 0) tensor, got ({}, {})", t.p, t.q),

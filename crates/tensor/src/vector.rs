@@ -70,7 +70,13 @@ impl<T: Scalar> Vector<T> {
     #[inline]
     pub fn norm(&self) -> T {
         let m = self.c.x.abs().max(self.c.y.abs()).max(self.c.z.abs());
-        if m == T::zero() || !m.re().is_finite() {
+        if m == T::zero() {
+            // |x⃗| is not differentiable at 0⃗: the plain √(x·x) gives 0 for f64 and a NaN
+            // derivative for dual numbers (instead of the derivative of max|xᵢ|, which would
+            // make `gradient(|r| r.norm(), 0⃗)` return a made-up direction).
+            return self.c.norm();
+        }
+        if !m.re().is_finite() {
             return m;
         }
         // Within the comfortable range the plain formula is exact enough and faster.
@@ -95,7 +101,12 @@ impl<T: Scalar> Vector<T> {
     #[inline]
     pub fn unit(&self) -> Option<Vector<T>> {
         let n = self.norm();
-        if n == T::zero() || !n.re().is_finite() { None } else { Some(*self / n) }
+        if n == T::zero() || !n.re().is_finite() {
+            // |x| overflows for components near f64::MAX although x̂ exists: scale first.
+            let s = self.scaled_for_angle();
+            return if s.c != self.c && s.is_finite() { s.unit() } else { None };
+        }
+        Some(*self / n)
     }
 
     /// Coform x⃗′, the covector with x⃗′y⃗ = x⃗·y⃗ (2.1.6).

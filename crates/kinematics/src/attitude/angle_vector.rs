@@ -52,9 +52,22 @@ fn check<T: Scalar>(x: &Vector3<T>, what: &'static str) -> Result<(), Kinematics
 ///
 /// Book: (4.9.7), (4.9.10).
 pub fn jacobian_left<T: Scalar>(th: &Vector3<T>) -> Matrix3<T> {
-    let (a, b) = coefficients(th.norm());
-    let x = th.cross_matrix();
-    Matrix3::identity() + x * a + x * x * b
+    let mut theta = th.norm();
+    if theta.re().is_infinite() {
+        // |Θ|² overflowed: scale by the largest component.
+        let m = th.x.abs().max(th.y.abs()).max(th.z.abs());
+        theta = (th / m).norm() * m;
+    }
+    if theta.re() < SERIES_BELOW || !theta.re().is_finite() {
+        let (a, b) = coefficients(theta);
+        let x = th.cross_matrix();
+        return Matrix3::identity() + x * a + x * x * b;
+    }
+    // Large θ in terms of n̂ = Θ/θ, so that Θ^{×2} never overflows (Θ = 1e300 î):
+    // J_l = I + (1 − cos θ)/θ n̂^× + (1 − sin θ/θ) n̂^{×2}
+    let x = (th / theta).cross_matrix();
+    let s = (theta * T::lit(0.5)).sin();
+    Matrix3::identity() + x * (T::lit(2.0) * s * s / theta) + x * x * (T::one() - theta.sin() / theta)
 }
 
 /// J_r(Θ) = J_l(−Θ) = J_l(Θ)ᵀ: ω_{B/A}|_B = J_r Θ̇ (4.9.11).
