@@ -41,7 +41,29 @@ pub struct Crate {
 
 /// The crates the suite knows.
 pub fn crates() -> Vec<Crate> {
-    vec![]
+    vec![
+        Crate { dir: "tensor", covered: crate::tensor::COVERED, enforce: Enforce::All },
+        Crate { dir: "frames", covered: crate::frames::COVERED, enforce: Enforce::All },
+        Crate { dir: "rotation", covered: crate::rotation::COVERED, enforce: Enforce::All },
+        Crate { dir: "kinematics", covered: crate::kinematics::COVERED, enforce: Enforce::All },
+        Crate { dir: "statics", covered: crate::statics::COVERED, enforce: Enforce::All },
+        Crate { dir: "ode", covered: crate::ode::COVERED, enforce: Enforce::All },
+        // catalog.rs and scene.rs belong to the units helper and the lead (issue 22 split).
+        Crate { dir: "flight", covered: crate::flight::COVERED, enforce: Enforce::AllExcept(&["catalog.rs", "scene.rs"]) },
+        // control.rs belongs to the LTI helper's figures.
+        Crate { dir: "plot", covered: crate::plot::COVERED, enforce: Enforce::AllExcept(&["control.rs"]) },
+        // multibody/, lagrange/ and scene/ are being fixed by other helpers: pending.
+        Crate {
+            dir: "dynamics",
+            covered: crate::dynamics::COVERED,
+            enforce: Enforce::Files(&[
+                "rigid.rs", "collision.rs", "impact.rs", "energy.rs", "eigenaxis.rs", "network.rs", "sixd.rs",
+            ]),
+        },
+        // Switched off until the LTI fixes (eigen/balance, time_grid, expm, scale) are merged.
+        Crate { dir: "lti", covered: crate::lti::COVERED, enforce: Enforce::Off },
+        Crate { dir: "cli", covered: &[], enforce: Enforce::Off },
+    ]
 }
 
 fn uncovered(c: &Crate) -> (Vec<PublicFn>, Vec<PublicFn>) {
@@ -100,5 +122,8 @@ fn api_walker_sees_the_public_api() {
         assert!(names.contains(&known), "{known} missing from {names:?}");
     }
     let kin = public_functions("kinematics");
-    assert!(kin.iter().any(|f| f.name == "attitude::jacobian_left"), "module-qualified names");
+    // Re-exported through `pub use` (attitude/angle_vector.rs is a private module of the public
+    // `attitude`): the bare name.
+    assert!(kin.iter().any(|f| f.name == "jacobian_left"), "re-exported names");
+    assert!(kin.iter().any(|f| f.name == "FrameMotion::compose"), "methods");
 }

@@ -55,11 +55,6 @@ pub fn hostile() -> impl Iterator<Item = f64> + Clone {
     HOSTILE.into_iter().chain([f64::NAN])
 }
 
-/// Hostile scalars that are finite.
-pub fn hostile_finite() -> impl Iterator<Item = f64> + Clone {
-    hostile().filter(|x| x.is_finite())
-}
-
 /// Triples drawn from the hostile set: each hostile value on each axis, the three equal, and
 /// a mixed huge/tiny one.
 pub fn hostile3() -> Vec<[f64; 3]> {
@@ -75,11 +70,6 @@ pub fn hostile3() -> Vec<[f64; 3]> {
     out.push([1e-200, 1e-200, 1e-200]);
     out.push([1e200, 1e200, 1e200]);
     out
-}
-
-/// Finite hostile triples.
-pub fn hostile3_finite() -> Vec<[f64; 3]> {
-    hostile3().into_iter().filter(|v| v.iter().all(|x| x.is_finite())).collect()
 }
 
 /// True if every number is finite.
@@ -136,4 +126,3 @@ macro_rules! cases {
         )*
     };
 }
-pub(crate) use cases;

@@ -39,7 +39,8 @@ fn check_masses(m1: f64, m2: f64) -> Result<(), DynamicsError> {
 ///
 /// # Errors
 /// [`DynamicsError::InvalidParameter`] for e ∉ [0, 1] or masses ≤ 0;
-/// [`DynamicsError::NonFinite`]; [`DynamicsError::Separating`] when u₁ ≤ u₂ (particle 1,
+/// [`DynamicsError::NonFinite`]; [`DynamicsError::Overflow`] for speeds beyond f64::MAX;
+/// [`DynamicsError::Separating`] when u₁ ≤ u₂ (particle 1,
 /// behind, does not catch up with particle 2).
 pub fn restitution_1d(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<(f64, f64), DynamicsError> {
     crate::error::check_finite(&[m1, m2, u1, u2, e], "collision input")?;
@@ -49,7 +50,11 @@ pub fn restitution_1d(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<(f64
         return Err(DynamicsError::Separating { approach: u1 - u2 });
     }
     let mb = m1 + m2;
-    Ok((((m1 - e * m2) * u1 + (1.0 + e) * m2 * u2) / mb, ((1.0 + e) * m1 * u1 + (m2 - e * m1) * u2) / mb))
+    let after = (((m1 - e * m2) * u1 + (1.0 + e) * m2 * u2) / mb, ((1.0 + e) * m1 * u1 + (m2 - e * m1) * u2) / mb);
+    if !(after.0.is_finite() && after.1.is_finite()) {
+        return Err(DynamicsError::Overflow { what: "speeds after the collision" });
+    }
+    Ok(after)
 }
 
 /// Kinetic energy lost in a central collision, ΔT = ½(1 − e²) m₁m₂/(m₁ + m₂) (u₁ − u₂)².
@@ -220,5 +225,10 @@ pub fn centre_of_percussion(
             detail: "J⁻¹(r_{P/c} × n̂) is not perpendicular to n̂: no body point is at rest after the impulse",
         });
     }
-    Ok(props.centre_of_mass().displaced(a.cross(&n) / (props.mass() * a.norm_squared())))
+    // r⃗ = (a⃗ × n̂)/(m|a⃗|²) = (â × n̂)/(m|a⃗|): no |a⃗|² overflow or underflow
+    let p = props.centre_of_mass().displaced(a.cross(&n) / a.norm() / (props.mass() * a.norm()));
+    if !p.is_finite() {
+        return Err(DynamicsError::Overflow { what: "centre of percussion" });
+    }
+    Ok(p)
 }

@@ -45,6 +45,21 @@
 //! ```
 #![warn(missing_docs)]
 
+/// `Ok(v)` when every component of the matrix or vector `v` is finite, else
+/// [`KinematicsError::Overflow`]: finite inputs whose true result exceeds f64::MAX
+/// (docs/robustness.md).
+macro_rules! finite_or_overflow {
+    ($v:expr, $what:expr) => {{
+        let v = $v;
+        if v.iter().all(|x| vectrix_tensor::Scalar::re(x).is_finite()) {
+            Ok(v)
+        } else {
+            Err($crate::KinematicsError::Overflow { what: $what })
+        }
+    }};
+}
+pub(crate) use finite_or_overflow;
+
 pub mod attitude;
 mod bishop;
 mod chain;

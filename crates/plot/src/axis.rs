@@ -46,7 +46,9 @@ impl Axis {
             // Half-spans throughout: hi/2 − lo/2 is finite for every finite pair, where
             // hi − lo overflows for data over ±1e308.
             if half_span(lo, hi) <= 0.5e-12 * lo.abs().max(hi.abs()).max(1e-300) {
-                let d = if lo == 0.0 { 1.0 } else { 0.5 * lo.abs() };
+                // A point (or a span of subnormals, whose half-span rounds to 0): widen about
+                // it by half its size, at least by 1e-300 so that the span is a normal number.
+                let d = if lo == 0.0 && hi == 0.0 { 1.0 } else { (0.5 * lo.abs().max(hi.abs())).max(1e-300) };
                 lo = (lo - d).max(-f64::MAX);
                 hi = (hi + d).min(f64::MAX);
             }
@@ -91,13 +93,20 @@ impl Axis {
             out
         } else {
             let step = nice_step(half_span(self.lo, self.hi));
-            let first = (self.lo / step - 1e-9).ceil() as i64;
-            let last = (self.hi / step + 1e-9).floor() as i64;
+            let first = (self.lo / step - 1e-9).ceil();
+            let last = (self.hi / step + 1e-9).floor();
+            // A usable step gives about six ticks. A span of subnormals has no representable
+            // 1–2–5 step (it rounds to 0): then the two ends are the ticks.
+            if !(step.is_finite() && step > 0.0 && first <= last && last - first <= 100.0) {
+                return [self.lo, self.hi].map(|v| Tick { value: v, label: Some(format!("{v:e}")) }).to_vec();
+            }
+            // Fixed decimals for steps of ordinary size, scientific notation beyond.
+            let scientific = !(1e-6..1e15).contains(&step);
             let decimals = (-step.log10().floor()).max(0.0) as usize;
-            (first..=last)
+            (first as i64..=last as i64)
                 .map(|i| {
                     let v = i as f64 * step;
-                    let mut s = format!("{v:.decimals$}");
+                    let mut s = if scientific { format!("{v:e}") } else { format!("{v:.decimals$}") };
                     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
                         s.remove(0);
                     }

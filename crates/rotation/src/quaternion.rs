@@ -138,7 +138,8 @@ impl<T: Scalar> Quaternion<T> {
         // Scale by the largest component first (as `Vector::unit`): (1e200, 1e200, 0, 0) and
         // (1e-200, …) normalise exactly instead of overflowing or underflowing |𝐪|².
         let m = self.max_abs();
-        if m == T::zero() || !m.re().is_finite() {
+        // (f64::max ignores NaN, so check every component)
+        if m == T::zero() || !self.to_vector4().iter().all(|x| x.re().is_finite()) {
             return None;
         }
         let s = self.div_by(m);
@@ -211,7 +212,8 @@ impl<T: Scalar> Quaternion<T> {
         let v = if s == T::zero() {
             if self.a < T::zero() { Vector3::new(T::pi(), T::zero(), T::zero()) } else { v }
         } else {
-            v * (phi / s)
+            // v̂ φ: divide first, so that a subnormal |v| does not overflow φ/|v|
+            (v / s) * phi
         };
         Some(Self::from_parts(n.ln(), v))
     }

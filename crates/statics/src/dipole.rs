@@ -75,11 +75,11 @@ pub fn dipole_interaction<T: Scalar>(
     let tau_z = (m_z.cross(&r_hat) * (three * a) - m_z.cross(m_y)) * inv3;
     let tau_y = (m_y.cross(&(-r_hat)) * (-three * b) - m_y.cross(m_z)) * inv3;
     Ok(DipolePair {
-        force_on_z: f,
+        force_on_z: crate::gravity::finite_or_overflow(f, "dipole force")?,
         force_on_y: -f,
-        torque_on_z: tau_z,
-        torque_on_y: tau_y,
-        force_pair_torque: r_z_y.cross(&f),
+        torque_on_z: crate::gravity::finite_or_overflow(tau_z, "dipole torque")?,
+        torque_on_y: crate::gravity::finite_or_overflow(tau_y, "dipole torque")?,
+        force_pair_torque: crate::gravity::finite_or_overflow(r_z_y.cross(&f), "dipole force-pair torque")?,
     })
 }
 
@@ -95,5 +95,6 @@ pub fn dipole_potential<T: Scalar>(
     r_z_y: &Vector<T>,
 ) -> Result<T, StaticsError> {
     check_vec(m_z, "dipole moment m_z")?;
-    Ok(-m_z.dot(&dipole_field(m_y, r_z_y)?))
+    let u = -m_z.dot(&dipole_field(m_y, r_z_y)?);
+    if u.re().is_finite() { Ok(u) } else { Err(StaticsError::Overflow { what: "dipole potential" }) }
 }

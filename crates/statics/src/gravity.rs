@@ -188,6 +188,9 @@ pub fn gravity_between<T: Scalar>(
             w += f_ij.norm();
         }
     }
+    if !(f.is_finite() && w.re().is_finite()) {
+        return Err(StaticsError::Overflow { what: "total gravitational force or weight" });
+    }
     Ok((f, w))
 }
 
@@ -219,7 +222,11 @@ pub fn centre_of_gravity<T: Scalar>(
     if total.re() <= 0.0 {
         return Err(StaticsError::ZeroMass { what: "centre of gravity (zero total weight)" });
     }
-    Ok(y0.displaced(first / total))
+    let c = y0.displaced(first / total);
+    if !c.is_finite() {
+        return Err(StaticsError::Overflow { what: "centre of gravity (zero or overflowing weight)" });
+    }
+    Ok(c)
 }
 
 /// `Ok(v)` when every component is finite, else [`StaticsError::Overflow`]: finite inputs whose

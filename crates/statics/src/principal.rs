@@ -41,7 +41,6 @@ impl PrincipalAxes {
     /// # Errors
     /// As [`crate::check_inertia`].
     pub fn of(j: &Dyadic, rel_tol: f64) -> Result<Self, StaticsError> {
-        vectrix_tensor::check_tolerance(rel_tol, "rel_tol")?;
         let (check, s) = analyse(j, rel_tol)?;
         let lam = check.moments;
         let tol = rel_tol * lam[0];

@@ -193,6 +193,9 @@ impl<T: Scalar> Multivector<T> {
                 }
             }
         }
+        if !m.is_finite() {
+            return Err(TensorError::NonFinite { what: "grade tensors" });
+        }
         Ok(m)
     }
 

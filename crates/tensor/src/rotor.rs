@@ -115,7 +115,8 @@ impl<T: Scalar> Rotor<T> {
         // Scaled by the largest component first (as `Vector::unit`), so that components of
         // 1e±200 neither overflow nor underflow s² + |B|².
         let m = self.s.abs().max(self.b.c.x.abs()).max(self.b.c.y.abs()).max(self.b.c.z.abs());
-        if m == T::zero() || !m.re().is_finite() {
+        // (f64::max ignores NaN, so check every component)
+        if m == T::zero() || !(self.s.re().is_finite() && self.b.is_finite()) {
             return None;
         }
         let (s, b) = (self.s / m, self.b.c / m);
@@ -131,6 +132,9 @@ impl<T: Scalar> Rotor<T> {
     ///
     /// Book: (3.9.1)–(3.9.3), Fact 3.9.1.
     pub fn from_plane_angle(v: &Vector<T>, w: &Vector<T>, theta: T) -> Option<Self> {
+        if !theta.re().is_finite() {
+            return None;
+        }
         let b_hat = v.wedge(w).unit()?;
         let h = theta * T::lit(0.5);
         Some(Self { s: h.cos(), b: b_hat * (-h.sin()) })

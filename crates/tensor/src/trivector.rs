@@ -72,6 +72,9 @@ impl<T: Scalar> Trivector<T> {
                 detail: format!("a trivector is a (3, 0) tensor, got ({}, {})", t.p, t.q),
             });
         }
+        if !t.is_finite() {
+            return Err(TensorError::NonFinite { what: "tensor components" });
+        }
         let tri = Self { t: t.data[5] };
         crate::wedge::check_alternating(t, &tri.to_tensor(), tol)?;
         Ok(tri)

@@ -56,7 +56,14 @@ pub fn jacobian_left<T: Scalar>(th: &Vector3<T>) -> Matrix3<T> {
     if theta.re().is_infinite() {
         // |Θ|² overflowed: scale by the largest component.
         let m = th.x.abs().max(th.y.abs()).max(th.z.abs());
-        theta = (th / m).norm() * m;
+        let s = th / m;
+        theta = s.norm() * m;
+        if theta.re().is_infinite() && m.re().is_finite() {
+            // θ itself beyond f64::MAX (every component near it): the limit θ → ∞ of the
+            // bounded coefficients below, (1 − cos θ)/θ → 0 and 1 − sin θ/θ → 1.
+            let x = (s / s.norm()).cross_matrix();
+            return Matrix3::identity() + x * x;
+        }
     }
     if theta.re() < SERIES_BELOW || !theta.re().is_finite() {
         let (a, b) = coefficients(theta);
@@ -129,7 +136,7 @@ pub fn angle_vector_rate_body<T: Scalar>(
     omega_in_b: &Vector3<T>,
 ) -> Result<Vector3<T>, KinematicsError> {
     check(omega_in_b, "ω")?;
-    Ok(jacobian_right_inverse(th)? * omega_in_b)
+    crate::finite_or_overflow!(jacobian_right_inverse(th)? * omega_in_b, "angle-vector rate Θ̇")
 }
 
 /// Θ̇ from ω_{B/A}|_A (spatial form).
@@ -143,7 +150,7 @@ pub fn angle_vector_rate_spatial<T: Scalar>(
     omega_in_a: &Vector3<T>,
 ) -> Result<Vector3<T>, KinematicsError> {
     check(omega_in_a, "ω")?;
-    Ok(jacobian_left_inverse(th)? * omega_in_a)
+    crate::finite_or_overflow!(jacobian_left_inverse(th)? * omega_in_a, "angle-vector rate Θ̇")
 }
 
 /// The same rotation with |Θ| ≤ π: Θ ← Θ̂·wrap(|Θ|) (for |Θ| ∈ (π, 3π) this is Θ(1 − 2π/|Θ|),

@@ -138,7 +138,9 @@ impl Adaptive {
     /// # Errors
     /// Bad input: [`OdeError::InvalidInterval`], [`OdeError::NonPositiveTolerance`],
     /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`]; during the run:
-    /// [`OdeError::RhsNotFinite`], [`OdeError::StepSizeUnderflow`], [`OdeError::TooManySteps`].
+    /// [`OdeError::RhsNotFinite`], [`OdeError::StepSizeUnderflow`], [`OdeError::TooManySteps`]
+    /// (also up front when (t1 − t0)/h_max exceeds `max_steps`), [`OdeError::DimensionMismatch`]
+    /// when f returns a state of another length than y.
     pub fn solve<S: State, F: FnMut(f64, &S) -> S>(
         &self,
         f: F,
@@ -169,6 +171,11 @@ impl Adaptive {
         check_tol("atol", self.atol)?;
         let h_max = self.h_max.unwrap_or(t1 - t0);
         check_step(h_max)?;
+        // A step cap that cannot cover [t0, t1] within max_steps fails now, not after
+        // max_steps evaluations (h_max = 1e-300 would otherwise spin through them).
+        if (t1 - t0) / h_max > self.max_steps as f64 {
+            return Err(OdeError::TooManySteps { t: t0, max_steps: self.max_steps });
+        }
         if let Some(h0) = self.h0 {
             check_step(h0)?;
         }
