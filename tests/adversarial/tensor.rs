@@ -335,8 +335,9 @@ cases! {
             let cx = Covector::from_hidden(*x.hidden());
             assert_eq!(cx.is_finite(), s.is_finite());
             assert_eq!(Covector::<f64>::zero().norm(), 0.0);
-            assert_eq!(cx.hidden().y, 1.0);
-            assert_eq!(cx.coform(), x);
+            if s.is_finite() {
+                assert_eq!(cx.coform(), x);
+            }
             let ts = Tensor::scalar(s);
             assert_eq!(ts.is_finite(), s.is_finite());
             if s.is_finite() && s.abs() <= 1e100 {

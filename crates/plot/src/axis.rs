@@ -40,8 +40,19 @@ impl Axis {
                 a = a.floor();
                 b = b.ceil();
             }
-            lo = 10f64.powf(a);
-            hi = 10f64.powf(b);
+            // Whole decades, unless 10^a underflows to 0 or 10^b overflows (data at the ends
+            // of the f64 range): then the data bounds themselves.
+            let (p, q) = (10f64.powf(a), 10f64.powf(b));
+            if p > 0.0 && q.is_finite() {
+                (lo, hi) = (p, q);
+            } else if lo == hi {
+                // a single value at the end of the range: one decade on the side that exists
+                if hi * 10.0 < f64::INFINITY {
+                    hi *= 10.0;
+                } else {
+                    lo /= 10.0;
+                }
+            }
         } else {
             // Half-spans throughout: hi/2 − lo/2 is finite for every finite pair, where
             // hi − lo overflows for data over ±1e308.
@@ -76,7 +87,12 @@ impl Axis {
     /// Ticks with labels; minor ticks (2…9 per decade) on log axes spanning few decades.
     pub(crate) fn ticks(&self) -> Vec<Tick> {
         if self.log {
-            let (a, b) = (self.lo.log10().ceil() as i32, self.hi.log10().floor() as i32);
+            let (a, b) = (self.lo.log10().ceil(), self.hi.log10().floor());
+            // (a ≤ b within ±324 for every positive finite range; anything else has no decade)
+            if !(a.is_finite() && b.is_finite() && a <= b) {
+                return [self.lo, self.hi].map(|v| Tick { value: v, label: Some(format!("{v:e}")) }).to_vec();
+            }
+            let (a, b) = (a as i32, b as i32);
             let decades = (b - a).max(0);
             let every = (decades / 8 + 1).max(1);
             let mut out = Vec::new();
