@@ -15,23 +15,23 @@ mod coverage;
 #[path = "adversarial/harness.rs"]
 #[macro_use]
 mod harness;
-#[path = "adversarial/tensor.rs"]
-mod tensor;
-#[path = "adversarial/frames.rs"]
-mod frames;
-#[path = "adversarial/rotation.rs"]
-mod rotation;
-#[path = "adversarial/kinematics.rs"]
-mod kinematics;
-#[path = "adversarial/statics.rs"]
-mod statics;
-#[path = "adversarial/ode.rs"]
-mod ode;
-#[path = "adversarial/flight.rs"]
-mod flight;
 #[path = "adversarial/dynamics.rs"]
 mod dynamics;
-#[path = "adversarial/plot.rs"]
-mod plot;
+#[path = "adversarial/flight.rs"]
+mod flight;
+#[path = "adversarial/frames.rs"]
+mod frames;
+#[path = "adversarial/kinematics.rs"]
+mod kinematics;
 #[path = "adversarial/lti.rs"]
 mod lti;
+#[path = "adversarial/ode.rs"]
+mod ode;
+#[path = "adversarial/plot.rs"]
+mod plot;
+#[path = "adversarial/rotation.rs"]
+mod rotation;
+#[path = "adversarial/statics.rs"]
+mod statics;
+#[path = "adversarial/tensor.rs"]
+mod tensor;

@@ -40,7 +40,10 @@ fn cases(default: u32) -> u32 {
 }
 
 /// Runs `f` on its own thread; a hang or a panic becomes a test-case failure naming the input.
-fn guarded<T: Send + 'static>(what: &str, f: impl FnOnce() -> T + Send + 'static) -> Result<T, TestCaseError> {
+fn guarded<T: Send + 'static>(
+    what: &str,
+    f: impl FnOnce() -> T + Send + 'static,
+) -> Result<T, TestCaseError> {
     let (tx, rx) = mpsc::channel();
     let handle = std::thread::spawn(move || {
         let r = f();
@@ -50,7 +53,9 @@ fn guarded<T: Send + 'static>(what: &str, f: impl FnOnce() -> T + Send + 'static
     match rx.recv_timeout(WATCHDOG) {
         Ok(()) => handle.join().map_err(|_| TestCaseError::fail(format!("{what}: panicked"))),
         Err(mpsc::RecvTimeoutError::Disconnected) => Err(TestCaseError::fail(format!("{what}: panicked"))),
-        Err(mpsc::RecvTimeoutError::Timeout) => Err(TestCaseError::fail(format!("{what}: no answer within {WATCHDOG:?} (hang)"))),
+        Err(mpsc::RecvTimeoutError::Timeout) => {
+            Err(TestCaseError::fail(format!("{what}: no answer within {WATCHDOG:?} (hang)")))
+        }
     }
 }
 
@@ -68,8 +73,20 @@ fn examples() -> (Vec<String>, Vec<String>) {
 }
 
 /// Hostile numbers for value mutations.
-const NUMBERS: [f64; 12] =
-    [0.0, -0.0, 5e-324, -1e-308, 1e-300, 1e308, -1e308, f64::MAX, f64::INFINITY, f64::NEG_INFINITY, f64::NAN, 1e19];
+const NUMBERS: [f64; 12] = [
+    0.0,
+    -0.0,
+    5e-324,
+    -1e-308,
+    1e-300,
+    1e308,
+    -1e308,
+    f64::MAX,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::NAN,
+    1e19,
+];
 
 /// Hostile strings for names, paths and enumerations.
 fn hostile_string(k: usize) -> String {
@@ -244,7 +261,10 @@ enum Noise {
 fn noise() -> impl Strategy<Value = Noise> {
     prop_oneof![
         (any::<usize>(), any::<u8>()).prop_map(|(a, b)| Noise::Flip(a, b)),
-        (any::<usize>(), prop_oneof![any::<u8>(), Just(b'['), Just(b'"'), Just(b'='), Just(b'\n'), Just(b'#')])
+        (
+            any::<usize>(),
+            prop_oneof![any::<u8>(), Just(b'['), Just(b'"'), Just(b'='), Just(b'\n'), Just(b'#')]
+        )
             .prop_map(|(a, b)| Noise::Insert(a, b)),
         (any::<usize>(), 1usize..64).prop_map(|(a, n)| Noise::Delete(a, n)),
         any::<usize>().prop_map(Noise::Truncate),
@@ -284,12 +304,26 @@ fn check_position(file: &str, text: &str, message: &str) -> Result<(), TestCaseE
         .and_then(|r| r.strip_prefix(':'))
         .ok_or_else(|| TestCaseError::fail(format!("error without a file position: {message}")))?;
     let mut it = rest.splitn(3, ':');
-    let line: usize = it.next().and_then(|l| l.parse().ok()).ok_or_else(|| TestCaseError::fail(format!("no line in {message}")))?;
-    let col: usize = it.next().and_then(|c| c.parse().ok()).ok_or_else(|| TestCaseError::fail(format!("no column in {message}")))?;
+    let line: usize = it
+        .next()
+        .and_then(|l| l.parse().ok())
+        .ok_or_else(|| TestCaseError::fail(format!("no line in {message}")))?;
+    let col: usize = it
+        .next()
+        .and_then(|c| c.parse().ok())
+        .ok_or_else(|| TestCaseError::fail(format!("no column in {message}")))?;
     let lines: Vec<&str> = text.split('\n').collect();
-    prop_assert!(line >= 1 && line <= lines.len() + 1, "line {line} outside 1..={}: {message}", lines.len() + 1);
+    prop_assert!(
+        line >= 1 && line <= lines.len() + 1,
+        "line {line} outside 1..={}: {message}",
+        lines.len() + 1
+    );
     let width = lines.get(line - 1).map_or(0, |l| l.chars().count());
-    prop_assert!(col >= 1 && col <= width + 1, "column {col} outside 1..={} of line {line}: {message}", width + 1);
+    prop_assert!(
+        col >= 1 && col <= width + 1,
+        "column {col} outside 1..={} of line {line}: {message}",
+        width + 1
+    );
     Ok(())
 }
 
@@ -312,7 +346,10 @@ fn scene_contract(text: String) -> Result<(), TestCaseError> {
     match outcome {
         Ok((y0, d)) => {
             SCENES_ACCEPTED.fetch_add(1, Ordering::Relaxed);
-            prop_assert!(y0.iter().all(|x| x.is_finite()), "accepted scene with a non-finite initial state {y0:?}");
+            prop_assert!(
+                y0.iter().all(|x| x.is_finite()),
+                "accepted scene with a non-finite initial state {y0:?}"
+            );
             if let Ok(finite) = d {
                 prop_assert!(finite, "accepted scene whose f(0, y0) is Ok but not finite");
             }
@@ -331,7 +368,10 @@ fn flight_contract(text: String) -> Result<(), TestCaseError> {
     match outcome {
         Ok(x0) => {
             FLIGHTS_ACCEPTED.fetch_add(1, Ordering::Relaxed);
-            prop_assert!(x0.iter().all(|x| x.is_finite()), "accepted flight scene with a non-finite trim state {x0:?}");
+            prop_assert!(
+                x0.iter().all(|x| x.is_finite()),
+                "accepted flight scene with a non-finite trim state {x0:?}"
+            );
             Ok(())
         }
         Err(e) => check_position("fuzz.toml", &text, &e.to_string()),
@@ -363,7 +403,12 @@ fn vectrix_cli_run(args: &[std::ffi::OsString], out: &mut Vec<u8>) -> Result<(),
     vectrix_cli::run_with_args(args.iter().cloned(), out).map_err(|e| e.to_string())
 }
 
-fn run(name: &str, default_cases: u32, strategy: impl Strategy<Value = String>, contract: fn(String) -> Result<(), TestCaseError>) {
+fn run(
+    name: &str,
+    default_cases: u32,
+    strategy: impl Strategy<Value = String>,
+    contract: fn(String) -> Result<(), TestCaseError>,
+) {
     let n = cases(default_cases);
     let start = std::time::Instant::now();
     let mut runner = TestRunner::new(Config { cases: n, failure_persistence: None, ..Config::default() });
@@ -410,7 +455,12 @@ fn fuzz_scene_files_structured() {
 #[test]
 fn fuzz_scene_files_raw() {
     let (scenes, _) = examples();
-    run("scene (raw)", 512, noisy(scenes).prop_map(|b| String::from_utf8_lossy(&b).into_owned()), scene_contract);
+    run(
+        "scene (raw)",
+        512,
+        noisy(scenes).prop_map(|b| String::from_utf8_lossy(&b).into_owned()),
+        scene_contract,
+    );
 }
 
 /// Structured mutations and byte noise on the flight example scenes.
@@ -421,7 +471,12 @@ fn fuzz_flight_scene_files() {
     let accepted = FLIGHTS_ACCEPTED.load(Ordering::Relaxed);
     eprintln!("flight scene (structured): {accepted} accepted");
     assert!(accepted > 0, "no mutant flight scene was accepted");
-    run("flight scene (raw)", 256, noisy(flights).prop_map(|b| String::from_utf8_lossy(&b).into_owned()), flight_contract);
+    run(
+        "flight scene (raw)",
+        256,
+        noisy(flights).prop_map(|b| String::from_utf8_lossy(&b).into_owned()),
+        flight_contract,
+    );
 }
 
 /// `vectrix check` on raw bytes (invalid UTF-8 included) and on structured mutants.
@@ -429,7 +484,8 @@ fn fuzz_flight_scene_files() {
 fn fuzz_cli_check() {
     let (scenes, flights) = examples();
     let all: Vec<String> = scenes.into_iter().chain(flights).collect();
-    let mut runner = TestRunner::new(Config { cases: cases(256), failure_persistence: None, ..Config::default() });
+    let mut runner =
+        TestRunner::new(Config { cases: cases(256), failure_persistence: None, ..Config::default() });
     let strategy = prop_oneof![noisy(all.clone()), mutated(all).prop_map(String::into_bytes)];
     if let Err(e) = runner.run(&strategy, cli_check_contract) {
         panic!("vectrix check: {e}");
@@ -468,8 +524,9 @@ fn param() -> impl Strategy<Value = String> {
         Just("9223372036854775808".to_string()),
         (-10.0f64..10.0).prop_map(|x| format!("{x}")),
     ];
-    let hostile = (path, prop::collection::vec(value, 0..4), any::<bool>())
-        .prop_map(|(p, vs, eq)| if eq { format!("{p}={}", vs.join(",")) } else { format!("{p}{}", vs.join(",")) });
+    let hostile = (path, prop::collection::vec(value, 0..4), any::<bool>()).prop_map(|(p, vs, eq)| {
+        if eq { format!("{p}={}", vs.join(",")) } else { format!("{p}{}", vs.join(",")) }
+    });
     // and well-formed sweeps, so that accepted runs are exercised too
     let valid = (0.5f64..2.0, 0.5f64..2.0).prop_map(|(a, b)| format!("bodies.0.mass.mass={a},{b}"));
     prop_oneof![3 => hostile, 1 => valid]
@@ -481,16 +538,20 @@ fn param() -> impl Strategy<Value = String> {
 fn fuzz_sweep_parameters() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("pendulum.toml");
-    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/simple_pendulum.toml"))
-        .unwrap()
-        .replace("duration = 5.0", "duration = 0.05")
-        .replace("samples = 2000", "samples = 10");
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes/simple_pendulum.toml"),
+    )
+    .unwrap()
+    .replace("duration = 5.0", "duration = 0.05")
+    .replace("samples = 2000", "samples = 10");
     std::fs::write(&scene, text).unwrap();
     let out = dir.path().join("out");
-    let mut runner = TestRunner::new(Config { cases: cases(64), failure_persistence: None, ..Config::default() });
+    let mut runner =
+        TestRunner::new(Config { cases: cases(64), failure_persistence: None, ..Config::default() });
     let strategy = prop::collection::vec(param(), 1..3);
     let result = runner.run(&strategy, |params| {
-        let mut args: Vec<std::ffi::OsString> = vec!["vectrix".into(), "sweep".into(), scene.clone().into_os_string()];
+        let mut args: Vec<std::ffi::OsString> =
+            vec!["vectrix".into(), "sweep".into(), scene.clone().into_os_string()];
         for p in &params {
             args.push("--param".into());
             args.push(p.into());

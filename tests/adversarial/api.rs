@@ -235,8 +235,7 @@ pub fn public_functions(krate: &str) -> Vec<PublicFn> {
     walk.items(&parsed.items, &[], true, &src, "lib.rs", &src);
 
     let type_public = |ty: &str, walk: &Walk| {
-        walk.types.get(ty).is_some_and(|&in_pub_module| in_pub_module)
-            || walk.reexported.contains(ty)
+        walk.types.get(ty).is_some_and(|&in_pub_module| in_pub_module) || walk.reexported.contains(ty)
     };
     let mut out = BTreeSet::new();
     for (name, module, public, file) in &walk.free {

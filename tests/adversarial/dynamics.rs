@@ -4,10 +4,10 @@
 
 use nalgebra::{Matrix3, Vector3};
 use vectrix::dynamics::{
-    DynamicsError, Element, ImpactEnd, Network, RigidBody, ZenoGuard, centre_of_percussion, collision_energy_loss,
-    eigenaxis_acceleration, impulse_response, kinetic_energy_about_centre_pairwise, newton_euler_6d,
-    particle_acceleration, particles_kinetic_energy, power, restitution_1d, rigid_impact, simulate_with_impacts,
-    sphere_collision, twist_cross_matrix, work_along_path,
+    DynamicsError, Element, ImpactEnd, Network, RigidBody, ZenoGuard, centre_of_percussion,
+    collision_energy_loss, eigenaxis_acceleration, impulse_response, kinetic_energy_about_centre_pairwise,
+    newton_euler_6d, particle_acceleration, particles_kinetic_energy, power, restitution_1d, rigid_impact,
+    simulate_with_impacts, sphere_collision, twist_cross_matrix, work_along_path,
 };
 use vectrix::frames::Frame;
 use vectrix::ode::Adaptive;

@@ -5,14 +5,14 @@
 use nalgebra::{DMatrix, Matrix3};
 type Complex64 = nalgebra::Complex<f64>;
 use vectrix::flight::{
-    AeroAngles, AircraftState, Airframe, Controls, Euler321, FlightError, FlightPathAngles,
+    AeroAngles, AircraftState, Airframe, BUSINESS_JET_U0, Controls, Euler321, FlightError, FlightPathAngles,
     LateralDerivatives, LongitudinalDerivatives, TrimLimits, TrimSpec, aero_angle_rates, body_rates,
     body_rates_from_wind_angle_rates, business_jet, business_jet_lateral, business_jet_longitudinal,
     characteristic_polynomial, cm_alpha_from_static_margin, doublet, doublet_response, doublet_response_svg,
     eigenflight, eigenvector, euler_rate_matrix, euler_rates, induced_drag_factor, lateral_modes, linearize,
     longitudinal_modes, modes_svg, o_s_ac, o_w_ac, o_w_s, o1, o2, o3, orientation_from_quaternion,
-    quaternion_from_euler321, quaternion_rates, state_derivative, static_margin, trim, wind_angle_rate_matrix,
-    wind_angle_rates, BUSINESS_JET_U0,
+    quaternion_from_euler321, quaternion_rates, state_derivative, static_margin, trim,
+    wind_angle_rate_matrix, wind_angle_rates,
 };
 
 use crate::harness::{err_or, finite, hostile, hostile3, none_or, refused};
@@ -20,7 +20,9 @@ use crate::harness::{err_or, finite, hostile, hostile3, none_or, refused};
 const EPS: f64 = f64::EPSILON;
 
 fn orthonormal(o: &Matrix3<f64>) -> bool {
-    o.iter().all(|c| c.is_finite()) && (o * o.transpose() - Matrix3::identity()).amax() <= 16.0 * EPS && (o.determinant() - 1.0).abs() <= 16.0 * EPS
+    o.iter().all(|c| c.is_finite())
+        && (o * o.transpose() - Matrix3::identity()).amax() <= 16.0 * EPS
+        && (o.determinant() - 1.0).abs() <= 16.0 * EPS
 }
 
 cases! {
@@ -103,10 +105,10 @@ cases! {
         for s in hostile() {
             err_or(Airframe::new(s, 1.0, 1.0, 1.0, 0.0), "Airframe::new(m)", |a| a.mass() > 0.0 && a.mass().is_finite());
             err_or(Airframe::new(1.0, s, 1.0, 1.0, 0.0), "Airframe::new(J)", |a| a.inertia_matrix().iter().all(|c| c.is_finite()) && a.inertia().0.is_finite());
-            let mut bad = ac.clone();
+            let mut bad = ac;
             bad.rho = s;
             err_or(bad.check(), "Aircraft::check(ρ)", |_| s.is_finite() && s > 0.0);
-            let mut bad = ac.clone();
+            let mut bad = ac;
             bad.g = s;
             err_or(bad.check(), "Aircraft::check(g)", |_| s.is_finite());
         }
@@ -157,7 +159,7 @@ cases! {
         err_or(lat.descriptor(), "descriptor", |d| d.to_state_space("lateral").is_ok());
         err_or(long.short_period_approximation(), "short period", |p| p.coeffs().iter().all(|c| c.is_finite()));
         err_or(long.phugoid_approximation(), "phugoid", |p| p.coeffs().iter().all(|c| c.is_finite()));
-        let mut bad = t.clone();
+        let mut bad = t;
         bad.state.velocity[0] = f64::NAN;
         refused(linearize(&ac, &bad), "linearize(NaN trim)");
         refused(LongitudinalDerivatives::from_aircraft(&ac, &bad), "derivatives(NaN trim)");

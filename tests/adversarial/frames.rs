@@ -4,9 +4,9 @@
 
 use nalgebra::{DMatrix, Matrix3, RowVector3, Vector3};
 use vectrix::frames::{
-    Components, Frame, NonstandardFrame, Resolve, change_frame_covector, change_frame_dyadic, change_frame_tensor,
-    change_frame_vector, gradient, gradient_central_difference, gradient_of_inverse_power, gradient_of_norm,
-    resolve_dyadic_mixed,
+    Components, Frame, NonstandardFrame, Resolve, change_frame_covector, change_frame_dyadic,
+    change_frame_tensor, change_frame_vector, gradient, gradient_central_difference,
+    gradient_of_inverse_power, gradient_of_norm, resolve_dyadic_mixed,
 };
 use vectrix::tensor::{Dyadic, Rotor};
 
@@ -17,11 +17,13 @@ const BAD_TOLS: [f64; 4] = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -1e-9];
 
 fn orthonormal(f: &Frame) -> bool {
     let o = f.orientation_rel(&Frame::new());
-    (o * o.transpose() - Matrix3::identity()).amax() <= 16.0 * EPS && (o.determinant() - 1.0).abs() <= 16.0 * EPS
+    (o * o.transpose() - Matrix3::identity()).amax() <= 16.0 * EPS
+        && (o.determinant() - 1.0).abs() <= 16.0 * EPS
 }
 
 fn tilted() -> Frame {
-    Frame::new().rotated_by_rotor(&Rotor::from_axis_angle(&Frame::new().vector([1.0, -2.0, 0.5]), 0.7).unwrap())
+    Frame::new()
+        .rotated_by_rotor(&Rotor::from_axis_angle(&Frame::new().vector([1.0, -2.0, 0.5]), 0.7).unwrap())
 }
 
 cases! {

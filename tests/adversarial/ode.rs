@@ -4,17 +4,17 @@
 
 use nalgebra::{SVector, Vector2, Vector3, Vector4};
 use vectrix::frames::Frame;
+use vectrix::ode::explicit::integrate_fixed;
 use vectrix::ode::harness::elliptic::{elliptic_k, sncndn};
 use vectrix::ode::harness::{
-    Budget, Kepler, Method, Oscillator, Reference, RigidBody, Separable, cheapest, derive_accuracy, euler_equations,
-    quaternion_rate, run_all, sweep, sweep_lie, sweep_verlet,
+    Budget, Kepler, Method, Oscillator, Reference, RigidBody, Separable, cheapest, derive_accuracy,
+    euler_equations, quaternion_rate, run_all, sweep, sweep_lie, sweep_verlet,
 };
 use vectrix::ode::lie::dexpinv;
 use vectrix::ode::{
     Accuracy, Adaptive, DOP853, Direction, Event, GaussLegendre, LieGroup, LieMethod, OdeError, RK4, State,
     integrate_lie, quaternion_exact_step, stormer_verlet,
 };
-use vectrix::ode::explicit::integrate_fixed;
 use vectrix::tensor::{Rotor, Vector};
 
 use crate::harness::{err_or, hostile, refused};

@@ -27,7 +27,7 @@ cases! {
                 if let Ok(svg) = c.to_svg() {
                     let bad = svg.find("NaN").or_else(|| svg.find("inf"));
                     if let Some(i) = bad {
-                        let line = svg[..i].rsplit('\n').next().unwrap_or("").to_string() + &svg[i..].split('\n').next().unwrap_or("").to_string();
+                        let line = svg[..i].rsplit('\n').next().unwrap_or("").to_string() + svg[i..].split('\n').next().unwrap_or("");
                         panic!("LineChart over ({a:e}, {b:e}): {line}");
                     }
                 }

@@ -6,11 +6,11 @@
 use nalgebra::{Matrix3, Matrix4, Rotation3, UnitQuaternion, Vector3};
 use vectrix::frames::Frame;
 use vectrix::rotation::{
-    Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, Quaternion, RigidDisplacement, Rotation, Screw,
-    canonical_half_turn_axis, chain_backward, chain_forward, check_rotation_matrix, compose_angle_vector,
-    compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation, compose_quaternion,
-    compose_rotation_matrix, homogeneous, homogeneous_inverse, mrp_shadow, nearest_rotation, orientation_about,
-    quaternion_about, rotation_about, scaled_axis,
+    Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, Quaternion, RigidDisplacement,
+    Rotation, Screw, canonical_half_turn_axis, chain_backward, chain_forward, check_rotation_matrix,
+    compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation,
+    compose_quaternion, compose_rotation_matrix, homogeneous, homogeneous_inverse, mrp_shadow,
+    nearest_rotation, orientation_about, quaternion_about, rotation_about, scaled_axis,
 };
 use vectrix::tensor::{Rotor, Tensor};
 

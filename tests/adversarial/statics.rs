@@ -6,11 +6,12 @@
 use nalgebra::Matrix3;
 use vectrix::frames::Frame;
 use vectrix::statics::{
-    AppliedForce, CentralGravity, Dashpot, ForcePair, FreeBodyProblem, Inerter, InertiaComponents, MassProperties, Point,
-    PrincipalAxes, RotationalDashpot, RotationalInerter, RotationalSpring, Spring, StaticsError, UniformGravity, Wrench,
-    centre_of_gravity, check_inertia, dipole_field, dipole_field_dyadic, dipole_interaction, dipole_potential,
-    gravity_between, moment_of_inertia, mutual_gravitation, mutual_gravitation_potential, parallel_axis,
-    particle_inertia, product_of_inertia, shift_inertia,
+    AppliedForce, CentralGravity, Dashpot, ForcePair, FreeBodyProblem, Inerter, InertiaComponents,
+    MassProperties, Point, PrincipalAxes, RotationalDashpot, RotationalInerter, RotationalSpring, Spring,
+    StaticsError, UniformGravity, Wrench, centre_of_gravity, check_inertia, dipole_field,
+    dipole_field_dyadic, dipole_interaction, dipole_potential, gravity_between, moment_of_inertia,
+    mutual_gravitation, mutual_gravitation_potential, parallel_axis, particle_inertia, product_of_inertia,
+    shift_inertia,
 };
 use vectrix::tensor::{Dyadic, Rotor, Vector};
 
@@ -33,7 +34,10 @@ fn action_reaction(p: &ForcePair) -> bool {
 /// by the moments here).
 fn physical(m: &MassProperties) -> bool {
     let j = m.inertia_about_centre();
-    m.mass() > 0.0 && m.mass().is_finite() && m.centre_of_mass().is_finite() && j.is_finite()
+    m.mass() > 0.0
+        && m.mass().is_finite()
+        && m.centre_of_mass().is_finite()
+        && j.is_finite()
         && j.is_symmetric(1e-12 * j.norm().max(1e-300))
         && m.check(1e-9).is_ok_and(|c| {
             let [a, b, cc] = c.moments;

@@ -50,7 +50,8 @@ pub fn restitution_1d(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<(f64
         return Err(DynamicsError::Separating { approach: u1 - u2 });
     }
     let mb = m1 + m2;
-    let after = (((m1 - e * m2) * u1 + (1.0 + e) * m2 * u2) / mb, ((1.0 + e) * m1 * u1 + (m2 - e * m1) * u2) / mb);
+    let after =
+        (((m1 - e * m2) * u1 + (1.0 + e) * m2 * u2) / mb, ((1.0 + e) * m1 * u1 + (m2 - e * m1) * u2) / mb);
     if !(after.0.is_finite() && after.1.is_finite()) {
         return Err(DynamicsError::Overflow { what: "speeds after the collision" });
     }

@@ -184,7 +184,8 @@ pub fn eigenvector(a: &DMatrix<f64>, lambda: Complex64, pin: usize) -> Result<Ve
     // then. Residual ‖(A − λI)v‖ relative to (‖A‖ + |λ|)‖v‖ (max norms); an eigenvalue from a
     // backward-stable solver leaves ~nε, a defective one ~√ε; above 10⁻⁶ λ is not one.
     let scale = (a.amax() + lambda.norm()) * v.iter().fold(0.0f64, |s, z| s.max(z.norm()));
-    let residual = (0..n).fold(0.0f64, |r, i| r.max((0..n).map(|j| m[(i, j)] * v[j]).sum::<Complex64>().norm()));
+    let residual =
+        (0..n).fold(0.0f64, |r, i| r.max((0..n).map(|j| m[(i, j)] * v[j]).sum::<Complex64>().norm()));
     if residual > 1e-6 * scale {
         return Err(FlightError::ModeStructure {
             reason: format!(

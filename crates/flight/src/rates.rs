@@ -60,7 +60,9 @@ pub fn euler_rates<T: Scalar>(euler: &Euler321<T>, pqr: [T; 3]) -> Result<[T; 3]
     let k = q * sp + r * cp;
     let rates = [p + k * euler.theta.sin() / ct, q * cp - r * sp, k / ct];
     if !rates.iter().all(|x| x.re().is_finite()) {
-        return Err(FlightError::NonFinite { what: "Euler angle rates (overflow of the body rates / cos Θ)" });
+        return Err(FlightError::NonFinite {
+            what: "Euler angle rates (overflow of the body rates / cos Θ)",
+        });
     }
     Ok(rates)
 }

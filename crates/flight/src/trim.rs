@@ -176,9 +176,16 @@ pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, F
     }
     // Each limit bounds a box [−l, l] (thrust [0, l]): it must be a number > 0 (+∞ = no limit),
     // else the box is empty or NaN and clamping into it is meaningless.
-    for (what, l) in [("α limit", limits.alpha), ("surface limit", limits.surface), ("thrust limit", limits.thrust), ("bank limit", limits.bank)] {
+    for (what, l) in [
+        ("α limit", limits.alpha),
+        ("surface limit", limits.surface),
+        ("thrust limit", limits.thrust),
+        ("bank limit", limits.bank),
+    ] {
         if l.is_nan() || l <= 0.0 {
-            return Err(FlightError::InvalidParameter { what, value: l, valid: "a limit > 0 (+∞ for none)" });
+            return Err(FlightError::InvalidParameter {
+                what, value: l, valid: "a limit > 0 (+∞ for none)"
+            });
         }
     }
     let bnd = bounds(&spec, &limits);

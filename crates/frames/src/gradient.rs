@@ -71,7 +71,9 @@ pub fn gradient_central_difference(
     }
     if !g.iter().all(|d: &f64| d.is_finite()) {
         // f is not finite at r⃗ ± h e⃗_k, or the difference quotient overflowed (h tiny, f huge).
-        return Err(FrameError::NonFinite { what: "central-difference gradient (f or its differences at r⃗ ± h)" });
+        return Err(FrameError::NonFinite {
+            what: "central-difference gradient (f or its differences at r⃗ ± h)",
+        });
     }
     Ok(Covector::from_hidden(g))
 }

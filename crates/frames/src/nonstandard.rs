@@ -79,7 +79,10 @@ impl<T: Scalar> NonstandardFrame<T> {
     ) -> Result<Self, FrameError> {
         // κ ≥ 1 for every matrix: a limit below 1 (or NaN) accepts nothing; +∞ means no limit.
         if max_cond.is_nan() || max_cond < 1.0 {
-            return Err(FrameError::Tensor(vectrix_tensor::TensorError::InvalidTolerance { what: "max_cond (must be ≥ 1)", value: max_cond }));
+            return Err(FrameError::Tensor(vectrix_tensor::TensorError::InvalidTolerance {
+                what: "max_cond (must be ≥ 1)",
+                value: max_cond,
+            }));
         }
         const NAMES: [&str; 3] = ["axis a₁", "axis a₂", "axis a₃"];
         for (a, what) in [a1, a2, a3].into_iter().zip(NAMES) {

@@ -43,6 +43,10 @@
 //! // asking it for a derivative with respect to F_B is an error, not a silent mix
 //! assert!(matches!(x_a.rate_wrt(b.label), Err(KinematicsError::FrameMismatch { .. })));
 //! ```
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 /// `Ok(v)` when every component of the matrix or vector `v` is finite, else

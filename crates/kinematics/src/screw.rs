@@ -97,7 +97,7 @@ pub fn ivcr<T: Scalar>(
     v_q: &Vector<T>,
     rel_tol: f64,
 ) -> Result<Option<Line<T>>, KinematicsError> {
-        vectrix_tensor::check_tolerance(rel_tol, "rel_tol").map_err(vectrix_frames::FrameError::from)?;
+    vectrix_tensor::check_tolerance(rel_tol, "rel_tol").map_err(vectrix_frames::FrameError::from)?;
     match screw_axis(omega, v_q)? {
         InstantaneousMotion::Screw(s) => {
             let tol = rel_tol * omega.norm().re() * v_q.norm().re();

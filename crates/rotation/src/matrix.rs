@@ -18,7 +18,7 @@ pub const ROTATION_TOL: f64 = 128.0 * f64::EPSILON;
 /// [`RotationError::NonFinite`], [`RotationError::NotOrthonormal`] (with the defect found),
 /// [`RotationError::Reflection`] for det < 0.
 pub fn check_rotation_matrix<T: Scalar>(m: &Matrix3<T>, tol: f64) -> Result<(), RotationError> {
-        vectrix_tensor::check_tolerance(tol, "tol")?;
+    vectrix_tensor::check_tolerance(tol, "tol")?;
     // ‖MᵀM − I‖_max; a NaN or ∞ entry makes it non-finite, reported as such.
     let g = m.tr_mul(m) - Matrix3::identity();
     let defect = g.iter().fold(0.0f64, |d, x| d.max(x.re().abs()));

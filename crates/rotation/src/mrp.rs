@@ -28,5 +28,9 @@ pub fn mrp_shadow<T: Scalar>(p: &Vector3<T>) -> Result<Vector3<T>, RotationError
     }
     // p^S = −p/|p|² = −p̂ / |p|
     let s = -(p / n) / n;
-    if s.iter().all(|x| x.re().is_finite()) { Ok(s) } else { Err(RotationError::Overflow { what: "MRP shadow" }) }
+    if s.iter().all(|x| x.re().is_finite()) {
+        Ok(s)
+    } else {
+        Err(RotationError::Overflow { what: "MRP shadow" })
+    }
 }

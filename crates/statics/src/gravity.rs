@@ -124,7 +124,11 @@ impl<T: Scalar> CentralGravity<T> {
     pub fn potential(&self, m: T, r_y_x: &Vector<T>) -> Result<T, StaticsError> {
         let (_, len) = unit_sep(r_y_x, "central gravity")?;
         let u = -self.mu * m / len;
-        if u.re().is_finite() { Ok(u) } else { Err(StaticsError::Overflow { what: "central gravity potential" }) }
+        if u.re().is_finite() {
+            Ok(u)
+        } else {
+            Err(StaticsError::Overflow { what: "central gravity potential" })
+        }
     }
 }
 
@@ -231,6 +235,9 @@ pub fn centre_of_gravity<T: Scalar>(
 
 /// `Ok(v)` when every component is finite, else [`StaticsError::Overflow`]: finite inputs whose
 /// true result exceeds the largest finite number (|r⃗| = 1e-200 in an inverse-square law).
-pub(crate) fn finite_or_overflow<T: Scalar>(v: Vector<T>, what: &'static str) -> Result<Vector<T>, StaticsError> {
+pub(crate) fn finite_or_overflow<T: Scalar>(
+    v: Vector<T>,
+    what: &'static str,
+) -> Result<Vector<T>, StaticsError> {
     if v.is_finite() { Ok(v) } else { Err(StaticsError::Overflow { what }) }
 }

@@ -218,7 +218,8 @@ impl<T: Scalar> MassProperties<T> {
             return Err(StaticsError::NonFinite { what: "translation d⃗" });
         }
         let centre = self.centre.displaced(d);
-        check_point(&centre, "translated centre").map_err(|_| StaticsError::Overflow { what: "translated centre" })?;
+        check_point(&centre, "translated centre")
+            .map_err(|_| StaticsError::Overflow { what: "translated centre" })?;
         Ok(MassProperties { centre, ..*self })
     }
 

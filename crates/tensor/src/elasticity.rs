@@ -149,7 +149,11 @@ impl<T: Scalar> Isotropic<T> {
     /// [`TensorError::Overflow`]: λ = 1e308 is finite but 3λ + 2μ is not.
     fn checked(self) -> Result<Self, TensorError> {
         let derived = [self.lambda, self.mu, self.young(), self.poisson(), self.bulk()];
-        if derived.iter().all(|x| x.re().is_finite()) { Ok(self) } else { Err(TensorError::Overflow { what: "elastic moduli" }) }
+        if derived.iter().all(|x| x.re().is_finite()) {
+            Ok(self)
+        } else {
+            Err(TensorError::Overflow { what: "elastic moduli" })
+        }
     }
 
     /// Lamé's λ.

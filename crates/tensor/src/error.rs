@@ -112,5 +112,9 @@ pub enum TensorError {
 /// [`TensorError::InvalidTolerance`] for NaN, ±∞ or a negative value.
 #[inline]
 pub fn check_tolerance(tol: f64, what: &'static str) -> Result<f64, TensorError> {
-    if tol.is_finite() && tol >= 0.0 { Ok(tol) } else { Err(TensorError::InvalidTolerance { what, value: tol }) }
+    if tol.is_finite() && tol >= 0.0 {
+        Ok(tol)
+    } else {
+        Err(TensorError::InvalidTolerance { what, value: tol })
+    }
 }

@@ -8,6 +8,10 @@
 //!
 //! Every type is generic over [`Scalar`] (default `f64`; also `f32` and num-dual's dual
 //! numbers).
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod angle;

@@ -93,7 +93,11 @@ fn rates<T: Scalar>(
     // n̂ is the eigenaxis: a unit vector (the rate map below assumes n̂ᵀn̂ = 1).
     let n_len = n.norm().re();
     if (n_len - 1.0).abs() > 1e-9 {
-        return Err(KinematicsError::OutOfRange { what: "|n̂|", value: n_len, valid: "1 (n̂ is a unit eigenaxis, to 1e-9)" });
+        return Err(KinematicsError::OutOfRange {
+            what: "|n̂|",
+            value: n_len,
+            valid: "1 (n̂ is a unit eigenaxis, to 1e-9)",
+        });
     }
     let half_sin = (theta * T::lit(0.5)).sin();
     if half_sin.re() == 0.0 {

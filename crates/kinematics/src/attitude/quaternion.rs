@@ -70,7 +70,10 @@ pub fn omega_body_from_quaternion_rate<T: Scalar>(
     check(&[q.a, q.b, q.c, q.d, q_dot.x, q_dot.y, q_dot.z, q_dot.w], "q or q̇")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let (eta_d, eps_d) = (q_dot.x, Vector3::new(q_dot.y, q_dot.z, q_dot.w));
-    crate::finite_or_overflow!((eps_d * eta - eps * eta_d - eps.cross(&eps_d)) * T::lit(2.0), "ω from the quaternion rate")
+    crate::finite_or_overflow!(
+        (eps_d * eta - eps * eta_d - eps.cross(&eps_d)) * T::lit(2.0),
+        "ω from the quaternion rate"
+    )
 }
 
 /// Inverse, spatial form: ω_A = 2(ηε̇ − η̇ε + ε×ε̇).
@@ -86,5 +89,8 @@ pub fn omega_spatial_from_quaternion_rate<T: Scalar>(
     check(&[q.a, q.b, q.c, q.d, q_dot.x, q_dot.y, q_dot.z, q_dot.w], "q or q̇")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let (eta_d, eps_d) = (q_dot.x, Vector3::new(q_dot.y, q_dot.z, q_dot.w));
-    crate::finite_or_overflow!((eps_d * eta - eps * eta_d + eps.cross(&eps_d)) * T::lit(2.0), "ω from the quaternion rate")
+    crate::finite_or_overflow!(
+        (eps_d * eta - eps * eta_d + eps.cross(&eps_d)) * T::lit(2.0),
+        "ω from the quaternion rate"
+    )
 }
