@@ -26,7 +26,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use proptest::prelude::*;
-use proptest::test_runner::{Config, TestCaseError, TestRunner};
+use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use toml::Value;
 use vectrix::dynamics::scene::Scene;
 use vectrix::flight::scene::FlightScene;
@@ -37,6 +37,17 @@ const WATCHDOG: Duration = Duration::from_secs(30);
 
 fn cases(default: u32) -> u32 {
     std::env::var("VECTRIX_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+}
+
+/// A runner for `n` cases. Deterministic (a fixed ChaCha seed) so that CI is reproducible;
+/// `VECTRIX_FUZZ_RANDOM=1` draws a fresh seed for exploratory runs.
+fn runner(n: u32) -> TestRunner {
+    let config = Config { cases: n, failure_persistence: None, ..Config::default() };
+    if std::env::var("VECTRIX_FUZZ_RANDOM").is_ok_and(|v| v == "1") {
+        TestRunner::new(config)
+    } else {
+        TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha))
+    }
 }
 
 /// Runs `f` on its own thread; a hang or a panic becomes a test-case failure naming the input.
@@ -411,7 +422,7 @@ fn run(
 ) {
     let n = cases(default_cases);
     let start = std::time::Instant::now();
-    let mut runner = TestRunner::new(Config { cases: n, failure_persistence: None, ..Config::default() });
+    let mut runner = runner(n);
     if let Err(e) = runner.run(&strategy, contract) {
         panic!("{name}: {e}");
     }
@@ -484,8 +495,7 @@ fn fuzz_flight_scene_files() {
 fn fuzz_cli_check() {
     let (scenes, flights) = examples();
     let all: Vec<String> = scenes.into_iter().chain(flights).collect();
-    let mut runner =
-        TestRunner::new(Config { cases: cases(256), failure_persistence: None, ..Config::default() });
+    let mut runner = runner(cases(256));
     let strategy = prop_oneof![noisy(all.clone()), mutated(all).prop_map(String::into_bytes)];
     if let Err(e) = runner.run(&strategy, cli_check_contract) {
         panic!("vectrix check: {e}");
@@ -546,8 +556,7 @@ fn fuzz_sweep_parameters() {
     .replace("samples = 2000", "samples = 10");
     std::fs::write(&scene, text).unwrap();
     let out = dir.path().join("out");
-    let mut runner =
-        TestRunner::new(Config { cases: cases(64), failure_persistence: None, ..Config::default() });
+    let mut runner = runner(cases(64));
     let strategy = prop::collection::vec(param(), 1..3);
     let result = runner.run(&strategy, |params| {
         let mut args: Vec<std::ffi::OsString> =

@@ -120,7 +120,13 @@ impl<T: Scalar> Quaternion<T> {
     /// Inverse 𝐪⁻¹ = 𝐪̄/|𝐪|²; `None` for 𝐪 = 0.
     #[inline]
     pub fn inverse(&self) -> Option<Self> {
-        // 𝐪⁻¹ = 𝐪̄/|𝐪|² = (𝐪̄/|𝐪|)/|𝐪|, scaled so that |𝐪|² never leaves the range.
+        // 𝐪⁻¹ = 𝐪̄/|𝐪|²; fast path when |𝐪|² is in range (the usual case, one branch)
+        let n2 = self.norm_squared();
+        let r = n2.re();
+        if r > 1e-290 && r < 1e290 {
+            return Some(self.conjugate() * (T::one() / n2));
+        }
+        // otherwise scaled so that |𝐪|² never leaves the range
         let n = self.norm();
         if n == T::zero() || !n.re().is_finite() {
             return None;
@@ -135,6 +141,12 @@ impl<T: Scalar> Quaternion<T> {
     /// 𝐪/|𝐪|; `None` for 𝐪 = 0 or non-finite components.
     #[inline]
     pub fn normalize(&self) -> Option<Self> {
+        // Fast path (the usual case, one branch): |𝐪|² neither underflows nor overflows.
+        let n2 = self.norm_squared();
+        let r = n2.re();
+        if r > 1e-290 && r < 1e290 {
+            return Some(*self * (T::one() / n2.sqrt()));
+        }
         // Scale by the largest component first (as `Vector::unit`): (1e200, 1e200, 0, 0) and
         // (1e-200, …) normalise exactly instead of overflowing or underflowing |𝐪|².
         let m = self.max_abs();

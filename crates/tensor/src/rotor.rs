@@ -112,6 +112,12 @@ impl<T: Scalar> Rotor<T> {
     /// Normalises to R R̄ = 1; `None` for the zero element.
     #[inline]
     pub fn normalize(&self) -> Option<Rotor<T>> {
+        // Fast path (the usual case, one branch): s² + |B|² neither underflows nor overflows.
+        let n2 = self.s * self.s + self.b.c.norm_squared();
+        if n2.re() > 1e-290 && n2.re() < 1e290 {
+            let n = n2.sqrt();
+            return Some(Rotor { s: self.s / n, b: self.b * (T::one() / n) });
+        }
         // Scaled by the largest component first (as `Vector::unit`), so that components of
         // 1e±200 neither overflow nor underflow s² + |B|².
         let m = self.s.abs().max(self.b.c.x.abs()).max(self.b.c.y.abs()).max(self.b.c.z.abs());
