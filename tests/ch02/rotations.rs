@@ -152,7 +152,7 @@ mod prop {
                 prop_assert!(q_err(&Quaternion::from_gibbs(&g), &q) <= 8.0 * EPS);
             }
             let s = mrp_shadow(&q.mrp());
-            if let Some(s) = s {
+            if let Ok(s) = s {
                 prop_assert!(q_err(&Quaternion::from_mrp(&s), &q) <= 64.0 * EPS);
             }
         }

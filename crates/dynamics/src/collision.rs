@@ -39,7 +39,8 @@ fn check_masses(m1: f64, m2: f64) -> Result<(), DynamicsError> {
 ///
 /// # Errors
 /// [`DynamicsError::InvalidParameter`] for e ∉ [0, 1] or masses ≤ 0;
-/// [`DynamicsError::NonFinite`]; [`DynamicsError::Separating`] when u₁ ≤ u₂ (particle 1,
+/// [`DynamicsError::NonFinite`]; [`DynamicsError::Overflow`] for speeds beyond f64::MAX;
+/// [`DynamicsError::Separating`] when u₁ ≤ u₂ (particle 1,
 /// behind, does not catch up with particle 2).
 pub fn restitution_1d(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<(f64, f64), DynamicsError> {
     crate::error::check_finite(&[m1, m2, u1, u2, e], "collision input")?;
@@ -49,14 +50,33 @@ pub fn restitution_1d(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<(f64
         return Err(DynamicsError::Separating { approach: u1 - u2 });
     }
     let mb = m1 + m2;
-    Ok((((m1 - e * m2) * u1 + (1.0 + e) * m2 * u2) / mb, ((1.0 + e) * m1 * u1 + (m2 - e * m1) * u2) / mb))
+    let after =
+        (((m1 - e * m2) * u1 + (1.0 + e) * m2 * u2) / mb, ((1.0 + e) * m1 * u1 + (m2 - e * m1) * u2) / mb);
+    if !(after.0.is_finite() && after.1.is_finite()) {
+        return Err(DynamicsError::Overflow { what: "speeds after the collision" });
+    }
+    Ok(after)
 }
 
 /// Kinetic energy lost in a central collision, ΔT = ½(1 − e²) m₁m₂/(m₁ + m₂) (u₁ − u₂)².
 ///
 /// Book: (7.13.22) **corrected**: the printed formula lacks the factor ½ (notes ch6-8 errata).
-pub fn collision_energy_loss(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> f64 {
-    0.5 * (1.0 - e * e) * m1 * m2 / (m1 + m2) * (u1 - u2) * (u1 - u2)
+///
+/// # Errors
+/// [`DynamicsError::InvalidParameter`] for a mass that is not finite and > 0 (m₁ = m₂ = 0
+/// would be 0/0) or e outside [0, 1]; [`DynamicsError::NonFinite`] for a non-finite speed;
+/// [`DynamicsError::Overflow`] when ΔT exceeds the largest finite number.
+pub fn collision_energy_loss(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<f64, DynamicsError> {
+    check_masses(m1, m2)?;
+    check_e(e)?;
+    if !(u1.is_finite() && u2.is_finite()) {
+        return Err(DynamicsError::NonFinite { what: "approach speeds u₁, u₂" });
+    }
+    // reduced mass m₁m₂/(m₁ + m₂) = m₁/(1 + m₁/m₂): no overflow of m₁m₂ for huge masses
+    let mu = m1 / (1.0 + m1 / m2);
+    let du = u1 - u2;
+    let loss = 0.5 * (1.0 - e * e) * mu * du * du;
+    if loss.is_finite() { Ok(loss) } else { Err(DynamicsError::Overflow { what: "energy loss ΔT" }) }
 }
 
 /// Collision of two smooth spheres with centres c₁, c₂: the normal components along the line
@@ -206,5 +226,10 @@ pub fn centre_of_percussion(
             detail: "J⁻¹(r_{P/c} × n̂) is not perpendicular to n̂: no body point is at rest after the impulse",
         });
     }
-    Ok(props.centre_of_mass().displaced(a.cross(&n) / (props.mass() * a.norm_squared())))
+    // r⃗ = (a⃗ × n̂)/(m|a⃗|²) = (â × n̂)/(m|a⃗|): no |a⃗|² overflow or underflow
+    let p = props.centre_of_mass().displaced(a.cross(&n) / a.norm() / (props.mass() * a.norm()));
+    if !p.is_finite() {
+        return Err(DynamicsError::Overflow { what: "centre of percussion" });
+    }
+    Ok(p)
 }

@@ -42,5 +42,10 @@ pub fn eigenaxis_acceleration(
     // (7.8.13): ω̇ = J⁻¹(M − ω × Jω)
     let omega_dot = chol.solve(&(moment_in_b - omega.cross(&(j_in_b * omega))));
     let s_inv = jacobian_right_inverse(theta)?;
-    Ok(s_inv * (omega_dot - s_dot_theta_dot))
+    let theta_ddot = s_inv * (omega_dot - s_dot_theta_dot);
+    // Huge rates (Θ̇ = 1e300) make ω × Jω overflow: a typed error, not ∞ or NaN in Ok.
+    if !theta_ddot.iter().all(|x| x.is_finite()) {
+        return Err(DynamicsError::Overflow { what: "angle-vector acceleration Θ̈" });
+    }
+    Ok(theta_ddot)
 }

@@ -12,6 +12,13 @@ pub enum DynamicsError {
         /// Which input.
         what: &'static str,
     },
+    /// A true result beyond the largest finite `f64`, reported instead of a silent ∞
+    /// (docs/robustness.md).
+    #[error("{what} overflows: its true value exceeds the largest finite number (≈ 1.8e308)")]
+    Overflow {
+        /// Which result.
+        what: &'static str,
+    },
     /// A mass, coefficient or length outside its valid range.
     #[error("{what} = {value} is invalid: valid is {valid}")]
     InvalidParameter {

@@ -13,6 +13,10 @@
 //!   protection ([`simulate_with_impacts`]).
 //!
 //! Book: ch. 7–9.
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod collision;

@@ -19,7 +19,11 @@ use crate::DynamicsError;
 /// [`DynamicsError::InvalidParameter`] unless m > 0 and finite.
 pub fn particle_acceleration<T: Scalar>(m: T, f: &Vector<T>) -> Result<Vector<T>, DynamicsError> {
     check_mass(m.re())?;
-    Ok(*f / m)
+    if !f.is_finite() {
+        return Err(DynamicsError::NonFinite { what: "force f⃗" });
+    }
+    let a = *f / m;
+    if a.is_finite() { Ok(a) } else { Err(DynamicsError::Overflow { what: "acceleration f⃗/m" }) }
 }
 
 fn check_mass(m: f64) -> Result<(), DynamicsError> {

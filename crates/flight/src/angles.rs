@@ -103,14 +103,15 @@ impl<T: Scalar> AeroAngles<T> {
     /// derivative of α at U = W = 0 is undefined (dual parts there are those of atan2(0, 0)).
     pub fn from_body_velocity(uvw: [T; 3]) -> Self {
         let [u, v, w] = uvw;
-        let u_bar_sq = u * u + w * w;
         let zero = T::zero();
+        // Ū = √(U² + W²) and V_AC = √(Ū² + V²) by hypot: no underflow of U² for tiny speeds
+        // nor overflow for huge ones. The zero branches keep dual numbers differentiable.
+        let planar_zero = u.re() == 0.0 && w.re() == 0.0;
         // α undefined when the velocity has no component in the plane of symmetry: α = 0
-        let alpha = if u_bar_sq.re() == 0.0 { zero } else { w.atan2(u) };
-        let u_bar = if u_bar_sq.re() == 0.0 { zero } else { u_bar_sq.sqrt() };
-        let beta = if u_bar_sq.re() == 0.0 && v.re() == 0.0 { zero } else { v.atan2(u_bar) };
-        let speed_sq = u_bar_sq + v * v;
-        let airspeed = if speed_sq.re() == 0.0 { zero } else { speed_sq.sqrt() };
+        let alpha = if planar_zero { zero } else { w.atan2(u) };
+        let u_bar = if planar_zero { zero } else { u.hypot(w) };
+        let beta = if planar_zero && v.re() == 0.0 { zero } else { v.atan2(u_bar) };
+        let airspeed = if planar_zero { v.abs() } else { u_bar.hypot(v) };
         Self { airspeed, alpha, beta }
     }
 

@@ -11,6 +11,10 @@
 //! Earth frame F_E with k̂_E down; aircraft frame F_AC with î through the nose, ĵ along the
 //! right wing, k̂ down; 3-2-1 Euler angles (Ψ, Θ, Φ); α = atan2(W, U),
 //! β = atan2(V, √(U²+W²)); state x = [X Y Z U V W Φ Θ Ψ P Q R] (11.5.1).
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod aero;

@@ -146,11 +146,19 @@ pub fn lateral_modes(a: &DMatrix<f64>) -> Result<LateralModes, FlightError> {
 /// Book: §14.6, §14.7 (14.7.5).
 ///
 /// # Errors
-/// [`FlightError::ModeStructure`] if the pinned component of the eigenvector is zero.
+/// [`FlightError::ModeStructure`] if A is not square, `pin` is not a state, the pinned
+/// component of the eigenvector is zero, or λ is not an eigenvalue of A (relative residual
+/// ‖(A − λI)v‖/((‖A‖ + |λ|)‖v‖) above 10⁻⁶); [`FlightError::NonFinite`] for NaN or ∞ in A or λ.
 pub fn eigenvector(a: &DMatrix<f64>, lambda: Complex64, pin: usize) -> Result<Vec<Complex64>, FlightError> {
     let n = a.nrows();
+    if a.ncols() != n {
+        return Err(FlightError::ModeStructure { reason: format!("A is {n}×{}, not square", a.ncols()) });
+    }
     if pin >= n {
         return Err(FlightError::ModeStructure { reason: format!("pin {pin} ≥ {n} states") });
+    }
+    if !a.iter().all(|x| x.is_finite()) || !lambda.is_finite() {
+        return Err(FlightError::NonFinite { what: "state matrix A or eigenvalue λ" });
     }
     let m = DMatrix::from_fn(n, n, |i, j| {
         Complex64::new(a[(i, j)], 0.0) - if i == j { lambda } else { Complex64::new(0.0, 0.0) }
@@ -171,6 +179,20 @@ pub fn eigenvector(a: &DMatrix<f64>, lambda: Complex64, pin: usize) -> Result<Ve
     }
     if v.iter().any(|z| !z.is_finite()) {
         return Err(FlightError::NonFinite { what: "eigenvector" });
+    }
+    // λ must be an eigenvalue: the least-squares solution satisfies the dropped equation only
+    // then. Residual ‖(A − λI)v‖ relative to (‖A‖ + |λ|)‖v‖ (max norms); an eigenvalue from a
+    // backward-stable solver leaves ~nε, a defective one ~√ε; above 10⁻⁶ λ is not one.
+    let scale = (a.amax() + lambda.norm()) * v.iter().fold(0.0f64, |s, z| s.max(z.norm()));
+    let residual =
+        (0..n).fold(0.0f64, |r, i| r.max((0..n).map(|j| m[(i, j)] * v[j]).sum::<Complex64>().norm()));
+    if residual > 1e-6 * scale {
+        return Err(FlightError::ModeStructure {
+            reason: format!(
+                "λ = {lambda} is not an eigenvalue of A: ‖(A − λI)v‖ = {residual:e} exceeds 1e-6·(‖A‖ + |λ|)‖v‖ = {:e}",
+                1e-6 * scale
+            ),
+        });
     }
     Ok(v)
 }

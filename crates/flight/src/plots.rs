@@ -47,7 +47,8 @@ pub fn doublet_response(
 /// Book: §14.2, §14.7.
 ///
 /// # Errors
-/// As [`doublet_response`]; [`FlightError::Plot`] if the figure cannot be drawn.
+/// As [`doublet_response`]; [`FlightError::InvalidParameter`] unless there is one name per
+/// state; [`FlightError::Plot`] if the figure cannot be drawn.
 pub fn doublet_response_svg(
     title: &str,
     sys: &StateSpace,
@@ -57,6 +58,14 @@ pub fn doublet_response_svg(
     t_end: f64,
     names: &[&str],
 ) -> Result<String, FlightError> {
+    if names.len() != sys.n_states() {
+        // one label per curve: extra or missing names would silently drop or mislabel curves
+        return Err(FlightError::InvalidParameter {
+            what: "number of state names",
+            value: names.len() as f64,
+            valid: "one name per state of the system",
+        });
+    }
     let r = doublet_response(sys, input, amplitude, width, t_end, 800)?;
     let signals: Vec<(&str, &[f64])> = names.iter().zip(&r.y).map(|(n, y)| (*n, y.as_slice())).collect();
     time_series(title, &r.t, &signals).to_svg().map_err(|e| FlightError::Plot { reason: e.to_string() })

@@ -43,17 +43,28 @@ pub fn body_rates<T: Scalar>(euler: &Euler321<T>, rates: [T; 3]) -> [T; 3] {
 ///
 /// # Errors
 /// [`FlightError::GimbalLock`] when |cos Θ| < [`GIMBAL_LOCK_TOL`]: use
-/// [`quaternion_rates`] there.
+/// [`quaternion_rates`] there; [`FlightError::NonFinite`] for NaN/∞ angles or rates, or rates
+/// beyond f64::MAX.
 pub fn euler_rates<T: Scalar>(euler: &Euler321<T>, pqr: [T; 3]) -> Result<[T; 3], FlightError> {
     let [p, q, r] = pqr;
+    let inputs = [euler.psi, euler.theta, euler.phi, p, q, r];
+    if !inputs.iter().all(|x| x.re().is_finite()) {
+        return Err(FlightError::NonFinite { what: "Euler angles or body rates" });
+    }
     let ct = euler.theta.cos();
     // det S = cos Θ: (10.9.9) divides by it
-    if ct.re().abs() < GIMBAL_LOCK_TOL || !ct.re().is_finite() {
+    if ct.re().abs() < GIMBAL_LOCK_TOL {
         return Err(FlightError::GimbalLock { cos_theta: ct.re() });
     }
     let (sp, cp) = (euler.phi.sin(), euler.phi.cos());
     let k = q * sp + r * cp;
-    Ok([p + k * euler.theta.sin() / ct, q * cp - r * sp, k / ct])
+    let rates = [p + k * euler.theta.sin() / ct, q * cp - r * sp, k / ct];
+    if !rates.iter().all(|x| x.re().is_finite()) {
+        return Err(FlightError::NonFinite {
+            what: "Euler angle rates (overflow of the body rates / cos Θ)",
+        });
+    }
+    Ok(rates)
 }
 
 /// q̇ = ½ q ⊗ (0, ω|_AC) for q = q_{AC/E} (Hamilton, scalar first): the singularity-free

@@ -21,6 +21,9 @@ struct Cond {
 }
 
 fn condition(ac: &Aircraft, trim: &Trim) -> Result<Cond, FlightError> {
+    if !(trim.state.to_array().iter().chain(trim.controls.to_array().iter()).all(|x| x.is_finite())) {
+        return Err(FlightError::NonFinite { what: "trim state or controls" });
+    }
     let [u0, v0, w0] = trim.state.velocity;
     if w0.abs() > 1e-9 * u0.abs() || v0.abs() > 1e-9 * u0.abs() || u0 <= 0.0 {
         return Err(FlightError::InvalidParameter {

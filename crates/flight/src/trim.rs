@@ -147,7 +147,8 @@ fn bounds(spec: &TrimSpec, lim: &TrimLimits) -> Vec<(f64, f64)> {
 /// Book: §12.1; notes ch9-14 §3 (bounded Newton/LM against stall and negative thrust).
 ///
 /// # Errors
-/// [`Aircraft::check`] errors; [`FlightError::InvalidParameter`] for a non-positive airspeed or |γ| ≥ π/2;
+/// [`Aircraft::check`] errors; [`FlightError::InvalidParameter`] for a non-positive airspeed, |γ| ≥ π/2
+/// or a limit that is NaN or ≤ 0;
 /// [`FlightError::TrimFailed`] naming the condition with the largest residual when the solve
 /// stalls (e.g. the elevator at its limit cannot zero the pitching moment).
 pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, FlightError> {
@@ -172,6 +173,20 @@ pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, F
     };
     if !(v.is_finite() && v > 0.0) {
         return Err(FlightError::InvalidParameter { what: "airspeed", value: v, valid: "a finite V > 0" });
+    }
+    // Each limit bounds a box [−l, l] (thrust [0, l]): it must be a number > 0 (+∞ = no limit),
+    // else the box is empty or NaN and clamping into it is meaningless.
+    for (what, l) in [
+        ("α limit", limits.alpha),
+        ("surface limit", limits.surface),
+        ("thrust limit", limits.thrust),
+        ("bank limit", limits.bank),
+    ] {
+        if l.is_nan() || l <= 0.0 {
+            return Err(FlightError::InvalidParameter {
+                what, value: l, valid: "a limit > 0 (+∞ for none)"
+            });
+        }
     }
     let bnd = bounds(&spec, &limits);
     let n = bnd.len();

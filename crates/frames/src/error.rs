@@ -52,7 +52,14 @@ pub enum FrameError {
         /// Which input.
         what: &'static str,
     },
-    /// An error from the kernel.
+    /// A true result beyond the largest finite `f64` (≈ 1.8e308), reported instead of a
+    /// silent ∞ (docs/robustness.md).
+    #[error("{what} overflows: its true value exceeds the largest finite number (≈ 1.8e308)")]
+    Overflow {
+        /// Which result.
+        what: &'static str,
+    },
+    /// An error from the tensor kernel.
     #[error(transparent)]
     Tensor(#[from] vectrix_tensor::TensorError),
 }

@@ -83,6 +83,7 @@ impl<T: Scalar> Frame<T> {
     ///
     /// Book: §2.4, (2.4.3); right-handed: î × ĵ = k̂.
     pub fn from_axes(i: &Vector<T>, j: &Vector<T>, k: &Vector<T>, tol: f64) -> Result<Self, FrameError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         for (x, what) in [(i, "axis î"), (j, "axis ĵ"), (k, "axis k̂")] {
             if !x.is_finite() {
                 return Err(FrameError::NonFinite { what });
@@ -112,6 +113,7 @@ impl<T: Scalar> Frame<T> {
     ///
     /// Book: (2.8.9), Fact 2.8.3.
     pub fn rotated_by(&self, r: &Dyadic<T>, tol: f64) -> Result<Self, FrameError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         check_orthonormal(r.hidden(), tol, "rotation dyad")?;
         Ok(Self { axes: r.hidden() * self.axes })
     }
@@ -124,6 +126,7 @@ impl<T: Scalar> Frame<T> {
     ///
     /// Book: (2.10.14–16).
     pub fn from_orientation_rel(a: &Frame<T>, o_ba: &Matrix3<T>, tol: f64) -> Result<Self, FrameError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         check_orthonormal(o_ba, tol, "orientation matrix")?;
         // (2.10.16): F_B = F_A 𝓡_{B/A}, 𝓡_{B/A} = 𝓞_{B/A}ᵀ
         Ok(Self { axes: a.axes * o_ba.transpose() })

@@ -69,6 +69,12 @@ pub fn gradient_central_difference(
         let e = Vector::from_hidden(e);
         g[k] = (f(&(*r + e)) - f(&(*r - e))) / (2.0 * h);
     }
+    if !g.iter().all(|d: &f64| d.is_finite()) {
+        // f is not finite at r⃗ ± h e⃗_k, or the difference quotient overflowed (h tiny, f huge).
+        return Err(FrameError::NonFinite {
+            what: "central-difference gradient (f or its differences at r⃗ ± h)",
+        });
+    }
     Ok(Covector::from_hidden(g))
 }
 
@@ -90,5 +96,7 @@ pub fn gradient_of_inverse_power(r: &Vector<f64>, n: f64) -> Option<Covector<f64
     }
     // −n |r|^{−(n+2)} r′ = −n |r|^{−n} r̂′/|r|, written to avoid overflow of |r|^{n+2}.
     let u = r.unit()?;
-    Some(u.coform() * (-n * d.powf(-n) / d))
+    let g = u.coform() * (-n * d.powf(-n) / d);
+    // `None` also for a non-finite n or a gradient beyond f64::MAX (|r⃗| tiny, n large).
+    g.is_finite().then_some(g)
 }

@@ -27,6 +27,10 @@
 //! assert!((r_ba.column(0) - b.i().resolve(&a)).norm() < 1e-15); // columns: B's axes in A
 //! assert_eq!(r_ba, o_ba.transpose());
 //! ```
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod error;

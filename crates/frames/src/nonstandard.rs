@@ -69,13 +69,21 @@ impl<T: Scalar> NonstandardFrame<T> {
     /// # Errors
     /// [`FrameError::NonFinite`] for NaN/∞ components; [`FrameError::ZeroAxis`] for a zero axis;
     /// [`FrameError::Degenerate`] with κ₂(A) when it exceeds `max_cond` (use
-    /// [`MAX_CONDITION`]).
+    /// [`MAX_CONDITION`]); [`FrameError::Tensor`] (`InvalidTolerance`) for a `max_cond` that is
+    /// NaN or below 1 (+∞ means no limit).
     pub fn from_axes(
         a1: &Vector<T>,
         a2: &Vector<T>,
         a3: &Vector<T>,
         max_cond: f64,
     ) -> Result<Self, FrameError> {
+        // κ ≥ 1 for every matrix: a limit below 1 (or NaN) accepts nothing; +∞ means no limit.
+        if max_cond.is_nan() || max_cond < 1.0 {
+            return Err(FrameError::Tensor(vectrix_tensor::TensorError::InvalidTolerance {
+                what: "max_cond (must be ≥ 1)",
+                value: max_cond,
+            }));
+        }
         const NAMES: [&str; 3] = ["axis a₁", "axis a₂", "axis a₃"];
         for (a, what) in [a1, a2, a3].into_iter().zip(NAMES) {
             if !a.is_finite() {

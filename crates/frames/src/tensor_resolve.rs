@@ -117,7 +117,8 @@ impl<T: Scalar> Frame<T> {
 /// Book: §3.6, (3.6.2) with (2.10.31), (3.5.10).
 ///
 /// # Errors
-/// As [`Frame::tensor`] for the shape of `t_in_a`.
+/// As [`Frame::tensor`] for the shape and finiteness of `t_in_a`; [`FrameError::Overflow`]
+/// when a component in the new frame exceeds f64::MAX.
 pub fn change_frame_tensor<T: Scalar>(
     t_in_a: &DMatrix<T>,
     p: usize,
@@ -126,9 +127,17 @@ pub fn change_frame_tensor<T: Scalar>(
     b: &Frame<T>,
 ) -> Result<DMatrix<T>, FrameError> {
     check_shape(p, q, t_in_a)?;
+    if !all_finite(t_in_a) {
+        return Err(FrameError::NonFinite { what: "resolved tensor" });
+    }
     let o_ba = b.orientation_rel(a);
     let flat: Vec<T> = t_in_a.transpose().iter().copied().collect();
-    Ok(matrix_from_flat(p, q, &map_every_slot(&flat, p + q, &o_ba)))
+    let t_in_b = matrix_from_flat(p, q, &map_every_slot(&flat, p + q, &o_ba));
+    if !all_finite(&t_in_b) {
+        // components near f64::MAX can rotate to a component beyond it
+        return Err(FrameError::Overflow { what: "tensor resolved in the new frame" });
+    }
+    Ok(t_in_b)
 }
 
 #[cfg(test)]

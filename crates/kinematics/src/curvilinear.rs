@@ -49,12 +49,17 @@ impl<T: Scalar> Cylindrical<T> {
     /// Book: §5.1.
     ///
     /// # Errors
-    /// [`KinematicsError::NonFinite`].
+    /// [`KinematicsError::NonFinite`]; [`KinematicsError::Overflow`] when the radius exceeds
+    /// f64::MAX (every component near it).
     pub fn from_position(r_in_a: [T; 3]) -> Result<Self, KinematicsError> {
         finite(&r_in_a, "position")?;
         let [r1, r2, r3] = r_in_a;
         let z = T::zero();
-        Ok(Self { q: [r1.hypot(r2), r2.atan2(r1), r3], q_dot: [z; 3], q_ddot: [z; 3] })
+        let rho = r1.hypot(r2);
+        if !rho.re().is_finite() {
+            return Err(KinematicsError::Overflow { what: "cylindrical radius ρ" });
+        }
+        Ok(Self { q: [rho, r2.atan2(r1), r3], q_dot: [z; 3], q_ddot: [z; 3] })
     }
 
     /// r|_A = (r_r cos θ, r_r sin θ, r_a).
@@ -143,13 +148,19 @@ impl<T: Scalar> Spherical<T> {
     /// Book: (5.3.41–43).
     ///
     /// # Errors
-    /// [`KinematicsError::NonFinite`].
+    /// [`KinematicsError::NonFinite`]; [`KinematicsError::Overflow`] when the radius exceeds
+    /// f64::MAX (every component near it).
     pub fn from_position(r_in_a: [T; 3]) -> Result<Self, KinematicsError> {
         finite(&r_in_a, "position")?;
         let [r1, r2, r3] = r_in_a;
         let rho = r1.hypot(r2);
         let z = T::zero();
-        Ok(Self { q: [rho.hypot(r3), r2.atan2(r1), -r3.atan2(rho)], q_dot: [z; 3], q_ddot: [z; 3] })
+        let r = rho.hypot(r3);
+        if !r.re().is_finite() {
+            // |r⃗| beyond f64::MAX (components near it)
+            return Err(KinematicsError::Overflow { what: "spherical radius r" });
+        }
+        Ok(Self { q: [r, r2.atan2(r1), -r3.atan2(rho)], q_dot: [z; 3], q_ddot: [z; 3] })
     }
 
     /// r|_A = r_u ê_u|_A = r_u (cos φ cos θ, cos φ sin θ, −sin φ).
@@ -204,7 +215,8 @@ impl<T: Scalar> Spherical<T> {
         let two = T::lit(2.0);
         Vector3::new(
             rdd - r * (pd * pd + td * td * c * c),
-            r * tdd * c + two * rd * td * c - two * r * td * pd * s,
+            // r last in each product: r near f64::MAX times zero rates is 0, not ∞·0
+            r * tdd * c + two * rd * td * c - r * (two * td * pd * s),
             -r * pdd - two * rd * pd - r * td * td * s * c,
         )
     }

@@ -82,6 +82,13 @@ pub enum KinematicsError {
         /// What is singular and what would be valid.
         detail: String,
     },
+    /// A true result beyond the largest finite `f64` (≈ 1.8e308), reported instead of a
+    /// silent ∞ (docs/robustness.md).
+    #[error("{what} overflows: its true value exceeds the largest finite number (≈ 1.8e308)")]
+    Overflow {
+        /// Which result.
+        what: &'static str,
+    },
     /// A geometric input that must be nonzero was zero.
     #[error("{what} must be nonzero")]
     Zero {

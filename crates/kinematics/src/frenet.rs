@@ -42,7 +42,9 @@ impl<T: Scalar> FrenetSerret<T> {
     /// * [`KinematicsError::ZeroCurvature`] when |r⃗′ × r⃗″| ≤ `rel_tol`·|r⃗′||r⃗″| (r⃗″ parallel
     ///   to r⃗′ or zero: straight segments and inflections have no normal; the error carries the
     ///   computed κ). Use [`crate::bishop_frames`] there;
-    /// * [`KinematicsError::NonFinite`].
+    /// * [`KinematicsError::NonFinite`]; an invalid tolerance (NaN, ∞, negative);
+    /// * [`KinematicsError::Overflow`] when κ, τ, 1/κ, the Darboux vector or the acceleration
+    ///   is out of the finite range (|r⃗′| = 1e300 makes κ underflow to 0).
     pub fn from_derivatives(
         r1: &Vector<T>,
         r2: &Vector<T>,
@@ -50,6 +52,9 @@ impl<T: Scalar> FrenetSerret<T> {
         speed_tol: f64,
         rel_tol: f64,
     ) -> Result<Self, KinematicsError> {
+        for (tol, what) in [(speed_tol, "speed_tol"), (rel_tol, "rel_tol")] {
+            vectrix_tensor::check_tolerance(tol, what).map_err(vectrix_frames::FrameError::from)?;
+        }
         finite_vector(r1, "r′")?;
         finite_vector(r2, "r″")?;
         finite_vector(r3, "r‴")?;
@@ -68,16 +73,24 @@ impl<T: Scalar> FrenetSerret<T> {
         let binormal = c / c_norm;
         // ê_n = ê_b × ê_t, equal to (5.5.21) and orthonormal by construction
         let normal = binormal.cross(&tangent);
-        Ok(Self {
+        let fs = Self {
             tangent,
             normal,
             binormal,
             speed,
             speed_rate: r1.dot(r2) / speed,
             curvature,
-            // (5.5.38): τ = (r′ × r″)·r‴/|r′ × r″|²
-            torsion: c.dot(r3) / (c_norm * c_norm),
-        })
+            // (5.5.38): τ = (r′ × r″)·r‴/|r′ × r″|² = (b̂·r‴)/|r′ × r″|, no |r′ × r″|² overflow
+            torsion: binormal.dot(r3) / c_norm,
+        };
+        // κ = |r′ × r″|/s′³ and its radius 1/κ, τ and the Darboux vector must all be finite
+        // numbers: s′ = 1e300 makes κ underflow to 0 (radius 1e600), a true value out of range.
+        let derived = [fs.speed_rate, fs.torsion, fs.radius_of_curvature()];
+        let rates_finite = fs.darboux_per_parameter().is_finite() && fs.acceleration().is_finite();
+        if !(derived.iter().all(|x| x.re().is_finite()) && rates_finite) {
+            return Err(KinematicsError::Overflow { what: "Frenet–Serret curvature, torsion or radius" });
+        }
+        Ok(fs)
     }
 
     /// Radius of curvature ρ = 1/κ (5.5.33).

@@ -43,7 +43,26 @@
 //! // asking it for a derivative with respect to F_B is an error, not a silent mix
 //! assert!(matches!(x_a.rate_wrt(b.label), Err(KinematicsError::FrameMismatch { .. })));
 //! ```
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
+
+/// `Ok(v)` when every component of the matrix or vector `v` is finite, else
+/// [`KinematicsError::Overflow`]: finite inputs whose true result exceeds f64::MAX
+/// (docs/robustness.md).
+macro_rules! finite_or_overflow {
+    ($v:expr, $what:expr) => {{
+        let v = $v;
+        if v.iter().all(|x| vectrix_tensor::Scalar::re(x).is_finite()) {
+            Ok(v)
+        } else {
+            Err($crate::KinematicsError::Overflow { what: $what })
+        }
+    }};
+}
+pub(crate) use finite_or_overflow;
 
 pub mod attitude;
 mod bishop;

@@ -32,7 +32,7 @@ pub fn omega_body_from_orientation_rate<T: Scalar>(
     finite_matrix(o_b_a, "𝓞_{B/A}")?;
     finite_matrix(o_b_a_dot, "d𝓞_{B/A}/dt")?;
     // (4.3.20): ω^×_{B/A|B} = −𝓞̇_{B/A} 𝓞_{A/B}
-    Ok(vee(&(-(o_b_a_dot * o_b_a.transpose()))))
+    crate::finite_or_overflow!(vee(&(-(o_b_a_dot * o_b_a.transpose()))), "ω from Ȯ")
 }
 
 /// α_{B/A}|_B from 𝓞_{B/A} and its second derivative: differentiating (4.3.20),
@@ -49,7 +49,7 @@ pub fn alpha_body_from_orientation_rates<T: Scalar>(
     finite_matrix(o_b_a, "𝓞_{B/A}")?;
     finite_matrix(o_b_a_ddot, "d²𝓞_{B/A}/dt²")?;
     // (4.4.6): α|_B = d/dt ω|_B; d/dt(−𝓞̇𝓞ᵀ) = −𝓞̈𝓞ᵀ − 𝓞̇𝓞̇ᵀ, the last term symmetric
-    Ok(vee(&(-(o_b_a_ddot * o_b_a.transpose()))))
+    crate::finite_or_overflow!(vee(&(-(o_b_a_ddot * o_b_a.transpose()))), "α from Ö")
 }
 
 /// ω_{B/A}|_A from 𝓡_{B/A} and its time derivative: ω^×_{B/A|A} = 𝓡̇_{B/A} 𝓡_{A/B}.
@@ -64,7 +64,7 @@ pub fn omega_spatial_from_rotation_rate<T: Scalar>(
 ) -> Result<Vector3<T>, KinematicsError> {
     finite_matrix(r_b_a, "𝓡_{B/A}")?;
     finite_matrix(r_b_a_dot, "d𝓡_{B/A}/dt")?;
-    Ok(vee(&(r_b_a_dot * r_b_a.transpose())))
+    crate::finite_or_overflow!(vee(&(r_b_a_dot * r_b_a.transpose())), "ω from Ṙ")
 }
 
 /// Poisson's equation in body form: 𝓡̇_{B/A} = 𝓡_{B/A} ω^×_{B/A|B} (4.3.17).

@@ -53,14 +53,14 @@ pub enum InstantaneousMotion<T: Scalar = f64> {
 /// Book: §4.15, (4.15.2), (4.15.6); §4.17.
 ///
 /// # Errors
-/// [`KinematicsError::NonFinite`].
+/// [`KinematicsError::NonFinite`]; [`KinematicsError::Overflow`] when the axis point or pitch
+/// exceeds f64::MAX (|ω⃗| subnormal).
 pub fn screw_axis<T: Scalar>(
     omega: &Vector<T>,
     v_q: &Vector<T>,
 ) -> Result<InstantaneousMotion<T>, KinematicsError> {
     finite_vector(omega, "ω")?;
     finite_vector(v_q, "v_q")?;
-    let w2 = omega.norm_squared();
     let Some(direction) = omega.unit() else {
         // ω = 0: no axis
         return Ok(if v_q.norm_squared() == T::zero() {
@@ -69,10 +69,14 @@ pub fn screw_axis<T: Scalar>(
             InstantaneousMotion::Translation { velocity: *v_q }
         });
     };
-    Ok(InstantaneousMotion::Screw(ScrewAxis {
-        axis: Line { point: omega.cross(v_q) / w2, direction },
-        pitch: omega.dot(v_q) / w2,
-    }))
+    // ω⃗ × v⃗_q/|ω⃗|² = (ω̂ × v⃗_q)/|ω⃗| and ω⃗·v⃗_q/|ω⃗|² = ω̂·v⃗_q/|ω⃗|: no |ω⃗|² overflow or underflow
+    let w = omega.norm();
+    let point = direction.cross(v_q) / w;
+    let pitch = direction.dot(v_q) / w;
+    if !(point.is_finite() && pitch.re().is_finite()) {
+        return Err(KinematicsError::Overflow { what: "screw axis point or pitch (|ω⃗| tiny)" });
+    }
+    Ok(InstantaneousMotion::Screw(ScrewAxis { axis: Line { point, direction }, pitch }))
 }
 
 /// The instantaneous velocity centre of rotation (IVCR): the line of body points p with
@@ -93,6 +97,7 @@ pub fn ivcr<T: Scalar>(
     v_q: &Vector<T>,
     rel_tol: f64,
 ) -> Result<Option<Line<T>>, KinematicsError> {
+    vectrix_tensor::check_tolerance(rel_tol, "rel_tol").map_err(vectrix_frames::FrameError::from)?;
     match screw_axis(omega, v_q)? {
         InstantaneousMotion::Screw(s) => {
             let tol = rel_tol * omega.norm().re() * v_q.norm().re();
@@ -132,13 +137,31 @@ pub enum Iacr<T: Scalar = f64> {
 /// Book: §4.16, (4.16.1), Facts 4.16.2–4.16.4.
 ///
 /// # Errors
-/// [`KinematicsError::NonFinite`].
+/// [`KinematicsError::NonFinite`]; [`KinematicsError::Overflow`] when the centre lies beyond
+/// f64::MAX; an invalid tolerance.
 pub fn iacr<T: Scalar>(
     omega: &Vector<T>,
     alpha: &Vector<T>,
     a_q: &Vector<T>,
     rel_tol: f64,
 ) -> Result<Iacr<T>, KinematicsError> {
+    let r = iacr_unchecked(omega, alpha, a_q, rel_tol)?;
+    // A point or line beyond f64::MAX (|ω|⁴ overflowing for |ω| ≥ 1e77) is a typed error.
+    let finite = match &r {
+        Iacr::Point(p) => p.is_finite(),
+        Iacr::Line(l) => l.point.is_finite() && l.direction.is_finite(),
+        _ => true,
+    };
+    if finite { Ok(r) } else { Err(KinematicsError::Overflow { what: "instantaneous acceleration centre" }) }
+}
+
+fn iacr_unchecked<T: Scalar>(
+    omega: &Vector<T>,
+    alpha: &Vector<T>,
+    a_q: &Vector<T>,
+    rel_tol: f64,
+) -> Result<Iacr<T>, KinematicsError> {
+    vectrix_tensor::check_tolerance(rel_tol, "rel_tol").map_err(vectrix_frames::FrameError::from)?;
     finite_vector(omega, "ω")?;
     finite_vector(alpha, "α")?;
     finite_vector(a_q, "a_q")?;

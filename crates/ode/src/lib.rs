@@ -32,6 +32,10 @@
 //! Book: §4.11 (integration of the attitude rate equations); HNW = Hairer, Nørsett &
 //! Wanner, *Solving Ordinary Differential Equations I*; HLW = Hairer, Lubich & Wanner,
 //! *Geometric Numerical Integration*.
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod accuracy;

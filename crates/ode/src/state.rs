@@ -128,7 +128,11 @@ pub(crate) fn eval<S: State, F: FnMut(f64, &S) -> S>(
     *fevals += 1;
     let k = f(t, y);
     if k.dim() != y.dim() {
-        return Err(OdeError::RhsLength { t, expected: y.dim(), got: k.dim() });
+        return Err(OdeError::DimensionMismatch {
+            what: "right-hand side f(t, y)",
+            got: k.dim(),
+            expected: y.dim(),
+        });
     }
     match first_non_finite(&k) {
         Some((index, value)) => Err(OdeError::RhsNotFinite { t, step_start, stage, index, value }),
@@ -161,9 +165,16 @@ pub(crate) fn check_stages<S: State>(
     h: f64,
     c: &[f64],
 ) -> Result<(), OdeError> {
+    // Every stage has the length of k₁ (checked against y by `eval`); a right-hand side that
+    // returns another length is refused instead of being silently truncated by the zip in
+    // `add_scaled` (a constant comparison for fixed-size states).
     let n = k[0].dim();
-    if let Some((i, ki)) = k.iter().enumerate().skip(first).find(|(_, ki)| ki.dim() != n) {
-        return Err(OdeError::RhsLength { t: t + c[i] * h, expected: n, got: ki.dim() });
+    if let Some(bad) = k[first..].iter().find(|ki| ki.dim() != n) {
+        return Err(OdeError::DimensionMismatch {
+            what: "right-hand side f(t, y)",
+            got: bad.dim(),
+            expected: n,
+        });
     }
     let mut acc = k[first].clone();
     for ki in &k[first + 1..] {

@@ -40,18 +40,36 @@ impl Axis {
                 a = a.floor();
                 b = b.ceil();
             }
-            lo = 10f64.powf(a);
-            hi = 10f64.powf(b);
+            // Whole decades, unless 10^a underflows to 0 or 10^b overflows (data at the ends
+            // of the f64 range): then the data bounds themselves.
+            let (p, q) = (10f64.powf(a), 10f64.powf(b));
+            if p > 0.0 && q.is_finite() {
+                (lo, hi) = (p, q);
+            } else if lo == hi {
+                // a single value at the end of the range: one decade on the side that exists
+                if hi * 10.0 < f64::INFINITY {
+                    hi *= 10.0;
+                } else {
+                    lo /= 10.0;
+                }
+            }
         } else {
-            if hi - lo <= 1e-12 * lo.abs().max(hi.abs()).max(1e-300) {
-                let d = if lo == 0.0 { 1.0 } else { 0.5 * lo.abs() };
-                lo -= d;
-                hi += d;
+            // Half-spans throughout: hi/2 − lo/2 is finite for every finite pair, where
+            // hi − lo overflows for data over ±1e308.
+            if half_span(lo, hi) <= 0.5e-12 * lo.abs().max(hi.abs()).max(1e-300) {
+                // A point (or a span of subnormals, whose half-span rounds to 0): widen about
+                // it by half its size, at least by 1e-300 so that the span is a normal number.
+                let d = if lo == 0.0 && hi == 0.0 { 1.0 } else { (0.5 * lo.abs().max(hi.abs())).max(1e-300) };
+                lo = (lo - d).max(-f64::MAX);
+                hi = (hi + d).min(f64::MAX);
             }
             if nice {
-                let step = nice_step(hi - lo);
-                lo = (lo / step).floor() * step;
-                hi = (hi / step).ceil() * step;
+                let step = nice_step(half_span(lo, hi));
+                let (a, b) = ((lo / step).floor() * step, (hi / step).ceil() * step);
+                // Rounding out to whole steps may pass ±f64::MAX: keep the data range there.
+                if a.is_finite() && b.is_finite() {
+                    (lo, hi) = (a, b);
+                }
             }
         }
         Ok(Self { lo, hi, log })
@@ -62,14 +80,19 @@ impl Axis {
         if self.log {
             (v.log10() - self.lo.log10()) / (self.hi.log10() - self.lo.log10())
         } else {
-            (v - self.lo) / (self.hi - self.lo)
+            (0.5 * v - 0.5 * self.lo) / half_span(self.lo, self.hi)
         }
     }
 
     /// Ticks with labels; minor ticks (2…9 per decade) on log axes spanning few decades.
     pub(crate) fn ticks(&self) -> Vec<Tick> {
         if self.log {
-            let (a, b) = (self.lo.log10().ceil() as i32, self.hi.log10().floor() as i32);
+            let (a, b) = (self.lo.log10().ceil(), self.hi.log10().floor());
+            // (a ≤ b within ±324 for every positive finite range; anything else has no decade)
+            if !(a.is_finite() && b.is_finite() && a <= b) {
+                return [self.lo, self.hi].map(|v| Tick { value: v, label: Some(format!("{v:e}")) }).to_vec();
+            }
+            let (a, b) = (a as i32, b as i32);
             let decades = (b - a).max(0);
             let every = (decades / 8 + 1).max(1);
             let mut out = Vec::new();
@@ -85,12 +108,19 @@ impl Axis {
             }
             out
         } else {
-            let step = nice_step(self.hi - self.lo);
-            let first = (self.lo / step - 1e-9).ceil() as i64;
-            let last = (self.hi / step + 1e-9).floor() as i64;
+            let step = nice_step(half_span(self.lo, self.hi));
+            let first = (self.lo / step - 1e-9).ceil();
+            let last = (self.hi / step + 1e-9).floor();
+            // A usable step gives about six ticks. A span of subnormals has no representable
+            // 1–2–5 step (it rounds to 0): then the two ends are the ticks.
+            if !(step.is_finite() && step > 0.0 && first <= last && last - first <= 100.0) {
+                return [self.lo, self.hi].map(|v| Tick { value: v, label: Some(format!("{v:e}")) }).to_vec();
+            }
+            // Fixed decimals for steps of ordinary size, scientific notation beyond.
+            let scientific = !(1e-6..1e15).contains(&step);
             let off = self.offset();
             let decimals = (-step.log10().floor()).max(0.0) as usize;
-            (first..=last)
+            (first as i64..=last as i64)
                 .map(|i| {
                     let v = i as f64 * step;
                     let label = match off {
@@ -104,7 +134,7 @@ impl Axis {
                             }
                         }
                         None => {
-                            let mut s = format!("{v:.decimals$}");
+                            let mut s = if scientific { format!("{v:e}") } else { format!("{v:.decimals$}") };
                             if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
                                 s.remove(0);
                             }
@@ -124,9 +154,9 @@ impl Axis {
         if self.log {
             return None;
         }
-        let step = nice_step(self.hi - self.lo);
+        let step = nice_step(half_span(self.lo, self.hi));
         let big = self.lo.abs().max(self.hi.abs());
-        if big <= 1e5 * step {
+        if !(step.is_finite() && step > 0.0) || big <= 1e5 * step {
             return None;
         }
         Some((0.5 * (self.lo + self.hi) / step).round() * step)
@@ -142,9 +172,16 @@ pub(crate) fn offset_label(o: f64) -> String {
     }
 }
 
-/// A step of 1, 2 or 5 × 10^k giving about six intervals over `span`.
-pub(crate) fn nice_step(span: f64) -> f64 {
-    let raw = span / 6.0;
+/// (hi − lo)/2 without overflow: finite for every finite pair.
+#[inline]
+pub(crate) fn half_span(lo: f64, hi: f64) -> f64 {
+    0.5 * hi - 0.5 * lo
+}
+
+/// A step of 1, 2 or 5 × 10^k giving about six intervals over a span of 2·`half` (the half
+/// span, so that a span beyond f64::MAX still has a step).
+pub(crate) fn nice_step(half: f64) -> f64 {
+    let raw = half / 3.0;
     let mag = 10f64.powf(raw.log10().floor());
     let f = raw / mag;
     let m = if f < 1.5 {

@@ -1,7 +1,7 @@
 //! The general panel every figure is drawn on: curves, markers, reference lines, arrows and
 //! notes over linear or logarithmic axes, with a legend.
 
-use crate::axis::Axis;
+use crate::axis::{Axis, half_span};
 use crate::error::PlotError;
 use crate::svg::{PALETTE, Svg, escape, num};
 
@@ -172,12 +172,18 @@ impl Chart {
             return Ok((xr, yr));
         }
         // Equal aspect: widen the axis with fewer data units per pixel about its centre.
-        let (ux, uy) = ((xr.hi - xr.lo) / w, (yr.hi - yr.lo) / h);
-        let widen = |a: Axis, u: f64, px: f64| {
-            let c = 0.5 * (a.lo + a.hi);
-            Axis { lo: c - 0.5 * u * px, hi: c + 0.5 * u * px, log: false }
+        // Half-units per pixel and the centre as lo/2 + hi/2: no overflow for data near ±1e308.
+        let (ux, uy) = (half_span(xr.lo, xr.hi) / w, half_span(yr.lo, yr.hi) / h);
+        let widen = |a: Axis, u: f64, px: f64, name| {
+            let c = 0.5 * a.lo + 0.5 * a.hi;
+            let (lo, hi) = (c - u * px, c + u * px);
+            if lo.is_finite() && hi.is_finite() {
+                Ok(Axis { lo, hi, log: false })
+            } else {
+                Err(PlotError::InvalidRange { axis: name, lo, hi })
+            }
         };
-        Ok(if ux > uy { (xr, widen(yr, ux, h)) } else { (widen(xr, uy, w), yr) })
+        Ok(if ux > uy { (xr, widen(yr, ux, h, "y")?) } else { (widen(xr, uy, w, "x")?, yr) })
     }
 
     /// Draws the panel into `svg` with its top-left corner at (0, `y0`).

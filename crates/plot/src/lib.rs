@@ -8,6 +8,10 @@
 //! - [`Chart`] and [`Figure`]: the general panel (curves, markers, reference lines, arrows)
 //!   and vertical stacks of panels, used by the control figures of the book's ch. 15–16
 //!   (Bode, Nyquist, step responses, root loci, pole–zero maps, phase portraits).
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod axis;

@@ -76,10 +76,12 @@ pub fn compose_euler<T: Scalar>(
 
 /// Additivity of coplanar angle vectors (F2.19.1): for parallel Θ⃗₁, Θ⃗₂ (about a common axis
 /// n̂), R_{n̂}(θ₁)R_{n̂}(θ₂) = R_{n̂}(θ₁ + θ₂), so the composed angle vector is n̂·wrap(θ₁ + θ₂),
-/// exact. `None` when the vectors are not parallel within `tol` (|Θ₁×Θ₂| > tol|Θ₁||Θ₂|).
+/// exact. `None` when the vectors are not parallel within `tol` (|Θ₁×Θ₂| > tol|Θ₁||Θ₂|), when
+/// an input is not finite, or when `tol` is NaN, infinite or negative.
 ///
 /// Book: §2.19, F2.19.1, F2.19.3.
 pub fn compose_coplanar<T: Scalar>(th_2: &Vector<T>, th_1: &Vector<T>, tol: f64) -> Option<Vector<T>> {
+    vectrix_tensor::check_tolerance(tol, "tol").ok()?;
     let (n2, n1) = (th_2.norm(), th_1.norm());
     if th_2.cross(th_1).norm().re() > tol * (n2 * n1).re() {
         return None;
@@ -91,5 +93,7 @@ pub fn compose_coplanar<T: Scalar>(th_2: &Vector<T>, th_1: &Vector<T>, tol: f64)
     let sum = n.dot(th_2) + n.dot(th_1);
     // One shift suffices below 3π (and stays smooth for dual numbers); beyond, the general wrap.
     let sum = if sum.re().abs() < 3.0 * core::f64::consts::PI { wrap_near(sum) } else { wrap_angle(sum) };
-    Some(n * sum)
+    // Non-finite input (or a sum of angles beyond f64::MAX) has no composed angle: None.
+    let out = n * sum;
+    out.is_finite().then_some(out)
 }

@@ -12,6 +12,13 @@ pub enum RotationError {
         /// Which input held the value.
         what: &'static str,
     },
+    /// The true result is finite mathematics but exceeds the largest finite `f64` (≈ 1.8e308);
+    /// reported instead of a silent ∞ (docs/robustness.md).
+    #[error("{what} overflows: its true value exceeds the largest finite number (≈ 1.8e308)")]
+    Overflow {
+        /// Which result.
+        what: &'static str,
+    },
     /// A rotation axis (or a quaternion) of zero length.
     #[error("{what} has zero length: a rotation axis or quaternion must be nonzero")]
     Zero {

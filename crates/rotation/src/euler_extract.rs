@@ -88,6 +88,7 @@ impl<T: Scalar> EulerAngles<T> {
         sequence: EulerSequence,
         tol: f64,
     ) -> Result<EulerSolution<T>, RotationError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         check_rotation_matrix(r, tol)?;
         Ok(Self::from_rotation_matrix_unchecked(r, sequence, GIMBAL_LOCK_TOL))
     }

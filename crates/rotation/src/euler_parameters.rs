@@ -24,6 +24,7 @@ impl<T: Scalar> Quaternion<T> {
     #[doc(alias = "from_dcm")]
     #[doc(alias = "from_matrix")]
     pub fn from_rotation_matrix(r: &Matrix3<T>, tol: f64) -> Result<Self, RotationError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         check_rotation_matrix(r, tol)?;
         Ok(Self::from_rotation_matrix_unchecked(r))
     }
@@ -209,16 +210,18 @@ impl<T: Scalar> Quaternion<T> {
             let q = Self::from_parts(c, axis * s);
             return Ok(if c <= T::zero() { q.canonical() } else { q });
         }
-        let n = norm3(axis);
-        // One test covers every component: |n| and θ are finite exactly when all inputs are.
-        if !(n.re().is_finite() && theta.re().is_finite()) {
+        if !(axis.iter().all(|x| x.re().is_finite()) && theta.re().is_finite()) {
             return Err(RotationError::NonFinite { what: "axis or angle" });
         }
-        if n == T::zero() {
+        let m = axis.x.abs().max(axis.y.abs()).max(axis.z.abs());
+        if m == T::zero() {
             return Err(RotationError::Zero { what: "rotation axis" });
         }
         let (s, c) = (theta * T::lit(0.5)).sin_cos();
-        let q = Self::from_parts(c, axis * (s / n));
+        // n̂ sin(θ/2) with n̂ = u/|u|, u = axis/max|axisᵢ|: exact for subnormal or huge axes
+        // (|n| of a subnormal axis carries too few bits to divide by, |n| of 1e308 overflows)
+        let u = axis / m;
+        let q = Self::from_parts(c, (u / u.norm()) * s);
         // η = cos(θ/2) < 0 only for |θ| > π.
         Ok(if c <= T::zero() { q.canonical() } else { q })
     }
@@ -253,7 +256,11 @@ impl<T: Scalar> Quaternion<T> {
     #[doc(alias = "from_scaled_axis")]
     #[inline]
     pub fn from_angle_vector(theta: &Vector3<T>) -> Self {
-        let h = norm3(theta) * T::lit(0.5);
+        let mut h = norm3(theta) * T::lit(0.5);
+        if h.re().is_infinite() {
+            // |Θ| beyond f64::MAX (components near it): h = |Θ/2| is still finite.
+            h = norm3(&(theta * T::lit(0.5)));
+        }
         let (s, c) = h.sin_cos();
         // ½ sin(h)/h, by series near h = 0 (sinc).
         let k = if h.re().abs() < 1e-3 { T::lit(0.5) * sinc(h) } else { T::lit(0.5) * s / h };
@@ -311,10 +318,18 @@ impl<T: Scalar> Quaternion<T> {
     pub fn from_gibbs(g: &Vector3<T>) -> Self {
         let n = norm3(g);
         let one = T::one();
+        if g.iter().any(|x| x.re().is_infinite()) {
+            // θ = π, the limit |g| → ∞: the axis is the direction of the infinite components
+            // ((∞, 1, 0) is the half turn about î). NaN input stays NaN.
+            let d = g.map(|x| if x.re().is_infinite() { x.signum() } else { x * T::zero() });
+            return Self::from_parts(T::zero(), d / norm3(&d)).canonical();
+        }
         if n > one {
-            // (1/n, ĝ)/√(1 + 1/n²): no overflow of g·g near θ = π.
+            // (1/n, ĝ)/√(1 + 1/n²): no overflow of g·g near θ = π; ĝ from g/max|gᵢ|, so that
+            // |g| beyond f64::MAX (n = ∞, r = 0) still gives the half turn about ĝ.
             let r = one / n;
-            Self::from_parts(r, g * r) * (one / (one + r * r).sqrt())
+            let u = g / g.x.abs().max(g.y.abs()).max(g.z.abs());
+            Self::from_parts(r, u / u.norm()) * (one / (one + r * r).sqrt())
         } else {
             Self::from_parts(one, *g) * (one / (one + n * n).sqrt())
         }
@@ -336,8 +351,22 @@ impl<T: Scalar> Quaternion<T> {
     /// Book: extends §2.17.
     #[inline]
     pub fn from_mrp(p: &Vector3<T>) -> Self {
-        let p2 = p.norm_squared();
         let one = T::one();
+        let n = norm3(p);
+        if n.re() > 1.0 && n.re().is_finite() {
+            // |p| > 1, in terms of r = 1/|p| and p̂ so that |p|² never overflows:
+            // q₀ = (1 − |p|²)/(1 + |p|²) = (r² − 1)/(r² + 1), q⃗ = 2p/(1 + |p|²) = 2r p̂/(r² + 1)
+            let r = one / n;
+            let k = one / (r * r + one);
+            return Self::from_parts((r * r - one) * k, (p / n) * (T::lit(2.0) * r * k)).canonical();
+        }
+        if n.re().is_infinite() {
+            // |p| → ∞: the shadow −p/|p|² → 0, the identity.
+            return Self::identity();
+        }
+        // (2.17.x, MRP): q = ((1 − |p|²), 2p)/(1 + |p|²); |p|² ≤ 1 cannot overflow, and its
+        // underflow for tiny p is harmless (q₀ = 1, q⃗ = 2p).
+        let p2 = p.norm_squared();
         let k = one / (one + p2);
         Self::from_parts((one - p2) * k, p * (T::lit(2.0) * k)).canonical()
     }

@@ -18,6 +18,7 @@ pub const ROTATION_TOL: f64 = 128.0 * f64::EPSILON;
 /// [`RotationError::NonFinite`], [`RotationError::NotOrthonormal`] (with the defect found),
 /// [`RotationError::Reflection`] for det < 0.
 pub fn check_rotation_matrix<T: Scalar>(m: &Matrix3<T>, tol: f64) -> Result<(), RotationError> {
+    vectrix_tensor::check_tolerance(tol, "tol")?;
     // ‖MᵀM − I‖_max; a NaN or ∞ entry makes it non-finite, reported as such.
     let g = m.tr_mul(m) - Matrix3::identity();
     let defect = g.iter().fold(0.0f64, |d, x| d.max(x.re().abs()));
@@ -52,7 +53,10 @@ pub fn nearest_rotation<T: Scalar>(m: &Matrix3<T>) -> Result<Matrix3<T>, Rotatio
     if m.iter().all(|x| *x == T::zero()) {
         return Err(RotationError::Zero { what: "matrix" });
     }
-    let svd = m.svd(true, true);
+    // The polar factor of M is that of M/max|M_ij|: scaling first keeps the SVD finite for
+    // entries near f64::MAX or subnormal.
+    let scale = m.iter().fold(T::zero(), |a, x| a.max(x.abs()));
+    let svd = (m / scale).svd(true, true);
     let (Some(u), Some(v_t)) = (svd.u, svd.v_t) else {
         return Err(RotationError::NonFinite { what: "SVD of the matrix" });
     };
@@ -67,5 +71,9 @@ pub fn nearest_rotation<T: Scalar>(m: &Matrix3<T>) -> Result<Matrix3<T>, Rotatio
         let col = -u.column(k);
         u.set_column(k, &col);
     }
-    Ok(u * v_t)
+    let r = u * v_t;
+    if !all_finite(r.iter().copied()) {
+        return Err(RotationError::NonFinite { what: "SVD of the matrix" });
+    }
+    Ok(r)
 }

@@ -90,21 +90,72 @@ impl<T: Scalar> Quaternion<T> {
     /// Norm |𝐪| = √(𝐪𝐪̄) (book §2.16).
     #[inline]
     pub fn norm(&self) -> T {
-        self.norm_squared().sqrt()
+        let n2 = self.norm_squared();
+        let r = n2.re();
+        // Fast path: |q|² neither underflows nor overflows.
+        if r > 1e-290 && r < 1e290 {
+            return n2.sqrt();
+        }
+        // Scaled by the largest component (as `Vector::norm`): exact for 1e±300 components.
+        let m = self.max_abs();
+        if m == T::zero() || !m.re().is_finite() {
+            return n2.sqrt();
+        }
+        self.div_by(m).norm_squared().sqrt() * m
+    }
+
+    /// The largest |component|.
+    #[inline]
+    fn max_abs(&self) -> T {
+        self.a.abs().max(self.b.abs()).max(self.c.abs()).max(self.d.abs())
+    }
+
+    /// Every component divided by `m` (a division, not a multiplication by 1/m, which
+    /// overflows for subnormal m).
+    #[inline]
+    fn div_by(&self, m: T) -> Self {
+        Self::new(self.a / m, self.b / m, self.c / m, self.d / m)
     }
 
     /// Inverse 𝐪⁻¹ = 𝐪̄/|𝐪|²; `None` for 𝐪 = 0.
     #[inline]
     pub fn inverse(&self) -> Option<Self> {
+        // 𝐪⁻¹ = 𝐪̄/|𝐪|²; fast path when |𝐪|² is in range (the usual case, one branch)
         let n2 = self.norm_squared();
-        (n2 != T::zero() && n2.re().is_finite()).then(|| self.conjugate() * (T::one() / n2))
+        let r = n2.re();
+        if r > 1e-290 && r < 1e290 {
+            return Some(self.conjugate() * (T::one() / n2));
+        }
+        // otherwise scaled so that |𝐪|² never leaves the range
+        let n = self.norm();
+        if n == T::zero() || !n.re().is_finite() {
+            return None;
+        }
+        // u = 𝐪/m has |u| ∈ [1, 2]: 𝐪⁻¹ = ū/(|u|² m)
+        let m = self.max_abs();
+        let u = self.div_by(m);
+        let inv = u.conjugate().div_by(u.norm_squared()).div_by(m);
+        inv.to_vector4().iter().all(|x| x.re().is_finite()).then_some(inv)
     }
 
     /// 𝐪/|𝐪|; `None` for 𝐪 = 0 or non-finite components.
     #[inline]
     pub fn normalize(&self) -> Option<Self> {
-        let n = self.norm();
-        (n != T::zero() && n.re().is_finite()).then(|| *self * (T::one() / n))
+        // Fast path (the usual case, one branch): |𝐪|² neither underflows nor overflows.
+        let n2 = self.norm_squared();
+        let r = n2.re();
+        if r > 1e-290 && r < 1e290 {
+            return Some(*self * (T::one() / n2.sqrt()));
+        }
+        // Scale by the largest component first (as `Vector::unit`): (1e200, 1e200, 0, 0) and
+        // (1e-200, …) normalise exactly instead of overflowing or underflowing |𝐪|².
+        let m = self.max_abs();
+        // (f64::max ignores NaN, so check every component)
+        if m == T::zero() || !self.to_vector4().iter().all(|x| x.re().is_finite()) {
+            return None;
+        }
+        let s = self.div_by(m);
+        Some(s.div_by(s.norm_squared().sqrt()))
     }
 
     /// Euclidean inner product a₁a₂ + b₁b₂ + c₁c₂ + d₁d₂ (cos of half the angle between two
@@ -173,7 +224,8 @@ impl<T: Scalar> Quaternion<T> {
         let v = if s == T::zero() {
             if self.a < T::zero() { Vector3::new(T::pi(), T::zero(), T::zero()) } else { v }
         } else {
-            v * (phi / s)
+            // v̂ φ: divide first, so that a subnormal |v| does not overflow φ/|v|
+            (v / s) * phi
         };
         Some(Self::from_parts(n.ln(), v))
     }

@@ -92,6 +92,7 @@ impl<T: Scalar> Rotation<T> {
     /// # Errors
     /// [`RotationError::NonFinite`], [`RotationError::NotUnit`].
     pub fn from_quaternion_in(a: &Frame<T>, q: &Quaternion<T>, tol: f64) -> Result<Self, RotationError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         q.check_unit(tol)?;
         Ok(Self::from_quaternion_parts(a, q))
     }

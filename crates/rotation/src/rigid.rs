@@ -100,6 +100,7 @@ impl<T: Scalar> RigidDisplacement<T> {
     /// As [`crate::check_rotation_matrix`]; [`RotationError::NotOrthonormal`] when the bottom
     /// row is not [0 0 0 1] (reported as its defect).
     pub fn from_homogeneous_in(a: &Frame<T>, h: &Matrix4<T>, tol: f64) -> Result<Self, RotationError> {
+        vectrix_tensor::check_tolerance(tol, "tol")?;
         let r: Matrix3<T> = h.fixed_view::<3, 3>(0, 0).into_owned();
         let t: Vector3<T> = h.fixed_view::<3, 1>(0, 3).into_owned();
         let row = [h[(3, 0)], h[(3, 1)], h[(3, 2)], h[(3, 3)] - T::one()];

@@ -170,19 +170,39 @@ impl<T: Scalar> Rotation<T> {
     /// R⃗ᵗ = exp(t log R⃗), about the same axis by t·θ (θ ∈ [0, π] the principal angle).
     ///
     /// Book: §2.14 (exp/log).
-    pub fn powf(&self, t: T) -> Rotation<T> {
+    ///
+    /// # Errors
+    /// [`RotationError::NonFinite`] for a NaN or infinite `t`; [`RotationError::Overflow`]
+    /// when t·θ exceeds the largest finite number.
+    pub fn powf(&self, t: T) -> Result<Rotation<T>, RotationError> {
+        if !t.re().is_finite() {
+            return Err(RotationError::NonFinite { what: "exponent t" });
+        }
         let a = Frame::<T>::identity();
         let th = self.quaternion_in(&a).angle_vector() * t;
-        Self::from_quaternion_parts(&a, &Quaternion::from_angle_vector(&th))
+        if !th.iter().all(|x| x.re().is_finite()) {
+            return Err(RotationError::Overflow { what: "angle vector t·θ" });
+        }
+        Ok(Self::from_quaternion_parts(&a, &Quaternion::from_angle_vector(&th)))
     }
 
     /// Geodesic interpolation: `self` at t = 0, `other` at t = 1, the shorter arc.
     ///
     /// Book: §2.14.
-    pub fn slerp(&self, other: &Rotation<T>, t: T) -> Rotation<T> {
+    ///
+    /// # Errors
+    /// [`RotationError::NonFinite`] for a NaN or infinite `t`; [`RotationError::Overflow`]
+    /// when t times the angle between the two exceeds the largest finite number.
+    pub fn slerp(&self, other: &Rotation<T>, t: T) -> Result<Rotation<T>, RotationError> {
+        if !t.re().is_finite() {
+            return Err(RotationError::NonFinite { what: "interpolation parameter t" });
+        }
         let a = Frame::<T>::identity();
         let q = self.quaternion_in(&a).slerp(&other.quaternion_in(&a), t);
-        Self::from_quaternion_parts(&a, &q)
+        if !q.to_vector4().iter().all(|x| x.re().is_finite()) {
+            return Err(RotationError::Overflow { what: "angle t·θ of the interpolation" });
+        }
+        Ok(Self::from_quaternion_parts(&a, &q))
     }
 
     /// Restores |R| = 1 after long products (notes ch1-2a §3.10); one square root.

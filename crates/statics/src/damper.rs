@@ -39,7 +39,7 @@ impl<T: Scalar> Dashpot<T> {
     pub fn force(&self, r_y_w: &Vector<T>, v_y_w: &Vector<T>) -> Result<Vector<T>, StaticsError> {
         let (r_hat, _) = unit_sep(r_y_w, "dashpot")?;
         check_vec(v_y_w, "dashpot relative velocity")?;
-        Ok(r_hat * (-self.c * rate_of_length(&r_hat, v_y_w)))
+        crate::gravity::finite_or_overflow(r_hat * (-self.c * rate_of_length(&r_hat, v_y_w)), "dashpot force")
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (6.8.2).
@@ -60,7 +60,8 @@ impl<T: Scalar> Dashpot<T> {
     /// # Errors
     /// As [`Dashpot::force`].
     pub fn dissipation(&self, r_y_w: &Vector<T>, v_y_w: &Vector<T>) -> Result<T, StaticsError> {
-        Ok(-self.force(r_y_w, v_y_w)?.dot(v_y_w))
+        let p = -self.force(r_y_w, v_y_w)?.dot(v_y_w);
+        if p.re().is_finite() { Ok(p) } else { Err(StaticsError::Overflow { what: "dashpot dissipation" }) }
     }
 }
 
@@ -97,7 +98,7 @@ impl<T: Scalar> RotationalDashpot<T> {
         z: &Vector<T>,
     ) -> Result<(Vector<T>, Vector<T>), StaticsError> {
         let z = z.unit().ok_or(StaticsError::ZeroVector { what: "pin axis ẑ" })?;
-        let m = z * (-self.xi * omega_b1_b2.dot(&z));
+        let m = crate::gravity::finite_or_overflow(z * (-self.xi * omega_b1_b2.dot(&z)), "dashpot torque")?;
         Ok((m, -m))
     }
 }
@@ -141,7 +142,7 @@ impl<T: Scalar> Inerter<T> {
         let rv = r_hat.dot(v_y_w);
         // d²|r|/dt² = r̂·a + (|v|² − (r̂·v)²)/|r|
         let len_dd = r_hat.dot(a_y_w) + (v_y_w.norm_squared() - rv * rv) / len;
-        Ok(r_hat * (-self.b * len_dd))
+        crate::gravity::finite_or_overflow(r_hat * (-self.b * len_dd), "inerter force")
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (7.12.4).
@@ -200,7 +201,7 @@ impl<T: Scalar> RotationalInerter<T> {
     /// [`StaticsError::ZeroVector`] for ẑ = 0⃗.
     pub fn torques(&self, theta_ddot: T, z: &Vector<T>) -> Result<(Vector<T>, Vector<T>), StaticsError> {
         let z = z.unit().ok_or(StaticsError::ZeroVector { what: "pin axis ẑ" })?;
-        let m = z * (-self.beta * theta_ddot);
+        let m = crate::gravity::finite_or_overflow(z * (-self.beta * theta_ddot), "inerter torque")?;
         Ok((m, -m))
     }
 }

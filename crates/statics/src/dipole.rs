@@ -17,7 +17,8 @@ use crate::spring::{check_vec, unit_sep};
 /// [`StaticsError::CoincidentPoints`] for r⃗ = 0⃗.
 pub fn dipole_field_dyadic<T: Scalar>(r_z_y: &Vector<T>) -> Result<Dyadic<T>, StaticsError> {
     let (r_hat, len) = unit_sep(r_z_y, "magnetic dipoles")?;
-    Ok((r_hat.outer(&r_hat) * T::lit(3.0) - Dyadic::identity()) * (T::one() / (len * len * len)))
+    let d = (r_hat.outer(&r_hat) * T::lit(3.0) - Dyadic::identity()) * (T::one() / (len * len * len));
+    if d.is_finite() { Ok(d) } else { Err(StaticsError::Overflow { what: "dipole field 1/|r|³" }) }
 }
 
 /// The field of the dipole m⃗_y at z: B⃗_y(r⃗_{z/y}) = (3(r̂·m⃗_y)r̂ − m⃗_y)/|r⃗|³ (6.13.1).
@@ -28,7 +29,7 @@ pub fn dipole_field_dyadic<T: Scalar>(r_z_y: &Vector<T>) -> Result<Dyadic<T>, St
 /// [`StaticsError::CoincidentPoints`]; [`StaticsError::NonFinite`].
 pub fn dipole_field<T: Scalar>(m_y: &Vector<T>, r_z_y: &Vector<T>) -> Result<Vector<T>, StaticsError> {
     check_vec(m_y, "dipole moment")?;
-    Ok(dipole_field_dyadic(r_z_y)?.apply(m_y))
+    crate::gravity::finite_or_overflow(dipole_field_dyadic(r_z_y)?.apply(m_y), "dipole field")
 }
 
 /// Forces and torques between the dipoles m⃗_z at z and m⃗_y at y.
@@ -74,11 +75,11 @@ pub fn dipole_interaction<T: Scalar>(
     let tau_z = (m_z.cross(&r_hat) * (three * a) - m_z.cross(m_y)) * inv3;
     let tau_y = (m_y.cross(&(-r_hat)) * (-three * b) - m_y.cross(m_z)) * inv3;
     Ok(DipolePair {
-        force_on_z: f,
+        force_on_z: crate::gravity::finite_or_overflow(f, "dipole force")?,
         force_on_y: -f,
-        torque_on_z: tau_z,
-        torque_on_y: tau_y,
-        force_pair_torque: r_z_y.cross(&f),
+        torque_on_z: crate::gravity::finite_or_overflow(tau_z, "dipole torque")?,
+        torque_on_y: crate::gravity::finite_or_overflow(tau_y, "dipole torque")?,
+        force_pair_torque: crate::gravity::finite_or_overflow(r_z_y.cross(&f), "dipole force-pair torque")?,
     })
 }
 
@@ -94,5 +95,6 @@ pub fn dipole_potential<T: Scalar>(
     r_z_y: &Vector<T>,
 ) -> Result<T, StaticsError> {
     check_vec(m_z, "dipole moment m_z")?;
-    Ok(-m_z.dot(&dipole_field(m_y, r_z_y)?))
+    let u = -m_z.dot(&dipole_field(m_y, r_z_y)?);
+    if u.re().is_finite() { Ok(u) } else { Err(StaticsError::Overflow { what: "dipole potential" }) }
 }

@@ -136,6 +136,13 @@ pub enum StaticsError {
         /// What failed.
         detail: String,
     },
+    /// A true result that exceeds the largest finite `f64` (≈ 1.8e308), reported instead of a
+    /// silent ∞ (docs/robustness.md).
+    #[error("{what} overflows: its true value exceeds the largest finite number (≈ 1.8e308)")]
+    Overflow {
+        /// Which result.
+        what: &'static str,
+    },
     /// An error from the frames layer.
     #[error(transparent)]
     Frame(#[from] vectrix_frames::FrameError),

@@ -261,6 +261,7 @@ impl FreeBodyProblem {
     /// [`StaticsError::Inconsistent`] when no reactions balance the loads;
     /// [`StaticsError::Solver`] if the SVD fails.
     pub fn solve(&self, rel_tol: f64) -> Result<FreeBodySolution, StaticsError> {
+        vectrix_tensor::check_tolerance(rel_tol, "rel_tol")?;
         let (rows, n) = (6 * self.bodies, self.unknowns.len());
         let o = Point::origin();
         // b = −(known loads), per body: [Σf; ΣM_{/o}]

@@ -111,7 +111,8 @@ impl<T: Scalar> CentralGravity<T> {
         check_mass(m, "attracted particle")?;
         let (r_hat, len) = unit_sep(r_y_x, "central gravity")?;
         // (6.12.1): r̂_{x/y} = −r̂_{y/x}
-        Ok(r_hat * (-self.mu * m / (len * len)))
+        let f = r_hat * (-self.mu * m / len / len);
+        finite_or_overflow(f, "central gravity force")
     }
 
     /// Potential U = −μ m/|r⃗_{y/x}| (8.3.10).
@@ -122,7 +123,12 @@ impl<T: Scalar> CentralGravity<T> {
     /// [`StaticsError::CoincidentPoints`] for r⃗_{y/x} = 0⃗.
     pub fn potential(&self, m: T, r_y_x: &Vector<T>) -> Result<T, StaticsError> {
         let (_, len) = unit_sep(r_y_x, "central gravity")?;
-        Ok(-self.mu * m / len)
+        let u = -self.mu * m / len;
+        if u.re().is_finite() {
+            Ok(u)
+        } else {
+            Err(StaticsError::Overflow { what: "central gravity potential" })
+        }
     }
 }
 
@@ -186,6 +192,9 @@ pub fn gravity_between<T: Scalar>(
             w += f_ij.norm();
         }
     }
+    if !(f.is_finite() && w.re().is_finite()) {
+        return Err(StaticsError::Overflow { what: "total gravitational force or weight" });
+    }
     Ok((f, w))
 }
 
@@ -217,5 +226,18 @@ pub fn centre_of_gravity<T: Scalar>(
     if total.re() <= 0.0 {
         return Err(StaticsError::ZeroMass { what: "centre of gravity (zero total weight)" });
     }
-    Ok(y0.displaced(first / total))
+    let c = y0.displaced(first / total);
+    if !c.is_finite() {
+        return Err(StaticsError::Overflow { what: "centre of gravity (zero or overflowing weight)" });
+    }
+    Ok(c)
+}
+
+/// `Ok(v)` when every component is finite, else [`StaticsError::Overflow`]: finite inputs whose
+/// true result exceeds the largest finite number (|r⃗| = 1e-200 in an inverse-square law).
+pub(crate) fn finite_or_overflow<T: Scalar>(
+    v: Vector<T>,
+    what: &'static str,
+) -> Result<Vector<T>, StaticsError> {
+    if v.is_finite() { Ok(v) } else { Err(StaticsError::Overflow { what }) }
 }

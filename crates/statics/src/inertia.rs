@@ -168,17 +168,24 @@ pub(crate) fn analyse<T: Scalar>(
     if !j.is_finite() {
         return Err(StaticsError::NonFinite { what: "inertia" });
     }
-    let m = mat_re(j);
+    vectrix_tensor::check_tolerance(rel_tol, "rel_tol")?;
+    // Work on J/max|J_ij| (entries in [−1, 1]): the norms, the symmetric part and the
+    // eigenvalues then neither overflow (J near f64::MAX) nor lose digits (subnormal J); the
+    // moments are scaled back at the end. Every test below is relative, so unchanged.
+    let m0 = mat_re(j);
+    let unit = m0.amax();
+    let unit = if unit == 0.0 { 1.0 } else { unit };
+    let m = m0 / unit;
     let scale = m.norm();
     let asymmetry = (m - m.transpose()).norm();
     let sym_tol = rel_tol * scale;
     if asymmetry > sym_tol {
-        return Err(StaticsError::NotSymmetric { asymmetry, tol: sym_tol });
+        return Err(StaticsError::NotSymmetric { asymmetry: asymmetry * unit, tol: sym_tol * unit });
     }
     let (mut lam, vecs) = sorted_eigen(&((m + m.transpose()) * 0.5));
     let tol = rel_tol * lam[0].abs().max(scale);
     if lam[2] < -tol {
-        return Err(StaticsError::NotPositiveSemidefinite { min_moment: lam[2], tol });
+        return Err(StaticsError::NotPositiveSemidefinite { min_moment: lam[2] * unit, tol: tol * unit });
     }
     // Moments within tolerance of zero are zero (e.g. the axial moment of a thin rod).
     for l in &mut lam {
@@ -187,12 +194,16 @@ pub(crate) fn analyse<T: Scalar>(
         }
     }
     let rank = lam.iter().filter(|&&l| l > 0.0).count();
+    let moments = lam.map(|l| l * unit);
     if rank == 1 {
-        return Err(StaticsError::RankOne { moments: lam });
+        return Err(StaticsError::RankOne { moments });
     }
     let excess = lam[0] - lam[1] - lam[2];
     if excess > tol {
-        return Err(StaticsError::TriangleInequality { moments: lam, excess });
+        return Err(StaticsError::TriangleInequality { moments, excess: excess * unit });
     }
-    Ok((InertiaCheck { moments: lam, rank }, vecs))
+    if !moments.iter().all(|l| l.is_finite()) {
+        return Err(StaticsError::Overflow { what: "principal moments of inertia" });
+    }
+    Ok((InertiaCheck { moments, rank }, vecs))
 }

@@ -31,6 +31,10 @@
 //! assert!((p.moments[2] - 3.41320).abs() < 1e-5);
 //! # Ok::<(), vectrix_statics::StaticsError>(())
 //! ```
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod basis;

@@ -209,8 +209,18 @@ impl<T: Scalar> MassProperties<T> {
     /// The body translated by d⃗ (inertia about c unchanged).
     ///
     /// Book: §6.1–6.2, (6.1.1)–(6.1.2).
-    pub fn translated(&self, d: Vector<T>) -> MassProperties<T> {
-        MassProperties { centre: self.centre.displaced(d), ..*self }
+    ///
+    /// # Errors
+    /// [`StaticsError::NonFinite`] for a NaN or ∞ component of d⃗;
+    /// [`StaticsError::Overflow`] when the displaced centre leaves the finite numbers.
+    pub fn translated(&self, d: Vector<T>) -> Result<MassProperties<T>, StaticsError> {
+        if !d.is_finite() {
+            return Err(StaticsError::NonFinite { what: "translation d⃗" });
+        }
+        let centre = self.centre.displaced(d);
+        check_point(&centre, "translated centre")
+            .map_err(|_| StaticsError::Overflow { what: "translated centre" })?;
+        Ok(MassProperties { centre, ..*self })
     }
 
     /// The body rotated by the rotor R about the pivot z: c′ = z + R r⃗_{c/z},

@@ -18,6 +18,17 @@ fn check_len<T: Scalar>(x: T, what: &'static str) -> Result<T, StaticsError> {
     Ok(x)
 }
 
+impl<T: Scalar> MassProperties<T> {
+    /// A shape's mass properties, with [`StaticsError::Overflow`] when its inertia (m r² for
+    /// a radius near 1e154 and up) exceeds the largest finite number.
+    fn shape(m: T, centre: Point<T>, j: Dyadic<T>) -> Result<Self, StaticsError> {
+        if !j.is_finite() {
+            return Err(StaticsError::Overflow { what: "shape inertia" });
+        }
+        Ok(Self::from_parts_unchecked(m, centre, j))
+    }
+}
+
 fn check_body<T: Scalar>(m: T, c: &Point<T>) -> Result<(), StaticsError> {
     check_mass(m, "shape")?;
     if m.re() == 0.0 {
@@ -48,7 +59,7 @@ impl<T: Scalar> MassProperties<T> {
         check_body(m, &centre)?;
         let r = check_len(radius, "sphere radius")?;
         let j = Dyadic::identity() * (T::lit(0.4) * m * r * r);
-        Ok(Self::from_parts_unchecked(m, centre, j))
+        Self::shape(m, centre, j)
     }
 
     /// Homogeneous spherical shell with outer radius R and inner radius r ≤ R:
@@ -79,7 +90,7 @@ impl<T: Scalar> MassProperties<T> {
             let num = big.powi(4) + big.powi(3) * r + big * big * r * r + big * r.powi(3) + r.powi(4);
             T::lit(0.4) * m * num / den
         };
-        Ok(Self::from_parts_unchecked(m, centre, Dyadic::identity() * moment))
+        Self::shape(m, centre, Dyadic::identity() * moment)
     }
 
     /// Homogeneous rectangular solid with sides a, b, c along the axes î, ĵ, k̂ of `edges`:
@@ -102,7 +113,7 @@ impl<T: Scalar> MassProperties<T> {
             k * (a * a + c * c),
             k * (a * a + b * b),
         ));
-        Ok(Self::from_parts_unchecked(m, centre, edges.dyadic(&d)))
+        Self::shape(m, centre, edges.dyadic(&d))
     }
 
     /// Thin rectangular plate with sides a along î and b along ĵ of `edges` (normal k̂):
@@ -143,7 +154,7 @@ impl<T: Scalar> MassProperties<T> {
         let l = check_len(length, "cylinder length")?;
         let axial = m * r * r / T::lit(2.0);
         let transverse = m * (T::lit(3.0) * r * r + l * l) / T::lit(12.0);
-        Ok(Self::from_parts_unchecked(m, centre, axisymmetric(axis, axial, transverse)?))
+        Self::shape(m, centre, axisymmetric(axis, axial, transverse)?)
     }
 
     /// Thin disk of radius r with normal â: the cylinder with l = 0, J = mr²/2 about â and
@@ -206,7 +217,7 @@ impl<T: Scalar> MassProperties<T> {
             });
         }
         let s = m * (big * big + r * r);
-        Ok(Self::from_parts_unchecked(m, centre, axisymmetric(normal, s / T::lit(2.0), s / T::lit(4.0))?))
+        Self::shape(m, centre, axisymmetric(normal, s / T::lit(2.0), s / T::lit(4.0))?)
     }
 
     /// Thin homogeneous triangular plate with vertices p₁, p₂, p₃: c is the centroid and
@@ -228,6 +239,6 @@ impl<T: Scalar> MassProperties<T> {
             let d = p.position_rel(&c);
             j + (Dyadic::identity() * d.norm_squared() - d.outer(&d))
         }) * (m / T::lit(12.0));
-        Ok(Self::from_parts_unchecked(m, c, j))
+        Self::shape(m, c, j)
     }
 }

@@ -104,7 +104,7 @@ impl<T: Scalar> Spring<T> {
         }
         let (r_hat, len) = unit_sep(r_y_w, "spring with relaxed length d > 0")?;
         // (6.7.1)
-        Ok(r_hat * (-self.k * (len - self.d)))
+        crate::gravity::finite_or_overflow(r_hat * (-self.k * (len - self.d)), "spring force")
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (6.7.2).
@@ -164,7 +164,7 @@ impl<T: Scalar> RotationalSpring<T> {
     /// [`StaticsError::ZeroVector`] for ẑ = 0⃗.
     pub fn torque_at_angle(&self, theta: T, z: &Vector<T>) -> Result<Vector<T>, StaticsError> {
         let z = z.unit().ok_or(StaticsError::ZeroVector { what: "pin axis ẑ" })?;
-        Ok(z * (-self.kappa * (theta - self.theta0)))
+        crate::gravity::finite_or_overflow(z * (-self.kappa * (theta - self.theta0)), "spring torque")
     }
 
     /// The torque on B₁ from body-fixed vectors x̂₁ (in B₁) and x̂₂ (in B₂) perpendicular to ẑ:

@@ -94,6 +94,7 @@ impl<T: Scalar> Bivector<T> {
     /// # Errors
     /// [`TensorError::Shape`] for another type or a tensor that is not alternating.
     pub fn from_tensor(t: &Tensor<T>, tol: f64) -> Result<Bivector<T>, TensorError> {
+        crate::check_tolerance(tol, "tol")?;
         if (t.p, t.q) != (2, 0) {
             return Err(TensorError::Shape {
                 detail: format!("a bivector is a (2, 0) tensor, got ({}, {})", t.p, t.q),

@@ -93,6 +93,7 @@ impl<T: Scalar> Dyadic<T> {
     /// hidden basis (scale-free, so the test does not depend on units and does not overflow
     /// for huge or tiny entries). The reported `det` is that of the scaled dyadic.
     pub fn inverse(&self, rel_tol: f64) -> Result<Dyadic<T>, TensorError> {
+        crate::check_tolerance(rel_tol, "rel_tol")?;
         if !self.is_finite() {
             return Err(TensorError::NonFinite { what: "dyadic" });
         }
@@ -107,7 +108,13 @@ impl<T: Scalar> Dyadic<T> {
             return Err(TensorError::Singular { det: det.re(), tol: rel_tol });
         }
         let adj = adjugate(&m);
-        Ok(Dyadic { m: adj / (det * scale) })
+        // (adj/det)/s: det·s underflows for a tiny s while the quotient is representable
+        let inv = Dyadic { m: adj / det / scale };
+        if !inv.is_finite() {
+            // a nonsingular M whose inverse exceeds f64::MAX (det·s subnormal)
+            return Err(TensorError::Overflow { what: "inverse dyadic" });
+        }
+        Ok(inv)
     }
 
     /// Symmetric part ½(M⃗ + M⃗′).
@@ -115,7 +122,9 @@ impl<T: Scalar> Dyadic<T> {
     /// Book: §2.6 (symmetric M⃗′ = M⃗).
     #[inline]
     pub fn symmetric_part(&self) -> Dyadic<T> {
-        Dyadic { m: (self.m + self.m.transpose()) * T::lit(0.5) }
+        // ½M + ½Mᵀ: no overflow of M + Mᵀ for entries near f64::MAX
+        let h = self.m * T::lit(0.5);
+        Dyadic { m: h + h.transpose() }
     }
 
     /// Skew-symmetric part ½(M⃗ − M⃗′).
@@ -123,7 +132,8 @@ impl<T: Scalar> Dyadic<T> {
     /// Book: §2.6 (skew M⃗′ = −M⃗), Fact 2.6.1.
     #[inline]
     pub fn skew_part(&self) -> Dyadic<T> {
-        Dyadic { m: (self.m - self.m.transpose()) * T::lit(0.5) }
+        let h = self.m * T::lit(0.5);
+        Dyadic { m: h - h.transpose() }
     }
 
     /// Vee: the vector x⃗ with x⃗^× equal to the skew part of M⃗ (inverse of
@@ -239,6 +249,7 @@ impl<T: Scalar> Dyadic<T> {
         beta: T,
         rel_tol: f64,
     ) -> Result<Dyadic<T>, TensorError> {
+        crate::check_tolerance(rel_tol, "rel_tol")?;
         if !(x.is_finite() && alpha.re().is_finite() && beta.re().is_finite()) {
             return Err(TensorError::NonFinite { what: "cross-polynomial input" });
         }
@@ -251,7 +262,12 @@ impl<T: Scalar> Dyadic<T> {
         let xx = x.cross_dyad();
         let xx2 = xx * xx;
         // (2.9.17)
-        Ok(Self::identity() - xx * (alpha / d) + xx2 * ((alpha * alpha + beta * beta * n2 - beta) / d))
+        let inv = Self::identity() - xx * (alpha / d) + xx2 * ((alpha * alpha + beta * beta * n2 - beta) / d);
+        if !inv.is_finite() {
+            // the formula needs |x⃗|⁴ (β²|x⃗|⁴ in d): beyond f64::MAX it is refused, not NaN
+            return Err(TensorError::Overflow { what: "cross-polynomial inverse (|x|⁴ beyond f64::MAX)" });
+        }
+        Ok(inv)
     }
 
     /// Frobenius norm ‖M⃗‖_F = √tr(M⃗′M⃗), frame independent for standard frames; scaled by the

@@ -114,7 +114,7 @@ impl<T: Scalar> Isotropic<T> {
                 what: "3λ + 2μ", value: k3.re(), valid: "3λ + 2μ > 0"
             });
         }
-        Ok(Self { lambda, mu })
+        Self { lambda, mu }.checked()
     }
 
     /// From Young's modulus E and Poisson's ratio ν (3.4.16): μ = E/(2(1+ν)),
@@ -142,7 +142,18 @@ impl<T: Scalar> Isotropic<T> {
         let one = T::one();
         let mu = e / (T::lit(2.0) * (one + nu));
         let lambda = e * nu / ((one + nu) * (one - T::lit(2.0) * nu));
-        Ok(Self { lambda, mu })
+        Self { lambda, mu }.checked()
+    }
+
+    /// `Ok` when every derived modulus (E, ν, K, 3λ + 2μ) is finite, else
+    /// [`TensorError::Overflow`]: λ = 1e308 is finite but 3λ + 2μ is not.
+    fn checked(self) -> Result<Self, TensorError> {
+        let derived = [self.lambda, self.mu, self.young(), self.poisson(), self.bulk()];
+        if derived.iter().all(|x| x.re().is_finite()) {
+            Ok(self)
+        } else {
+            Err(TensorError::Overflow { what: "elastic moduli" })
+        }
     }
 
     /// Lamé's λ.

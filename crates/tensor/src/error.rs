@@ -12,6 +12,22 @@ pub enum TensorError {
         /// Which input held the value.
         what: &'static str,
     },
+    /// A tolerance that is NaN, infinite or negative (docs/robustness.md: a tolerance is a
+    /// finite number ≥ 0).
+    #[error("tolerance {what} = {value} is invalid: a tolerance must be a finite number ≥ 0")]
+    InvalidTolerance {
+        /// Which tolerance.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// A true result that exceeds the largest finite `f64` (≈ 1.8e308), reported instead of
+    /// a silent ∞ (docs/robustness.md).
+    #[error("{what} overflows: its true value exceeds the largest finite number (≈ 1.8e308)")]
+    Overflow {
+        /// Which result.
+        what: &'static str,
+    },
     /// A dyadic (physical matrix) has no inverse.
     #[error(
         "singular dyadic: |det| = {det:e} is not above the tolerance {tol:e}; an inverse exists only for det ≠ 0"
@@ -84,4 +100,21 @@ pub enum TensorError {
         /// The valid range.
         valid: &'static str,
     },
+}
+
+/// Validates a tolerance argument: finite and ≥ 0 (docs/robustness.md). Every vectrix function
+/// that takes a tolerance and returns a `Result` calls this first, so a NaN or negative
+/// tolerance is a typed error instead of a comparison that silently never (or always) holds.
+///
+/// Book: DESIGN §5 (tolerances are explicit arguments).
+///
+/// # Errors
+/// [`TensorError::InvalidTolerance`] for NaN, ±∞ or a negative value.
+#[inline]
+pub fn check_tolerance(tol: f64, what: &'static str) -> Result<f64, TensorError> {
+    if tol.is_finite() && tol >= 0.0 {
+        Ok(tol)
+    } else {
+        Err(TensorError::InvalidTolerance { what, value: tol })
+    }
 }

@@ -8,6 +8,10 @@
 //!
 //! Every type is generic over [`Scalar`] (default `f64`; also `f32` and num-dual's dual
 //! numbers).
+//!
+//! Bad input: every public function returns a correct value or a typed error (never a panic,
+//! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
+//! and tolerances are reported — is `docs/robustness.md` in the repository.
 #![warn(missing_docs)]
 
 mod angle;
@@ -30,7 +34,7 @@ pub use bivector::Bivector;
 pub use covector::Covector;
 pub use dyadic::{Dyadic, adjugate};
 pub use elasticity::{HookeMap, Isotropic, hooke};
-pub use error::TensorError;
+pub use error::{TensorError, check_tolerance};
 pub use multivector::Multivector;
 pub use rotor::{Rotor, reflect};
 pub use scalar::Scalar;

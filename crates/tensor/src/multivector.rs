@@ -176,6 +176,7 @@ impl<T: Scalar> Multivector<T> {
     /// # Errors
     /// [`TensorError::Shape`] for a tensor of mixed type, of order above 3, or not alternating.
     pub fn from_grade_tensors(parts: &[Tensor<T>], tol: f64) -> Result<Self, TensorError> {
+        crate::check_tolerance(tol, "tol")?;
         let mut m = Self::zero();
         for t in parts {
             match (t.p, t.q) {
@@ -191,6 +192,9 @@ impl<T: Scalar> Multivector<T> {
                     });
                 }
             }
+        }
+        if !m.is_finite() {
+            return Err(TensorError::NonFinite { what: "grade tensors" });
         }
         Ok(m)
     }

@@ -11,6 +11,9 @@ use crate::{Multivector, Scalar, TensorError, Vector};
 
 /// Checks that `axes` is orthonormal and right-handed within 128ε.
 fn check_axes<T: Scalar>(axes: &[Vector<T>; 3]) -> Result<(), TensorError> {
+    if !axes.iter().all(Vector::is_finite) {
+        return Err(TensorError::NonFinite { what: "frame axes" });
+    }
     let mut defect = 0.0f64;
     for a in 0..3 {
         for b in 0..3 {

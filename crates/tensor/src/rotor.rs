@@ -25,11 +25,14 @@ impl<T: Scalar> Rotor<T> {
     }
 
     /// R = cos(θ/2) − sin(θ/2)𝒥n̂ for the axis `axis` (normalised here) and angle θ (3.9.1).
-    /// `None` when the axis is zero.
+    /// `None` when the axis is zero or an input is not finite.
     ///
     /// Book: (3.9.1).
     #[inline]
     pub fn from_axis_angle(axis: &Vector<T>, theta: T) -> Option<Self> {
+        if !theta.re().is_finite() || !axis.is_finite() {
+            return None;
+        }
         let n = axis.unit()?;
         let h = theta * T::lit(0.5);
         Some(Self { s: h.cos(), b: Bivector::dual_of(&n) * (-h.sin()) })
@@ -109,11 +112,22 @@ impl<T: Scalar> Rotor<T> {
     /// Normalises to R R̄ = 1; `None` for the zero element.
     #[inline]
     pub fn normalize(&self) -> Option<Rotor<T>> {
-        let n = (self.s * self.s + self.b.c.norm_squared()).sqrt();
-        if n == T::zero() || !n.re().is_finite() {
+        // Fast path (the usual case, one branch): s² + |B|² neither underflows nor overflows.
+        let n2 = self.s * self.s + self.b.c.norm_squared();
+        if n2.re() > 1e-290 && n2.re() < 1e290 {
+            let n = n2.sqrt();
+            return Some(Rotor { s: self.s / n, b: self.b * (T::one() / n) });
+        }
+        // Scaled by the largest component first (as `Vector::unit`), so that components of
+        // 1e±200 neither overflow nor underflow s² + |B|².
+        let m = self.s.abs().max(self.b.c.x.abs()).max(self.b.c.y.abs()).max(self.b.c.z.abs());
+        // (f64::max ignores NaN, so check every component)
+        if m == T::zero() || !(self.s.re().is_finite() && self.b.is_finite()) {
             return None;
         }
-        Some(Rotor { s: self.s / n, b: self.b * (T::one() / n) })
+        let (s, b) = (self.s / m, self.b.c / m);
+        let n = (s * s + b.norm_squared()).sqrt();
+        Some(Rotor { s: s / n, b: Bivector { c: b / n } })
     }
 }
 
@@ -124,6 +138,9 @@ impl<T: Scalar> Rotor<T> {
     ///
     /// Book: (3.9.1)–(3.9.3), Fact 3.9.1.
     pub fn from_plane_angle(v: &Vector<T>, w: &Vector<T>, theta: T) -> Option<Self> {
+        if !theta.re().is_finite() {
+            return None;
+        }
         let b_hat = v.wedge(w).unit()?;
         let h = theta * T::lit(0.5);
         Some(Self { s: h.cos(), b: b_hat * (-h.sin()) })
@@ -177,6 +194,8 @@ impl<T: Scalar> Rotor<T> {
     ///
     /// Book: (3.9.3), (3.9.22).
     pub fn exp(b: &Bivector<T>) -> Self {
+        // φ² decides the branch (the series keeps exact derivatives at 0); when it overflows
+        // (|B| ≥ 1e154) φ comes from the scaled norm, so exp(1e300 𝒥k̂) is finite.
         let phi2 = b.c.norm_squared();
         let (c, sinc) = if phi2.re() < 1e-8 {
             // cos φ ≈ 1 − φ²/2 + φ⁴/24, sin φ/φ ≈ 1 − φ²/6 + φ⁴/120 (error < 1e-27)
@@ -186,7 +205,7 @@ impl<T: Scalar> Rotor<T> {
                 one - phi2 / T::lit(6.0) + phi2 * phi2 / T::lit(120.0),
             )
         } else {
-            let phi = phi2.sqrt();
+            let phi = if phi2.re().is_finite() { phi2.sqrt() } else { b.norm() };
             (phi.cos(), phi.sin() / phi)
         };
         Self { s: c, b: *b * sinc }
@@ -261,6 +280,7 @@ impl<T: Scalar> Rotor<T> {
     /// [`TensorError::OutOfRange`] when a grade-1 or grade-3 part or the defect |S S̄ − 1|
     /// exceeds `tol`; [`TensorError::NonFinite`] for non-finite components.
     pub fn from_multivector(m: &Multivector<T>, tol: f64) -> Result<Self, TensorError> {
+        crate::check_tolerance(tol, "tol")?;
         if !m.is_finite() {
             return Err(TensorError::NonFinite { what: "multivector" });
         }

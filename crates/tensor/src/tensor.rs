@@ -196,6 +196,9 @@ impl<T: Scalar> Tensor<T> {
                 detail: format!("a ({p}, {q}) tensor has {n} components, got {}", data.len()),
             });
         }
+        if !data.iter().all(|x| x.re().is_finite()) {
+            return Err(TensorError::NonFinite { what: "tensor components" });
+        }
         Ok(Self { p, q, data })
     }
 

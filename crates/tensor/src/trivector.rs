@@ -66,10 +66,14 @@ impl<T: Scalar> Trivector<T> {
     /// # Errors
     /// [`TensorError::Shape`] for another type or a tensor that is not alternating.
     pub fn from_tensor(t: &Tensor<T>, tol: f64) -> Result<Self, TensorError> {
+        crate::check_tolerance(tol, "tol")?;
         if (t.p, t.q) != (3, 0) {
             return Err(TensorError::Shape {
                 detail: format!("a trivector is a (3, 0) tensor, got ({}, {})", t.p, t.q),
             });
+        }
+        if !t.is_finite() {
+            return Err(TensorError::NonFinite { what: "tensor components" });
         }
         let tri = Self { t: t.data[5] };
         crate::wedge::check_alternating(t, &tri.to_tensor(), tol)?;

@@ -70,7 +70,13 @@ impl<T: Scalar> Vector<T> {
     #[inline]
     pub fn norm(&self) -> T {
         let m = self.c.x.abs().max(self.c.y.abs()).max(self.c.z.abs());
-        if m == T::zero() || !m.re().is_finite() {
+        if m == T::zero() {
+            // |x⃗| is not differentiable at 0⃗: the plain √(x·x) gives 0 for f64 and a NaN
+            // derivative for dual numbers (instead of the derivative of max|xᵢ|, which would
+            // make `gradient(|r| r.norm(), 0⃗)` return a made-up direction).
+            return self.c.norm();
+        }
+        if !m.re().is_finite() {
             return m;
         }
         // Within the comfortable range the plain formula is exact enough and faster.
@@ -95,7 +101,19 @@ impl<T: Scalar> Vector<T> {
     #[inline]
     pub fn unit(&self) -> Option<Vector<T>> {
         let n = self.norm();
-        if n == T::zero() || !n.re().is_finite() { None } else { Some(*self / n) }
+        let r = n.re();
+        if r > 1e-150 && r < 1e150 {
+            return Some(*self / n);
+        }
+        // Outside the comfortable range divide by the largest component first: |x⃗| may
+        // overflow (components near f64::MAX) or lose bits (subnormal components) although x̂
+        // exists for every nonzero finite x⃗.
+        let m = self.c.x.abs().max(self.c.y.abs()).max(self.c.z.abs());
+        if m == T::zero() || !self.is_finite() {
+            return None;
+        }
+        let s = *self / m;
+        Some(s / s.c.norm())
     }
 
     /// Coform x⃗′, the covector with x⃗′y⃗ = x⃗·y⃗ (2.1.6).
@@ -195,6 +213,9 @@ impl<T: Scalar> Vector<T> {
     /// Book: (2.3.1), (2.3.8–9).
     #[inline]
     pub fn directed_angle_rel(&self, x: &Vector<T>, n: &Vector<T>) -> Option<T> {
+        if !(self.is_finite() && x.is_finite()) {
+            return None;
+        }
         let n_hat = n.unit()?;
         let (x, y) = (x.scaled_for_angle(), self.scaled_for_angle());
         // (2.3.8): θ = atan2(n̂·(x×y), x·y); + 0 maps −0 to +0 so that a zero vector gives 0
@@ -228,7 +249,10 @@ impl<T: Scalar> Vector<T> {
     #[inline]
     pub fn projection_along(&self, y: &Vector<T>) -> Option<Vector<T>> {
         let u = y.unit()?;
-        Some(u * u.dot(self))
+        // ŷ(ŷ·x⃗) with the dot product of x⃗/m scaled back, so that x⃗ near f64::MAX does not
+        // overflow; `None` when x⃗ is not finite or the projection itself overflows.
+        let p = u * u.dot(self);
+        (self.is_finite() && p.is_finite()).then_some(p)
     }
 
     /// Projection perpendicular to y⃗: P_{y⊥} x⃗ = x⃗ − P_y x⃗ (2.7.2). `None` for y⃗ = 0⃗.

@@ -57,7 +57,8 @@ pub fn alpha_spatial_from_eigenaxis_rates<T: Scalar>(
 ///
 /// # Errors
 /// [`KinematicsError::SingularRateMap`] at θ = 0 (cot(θ/2) = ∞, n̂ undefined: (4.9.21));
-/// [`KinematicsError::NonFinite`].
+/// [`KinematicsError::NonFinite`]; [`KinematicsError::OutOfRange`] when n̂ is not a unit
+/// vector (to 1e-9); [`KinematicsError::Overflow`] when ṅ exceeds f64::MAX (θ near 0).
 pub fn eigenaxis_rates_from_omega_spatial<T: Scalar>(
     theta: T,
     n: &Vector3<T>,
@@ -89,6 +90,15 @@ fn rates<T: Scalar>(
     if !(theta.re().is_finite() && n.iter().chain(w.iter()).all(|x| x.re().is_finite())) {
         return Err(KinematicsError::NonFinite { what: "θ, n̂ or ω" });
     }
+    // n̂ is the eigenaxis: a unit vector (the rate map below assumes n̂ᵀn̂ = 1).
+    let n_len = n.norm().re();
+    if (n_len - 1.0).abs() > 1e-9 {
+        return Err(KinematicsError::OutOfRange {
+            what: "|n̂|",
+            value: n_len,
+            valid: "1 (n̂ is a unit eigenaxis, to 1e-9)",
+        });
+    }
     let half_sin = (theta * T::lit(0.5)).sin();
     if half_sin.re() == 0.0 {
         // θ ≡ 0: the eigenaxis is undefined and cot(θ/2) infinite (4.9.21)
@@ -99,5 +109,6 @@ fn rates<T: Scalar>(
     }
     let cot = (theta * T::lit(0.5)).cos() / half_sin;
     let m = (Matrix3::identity() - n * n.transpose()) * cot + n.cross_matrix() * sign;
-    Ok((n.dot(w), m * w * T::lit(0.5)))
+    let n_dot = crate::finite_or_overflow!(m * w * T::lit(0.5), "eigenaxis rate ṅ (cot(θ/2) for tiny θ)")?;
+    Ok((n.dot(w), n_dot))
 }

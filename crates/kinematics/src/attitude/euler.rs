@@ -88,6 +88,7 @@ fn solve<T: Scalar>(
     w: &Vector3<T>,
     tol: f64,
 ) -> Result<[T; 3], KinematicsError> {
+    vectrix_tensor::check_tolerance(tol, "tol").map_err(vectrix_frames::FrameError::from)?;
     if !s.iter().chain(w.iter()).all(|x| x.re().is_finite()) {
         return Err(KinematicsError::NonFinite { what: "Euler angles or ω" });
     }

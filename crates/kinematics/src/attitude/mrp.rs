@@ -32,7 +32,7 @@ pub fn mrp_rate_body<T: Scalar>(
     let m = Matrix3::identity() * (T::one() - p.norm_squared())
         + p.cross_matrix() * two
         + p * p.transpose() * two;
-    Ok(m * omega_in_b * T::lit(0.25))
+    crate::finite_or_overflow!(m * omega_in_b * T::lit(0.25), "MRP rate ṗ")
 }
 
 /// MRP spatial form: ṗ = ¼[(1 − |p|²)I − 2p^× + 2ppᵀ] ω_A.
@@ -49,7 +49,7 @@ pub fn mrp_rate_spatial<T: Scalar>(
     let two = T::lit(2.0);
     let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two
         + p * p.transpose() * two;
-    Ok(m * omega_in_a * T::lit(0.25))
+    crate::finite_or_overflow!(m * omega_in_a * T::lit(0.25), "MRP rate ṗ")
 }
 
 /// MRP inverse, body form: ω_B = 4/(1 + |p|²)² [(1 − |p|²)I − 2p^× + 2ppᵀ] ṗ.
@@ -66,7 +66,7 @@ pub fn omega_body_from_mrp_rate<T: Scalar>(
     let (two, s) = (T::lit(2.0), T::one() + p.norm_squared());
     let m = Matrix3::identity() * (T::one() - p.norm_squared()) - p.cross_matrix() * two
         + p * p.transpose() * two;
-    Ok(m * p_dot * (T::lit(4.0) / (s * s)))
+    crate::finite_or_overflow!(m * p_dot * (T::lit(4.0) / (s * s)), "ω from the MRP rate")
 }
 
 /// MRP inverse, spatial form: ω_A = 4/(1 + |p|²)² [(1 − |p|²)I + 2p^× + 2ppᵀ] ṗ.
@@ -84,5 +84,5 @@ pub fn omega_spatial_from_mrp_rate<T: Scalar>(
     let m = Matrix3::identity() * (T::one() - p.norm_squared())
         + p.cross_matrix() * two
         + p * p.transpose() * two;
-    Ok(m * p_dot * (T::lit(4.0) / (s * s)))
+    crate::finite_or_overflow!(m * p_dot * (T::lit(4.0) / (s * s)), "ω from the MRP rate")
 }

@@ -36,7 +36,7 @@ pub fn quaternion_rate_body<T: Scalar>(
     let (eta, eps) = (q.eta(), q.epsilon());
     let h = T::lit(0.5);
     let ed = (omega_in_b * eta + eps.cross(omega_in_b)) * h;
-    Ok(Vector4::new(-eps.dot(omega_in_b) * h, ed.x, ed.y, ed.z))
+    crate::finite_or_overflow!(Vector4::new(-eps.dot(omega_in_b) * h, ed.x, ed.y, ed.z), "quaternion rate q̇")
 }
 
 /// Spatial form (derived in the notes): η̇ = −½ε·ω_A, ε̇ = ½(ηω_A − ε×ω_A).
@@ -53,7 +53,7 @@ pub fn quaternion_rate_spatial<T: Scalar>(
     let (eta, eps) = (q.eta(), q.epsilon());
     let h = T::lit(0.5);
     let ed = (omega_in_a * eta - eps.cross(omega_in_a)) * h;
-    Ok(Vector4::new(-eps.dot(omega_in_a) * h, ed.x, ed.y, ed.z))
+    crate::finite_or_overflow!(Vector4::new(-eps.dot(omega_in_a) * h, ed.x, ed.y, ed.z), "quaternion rate q̇")
 }
 
 /// Inverse, body form: ω_B = 2[[−b, a, d, −c], [−c, −d, a, b], [−d, c, −b, a]] q̇
@@ -70,7 +70,10 @@ pub fn omega_body_from_quaternion_rate<T: Scalar>(
     check(&[q.a, q.b, q.c, q.d, q_dot.x, q_dot.y, q_dot.z, q_dot.w], "q or q̇")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let (eta_d, eps_d) = (q_dot.x, Vector3::new(q_dot.y, q_dot.z, q_dot.w));
-    Ok((eps_d * eta - eps * eta_d - eps.cross(&eps_d)) * T::lit(2.0))
+    crate::finite_or_overflow!(
+        (eps_d * eta - eps * eta_d - eps.cross(&eps_d)) * T::lit(2.0),
+        "ω from the quaternion rate"
+    )
 }
 
 /// Inverse, spatial form: ω_A = 2(ηε̇ − η̇ε + ε×ε̇).
@@ -86,5 +89,8 @@ pub fn omega_spatial_from_quaternion_rate<T: Scalar>(
     check(&[q.a, q.b, q.c, q.d, q_dot.x, q_dot.y, q_dot.z, q_dot.w], "q or q̇")?;
     let (eta, eps) = (q.eta(), q.epsilon());
     let (eta_d, eps_d) = (q_dot.x, Vector3::new(q_dot.y, q_dot.z, q_dot.w));
-    Ok((eps_d * eta - eps * eta_d + eps.cross(&eps_d)) * T::lit(2.0))
+    crate::finite_or_overflow!(
+        (eps_d * eta - eps * eta_d + eps.cross(&eps_d)) * T::lit(2.0),
+        "ω from the quaternion rate"
+    )
 }

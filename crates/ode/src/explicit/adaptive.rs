@@ -137,7 +137,9 @@ impl Adaptive {
     /// # Errors
     /// Bad input: [`OdeError::InvalidInterval`], [`OdeError::NonPositiveTolerance`],
     /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`]; during the run:
-    /// [`OdeError::RhsNotFinite`], [`OdeError::StepSizeUnderflow`], [`OdeError::TooManySteps`].
+    /// [`OdeError::RhsNotFinite`], [`OdeError::StepSizeUnderflow`], [`OdeError::TooManySteps`]
+    /// (also up front when (t1 − t0)/h_max exceeds `max_steps`), [`OdeError::DimensionMismatch`]
+    /// when f returns a state of another length than y.
     pub fn solve<S: State, F: FnMut(f64, &S) -> S>(
         &self,
         f: F,

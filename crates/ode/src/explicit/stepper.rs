@@ -71,13 +71,18 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     /// # Errors
     /// [`OdeError::InvalidInterval`], [`OdeError::NonPositiveTolerance`],
     /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`], and
-    /// [`OdeError::RhsNotFinite`] or [`OdeError::RhsLength`] from the first evaluations.
+    /// [`OdeError::RhsNotFinite`] or [`OdeError::DimensionMismatch`] from the first evaluations.
     pub fn new(cfg: &Adaptive, mut f: F, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
         check_interval(t0, t_end)?;
         check_tol("rtol", cfg.rtol)?;
         check_tol("atol", cfg.atol)?;
         let h_max = cfg.h_max.unwrap_or(t_end - t0);
         check_step(h_max)?;
+        // A step cap that cannot cover [t0, t_end] within max_steps fails now, not after
+        // max_steps evaluations (h_max = 1e-300 would otherwise spin through them).
+        if (t_end - t0) / h_max > cfg.max_steps as f64 {
+            return Err(OdeError::TooManySteps { t: t0, max_steps: cfg.max_steps });
+        }
         if let Some(h0) = cfg.h0 {
             check_step(h0)?;
         }
@@ -150,7 +155,7 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     ///
     /// # Errors
     /// [`OdeError::TooManySteps`] (accepted + rejected reached `max_steps`),
-    /// [`OdeError::StepSizeUnderflow`], [`OdeError::RhsNotFinite`], [`OdeError::RhsLength`].
+    /// [`OdeError::StepSizeUnderflow`], [`OdeError::RhsNotFinite`], [`OdeError::DimensionMismatch`].
     pub fn step(&mut self) -> Result<(), OdeError> {
         if self.done() {
             return Ok(());
@@ -243,12 +248,12 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     ///
     /// # Errors
     /// [`OdeError::NonFiniteState`], [`OdeError::InvalidInterval`] if t is past the end,
-    /// [`OdeError::RhsNotFinite`], [`OdeError::RhsLength`].
+    /// [`OdeError::RhsNotFinite`], [`OdeError::DimensionMismatch`].
     pub fn restart(&mut self, t: f64, y: S) -> Result<(), OdeError> {
         check_interval(t, self.t_end).or_else(|e| if t == self.t_end { Ok(()) } else { Err(e) })?;
         check_state(t, &y)?;
         if y.dim() != self.y.dim() {
-            return Err(OdeError::RhsLength { t, expected: self.y.dim(), got: y.dim() });
+            return Err(OdeError::DimensionMismatch { what: "restarted state", got: y.dim(), expected: self.y.dim() });
         }
         self.f_now = eval(&mut self.f, t, &y, t, 1, &mut self.work.fevals)?;
         self.t = t;

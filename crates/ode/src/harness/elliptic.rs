@@ -75,11 +75,13 @@ pub fn sncndn(u: f64, m: f64) -> Option<(f64, f64, f64)> {
             dn = (en[ii] + a) / (b + a);
             a = c / b;
         }
-        let s = 1.0 / (c * c + 1.0).sqrt();
+        // 1/√(c² + 1) by hypot: c = cn/sn is huge near the zeros of sn, where c² overflows
+        let s = 1.0 / c.hypot(1.0);
         sn = if sn >= 0.0 { s } else { -s };
         cn = c * sn;
     }
-    Some((sn, cn, dn))
+    // Rounding of u·c for |u| near f64::MAX can still leave a non-number: none then.
+    (sn.is_finite() && cn.is_finite() && dn.is_finite()).then_some((sn, cn, dn))
 }
 
 #[cfg(test)]

@@ -1,0 +1,193 @@
+//! vectrix-ode under hostile input (docs/robustness.md): every integrator refuses NaN states,
+//! invalid intervals and step counts, NaN/negative tolerances and a right-hand side that
+//! returns NaN or the wrong length; step loops are bounded (TooManySteps), so nothing hangs.
+
+use nalgebra::{SVector, Vector2, Vector3, Vector4};
+use vectrix::frames::Frame;
+use vectrix::ode::explicit::integrate_fixed;
+use vectrix::ode::harness::elliptic::{elliptic_k, sncndn};
+use vectrix::ode::harness::{
+    Budget, Kepler, Method, Oscillator, Reference, RigidBody, Separable, cheapest, derive_accuracy,
+    euler_equations, quaternion_rate, run_all, sweep, sweep_lie, sweep_verlet,
+};
+use vectrix::ode::lie::dexpinv;
+use vectrix::ode::{
+    Accuracy, Adaptive, DOP853, Direction, Event, GaussLegendre, LieGroup, LieMethod, OdeError, RK4, State,
+    integrate_lie, quaternion_exact_step, stormer_verlet,
+};
+use vectrix::tensor::{Rotor, Vector};
+
+use crate::harness::{err_or, hostile, refused};
+
+fn fin(s: &[f64]) -> bool {
+    s.iter().all(|x| x.is_finite())
+}
+
+cases! {
+    // Adaptive pairs (HNW II.4–II.6): y′ = −y from y0 gives y0 e^{−t}; every hostile
+    // interval, state, tolerance and step setting is refused or solved finitely; a right-hand
+    // side of the wrong length is a DimensionMismatch, not a silent truncation.
+    adaptive_pairs ["Adaptive::dopri5", "Adaptive::dop853", "Adaptive::rtol", "Adaptive::atol", "Adaptive::h0",
+        "Adaptive::h_max", "Adaptive::max_steps", "Adaptive::dense", "Adaptive::solve", "Adaptive::solve_with_events",
+        "Solution::last", "Solution::sample", "DenseStep::eval", "Event::new", "Event::direction", "Event::terminal",
+        "State::as_slice", "State::as_mut_slice", "State::dim", "State::add_scaled"] {
+        // max_steps bounds every hostile configuration (h_max = 1e-300 now fails up front)
+        for solver in [Adaptive::dopri5().max_steps(20_000), Adaptive::dop853().max_steps(20_000)] {
+            let s = solver.dense(true).solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0).unwrap();
+            assert!((s.last()[0] - (-1.0f64).exp()).abs() <= 1e-5);
+            err_or(s.sample(0.5), "sample", |y| (y[0] - (-0.5f64).exp()).abs() <= 1e-5);
+            refused(s.sample(2.0), "sample outside the interval");
+            refused(s.sample(f64::NAN), "sample(NaN)");
+            // The named bug: a right-hand side that returns the wrong length.
+            assert!(matches!(
+                solver.solve(|_, _y: &Vec<f64>| vec![1.0, 2.0, 3.0], 0.0, &vec![1.0, 0.0], 1.0),
+                Err(OdeError::DimensionMismatch { .. })
+            ));
+            refused(solver.solve(|_, _y: &Vec<f64>| vec![1.0], 0.0, &vec![1.0, 0.0], 1.0), "short right-hand side");
+            refused(solver.solve(|_, _y: &Vec<f64>| Vec::new(), 0.0, &vec![1.0], 1.0), "empty right-hand side");
+            for x in hostile() {
+                err_or(solver.solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![x], 1.0), "solve(hostile y0)", |s| fin(s.last()));
+                err_or(solver.solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], x), "solve(hostile t1)", |s| fin(s.last()));
+                err_or(solver.solve(|_, y: &Vec<f64>| vec![-y[0]], x, &vec![1.0], 1.0), "solve(hostile t0)", |s| fin(s.last()));
+                err_or(solver.rtol(x).solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0), "rtol", |s| fin(s.last()));
+                err_or(solver.atol(x).solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0), "atol", |s| fin(s.last()));
+                err_or(solver.h0(x).solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0), "h0", |s| fin(s.last()));
+                err_or(solver.h_max(x).solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0), "h_max", |s| fin(s.last()));
+                err_or(solver.solve(move |_, _y: &Vec<f64>| vec![x], 0.0, &vec![1.0], 1.0), "solve(hostile f)", |s| fin(s.last()));
+            }
+            refused(solver.max_steps(3).solve(|_, y: &Vec<f64>| vec![-1e3 * y[0]], 0.0, &vec![1.0], 100.0), "max_steps bound");
+            refused(solver.max_steps(0).solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0), "max_steps(0)");
+            // An event function that returns NaN cannot make the solver loop or report NaN.
+            let mut events = [Event::new(|_, _y: &Vec<f64>| f64::NAN).direction(Direction::Rising).terminal(true)];
+            err_or(solver.solve_with_events(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0, &mut events), "NaN event", |s| {
+                s.events.iter().all(|e| e.t.is_finite())
+            });
+            let mut ev = [Event::new(|_, y: &Vec<f64>| y[0] - 0.5).terminal(true)];
+            let s = solver.dense(true).solve_with_events(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 5.0, &mut ev).unwrap();
+            assert!(s.terminated && (s.events[0].t - 2f64.ln()).abs() <= 1e-5);
+            let mut st = vec![1.0, 2.0];
+            st.add_scaled(2.0, &vec![1.0, 1.0]);
+            assert_eq!(st.as_slice(), &[3.0, 4.0]);
+            st.as_mut_slice()[0] = 0.0;
+            assert_eq!(st.dim(), 2);
+        }
+    }
+
+    // Fixed-step, implicit and symplectic methods: n = 0, n huge with a NaN interval,
+    // mismatched q/v and non-finite right-hand sides are errors; results are finite.
+    fixed_implicit_symplectic ["integrate_fixed", "Tableau::stages", "GaussLegendre::integrate",
+        "GaussLegendre::integrate_with_jacobian", "GaussLegendre::name", "GaussLegendre::order", "GaussLegendre::stages",
+        "stormer_verlet"] {
+        assert_eq!(RK4.stages(), 4);
+        for n in [0usize, 1, 10] {
+            for t1 in hostile() {
+                err_or(integrate_fixed(&RK4, |_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], t1, n, |_, _| {}), "integrate_fixed", |(y, _)| fin(y));
+                for g in [GaussLegendre::Midpoint, GaussLegendre::Gauss4, GaussLegendre::Gauss6] {
+                    assert!(!g.name().is_empty() && g.order() == 2 * g.stages() as u32);
+                    err_or(g.integrate(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], t1, n, |_, _| {}), "Gauss", |(y, _)| fin(y));
+                }
+                err_or(stormer_verlet(|_, q: &Vec<f64>| vec![-q[0]], 0.0, &vec![1.0], &vec![0.0], t1, n, |_, _, _| {}), "Verlet", |((q, v), _)| fin(q) && fin(v));
+            }
+        }
+        refused(integrate_fixed(&DOP853, |_, _y: &Vec<f64>| vec![1.0, 2.0], 0.0, &vec![1.0], 1.0, 4, |_, _| {}), "integrate_fixed(wrong length)");
+        refused(GaussLegendre::Gauss4.integrate(|_, _y: &Vec<f64>| vec![1.0, 2.0], 0.0, &vec![1.0], 1.0, 4, |_, _| {}), "Gauss(wrong length)");
+        refused(GaussLegendre::Gauss4.integrate_with_jacobian(|_, y: &Vec<f64>| vec![-y[0]], |_, _| vec![1.0, 2.0], 0.0, &vec![1.0], 1.0, 4, |_, _| {}), "Gauss(wrong Jacobian)");
+        err_or(GaussLegendre::Gauss4.integrate_with_jacobian(|_, y: &Vec<f64>| vec![-y[0]], |_, _| vec![-1.0], 0.0, &vec![1.0], 1.0, 4, |_, _| {}), "Gauss with J", |(y, _)| fin(y));
+        refused(stormer_verlet(|_, q: &Vec<f64>| vec![-q[0]], 0.0, &vec![1.0], &vec![0.0, 1.0], 1.0, 4, |_, _, _| {}), "Verlet(mismatched q, v)");
+        refused(stormer_verlet(|_, _q: &Vec<f64>| vec![f64::NAN], 0.0, &vec![1.0], &vec![0.0], 1.0, 4, |_, _, _| {}), "Verlet(NaN a)");
+    }
+
+    // Lie-group methods (Munthe-Kaas, Crouch–Grossman): the rotor stays unit; NaN angular
+    // velocities are refused.
+    lie_methods ["integrate_lie", "LieMethod::name", "LieMethod::order", "dexpinv", "LieGroup::exp", "LieGroup::compose",
+        "LieGroup::bracket", "LieGroup::axpy", "LieGroup::scale", "LieGroup::magnitude", "LieGroup::algebra_magnitude",
+        "quaternion_exact_step"] {
+        let a = Frame::new();
+        for m in [LieMethod::Rkmk4, LieMethod::ExponentialEuler, LieMethod::CrouchGrossman3] {
+            assert!(!m.name().is_empty() && m.order() >= 1);
+            for w in hostile() {
+                err_or(integrate_lie(m, move |_, _r: &Rotor| a.vector([0.0, 0.0, w]), 0.0, &Rotor::identity(), 1.0, 10, |_, _| {}), "integrate_lie", |(r, _)| {
+                    (r.norm() - 1.0).abs() <= 1e-12
+                });
+            }
+            refused(integrate_lie(m, |_, _r: &Rotor| a.k(), 0.0, &Rotor::identity(), f64::NAN, 10, |_, _| {}), "integrate_lie(NaN t1)");
+        }
+        let x = a.vector([0.1, 0.2, 0.3]);
+        let r = <Rotor as LieGroup>::exp(&x);
+        // magnitude = max(|s|, |B|) of a unit rotor: in [1/√2, 1]
+        assert!(r.magnitude() >= 0.5f64.sqrt() - 1e-15 && r.magnitude() <= 1.0 + 1e-15);
+        assert!(r.compose(&r).norm().is_finite() && <Rotor as LieGroup>::algebra_magnitude(&x).is_finite());
+        let _: Vector = <Rotor as LieGroup>::bracket(&x, &x);
+        assert!(<Rotor as LieGroup>::axpy(&x, 2.0, &x).is_finite() && <Rotor as LieGroup>::scale(2.0, &x).is_finite());
+        assert!(dexpinv::<Rotor>(&x, &x).is_finite());
+        for h in hostile() {
+            let q = quaternion_exact_step(&Vector4::new(1.0, 0.0, 0.0, 0.0), &Vector3::new(0.0, 0.0, 1.0), h);
+            if h.is_finite() && h.abs() < 1e300 {
+                assert!((q.norm() - 1.0).abs() <= 1e-14, "quaternion_exact_step({h}) = {q}");
+            }
+        }
+    }
+
+    // The accuracy table (docs/accuracy.md): tolerances outside (0, ∞) and below the strictest
+    // target are refused.
+    accuracy_table ["Accuracy::row", "Accuracy::solver", "Accuracy::solve"] {
+        for tol in hostile().chain([-1.0, 1e-30]) {
+            err_or(Accuracy::RelTol(tol).row(), "Accuracy::row", |r| r.rtol.is_finite() && r.rtol > 0.0);
+            err_or(Accuracy::RelTol(tol).solver(), "Accuracy::solver", |_| tol.is_finite() && tol > 0.0);
+            err_or(Accuracy::RelTol(tol).solve(|_, y: &Vec<f64>| vec![-y[0]], 0.0, &vec![1.0], 1.0), "Accuracy::solve", |s| fin(s.last()));
+        }
+    }
+
+    // The work–precision harness: references are exact solutions (elliptic functions within
+    // their documented domain, Kepler's equation with a bounded Newton loop); sweeps report
+    // finite errors; empty inputs give empty outputs.
+    work_precision_harness ["harness::elliptic::elliptic_k", "harness::elliptic::sncndn", "Kepler::eccentric_anomaly",
+        "Reference::name", "Reference::y0", "Reference::t_end", "Reference::rhs", "Reference::exact", "Reference::error",
+        "Reference::drift", "Separable::accel", "RigidBody::exact_omega", "RigidBody::energy", "RigidBody::momentum",
+        "RigidBody::drift", "RigidBody::lie_rhs", "RigidBody::lie_y0", "RigidBody::lie_error", "euler_equations",
+        "quaternion_rate", "Method::name", "Method::order", "sweep", "sweep_verlet", "sweep_lie", "run_all", "cheapest",
+        "derive_accuracy"] {
+        for m in hostile().chain([0.5, 1.0, 2.0]) {
+            err_or(elliptic_k(m).ok_or(()), "elliptic_k", |k| k.is_finite() && *k >= std::f64::consts::FRAC_PI_2);
+            err_or(sncndn(0.3, m).ok_or(()), "sncndn", |(s, c, d)| (s * s + c * c - 1.0).abs() <= 1e-14 && d.is_finite());
+            err_or(sncndn(m, 0.5).ok_or(()), "sncndn(u)", |(s, c, _)| (s * s + c * c - 1.0).abs() <= 1e-14);
+            for e in [0.0, 0.5, 0.99, 1.5, f64::NAN] {
+                let ea = Kepler { e }.eccentric_anomaly(m);
+                if m.is_finite() && (0.0..1.0).contains(&e) {
+                    // E − e sin E = M (mod 2π)
+                    let r = (ea - e * ea.sin() - m.rem_euclid(2.0 * std::f64::consts::PI)).abs();
+                    assert!(r <= 1e-12 * m.abs().max(1.0) || m.abs() > 1e15, "Kepler e={e} M={m}: {r}");
+                }
+            }
+        }
+        let osc = Oscillator;
+        assert!(!osc.name().is_empty() && osc.t_end() > 0.0);
+        assert!(osc.error(&osc.exact(osc.t_end())) == 0.0 && osc.rhs(0.0, &osc.y0()).iter().all(|c| c.is_finite()));
+        assert!(osc.drift(&osc.y0()).is_none_or(|d| d.iter().all(|c| c.is_finite())));
+        assert_eq!(osc.error(&Vector2::new(f64::NAN, 0.0)), f64::INFINITY);
+        assert!(Separable::<1>::accel(&osc, &SVector::<f64, 1>::new(1.0))[0] == -1.0);
+        let rb = RigidBody::default();
+        let w = rb.exact_omega(1.0);
+        assert!(w.iter().all(|c| c.is_finite()) && rb.energy(&w).is_finite() && rb.momentum(&w).is_finite());
+        assert!(rb.drift(&w, 1.0).iter().all(|c| c.is_finite()));
+        let a = Frame::new();
+        let y0 = rb.lie_y0(&a);
+        let f = rb.lie_rhs(&a);
+        let (d0, d1) = f(0.0, &y0);
+        assert!(d0.is_finite() && d1.is_finite());
+        let (e, drift) = rb.lie_error(&a, &y0);
+        assert!(e.is_finite() && drift.iter().all(|c| c.is_finite()));
+        assert!(euler_equations(&rb.inertia, &w).iter().all(|c| c.is_finite()));
+        assert!(quaternion_rate(&Vector4::new(1.0, 0.0, 0.0, 0.0), &w).iter().all(|c| c.is_finite()));
+        let m = Method::Fixed(RK4);
+        assert!(!m.name().is_empty() && m.order() == 4);
+        let pts = sweep(&osc, m, Budget::Quick);
+        assert!(!pts.is_empty() && pts.iter().all(|p| p.error.is_finite() && p.error >= 0.0));
+        assert!(sweep_verlet::<2, 1, _>(&osc, Budget::Quick).iter().all(|p| p.error.is_finite()));
+        assert!(sweep_lie(&rb, LieMethod::Rkmk4, Budget::Quick).iter().all(|p| p.error.is_finite()));
+        assert!(cheapest(&pts, "no such problem", 1e-6).is_none() && cheapest(&[], "x", f64::NAN).is_none());
+        assert!(derive_accuracy(&[]).is_empty());
+        let _ = run_all as fn(Budget) -> Vec<vectrix::ode::harness::Point>;
+        let _ = Vector3::<f64>::zeros();
+    }
+}
