@@ -157,12 +157,45 @@ impl Adaptive {
     /// As [`Adaptive::solve`].
     pub fn solve_with_events<S: State, F: FnMut(f64, &S) -> S>(
         &self,
-        mut f: F,
+        f: F,
         t0: f64,
         y0: &S,
         t1: f64,
         events: &mut [Event<'_, S>],
     ) -> Result<Solution<S>, OdeError> {
+        self.solve_with_hook(f, t0, y0, t1, events, |_, _| Ok(false))
+    }
+
+    /// [`Adaptive::solve_with_events`] with a hook called on the state at the end of every
+    /// accepted step (and on the state of a terminal event), before it is recorded and before
+    /// the next step starts from it. The hook may change the state in place: a projection
+    /// onto an invariant manifold (constraint drift control, HNW §VII.2; HLW §IV.4) or a
+    /// renormalization. It returns `Ok(true)` when it changed the state, so that the first
+    /// stage of the next step is evaluated again at the new state (one extra f-eval: the
+    /// first-same-as-last stage no longer applies), `Ok(false)` when it left it alone, and
+    /// `Err(e)` to stop the run with the caller's error.
+    ///
+    /// The error control sees the step as taken; the dense output of a step interpolates
+    /// from its (hooked) start to its unhooked end, so samples inside a step differ from the
+    /// hooked states by at most the change the hook made at the step's end.
+    ///
+    /// # Errors
+    /// As [`Adaptive::solve`] (converted with `E::from`), and the hook's own errors.
+    pub fn solve_with_hook<S, F, E, H>(
+        &self,
+        mut f: F,
+        t0: f64,
+        y0: &S,
+        t1: f64,
+        events: &mut [Event<'_, S>],
+        mut hook: H,
+    ) -> Result<Solution<S>, E>
+    where
+        S: State,
+        F: FnMut(f64, &S) -> S,
+        E: From<OdeError>,
+        H: FnMut(f64, &mut S) -> Result<bool, E>,
+    {
         let start = Instant::now();
         check_interval(t0, t1)?;
         check_tol("rtol", self.rtol)?;
@@ -203,10 +236,10 @@ impl Adaptive {
 
         loop {
             if work.accepted + work.rejected >= self.max_steps {
-                return Err(OdeError::TooManySteps { t, max_steps: self.max_steps });
+                return Err(OdeError::TooManySteps { t, max_steps: self.max_steps }.into());
             }
             if 0.1 * h.abs() <= t.abs() * f64::EPSILON {
-                return Err(OdeError::StepSizeUnderflow { t, h });
+                return Err(OdeError::StepSizeUnderflow { t, h }.into());
             }
             // last step lands exactly on t1 (Hairer: if t + 1.01h ≥ t1, h = t1 − t)
             let last = t + 1.01 * h >= t1;
@@ -248,8 +281,10 @@ impl Adaptive {
                     && !events.is_empty()
                     && let Some(t_stop) = self.find_events(events, &mut g_prev, d, t, t_new, &y1, &mut sol)
                 {
+                    let mut y_stop = d.eval(t_stop);
+                    hook(t_stop, &mut y_stop)?;
                     sol.t.push(t_stop);
-                    sol.y.push(d.eval(t_stop));
+                    sol.y.push(y_stop);
                     sol.terminated = true;
                     if self.dense {
                         sol.dense.push(d.clone());
@@ -264,7 +299,15 @@ impl Adaptive {
                 t = t_new;
                 y = y1;
                 k.clear();
-                k.push(f1);
+                if hook(t, &mut y)? {
+                    // the hook moved the state: f₁ of the next step is f at the new state
+                    k.push(eval(&mut f, t, &y, t, 1, &mut work.fevals)?);
+                    for (e, g) in events.iter_mut().zip(g_prev.iter_mut()) {
+                        *g = (e.g)(t, &y);
+                    }
+                } else {
+                    k.push(f1);
+                }
                 sol.t.push(t);
                 sol.y.push(y.clone());
                 if last {
@@ -353,4 +396,60 @@ fn initial_step<S: State, F: FnMut(f64, &S) -> S>(
     let der12 = der2.abs().max(dnf);
     let h1 = if der12 <= 1e-15 { (h * 1e-3).max(1e-6) } else { (0.01 / der12).powf(1.0 / order) };
     Ok((100.0 * h).min(h1).min(h_max))
+}
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::Vector2;
+
+    use super::Adaptive;
+    use crate::OdeError;
+
+    /// ẏ = (y₂, −y₁) keeps |y| = 1; the hook puts each accepted state back on the circle, so
+    /// |y| − 1 stays at rounding level, and each change costs one extra f-eval.
+    #[test]
+    fn hook_projects_every_accepted_step() {
+        let f = |_: f64, y: &Vector2<f64>| Vector2::new(y[1], -y[0]);
+        let mut calls = 0;
+        let sol = Adaptive::dopri5()
+            .rtol(1e-4)
+            .atol(1e-4)
+            .solve_with_hook(f, 0.0, &Vector2::new(1.0, 0.0), 200.0, &mut [], |_, y: &mut Vector2<f64>| {
+                calls += 1;
+                *y /= y.norm();
+                Ok::<bool, OdeError>(true)
+            })
+            .unwrap();
+        let accepted = sol.work.accepted;
+        assert_eq!(calls, accepted);
+        // DOPRI5 is FSAL: 6 f-evals per step, 1 initial, 1 from hinit, plus one per hooked step
+        assert_eq!(sol.work.fevals, 2 + 6 * (accepted + sol.work.rejected) + accepted);
+        for y in &sol.y {
+            // one normalization leaves |y| within a few ulps of 1
+            assert!((y.norm() - 1.0).abs() <= 4.0 * f64::EPSILON, "|y| = {}", y.norm());
+        }
+    }
+
+    /// The hook's error stops the run and is returned as it is.
+    #[test]
+    fn hook_error_stops_the_run() {
+        #[derive(Debug, PartialEq)]
+        enum Stop {
+            At(f64),
+            Ode(OdeError),
+        }
+        impl From<OdeError> for Stop {
+            fn from(e: OdeError) -> Self {
+                Stop::Ode(e)
+            }
+        }
+        let f = |_: f64, y: &f64| -*y;
+        let r = Adaptive::dop853().solve_with_hook(f, 0.0, &1.0, 10.0, &mut [], |t, _: &mut f64| {
+            if t > 1.0 { Err(Stop::At(t)) } else { Ok(false) }
+        });
+        assert!(matches!(r, Err(Stop::At(t)) if t > 1.0));
+        // solver errors come through E::from
+        let r: Result<_, Stop> = Adaptive::dop853().rtol(-1.0).solve_with_hook(f, 0.0, &1.0, 1.0, &mut [], |_, _| Ok(false));
+        assert!(matches!(r, Err(Stop::Ode(OdeError::NonPositiveTolerance { .. }))));
+    }
 }
