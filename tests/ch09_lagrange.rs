@@ -15,3 +15,9 @@ mod laws;
 
 #[path = "ch09/prop.rs"]
 mod prop;
+
+#[path = "ch09/mechanisms.rs"]
+mod mechanisms;
+
+#[path = "ch09/constraints.rs"]
+mod constraints;

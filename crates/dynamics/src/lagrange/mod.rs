@@ -21,7 +21,9 @@ pub use ad::{
     LagrangeTerms, accelerations, energy, energy_rate, generalized_momentum, lagrange_terms, mass_matrix,
 };
 pub use hamilton::{hamilton_rhs, hamiltonian, velocities_from_momenta};
-pub use map::{KinematicMap, MapMasses, map_accelerations, map_kinetic_energy, map_mass_matrix};
+pub use map::{
+    KinematicMap, MapMasses, map_accelerations, map_equations, map_kinetic_energy, map_mass_matrix,
+};
 
 use nalgebra::{DMatrix, DVector};
 use vectrix_tensor::Scalar;
