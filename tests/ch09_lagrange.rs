@@ -21,3 +21,6 @@ mod mechanisms;
 
 #[path = "ch09/constraints.rs"]
 mod constraints;
+
+#[path = "ch09/nonholonomic.rs"]
+mod nonholonomic;

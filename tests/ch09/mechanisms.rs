@@ -298,7 +298,7 @@ pub struct RollingDisk {
 
 impl RollingDisk {
     /// 𝓞_{L/A} and 𝓞_{B/A}.
-    fn frames<T: Scalar>(&self, q: &[T]) -> (Matrix3<T>, Matrix3<T>) {
+    pub fn frames<T: Scalar>(&self, q: &[T]) -> (Matrix3<T>, Matrix3<T>) {
         let o_la = o1(q[3]) * o3(q[2]);
         (o_la, o2(q[4]) * o_la)
     }
@@ -316,18 +316,30 @@ impl RollingDisk {
         Vector3::z() * qd[2] + o_la.row(0).transpose() * qd[3] + o_la.row(1).transpose() * qd[4]
     }
 
+    /// ċ⃗ = (ẋ, ẏ, 0) + r d/dt k̂_L with k̂_L = (sin θ sin ψ, −sin θ cos ψ, cos θ).
+    pub fn centre_velocity<T: Scalar>(&self, q: &[T], qd: &[T]) -> Vector3<T> {
+        let (s2, c2, s3, c3) = (q[2].sin(), q[2].cos(), q[3].sin(), q[3].cos());
+        let r = T::lit(self.r);
+        Vector3::new(
+            qd[0] + r * (c3 * s2 * qd[3] + s3 * c2 * qd[2]),
+            qd[1] + r * (-c3 * c2 * qd[3] + s3 * s2 * qd[2]),
+            -r * s3 * qd[3],
+        )
+    }
+
+    /// q̇ of a rolling state with rates (ψ̇, θ̇, φ̇): the contact point moves along the
+    /// heading at r φ̇, ẋ = r φ̇ cos ψ, ẏ = r φ̇ sin ψ.
+    pub fn rolling_rates(&self, q: &[f64], rates: [f64; 3]) -> [f64; 5] {
+        let v = self.r * rates[2];
+        [v * q[2].cos(), v * q[2].sin(), rates[0], rates[1], rates[2]]
+    }
+
     /// Velocity of the disk's material point at the contact, v⃗_c + ω⃗ × r⃗_{P/c} (4.4.9).
     pub fn contact_velocity<T: Scalar>(&self, q: &[T], qd: &[T]) -> Vector3<T> {
         let (o_la, _) = self.frames(q);
         let a = Frame::<T>::identity();
-        let (s2, c2, s3, c3) = (q[2].sin(), q[2].cos(), q[3].sin(), q[3].cos());
-        // ċ = (ẋ, ẏ, 0) + r d/dt k̂_L with k̂_L = (sin θ sin ψ, −sin θ cos ψ, cos θ)
         let r = T::lit(self.r);
-        let v_c = Vector3::new(
-            qd[0] + r * (c3 * s2 * qd[3] + s3 * c2 * qd[2]),
-            qd[1] + r * (-c3 * c2 * qd[3] + s3 * s2 * qd[2]),
-            -r * s3 * qd[3],
-        );
+        let v_c = self.centre_velocity(q, qd);
         let r_p_c = -o_la.row(2).transpose() * r;
         let v = contact_point_velocity(&a.vector(v_c.into()), &a.vector(self.omega(q, qd).into()), &a.vector(r_p_c.into()));
         v.resolve(&a)
