@@ -24,3 +24,6 @@ mod constraints;
 
 #[path = "ch09/nonholonomic.rs"]
 mod nonholonomic;
+
+#[path = "ch09/kane.rs"]
+mod kane;
