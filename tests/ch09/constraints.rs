@@ -43,9 +43,10 @@ fn section_9_11_pendulum_as_constrained_particle_tension() {
         assert_abs(s.lambda[0], tension, 16.0 * EPS * scale);
         // ẍ = l(cos θ θ̈ − sin θ θ̇²), ÿ = l(sin θ θ̈ + cos θ θ̇²) with θ̈ = −(g/l) sin θ
         let thdd = -p.g / p.l * th.sin();
-        let want = [p.l * (th.cos() * thdd - th.sin() * thd * thd), p.l * (th.sin() * thdd + th.cos() * thd * thd)];
-        for k in 0..2 {
-            assert_abs(s.qdd[k], want[k], 16.0 * EPS * (p.g + p.l * thd * thd));
+        let want =
+            [p.l * (th.cos() * thdd - th.sin() * thd * thd), p.l * (th.sin() * thdd + th.cos() * thd * thd)];
+        for (got, want) in s.qdd.iter().zip(want) {
+            assert_abs(*got, want, 16.0 * EPS * (p.g + p.l * thd * thd));
         }
         // the acceleration constraint Φ_q q̈ = γ holds
         let t = &s.terms;
@@ -123,7 +124,8 @@ fn double_pendulum_from_joints(
     let ((s1, c1), (s2, c2)) = (th[0].sin_cos(), th[1].sin_cos());
     let (l1, l2) = (p.l1, p.l2);
     let q = [l1 * s1, -l1 * c1, l1 * s1 + l2 * s2, -l1 * c1 - l2 * c2];
-    let qd = [l1 * c1 * w[0], l1 * s1 * w[0], l1 * c1 * w[0] + l2 * c2 * w[1], l1 * s1 * w[0] + l2 * s2 * w[1]];
+    let qd =
+        [l1 * c1 * w[0], l1 * s1 * w[0], l1 * c1 * w[0] + l2 * c2 * w[1], l1 * s1 * w[0] + l2 * s2 * w[1]];
     // a⃗₁ and a⃗_{2/1} of circular motion: l(θ̈ ê_θ − θ̇² ê_r)
     let a1 = [l1 * (c1 * alpha[0] - s1 * w[0] * w[0]), l1 * (s1 * alpha[0] + c1 * w[0] * w[0])];
     let a21 = [l2 * (c2 * alpha[1] - s2 * w[1] * w[1]), l2 * (s2 * alpha[1] + c2 * w[1] * w[1])];
@@ -142,14 +144,19 @@ fn double_pendulum_from_joints(
 #[test]
 fn section_9_11_double_pendulum_cartesian_vs_joint_coordinates() {
     let p = CartesianDoublePendulum { m1: 1.2, m2: 0.7, l1: 1.0, l2: 0.6, g: 9.81 };
-    for &(th, thd) in &[([0.3, -0.5], [0.0, 0.0]), ([2.0, 0.1], [1.5, -3.0]), ([-2.9, 2.9], [-4.0, 6.0]), ([PI, 0.0], [0.2, 0.0])] {
+    for &(th, thd) in &[
+        ([0.3, -0.5], [0.0, 0.0]),
+        ([2.0, 0.1], [1.5, -3.0]),
+        ([-2.9, 2.9], [-4.0, 6.0]),
+        ([PI, 0.0], [0.2, 0.0]),
+    ] {
         let (q, qd, qdd, tension) = double_pendulum_from_joints(&p, th, thd);
         let s = constrained_accelerations(&p, &q, &qd, 0.0).unwrap();
-        for k in 0..4 {
-            assert_abs(s.qdd[k], qdd[k], 1e-12);
+        for (got, want) in s.qdd.iter().zip(qdd) {
+            assert_abs(*got, want, 1e-12);
         }
-        for k in 0..2 {
-            assert_abs(s.lambda[k], tension[k], 1e-12 * (1.0 + tension[k].abs()));
+        for (got, want) in s.lambda.iter().zip(tension) {
+            assert_abs(*got, want, 1e-12 * (1.0 + want.abs()));
         }
     }
 }
@@ -213,7 +220,9 @@ fn section_9_11_four_bar_long_run_projected() {
     let sub = DMatrix::from_fn(2, 2, |i, j| g[(i, j + 1)]);
     let rest = sub.lu().solve(&(-g.column(0) * 6.0)).unwrap();
     let qd0 = [6.0, rest[0], rest[1]];
-    let energy = |q: &[f64], qd: &[f64]| map_kinetic_energy(&fb, q, qd, 0.0).unwrap() + KinematicMap::potential(&fb, q, 0.0);
+    let energy = |q: &[f64], qd: &[f64]| {
+        map_kinetic_energy(&fb, q, qd, 0.0).unwrap() + KinematicMap::potential(&fb, q, 0.0)
+    };
     let e0 = energy(&q0, &qd0);
     let mut integrator = ConstrainedIntegrator::new(Adaptive::dopri5().rtol(1e-10).atol(1e-10));
     let run = integrator.integrate(&MapForm(&fb), &q0, &qd0, 0.0, 60.0).unwrap();
@@ -365,7 +374,15 @@ fn section_9_11_bad_input_is_typed() {
     assert!(matches!(err, DynamicsError::SingularMassMatrix { .. }), "{err}");
     let three = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
     let err = solve_kkt(&m, &three, &f, &DVector::zeros(3), DEPENDENT_ROW_REL_TOL).unwrap_err();
-    assert_eq!(err, DynamicsError::DependentConstraint { row: 2, depends_on: vec![0, 1], residual: 0.0, tol: DEPENDENT_ROW_REL_TOL });
+    assert_eq!(
+        err,
+        DynamicsError::DependentConstraint {
+            row: 2,
+            depends_on: vec![0, 1],
+            residual: 0.0,
+            tol: DEPENDENT_ROW_REL_TOL
+        }
+    );
     let err = solve_kkt(&m, &g, &f, &gamma, 0.0).unwrap_err();
     assert!(matches!(err, DynamicsError::InvalidParameter { .. }), "{err}");
     let err = solve_kkt(&m, &g, &f, &DVector::zeros(2), DEPENDENT_ROW_REL_TOL).unwrap_err();
@@ -398,11 +415,11 @@ mod prop {
             let s = constrained_accelerations(&p, &q, &qd, 0.0).unwrap();
             // accelerations up to ~ (1 + m1/m2)(g + lω²) ≈ 10³ in the worst draws
             let scale = (1.0 + m1 / m2 + m2 / m1) * (p.g + w1 * w1 + w2 * w2);
-            for k in 0..4 {
-                prop_assert!((s.qdd[k] - qdd[k]).abs() <= 1e-13 * scale, "{} vs {}", s.qdd[k], qdd[k]);
+            for (got, want) in s.qdd.iter().zip(qdd) {
+                prop_assert!((got - want).abs() <= 1e-13 * scale, "{} vs {}", got, want);
             }
-            for k in 0..2 {
-                prop_assert!((s.lambda[k] - tension[k]).abs() <= 1e-13 * scale * (m1 + m2));
+            for (got, want) in s.lambda.iter().zip(tension) {
+                prop_assert!((got - want).abs() <= 1e-13 * scale * (m1 + m2));
             }
             let residual = &s.terms.jacobian * &s.qdd - &s.terms.gamma;
             prop_assert!(residual.amax() <= 1e-13 * scale);

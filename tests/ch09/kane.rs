@@ -50,7 +50,10 @@ impl KaneSystem for KaneDisk {
     }
     fn loads(&self, _q: &[f64], _u: &[f64], _t: f64) -> KaneLoads {
         let a = Frame::new();
-        KaneLoads { particles: vec![], bodies: vec![(a.vector([0.0, 0.0, -self.0.m * self.0.g]), Vector::zero())] }
+        KaneLoads {
+            particles: vec![],
+            bodies: vec![(a.vector([0.0, 0.0, -self.0.m * self.0.g]), Vector::zero())],
+        }
     }
 }
 
@@ -96,7 +99,10 @@ impl KaneSystem for KaneDiskDependent {
     }
     fn loads(&self, _q: &[f64], _u: &[f64], _t: f64) -> KaneLoads {
         let a = Frame::new();
-        KaneLoads { particles: vec![], bodies: vec![(a.vector([0.0, 0.0, -self.disk.m * self.disk.g]), Vector::zero())] }
+        KaneLoads {
+            particles: vec![],
+            bodies: vec![(a.vector([0.0, 0.0, -self.disk.m * self.disk.g]), Vector::zero())],
+        }
     }
     fn speed_constraint_count(&self) -> usize {
         2
@@ -122,10 +128,20 @@ fn omega_l_rate(q: &[f64], qd: &[f64], qdd: &[f64]) -> [f64; 3] {
 /// rolling disc with u = ω|_L (mass 1.7, radius 0.35, g = 9.81; yaw and spin do not enter).
 #[test]
 fn section_9_14_rolling_disk_matches_sympy_kanes_method() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/ch09_kane_rolling_disk.json")).unwrap();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/ch09_kane_rolling_disk.json"
+    ))
+    .unwrap();
     let data: serde_json::Value = serde_json::from_str(&text).unwrap();
     let p = &data["params"];
-    let d = RollingDisk { m: p["m"].as_f64().unwrap(), r: p["r"].as_f64().unwrap(), g: p["g"].as_f64().unwrap(), incline: 0.0, all_rows: false };
+    let d = RollingDisk {
+        m: p["m"].as_f64().unwrap(),
+        r: p["r"].as_f64().unwrap(),
+        g: p["g"].as_f64().unwrap(),
+        incline: 0.0,
+        all_rows: false,
+    };
     let sys = KaneDisk(d);
     let cases = data["cases"].as_array().unwrap();
     assert_eq!(cases.len(), 8);
@@ -133,13 +149,14 @@ fn section_9_14_rolling_disk_matches_sympy_kanes_method() {
         let lean = case["lean"].as_f64().unwrap();
         let u: Vec<f64> = case["u"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
         // printed with 17 significant digits: parse exactly
-        let want: Vec<f64> = case["udot"].as_array().unwrap().iter().map(|x| x.as_str().unwrap().parse().unwrap()).collect();
+        let want: Vec<f64> =
+            case["udot"].as_array().unwrap().iter().map(|x| x.as_str().unwrap().parse().unwrap()).collect();
         let q = [0.3, -1.0, 0.4, lean, 1.3];
         let s = kane_accelerations(&sys, &q, &u, 0.0).unwrap();
         // terms of size g/r + |u|², divided by cos θ ≥ cos 1.3 (measured ≤ 0.7 ε·scale)
         let scale = (sys.0.g / sys.0.r + u.iter().map(|x| x * x).sum::<f64>()) / lean.cos();
-        for k in 0..3 {
-            assert_abs(s.ud[k], want[k], 8.0 * EPS * scale);
+        for (got, want) in s.ud.iter().zip(want) {
+            assert_abs(*got, want, 8.0 * EPS * scale);
         }
     }
 }
@@ -152,7 +169,9 @@ fn section_9_14_kane_agrees_with_lagrange_multipliers_and_newton_euler() {
     let d = disk();
     let kane = KaneDisk(disk());
     let dependent = KaneDiskDependent { disk: disk(), order: [2, 3, 4, 0, 1] };
-    for &(lean, rates) in &[(0.25, [1.5, 0.8, 9.0]), (-0.9, [-2.0, 0.3, 4.0]), (0.0, [0.0, 0.0, 5.0]), (1.2, [3.0, -1.0, -2.0])] {
+    for &(lean, rates) in
+        &[(0.25, [1.5, 0.8, 9.0]), (-0.9, [-2.0, 0.3, 4.0]), (0.0, [0.0, 0.0, 5.0]), (1.2, [3.0, -1.0, -2.0])]
+    {
         let q = [0.3, -1.0, 0.4, lean, 1.3];
         let qd = d.rolling_rates(&q, rates);
         let lagrange = map_constrained_accelerations(&d, &q, &qd, 0.0).unwrap();
@@ -161,12 +180,12 @@ fn section_9_14_kane_agrees_with_lagrange_multipliers_and_newton_euler() {
         let (s, c) = f64::sin_cos(lean);
         let u = [rates[1], rates[0] * s + rates[2], rates[0] * c];
         let k = kane_accelerations(&kane, &q, &u, 0.0).unwrap();
-        for i in 0..5 {
-            assert_abs(k.qd[i], qd[i], 16.0 * EPS * scale * d.r);
+        for (got, want) in k.qd.iter().zip(qd) {
+            assert_abs(*got, want, 16.0 * EPS * scale * d.r);
         }
         let want = omega_l_rate(&q, &qd, lagrange.qdd.as_slice());
-        for i in 0..3 {
-            assert_abs(k.ud[i], want[i], 64.0 * EPS * scale);
+        for (got, want) in k.ud.iter().zip(want) {
+            assert_abs(*got, want, 64.0 * EPS * scale);
         }
         // u = (ψ̇, θ̇, φ̇; ẋ, ẏ), the last two eliminated
         let kd = kane_accelerations(&dependent, &q, &rates, 0.0).unwrap();
@@ -236,7 +255,10 @@ fn section_9_14_chaplygin_sleigh_by_kane() {
         }
         fn masses(&self) -> MapMasses {
             // a flat plate about its centre: only J_zz = I enters planar motion
-            MapMasses { particles: vec![], bodies: vec![(self.m, Matrix3::from_diagonal(&Vector3::new(0.5, 0.5, 1.0)) * self.i)] }
+            MapMasses {
+                particles: vec![],
+                bodies: vec![(self.m, Matrix3::from_diagonal(&Vector3::new(0.5, 0.5, 1.0)) * self.i)],
+            }
         }
         fn kinematic_equations<T: Scalar>(&self, q: &[T], u: &[T], _t: T, qd: &mut [T]) {
             qd.copy_from_slice(&[u[0] * q[2].cos(), u[0] * q[2].sin(), u[1]]);
@@ -256,7 +278,8 @@ fn section_9_14_chaplygin_sleigh_by_kane() {
     let v_inf = ((s.m * v0 * v0 + ip * w0 * w0) / s.m).sqrt();
     let (k, u0) = (s.a * s.m * v_inf / ip, (v0 / v_inf).atanh());
     let f = |t: f64, y: &Vec<f64>| kane_state_derivative(&s, t, y).unwrap_or_else(|_| vec![f64::NAN; 5]);
-    let sol = Adaptive::dop853().rtol(1e-12).atol(1e-12).solve(f, 0.0, &vec![0.0, 0.0, 0.0, v0, w0], 40.0).unwrap();
+    let sol =
+        Adaptive::dop853().rtol(1e-12).atol(1e-12).solve(f, 0.0, &vec![0.0, 0.0, 0.0, v0, w0], 40.0).unwrap();
     for (t, y) in sol.t.iter().zip(&sol.y) {
         let u = k * t + u0;
         assert_abs(y[3], v_inf * u.tanh(), 1e-9);
@@ -277,4 +300,41 @@ fn section_9_14_bad_speed_choices_are_typed() {
     assert!(matches!(err, DynamicsError::DimensionMismatch { .. }), "{err}");
     let err = kane_accelerations(&KaneDisk(disk()), &q, &[0.0, f64::INFINITY, 1.0], 0.0).unwrap_err();
     assert!(matches!(err, DynamicsError::NonFinite { .. }), "{err}");
+}
+
+mod prop {
+    use proptest::prelude::*;
+
+    use super::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// On random rolling states (lean up to ±1.4 rad, upright included), Kane's equations
+        /// with u = ω|_L and Lagrange's equations with multipliers give the same rates, and
+        /// the multipliers are minus the horizontal contact force m a⃗_c − m g⃗.
+        #[test]
+        fn kane_and_lagrange_agree_on_random_rolling_states(
+            lean in prop_oneof![Just(0.0), Just(1e-8), -1.4..1.4f64],
+            rates in [-6.0..6.0f64, -6.0..6.0f64, -20.0..20.0f64],
+            heading in -3.2..3.2f64,
+        ) {
+            let d = disk();
+            let q = [0.0, 0.0, heading, lean, 0.0];
+            let qd = d.rolling_rates(&q, rates);
+            let lagrange = map_constrained_accelerations(&d, &q, &qd, 0.0).unwrap();
+            let (s, c) = f64::sin_cos(lean);
+            let u = [rates[1], rates[0] * s + rates[2], rates[0] * c];
+            let k = kane_accelerations(&KaneDisk(disk()), &q, &u, 0.0).unwrap();
+            let want = omega_l_rate(&q, &qd, lagrange.qdd.as_slice());
+            let scale = (d.g / d.r + rates.iter().map(|x| x * x).sum::<f64>()) / c;
+            for (got, want) in k.ud.iter().zip(want) {
+                prop_assert!((got - want).abs() <= 64.0 * EPS * scale, "{} vs {}", got, want);
+            }
+            let (a_c, _, _) = disk_motion(&d, &q, &qd, lagrange.qdd.as_slice());
+            let (f, _) = newton_euler(&d, &q, &qd, &a_c);
+            prop_assert!((lagrange.lambda[0] + f.x).abs() <= 64.0 * EPS * d.m * d.r * scale);
+            prop_assert!((lagrange.lambda[1] + f.y).abs() <= 64.0 * EPS * d.m * d.r * scale);
+        }
+    }
 }

@@ -10,14 +10,22 @@ use vectrix::prelude::*;
 /// |got − want| ≤ tol (absolute).
 #[track_caller]
 pub fn assert_abs(got: f64, want: f64, tol: f64) {
-    assert!((got - want).abs() <= tol, "got {got:e}, want {want:e}, |Δ| = {:e} > {tol:e}", (got - want).abs());
+    assert!(
+        (got - want).abs() <= tol,
+        "got {got:e}, want {want:e}, |Δ| = {:e} > {tol:e}",
+        (got - want).abs()
+    );
 }
 
 /// |got − want| ≤ tol·|want| (relative).
 #[track_caller]
 pub fn assert_rel(got: f64, want: f64, tol: f64) {
     let err = (got - want).abs();
-    assert!(err <= tol * want.abs(), "got {got:e}, want {want:e}, relative error {:e} > {tol:e}", err / want.abs());
+    assert!(
+        err <= tol * want.abs(),
+        "got {got:e}, want {want:e}, relative error {:e} > {tol:e}",
+        err / want.abs()
+    );
 }
 
 /// The passive elementary matrix 𝓞₃(θ) (2.12.16).
@@ -231,7 +239,11 @@ impl FourBar {
         let e = |t: T| Vector3::new(t.cos(), t.sin(), T::zero());
         let (a, b, c, d) = (T::lit(self.a), T::lit(self.b), T::lit(self.c), T::lit(self.d));
         let p_a = e(q[0]) * a;
-        [p_a * T::lit(0.5), p_a + e(q[1]) * (b * T::lit(0.5)), Vector3::new(d, T::zero(), T::zero()) + e(q[2]) * (c * T::lit(0.5))]
+        [
+            p_a * T::lit(0.5),
+            p_a + e(q[1]) * (b * T::lit(0.5)),
+            Vector3::new(d, T::zero(), T::zero()) + e(q[2]) * (c * T::lit(0.5)),
+        ]
     }
 
     /// The coupler point at (u, v) in the coupler's frame (origin at the crank pin, x along
@@ -341,13 +353,18 @@ impl RollingDisk {
         let r = T::lit(self.r);
         let v_c = self.centre_velocity(q, qd);
         let r_p_c = -o_la.row(2).transpose() * r;
-        let v = contact_point_velocity(&a.vector(v_c.into()), &a.vector(self.omega(q, qd).into()), &a.vector(r_p_c.into()));
+        let v = contact_point_velocity(
+            &a.vector(v_c.into()),
+            &a.vector(self.omega(q, qd).into()),
+            &a.vector(r_p_c.into()),
+        );
         v.resolve(&a)
     }
 
     /// Energy T + U of a state.
     pub fn energy(&self, q: &[f64], qd: &[f64]) -> f64 {
-        vectrix::dynamics::lagrange::map_kinetic_energy(self, q, qd, 0.0).unwrap() + KinematicMap::potential(self, q, 0.0)
+        vectrix::dynamics::lagrange::map_kinetic_energy(self, q, qd, 0.0).unwrap()
+            + KinematicMap::potential(self, q, 0.0)
     }
 }
 
@@ -358,7 +375,10 @@ impl KinematicMap for RollingDisk {
     fn masses(&self) -> MapMasses {
         let (m, r) = (self.m, self.r);
         // thin disk, axis ĵ_B: J = diag(mr²/4, mr²/2, mr²/4)
-        MapMasses { particles: vec![], bodies: vec![(m, Matrix3::from_diagonal(&Vector3::new(0.25, 0.5, 0.25)) * (m * r * r))] }
+        MapMasses {
+            particles: vec![],
+            bodies: vec![(m, Matrix3::from_diagonal(&Vector3::new(0.25, 0.5, 0.25)) * (m * r * r))],
+        }
     }
     fn bodies<T: Scalar>(&self, q: &[T], _t: T) -> Vec<(Vector<T>, Frame<T>)> {
         let (_, o_ba) = self.frames(q);

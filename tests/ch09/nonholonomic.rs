@@ -6,7 +6,9 @@
 //! Rolling without slipping (Def 4.18.2: the colocated contact points have zero relative
 //! velocity) is the book's example of such a constraint.
 
-use vectrix::dynamics::constraints::{ConstrainedIntegrator, LagrangeForm, MapForm, map_constrained_accelerations};
+use vectrix::dynamics::constraints::{
+    ConstrainedIntegrator, LagrangeForm, MapForm, map_constrained_accelerations,
+};
 use vectrix::nalgebra::{Matrix3, Vector3};
 use vectrix::num_dual::{Dual64, HyperDual64};
 use vectrix::ode::Adaptive;
@@ -24,7 +26,12 @@ fn disk(incline: f64) -> RollingDisk {
 
 /// Centre acceleration a⃗_c, angular acceleration α⃗ and ω⃗ of the disk from (q, q̇, q̈):
 /// a⃗_c = ∇²c[q̇, q̇] + ∇c q̈ from one hyper-dual evaluation, α⃗ from one dual evaluation.
-pub fn disk_motion(d: &RollingDisk, q: &[f64], qd: &[f64], qdd: &[f64]) -> (Vector3<f64>, Vector3<f64>, Vector3<f64>) {
+pub fn disk_motion(
+    d: &RollingDisk,
+    q: &[f64],
+    qd: &[f64],
+    qdd: &[f64],
+) -> (Vector3<f64>, Vector3<f64>, Vector3<f64>) {
     let qh: Vec<HyperDual64> = (0..5).map(|k| HyperDual64::new(q[k], qd[k], qd[k], qdd[k])).collect();
     let a_c = d.centre(&qh).map(|x| x.eps1eps2);
     let qf: Vec<Dual64> = (0..5).map(|k| Dual64::new(q[k], qd[k])).collect();
@@ -36,7 +43,12 @@ pub fn disk_motion(d: &RollingDisk, q: &[f64], qd: &[f64], qdd: &[f64]) -> (Vect
 /// Newton–Euler for the disk given its motion: the contact force F⃗ = m a⃗_c − m g⃗ (7.4.7) at
 /// the contact point, with gravity at c, must give the angular acceleration α⃗ through
 /// Euler's equation (7.8.13) as vectrix's [`RigidBody`] solves it. Returns (F⃗, α⃗_NE).
-pub fn newton_euler(d: &RollingDisk, q: &[f64], qd: &[f64], a_c: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
+pub fn newton_euler(
+    d: &RollingDisk,
+    q: &[f64],
+    qd: &[f64],
+    a_c: &Vector3<f64>,
+) -> (Vector3<f64>, Vector3<f64>) {
     let a = Frame::new();
     let g = Vector3::new(d.incline.sin(), 0.0, -d.incline.cos()) * d.g;
     let f = a_c * d.m - g * d.m;
@@ -45,7 +57,8 @@ pub fn newton_euler(d: &RollingDisk, q: &[f64], qd: &[f64], a_c: &Vector3<f64>) 
     let p = c.displaced(a.vector((-o_la.row(2).transpose() * d.r).into()));
     let j_b = Matrix3::from_diagonal(&Vector3::new(0.25, 0.5, 0.25)) * (d.m * d.r * d.r);
     let props = MassProperties::new(d.m, c, frame_from(&o_ba).dyadic(&j_b)).unwrap();
-    let body = RigidBody::new(props, a.vector(d.centre_velocity(q, qd).into()), a.vector(d.omega(q, qd).into()));
+    let body =
+        RigidBody::new(props, a.vector(d.centre_velocity(q, qd).into()), a.vector(d.omega(q, qd).into()));
     let contact = Wrench::from_force(&AppliedForce::new(a.vector(f.into()), p), c);
     let weight = Wrench::from_force(&AppliedForce::new(a.vector((g * d.m).into()), c), c);
     let (_, alpha) = body.accelerations(&contact.plus(&weight)).unwrap();

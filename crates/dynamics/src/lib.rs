@@ -47,8 +47,8 @@ pub use sixd::{newton_euler_6d, twist_cross_matrix};
 
 /// `use vectrix_dynamics::prelude::*;`
 pub mod prelude {
-    pub use crate::scene::{Scene, SceneError};
     pub use crate::constraints::Constraints;
     pub use crate::constraints::kane::KaneSystem;
+    pub use crate::scene::{Scene, SceneError};
     pub use crate::{DynamicsError, Joint, KinematicMap, Lagrangian, Link, MapMasses, Model, RigidBody};
 }

@@ -14,7 +14,10 @@ use nalgebra::DVector;
 use vectrix_ode::{Adaptive, OdeError, Solution};
 
 use super::eval::{counts, holonomic_rows, velocity_system};
-use super::{ConstrainedSystem, Constraints, ProjectionOptions, project_positions, project_velocities, solve_constrained};
+use super::{
+    ConstrainedSystem, Constraints, ProjectionOptions, project_positions, project_velocities,
+    solve_constrained,
+};
 use crate::DynamicsError;
 use crate::error::{check_finite, check_len};
 
@@ -43,7 +46,12 @@ impl Violation {
 /// # Errors
 /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
 /// [`DynamicsError::TooManyConstraints`].
-pub fn constraint_violation<C: Constraints>(sys: &C, q: &[f64], qd: &[f64], t: f64) -> Result<Violation, DynamicsError> {
+pub fn constraint_violation<C: Constraints>(
+    sys: &C,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<Violation, DynamicsError> {
     check_len(qd.len(), q.len(), "q̇")?;
     check_finite(q, "q")?;
     check_finite(qd, "q̇")?;
@@ -118,20 +126,27 @@ impl ConstrainedIntegrator {
 
     /// Projects y = (q, q̇) at t: positions (Gauss–Newton, holonomic rows), then velocities
     /// (all rows).
-    fn project<S: ConstrainedSystem>(&self, sys: &S, t: f64, y: &mut DVector<f64>) -> Result<(), DynamicsError> {
+    fn project<S: ConstrainedSystem>(
+        &self,
+        sys: &S,
+        t: f64,
+        y: &mut DVector<f64>,
+    ) -> Result<(), DynamicsError> {
         let n = sys.dof();
         let (m, k) = counts(sys, n)?;
         let (q, qd) = (y.as_slice()[..n].to_vec(), y.as_slice()[n..].to_vec());
         let q = if m > 0 {
             let (mass, _) = sys.equations(&q, &qd, t)?;
-            let retract = |q: &[f64], d: &DVector<f64>| Ok(q.iter().zip(d.iter()).map(|(a, b)| a + b).collect());
+            let retract =
+                |q: &[f64], d: &DVector<f64>| Ok(q.iter().zip(d.iter()).map(|(a, b)| a + b).collect());
             project_positions(&q, &mass, |q| holonomic_rows(sys, q, t, m), retract, &self.projection)?.q
         } else {
             q
         };
         let (mass, _) = sys.equations(&q, &qd, t)?;
         let (g, r) = velocity_system(sys, &q, &qd, t, (m, k))?;
-        let qd = project_velocities(&DVector::from_column_slice(&qd), &mass, &g, &r, self.projection.rank_tol)?;
+        let qd =
+            project_velocities(&DVector::from_column_slice(&qd), &mass, &g, &r, self.projection.rank_tol)?;
         y.as_mut_slice()[..n].copy_from_slice(&q);
         y.as_mut_slice()[n..].copy_from_slice(qd.as_slice());
         Ok(())

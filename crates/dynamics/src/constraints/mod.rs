@@ -98,7 +98,8 @@ pub trait ConstrainedSystem: Constraints {
     /// # Errors
     /// Whatever the model reports ([`DynamicsError::DimensionMismatch`],
     /// [`DynamicsError::NonFinite`], …).
-    fn equations(&self, q: &[f64], qd: &[f64], t: f64) -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError>;
+    fn equations(&self, q: &[f64], qd: &[f64], t: f64)
+    -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError>;
 }
 
 /// A [`Lagrangian`] with [`Constraints`], as a [`ConstrainedSystem`]: M and f from
@@ -141,7 +142,12 @@ impl<L: Lagrangian + Constraints> ConstrainedSystem for LagrangeForm<'_, L> {
     fn dof(&self) -> usize {
         Lagrangian::dof(self.0)
     }
-    fn equations(&self, q: &[f64], qd: &[f64], t: f64) -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError> {
+    fn equations(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+    ) -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError> {
         let terms = lagrange_terms(self.0, q, qd, t)?;
         let f = terms.rhs();
         Ok((terms.mass, f))
@@ -152,7 +158,12 @@ impl<K: KinematicMap + Constraints> ConstrainedSystem for MapForm<'_, K> {
     fn dof(&self) -> usize {
         KinematicMap::dof(self.0)
     }
-    fn equations(&self, q: &[f64], qd: &[f64], t: f64) -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError> {
+    fn equations(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+    ) -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError> {
         map_equations(self.0, q, qd, t)
     }
 }

@@ -124,7 +124,11 @@ where
             // no decrease: the linearization overshoots (far from the manifold)
             halvings += 1;
             if halvings > MAX_HALVINGS {
-                return Err(DynamicsError::ProjectionFailed { iterations: iterations + 1, violation, tol: opts.tol });
+                return Err(DynamicsError::ProjectionFailed {
+                    iterations: iterations + 1,
+                    violation,
+                    tol: opts.tol,
+                });
             }
             scale *= 0.5;
         }

@@ -449,7 +449,8 @@ mod tests {
         });
         assert!(matches!(r, Err(Stop::At(t)) if t > 1.0));
         // solver errors come through E::from
-        let r: Result<_, Stop> = Adaptive::dop853().rtol(-1.0).solve_with_hook(f, 0.0, &1.0, 1.0, &mut [], |_, _| Ok(false));
+        let r: Result<_, Stop> =
+            Adaptive::dop853().rtol(-1.0).solve_with_hook(f, 0.0, &1.0, 1.0, &mut [], |_, _| Ok(false));
         assert!(matches!(r, Err(Stop::Ode(OdeError::NonPositiveTolerance { .. }))));
     }
 }

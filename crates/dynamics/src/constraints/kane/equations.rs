@@ -148,7 +148,13 @@ pub fn kane_accelerations<K: KaneSystem>(
     let forcing_red = c.transpose() * (&forcing - &mass * &w);
     let ud_i = cholesky_solve(mass_red.clone(), forcing_red.clone())?;
     let ud = &c * ud_i + w;
-    Ok(KaneSolution { u: DVector::from_vec(u), qd: DVector::from_vec(qd), ud, mass: mass_red, forcing: forcing_red })
+    Ok(KaneSolution {
+        u: DVector::from_vec(u),
+        qd: DVector::from_vec(qd),
+        ud,
+        mass: mass_red,
+        forcing: forcing_red,
+    })
 }
 
 /// y′ = (q̇, u̇_i) for the state y = (q, u_i): Kane's equations as an ODE right-hand side.
@@ -194,7 +200,7 @@ fn generalized_inertia_and_forces<K: KaneSystem>(
     for (i, v) in particles.iter().enumerate() {
         let m = masses.particles[i];
         let a0 = resolve(v).map(|d| d.eps);
-        let f = loads.particles.get(i).map_or(Vector3::zeros(), |f| resolve(f));
+        let f = loads.particles.get(i).map_or(Vector3::zeros(), resolve);
         for r in 0..p {
             let v_r = &pv.particles[r][i];
             // F_r + F*_r at u̇ = 0: v⃗_r·(F⃗ − m a⃗₀)
@@ -211,7 +217,10 @@ fn generalized_inertia_and_forces<K: KaneSystem>(
         let j = r_ba * j_b * r_ba.transpose();
         let omega = resolve(&motion.omega).map(|d| d.re);
         let (a0, alpha0) = (resolve(&motion.v_c).map(|d| d.eps), resolve(&motion.omega).map(|d| d.eps));
-        let (f, m_c) = loads.bodies.get(b).map_or((Vector3::zeros(), Vector3::zeros()), |(f, mc)| (resolve(f), resolve(mc)));
+        let (f, m_c) = loads
+            .bodies
+            .get(b)
+            .map_or((Vector3::zeros(), Vector3::zeros()), |(f, mc)| (resolve(f), resolve(mc)));
         // Euler's equation at u̇ = 0: J⃗α⃗₀ + ω⃗×J⃗ω⃗ (7.8.13)
         let euler0 = j * alpha0 + omega.cross(&(j * omega));
         for r in 0..p {

@@ -164,7 +164,9 @@ pub fn partial_velocities<K: KaneSystem>(
         ur[r].eps = 1.0;
         let eps = |v: &Vector<Dual64>| resolve(v).map(|d| d.eps);
         particles.push(sys.particle_velocities(&qv, &ur, td).iter().map(eps).collect::<Vec<_>>());
-        bodies.push(sys.body_motions(&qv, &ur, td).iter().map(|b| (eps(&b.v_c), eps(&b.omega))).collect::<Vec<_>>());
+        bodies.push(
+            sys.body_motions(&qv, &ur, td).iter().map(|b| (eps(&b.v_c), eps(&b.omega))).collect::<Vec<_>>(),
+        );
         ur[r].eps = 0.0;
     }
     let all = particles.iter().flatten().chain(bodies.iter().flatten().flat_map(|(v, w)| [v, w]));
@@ -173,4 +175,3 @@ pub fn partial_velocities<K: KaneSystem>(
     }
     Ok(PartialVelocities { particles, bodies })
 }
-
