@@ -1,4 +1,5 @@
-//! Chapter 9: Lagrange's and Hamilton's equations without symbols (book §9.3–9.13).
+//! Chapter 9: Lagrange's and Hamilton's equations without symbols (book §9.3–9.13), with
+//! constraints and multipliers (§9.11–9.12) and Kane's equations (§9.14).
 //! T, U, R are written once, generic over the scalar; vectrix differentiates them exactly with
 //! dual numbers. Split by topic into `tests/ch09/*.rs`.
 
@@ -19,6 +20,9 @@ mod prop;
 #[path = "ch09/mechanisms.rs"]
 mod mechanisms;
 
+#[path = "ch09/rolling.rs"]
+mod rolling;
+
 #[path = "ch09/constraints.rs"]
 mod constraints;
 
@@ -27,3 +31,6 @@ mod nonholonomic;
 
 #[path = "ch09/kane.rs"]
 mod kane;
+
+#[path = "ch09/four_bar.rs"]
+mod four_bar;

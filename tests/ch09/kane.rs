@@ -14,8 +14,9 @@ use vectrix::nalgebra::{Matrix3, Vector3};
 use vectrix::ode::Adaptive;
 use vectrix::prelude::*;
 
-use super::mechanisms::{RollingDisk, assert_abs, frame_from};
+use super::mechanisms::{assert_abs, frame_from};
 use super::nonholonomic::{disk_motion, newton_euler};
+use super::rolling::RollingDisk;
 
 const EPS: f64 = f64::EPSILON;
 

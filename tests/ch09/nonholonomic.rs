@@ -15,7 +15,8 @@ use vectrix::ode::Adaptive;
 use vectrix::prelude::*;
 use vectrix::statics::{AppliedForce, MassProperties, Point, Wrench};
 
-use super::mechanisms::{RollingDisk, Sleigh, assert_abs, frame_from};
+use super::mechanisms::{assert_abs, frame_from};
+use super::rolling::{RollingDisk, Sleigh};
 
 const EPS: f64 = f64::EPSILON;
 const G: f64 = 9.81;
