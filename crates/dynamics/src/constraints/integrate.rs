@@ -136,14 +136,14 @@ impl ConstrainedIntegrator {
         let (m, k) = counts(sys, n)?;
         let (q, qd) = (y.as_slice()[..n].to_vec(), y.as_slice()[n..].to_vec());
         let q = if m > 0 {
-            let (mass, _) = sys.equations(&q, &qd, t)?;
+            let mass = sys.mass(&q, t)?;
             let retract =
                 |q: &[f64], d: &DVector<f64>| Ok(q.iter().zip(d.iter()).map(|(a, b)| a + b).collect());
             project_positions(&q, &mass, |q| holonomic_rows(sys, q, t, m), retract, &self.projection)?.q
         } else {
             q
         };
-        let (mass, _) = sys.equations(&q, &qd, t)?;
+        let mass = sys.mass(&q, t)?;
         let (g, r) = velocity_system(sys, &q, &qd, t, (m, k))?;
         let qd =
             project_velocities(&DVector::from_column_slice(&qd), &mass, &g, &r, self.projection.rank_tol)?;

@@ -55,7 +55,9 @@ use nalgebra::{DMatrix, DVector};
 use vectrix_tensor::Scalar;
 
 use crate::DynamicsError;
-use crate::lagrange::{KinematicMap, Lagrangian, lagrange_terms, map_equations};
+use crate::lagrange::{
+    KinematicMap, Lagrangian, lagrange_terms, map_equations, map_mass_matrix, mass_matrix,
+};
 
 /// Constraints on a mechanical system, generic over the scalar so that vectrix
 /// differentiates them with dual numbers. Implement the methods you need; the defaults
@@ -100,6 +102,14 @@ pub trait ConstrainedSystem: Constraints {
     /// [`DynamicsError::NonFinite`], …).
     fn equations(&self, q: &[f64], qd: &[f64], t: f64)
     -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError>;
+    /// M(q, t) alone (the metric of the projections); by default from
+    /// [`ConstrainedSystem::equations`] at q̇ = 0.
+    ///
+    /// # Errors
+    /// As [`ConstrainedSystem::equations`].
+    fn mass(&self, q: &[f64], t: f64) -> Result<DMatrix<f64>, DynamicsError> {
+        Ok(self.equations(q, &vec![0.0; q.len()], t)?.0)
+    }
 }
 
 /// A [`Lagrangian`] with [`Constraints`], as a [`ConstrainedSystem`]: M and f from
@@ -152,6 +162,9 @@ impl<L: Lagrangian + Constraints> ConstrainedSystem for LagrangeForm<'_, L> {
         let f = terms.rhs();
         Ok((terms.mass, f))
     }
+    fn mass(&self, q: &[f64], t: f64) -> Result<DMatrix<f64>, DynamicsError> {
+        mass_matrix(self.0, q, &vec![0.0; q.len()], t)
+    }
 }
 
 impl<K: KinematicMap + Constraints> ConstrainedSystem for MapForm<'_, K> {
@@ -165,5 +178,8 @@ impl<K: KinematicMap + Constraints> ConstrainedSystem for MapForm<'_, K> {
         t: f64,
     ) -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError> {
         map_equations(self.0, q, qd, t)
+    }
+    fn mass(&self, q: &[f64], t: f64) -> Result<DMatrix<f64>, DynamicsError> {
+        map_mass_matrix(self.0, q, t)
     }
 }

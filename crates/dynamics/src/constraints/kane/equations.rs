@@ -189,6 +189,11 @@ fn generalized_inertia_and_forces<K: KaneSystem>(
     let bodies = sys.body_motions(&qf, &uv, tf);
     check_len(particles.len(), masses.particles.len(), "particle velocities")?;
     check_len(bodies.len(), masses.bodies.len(), "body motions")?;
+    // the lists must not change length between evaluations
+    for (vp, vb) in pv.particles.iter().zip(&pv.bodies) {
+        check_len(vp.len(), particles.len(), "particle partial velocities")?;
+        check_len(vb.len(), bodies.len(), "body partial velocities")?;
+    }
     let loads = sys.loads(q, u, t);
     if !loads.particles.is_empty() {
         check_len(loads.particles.len(), particles.len(), "particle loads")?;

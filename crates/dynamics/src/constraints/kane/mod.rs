@@ -104,8 +104,8 @@ pub trait KaneSystem {
     }
 }
 
-/// Partial velocities and partial angular velocities, resolved in the inertial frame in
-/// which the user's vectors are resolved by `Frame::identity()`.
+/// Partial velocities and partial angular velocities, resolved in `Frame::identity()` (the
+/// inertial frame of the user's velocities).
 ///
 /// Book: §9.14.
 #[derive(Debug, Clone, PartialEq)]
