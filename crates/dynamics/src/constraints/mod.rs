@@ -34,6 +34,34 @@
 //! * Nonholonomic constraints are linear in q̇ (§9.12); the multipliers follow d'Alembert's
 //!   principle (the reaction does no work on velocities that satisfy A q̇ = 0).
 //!
+//! ```
+//! use vectrix_dynamics::constraints::{Constraints, constrained_accelerations};
+//! use vectrix_dynamics::{DynamicsError, Lagrangian};
+//! use vectrix_tensor::Scalar;
+//!
+//! /// A pendulum as a particle on a rod: q = (x, y), y up, φ = |r⃗| − l.
+//! struct Rod { m: f64, l: f64, g: f64 }
+//! impl Lagrangian for Rod {
+//!     fn dof(&self) -> usize { 2 }
+//!     fn kinetic<T: Scalar>(&self, _q: &[T], qd: &[T], _t: T) -> T {
+//!         T::lit(0.5 * self.m) * (qd[0] * qd[0] + qd[1] * qd[1])
+//!     }
+//!     fn potential<T: Scalar>(&self, q: &[T], _t: T) -> T { T::lit(self.m * self.g) * q[1] }
+//! }
+//! impl Constraints for Rod {
+//!     fn constraint_count(&self) -> usize { 1 }
+//!     fn constraints<T: Scalar>(&self, q: &[T], _t: T, out: &mut [T]) {
+//!         out[0] = (q[0] * q[0] + q[1] * q[1]).sqrt() - T::lit(self.l);
+//!     }
+//! }
+//! let rod = Rod { m: 1.0, l: 1.0, g: 9.81 };
+//! let s = constrained_accelerations(&rod, &[0.0, -1.0], &[2.0, 0.0], 0.0)?;
+//! // hanging, moving at 2 m/s: the tension is m(g + v²/l), and the bob accelerates upward at v²/l
+//! assert!((s.lambda[0] - (9.81 + 4.0)).abs() < 1e-12);
+//! assert!((s.qdd[1] - 4.0).abs() < 1e-12);
+//! # Ok::<(), DynamicsError>(())
+//! ```
+//!
 //! Book: §9.11, §9.12, §9.14 (stubs in the text: the formulation here is the standard one,
 //! e.g. Haug, *Computer-Aided Kinematics and Dynamics* ch. 11; Kane & Levinson, *Dynamics*).
 
