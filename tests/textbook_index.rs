@@ -11,12 +11,13 @@ use std::path::{Path, PathBuf};
 const BEGIN: &str = "<!-- BEGIN GENERATED: tests/textbook_index.rs -->";
 const END: &str = "<!-- END GENERATED -->";
 /// Test-name prefixes that carry a book tag `kind_chapter_section_...`.
-const KINDS: [&str; 12] = [
+const KINDS: [&str; 13] = [
     "fact",
     "example",
     "problem",
     "eq",
     "sec",
+    "section",
     "definition",
     "remark",
     "table",
