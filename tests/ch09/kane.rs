@@ -16,47 +16,9 @@ use vectrix::prelude::*;
 
 use super::mechanisms::{assert_abs, frame_from};
 use super::nonholonomic::{disk_motion, newton_euler};
-use super::rolling::RollingDisk;
+use super::rolling::{KaneDisk, RollingDisk};
 
 const EPS: f64 = f64::EPSILON;
-
-/// The rolling disk of [`RollingDisk`] with Kane's favourite speeds u = ω⃗_{B/A} resolved in
-/// the lean frame L, so that rolling is built into the velocities: v⃗_c = ω⃗ × r k̂_L, and no
-/// speed is dependent. Kinematical equations from ω|_L = (θ̇, ψ̇ sin θ + φ̇, ψ̇ cos θ):
-/// θ̇ = u₁, ψ̇ = u₃/cos θ, φ̇ = u₂ − u₃ tan θ, and the contact point moves at r φ̇ along î_L.
-struct KaneDisk(RollingDisk);
-
-impl KaneSystem for KaneDisk {
-    fn coordinates(&self) -> usize {
-        5
-    }
-    fn speeds(&self) -> usize {
-        3
-    }
-    fn masses(&self) -> MapMasses {
-        KinematicMap::masses(&self.0)
-    }
-    fn kinematic_equations<T: Scalar>(&self, q: &[T], u: &[T], _t: T, qd: &mut [T]) {
-        let (psid, phid) = (u[2] / q[3].cos(), u[1] - u[2] * q[3].tan());
-        let v = T::lit(self.0.r) * phid;
-        qd.copy_from_slice(&[v * q[2].cos(), v * q[2].sin(), psid, u[0], phid]);
-    }
-    fn body_motions<T: Scalar>(&self, q: &[T], u: &[T], _t: T) -> Vec<BodyMotion<T>> {
-        let (o_la, o_ba) = self.0.frames(q);
-        let l = frame_from(&o_la);
-        let omega = l.vector([u[0], u[1], u[2]]);
-        // rolling: the contact point is at rest, v⃗_c = ω⃗ × r⃗_{c/P}
-        let v_c = omega.cross(&(l.k() * T::lit(self.0.r)));
-        vec![BodyMotion { v_c, omega, frame: frame_from(&o_ba) }]
-    }
-    fn loads(&self, _q: &[f64], _u: &[f64], _t: f64) -> KaneLoads {
-        let a = Frame::new();
-        KaneLoads {
-            particles: vec![],
-            bodies: vec![(a.vector([0.0, 0.0, -self.0.m * self.0.g]), Vector::zero())],
-        }
-    }
-}
 
 /// The same disk with the speeds u = (ψ̇, θ̇, φ̇, ẋ, ẏ) permuted by `order` (u_k = q̇[order[k]]),
 /// the last two dependent through the horizontal no-slip rows: the reduced form eliminates
