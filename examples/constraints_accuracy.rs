@@ -105,8 +105,8 @@ fn double_pendulum_table() {
                 let want = [a1[0], a1[1], a1[0] + a21[0], a1[1] + a21[1]];
                 let s = constrained_accelerations(&p, &q, &qd, 0.0).expect("independent rods");
                 let scale = p.g + w[0] * w[0] + w[1] * w[1];
-                for k in 0..4 {
-                    worst = worst.max((s.qdd[k] - want[k]).abs() / (f64::EPSILON * scale));
+                for (got, want) in s.qdd.iter().zip(want) {
+                    worst = worst.max((got - want).abs() / (f64::EPSILON * scale));
                 }
                 count += 1;
             }
@@ -140,8 +140,8 @@ fn kane_table() {
         let q = [0.3, -1.0, 0.4, lean, 1.3];
         let k = kane_accelerations(&sys, &q, &u, 0.0).expect("regular");
         let scale = (disk.g / disk.r + u.iter().map(|x| x * x).sum::<f64>()) / lean.cos();
-        for i in 0..3 {
-            vs_sympy = vs_sympy.max((k.ud[i] - want[i]).abs() / (f64::EPSILON * scale));
+        for (got, want) in k.ud.iter().zip(&want) {
+            vs_sympy = vs_sympy.max((got - want).abs() / (f64::EPSILON * scale));
         }
         // the same state through Lagrange's equations with the two no-slip multipliers
         let (s, c) = lean.sin_cos();
@@ -149,8 +149,8 @@ fn kane_table() {
         let qd = disk.rolling_rates(&q, [psid, u[0], u[1] - psid * s]);
         let l = map_constrained_accelerations(&disk, &q, &qd, 0.0).expect("regular");
         let rate = [l.qdd[3], l.qdd[2] * s + qd[2] * qd[3] * c + l.qdd[4], l.qdd[2] * c - qd[2] * qd[3] * s];
-        for i in 0..3 {
-            vs_lagrange = vs_lagrange.max((k.ud[i] - rate[i]).abs() / (f64::EPSILON * scale));
+        for (got, want) in k.ud.iter().zip(rate) {
+            vs_lagrange = vs_lagrange.max((got - want).abs() / (f64::EPSILON * scale));
         }
     }
     println!("\n## Rolling disk, Kane's equations (u = ω|_L)\n");
