@@ -60,8 +60,35 @@ fn check_state(n: usize, q: &[f64], qd: &[f64], t: f64) -> Result<(), DynamicsEr
     check_finite(&[t], "t")
 }
 
-fn duals(x: &[f64]) -> Vec<Dual64> {
+pub(crate) fn duals(x: &[f64]) -> Vec<Dual64> {
     x.iter().map(|&v| Dual64::from(v)).collect()
+}
+
+/// Values f(x) (length m) and the Jacobian ∂f/∂x (m × n) of `eval(x, out)`: one dual
+/// evaluation per column, ε on x_j giving column j.
+pub(crate) fn dual_jacobian(
+    x: &[f64],
+    m: usize,
+    mut eval: impl FnMut(&[Dual64], &mut [Dual64]),
+) -> (DVector<f64>, DMatrix<f64>) {
+    let n = x.len();
+    let (mut value, mut jac) = (DVector::zeros(m), DMatrix::zeros(m, n));
+    if m == 0 {
+        return (value, jac);
+    }
+    let mut xj = duals(x);
+    let mut out = vec![Dual64::from(0.0); m];
+    for j in 0..n {
+        xj[j].eps = 1.0;
+        out.fill(Dual64::from(0.0));
+        eval(&xj, &mut out);
+        xj[j].eps = 0.0;
+        for (i, v) in out.iter().enumerate() {
+            jac[(i, j)] = v.eps;
+            value[i] = v.re;
+        }
+    }
+    (value, jac)
 }
 
 /// φ(q, t) and Φ_q (m × n): one dual evaluation per coordinate.
@@ -71,24 +98,8 @@ pub(crate) fn holonomic_rows<C: Constraints>(
     t: f64,
     m: usize,
 ) -> Result<(DVector<f64>, DMatrix<f64>), DynamicsError> {
-    let n = q.len();
-    let (mut phi, mut jac) = (DVector::zeros(m), DMatrix::zeros(m, n));
-    if m == 0 {
-        return Ok((phi, jac));
-    }
-    let (mut qj, td) = (duals(q), Dual64::from(t));
-    let mut out = vec![Dual64::from(0.0); m];
-    for j in 0..n {
-        // ε on q_j: the ε part of φ is the column ∂φ/∂q_j
-        qj[j].eps = 1.0;
-        out.fill(Dual64::from(0.0));
-        sys.constraints(&qj, td, &mut out);
-        qj[j].eps = 0.0;
-        for (i, v) in out.iter().enumerate() {
-            jac[(i, j)] = v.eps;
-            phi[i] = v.re;
-        }
-    }
+    let td = Dual64::from(t);
+    let (phi, jac) = dual_jacobian(q, m, |qj, out| sys.constraints(qj, td, out));
     check_finite(phi.as_slice(), "constraint φ(q, t)")?;
     check_finite(jac.as_slice(), "constraint Jacobian Φ_q")?;
     Ok((phi, jac))
@@ -102,23 +113,8 @@ fn velocity_rows<C: Constraints>(
     t: f64,
     k: usize,
 ) -> Result<(DVector<f64>, DMatrix<f64>), DynamicsError> {
-    let n = q.len();
-    let (mut psi, mut a) = (DVector::zeros(k), DMatrix::zeros(k, n));
-    if k == 0 {
-        return Ok((psi, a));
-    }
-    let (qv, mut qdj, td) = (duals(q), duals(qd), Dual64::from(t));
-    let mut out = vec![Dual64::from(0.0); k];
-    for j in 0..n {
-        qdj[j].eps = 1.0;
-        out.fill(Dual64::from(0.0));
-        sys.velocity_constraints(&qv, &qdj, td, &mut out);
-        qdj[j].eps = 0.0;
-        for (i, v) in out.iter().enumerate() {
-            a[(i, j)] = v.eps;
-            psi[i] = v.re;
-        }
-    }
+    let (qv, td) = (duals(q), Dual64::from(t));
+    let (psi, a) = dual_jacobian(qd, k, |qdj, out| sys.velocity_constraints(&qv, qdj, td, out));
     check_finite(psi.as_slice(), "velocity constraint ψ(q, q̇, t)")?;
     check_finite(a.as_slice(), "velocity constraint matrix A")?;
     Ok((psi, a))

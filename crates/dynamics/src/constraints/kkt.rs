@@ -12,7 +12,7 @@ use nalgebra::{Cholesky, DMatrix, DVector, Dyn, QR};
 
 use crate::DynamicsError;
 use crate::error::check_finite;
-use crate::lagrange::SINGULAR_PIVOT_REL_TOL;
+use crate::lagrange::checked_cholesky;
 
 /// Default relative rank tolerance for constraint rows: row k counts as dependent when
 /// |R_kk| ≤ tol·‖L⁻¹gₖ‖, and as singular when ‖L⁻¹gₖ‖ ≤ tol·maxⱼ‖L⁻¹gⱼ‖.
@@ -54,7 +54,7 @@ impl KktFactor {
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`] (G's columns ≠ n), [`DynamicsError::NonFinite`],
     /// [`DynamicsError::SingularMassMatrix`] (M not positive definite to
-    /// [`SINGULAR_PIVOT_REL_TOL`]); [`DynamicsError::SingularConstraint`] for a row whose
+    /// [`crate::lagrange::SINGULAR_PIVOT_REL_TOL`]); [`DynamicsError::SingularConstraint`] for a row whose
     /// gradient vanishes; [`DynamicsError::DependentConstraint`] for the first row that
     /// depends on earlier rows (with m > n, row n at the latest).
     pub fn new(mass: &DMatrix<f64>, jacobian: &DMatrix<f64>, rank_tol: f64) -> Result<Self, DynamicsError> {
@@ -70,7 +70,7 @@ impl KktFactor {
                 valid: "0 < tol < 1",
             });
         }
-        let l = cholesky(mass)?;
+        let l = checked_cholesky(mass.clone())?;
         // Y = L⁻¹Gᵀ: row k of G in the M⁻¹ metric (|yₖ|² = gₖ M⁻¹ gₖᵀ)
         let mut y = jacobian.transpose();
         l.l_dirty().solve_lower_triangular_mut(&mut y);
@@ -143,29 +143,6 @@ pub fn solve_kkt(
     rank_tol: f64,
 ) -> Result<KktSolution, DynamicsError> {
     KktFactor::new(mass, jacobian, rank_tol)?.solve(forcing, gamma)
-}
-
-/// Cholesky of M with the pivot test of [`crate::lagrange`]: `SingularMassMatrix` when a
-/// pivot L_kk² ≤ [`SINGULAR_PIVOT_REL_TOL`]·n·max Mᵢᵢ.
-fn cholesky(mass: &DMatrix<f64>) -> Result<Cholesky<f64, Dyn>, DynamicsError> {
-    let n = mass.nrows();
-    let scale = (0..n).map(|i| mass[(i, i)].abs()).fold(0.0, f64::max);
-    let chol = Cholesky::new(mass.clone()).ok_or_else(|| DynamicsError::SingularMassMatrix {
-        detail: "Cholesky found a non-positive pivot".into(),
-    })?;
-    let low = chol.l_dirty();
-    for k in 0..n {
-        let pivot = low[(k, k)] * low[(k, k)];
-        if pivot <= SINGULAR_PIVOT_REL_TOL * n as f64 * scale {
-            return Err(DynamicsError::SingularMassMatrix {
-                detail: format!(
-                    "pivot {k} is {pivot:e}, below {:e} × max Mᵢᵢ = {scale:e}",
-                    SINGULAR_PIVOT_REL_TOL * n as f64
-                ),
-            });
-        }
-    }
-    Ok(chol)
 }
 
 /// Row-by-row rank check of Y = L⁻¹Gᵀ from its QR: the first singular or dependent row is

@@ -4,14 +4,15 @@ use nalgebra::{DMatrix, DVector, Vector3};
 use num_dual::Dual64;
 use vectrix_frames::Frame;
 
-use super::{KaneSolution, KaneSystem, duals, partial_velocities, resolve};
+use super::{KaneSolution, KaneSystem, partial_velocities, resolve};
 use crate::DynamicsError;
 use crate::constraints::DEPENDENT_ROW_REL_TOL;
+use crate::constraints::eval::{dual_jacobian, duals};
 use crate::error::{check_finite, check_len};
 use crate::lagrange::cholesky_solve;
 
-/// The dependent speeds from A_d u_d = −(A_i u_i + b) by a QR of A_dᵀ whose pivots name a
-/// row that does not determine them; returns (u, A, A_d factor).
+/// The speed constraints A u + b = 0 split as A_i u_i + A_d u_d + b = 0 and solved for the
+/// dependent speeds by a QR of A_dᵀ, whose pivots name a row that does not determine them.
 struct SpeedConstraints {
     /// −A_d⁻¹A_i (k × (p − k)).
     coupling: DMatrix<f64>,
@@ -42,45 +43,36 @@ impl SpeedConstraints {
     }
 }
 
-/// Speed constraint values and A = ∂ψ/∂u (one dual evaluation per speed), and
-/// β = ψ_q q̇ + ψ_t (one dual evaluation along (q̇, 1), u held).
+/// ψ(q, u, t) and A = ∂ψ/∂u of the speed constraints: one dual evaluation per speed.
 fn speed_rows<K: KaneSystem>(
     sys: &K,
     q: &[f64],
     u: &[f64],
-    qd: Option<&[f64]>,
     t: f64,
     k: usize,
 ) -> Result<(DVector<f64>, DMatrix<f64>), DynamicsError> {
-    let p = u.len();
-    let (qv, td, mut ur) = (duals(q), Dual64::from(t), duals(u));
-    let mut out = vec![Dual64::from(0.0); k];
-    let mut a = DMatrix::zeros(k, p);
-    let mut psi = DVector::zeros(k);
-    match qd {
-        None => {
-            for r in 0..p {
-                ur[r].eps = 1.0;
-                out.fill(Dual64::from(0.0));
-                sys.speed_constraints(&qv, &ur, td, &mut out);
-                ur[r].eps = 0.0;
-                for (i, v) in out.iter().enumerate() {
-                    a[(i, r)] = v.eps;
-                    psi[i] = v.re;
-                }
-            }
-        }
-        Some(qd) => {
-            let qf: Vec<Dual64> = q.iter().zip(qd).map(|(&x, &v)| Dual64::new(x, v)).collect();
-            sys.speed_constraints(&qf, &ur, Dual64::new(t, 1.0), &mut out);
-            for (i, v) in out.iter().enumerate() {
-                psi[i] = v.eps;
-            }
-        }
-    }
+    let (qv, td) = (duals(q), Dual64::from(t));
+    let (psi, a) = dual_jacobian(u, k, |uj, out| sys.speed_constraints(&qv, uj, td, out));
     check_finite(psi.as_slice(), "speed constraints")?;
     check_finite(a.as_slice(), "speed constraint matrix A")?;
     Ok((psi, a))
+}
+
+/// β = ψ_q q̇ + ψ_t: one dual evaluation along (q̇, 1) with u held.
+fn speed_rate<K: KaneSystem>(
+    sys: &K,
+    q: &[f64],
+    u: &[f64],
+    qd: &[f64],
+    t: f64,
+    k: usize,
+) -> Result<DVector<f64>, DynamicsError> {
+    let qf: Vec<Dual64> = q.iter().zip(qd).map(|(&x, &v)| Dual64::new(x, v)).collect();
+    let mut out = vec![Dual64::from(0.0); k];
+    sys.speed_constraints(&qf, &duals(u), Dual64::new(t, 1.0), &mut out);
+    let beta = DVector::from_iterator(k, out.iter().map(|v| v.eps));
+    check_finite(beta.as_slice(), "speed constraint rate")?;
+    Ok(beta)
 }
 
 /// Kane's equations F_r + F*_r = 0 solved for u̇ at (q, u_i, t), u_i the independent speeds
@@ -118,7 +110,7 @@ pub fn kane_accelerations<K: KaneSystem>(
     let mut u = vec![0.0; p];
     u[..p - k].copy_from_slice(u_ind);
     let speed = if k > 0 {
-        let (psi0, a) = speed_rows(sys, q, &u, None, t, k)?;
+        let (psi0, a) = speed_rows(sys, q, &u, t, k)?;
         let sc = SpeedConstraints::new(&a, p, k)?;
         let u_d = -sc.solve(&DMatrix::from_column_slice(k, 1, psi0.as_slice()));
         u[p - k..].copy_from_slice(u_d.as_slice());
@@ -136,7 +128,7 @@ pub fn kane_accelerations<K: KaneSystem>(
         return Ok(KaneSolution { u: DVector::from_vec(u), qd: DVector::from_vec(qd), ud, mass, forcing });
     };
     // u̇_d = −A_d⁻¹(A_i u̇_i + ψ_q q̇ + ψ_t): u̇ = C u̇_i + w
-    let (beta, _) = speed_rows(sys, q, &u, Some(&qd), t, k)?;
+    let beta = speed_rate(sys, q, &u, &qd, t, k)?;
     let w_d = -sc.solve(&DMatrix::from_column_slice(k, 1, beta.as_slice()));
     let mut c = DMatrix::zeros(p, p - k);
     c.view_mut((0, 0), (p - k, p - k)).fill_with_identity();

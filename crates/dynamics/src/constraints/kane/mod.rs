@@ -35,6 +35,7 @@ use vectrix_frames::{Frame, Resolve};
 use vectrix_tensor::{Scalar, Vector};
 
 use crate::DynamicsError;
+use crate::constraints::eval::duals;
 use crate::error::{check_finite, check_len};
 use crate::lagrange::MapMasses;
 
@@ -131,10 +132,6 @@ pub struct KaneSolution {
     pub mass: DMatrix<f64>,
     /// The reduced right-hand side Cᵀ(F − F*₀ − K w).
     pub forcing: DVector<f64>,
-}
-
-pub(crate) fn duals(x: &[f64]) -> Vec<Dual64> {
-    x.iter().map(|&v| Dual64::from(v)).collect()
 }
 
 pub(crate) fn resolve<T: Scalar>(v: &Vector<T>) -> Vector3<T> {
