@@ -1,11 +1,17 @@
 //! Scene benches: steps per second of the default scene (tennis-racket flip) and of a
 //! 12-link pendulum chain; the cost of a declared contact that never touches (target ≤ 1.2×
-//! the same scene without it).
+//! the same scene without it); and `scene_overhead`: one right-hand-side evaluation of a
+//! scene (`scene`) beside a hand-written right-hand side of the same system through the
+//! multibody `Model` (`direct`) for a free body, a 12-link chain and a two-body orbit
+//! (target: scene ≤ 1.2× direct).
 //!
 //! `cargo bench --bench scenes -- --warm-up-time 1 --measurement-time 3`
+//! `cargo bench --bench scenes -- scene_overhead`
 use std::hint::black_box;
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use nalgebra::Vector3;
+use vectrix::dynamics::multibody::{AbaScratch, JointWrench, Model, Pose};
 use vectrix::dynamics::scene::{DEFAULT_SCENE, Scene};
 
 /// A chain of n pin-jointed rods under gravity, every other axis ŷ (a spatial chain).
@@ -77,5 +83,118 @@ fn scenes(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, scenes);
+/// q̇ = ½ q ⊗ (0, ω) for a scalar-first unit quaternion and ω in the link frame.
+#[inline]
+fn quat_rate(q: &[f64], w: &[f64], out: &mut [f64]) {
+    out[0] = 0.5 * (-q[1] * w[0] - q[2] * w[1] - q[3] * w[2]);
+    out[1] = 0.5 * (q[0] * w[0] + q[2] * w[2] - q[3] * w[1]);
+    out[2] = 0.5 * (q[0] * w[1] + q[3] * w[0] - q[1] * w[2]);
+    out[3] = 0.5 * (q[0] * w[2] + q[1] * w[1] - q[2] * w[0]);
+}
+
+/// The hand-written right-hand sides, through the scene's own `Model`.
+struct Direct<'a> {
+    model: &'a Model,
+    aba: AbaScratch,
+    tau: Vec<f64>,
+    world: Vec<Pose>,
+    poses: Vec<Pose>,
+    wrenches: Vec<JointWrench>,
+}
+
+impl<'a> Direct<'a> {
+    fn new(model: &'a Model) -> Self {
+        Self {
+            model,
+            aba: model.aba_scratch(),
+            tau: vec![0.0; model.nv()],
+            world: Vec::new(),
+            poses: Vec::new(),
+            wrenches: vec![JointWrench::default(); model.links()],
+        }
+    }
+
+    /// A free body: q = (x, q), v = (ẋ, ω); no loads.
+    fn free_body(&mut self, y: &[f64], out: &mut [f64]) {
+        let (q, v) = y.split_at(7);
+        let (qd, vd) = out.split_at_mut(7);
+        qd[..3].copy_from_slice(&v[..3]);
+        quat_rate(&q[3..7], &v[3..6], &mut qd[3..7]);
+        self.model.aba_into(q, v, &self.tau, None, vd, &mut self.aba).expect("aba");
+    }
+
+    /// A chain of pins under gravity (the model's base acceleration): q̇ = v.
+    fn chain(&mut self, y: &[f64], out: &mut [f64]) {
+        let n = self.model.nq();
+        let (q, v) = y.split_at(n);
+        let (qd, vd) = out.split_at_mut(n);
+        qd.copy_from_slice(v);
+        self.model.aba_into(q, v, &self.tau, None, vd, &mut self.aba).expect("aba");
+    }
+
+    /// Two free bodies (centres at the link origins) attracting each other: f = G m₁m₂ r/|r|³.
+    fn orbit(&mut self, y: &[f64], out: &mut [f64], g: f64, m: [f64; 2]) {
+        let (q, v) = y.split_at(14);
+        let (qd, vd) = out.split_at_mut(14);
+        for b in 0..2 {
+            qd[7 * b..7 * b + 3].copy_from_slice(&v[6 * b..6 * b + 3]);
+            quat_rate(&q[7 * b + 3..7 * b + 7], &v[6 * b + 3..6 * b + 6], &mut qd[7 * b + 3..7 * b + 7]);
+        }
+        self.model.poses_into(q, &mut self.world, &mut self.poses);
+        let r: Vector3<f64> = self.poses[1].1 - self.poses[0].1;
+        let f = r * (g * m[0] * m[1] / r.norm().powi(3));
+        self.wrenches[0] = JointWrench { force: self.poses[0].0 * f, moment: Vector3::zeros() };
+        self.wrenches[1] = JointWrench { force: self.poses[1].0 * (-f), moment: Vector3::zeros() };
+        self.model.aba_into(q, v, &self.tau, Some(&self.wrenches), vd, &mut self.aba).expect("aba");
+    }
+}
+
+const FREE_BODY: &str = "name = \"free\"\nduration = 1.0\n[[bodies]]\nname = \"b\"\njoint = { type = \"free\" }\n\
+mass = { shape = \"box\", mass = 3.0, sides = [0.3, 0.6, 1.0] }\nv = [0.1, 0.0, 0.0, 1.0, 0.5, 2.0]\n";
+
+const TWO_BODIES: &str = "name = \"two\"\nduration = 1.0\n[[bodies]]\nname = \"a\"\njoint = { type = \"free\" }\n\
+mass = { shape = \"sphere\", mass = 1.0, radius = 0.01 }\nq = [1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]\n\
+v = [0.0, 0.5, 0.0, 0.0, 0.0, 0.0]\n[[bodies]]\nname = \"b\"\njoint = { type = \"free\" }\n\
+mass = { shape = \"sphere\", mass = 2.0, radius = 0.01 }\nq = [-0.5, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]\n\
+v = [0.0, -0.25, 0.0, 0.0, 0.0, 0.0]\n[[effects]]\ntype = \"mutual_gravitation\"\ng = 1.0\n";
+
+fn scene_overhead(c: &mut Criterion) {
+    let mut g = c.benchmark_group("scene_overhead");
+    let free = Scene::from_toml(FREE_BODY, "free").expect("free body");
+    let chain12 = Scene::from_toml(&chain(12), "chain").expect("chain");
+    let two = Scene::from_toml(TWO_BODIES, "two").expect("two bodies");
+    type Hand = fn(&mut Direct, &[f64], &mut [f64]);
+    let cases: [(&str, &Scene, Hand); 3] = [
+        ("free_body", &free, |d, y, o| d.free_body(y, o)),
+        ("chain12", &chain12, |d, y, o| d.chain(y, o)),
+        ("two_body_orbit", &two, |d, y, o| d.orbit(y, o, 1.0, [1.0, 2.0])),
+    ];
+    for (name, scene, hand) in cases {
+        let y = scene.initial_state();
+        let mut out = vec![0.0; y.len()];
+        let mut out2 = vec![0.0; y.len()];
+        // the two right-hand sides agree before they are timed
+        let mut rhs = scene.rhs();
+        rhs.eval(0.0, &y, &mut out).expect("scene rhs");
+        let mut d = Direct::new(scene.model());
+        hand(&mut d, &y, &mut out2);
+        let err = out.iter().zip(&out2).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        assert!(err <= 1e-12 * out.iter().fold(1.0f64, |m, x| m.max(x.abs())), "{name}: {err:e}");
+        g.bench_function(BenchmarkId::new("direct", name), |b| {
+            b.iter(|| {
+                hand(&mut d, black_box(&y), &mut out2);
+                black_box(&out2);
+            })
+        });
+        g.bench_function(BenchmarkId::new("scene", name), |b| {
+            b.iter(|| {
+                rhs.eval(0.0, black_box(&y), &mut out).expect("scene rhs");
+                black_box(&out);
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, scenes, scene_overhead);
 criterion_main!(benches);

@@ -71,16 +71,15 @@ fn four_bar_table() {
             let mut integrator = ConstrainedIntegrator::new(Adaptive::dopri5().rtol(rtol).atol(rtol));
             integrator.project_steps = project;
             let run = integrator.integrate(&MapForm(&fb), &q0, &qd0, 0.0, 60.0).expect("runs");
-            let e_err = (0..run.solution.t.len())
-                .map(|i| ((energy(run.q(i), run.qd(i)) - e0) / e0).abs())
-                .fold(0.0, f64::max);
+            let e_err =
+                (0..run.t.len()).map(|i| ((energy(run.q(i), run.qd(i)) - e0) / e0).abs()).fold(0.0, f64::max);
             let v = run.max_constraint_violation;
             println!(
                 "| {rtol:.0e} | {} | {:.1e} | {:.1e} | {e_err:.1e} | {} | {} |",
                 if project { "every step" } else { "none" },
                 v.position,
                 v.velocity,
-                run.solution.work.fevals,
+                run.work.fevals,
                 run.projections
             );
         }

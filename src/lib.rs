@@ -14,6 +14,8 @@
 
 pub use nalgebra;
 pub use num_dual;
+#[cfg(feature = "uom")]
+pub use uom;
 pub use vectrix_dynamics as dynamics;
 pub use vectrix_flight as flight;
 pub use vectrix_frames as frames;
@@ -24,6 +26,7 @@ pub use vectrix_plot as plot;
 pub use vectrix_rotation as rotation;
 pub use vectrix_statics as statics;
 pub use vectrix_tensor as tensor;
+pub mod units;
 
 /// Everything for notebooks and applications: `use vectrix::prelude::*;`.
 #[allow(unused_imports)] // layers still in progress export empty preludes

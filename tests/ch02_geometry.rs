@@ -12,5 +12,8 @@ mod matrices;
 #[path = "ch02/nonstandard.rs"]
 mod nonstandard;
 
+#[path = "ch02/problems.rs"]
+mod problems;
+
 #[path = "ch02/rotations.rs"]
 mod rotations;

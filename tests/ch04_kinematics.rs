@@ -25,5 +25,8 @@ mod centres;
 #[path = "ch04/examples.rs"]
 mod examples;
 
+#[path = "ch04/problems.rs"]
+mod problems;
+
 #[path = "ch04/attitude.rs"]
 mod attitude;

@@ -19,5 +19,8 @@ mod wrench;
 #[path = "ch06/elements.rs"]
 mod elements;
 
+#[path = "ch06/problems.rs"]
+mod problems;
+
 #[path = "ch06/prop.rs"]
 mod prop;

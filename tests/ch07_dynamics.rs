@@ -20,6 +20,12 @@ mod examples;
 #[path = "ch07/problems.rs"]
 mod problems;
 
+#[path = "ch07/theory.rs"]
+mod theory;
+
+#[path = "ch07/link.rs"]
+mod link;
+
 #[path = "ch07/collision.rs"]
 mod collision;
 

@@ -13,7 +13,7 @@ use vectrix::ode::{Adaptive, GaussLegendre};
 use vectrix::prelude::*;
 use vectrix::statics::{MassProperties, Point, Spring, UniformGravity, Wrench};
 
-use support::{EPS, assert_close, triple};
+use support::{EPS, assert_abs, assert_rel, triple};
 
 /// (8.1.5): "T_{/w} = T_{/c} + ½m|v_c|²" and (8.1.6): "T_{/c} = ½Σ_{i<j}(m_im_j/m_B)|v_ij|²".
 #[test]
@@ -28,7 +28,7 @@ fn eq_8_1_6_kinetic_energy_about_centre_from_relative_velocities() {
     let v_c = parts.iter().fold(Vector::zero(), |s, (m, v)| s + *v * *m) / mb;
     let t = particles_kinetic_energy(&parts);
     let t_c = kinetic_energy_about_centre_pairwise(&parts);
-    assert_close(t, t_c + 0.5 * mb * v_c.norm_squared(), 16.0 * EPS);
+    assert_rel(t, t_c + 0.5 * mb * v_c.norm_squared(), 16.0 * EPS);
 }
 
 /// (8.2.1) and the work–energy principle: a particle pushed by a constant force gains
@@ -43,7 +43,7 @@ fn eq_8_2_1_work_equals_kinetic_energy_change() {
         (0..=20).map(|k| k as f64 * 0.1).map(|t| (f, Point::at(v0 * t + f * (0.5 * t * t / m)))).collect();
     let w = work_along_path(&samples);
     let v1 = v0 + f * (2.0 / m);
-    assert_close(w, 0.5 * m * (v1.norm_squared() - v0.norm_squared()), 64.0 * EPS);
+    assert_rel(w, 0.5 * m * (v1.norm_squared() - v0.norm_squared()), 64.0 * EPS);
 }
 
 /// (8.2.4–6): the power of a wrench on a rigid body, f·v_c + M_{/c}·ω, is dT/dt: with the
@@ -66,7 +66,7 @@ fn eq_8_2_4_power_is_rate_of_kinetic_energy() {
     let (a_c, alpha) = body.accelerations(&w).unwrap();
     let t_dot =
         props.mass() * body.v_c.dot(&a_c) + body.omega.dot(&props.inertia_about_centre().apply(&alpha));
-    assert_close(power(&w.force, &w.moment, &body.v_c, &body.omega), t_dot, 64.0 * EPS);
+    assert_abs(power(&w.force, &w.moment, &body.v_c, &body.omega), t_dot, 64.0 * EPS);
 }
 
 /// Fact 8.3.2, corrected: uniform gravity is potential with U = −m r_c·g (8.3.9) and
@@ -85,8 +85,8 @@ fn fact_8_3_2_uniform_gravity_force_is_plus_mg() {
         *gk = g.potential(m, &a.vector(r)).eps;
     }
     // f = −∇U = m g
-    assert_close(-grad[0], 0.0, EPS);
-    assert_close(-grad[2], 2.5 * -9.81, 4.0 * EPS);
+    assert_abs(-grad[0], 0.0, EPS);
+    assert_rel(-grad[2], 2.5 * -9.81, 4.0 * EPS);
 }
 
 /// (8.3.12) and the corrected (8.3.13): "U = ½k(|r| − d)² = ½k(|r|² − 2d|r| + d²)" (the printed
@@ -98,14 +98,14 @@ fn eq_8_3_13_spring_potential_corrected() {
     let spring = Spring::new(k, d).unwrap();
     let r = a.vector([0.6, -0.8, 1.2]);
     let n = r.norm();
-    assert_close(spring.potential(&r), 0.5 * k * (n * n - 2.0 * d * n + d * d), 8.0 * EPS);
+    assert_rel(spring.potential(&r), 0.5 * k * (n * n - 2.0 * d * n + d * d), 8.0 * EPS);
     let ad = Frame::<Dual64>::identity();
     let sd = Spring::new(Dual64::from(k), Dual64::from(d)).unwrap();
     let f = spring.force(&r).unwrap().resolve(&a);
     for i in 0..3 {
         let mut c = [Dual64::from(0.6), Dual64::from(-0.8), Dual64::from(1.2)];
         c[i].eps = 1.0;
-        assert_close(-sd.potential(&ad.vector(c)).eps, f[i], 16.0 * EPS);
+        assert_rel(-sd.potential(&ad.vector(c)).eps, f[i], 16.0 * EPS);
     }
 }
 
@@ -129,11 +129,13 @@ fn problem_8_5_1_free_dashpot_network_settles_to_centre_velocity() {
     let y0 = SVector::<f64, 6>::from_column_slice(&[0.0, 0.0, 0.0, v0[0], v0[1], v0[2]]);
     let sol = Adaptive::dop853().rtol(1e-11).atol(1e-13).solve(f, 0.0, &y0, 40.0).unwrap();
     let y = sol.last();
+    // DOP853 (rtol 1e-11, atol 1e-13) to t = 40, where the dashpots have damped the relative
+    // motion to well below the integration error
     for i in 3..6 {
-        assert_close(y[i], v_c, 1e-9);
+        assert_abs(y[i], v_c, 1e-9);
     }
     let t = 0.5 * (1.0 * y[3] * y[3] + 2.0 * y[4] * y[4] + 0.5 * y[5] * y[5]);
-    assert_close(t, 0.5 * mb * v_c * v_c, 1e-9);
+    assert_abs(t, 0.5 * mb * v_c * v_c, 1e-9);
 }
 
 /// Fact 8.4.1: "E = T + U is constant if all forces are potential": a torque-free rigid body
@@ -185,7 +187,8 @@ fn fact_8_4_1_energy_constant_along_lagrange_flow() {
     let sol = Adaptive::dop853().rtol(1e-12).atol(1e-13).solve(f, 0.0, &y0, 50.0).unwrap();
     let e0 = energy(&Pendulum, &[2.5], &[0.0], 0.0).unwrap();
     for y in &sol.y {
-        assert_close(energy(&Pendulum, &[y[0]], &[y[1]], 0.0).unwrap(), e0, 1e-9);
+        // DOP853 at rtol 1e-12 over 50 time units: the energy drifts by far less than 1e-9
+        assert_rel(energy(&Pendulum, &[y[0]], &[y[1]], 0.0).unwrap(), e0, 1e-9);
     }
 }
 

@@ -34,3 +34,9 @@ mod kane;
 
 #[path = "ch09/four_bar.rs"]
 mod four_bar;
+
+#[path = "ch09/problems.rs"]
+mod problems;
+
+#[path = "ch09/sections.rs"]
+mod sections;

@@ -6,12 +6,8 @@
 mod support;
 
 use nalgebra::{Matrix3, Vector3};
-use support::{EPS, assert_close};
+use support::{EPS, assert_abs, assert_printed, assert_printed_slice, assert_rel};
 use vectrix::flight::*;
-
-fn printed(digits: i32) -> f64 {
-    0.5 * 10f64.powi(-digits)
-}
 
 fn deg(x: f64) -> f64 {
     x.to_radians()
@@ -22,36 +18,36 @@ fn problem_10_11_1_alpha_beta_and_stability_wind_velocity() {
     // P10.11.1: V = (72, −6.3, −43) m/s ⇒ α = −30.847°, β = −4.296°, V|_S = (83.863, −6.3, 0),
     // V|_W = (84.099, 0, 0).
     let a: AeroAngles = AeroAngles::from_body_velocity([72.0, -6.3, -43.0]);
-    assert_close(a.alpha.to_degrees(), -30.847, printed(3));
-    assert_close(a.beta.to_degrees(), -4.296, printed(3));
+    assert_printed(a.alpha.to_degrees(), "-30.847");
+    assert_printed(a.beta.to_degrees(), "-4.296");
     let v = Vector3::new(72.0, -6.3, -43.0);
     let v_s = o_s_ac(a.alpha) * v;
-    for (g, w) in v_s.iter().zip([83.863, -6.3, 0.0]) {
-        assert_close(*g, w, printed(3));
-    }
+    // the zero components are exact in the mathematics: checked at ε times |V|
+    assert_printed_slice(&v_s.as_slice()[..2], &["83.863", "-6.3"]);
+    assert_abs(v_s[2], 0.0, 8.0 * EPS * v.norm());
     let v_w = o_w_ac(a.alpha, a.beta) * v;
-    for (g, w) in v_w.iter().zip([84.099, 0.0, 0.0]) {
-        assert_close(*g, w, printed(3));
-    }
+    assert_printed(v_w[0], "84.099");
+    assert_abs(v_w[1], 0.0, 8.0 * EPS * v.norm());
+    assert_abs(v_w[2], 0.0, 8.0 * EPS * v.norm());
 }
 
 #[test]
 fn problem_10_11_2_and_3_body_velocity_from_alpha_beta() {
     // P10.11.2: α = 14°, V = 94 ⇒ V|_AC = (91.208, 0, 22.741). P10.11.3: α = 10°, β = −19°,
-    // V = 80 ⇒ V|_AC = (74.492, −26.046, 13.135), V|_S = (75.642, −26.046, 0).
+    // V = 80 ⇒ V|_AC = (74.492, −26.045, 13.135), V|_S = (75.641, −26.045, 0).
     let a = AeroAngles { airspeed: 94.0, alpha: deg(14.0), beta: 0.0 };
-    for (g, w) in a.body_velocity().iter().zip([91.208, 0.0, 22.741]) {
-        assert_close(*g, w, printed(3));
-    }
+    let v = a.body_velocity();
+    assert_printed(v[0], "91.208");
+    assert_eq!(v[1], 0.0, "β = 0: no side velocity");
+    assert_printed(v[2], "22.741");
     let a = AeroAngles { airspeed: 80.0, alpha: deg(10.0), beta: deg(-19.0) };
     let v = a.body_velocity();
-    for (g, w) in v.iter().zip([74.492, -26.046, 13.135]) {
-        assert_close(*g, w, printed(3));
-    }
+    // V sin β = 80 sin(−19°) = −26.04545 and V_S,x = 75.64149: the notes' −26.046 and 75.642
+    // round twice (via four decimals); three decimals give −26.045 and 75.641.
+    assert_printed_slice(&v, &["74.492", "-26.045", "13.135"]);
     let v_s = o_s_ac(a.alpha) * Vector3::from(v);
-    for (g, w) in v_s.iter().zip([75.642, -26.046, 0.0]) {
-        assert_close(*g, w, printed(3));
-    }
+    assert_printed_slice(&v_s.as_slice()[..2], &["75.641", "-26.045"]);
+    assert_abs(v_s[2], 0.0, 8.0 * EPS * 80.0); // exact zero, at ε times V
 }
 
 #[test]
@@ -60,13 +56,9 @@ fn problem_10_11_4_gravity_in_aircraft_and_stability_frames() {
     // g|_S = (−3.4244, −3.9709, 8.2793) m/s².
     let e = Euler321::new(deg(22.0), deg(5.0), deg(-24.0));
     let g_ac = e.o_ac_e() * Vector3::new(0.0, 0.0, 9.8);
-    for (g, w) in g_ac.iter().zip([-0.8541, -3.9709, 8.9187]) {
-        assert_close(*g, w, printed(4));
-    }
+    assert_printed_slice(g_ac.as_slice(), &["-0.8541", "-3.9709", "8.9187"]);
     let g_s = o_s_ac(deg(-17.0)) * g_ac;
-    for (g, w) in g_s.iter().zip([-3.4244, -3.9709, 8.2793]) {
-        assert_close(*g, w, printed(4));
-    }
+    assert_printed_slice(g_s.as_slice(), &["-3.4244", "-3.9709", "8.2793"]);
 }
 
 #[test]
@@ -76,11 +68,9 @@ fn problem_10_11_5_position_in_aircraft_frame() {
     let e = Euler321::new(deg(62.0), deg(7.0), deg(-12.0));
     let r_e = Vector3::new(6.2, -14.1, 65.2);
     let r_ac = e.o_ac_e() * r_e;
-    for (g, w) in r_ac.iter().zip([-17.414, -25.043, 59.648]) {
-        assert_close(*g, w, printed(3));
-    }
-    assert_close(r_ac.norm(), 66.995, printed(3));
-    assert_close(r_e.norm(), r_ac.norm(), 8.0 * EPS);
+    assert_printed_slice(r_ac.as_slice(), &["-17.414", "-25.043", "59.648"]);
+    assert_printed(r_ac.norm(), "66.995");
+    assert_rel(r_e.norm(), r_ac.norm(), 8.0 * EPS);
 }
 
 #[test]
@@ -89,16 +79,12 @@ fn problem_10_11_6_roll_changes_alpha_and_beta() {
     // roll V_AC = (75.661, 24.999, −29.588), α = −21.358°, β = 17.104°.
     let a = AeroAngles { airspeed: 85.0, alpha: deg(-13.0), beta: deg(24.0) };
     let v = a.body_velocity();
-    for (g, w) in v.iter().zip([75.661, 34.573, -17.468]) {
-        assert_close(*g, w, printed(3));
-    }
+    assert_printed_slice(&v, &["75.661", "34.573", "-17.468"]);
     let v2 = o1(deg(23.0)) * Vector3::from(v);
-    for (g, w) in v2.iter().zip([75.661, 24.999, -29.588]) {
-        assert_close(*g, w, printed(3));
-    }
+    assert_printed_slice(v2.as_slice(), &["75.661", "24.999", "-29.588"]);
     let a2: AeroAngles = AeroAngles::from_body_velocity([v2[0], v2[1], v2[2]]);
-    assert_close(a2.alpha.to_degrees(), -21.358, printed(3));
-    assert_close(a2.beta.to_degrees(), 17.104, printed(3));
+    assert_printed(a2.alpha.to_degrees(), "-21.358");
+    assert_printed(a2.beta.to_degrees(), "17.104");
 }
 
 #[test]
@@ -108,12 +94,11 @@ fn problem_10_11_7_body_rates_and_inverse() {
     let e = Euler321::new(deg(14.0), deg(-29.0), deg(-52.0));
     let rates = [deg(16.0), deg(-7.0), deg(19.0)];
     let pqr = body_rates(&e, rates);
-    for (g, w) in pqr.iter().zip([25.2114, -17.4046, 4.7148]) {
-        assert_close(g.to_degrees(), w, printed(4));
-    }
+    let pqr_deg: Vec<f64> = pqr.iter().map(|r| r.to_degrees()).collect();
+    assert_printed_slice(&pqr_deg, &["25.2114", "-17.4046", "4.7148"]);
     let back = euler_rates(&e, pqr).unwrap();
     for (g, w) in back.iter().zip(rates) {
-        assert_close(*g, w, 8.0 * EPS);
+        assert_abs(*g, w, 8.0 * EPS);
     }
 }
 
@@ -125,10 +110,10 @@ fn eq_10_6_18_alpha_beta_defined_at_zero_speed() {
     assert_eq!((a.airspeed, a.alpha, a.beta), (0.0, 0.0, 0.0));
     let a: AeroAngles = AeroAngles::from_body_velocity([0.0, 5.0, 0.0]);
     assert_eq!(a.alpha, 0.0);
-    assert_close(a.beta, std::f64::consts::FRAC_PI_2, 2.0 * EPS);
+    assert_rel(a.beta, std::f64::consts::FRAC_PI_2, 2.0 * EPS);
     // flying backwards: α = π (never −π for W = +0)
     let a: AeroAngles = AeroAngles::from_body_velocity([-10.0, 0.0, 0.0]);
-    assert_close(a.alpha, std::f64::consts::PI, 2.0 * EPS);
+    assert_rel(a.alpha, std::f64::consts::PI, 2.0 * EPS);
 }
 
 #[test]
@@ -142,7 +127,7 @@ fn eq_10_9_9_gimbal_lock_is_an_error_quaternion_is_not() {
     assert!(qd.iter().all(|v| v.is_finite()));
     // q·q̇ = 0: the rate keeps |q| = 1
     let dot: f64 = q.iter().zip(qd).map(|(a, b)| a * b).sum();
-    assert_close(dot, 0.0, 8.0 * EPS);
+    assert_abs(dot, 0.0, 8.0 * EPS);
 }
 
 #[test]
@@ -151,9 +136,9 @@ fn eq_10_3_16_orientation_matrix_entries() {
     // quaternion of the same angles gives the same matrix.
     let e = Euler321::new(0.7, -0.4, 1.1);
     let o = e.o_ac_e();
-    assert_close(o[(0, 2)], -(-0.4f64).sin(), 4.0 * EPS);
-    assert_close(o[(1, 2)], 1.1f64.sin() * (-0.4f64).cos(), 4.0 * EPS);
-    assert_close(o[(2, 2)], 1.1f64.cos() * (-0.4f64).cos(), 4.0 * EPS);
+    assert_abs(o[(0, 2)], -(-0.4f64).sin(), 4.0 * EPS);
+    assert_abs(o[(1, 2)], 1.1f64.sin() * (-0.4f64).cos(), 4.0 * EPS);
+    assert_abs(o[(2, 2)], 1.1f64.cos() * (-0.4f64).cos(), 4.0 * EPS);
     let oq = orientation_from_quaternion(quaternion_from_euler321(&e));
     assert!((o - oq).amax() <= 8.0 * EPS);
     assert!((o * o.transpose() - Matrix3::identity()).amax() <= 8.0 * EPS);
@@ -166,10 +151,10 @@ fn eq_10_9_18_determinant_is_cos_gamma_and_10_9_20_22_invert_it() {
     // is the identity, with α̇ and β̇ entering through (10.9.17).
     for (alpha, beta, mu, gamma) in [(0.3, -0.2, 0.7, 0.4), (-0.1, 0.5, -2.0, -1.2), (0.0, 0.0, 0.0, 0.0)] {
         let w = wind_angle_rate_matrix(alpha, beta, mu, gamma);
-        assert_close(w.determinant(), f64::cos(gamma), 16.0 * EPS);
+        assert_abs(w.determinant(), f64::cos(gamma), 16.0 * EPS);
         // columns are unit vectors (10.9.14–16)
         for j in 0..3 {
-            assert_close(w.column(j).norm(), 1.0, 8.0 * EPS);
+            assert_abs(w.column(j).norm(), 1.0, 8.0 * EPS);
         }
         let aero = AeroAngles { airspeed: 100.0, alpha, beta };
         let path = FlightPathAngles { eta: 0.9, gamma, mu };
@@ -178,7 +163,7 @@ fn eq_10_9_18_determinant_is_cos_gamma_and_10_9_20_22_invert_it() {
         let pqr = body_rates_from_wind_angle_rates(&aero, &path, rates, alpha_dot, beta_dot);
         let back = wind_angle_rates(&aero, &path, pqr, alpha_dot, beta_dot).unwrap();
         for (b, r) in back.iter().zip(rates) {
-            assert_close(*b, r, 32.0 * EPS / f64::cos(gamma));
+            assert_abs(*b, r, 32.0 * EPS / f64::cos(gamma));
         }
     }
 }
@@ -320,3 +305,9 @@ mod prop {
         }
     }
 }
+
+#[path = "ch10/problems.rs"]
+mod problems;
+
+#[path = "ch10/sections.rs"]
+mod sections;

@@ -20,7 +20,7 @@ fn cli(args: &[&str]) -> Result<String, String> {
     let mut out = Vec::new();
     let r = run_with_args(std::iter::once("vectrix").chain(args.iter().copied()), &mut out);
     let text = String::from_utf8_lossy(&out).to_string();
-    r.map(|()| text).map_err(|e| e.to_string())
+    r.map(|_| text).map_err(|e| e.to_string())
 }
 
 fn example(name: &str) -> String {
@@ -47,7 +47,14 @@ fn run_default_scene_writes_complete_output() {
     assert!(out.contains("tennis_racket") && out.contains("energy"), "{out}");
     let d = dir.join("tennis_racket");
     let csv = std::fs::read_to_string(d.join("trajectory.csv")).unwrap();
-    assert!(csv.starts_with("t,omega_body:racket.x,omega_body:racket.y,omega_body:racket.z,energy"));
+    // every column carries its SI unit
+    assert!(
+        csv.starts_with(
+            "t [s],omega_body:racket.x [rad/s],omega_body:racket.y [rad/s],omega_body:racket.z [rad/s],energy [J]"
+        ),
+        "{}",
+        csv.lines().next().unwrap_or("")
+    );
     assert_eq!(csv.lines().count(), 1 + 801);
     // summary.json: three checked invariants, each with a small relative drift
     let summary = std::fs::read_to_string(d.join("summary.json")).unwrap();
@@ -105,15 +112,18 @@ fn sweep_runs_every_value() {
     let dir = temp_dir("sweep");
     let scene = short_copy(&dir, "spring_dashpot_chain", 0.5, 10);
     let o = dir.join("out");
-    let out = cli(&["sweep", &scene, "--param", "effects.0.k=1,2,4", "--out", o.to_str().unwrap()]).unwrap();
-    assert_eq!(out.lines().filter(|l| l.starts_with("| effects.0.k=")).count(), 3, "{out}");
-    for k in ["1", "2", "4"] {
-        assert!(
-            o.join(format!("spring_dashpot_chain-sweep/spring_dashpot_chain_effects_0_k_{k}/trajectory.csv"))
-                .exists(),
-            "{k}"
-        );
+    let out =
+        cli(&["sweep", &scene, "--quiet", "--param", "effects.0.k=1,2,4", "--out", o.to_str().unwrap()])
+            .unwrap();
+    assert_eq!(out.lines().filter(|l| l.contains("| effects.0.k=")).count(), 3, "{out}");
+    let sweep = o.join("spring_dashpot_chain-sweep");
+    for k in 0..3 {
+        assert!(sweep.join(format!("run-{k:03}/trajectory.csv")).exists(), "{k}");
     }
+    // one row per run in sweep.csv, with the parameter values
+    let csv = std::fs::read_to_string(sweep.join("sweep.csv")).unwrap();
+    assert!(csv.starts_with("run,effects.0.k,complete,"), "{csv}");
+    assert_eq!(csv.lines().count(), 4, "{csv}");
     let e = cli(&["sweep", &scene, "--param", "effects.0.nope=1"]).unwrap_err();
     assert!(e.contains("nope"), "{e}");
     let _ = std::fs::remove_dir_all(&dir);

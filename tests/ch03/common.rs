@@ -6,7 +6,7 @@ use nalgebra::{DMatrix, Matrix3};
 use proptest::prelude::*;
 use vectrix::prelude::*;
 
-use crate::support::{EPS, assert_close_slice};
+use crate::support::{EPS, assert_abs_slice, assert_rel_slice};
 
 /// Tolerance for O(1) data after a few dozen operations: 64 ε.
 pub const TOL: f64 = 64.0 * EPS;
@@ -16,23 +16,42 @@ pub fn flat(m: &DMatrix<f64>) -> Vec<f64> {
     m.transpose().iter().copied().collect()
 }
 
-/// Asserts two tensors agree component-wise (resolved in frame `a`) within `tol`.
+/// Asserts two tensors agree (same type): max |got − want| ≤ tol over the components in `a`.
 #[track_caller]
-pub fn assert_tensor_eq(got: &Tensor, want: &Tensor, a: &Frame, tol: f64) {
+pub fn assert_tensor_abs(got: &Tensor, want: &Tensor, a: &Frame, tol: f64) {
     assert_eq!((got.p(), got.q()), (want.p(), want.q()), "types differ");
-    assert_close_slice(&flat(&got.resolve(a)), &flat(&want.resolve(a)), tol);
+    assert_abs_slice(&flat(&got.resolve(a)), &flat(&want.resolve(a)), tol);
 }
 
-/// Asserts two vectors agree within `tol` (resolved in `a`).
+/// Asserts two tensors agree (same type), relative to the largest component: max |got − want| ≤ tol·max|want| over the components in `a`.
 #[track_caller]
-pub fn assert_vec_eq(got: &Vector, want: &Vector, a: &Frame, tol: f64) {
-    assert_close_slice(got.resolve(a).as_slice(), want.resolve(a).as_slice(), tol);
+pub fn assert_tensor_rel(got: &Tensor, want: &Tensor, a: &Frame, tol: f64) {
+    assert_eq!((got.p(), got.q()), (want.p(), want.q()), "types differ");
+    assert_rel_slice(&flat(&got.resolve(a)), &flat(&want.resolve(a)), tol);
 }
 
-/// Asserts two dyadics agree within `tol` (resolved in `a`).
+/// Asserts two vectors agree: max |got − want| ≤ tol over the components in `a`.
 #[track_caller]
-pub fn assert_dyadic_eq(got: &Dyadic, want: &Dyadic, a: &Frame, tol: f64) {
-    assert_close_slice(got.resolve(a).as_slice(), want.resolve(a).as_slice(), tol);
+pub fn assert_vec_abs(got: &Vector, want: &Vector, a: &Frame, tol: f64) {
+    assert_abs_slice(got.resolve(a).as_slice(), want.resolve(a).as_slice(), tol);
+}
+
+/// Asserts two vectors agree, relative to the largest component: max |got − want| ≤ tol·max|want| over the components in `a`.
+#[track_caller]
+pub fn assert_vec_rel(got: &Vector, want: &Vector, a: &Frame, tol: f64) {
+    assert_rel_slice(got.resolve(a).as_slice(), want.resolve(a).as_slice(), tol);
+}
+
+/// Asserts two dyadics agree: max |got − want| ≤ tol over the components in `a`.
+#[track_caller]
+pub fn assert_dyadic_abs(got: &Dyadic, want: &Dyadic, a: &Frame, tol: f64) {
+    assert_abs_slice(got.resolve(a).as_slice(), want.resolve(a).as_slice(), tol);
+}
+
+/// Asserts two dyadics agree, relative to the largest entry: max |got − want| ≤ tol·max|want| over the components in `a`.
+#[track_caller]
+pub fn assert_dyadic_rel(got: &Dyadic, want: &Dyadic, a: &Frame, tol: f64) {
+    assert_rel_slice(got.resolve(a).as_slice(), want.resolve(a).as_slice(), tol);
 }
 
 /// Components [s, x₁, x₂, x₃, β₁, β₂, β₃, t] of a multivector in frame `a`, with the bivector
@@ -43,10 +62,16 @@ pub fn mv_components(m: &Multivector, a: &Frame) -> [f64; 8] {
     [m.scalar_part(), x[0], x[1], x[2], b[0], b[1], b[2], m.trivector_part().coefficient()]
 }
 
-/// Asserts two multivectors agree within `tol` (components in `a`).
+/// Asserts two multivectors agree: max |got − want| ≤ tol over the components in `a`.
 #[track_caller]
-pub fn assert_mv_eq(got: &Multivector, want: &Multivector, a: &Frame, tol: f64) {
-    assert_close_slice(&mv_components(got, a), &mv_components(want, a), tol);
+pub fn assert_mv_abs(got: &Multivector, want: &Multivector, a: &Frame, tol: f64) {
+    assert_abs_slice(&mv_components(got, a), &mv_components(want, a), tol);
+}
+
+/// Asserts two multivectors agree, relative to the largest component: max |got − want| ≤ tol·max|want| over the components in `a`.
+#[track_caller]
+pub fn assert_mv_rel(got: &Multivector, want: &Multivector, a: &Frame, tol: f64) {
+    assert_rel_slice(&mv_components(got, a), &mv_components(want, a), tol);
 }
 
 /// The multivector s + x + 𝒥β + t𝒥 from components in frame `a`.

@@ -5,7 +5,7 @@ use nalgebra::{DMatrix, Matrix3};
 use vectrix::prelude::*;
 
 use crate::common::*;
-use crate::support::assert_close;
+use crate::support::{assert_abs, assert_rel};
 
 fn frame() -> Frame {
     Frame::new()
@@ -18,14 +18,14 @@ fn eq_3_1_9_metric_is_the_dot_product() {
     let (x, y) = (a.vector([1.0, -2.0, 0.5]), a.vector([3.0, 0.25, -4.0]));
     let g = Tensor::metric();
     assert_eq!((g.p(), g.q()), (0, 2));
-    assert_close(g.eval(&[], &[x, y]).unwrap(), x.dot(&y), TOL);
+    assert_abs(g.eval(&[], &[x, y]).unwrap(), x.dot(&y), TOL);
 }
 
 #[test]
 fn eq_3_1_12_identity_tensor_is_the_identity_dyadic() {
     // (3.1.12), (3.1.24): Σ ê_i⊗ê′_i = I, the identity physical matrix.
     let a = frame();
-    assert_dyadic_eq(&Tensor::identity().to_dyadic().unwrap(), &Dyadic::identity(), &a, 0.0);
+    assert_dyadic_abs(&Tensor::identity().to_dyadic().unwrap(), &Dyadic::identity(), &a, 0.0);
 }
 
 #[test]
@@ -38,7 +38,7 @@ fn eq_3_1_14_evaluation_of_a_product_tensor() {
     let y = [a.vector([1.5, 0.5, -0.5]), a.vector([0.2, 0.3, 0.4])];
     let t = Tensor::from_factors(&w, &z).unwrap();
     let want = (x[0] * w[0]) * (x[1] * w[1]) * (z[0] * y[0]) * (z[1] * y[1]);
-    assert_close(t.eval(&x, &y).unwrap(), want, TOL);
+    assert_rel(t.eval(&x, &y).unwrap(), want, TOL);
 }
 
 #[test]
@@ -50,17 +50,17 @@ fn eq_3_1_15_coform_keeps_order_within_groups() {
     let z = a.covector([0.5, -1.0, 4.0]);
     let wz = Tensor::from_factors(&[w1], &[z]).unwrap();
     let zw = Tensor::from_factors(&[z.coform()], &[w1.coform()]).unwrap();
-    assert_tensor_eq(&wz.coform(), &zw, &a, 0.0);
+    assert_tensor_rel(&wz.coform(), &zw, &a, 0.0);
     let ww = Tensor::from_factors(&[w1, w2], &[]).unwrap();
     let ww_prime = Tensor::from_factors(&[], &[w1.coform(), w2.coform()]).unwrap();
-    assert_tensor_eq(&ww.coform(), &ww_prime, &a, 0.0);
+    assert_tensor_rel(&ww.coform(), &ww_prime, &a, 0.0);
     let t = tensor_from(&a, 2, 1, &(0..27).map(|k| (k as f64).sin()).collect::<Vec<_>>());
-    assert_tensor_eq(&t.coform().coform(), &t, &a, 0.0);
+    assert_tensor_abs(&t.coform().coform(), &t, &a, 0.0);
     let s = tensor_from(&a, 2, 1, &(0..27).map(|k| (k as f64).cos()).collect::<Vec<_>>());
-    assert_tensor_eq(&t.try_add(&s).unwrap().coform(), &t.coform().try_add(&s.coform()).unwrap(), &a, TOL);
+    assert_tensor_rel(&t.try_add(&s).unwrap().coform(), &t.coform().try_add(&s.coform()).unwrap(), &a, TOL);
     // For (1, 1) tensors the coform is the transpose of the physical matrix.
     let m = a.dyadic(&Matrix3::new(1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0));
-    assert_dyadic_eq(&Tensor::from_dyadic(&m).coform().to_dyadic().unwrap(), &m.coform(), &a, 0.0);
+    assert_dyadic_rel(&Tensor::from_dyadic(&m).coform().to_dyadic().unwrap(), &m.coform(), &a, 0.0);
 }
 
 #[test]
@@ -69,7 +69,7 @@ fn eq_3_1_23_one_one_tensor_is_a_physical_matrix() {
     let a = frame();
     let (w, z) = (a.vector([1.0, -2.0, 3.0]), a.vector([0.5, 4.0, -1.0]));
     let t = Tensor::from_factors(&[w], &[z.coform()]).unwrap();
-    assert_dyadic_eq(&t.to_dyadic().unwrap(), &w.outer(&z), &a, 0.0);
+    assert_dyadic_rel(&t.to_dyadic().unwrap(), &w.outer(&z), &a, 0.0);
 }
 
 #[test]
@@ -81,7 +81,7 @@ fn eq_3_2_12_tensor_product_shuffles_slots() {
     let xy = Tensor::from_factors(&[x], &[y]).unwrap();
     let wz = Tensor::from_factors(&[w], &[z]).unwrap();
     let want = Tensor::from_factors(&[x, w], &[y, z]).unwrap();
-    assert_tensor_eq(&xy.otimes(&wz).unwrap(), &want, &a, 0.0);
+    assert_tensor_rel(&xy.otimes(&wz).unwrap(), &want, &a, 0.0);
 }
 
 #[test]
@@ -91,10 +91,10 @@ fn eq_3_2_2_single_contraction() {
     let (x, w) = (a.vector([1.0, 2.0, 3.0]), a.vector([0.0, 1.0, -1.0]));
     let (y, z) = (a.covector([2.0, -1.0, 0.5]), a.covector([1.0, 3.0, 2.0]));
     let xy = Tensor::from_factors(&[x], &[y]).unwrap();
-    assert_close(xy.contract(&[(1, 1)]).unwrap().to_scalar().unwrap(), y * x, TOL);
+    assert_rel(xy.contract(&[(1, 1)]).unwrap().to_scalar().unwrap(), y * x, TOL);
     let t = Tensor::from_factors(&[x, w], &[y, z]).unwrap();
     let want = &Tensor::from_factors(&[w], &[y]).unwrap() * (z * x);
-    assert_tensor_eq(&t.contract(&[(1, 2)]).unwrap(), &want, &a, TOL);
+    assert_tensor_rel(&t.contract(&[(1, 2)]).unwrap(), &want, &a, TOL);
 }
 
 #[test]
@@ -107,9 +107,9 @@ fn eq_3_2_13_erratum_multi_contraction_uses_original_numbering() {
     let (y, z) = (a.covector([2.0, -1.0, 0.5]), a.covector([1.0, 3.0, 2.0]));
     let t = Tensor::from_factors(&[x, w], &[y, z]).unwrap();
     let got = t.contract(&[(2, 1), (1, 2)]).unwrap().to_scalar().unwrap();
-    assert_close(got, (y * w) * (z * x), TOL);
+    assert_rel(got, (y * w) * (z * x), TOL);
     // The order of the pairs does not matter: numbering is always T's original one.
-    assert_close(t.contract(&[(1, 2), (2, 1)]).unwrap().to_scalar().unwrap(), got, 0.0);
+    assert_rel(t.contract(&[(1, 2), (2, 1)]).unwrap().to_scalar().unwrap(), got, 0.0);
 }
 
 #[test]
@@ -120,7 +120,7 @@ fn eq_3_2_11_evaluation_is_a_total_contraction() {
     let (x, y) = (a.covector([0.3, -0.2, 1.0]), a.vector([2.0, 1.0, -1.0]));
     let args = Tensor::from_factors(&[y], &[x]).unwrap();
     let total = t.contracted_product(&args, &[(1, 2), (2, 1)]).unwrap().to_scalar().unwrap();
-    assert_close(t.eval(&[x], &[y]).unwrap(), total, TOL);
+    assert_rel(t.eval(&[x], &[y]).unwrap(), total, TOL);
 }
 
 #[test]
@@ -135,12 +135,12 @@ fn eq_3_3_2_partial_evaluation_of_a_five_slot_tensor() {
     let t1 = Tensor::from_factors(&w, &z).unwrap();
     let t3 = t1.partial_eval(&[Arg::Covector(x), Arg::Vector(y1), Arg::Vector(y2)], &[3, 2, 1]).unwrap();
     let want = &Tensor::from_factors(&w[..2], &[]).unwrap() * ((x * w[2]) * (z[1] * y1) * (z[0] * y2));
-    assert_tensor_eq(&t3, &want, &a, TOL);
+    assert_tensor_rel(&t3, &want, &a, TOL);
     let t2 = Tensor::from_factors(&[y1, y2], &[x]).unwrap();
     let t1t2 = t1.otimes(&t2).unwrap();
     assert_eq!((t1t2.p(), t1t2.q()), (5, 3));
-    assert_tensor_eq(&t1.contracted_product(&t2, &[(3, 3), (4, 2), (5, 1)]).unwrap(), &want, &a, TOL);
-    assert_tensor_eq(&t1t2.contract(&[(3, 3), (4, 2), (5, 1)]).unwrap(), &want, &a, TOL);
+    assert_tensor_rel(&t1.contracted_product(&t2, &[(3, 3), (4, 2), (5, 1)]).unwrap(), &want, &a, TOL);
+    assert_tensor_rel(&t1t2.contract(&[(3, 3), (4, 2), (5, 1)]).unwrap(), &want, &a, TOL);
 }
 
 #[test]
@@ -152,11 +152,11 @@ fn eq_3_3_7_matrix_products_as_contractions() {
     let z = a.vector([1.0, -2.0, 0.5]);
     let (tm, tn) = (Tensor::from_dyadic(&m), Tensor::from_dyadic(&n));
     let mz = tm.contracted_product(&Tensor::from_vector(&z), &[(2, 1)]).unwrap();
-    assert_vec_eq(&mz.to_vector().unwrap(), &(m * z), &a, TOL);
+    assert_vec_rel(&mz.to_vector().unwrap(), &(m * z), &a, TOL);
     let mn = tm.contracted_product(&tn, &[(2, 1)]).unwrap();
-    assert_dyadic_eq(&mn.to_dyadic().unwrap(), &(m * n), &a, TOL);
+    assert_dyadic_rel(&mn.to_dyadic().unwrap(), &(m * n), &a, TOL);
     let tt = tm.contracted_product(&tn, &[(1, 1), (2, 2)]).unwrap().to_scalar().unwrap();
-    assert_close(tt, m.trace() * n.trace(), TOL);
+    assert_rel(tt, m.trace() * n.trace(), TOL);
 }
 
 #[test]
@@ -169,7 +169,7 @@ fn eq_3_3_10_metric_lowers_and_cometric_raises() {
     assert_eq!(lowered.to_covector(), Some(x.coform()));
     let raised = gp.contracted_product(&Tensor::from_covector(&x.coform()), &[(1, 1)]).unwrap();
     assert_eq!(raised.to_vector(), Some(x));
-    assert_tensor_eq(&gp.contracted_product(&g, &[(1, 1)]).unwrap(), &Tensor::identity(), &a, 0.0);
+    assert_tensor_abs(&gp.contracted_product(&g, &[(1, 1)]).unwrap(), &Tensor::identity(), &a, 0.0);
 }
 
 #[test]
@@ -179,9 +179,9 @@ fn eq_3_3_16_epsilon_tensor_gives_the_cross_product_matrix() {
     let x = a.vector([0.3, -1.2, 2.0]);
     let e = Tensor::levi_civita();
     let xx = e.contracted_product(&Tensor::from_vector(&x), &[(2, 2)]).unwrap();
-    assert_dyadic_eq(&xx.to_dyadic().unwrap(), &x.cross_dyad(), &a, TOL);
+    assert_dyadic_rel(&xx.to_dyadic().unwrap(), &x.cross_dyad(), &a, TOL);
     let by_eval = e.partial_eval(&[Arg::Vector(x)], &[2]).unwrap();
-    assert_tensor_eq(&by_eval, &xx, &a, TOL);
+    assert_tensor_rel(&by_eval, &xx, &a, TOL);
 }
 
 #[test]
@@ -196,7 +196,7 @@ fn eq_3_3_18_levi_civita_symbol_in_any_right_handed_frame() {
     for i in 0..3 {
         for j in 0..3 {
             for k in 0..3 {
-                assert_close(e[(i, 3 * j + k)], -eps(i, j, k), TOL);
+                assert_abs(e[(i, 3 * j + k)], -eps(i, j, k), TOL);
             }
         }
     }
@@ -207,13 +207,13 @@ fn eq_3_3_21_u4_contractions() {
     // (3.3.19–22): U4 = U⊗U, (U4⊗M)_(2,3),(3,1) = M, (U4⊗M)_(2,3),(3,2) = (tr M) U.
     let a = frame();
     let u4 = Tensor::u4();
-    assert_tensor_eq(&u4, &Tensor::identity().otimes(&Tensor::identity()).unwrap(), &a, 0.0);
+    assert_tensor_abs(&u4, &Tensor::identity().otimes(&Tensor::identity()).unwrap(), &a, 0.0);
     let m = a.dyadic(&Matrix3::new(1.0, 2.0, 3.0, 0.0, -1.0, 4.0, 2.0, 2.0, 5.0));
     let tm = Tensor::from_dyadic(&m);
     let first = u4.contracted_product(&tm, &[(2, 3), (3, 1)]).unwrap();
-    assert_dyadic_eq(&first.to_dyadic().unwrap(), &m, &a, TOL);
+    assert_dyadic_rel(&first.to_dyadic().unwrap(), &m, &a, TOL);
     let second = u4.contracted_product(&tm, &[(2, 3), (3, 2)]).unwrap();
-    assert_dyadic_eq(&second.to_dyadic().unwrap(), &(Dyadic::identity() * m.trace()), &a, TOL);
+    assert_dyadic_rel(&second.to_dyadic().unwrap(), &(Dyadic::identity() * m.trace()), &a, TOL);
 }
 
 #[test]
@@ -224,13 +224,13 @@ fn eq_3_7_14_slot_permutation() {
     let ts = t.permute(&[2, 3, 1]).unwrap();
     let args = [a.covector([1.0, 0.5, -1.0]), a.covector([0.2, 2.0, 0.0]), a.covector([-0.3, 0.1, 1.0])];
     let got = ts.eval(&args, &[]).unwrap();
-    assert_close(got, t.eval(&[args[1], args[2], args[0]], &[]).unwrap(), TOL);
+    assert_abs(got, t.eval(&[args[1], args[2], args[0]], &[]).unwrap(), TOL);
     // A product x₁⊗x₂⊗x₃ goes to x_σ⁻¹(1)⊗x_σ⁻¹(2)⊗x_σ⁻¹(3) (the book's x_σ(1)… is harmless
     // inside signed sums, ch. 3 notes): σ = (2 3 1) has σ⁻¹ = (3 1 2).
     let x = [a.vector([1.0, 0.0, 2.0]), a.vector([0.0, 3.0, 1.0]), a.vector([1.0, 1.0, -1.0])];
     let prod = Tensor::from_factors(&x, &[]).unwrap();
     let want = Tensor::from_factors(&[x[2], x[0], x[1]], &[]).unwrap();
-    assert_tensor_eq(&prod.permute(&[2, 3, 1]).unwrap(), &want, &a, 0.0);
+    assert_tensor_rel(&prod.permute(&[2, 3, 1]).unwrap(), &want, &a, 0.0);
 }
 
 #[test]
@@ -243,7 +243,7 @@ fn fact_3_6_1_resolution_of_a_product_is_the_kronecker_product() {
     let got = t1.otimes(&t2).unwrap().resolve(&b);
     let want = t1.resolve(&b).kronecker(&t2.resolve(&b));
     assert_eq!(got.shape(), (27, 9));
-    crate::support::assert_close_slice(got.as_slice(), want.as_slice(), TOL);
+    crate::support::assert_rel_slice(got.as_slice(), want.as_slice(), TOL);
 }
 
 #[test]
@@ -261,7 +261,7 @@ fn eq_3_5_kronecker_facts() {
     }
     let m = |s: f64| DMatrix::from_fn(3, 3, |r, c| ((r * 3 + c) as f64 * s).sin());
     let (a, b, c, d) = (m(0.3), m(0.7), m(1.1), m(1.9));
-    crate::support::assert_close_slice(
+    crate::support::assert_rel_slice(
         (a.kronecker(&b) * c.kronecker(&d)).as_slice(),
         (&a * &c).kronecker(&(&b * &d)).as_slice(),
         TOL,
@@ -271,7 +271,7 @@ fn eq_3_5_kronecker_facts() {
         DMatrix::from_column_slice(3, 1, &[-1.0, 0.5, 2.0]),
     );
     assert_eq!(vec(&(&x * y.transpose())).as_slice(), y.kronecker(&x).as_slice());
-    crate::support::assert_close_slice(
+    crate::support::assert_abs_slice(
         vec(&(&a * &b * &c)).as_slice(),
         (c.transpose().kronecker(&a) * vec(&b)).as_slice(),
         TOL,
@@ -318,7 +318,7 @@ mod prop {
     use vectrix::prelude::*;
 
     use crate::common::*;
-    use crate::support::{assert_close_slice, frame};
+    use crate::support::{assert_rel_slice, frame};
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
@@ -336,7 +336,7 @@ mod prop {
             let got = flat(&t1.contracted_product(&t2, &pairs).unwrap().resolve(&b));
             let prod_b = t1.resolve(&b).kronecker(&t2.resolve(&b));
             let want = contract_array(&flat(&prod_b), 3, 2, &pairs);
-            assert_close_slice(&got, &want, 16.0 * TOL);
+            assert_rel_slice(&got, &want, 16.0 * TOL);
         }
 
         /// Fused contraction = literal product then contraction; partial evaluation = the
@@ -348,7 +348,7 @@ mod prop {
             let pairs = [(2, 1), (3, 2)];
             let fused = t1.contracted_product(&t2, &pairs).unwrap();
             let literal = t1.otimes(&t2).unwrap().contract(&pairs).unwrap();
-            assert_tensor_eq(&fused, &literal, &a, 16.0 * TOL);
+            assert_tensor_rel(&fused, &literal, &a, 16.0 * TOL);
         }
 
         /// Coform is an involution and commutes with resolution (transpose of T|_B).
@@ -356,7 +356,7 @@ mod prop {
         fn coform_is_the_resolved_transpose(b in frame(), c in comps(3)) {
             let t = tensor_from(&Frame::new(), 2, 1, &c);
             let got = t.coform().resolve(&b);
-            assert_close_slice(got.as_slice(), t.resolve(&b).transpose().as_slice(), 16.0 * TOL);
+            assert_rel_slice(got.as_slice(), t.resolve(&b).transpose().as_slice(), 16.0 * TOL);
         }
 
         /// Evaluation is frame-free: the same number from arguments built in any frame.
@@ -367,11 +367,13 @@ mod prop {
             let direct = t.eval(&[u], &[v, w]).unwrap();
             let t_a = t.resolve(&a);
             let (ua, va, wa) = (u.resolve(&a), v.resolve(&a), w.resolve(&a));
-            let mut want = 0.0;
+            let (mut want, mut scale) = (0.0, 0.0);
             for i in 0..3 { for j in 0..3 { for k in 0..3 {
                 want += t_a[(i, 3 * j + k)] * ua[i] * va[j] * wa[k];
+                scale += (t_a[(i, 3 * j + k)] * ua[i] * va[j] * wa[k]).abs();
             }}}
-            crate::support::assert_close(direct, want, 64.0 * TOL);
+            // 27-term sums that may cancel: the error lives at the scale Σ|terms|.
+            crate::support::assert_abs(direct, want, 16.0 * TOL * scale);
         }
     }
 }
@@ -411,5 +413,5 @@ fn problem_3_10_1_false_as_stated_contracted_associativity() {
     let (m1, m2, m3) = (m(0.2), m(0.9), m(1.7));
     let left = m1.contracted_product(&m2, &[(2, 1)]).unwrap().contracted_product(&m3, &[(2, 1)]).unwrap();
     let right = m1.contracted_product(&m2.contracted_product(&m3, &[(2, 1)]).unwrap(), &[(2, 1)]).unwrap();
-    assert_tensor_eq(&left, &right, &a, TOL);
+    assert_tensor_rel(&left, &right, &a, TOL);
 }

@@ -4,7 +4,7 @@
 use vectrix::prelude::*;
 
 use crate::common::*;
-use crate::support::{assert_close, assert_close_slice};
+use crate::support::{assert_abs, assert_rel, assert_rel_slice};
 
 fn rotated() -> Frame {
     let a = Frame::new();
@@ -18,12 +18,12 @@ fn eq_3_7_1_wedge_of_two_vectors_is_the_antisymmetric_product() {
     let (x, y) = (a.vector([1.0, 2.0, -1.0]), a.vector([0.5, -3.0, 2.0]));
     let xy = Tensor::from_factors(&[x, y], &[]).unwrap();
     let yx = Tensor::from_factors(&[y, x], &[]).unwrap();
-    assert_tensor_eq(&x.wedge(&y).to_tensor(), &xy.try_sub(&yx).unwrap(), &a, TOL);
+    assert_tensor_rel(&x.wedge(&y).to_tensor(), &xy.try_sub(&yx).unwrap(), &a, TOL);
     assert!(x.wedge(&y).to_tensor().is_alternating(TOL));
     assert!(!xy.is_alternating(TOL));
     // The dense permutation sum (3.7.17) agrees with the compressed formula.
     let dense = Tensor::from_vector(&x).wedge(&Tensor::from_vector(&y)).unwrap();
-    assert_tensor_eq(&dense, &x.wedge(&y).to_tensor(), &a, TOL);
+    assert_tensor_rel(&dense, &x.wedge(&y).to_tensor(), &a, TOL);
 }
 
 #[test]
@@ -33,13 +33,13 @@ fn eq_3_7_9_magnitude_is_the_parallelogram_area() {
     let a = Frame::new();
     let (x, y) = (a.vector([1.0, 2.0, 0.0]), a.vector([3.0, 1.0, 0.0]));
     let b = x.wedge(&y);
-    assert_vec_eq(&b.undual(), &(a.k() * -5.0), &a, TOL); // −5 î∧ĵ = −5 𝒥k̂
+    assert_vec_rel(&b.undual(), &(a.k() * -5.0), &a, TOL); // −5 î∧ĵ = −5 𝒥k̂
     let dense = b.to_tensor();
-    assert_close_slice(&flat(&dense.resolve(&a)), &[0.0, -5.0, 0.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0], TOL);
-    assert_close(dense.frobenius_norm(), 5.0 * 2f64.sqrt(), TOL);
-    assert_close(b.area(), 5.0, TOL);
-    assert_close(dense.alternating_magnitude(), 5.0, TOL);
-    assert_close(b.area(), x.norm() * y.norm() * x.angle(&y).sin(), TOL);
+    assert_rel_slice(&flat(&dense.resolve(&a)), &[0.0, -5.0, 0.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0], TOL);
+    assert_rel(dense.frobenius_norm(), 5.0 * 2f64.sqrt(), TOL);
+    assert_rel(b.area(), 5.0, TOL);
+    assert_rel(dense.alternating_magnitude(), 5.0, TOL);
+    assert_rel(b.area(), x.norm() * y.norm() * x.angle(&y).sin(), TOL);
 }
 
 #[test]
@@ -49,7 +49,7 @@ fn fact_3_7_2_wedge_in_a_coordinate_plane() {
     let (x, y) = (a.vector([1.5, -0.5, 0.0]), a.vector([2.0, 3.0, 0.0]));
     let ij = a.i().wedge(&a.j());
     let want = ij * (1.5 * 3.0 - (-0.5) * 2.0);
-    assert_vec_eq(&x.wedge(&y).undual(), &want.undual(), &a, TOL);
+    assert_vec_rel(&x.wedge(&y).undual(), &want.undual(), &a, TOL);
 }
 
 #[test]
@@ -82,9 +82,9 @@ fn eq_3_7_7_resolved_wedge_is_vec_of_the_cross_matrix() {
     let (x, y) = (a.vector([1.0, -2.0, 0.5]), a.vector([0.3, 1.0, 2.0]));
     let got = flat(&x.wedge(&y).to_tensor().resolve(&a));
     let cross = x.cross(&y).cross_dyad().resolve(&a);
-    assert_close_slice(&got, cross.as_slice(), TOL);
+    assert_rel_slice(&got, cross.as_slice(), TOL);
     let yx_xy = (y.outer(&x) - x.outer(&y)).resolve(&a);
-    assert_close_slice(&got, yx_xy.as_slice(), TOL);
+    assert_rel_slice(&got, yx_xy.as_slice(), TOL);
 }
 
 #[test]
@@ -94,18 +94,18 @@ fn eq_3_7_20_triple_wedge_is_the_determinant_times_j() {
     let a = rotated();
     let (x, y, z) = (a.vector([1.0, 0.0, 0.0]), a.vector([1.0, 1.0, 0.0]), a.vector([1.0, 1.0, 1.0]));
     let t = x.wedge3(&y, &z);
-    assert_close(t.coefficient(), 1.0, TOL);
-    assert_close(t.volume(), 1.0, TOL);
+    assert_abs(t.coefficient(), 1.0, TOL);
+    assert_abs(t.volume(), 1.0, TOL);
     let dense = Tensor::from_vector(&x)
         .wedge(&Tensor::from_vector(&y))
         .unwrap()
         .wedge(&Tensor::from_vector(&z))
         .unwrap();
-    assert_tensor_eq(&dense, &t.to_tensor(), &a, TOL);
-    assert_close(dense.frobenius_norm(), 6f64.sqrt(), TOL);
-    assert_close(dense.alternating_magnitude(), 1.0, TOL);
+    assert_tensor_abs(&dense, &t.to_tensor(), &a, TOL);
+    assert_rel(dense.frobenius_norm(), 6f64.sqrt(), TOL);
+    assert_abs(dense.alternating_magnitude(), 1.0, TOL);
     let (u, v, w) = (a.vector([0.3, -1.0, 2.0]), a.vector([1.5, 0.2, 0.7]), a.vector([-0.4, 0.9, 1.1]));
-    assert_close(u.wedge3(&v, &w).coefficient(), u.cross(&v).dot(&w), TOL);
+    assert_rel(u.wedge3(&v, &w).coefficient(), u.cross(&v).dot(&w), TOL);
 }
 
 #[test]
@@ -113,8 +113,8 @@ fn fact_3_7_5_pseudoscalar_is_the_same_in_every_right_handed_frame() {
     // Fact 3.7.5: 𝒥 = î_A∧ĵ_A∧k̂_A for every right-handed A; a reflection flips the sign.
     for a in [Frame::new(), rotated()] {
         let j = a.i().wedge3(&a.j(), &a.k());
-        assert_close(j.coefficient(), Trivector::<f64>::j().coefficient(), TOL);
-        assert_close(a.i().wedge3(&a.j(), &-a.k()).coefficient(), -1.0, TOL);
+        assert_abs(j.coefficient(), Trivector::<f64>::j().coefficient(), TOL);
+        assert_abs(a.i().wedge3(&a.j(), &-a.k()).coefficient(), -1.0, TOL);
     }
 }
 
@@ -126,8 +126,8 @@ fn eq_3_7_18_wedge_is_associative() {
     let (tx, ty, tz) = (Tensor::from_vector(&x), Tensor::from_vector(&y), Tensor::from_vector(&z));
     let left = tx.wedge(&ty).unwrap().wedge(&tz).unwrap();
     let right = tx.wedge(&ty.wedge(&tz).unwrap()).unwrap();
-    assert_tensor_eq(&left, &right, &a, TOL);
-    assert_close(x.wedge(&y).wedge(&z).coefficient(), x.wedge_bivector(&y.wedge(&z)).coefficient(), TOL);
+    assert_tensor_rel(&left, &right, &a, TOL);
+    assert_rel(x.wedge(&y).wedge(&z).coefficient(), x.wedge_bivector(&y.wedge(&z)).coefficient(), TOL);
 }
 
 #[test]
@@ -137,8 +137,8 @@ fn problem_3_10_3_graded_commutativity() {
     let (x, y, z) = (a.vector([1.0, 2.0, 0.0]), a.vector([0.0, -1.0, 3.0]), a.vector([2.0, 0.5, 1.0]));
     let (tx, tyz) = (Tensor::from_vector(&x), y.wedge(&z).to_tensor());
     let ty = Tensor::from_vector(&y);
-    assert_tensor_eq(&tx.wedge(&ty).unwrap(), &-&ty.wedge(&tx).unwrap(), &a, TOL);
-    assert_tensor_eq(&tx.wedge(&tyz).unwrap(), &tyz.wedge(&tx).unwrap(), &a, TOL);
+    assert_tensor_rel(&tx.wedge(&ty).unwrap(), &-&ty.wedge(&tx).unwrap(), &a, TOL);
+    assert_tensor_rel(&tx.wedge(&tyz).unwrap(), &tyz.wedge(&tx).unwrap(), &a, TOL);
 }
 
 #[test]
@@ -153,8 +153,8 @@ fn problem_3_10_2_bicovector_evaluation() {
         a.vector([1.0, 1.0, -2.0]),
     );
     let got = x.wedge(&y).to_tensor().coform().eval(&[], &[z, w]).unwrap();
-    assert_close(got, x.cross(&y).dot(&z.cross(&w)), TOL);
-    assert_close(got, x.dot(&z) * y.dot(&w) - y.dot(&z) * x.dot(&w), TOL);
+    assert_rel(got, x.cross(&y).dot(&z.cross(&w)), TOL);
+    assert_rel(got, x.dot(&z) * y.dot(&w) - y.dot(&z) * x.dot(&w), TOL);
 }
 
 #[test]
@@ -165,9 +165,9 @@ fn eq_3_7_28_erratum_coform_of_a_wedge() {
     let a = rotated();
     let (x, y, z) = (a.vector([1.0, 2.0, 0.0]), a.vector([0.0, -1.0, 3.0]), a.vector([2.0, 0.5, 1.0]));
     let c = |v: &Vector| Tensor::from_covector(&v.coform());
-    assert_tensor_eq(&x.wedge(&y).to_tensor().coform(), &c(&x).wedge(&c(&y)).unwrap(), &a, TOL);
+    assert_tensor_rel(&x.wedge(&y).to_tensor().coform(), &c(&x).wedge(&c(&y)).unwrap(), &a, TOL);
     let xyz = c(&x).wedge(&c(&y)).unwrap().wedge(&c(&z)).unwrap();
-    assert_tensor_eq(&x.wedge3(&y, &z).to_tensor().coform(), &xyz, &a, TOL);
+    assert_tensor_rel(&x.wedge3(&y, &z).to_tensor().coform(), &xyz, &a, TOL);
 }
 
 #[test]
@@ -179,7 +179,7 @@ fn problem_3_10_4_tricovector_evaluation_is_a_determinant() {
     let c = |v: &Vector| Tensor::from_covector(&v.coform());
     let form = c(&w[0]).wedge(&c(&w[1])).unwrap().wedge(&c(&w[2])).unwrap();
     let m = nalgebra::Matrix3::from_fn(|i, j| w[i].dot(&x[j]));
-    assert_close(form.eval(&[], &x).unwrap(), m.determinant(), TOL);
+    assert_rel(form.eval(&[], &x).unwrap(), m.determinant(), TOL);
 }
 
 #[test]
@@ -198,9 +198,9 @@ fn dense_and_compressed_round_trip() {
     let a = rotated();
     let b = a.vector([1.0, -2.0, 0.5]).wedge(&a.vector([0.3, 1.0, 2.0]));
     let back = Bivector::from_tensor(&b.to_tensor(), TOL).unwrap();
-    assert_vec_eq(&back.undual(), &b.undual(), &a, TOL);
+    assert_vec_rel(&back.undual(), &b.undual(), &a, TOL);
     let t = Trivector::new(-2.5);
-    assert_close(Trivector::from_tensor(&t.to_tensor(), TOL).unwrap().coefficient(), -2.5, TOL);
+    assert_rel(Trivector::from_tensor(&t.to_tensor(), TOL).unwrap().coefficient(), -2.5, TOL);
     let not_alt = Tensor::from_factors(&[a.i(), a.j()], &[]).unwrap();
     assert!(matches!(Bivector::from_tensor(&not_alt, TOL), Err(TensorError::Shape { .. })));
     assert!(matches!(Bivector::from_tensor(&Tensor::<f64>::identity(), TOL), Err(TensorError::Shape { .. })));
@@ -210,7 +210,7 @@ fn dense_and_compressed_round_trip() {
     let m = mv(&a, 0.5, [1.0, -2.0, 0.25], [3.0, 0.0, -1.0], 0.75);
     let parts: Vec<Tensor> = (0..=3).map(|k| m.grade_tensor(k).unwrap()).collect();
     assert!(m.grade_tensor(4).is_none());
-    assert_mv_eq(&Multivector::from_grade_tensors(&parts, TOL).unwrap(), &m, &a, TOL);
+    assert_mv_rel(&Multivector::from_grade_tensors(&parts, TOL).unwrap(), &m, &a, TOL);
     assert!(matches!(Multivector::from_grade_tensors(&[not_alt], TOL), Err(TensorError::Shape { .. })));
     assert!(matches!(
         Multivector::from_grade_tensors(&[Tensor::<f64>::identity()], TOL),
@@ -223,7 +223,7 @@ mod prop {
     use vectrix::prelude::*;
 
     use crate::common::*;
-    use crate::support::{assert_close, component, frame, triple};
+    use crate::support::{assert_rel, component, frame, triple};
 
     fn vector3() -> impl Strategy<Value = [f64; 3]> {
         [component(), component(), component()]
@@ -276,11 +276,11 @@ mod prop {
             let left = x.wedge(&y).wedge(&z).coefficient();
             let right = x.wedge_bivector(&y.wedge(&z)).coefficient();
             let det = nalgebra::Matrix3::from_columns(&[x.resolve(&a), y.resolve(&a), z.resolve(&a)]).determinant();
-            assert_close(left, right, 1e3 * TOL);
-            assert_close(left, det, 1e3 * TOL);
+            assert_rel(left, right, 1e3 * TOL);
+            assert_rel(left, det, 1e3 * TOL);
             let (tx, ty, tz) = (Tensor::from_vector(&x), Tensor::from_vector(&y), Tensor::from_vector(&z));
             let dense = tx.wedge(&ty.wedge(&tz).unwrap()).unwrap();
-            assert_tensor_eq(&dense, &x.wedge3(&y, &z).to_tensor(), &a, 1e3 * TOL);
+            assert_tensor_rel(&dense, &x.wedge3(&y, &z).to_tensor(), &a, 1e3 * TOL);
         }
 
         /// Graded commutativity (Problem 3.10.3) for covector forms of grades 1 and 1, 1 and 2.
@@ -290,8 +290,8 @@ mod prop {
             let c = |v: [f64; 3]| Tensor::from_covector(&a.covector(v));
             let (tx, ty, tz) = (c(x), c(y), c(z));
             let yz = ty.wedge(&tz).unwrap();
-            assert_tensor_eq(&tx.wedge(&ty).unwrap(), &-&ty.wedge(&tx).unwrap(), &a, TOL);
-            assert_tensor_eq(&tx.wedge(&yz).unwrap(), &yz.wedge(&tx).unwrap(), &a, 1e3 * TOL);
+            assert_tensor_rel(&tx.wedge(&ty).unwrap(), &-&ty.wedge(&tx).unwrap(), &a, TOL);
+            assert_tensor_rel(&tx.wedge(&yz).unwrap(), &yz.wedge(&tx).unwrap(), &a, 1e3 * TOL);
         }
 
         /// Frame independence: (x∧y)|_B = x|_B y|_Bᵀ − y|_B x|_Bᵀ in any frame B.
@@ -301,7 +301,7 @@ mod prop {
             let (xb, yb) = (xv.resolve(&b), yv.resolve(&b));
             let want = xb * yb.transpose() - yb * xb.transpose();
             let got = xv.wedge(&yv).to_tensor().resolve(&b);
-            crate::support::assert_close_slice(&flat(&got), want.transpose().as_slice(), 1e3 * TOL);
+            crate::support::assert_rel_slice(&flat(&got), want.transpose().as_slice(), 1e3 * TOL);
         }
     }
 }

@@ -5,26 +5,46 @@ use vectrix::nalgebra::Matrix3;
 use vectrix::prelude::*;
 use vectrix::statics::Point;
 
-use crate::support::assert_close_slice;
+use crate::support::{assert_abs_slice, assert_rel_slice};
 
-/// Asserts two 3×3 matrices agree entrywise within tol·max(1, max|want|).
+/// Asserts two 3×3 matrices agree entrywise: max |got − want| ≤ tol.
 #[track_caller]
-pub fn assert_mat_close(got: &Matrix3<f64>, want: &Matrix3<f64>, tol: f64) {
-    assert_close_slice(got.as_slice(), want.as_slice(), tol);
+pub fn assert_mat_abs(got: &Matrix3<f64>, want: &Matrix3<f64>, tol: f64) {
+    assert_abs_slice(got.as_slice(), want.as_slice(), tol);
 }
 
-/// Asserts two vectors agree, resolved in `a`.
+/// Asserts max |got − want| ≤ tol·max|want| over the entries (relative to the largest entry).
 #[track_caller]
-pub fn assert_vec_close(got: &Vector, want: &Vector, tol: f64) {
-    let a = Frame::new();
-    assert_close_slice(got.resolve(&a).as_slice(), want.resolve(&a).as_slice(), tol);
+pub fn assert_mat_rel(got: &Matrix3<f64>, want: &Matrix3<f64>, tol: f64) {
+    assert_rel_slice(got.as_slice(), want.as_slice(), tol);
 }
 
-/// Asserts two dyadics agree, resolved in the first frame.
+/// Asserts two vectors agree componentwise in the first frame: max |got − want| ≤ tol.
 #[track_caller]
-pub fn assert_dyadic_close(got: &Dyadic, want: &Dyadic, tol: f64) {
+pub fn assert_vec_abs(got: &Vector, want: &Vector, tol: f64) {
     let a = Frame::new();
-    assert_mat_close(&got.resolve(&a), &want.resolve(&a), tol);
+    assert_abs_slice(got.resolve(&a).as_slice(), want.resolve(&a).as_slice(), tol);
+}
+
+/// Asserts max |got − want| ≤ tol·max|want| over the components in the first frame.
+#[track_caller]
+pub fn assert_vec_rel(got: &Vector, want: &Vector, tol: f64) {
+    let a = Frame::new();
+    assert_rel_slice(got.resolve(&a).as_slice(), want.resolve(&a).as_slice(), tol);
+}
+
+/// Asserts two dyadics agree entrywise in the first frame: max |got − want| ≤ tol.
+#[track_caller]
+pub fn assert_dyadic_abs(got: &Dyadic, want: &Dyadic, tol: f64) {
+    let a = Frame::new();
+    assert_mat_abs(&got.resolve(&a), &want.resolve(&a), tol);
+}
+
+/// Asserts max |got − want| ≤ tol·max|want| over the entries in the first frame.
+#[track_caller]
+pub fn assert_dyadic_rel(got: &Dyadic, want: &Dyadic, tol: f64) {
+    let a = Frame::new();
+    assert_mat_rel(&got.resolve(&a), &want.resolve(&a), tol);
 }
 
 /// The point with r⃗_{y/o} = a.vector(x).

@@ -7,8 +7,8 @@ use vectrix::statics::{
     UniformGravity, Wrench,
 };
 
-use crate::common::{assert_vec_close, pt};
-use crate::support::{EPS, assert_close};
+use crate::common::{assert_vec_rel, pt};
+use crate::support::{EPS, assert_abs, assert_rel};
 
 fn forces(a: &Frame) -> Vec<AppliedForce> {
     vec![
@@ -26,14 +26,14 @@ fn eq_6_4_4_moment_transfer() {
     let (w, z) = (pt(&a, [3.0, -1.0, 2.0]), pt(&a, [-2.0, 4.0, 0.5]));
     let mw = Wrench::resultant(&fs, &[], w);
     let mz = Wrench::resultant(&fs, &[], z);
-    assert_vec_close(&mw.moment, &(mz.moment + z.position_rel(&w).cross(&mz.force)), 16.0 * EPS);
+    assert_vec_rel(&mw.moment, &(mz.moment + z.position_rel(&w).cross(&mz.force)), 16.0 * EPS);
     let shifted = mw.shift_to(&z);
-    assert_vec_close(&shifted.moment, &mz.moment, 16.0 * EPS);
+    assert_vec_rel(&shifted.moment, &mz.moment, 16.0 * EPS);
     assert_eq!(shifted.about, z);
     // Sum of wrenches about different points: shifted before adding.
     let sum = Wrench::from_force(&fs[0], w).plus(&Wrench::resultant(&fs[1..], &[], z));
-    assert_vec_close(&sum.moment, &mw.moment, 16.0 * EPS);
-    assert_vec_close(&sum.force, &mw.force, 16.0 * EPS);
+    assert_vec_rel(&sum.moment, &mw.moment, 16.0 * EPS);
+    assert_vec_rel(&sum.force, &mw.force, 16.0 * EPS);
 }
 
 #[test]
@@ -48,7 +48,7 @@ fn fact_6_4_2_6_4_3_balanced_forces_give_a_torque() {
     for w in [Point::origin(), pt(&a, [5.0, 5.0, 5.0]), x] {
         let wr = Wrench::resultant(&pair, &[], w);
         assert!(wr.is_balanced(EPS));
-        assert_vec_close(&wr.as_torque(EPS).unwrap(), &t, 16.0 * EPS);
+        assert_vec_rel(&wr.as_torque(EPS).unwrap(), &t, 16.0 * EPS);
     }
     let unbalanced = Wrench::resultant(&forces(&a), &[], Point::origin());
     assert!(unbalanced.as_torque(1e-12).is_none());
@@ -64,12 +64,12 @@ fn fact_6_4_4_compensating_force_makes_the_moment_a_torque() {
     let wr = Wrench::resultant(&fs, &[], w);
     let z = w.displaced(wr.force * 2.5);
     let (torque, comp) = wr.compensated_torque(&z);
-    assert_vec_close(&torque, &wr.moment, 64.0 * EPS);
+    assert_vec_rel(&torque, &wr.moment, 64.0 * EPS);
     let mut all = fs.clone();
     all.push(comp);
     let bal = Wrench::resultant(&all, &[], pt(&a, [-7.0, 0.0, 1.0]));
     assert!(bal.is_balanced(16.0 * EPS));
-    assert_vec_close(&bal.moment, &wr.moment, 64.0 * EPS);
+    assert_vec_rel(&bal.moment, &wr.moment, 64.0 * EPS);
 }
 
 #[test]
@@ -85,8 +85,8 @@ fn fact_6_6_2_uniform_gravity_moment() {
     let per_particle: Vec<_> = ps.iter().map(|(m, y)| AppliedForce::new(g.force(*m), *y)).collect();
     let direct = Wrench::resultant(&per_particle, &[], w);
     let got = g.wrench_on(&body, w);
-    assert_vec_close(&got.force, &direct.force, 16.0 * EPS);
-    assert_vec_close(&got.moment, &direct.moment, 64.0 * EPS);
+    assert_vec_rel(&got.force, &direct.force, 16.0 * EPS);
+    assert_vec_rel(&got.moment, &direct.moment, 64.0 * EPS);
     assert!(g.wrench_on(&body, body.centre_of_mass()).moment.norm() <= 64.0 * EPS);
 }
 
@@ -108,10 +108,10 @@ fn section_6_5_laws_of_statics_simply_supported_beam() {
     fb.unknown_force(beam, None, a.k(), pt(&a, [l, 0.0, 0.0])).unwrap();
     fb.unknown_couple(beam, None, a.i()).unwrap();
     let sol = fb.solve(FREE_BODY_REL_TOL).unwrap().require_determinate().unwrap();
-    assert_close(sol.value(ry0).unwrap(), p * (l - s) / l, 64.0 * EPS);
-    assert_close(sol.value(ryl).unwrap(), p * s / l, 64.0 * EPS);
+    assert_rel(sol.value(ry0).unwrap(), p * (l - s) / l, 64.0 * EPS);
+    assert_rel(sol.value(ryl).unwrap(), p * s / l, 64.0 * EPS);
     assert!(sol.value(rx0).unwrap().abs() <= 64.0 * EPS * p);
-    assert_vec_close(&sol.reaction(ryl).unwrap(), &(a.j() * (p * s / l)), 64.0 * EPS);
+    assert_vec_rel(&sol.reaction(ryl).unwrap(), &(a.j() * (p * s / l)), 64.0 * EPS);
 }
 
 #[test]
@@ -137,10 +137,10 @@ fn section_6_10_statically_indeterminate_beam() {
     assert_eq!((*degree, self_stress.len()), (1, 1));
     // The self-stress of three collinear supports is ∝ (1, −2, 1).
     let st = &self_stress[0];
-    assert_close(st[1] / st[0], -2.0, 1e3 * EPS);
-    assert_close(st[2] / st[0], 1.0, 1e3 * EPS);
+    assert_rel(st[1] / st[0], -2.0, 1e3 * EPS);
+    assert_abs(st[2] / st[0], 1.0, 1e3 * EPS);
     let total: f64 = ids.iter().map(|&u| sol.value(u).unwrap()).sum();
-    assert_close(total, 10.0, 64.0 * EPS);
+    assert_rel(total, 10.0, 64.0 * EPS);
     assert!(matches!(sol.require_determinate(), Err(StaticsError::Indeterminate { degree: 1, .. })));
 }
 
@@ -213,11 +213,11 @@ fn problem_6_15_3_sphere_pyramid() {
     }
     let sol = fb.solve(FREE_BODY_REL_TOL).unwrap().require_determinate().unwrap();
     for k in 0..3 {
-        assert_close(sol.value(contact[k]).unwrap(), mg / 6f64.sqrt(), 64.0 * EPS);
+        assert_abs(sol.value(contact[k]).unwrap(), mg / 6f64.sqrt(), 64.0 * EPS);
         // The ring pushes inward; the sphere pushes the ring outward with the same magnitude.
-        assert_close(sol.value(ring[k]).unwrap(), mg / (3.0 * 2f64.sqrt()), 64.0 * EPS);
+        assert_abs(sol.value(ring[k]).unwrap(), mg / (3.0 * 2f64.sqrt()), 64.0 * EPS);
     }
-    assert_close(mg / (3.0 * 2f64.sqrt()), 0.235_702_260_395_515_8, EPS);
+    assert_abs(mg / (3.0 * 2f64.sqrt()), 0.235_702_260_395_515_8, EPS);
 }
 
 #[test]
@@ -234,7 +234,7 @@ fn problem_6_14_5_equal_moments_about_two_points_need_not_balance() {
     let w = Point::origin();
     let z = w.displaced(a.k() * 3.0); // r⃗_{z/w} ∥ f⃗_B = k̂
     let (mw, mz) = (Wrench::resultant(&fs, &[], w), Wrench::resultant(&fs, &[], z));
-    assert_vec_close(&mw.moment, &mz.moment, 16.0 * EPS);
+    assert_vec_rel(&mw.moment, &mz.moment, 16.0 * EPS);
     assert!(mw.moment.norm() > 0.5 && !mw.is_balanced(0.5));
 }
 
@@ -262,7 +262,7 @@ fn fact_6_9_2_6_9_3_third_law_sums_in_a_two_body_problem() {
     let on_upper: Vec<_> =
         between.iter().map(|&u| AppliedForce::new(sol.reaction(u).unwrap(), pt(&a, [0.0; 3]))).collect();
     let total: f64 = between.iter().map(|&u| sol.value(u).unwrap()).sum();
-    assert_close(total, 6.0, 64.0 * EPS);
+    assert_rel(total, 6.0, 64.0 * EPS);
     // Third law: the pair (on upper, on lower) sums to zero force and zero moment about any w.
     let w = pt(&a, [3.0, -1.0, 7.0]);
     let mut f_sum = Vector::zero();

@@ -6,7 +6,7 @@ use vectrix::nalgebra::{Matrix3, Rotation3, Vector3};
 use vectrix::prelude::*;
 use vectrix::statics::{MassProperties, Point};
 
-use crate::support::{EPS, assert_close, assert_close_slice};
+use crate::support::{EPS, assert_abs, assert_abs_slice, assert_printed, assert_rel, assert_rel_slice};
 
 /// P7.17.1: solid sphere (m, radius r) rolling without slip down the incline (angle θ) of a cart
 /// M on a smooth floor; q = (X, s): cart position and distance rolled down the incline.
@@ -38,21 +38,21 @@ impl Lagrangian for SphereOnWedge {
 /// f_T = −2(m + M)mg sin θ/D; f_N = (mg/cos θ)(1 − 7(m + M) sin²θ/D)." [C] m = 1, M = 2,
 /// θ = 30°, g = 9.81: ẍ = 4.265217, ÿ = −1.231262, f_T = −1.706087, f_N = 7.880078.
 #[test]
-fn problem_7_17_1_sphere_rolling_on_wedge_cart() {
+fn problem_7_17_1_and_section_7_18_sphere_rolling_on_wedge_cart() {
     let p = SphereOnWedge { m: 1.0, big_m: 2.0, theta: 30f64.to_radians(), g: 9.81 };
     let a = accelerations(&p, &[0.0, 0.0], &[0.0, 0.0], 0.0).unwrap();
     let (cart, s) = (a[0], a[1]);
     // the notes give six decimals
-    assert_close(s, 4.265217, 1e-6);
-    assert_close(cart, -1.231262, 1e-6);
+    assert_printed(s, "4.265217");
+    assert_printed(cart, "-1.231262");
     // reactions on the sphere in the incline frame: friction from the rotation
     // (2/5)m r² (s̈/r) = −f_T r, normal from the balance across the incline
     let f_t = -0.4 * p.m * s;
     let f_n = p.m * (p.g * p.theta.cos() + cart * p.theta.sin());
-    assert_close(f_t, -1.706087, 1e-6);
-    assert_close(f_n, 7.880078, 1e-6);
+    assert_printed(f_t, "-1.706087");
+    assert_printed(f_n, "7.880078");
     let d = 7.0 * p.big_m + (2.0 + 5.0 * p.theta.sin().powi(2)) * p.m;
-    assert_close(s, 5.0 * (p.m + p.big_m) * p.g * p.theta.sin() / d, 16.0 * EPS);
+    assert_rel(s, 5.0 * (p.m + p.big_m) * p.g * p.theta.sin() / d, 16.0 * EPS);
 }
 
 /// P7.17.2 (§7.18): platform spinning at ω2 about k̂ on a pin at a; a bar of length 2R with
@@ -87,14 +87,14 @@ fn problem_7_17_2_platform_with_spinning_dumbbell() {
     let r_y = Rotation3::from_axis_angle(&Vector3::y_axis(), th);
     let f_b = r_y * id.wrenches[1].force;
     let m_b = r_y * id.wrenches[1].moment;
-    assert_close_slice(f_b.as_slice(), &[-2.0 * m * l * w2d, -2.0 * m * l * w2 * w2, 0.0], 64.0 * EPS);
+    assert_rel_slice(f_b.as_slice(), &[-2.0 * m * l * w2d, -2.0 * m * l * w2 * w2, 0.0], 64.0 * EPS);
     let (s2, c, s) = ((2.0 * th).sin(), th.cos(), th.sin());
     let want = [
         -m * r * r * (w2d * s2 + 4.0 * w1 * w2 * c * c),
         m * r * r * (2.0 * w1d - w2 * w2 * s2),
         m * r * r * (2.0 * w2d * s * s + 2.0 * w1 * w2 * s2),
     ];
-    assert_close_slice(m_b.as_slice(), &want, 64.0 * EPS);
+    assert_abs_slice(m_b.as_slice(), &want, 64.0 * EPS);
 
     // frame-free: dumbbell of two particles, ω = ω2 k̂ + ω1 ĵ, α = ω̇2 k̂ + ω̇1 ĵ + ω2 k̂ × ω1 ĵ
     let a = Frame::new();
@@ -104,14 +104,14 @@ fn problem_7_17_2_platform_with_spinning_dumbbell() {
     let omega = a.vector([0.0, w1, w2]);
     let body = RigidBody::new(props, a.vector([-w2 * l, 0.0, 0.0]), omega);
     let h = body.angular_momentum_about_centre().resolve(&a);
-    assert_close_slice(
+    assert_abs_slice(
         h.as_slice(),
         &[-2.0 * m * r * r * w2 * s * c, 2.0 * m * r * r * w1, 2.0 * m * r * r * w2 * s * s],
         16.0 * EPS,
     );
     let alpha = a.vector([-w1 * w2, w1d, w2d]);
     let moment = props.inertia_about_centre().apply(&alpha) + body.gyroscopic_moment();
-    assert_close_slice(moment.resolve(&a).as_slice(), &want, 64.0 * EPS);
+    assert_abs_slice(moment.resolve(&a).as_slice(), &want, 64.0 * EPS);
 }
 
 /// P7.17.5 (§7.18): a cylinder (m, radius r, height h) welded to a vertical shaft at c with its
@@ -139,13 +139,13 @@ fn problem_7_17_5_tilted_cylinder_on_shaft() {
     let model = Model::new(&[link]).unwrap();
     let od = model.aba(&[0.0], &[omega], &[tau], None).unwrap()[0];
     let want = 12.0 * tau / (m * (6.0 * r * r + (h * h - 3.0 * r * r) * th.sin().powi(2)));
-    assert_close(od, want, 16.0 * EPS);
+    assert_rel(od, want, 16.0 * EPS);
     let w = model.rnea(&[0.0], &[omega], &[od], None).unwrap().wrenches[0];
     let k = m * (2.0 * th).sin() * (h * h - 3.0 * r * r) / 24.0;
     // with J_xz = −k: M = (Ω̇ J_xz, Ω² J_xz, Ω̇ J_zz) in the shaft frame at φ = 0
-    assert_close(w.moment.x, -od * k, 64.0 * EPS);
-    assert_close(w.moment.y, -omega * omega * k, 64.0 * EPS);
-    assert_close(w.moment.z, tau, 64.0 * EPS);
+    assert_abs(w.moment.x, -od * k, 64.0 * EPS);
+    assert_abs(w.moment.y, -omega * omega * k, 64.0 * EPS);
+    assert_abs(w.moment.z, tau, 64.0 * EPS);
 }
 
 /// The massless vertical shaft of P7.17.4 and P7.17.6: the root link, a pin about ẑ.
@@ -211,15 +211,15 @@ fn problem_7_17_3_disk_welded_on_shaft() {
         let yy = b1 + m1 * l4 * l4 + d4 + m2 * l5 * l5;
         let zz = b1 + m1 * l4 * l4 + b2 + m2 * l5 * l5;
 
-        assert_close(b3.mass(), m3, 4.0 * EPS);
+        assert_rel(b3.mass(), m3, 4.0 * EPS);
         let r_c3 = b3.centre_of_mass().position_rel(&left).resolve(&f_a);
-        assert_close_slice(r_c3.as_slice(), &[l3, 0.0, 0.0], 64.0 * EPS);
+        assert_rel_slice(r_c3.as_slice(), &[l3, 0.0, 0.0], 64.0 * EPS);
         let j = b3.inertia_about_centre();
         let want = Matrix3::new(a1 + d1, d2, 0.0, d3, yy, 0.0, 0.0, 0.0, zz);
-        assert_close_slice(j.resolve(&f_a).as_slice(), want.as_slice(), 64.0 * EPS);
+        assert_rel_slice(j.resolve(&f_a).as_slice(), want.as_slice(), 64.0 * EPS);
         // ĵ_A → −ĵ_A (and k̂_A → −k̂_A): only the signs of δ₂ = δ₃ change
         let flipped = Matrix3::new(a1 + d1, -d2, 0.0, -d3, yy, 0.0, 0.0, 0.0, zz);
-        assert_close_slice(j.resolve(&f_a_flipped).as_slice(), flipped.as_slice(), 64.0 * EPS);
+        assert_rel_slice(j.resolve(&f_a_flipped).as_slice(), flipped.as_slice(), 64.0 * EPS);
     }
 }
 
@@ -233,7 +233,7 @@ fn problem_7_17_3_disk_welded_on_shaft() {
 /// since Ḣ_{/a} = Ω k̂ × J_{/a} Ω k̂ lies along the pin axis, where gravity and the cable
 /// balance it.
 #[test]
-fn problem_7_17_4_bar_on_spinning_shaft_held_by_cable() {
+fn problem_7_17_4_and_section_7_18_bar_on_spinning_shaft_held_by_cable() {
     // (m, l, θ, Ω, g), including the static case Ω = 0 of the hint
     for (m, l, th, omega, g) in [
         (1.5, 0.8, 0.6, 2.5, 9.81),
@@ -266,17 +266,17 @@ fn problem_7_17_4_bar_on_spinning_shaft_held_by_cable() {
         // θ stays constant with a frictionless pin: τ_pin(T) = 0, and τ_pin is affine in T
         let t = zero_of_affine(|t| id(t).tau[1]);
         let want_t = 0.5 * m * g * th.tan() + m * l * omega * omega * th.sin() / 3.0;
-        assert_close(t, want_t, 64.0 * EPS);
+        assert_rel(t, want_t, 64.0 * EPS);
 
         // the joint wrench on the bar at a, back to the shaft frame: (ĵ, k̂) = (−x̂, ẑ)
         let w = id(t).wrenches[1];
         let f_a = r_y * w.force;
         let f_ay = -0.5 * m * g * th.tan() + m * l * omega * omega * th.sin() / 6.0;
-        assert_close_slice(f_a.as_slice(), &[-f_ay, 0.0, m * g], 64.0 * EPS);
+        assert_rel_slice(f_a.as_slice(), &[-f_ay, 0.0, m * g], 64.0 * EPS);
         // no torque at a, and none to keep the shaft turning: scale m g l
         let scale = m * g * l;
-        assert_close_slice((r_y * w.moment / scale).as_slice(), &[0.0; 3], 64.0 * EPS);
-        assert_close(id(t).tau[0] / scale, 0.0, 64.0 * EPS);
+        assert_abs_slice((r_y * w.moment / scale).as_slice(), &[0.0; 3], 64.0 * EPS);
+        assert_abs(id(t).tau[0] / scale, 0.0, 64.0 * EPS);
     }
 }
 
@@ -333,8 +333,8 @@ fn problem_7_17_6_slanted_bar_sliding_on_ground() {
         let want_fb = m / 6.0 * (3.0 * g - w2 * (2.0 * l2 * s + 3.0 * l1 * t));
         assert!(want_fb > 0.0, "parameters must keep the tip on the ground");
         // f_b is a difference of terms of size mg (the second case cancels to ~1% of mg):
-        // the error is a few ε of mg, well inside 64ε
-        assert_close(f_b, want_fb, 64.0 * EPS);
+        // the error is a few ε of mg, well inside 64ε·mg
+        assert_abs(f_b, want_fb, 64.0 * EPS * m * g);
 
         // F_C in the bar's link frame: î_C = −ŷ, ĵ_C = x̂ (along the bar), k̂_C = ẑ
         let in_c = |x: Vector3<f64>| [-x.y, x.x, x.z];
@@ -342,11 +342,154 @@ fn problem_7_17_6_slanted_bar_sliding_on_ground() {
         let f_ay =
             -0.5 * m * g * s - m * w2 / 6.0 * (2.0 * l2 + 6.0 * l1 * c + l2 * c * c + 3.0 * l1 * t * s);
         let f_az = -m * w2 / 6.0 * s * (3.0 * l1 + l2 * c) + 0.5 * m * g * c;
-        assert_close_slice(&in_c(w.force), &[-mu * f_b, f_ay, f_az], 64.0 * EPS);
+        assert_rel_slice(&in_c(w.force), &[-mu * f_b, f_ay, f_az], 64.0 * EPS);
         // the pin couple: M_az = μ l₂ f_b, the other components zero
-        assert_close_slice(&in_c(w.moment), &[0.0, 0.0, mu * l2 * f_b], 64.0 * EPS);
+        assert_rel_slice(&in_c(w.moment), &[0.0, 0.0, mu * l2 * f_b], 64.0 * EPS);
         // the ground's force in F_C: friction f_f = μ f_b along î_C
         let f_ground = ground(f_b)[1].force;
-        assert_close(in_c(f_ground)[0], mu * f_b, 64.0 * EPS);
+        assert_rel(in_c(f_ground)[0], mu * f_b, 64.0 * EPS);
+    }
+}
+
+/// P7.17.7 (Fig. 7.17.7 is not in the text; the configuration it describes, with the arm's far
+/// end free): a uniform disk (m₁, r) rolls without slip, turning clockwise by φ (its centre moves
+/// rφ to the right); a thin uniform arm (m₂, ℓ) on a frictionless pin at the centre makes the
+/// angle θ with the horizontal, its centre at (ℓ/2)(cos θ, sin θ) from the pin. Lagrange with
+/// T = ¾m₁r²φ̇² + ½m₂|v⃗_G|² + (1/24)m₂ℓ²θ̇², U = ½m₂gℓ sin θ gives
+/// [(3/2 m₁ + m₂)r², −½m₂rℓ sin θ; −½m₂rℓ sin θ, ⅓m₂ℓ²][φ̈; θ̈] = [½m₂rℓ cos θ θ̇²; −½m₂gℓ cos θ],
+/// and the pin's force on the arm m₂a⃗_G − m₂g⃗. The hand-derived system is checked against
+/// vectrix's Lagrange equations (automatic differentiation of the same T and U).
+struct WheelAndArm {
+    m1: f64,
+    r: f64,
+    m2: f64,
+    l: f64,
+    g: f64,
+}
+
+impl Lagrangian for WheelAndArm {
+    fn dof(&self) -> usize {
+        2
+    }
+    fn kinetic<T: Scalar>(&self, q: &[T], qd: &[T], _t: T) -> T {
+        let (r, l) = (T::lit(self.r), T::lit(self.l));
+        let half = T::lit(0.5);
+        // v_G = (rφ̇ − ½ℓ sin θ θ̇, ½ℓ cos θ θ̇)
+        let vx = r * qd[0] - half * l * q[1].sin() * qd[1];
+        let vy = half * l * q[1].cos() * qd[1];
+        T::lit(0.75 * self.m1) * r * r * qd[0] * qd[0]
+            + T::lit(0.5 * self.m2) * (vx * vx + vy * vy)
+            + T::lit(self.m2 / 24.0) * l * l * qd[1] * qd[1]
+    }
+    fn potential<T: Scalar>(&self, q: &[T], _t: T) -> T {
+        T::lit(0.5 * self.m2 * self.g * self.l) * q[1].sin()
+    }
+}
+
+#[test]
+fn problem_7_17_7_rolling_wheel_with_a_pinned_arm() {
+    let p = WheelAndArm { m1: 2.0, r: 0.4, m2: 0.8, l: 1.5, g: 9.81 };
+    let (m1, r, m2, l, g) = (p.m1, p.r, p.m2, p.l, p.g);
+    for (th, phid, thd) in [(0.5, 3.0, 1.2), (1.2, 0.5, 2.0), (-0.3, 1.0, 0.4)] {
+        let got = accelerations(&p, &[0.0, th], &[phid, thd], 0.0).unwrap();
+        let m = Matrix3::new(
+            (1.5 * m1 + m2) * r * r,
+            -0.5 * m2 * r * l * f64::sin(th),
+            0.0,
+            -0.5 * m2 * r * l * f64::sin(th),
+            m2 * l * l / 3.0,
+            0.0,
+            0.0,
+            0.0,
+            1.0,
+        );
+        let rhs =
+            Vector3::new(0.5 * m2 * r * l * f64::cos(th) * thd * thd, -0.5 * m2 * g * l * f64::cos(th), 0.0);
+        let want = m.try_inverse().unwrap() * rhs;
+        assert_rel_slice(got.as_slice(), &want.as_slice()[..2], 64.0 * EPS);
+        // the pin's force on the arm: m₂ a⃗_G − m₂ g⃗ (g⃗ = −g ĵ), horizontal and vertical parts
+        let (phidd, thdd) = (got[0], got[1]);
+        let a_g = Vector3::new(
+            r * phidd - 0.5 * l * (f64::cos(th) * thd * thd + f64::sin(th) * thdd),
+            0.5 * l * (f64::cos(th) * thdd - f64::sin(th) * thd * thd),
+            0.0,
+        );
+        let f_pin = m2 * a_g + Vector3::new(0.0, m2 * g, 0.0);
+        // the arm's moment balance about the pin: ½ℓ ê × (−m₂g ĵ) + … = J_pin θ̈ with J_pin = m₂ℓ²/3
+        // and the pin's acceleration rφ̈ î: ⅓m₂ℓ²θ̈ = −½m₂gℓ cos θ + ½m₂ℓ sin θ · rφ̈
+        assert_abs(
+            m2 * l * l / 3.0 * thdd,
+            -0.5 * m2 * g * l * f64::cos(th) + 0.5 * m2 * l * f64::sin(th) * r * phidd,
+            64.0 * EPS * m2 * g * l,
+        );
+        // the disk's horizontal balance: m₁ rφ̈ = −f_pin,x + friction, with friction from the
+        // disk's rolling moment ½m₁r²φ̈ = −friction·r (clockwise positive): m₁rφ̈ + ½m₁rφ̈ = −f_pin,x
+        assert_abs(1.5 * m1 * r * phidd, -f_pin.x, 64.0 * EPS * (m1 + m2) * g);
+    }
+}
+
+/// P7.17.8 (no printed solution; the notes' [C] form): a cart w (mass M) on a smooth horizontal
+/// surface at x, and a pendulum y (mass m) on a massless link ℓ at the angle θ from the downward
+/// vertical: (M + m)ẍ + mℓ(θ̈ cos θ − θ̇² sin θ) = 0 and ℓθ̈ + ẍ cos θ + g sin θ = 0, so
+/// ẍ = m sin θ(ℓθ̇² + g cos θ)/(M + m sin²θ); the link pulls y toward w with tension
+/// m(ℓθ̇² + g cos θ − ẍ sin θ) and no tangential part; M → ∞ recovers ℓθ̈ + g sin θ = 0.
+struct PendulumOnCart {
+    big_m: f64,
+    m: f64,
+    l: f64,
+    g: f64,
+}
+
+impl Lagrangian for PendulumOnCart {
+    fn dof(&self) -> usize {
+        2
+    }
+    fn kinetic<T: Scalar>(&self, q: &[T], qd: &[T], _t: T) -> T {
+        let l = T::lit(self.l);
+        // y at (x + ℓ sin θ, −ℓ cos θ)
+        let vx = qd[0] + l * q[1].cos() * qd[1];
+        let vy = l * q[1].sin() * qd[1];
+        T::lit(0.5 * self.big_m) * qd[0] * qd[0] + T::lit(0.5 * self.m) * (vx * vx + vy * vy)
+    }
+    fn potential<T: Scalar>(&self, q: &[T], _t: T) -> T {
+        -T::lit(self.m * self.g * self.l) * q[1].cos()
+    }
+}
+
+#[test]
+fn problem_7_17_8_pendulum_on_a_cart() {
+    let (m, l, g) = (0.6, 1.1, 9.81);
+    for big_m in [2.0, 1e12] {
+        let p = PendulumOnCart { big_m, m, l, g };
+        for (th, thd) in [(0.4f64, 1.3f64), (2.0, -0.5), (-1.0, 0.0)] {
+            let qdd = accelerations(&p, &[0.3, th], &[0.2, thd], 0.0).unwrap();
+            let (xdd, thdd) = (qdd[0], qdd[1]);
+            let want_x = m * th.sin() * (l * thd * thd + g * th.cos()) / (big_m + m * th.sin().powi(2));
+            assert_abs(xdd, want_x, 64.0 * EPS * (g + l * thd * thd));
+            assert_abs(l * thdd + xdd * th.cos() + g * th.sin(), 0.0, 64.0 * EPS * (g + l * thd * thd));
+            assert_abs(
+                (big_m + m) * xdd + m * l * (thdd * th.cos() - thd * thd * th.sin()),
+                0.0,
+                64.0 * EPS * (big_m + m) * (g + l * thd * thd),
+            );
+            // the reaction on y: m a⃗_y − m g⃗ lies along the link ê = (sin θ, −cos θ)
+            let a_y = Vector3::new(
+                xdd + l * (thdd * th.cos() - thd * thd * th.sin()),
+                l * (thdd * th.sin() + thd * thd * th.cos()),
+                0.0,
+            );
+            let f_r = m * a_y + Vector3::new(0.0, m * g, 0.0);
+            let e = Vector3::new(th.sin(), -th.cos(), 0.0);
+            assert_abs(f_r.cross(&e).z, 0.0, 64.0 * EPS * m * (g + l * thd * thd));
+            assert_abs(
+                -f_r.dot(&e),
+                m * (l * thd * thd + g * th.cos() - xdd * th.sin()),
+                64.0 * EPS * m * (g + l * thd * thd),
+            );
+            if big_m == 1e12 {
+                // the simple pendulum: corrections of order m/M = 6e-13
+                assert_abs(thdd, -g / l * th.sin(), 1e-10);
+            }
+        }
     }
 }

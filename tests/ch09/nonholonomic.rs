@@ -88,7 +88,7 @@ fn section_9_12_rolling_disk_down_incline() {
     let run = ConstrainedIntegrator::new(Adaptive::dop853().rtol(1e-12).atol(1e-12))
         .integrate(&MapForm(&d), &q, &qd, 0.0, 1.0)
         .unwrap();
-    let last = run.solution.t.len() - 1;
+    let last = run.t.len() - 1;
     // the integrator's tolerance 1e-12 on a polynomial motion
     assert_abs(run.q(last)[0], qd[0] + 0.5 * a, 1e-10);
     assert!(run.max_constraint_violation.velocity <= 1e-12);
@@ -132,7 +132,7 @@ fn section_9_12_rolling_disk_energy_and_newton_euler() {
         .unwrap();
     assert!(run.max_constraint_violation.velocity <= 1e-9, "{:?}", run.max_constraint_violation);
     let e0 = d.energy(&q0, &qd0);
-    for i in (0..run.solution.t.len()).step_by(25) {
+    for i in (0..run.t.len()).step_by(25) {
         let (q, qd) = (run.q(i), run.qd(i));
         // local tolerance 1e-11 over ~10³ steps
         assert_abs(d.energy(q, qd), e0, 1e-8 * e0);
@@ -147,7 +147,7 @@ fn section_9_12_rolling_disk_energy_and_newton_euler() {
         assert!((alpha - alpha_ne).norm() <= 1e-12 * scale / d.r, "{alpha} vs {alpha_ne}");
     }
     // the disk leans and turns but does not fall in 20 s at this spin
-    assert!(run.q(run.solution.t.len() - 1)[3].abs() < 1.0);
+    assert!(run.q(run.t.len() - 1)[3].abs() < 1.0);
 }
 
 /// Bad input: all three components of the no-slip condition as rows. The vertical one
@@ -177,7 +177,7 @@ fn section_9_12_chaplygin_sleigh_centre_on_the_edge() {
     let run = ConstrainedIntegrator::new(Adaptive::dop853().rtol(1e-12).atol(1e-12))
         .integrate(&LagrangeForm(&s), &[0.0; 3], &[v, 0.0, w], 0.0, 30.0)
         .unwrap();
-    for i in 0..run.solution.t.len() {
+    for i in 0..run.t.len() {
         let (q, qd) = (run.q(i), run.qd(i));
         let (vi, wi) = sleigh_speeds(q, qd);
         // constant in exact arithmetic: the integrator's 1e-12 accumulates over ~10² steps
@@ -207,8 +207,8 @@ fn section_9_12_chaplygin_sleigh_offset_centre_closed_form() {
     let run = ConstrainedIntegrator::new(Adaptive::dop853().rtol(1e-12).atol(1e-12))
         .integrate(&LagrangeForm(&s), &[0.0; 3], &[v0, 0.0, w0], 0.0, 40.0)
         .unwrap();
-    for i in 0..run.solution.t.len() {
-        let (t, q, qd) = (run.solution.t[i], run.q(i), run.qd(i));
+    for i in 0..run.t.len() {
+        let (t, q, qd) = (run.t[i], run.q(i), run.qd(i));
         let (v, w) = sleigh_speeds(q, qd);
         let u = k * t + u0;
         // local tolerance 1e-12 over ~10³ steps of a smooth solution
@@ -218,6 +218,6 @@ fn section_9_12_chaplygin_sleigh_offset_centre_closed_form() {
         assert_abs(0.5 * s.m * v * v + 0.5 * ip * w * w, e, 1e-10 * e);
     }
     // after 40 s the sleigh runs straight ahead at v∞, centre first
-    let (v, w) = sleigh_speeds(run.q(run.solution.t.len() - 1), run.qd(run.solution.t.len() - 1));
+    let (v, w) = sleigh_speeds(run.q(run.t.len() - 1), run.qd(run.t.len() - 1));
     assert!(w.abs() < 1e-6 && (v - v_inf).abs() < 1e-9);
 }

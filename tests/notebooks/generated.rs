@@ -591,3 +591,77 @@ fn notebook_09_linear_systems() {
         .expect("finite data");
     println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
 }
+
+/// `docs/notebooks/10-units.ipynb`
+#[test]
+fn notebook_10_units() {
+    // cell 1
+    // cell 2
+    use vectrix::prelude::*;
+    use vectrix::units::kind::{AngularVelocity, Force, Length, Mass, Moment, MomentOfInertia, Velocity};
+    use vectrix::units::{
+        Dimension, Measure, Physical, Quantity, TypedMassProperties, Unit, UnitSystem, principal_mass_properties,
+    };
+    // cell 3
+    let lbf = Quantity::parse("1 lbf").and_then(|q| q.to_si(Dimension::FORCE)).expect("a force");
+    let slug = Quantity::parse("1 slug").and_then(|q| q.to_si(Dimension::MASS)).expect("a mass");
+    println!("1 lbf  = {lbf} N   (book: 4.4 N)");
+    println!("1 slug = {slug} kg (book: 14.59 kg)");
+    assert_eq!(lbf, 4.4482216152605);
+    assert_eq!(slug, 14.593902937206364);
+    // (15.19.1) exactly: 1 lbf = 1 slug·ft/s²
+    let ft_s2 = Quantity::parse("1 slug*ft/s^2").and_then(|q| q.to_unit(&Unit::parse("lbf").expect("unit")));
+    assert_eq!(ft_s2.expect("same dimension"), 1.0);
+    // a wrong dimension is an error naming both
+    let e = Quantity::parse("3 ft").and_then(|q| q.to_si(Dimension::VELOCITY)).unwrap_err();
+    println!("{e}");
+    // cell 4
+    for d in [Dimension::VELOCITY, Dimension::ANGULAR_VELOCITY, Dimension::MOMENT, Dimension::MOMENT_OF_INERTIA] {
+        let si = UnitSystem::Si.format(d, 1.0).expect("finite");
+        let imperial = UnitSystem::Imperial.format(d, 1.0).expect("finite");
+        println!("{:>20}: {si:>12} = {imperial}", d.name().unwrap_or("?"));
+    }
+    // cell 5
+    let a = Frame::new();
+    let b = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.k(), 0.5).expect("nonzero axis"));
+    let r: Physical<Length> = Physical::parse(&a, ["2 ft", "0 ft", "0 ft"]).expect("lengths");
+    let f: Physical<Force> = Physical::in_unit(&a, [0.0, 10.0, 0.0], "lbf").expect("forces");
+    let m: Physical<Moment> = r.cross(&f);
+    println!("M|_A = {:?} ft·lbf", m.resolve_in(&a, "ft*lbf").expect("a moment"));
+    println!("M|_A = {:?} N·m", m.resolve_in(&a, "N*m").expect("a moment"));
+    println!("M|_B = {:?} ft·lbf (same vector, another frame)", m.resolve_in(&b, "ft*lbf").expect("a moment"));
+    let omega: Physical<AngularVelocity> = Physical::parse(&b, ["0 rpm", "0 rpm", "60 rpm"]).expect("rates");
+    let v: Physical<Velocity> = omega.cross(&r);
+    println!("ω × r = {:?} ft/s", v.resolve_in(&a, "ft/s").expect("a velocity"));
+    assert!((v.magnitude().value_in("ft/s").expect("ft/s") - 2.0 * std::f64::consts::TAU).abs() < 1e-12);
+    // cell 6
+    let j = |t: &str| Measure::<MomentOfInertia>::parse(t).expect("an inertia");
+    let mp = principal_mass_properties(
+        &a,
+        Measure::<Mass>::new(13_000.0 / 32.2, "slug").expect("a mass"),
+        Physical::zero(),
+        [j("27915 slug*ft^2"), j("25000 slug*ft^2"), j("47085 slug*ft^2")],
+    )
+    .expect("physical inertia");
+    let jj = mp.inertia_resolved(&a);
+    for (k, row) in jj.iter().enumerate() {
+        let jkk = row[k];
+        println!("J[{k}{k}] = {:.6} kg·m² = {:.6} slug·ft²", jkk.si(), jkk.value_in("slug*ft^2").expect("unit"));
+    }
+    // cell 7
+    let g0 = Quantity::parse("1 g0").and_then(|q| q.to_si(Dimension::ACCELERATION)).expect("an acceleration");
+    let (mut v_si, mut v_imp) = (Vec::new(), Vec::new());
+    for step in 0..=30 {
+        let t = 0.1 * f64::from(step);
+        let v = g0 * t; // kernel: SI
+        v_si.push((t, v));
+        v_imp.push((t, UnitSystem::Imperial.value_from_si(Dimension::VELOCITY, v).expect("finite")));
+    }
+    let label = |s: UnitSystem| format!("v [{}]", s.label(Dimension::VELOCITY));
+    let svg = LineChart::new("v = g₀ t in SI and English units (§15.19)", "t [s]", "v")
+        .with_series(label(UnitSystem::Si), v_si)
+        .with_series(label(UnitSystem::Imperial), v_imp)
+        .to_svg()
+        .expect("finite data");
+    println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+}

@@ -1,5 +1,32 @@
-//! Shared test support: tolerances, closeness assertions and proptest strategies biased toward
-//! the hard sets (DESIGN §6). Included by each chapter file with `mod support;`.
+//! Shared test support: assertions whose tolerances say what they mean, and proptest
+//! strategies biased toward the hard sets (DESIGN §6). Included by each chapter file with
+//! `mod support;`.
+//!
+//! # Choosing a tolerance
+//!
+//! Every assertion states its semantics in its name; none scales a tolerance by the value.
+//!
+//! - **A printed number of the book**: `assert_printed(got, "0.0985")` checks half a unit of
+//!   the last printed digit (±0.00005 here; `"985"` is checked to ±0.5). Pass the digits exactly
+//!   as printed. Where the book chops digits instead of rounding them (the notes say which),
+//!   `assert_truncated(got, "6.29")` checks that chopping `got` gives the printed digits.
+//! - **A closed form evaluated in floating point**: `assert_rel(got, want, k * EPS)` with k a
+//!   small count of the roundings on the path (a few for a product or a square root, tens for a
+//!   3 × 3 matrix product chain), so the test still fails on a wrong sign, factor or term.
+//! - **Entries of an object with a natural scale** (rotation and unit-vector components, whose
+//!   scale is 1; a vector or matrix whose largest entry sets the scale): `assert_abs` or
+//!   `assert_abs_slice` at k·ε times that scale, or `assert_rel_slice`, which is relative to
+//!   the largest |want_i| (so entries that should be 0 are checked at the scale of the object,
+//!   where their rounding error lives).
+//! - **A value that is zero in exact arithmetic**: `assert_abs(got, 0.0, k * EPS * scale)`,
+//!   the scale being the size of the terms that cancel.
+//! - **An iterative, integrated or truncated-series result**: the accuracy the method promises
+//!   (the tolerance of the root finder, the step-size error of the integrator), with a comment
+//!   that names it.
+//!
+//! Loosen only with a comment that says why the mathematics needs it (conditioning,
+//! cancellation, an iteration's stopping rule); a printed-digit tolerance is never multiplied
+//! by the value.
 #![allow(dead_code)]
 
 use proptest::prelude::*;
@@ -21,20 +48,100 @@ pub const HARD_ANGLES: [f64; 9] = [
     std::f64::consts::PI,
 ];
 
-/// Asserts |got − want| ≤ tol·max(1, |want|).
+/// Asserts the absolute error |got − want| ≤ tol.
 #[track_caller]
-pub fn assert_close(got: f64, want: f64, tol: f64) {
+pub fn assert_abs(got: f64, want: f64, tol: f64) {
     let err = (got - want).abs();
-    assert!(err <= tol * want.abs().max(1.0), "got {got:e}, want {want:e}, |err| = {err:e} > {tol:e}");
+    assert!(err <= tol, "got {got:e}, want {want:e}: |err| = {err:e} > abs tol {tol:e}");
 }
 
-/// Asserts max |got_i − want_i| ≤ tol·max(1, max|want_i|) for slices of equal length.
+/// Asserts the relative error |got − want| ≤ tol·|want| (so `want = 0` demands `got = 0`).
 #[track_caller]
-pub fn assert_close_slice(got: &[f64], want: &[f64], tol: f64) {
+pub fn assert_rel(got: f64, want: f64, tol: f64) {
+    let err = (got - want).abs();
+    let bound = tol * want.abs();
+    assert!(
+        err <= bound,
+        "got {got:e}, want {want:e}: |err| = {err:e} > rel tol {tol:e} · |want| = {bound:e}"
+    );
+}
+
+/// Asserts |got_i − want_i| ≤ tol for every entry of two slices of equal length.
+#[track_caller]
+pub fn assert_abs_slice(got: &[f64], want: &[f64], tol: f64) {
     assert_eq!(got.len(), want.len(), "length mismatch");
-    let scale = want.iter().fold(1.0f64, |m, w| m.max(w.abs()));
-    let err = got.iter().zip(want).fold(0.0f64, |m, (g, w)| m.max((g - w).abs()));
-    assert!(err <= tol * scale, "got {got:?}, want {want:?}, max |err| = {err:e} > {tol:e}·{scale}");
+    let err = max_abs_diff(got, want);
+    assert!(err <= tol, "got {got:?}, want {want:?}: max |err| = {err:e} > abs tol {tol:e}");
+}
+
+/// Asserts max_i |got_i − want_i| ≤ tol·max_i |want_i|: relative to the largest entry (the
+/// ∞-norm of `want`), so entries that should vanish are checked at the scale of the object.
+#[track_caller]
+pub fn assert_rel_slice(got: &[f64], want: &[f64], tol: f64) {
+    assert_eq!(got.len(), want.len(), "length mismatch");
+    let err = max_abs_diff(got, want);
+    let scale = want.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+    assert!(
+        err <= tol * scale,
+        "got {got:?}, want {want:?}: max |err| = {err:e} > rel tol {tol:e} · max|want| = {scale:e}"
+    );
+}
+
+/// Asserts `got` rounds to the digits the book prints: |got − printed| ≤ ½ unit of the last
+/// printed digit (`"6.29"` → ±0.005, `"985"` → ±0.5, `"1.5e-3"` → ±0.00005), plus 4 ε·|printed|
+/// for the binary representation of the printed decimal.
+#[track_caller]
+pub fn assert_printed(got: f64, printed: &str) {
+    let (want, unit) = parse_printed(printed);
+    let tol = 0.5 * unit + 4.0 * EPS * want.abs();
+    let err = (got - want).abs();
+    assert!(err <= tol, "got {got}, printed {printed} (±{tol:e}): |err| = {err:e}");
+}
+
+/// Asserts `got` chopped toward zero after the last printed digit gives the printed digits
+/// (for the places where the book truncates rather than rounds: 6.297 printed as `"6.29"`).
+#[track_caller]
+pub fn assert_truncated(got: f64, printed: &str) {
+    let (want, unit) = parse_printed(printed);
+    let slack = 4.0 * EPS * want.abs();
+    // Chopping toward zero: printed ≤ got < printed + unit for a positive value, mirrored for
+    // a negative one.
+    let ok = if want > 0.0 || (want == 0.0 && !printed.trim_start().starts_with('-')) {
+        got >= want - slack && got < want + unit + slack
+    } else {
+        got <= want + slack && got > want - unit - slack
+    };
+    assert!(ok, "got {got}, which does not truncate to the printed {printed} (unit {unit:e})");
+}
+
+/// [`assert_printed`] entry by entry.
+#[track_caller]
+pub fn assert_printed_slice(got: &[f64], printed: &[&str]) {
+    assert_eq!(got.len(), printed.len(), "length mismatch");
+    for (g, p) in got.iter().zip(printed) {
+        assert_printed(*g, p);
+    }
+}
+
+/// The value of a printed decimal and the unit of its last digit: `"6.29"` → (6.29, 0.01),
+/// `"985"` → (985, 1), `"-1.25e-3"` → (−0.00125, 0.00001).
+pub fn parse_printed(printed: &str) -> (f64, f64) {
+    let s = printed.trim();
+    let value: f64 = s.parse().unwrap_or_else(|_| panic!("{printed:?} is not a decimal number"));
+    let (mantissa, exponent) = match s.find(['e', 'E']) {
+        Some(i) => (&s[..i], s[i + 1..].parse::<i32>().expect("decimal exponent")),
+        None => (s, 0),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, frac)| frac.len() as i32);
+    (value, 10f64.powi(exponent - decimals))
+}
+
+fn max_abs_diff(got: &[f64], want: &[f64]) -> f64 {
+    // NaN must fail: fold with a comparison that propagates it.
+    got.iter().zip(want).fold(0.0f64, |m, (g, w)| {
+        let d = (g - w).abs();
+        if d.is_nan() || m.is_nan() { f64::NAN } else { m.max(d) }
+    })
 }
 
 /// Finite components in a range that includes tiny and huge magnitudes.

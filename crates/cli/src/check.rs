@@ -5,51 +5,15 @@
 use std::io::Write;
 use std::path::Path;
 
-use vectrix_dynamics::scene::Scene;
-use vectrix_flight::scene::FlightScene;
+use vectrix_flight::scene::AnyScene;
 
-/// A loaded scene file: a multibody scene or a flight scene (one with an `[aircraft]` table).
-pub(crate) enum Loaded {
-    /// Bodies, joints and effects (`vectrix_dynamics::scene`).
-    Bodies(Box<Scene>),
-    /// An aircraft, its trim and control inputs (`vectrix_flight::scene`).
-    Flight(Box<FlightScene>),
-}
-
-/// Whether a scene text declares an aircraft (top-level `[aircraft]` table).
-pub(crate) fn is_flight(text: &str) -> bool {
-    text.parse::<toml::Table>().is_ok_and(|t| t.contains_key("aircraft"))
-}
-
-/// Loads a scene file of either kind, reporting errors with line and column.
-pub(crate) fn load_any(path: &Path) -> Result<Loaded, Box<dyn std::error::Error>> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let file = path.display().to_string();
-    Ok(if is_flight(&text) {
-        Loaded::Flight(Box::new(FlightScene::from_toml(&text, &file)?))
-    } else {
-        Loaded::Bodies(Box::new(Scene::from_toml(&text, &file)?))
-    })
-}
-
-/// Loads a multibody scene file, reporting errors with line and column.
-pub(crate) fn load(path: &Path) -> Result<Scene, Box<dyn std::error::Error>> {
-    match load_any(path)? {
-        Loaded::Bodies(s) => Ok(*s),
-        Loaded::Flight(_) => Err(format!(
-            "{}: a flight scene (it has an [aircraft] table); `vectrix run` and `vectrix check` take it, \
-             sweeps take multibody scenes only",
-            path.display()
-        )
-        .into()),
-    }
-}
+use crate::output::BoxError;
 
 /// Validates and prints what the scene declares and which invariants it implies.
-pub fn check(out: &mut impl Write, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
-    let scene = match load_any(path)? {
-        Loaded::Bodies(s) => *s,
-        Loaded::Flight(f) => {
+pub fn check(out: &mut impl Write, path: &Path) -> Result<(), BoxError> {
+    let scene = match crate::run::load(path)? {
+        AnyScene::Bodies(s) => *s,
+        AnyScene::Flight(f) => {
             let t = &f.linearization().trim;
             writeln!(
                 out,

@@ -23,9 +23,12 @@ use clap::{Parser, Subcommand};
 mod accuracy;
 mod check;
 mod output;
+mod report;
 mod run;
 mod sweep;
 mod tour;
+
+pub use run::Outcome;
 
 /// Command-line arguments.
 #[derive(Debug, Parser)]
@@ -67,14 +70,18 @@ pub enum Command {
         /// Parent directory of the output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// No progress bar.
+        #[arg(long)]
+        quiet: bool,
     },
     /// A short tour: frames, resolution, a rotor, a contraction.
     Tour,
-    /// Work–precision harness of the integrators: writes docs/accuracy/*.svg and prints the
-    /// tables of docs/accuracy.md (`cargo run --release -- accuracy`).
+    /// Work–precision harness of the integrators: writes the SVG diagrams into out/accuracy/
+    /// and prints the tables of docs/accuracy.md (regenerate the docs' figures with
+    /// `cargo run --release -- accuracy --out docs/accuracy`).
     Accuracy {
         /// Directory for the SVG diagrams.
-        #[arg(long, default_value = "docs/accuracy")]
+        #[arg(long, default_value = "out/accuracy")]
         out: PathBuf,
         /// A few points per line only (seconds instead of a minute).
         #[arg(long)]
@@ -85,31 +92,44 @@ pub enum Command {
     },
 }
 
-/// Parses `args` (the first is the program name) and runs, printing to `out`.
+/// Parses `args` (the first is the program name) and runs, printing to `out`. A run that a
+/// budget or Ctrl-C stopped early still writes its output and returns its [`Outcome`].
 ///
 /// # Errors
-/// Argument errors (clap's message), scene errors with line and column, I/O errors.
-pub fn run_with_args<I, T>(args: I, out: &mut impl Write) -> Result<(), Box<dyn std::error::Error>>
+/// Argument errors (clap's message), scene errors with line and column, I/O errors, a refused
+/// output folder.
+pub fn run_with_args<I, T>(
+    args: I,
+    out: &mut impl Write,
+) -> Result<Outcome, Box<dyn std::error::Error + Send + Sync>>
 where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
     let cli = Cli::try_parse_from(args)?;
+    let done = |r: Result<(), Box<dyn std::error::Error + Send + Sync>>| r.map(|()| Outcome::Complete);
     match cli.command {
         None => run::run(out, None, &PathBuf::from("out"), false),
         Some(Command::Run { scene, out: dir, quiet }) => run::run(out, scene.as_deref(), &dir, quiet),
-        Some(Command::Check { scene }) => check::check(out, &scene),
-        Some(Command::Sweep { scene, param, out: dir }) => sweep::sweep(out, &scene, &param, &dir),
-        Some(Command::Tour) => tour::run(out),
-        Some(Command::Accuracy { out: dir, quick, all }) => accuracy::run(out, &dir, quick, all),
+        Some(Command::Check { scene }) => done(check::check(out, &scene)),
+        Some(Command::Sweep { scene, param, out: dir, quiet }) => {
+            sweep::sweep(out, &scene, &param, &dir, quiet)
+        }
+        Some(Command::Tour) => done(tour::run(out).map_err(|e| e.to_string().into())),
+        Some(Command::Accuracy { out: dir, quick, all }) => {
+            done(accuracy::run(out, &dir, quick, all).map_err(|e| e.to_string().into()))
+        }
     }
 }
 
-/// Entry point of the binary: parses `std::env::args` and runs.
+/// Entry point of the binary: parses `std::env::args` and runs. Exit codes: 0 done, 1 error
+/// or a run stopped by its budget (output written, marked incomplete), 130 interrupted.
 pub fn main() -> ExitCode {
     let mut out = std::io::stdout().lock();
     match run_with_args(std::env::args_os(), &mut out) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(Outcome::Complete) => ExitCode::SUCCESS,
+        Ok(Outcome::Budget) => ExitCode::FAILURE,
+        Ok(Outcome::Interrupted) => ExitCode::from(130),
         Err(e) => {
             if let Some(c) = e.downcast_ref::<clap::Error>() {
                 let _ = c.print();

@@ -1,41 +1,108 @@
 //! `vectrix run [SCENE]`: run a scene (the embedded default when none is given), show a
-//! progress bar on long runs, write the outputs and print a short summary.
+//! progress bar with an estimated time to completion on long runs, stop cleanly on Ctrl-C
+//! (writing what was computed, marked incomplete), write the outputs and print a summary.
 //!
 //! Book: §7.8 (the default scene: torque-free body, tennis-racket flip), §8.3 (invariants).
 
 use std::io::Write;
 use std::path::Path;
+use std::sync::OnceLock;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use vectrix_dynamics::scene::{DEFAULT_SCENE, Run, Scene};
-use vectrix_flight::scene::FlightScene;
+use vectrix_dynamics::scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, StopReason};
+use vectrix_flight::scene::{AnyScene, FlightScene};
 
-/// Runs a loaded scene with a progress bar that appears only after half a second.
-pub(crate) fn simulate(scene: &Scene, quiet: bool) -> Result<Run, Box<dyn std::error::Error>> {
-    let start = Instant::now();
-    let mut bar: Option<ProgressBar> = None;
-    let mut progress = |f: f64| {
-        if quiet {
+use crate::output::{BoxError, write_dir};
+
+/// Set by Ctrl-C: the run in progress stops after its current step.
+pub(crate) fn interrupted() -> &'static AtomicBool {
+    static FLAG: AtomicBool = AtomicBool::new(false);
+    static HANDLER: OnceLock<()> = OnceLock::new();
+    HANDLER.get_or_init(|| {
+        // a second Ctrl-C ends the process at once
+        let _ = ctrlc::set_handler(|| {
+            if FLAG.swap(true, Ordering::SeqCst) {
+                std::process::exit(130);
+            }
+        });
+    });
+    &FLAG
+}
+
+/// A progress bar that appears after half a second, with an ETA from the elapsed time and
+/// the fraction done (elapsed·(1 − f)/f), not from the rate of the last updates.
+pub(crate) struct Progress {
+    start: Instant,
+    name: String,
+    quiet: bool,
+    bar: Option<ProgressBar>,
+}
+
+impl Progress {
+    pub fn new(name: &str, quiet: bool) -> Self {
+        Self { start: Instant::now(), name: name.to_string(), quiet, bar: None }
+    }
+
+    /// Reports fraction `f` ∈ [0, 1] done.
+    pub fn update(&mut self, f: f64) {
+        if self.quiet || !f.is_finite() {
             return;
         }
-        if bar.is_none() && start.elapsed() > Duration::from_millis(500) && f < 0.9 {
+        let elapsed = self.start.elapsed();
+        if self.bar.is_none() && elapsed > Duration::from_millis(500) && f < 0.9 {
             let b = ProgressBar::new(1000);
-            if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:40}] {percent}% eta {eta}") {
-                b.set_style(style);
+            if let Ok(style) = ProgressStyle::with_template("{prefix} [{bar:40}] {percent:>3}% {msg}") {
+                b.set_style(style.progress_chars("=> "));
             }
-            b.set_message(scene.spec().name.clone());
-            bar = Some(b);
+            b.set_prefix(self.name.clone());
+            self.bar = Some(b);
         }
-        if let Some(b) = &bar {
-            b.set_position((f * 1000.0) as u64);
+        if let Some(b) = &self.bar {
+            let pos = (f.clamp(0.0, 1.0) * 1000.0) as u64;
+            if pos != b.position() {
+                b.set_position(pos);
+                let e = elapsed.as_secs_f64();
+                let eta = if f > 0.0 { e * (1.0 - f) / f } else { f64::INFINITY };
+                b.set_message(format!("{e:.0} s elapsed, ETA {}", human(eta)));
+            }
         }
-    };
-    let run = scene.run(&mut progress)?;
-    if let Some(b) = bar {
-        b.finish_and_clear();
     }
+
+    pub fn finish(self) {
+        if let Some(b) = self.bar {
+            b.finish_and_clear();
+        }
+    }
+}
+
+/// `75 s`, `3 min 10 s`, `2 h 5 min`.
+fn human(s: f64) -> String {
+    if !s.is_finite() {
+        return "—".into();
+    }
+    let s = s.round() as u64;
+    match s {
+        0..60 => format!("{s} s"),
+        60..3600 => format!("{} min {} s", s / 60, s % 60),
+        _ => format!("{} h {} min", s / 3600, (s % 3600) / 60),
+    }
+}
+
+/// Runs a loaded scene with a progress bar and Ctrl-C handling.
+pub(crate) fn simulate(scene: &Scene, quiet: bool) -> Result<Run, BoxError> {
+    let mut bar = Progress::new(&scene.spec().name, quiet);
+    let run = scene.run_with(RunControl { progress: &mut |f| bar.update(f), cancel: Some(interrupted()) })?;
+    bar.finish();
     Ok(run)
+}
+
+fn value(v: &InvariantValue) -> String {
+    match v {
+        InvariantValue::Scalar(x) => format!("{x:+.9e}"),
+        InvariantValue::Vector(x) => format!("[{:+.6e}, {:+.6e}, {:+.6e}]", x[0], x[1], x[2]),
+    }
 }
 
 /// Prints the short summary of a run.
@@ -43,25 +110,29 @@ pub(crate) fn print_summary(out: &mut impl Write, scene: &Scene, run: &Run) -> s
     let w = run.work;
     writeln!(
         out,
-        "scene `{}`: t = 0 … {} s, {} samples, {} f-evals, {} steps ({} rejected), {} impacts, {:.3} s wall",
+        "scene `{}`: t = 0 … {} s, {} rows, {} f-evals, {} steps ({} rejected), {} impacts, {} restarts, {:.3} s wall",
         run.scene,
-        scene.spec().duration,
+        run.t.last().copied().unwrap_or(0.0),
         run.t.len(),
         w.fevals,
         w.accepted,
         w.rejected,
         w.impacts,
+        w.restarts,
         w.wall_seconds
     )?;
+    if let Some(s) = &run.stop {
+        writeln!(out, "INCOMPLETE (requested t = 0 … {} s): {}", scene.spec().duration, s.message)?;
+    }
     if run.invariants.is_empty() {
         writeln!(out, "no invariants follow from the declared effects")?;
     }
     for d in &run.drift {
         writeln!(
             out,
-            "  {:<18} initial {:.6e}  max drift {:.2e} (relative {:.2e})",
+            "  {:<18} initial {}  max drift {:.2e} (relative {:.2e})",
             d.invariant.name(),
-            d.initial,
+            value(&d.initial),
             d.max_abs,
             d.max_rel
         )?;
@@ -69,25 +140,52 @@ pub(crate) fn print_summary(out: &mut impl Write, scene: &Scene, run: &Run) -> s
     Ok(())
 }
 
+/// Reads a scene file of either kind (bounded size), reporting errors with line and column.
+pub(crate) fn load(path: &Path) -> Result<AnyScene, BoxError> {
+    let shown = path.display().to_string();
+    let meta = std::fs::metadata(path).map_err(|e| format!("{shown}: {e}"))?;
+    if meta.len() > vectrix_dynamics::scene::MAX_SCENE_BYTES as u64 {
+        return Err(format!(
+            "{shown}: {} bytes; valid: a scene file of at most {} bytes",
+            meta.len(),
+            vectrix_dynamics::scene::MAX_SCENE_BYTES
+        )
+        .into());
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{shown}: {e}"))?;
+    Ok(AnyScene::from_toml(&text, &shown)?)
+}
+
+/// How a run ended, for the process exit code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// The run reached its duration.
+    Complete,
+    /// A budget stopped it (output written, marked incomplete).
+    Budget,
+    /// Ctrl-C stopped it (output written, marked incomplete).
+    Interrupted,
+}
+
 /// `vectrix run`.
-pub fn run(
-    out: &mut impl Write,
-    path: Option<&Path>,
-    dir: &Path,
-    quiet: bool,
-) -> Result<(), Box<dyn std::error::Error>> {
+pub fn run(out: &mut impl Write, path: Option<&Path>, dir: &Path, quiet: bool) -> Result<Outcome, BoxError> {
     let scene = match path {
-        Some(p) => match crate::check::load_any(p)? {
-            crate::check::Loaded::Bodies(s) => *s,
-            crate::check::Loaded::Flight(f) => return run_flight(out, &f, dir),
+        Some(p) => match load(p)? {
+            AnyScene::Bodies(s) => *s,
+            AnyScene::Flight(f) => return run_flight(out, &f, dir, quiet),
         },
         None => Scene::from_toml(DEFAULT_SCENE, "<default scene>")?,
     };
+    crate::output::preflight(dir, &scene.spec().name)?;
     let run = simulate(&scene, quiet)?;
-    let dest = crate::output::write(dir, &scene, &run)?;
+    let dest = write_dir(dir, &scene.spec().name, |tmp| crate::report::write_scene(tmp, &scene, &run))?;
     print_summary(out, &scene, &run)?;
     writeln!(out, "wrote {}", dest.display())?;
-    Ok(())
+    Ok(match run.stop.as_ref().map(|s| s.reason) {
+        None => Outcome::Complete,
+        Some(StopReason::Interrupted) => Outcome::Interrupted,
+        Some(_) => Outcome::Budget,
+    })
 }
 
 /// `vectrix run` on a flight scene: trim, nonlinear and linear responses, modes.
@@ -95,20 +193,27 @@ fn run_flight(
     out: &mut impl Write,
     scene: &FlightScene,
     dir: &Path,
-) -> Result<(), Box<dyn std::error::Error>> {
+    quiet: bool,
+) -> Result<Outcome, BoxError> {
+    crate::output::preflight(dir, &scene.spec().name)?;
     let start = Instant::now();
-    let run = scene.run()?;
-    let dest = crate::output::write_flight(dir, &run)?;
+    let mut bar = Progress::new(&scene.spec().name, quiet);
+    let run = scene.run_with(RunControl { progress: &mut |f| bar.update(f), cancel: Some(interrupted()) })?;
+    bar.finish();
+    let dest = write_dir(dir, &run.scene, |tmp| crate::report::write_flight(tmp, &run))?;
     writeln!(
         out,
-        "flight scene `{}`: t = 0 … {} s, {} samples, {} f-evals, {} steps, {:.3} s wall",
+        "flight scene `{}`: t = 0 … {} s, {} rows, {} f-evals, {} steps, {:.3} s wall",
         run.scene,
-        scene.spec().duration,
+        run.t.last().copied().unwrap_or(0.0),
         run.t.len(),
         run.fevals,
         run.steps,
         start.elapsed().as_secs_f64()
     )?;
+    if let Some(s) = &run.stop {
+        writeln!(out, "INCOMPLETE (requested t = 0 … {} s): {}", scene.spec().duration, s.message)?;
+    }
     for m in &run.modes {
         writeln!(
             out,
@@ -127,5 +232,5 @@ fn run_flight(
         }
     }
     writeln!(out, "wrote {}", dest.display())?;
-    Ok(())
+    Ok(if run.stop.is_some() { Outcome::Interrupted } else { Outcome::Complete })
 }

@@ -1,20 +1,38 @@
 //! `vectrix sweep SCENE --param PATH=v1,v2,…`: the Cartesian product of parameter values,
-//! each a full scene run, in parallel on all cores (rayon).
+//! each a full scene run, in parallel on all cores (rayon). Everything goes into one output
+//! folder `<out>/<name>-sweep/` written like any other (see [`crate::output`]): `sweep.csv`
+//! (one row per run: parameters, completion, work, drift), one overlay SVG per requested
+//! output with every run's curves, and `run-000/`, `run-001/`, … with each run's own files.
+//! Runs are numbered, so their folders never collide whatever the parameter values; errors of
+//! a run point into the user's scene file.
 //!
 //! Book: — (parameter studies of the scenes of §7.11, ch. 6).
 
 use std::io::Write;
 use std::path::Path;
+use std::sync::Mutex;
 
 use rayon::prelude::*;
-use vectrix_dynamics::scene::Scene;
+use vectrix_dynamics::scene::{Run, RunControl, Scene, SceneSource, SceneSpec};
+use vectrix_flight::scene::AnyScene;
+use vectrix_plot::LineChart;
+
+use crate::output::{BoxError, file_stem, write_dir};
+use crate::report::{columns_of, y_label};
+use crate::run::{Progress, interrupted};
+
+/// Most runs one sweep may ask for (the product of the value counts).
+pub const MAX_SWEEP_RUNS: usize = 10_000;
 
 /// One parameter: its dotted path and values.
 fn parse_param(p: &str) -> Result<(String, Vec<f64>), String> {
     let (path, values) = p.split_once('=').ok_or_else(|| format!("`{p}`: expected PATH=v1,v2,…"))?;
     let vals = values
         .split(',')
-        .map(|v| v.trim().parse::<f64>().map_err(|_| format!("`{v}` in `{p}` is not a number")))
+        .map(|v| match v.trim().parse::<f64>() {
+            Ok(x) if x.is_finite() => Ok(x),
+            _ => Err(format!("`{v}` in `{p}` is not a finite number")),
+        })
         .collect::<Result<Vec<_>, _>>()?;
     if vals.is_empty() || path.is_empty() {
         return Err(format!("`{p}`: expected PATH=v1,v2,…"));
@@ -22,7 +40,24 @@ fn parse_param(p: &str) -> Result<(String, Vec<f64>), String> {
     Ok((path.to_string(), vals))
 }
 
-/// Sets the number at a dotted path (`effects.0.k`) of a TOML document.
+/// The scene-file path of a dotted parameter path: `effects.0.k` → `effects[0].k`.
+fn item_path(dotted: &str) -> String {
+    let mut out = String::new();
+    for seg in dotted.split('.') {
+        if seg.parse::<usize>().is_ok() {
+            out.push_str(&format!("[{seg}]"));
+        } else {
+            if !out.is_empty() {
+                out.push('.');
+            }
+            out.push_str(seg);
+        }
+    }
+    out
+}
+
+/// Sets the number at a dotted path (`effects.0.k`) of a TOML document; an integer stays an
+/// integer (a fractional value for it is an error).
 fn set(doc: &mut toml::Value, path: &str, x: f64) -> Result<(), String> {
     let mut cur = doc;
     for seg in path.split('.') {
@@ -36,17 +71,21 @@ fn set(doc: &mut toml::Value, path: &str, x: f64) -> Result<(), String> {
             _ => return Err(format!("`{path}`: `{seg}` is below a value")),
         };
     }
-    match cur {
-        toml::Value::Float(_) | toml::Value::Integer(_) => {
-            *cur = if matches!(cur, toml::Value::Integer(_)) && x.fract() == 0.0 {
-                toml::Value::Integer(x as i64)
-            } else {
-                toml::Value::Float(x)
-            };
-            Ok(())
-        }
-        _ => Err(format!("`{path}` is not a number")),
-    }
+    *cur = match cur {
+        toml::Value::Integer(_) if x.fract() == 0.0 && x.abs() < 9.0e15 => toml::Value::Integer(x as i64),
+        toml::Value::Integer(_) => return Err(format!("`{path}` is an integer; {x} is not")),
+        toml::Value::Float(_) => toml::Value::Float(x),
+        _ => return Err(format!("`{path}` is not a number")),
+    };
+    Ok(())
+}
+
+/// One finished run of the sweep.
+struct Done {
+    index: usize,
+    label: Vec<(String, f64)>,
+    scene: Scene,
+    run: Run,
 }
 
 /// `vectrix sweep`.
@@ -55,11 +94,27 @@ pub fn sweep(
     path: &Path,
     params: &[String],
     dir: &Path,
-) -> Result<(), Box<dyn std::error::Error>> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    crate::check::load(path)?;
+    quiet: bool,
+) -> Result<crate::run::Outcome, BoxError> {
+    let base_scene = match crate::run::load(path)? {
+        AnyScene::Bodies(s) => *s,
+        AnyScene::Flight(_) => {
+            return Err(format!(
+                "{}: a flight scene (it has an [aircraft] table); sweeps take multibody scenes",
+                path.display()
+            )
+            .into());
+        }
+    };
+    let text = std::fs::read_to_string(path)?;
+    let file = path.display().to_string();
+    let src = SceneSource::new(&text, &file)?;
     let doc: toml::Value = toml::from_str(&text)?;
     let params = params.iter().map(|p| parse_param(p)).collect::<Result<Vec<_>, _>>()?;
+    let total = params.iter().try_fold(1usize, |n, (_, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
+    if total > MAX_SWEEP_RUNS {
+        return Err(format!("the sweep asks for {total} runs; valid: at most {MAX_SWEEP_RUNS}").into());
+    }
     // Cartesian product of the values
     let mut combos: Vec<Vec<(String, f64)>> = vec![vec![]];
     for (p, vals) in &params {
@@ -68,49 +123,143 @@ pub fn sweep(
             .flat_map(|c| vals.iter().map(move |v| [c.clone(), vec![(p.clone(), *v)]].concat()))
             .collect();
     }
-    let base = doc.get("name").and_then(|n| n.as_str()).unwrap_or("scene").to_string();
-    let sweep_dir = dir.join(format!("{base}-sweep"));
-    let results: Vec<Result<String, String>> = combos
-        .par_iter()
-        .map(|combo| -> Result<String, String> {
+    // every run's scene is validated before any is run; errors point into the user's file
+    let scenes: Vec<Scene> = combos
+        .iter()
+        .map(|combo| -> Result<Scene, BoxError> {
             let mut d = doc.clone();
-            let label: Vec<String> = combo.iter().map(|(p, v)| format!("{p}={v}")).collect();
             for (p, v) in combo {
-                set(&mut d, p, *v)?;
+                set(&mut d, p, *v).map_err(|m| src.invalid(item_path(p), m))?;
             }
-            let name = format!("{base}_{}", label.join("_"));
-            if let toml::Value::Table(t) = &mut d {
-                t.insert("name".into(), toml::Value::String(name.clone()));
+            let spec: SceneSpec =
+                d.try_into().map_err(|e: toml::de::Error| src.invalid("", e.to_string()))?;
+            Ok(Scene::from_spec_in(spec, &src)?)
+        })
+        .collect::<Result<_, _>>()?;
+    let name = format!("{}-sweep", base_scene.spec().name);
+    crate::output::preflight(dir, &name)?;
+    let progress = Mutex::new((Progress::new(&name, quiet), 0usize));
+    let results: Vec<Result<Done, String>> = scenes
+        .into_par_iter()
+        .zip(combos)
+        .enumerate()
+        .map(|(index, (scene, label))| {
+            let run = scene
+                .run_with(RunControl { progress: &mut |_| {}, cancel: Some(interrupted()) })
+                .map_err(|e| format!("run {index} ({}): {e}", describe(&label)))?;
+            if let Ok(mut p) = progress.lock() {
+                p.1 += 1;
+                let f = p.1 as f64 / total as f64;
+                p.0.update(f);
             }
-            let src = toml::to_string(&d).map_err(|e| e.to_string())?;
-            let scene = Scene::from_toml(&src, &name).map_err(|e| e.to_string())?;
-            let run = crate::run::simulate(&scene, true).map_err(|e| e.to_string())?;
-            let dest = crate::output::write(&sweep_dir, &scene, &run).map_err(|e| e.to_string())?;
-            let drift: Vec<String> =
-                run.drift.iter().map(|x| format!("{} {:.1e}", x.invariant.name(), x.max_rel)).collect();
-            Ok(format!(
-                "| {} | {:.3} | {} | {} | {} |",
-                label.join(", "),
-                run.work.wall_seconds,
-                run.work.fevals,
-                drift.join("; "),
-                dest.display()
-            ))
+            Ok(Done { index, label, scene, run })
         })
         .collect();
-    writeln!(out, "| parameters | wall [s] | f-evals | drift | output |\n|---|---|---|---|---|")?;
+    if let Ok(p) = progress.into_inner() {
+        p.0.finish();
+    }
+    let mut done = Vec::new();
     let mut failed = Vec::new();
     for r in results {
         match r {
-            Ok(line) => writeln!(out, "{line}")?,
-            Err(e) => {
-                writeln!(out, "| error: {e} | | | | |")?;
-                failed.push(e);
-            }
+            Ok(d) => done.push(d),
+            Err(e) => failed.push(e),
         }
     }
     if let Some(first) = failed.first() {
-        return Err(format!("{} of {} sweep runs failed; first: {first}", failed.len(), combos.len()).into());
+        return Err(format!(
+            "{} of {total} sweep runs failed (nothing written); first: {first}",
+            failed.len()
+        )
+        .into());
     }
-    Ok(())
+    let dest = write_dir(dir, &name, |tmp| {
+        for d in &done {
+            let sub = tmp.join(format!("run-{:03}", d.index));
+            std::fs::create_dir(&sub)?;
+            crate::report::write_scene(&sub, &d.scene, &d.run)?;
+        }
+        std::fs::write(tmp.join("sweep.csv"), sweep_csv(&params, &done))?;
+        let mut taken = vec!["sweep".to_string()];
+        for o in &base_scene.spec().outputs {
+            std::fs::write(tmp.join(format!("{}.svg", file_stem(o, &mut taken))), overlay(&name, o, &done)?)?;
+        }
+        Ok(())
+    })?;
+    writeln!(out, "| run | parameters | complete | wall [s] | f-evals | drift |\n|---|---|---|---|---|---|")?;
+    for d in &done {
+        let drift: Vec<String> =
+            d.run.drift.iter().map(|x| format!("{} {:.1e}", x.invariant.name(), x.max_rel)).collect();
+        writeln!(
+            out,
+            "| {:03} | {} | {} | {:.3} | {} | {} |",
+            d.index,
+            describe(&d.label),
+            d.run.is_complete(),
+            d.run.work.wall_seconds,
+            d.run.work.fevals,
+            drift.join("; ")
+        )?;
+    }
+    writeln!(out, "wrote {}", dest.display())?;
+    Ok(if done.iter().all(|d| d.run.is_complete()) {
+        crate::run::Outcome::Complete
+    } else if interrupted().load(std::sync::atomic::Ordering::Relaxed) {
+        crate::run::Outcome::Interrupted
+    } else {
+        crate::run::Outcome::Budget
+    })
+}
+
+fn describe(label: &[(String, f64)]) -> String {
+    label.iter().map(|(p, v)| format!("{p}={v}")).collect::<Vec<_>>().join(", ")
+}
+
+/// sweep.csv: one row per run.
+fn sweep_csv(params: &[(String, Vec<f64>)], done: &[Done]) -> String {
+    let checks: Vec<&str> =
+        done.first().map(|d| d.run.drift.iter().map(|x| x.invariant.name()).collect()).unwrap_or_default();
+    let mut s = String::from("run");
+    for (p, _) in params {
+        s.push_str(&format!(",{p}"));
+    }
+    s.push_str(",complete,rows,fevals,accepted,rejected,wall_seconds");
+    for c in &checks {
+        s.push_str(&format!(",{c}_max_rel_drift"));
+    }
+    s.push('\n');
+    for d in done {
+        s.push_str(&format!("{:03}", d.index));
+        for (_, v) in &d.label {
+            s.push_str(&format!(",{v:e}"));
+        }
+        let w = d.run.work;
+        s.push_str(&format!(
+            ",{},{},{},{},{},{:e}",
+            d.run.is_complete(),
+            d.run.t.len(),
+            w.fevals,
+            w.accepted,
+            w.rejected,
+            w.wall_seconds
+        ));
+        for x in &d.run.drift {
+            s.push_str(&format!(",{:e}", x.max_rel));
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// All runs' curves of one output on one chart.
+fn overlay(name: &str, o: &str, done: &[Done]) -> Result<String, BoxError> {
+    let Some(first) = done.first() else { return Err("no runs".into()) };
+    let mut chart = LineChart::new(format!("{name}: {o}"), "t [s]", y_label(&first.run, o));
+    for d in done {
+        for (k, c) in columns_of(&d.run, o) {
+            let pts = d.run.t.iter().zip(&d.run.rows).map(|(t, r)| (*t, r[k])).collect();
+            chart = chart.with_series(format!("{c} ({})", describe(&d.label)), pts);
+        }
+    }
+    Ok(chart.to_svg()?)
 }

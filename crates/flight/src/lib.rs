@@ -33,8 +33,8 @@ pub use aero::{
 };
 pub use angles::{AeroAngles, Euler321, FlightPathAngles, o_s_ac, o_w_ac, o_w_s, o1, o2, o3};
 pub use catalog::{
-    BUSINESS_JET_U0, BUSINESS_JET_WEIGHT, boeing_747_longitudinal_a, business_jet, business_jet_lateral,
-    business_jet_longitudinal,
+    BUSINESS_JET_U0, BUSINESS_JET_WEIGHT, boeing_747_longitudinal_a, business_jet, business_jet_in,
+    business_jet_lateral, business_jet_lateral_in, business_jet_longitudinal, business_jet_longitudinal_in,
 };
 pub use derivatives::{Descriptor, LateralDerivatives, LongitudinalDerivatives};
 pub use eom::{AircraftState, Airframe, ForcesMoments, state_derivative};

@@ -37,10 +37,10 @@ use std::collections::BTreeMap;
 
 use nalgebra::DVector;
 use serde::{Deserialize, Serialize};
-use vectrix_dynamics::scene::SceneError;
+use vectrix_dynamics::scene::{RunControl, Scene, SceneError, SceneSource, Stop, StopReason};
 use vectrix_lti::Complex64;
 use vectrix_ode::OdeError;
-use vectrix_ode::explicit::Adaptive;
+use vectrix_ode::explicit::{Adaptive, Stepper};
 
 use crate::{
     Aircraft, AircraftState, Airframe, Controls, FlightError, FlightMode, Linearization, Trim, TrimLimits,
@@ -280,11 +280,61 @@ pub struct FlightRun {
     pub fevals: usize,
     /// Accepted steps of the nonlinear run.
     pub steps: usize,
+    /// `Some` when the run was cancelled: the samples end where the nonlinear run stopped.
+    pub stop: Option<Stop>,
+}
+
+/// Samples and work of one integration.
+struct Integrated {
+    samples: Vec<[f64; 12]>,
+    fevals: usize,
+    steps: usize,
+    stopped: Option<f64>,
+}
+
+/// A scene file of either kind, read by the one loader: an `[aircraft]` table makes it a
+/// flight scene, otherwise it declares bodies. Errors are located by the same spanned parse.
+///
+/// Book: §7.11 (bodies), §12.1 and §14.2 (aircraft).
+#[derive(Debug)]
+pub enum AnyScene {
+    /// Bodies, joints and effects (`vectrix_dynamics::scene`).
+    Bodies(Box<Scene>),
+    /// An aircraft, its trim and control inputs.
+    Flight(Box<FlightScene>),
+}
+
+impl AnyScene {
+    /// Parses and validates a scene file of either kind; `file` names it in messages.
+    ///
+    /// # Errors
+    /// [`SceneError::Parse`] and [`SceneError::Invalid`] with line and column.
+    pub fn from_toml(text: &str, file: &str) -> Result<Self, SceneError> {
+        let src = SceneSource::new(text, file)?;
+        Ok(if src.has_key("aircraft") {
+            Self::Flight(Box::new(FlightScene::from_source(&src)?))
+        } else {
+            Self::Bodies(Box::new(Scene::from_source(&src)?))
+        })
+    }
+
+    /// The scene's name (its output folder).
+    pub fn name(&self) -> &str {
+        match self {
+            Self::Bodies(s) => &s.spec().name,
+            Self::Flight(f) => &f.spec().name,
+        }
+    }
 }
 
 #[derive(Serialize)]
 struct Summary<'a> {
     scene: &'a str,
+    /// `false` when the run was cancelled (see `stop`).
+    complete: bool,
+    stop: &'a Option<Stop>,
+    /// Rows written to trajectory.csv (t = 0 included).
+    rows: usize,
     trim: TrimSummary,
     modes: &'a [ModeSummary],
     outputs: Vec<OutputSummary<'a>>,
@@ -314,16 +364,12 @@ struct OutputSummary<'a> {
     max_linear_error: Option<f64>,
 }
 
-struct Src<'a> {
-    file: &'a str,
-    text: &'a str,
-}
+/// Most output samples of a flight scene (rows of trajectory.csv; bounds memory and time).
+pub const MAX_FLIGHT_SAMPLES: usize = 1_000_000;
 
-impl Src<'_> {
-    fn err(&self, needle: &str, path: &str, message: impl Into<String>) -> SceneError {
-        SceneError::invalid_at(self.text, self.file, needle, path, message)
-    }
-}
+/// Errors are located by item path in the spanned document (one locator for every kind of
+/// scene file).
+type Src<'a> = SceneSource<'a>;
 
 /// Sets coefficient `name` of `c`; `false` for an unknown name.
 fn set_coefficient(c: &mut crate::Coefficients, name: &str, v: f64) -> bool {
@@ -344,7 +390,7 @@ fn set_coefficient(c: &mut crate::Coefficients, name: &str, v: f64) -> bool {
 fn positive(src: &Src, key: &str, path: &str, v: Option<f64>) -> Result<Option<f64>, SceneError> {
     match v {
         Some(x) if !(x.is_finite() && x > 0.0) => {
-            Err(src.err(key, path, format!("{key} = {x}; valid: a finite number > 0")))
+            Err(src.invalid(path, format!("{key} = {x}; valid: a finite number > 0")))
         }
         _ => Ok(v),
     }
@@ -354,9 +400,7 @@ fn build_aircraft(spec: &AircraftSpec, src: &Src) -> Result<Aircraft, SceneError
     let mut ac = match spec.model.as_str() {
         "business_jet" => business_jet(),
         m => {
-            return Err(src.err(
-                "model",
-                "aircraft.model",
+            return Err(src.invalid("aircraft.model",
                 format!(
                     "unknown aircraft model `{m}`; valid: business_jet (the 747 of §14.7.3 is a linear A only, \
                      see boeing_747_longitudinal_a)"
@@ -368,7 +412,7 @@ fn build_aircraft(spec: &AircraftSpec, src: &Src) -> Result<Aircraft, SceneError
     let mass = positive(src, "mass", "aircraft.mass", spec.mass)?.unwrap_or(ac.airframe.mass());
     let [jxx, jyy, jzz, jxz] = spec.inertia.unwrap_or([jxx0, jyy0, jzz0, jxz0]);
     ac.airframe = Airframe::new(mass, jxx, jyy, jzz, jxz).map_err(|e| {
-        src.err(if spec.inertia.is_some() { "inertia" } else { "mass" }, "aircraft.inertia", e.to_string())
+        src.invalid(if spec.inertia.is_some() { "aircraft.inertia" } else { "aircraft.mass" }, e.to_string())
     })?;
     ac.geometry.area = positive(src, "area", "aircraft.area", spec.area)?.unwrap_or(ac.geometry.area);
     ac.geometry.chord = positive(src, "chord", "aircraft.chord", spec.chord)?.unwrap_or(ac.geometry.chord);
@@ -377,19 +421,17 @@ fn build_aircraft(spec: &AircraftSpec, src: &Src) -> Result<Aircraft, SceneError
     ac.g = positive(src, "g", "aircraft.g", spec.g)?.unwrap_or(ac.g);
     if let Some(a) = spec.thrust_angle {
         if !a.is_finite() {
-            return Err(src.err("thrust_angle", "aircraft.thrust_angle", "thrust_angle must be finite"));
+            return Err(src.invalid("aircraft.thrust_angle", "thrust_angle must be finite"));
         }
         ac.thrust_angle = a;
     }
     for (name, &v) in &spec.coefficients {
         let path = format!("aircraft.coefficients.{name}");
         if !v.is_finite() {
-            return Err(src.err(name, &path, format!("{name} = {v}; valid: a finite number")));
+            return Err(src.invalid(&*path, format!("{name} = {v}; valid: a finite number")));
         }
         if !set_coefficient(&mut ac.coefficients, name, v) {
-            return Err(src.err(
-                name,
-                &path,
+            return Err(src.invalid(&*path,
                 format!(
                     "unknown coefficient `{name}`; valid: u_ref, cl0, cl_u, cl_alpha, cl_q, cl_alpha_dot, cl_de, \
                      cd_par, k_induced, cd_u, cm0, cm_u, cm_alpha, cm_q, cm_alpha_dot, cm_de, ce_beta, \
@@ -399,7 +441,7 @@ fn build_aircraft(spec: &AircraftSpec, src: &Src) -> Result<Aircraft, SceneError
             ));
         }
     }
-    ac.check().map_err(|e| src.err("[aircraft]", "aircraft", e.to_string()))?;
+    ac.check().map_err(|e| src.invalid("aircraft", e.to_string()))?;
     Ok(ac)
 }
 
@@ -408,9 +450,8 @@ fn build_inputs(spec: &FlightSceneSpec, src: &Src) -> Result<Vec<Input>, SceneEr
     for (i, inp) in spec.inputs.iter().enumerate() {
         let path = |f: &str| format!("inputs[{i}].{f}");
         let Some(channel) = CONTROLS.iter().position(|c| *c == inp.control) else {
-            return Err(src.err(
-                &inp.control,
-                &path("control"),
+            return Err(src.invalid(
+                path("control"),
                 format!("unknown control `{}`; valid: elevator, aileron, rudder, thrust", inp.control),
             ));
         };
@@ -419,35 +460,27 @@ fn build_inputs(spec: &FlightSceneSpec, src: &Src) -> Result<Vec<Input>, SceneEr
             "step" => Shape::Step,
             "pulse" => Shape::Pulse,
             s => {
-                return Err(src.err(
-                    s,
-                    &path("shape"),
-                    format!("unknown shape `{s}`; valid: doublet, step, pulse"),
-                ));
+                return Err(
+                    src.invalid(path("shape"), format!("unknown shape `{s}`; valid: doublet, step, pulse"))
+                );
             }
         };
         if !(inp.start.is_finite() && inp.start >= 0.0) {
-            return Err(src.err(
-                "start",
-                &path("start"),
-                format!("start = {}; valid: finite, ≥ 0", inp.start),
-            ));
+            return Err(src.invalid(path("start"), format!("start = {}; valid: finite, ≥ 0", inp.start)));
         }
         if !inp.amplitude.is_finite() {
-            return Err(src.err("amplitude", &path("amplitude"), "amplitude must be a finite number"));
+            return Err(src.invalid(path("amplitude"), "amplitude must be a finite number"));
         }
         let width = match (shape, inp.width) {
             (Shape::Step, _) => 0.0,
             (_, Some(w)) if w.is_finite() && w > 0.0 => w,
             (_, Some(w)) => {
-                return Err(src.err("width", &path("width"), format!("width = {w}; valid: finite, > 0")));
+                return Err(src.invalid(path("width"), format!("width = {w}; valid: finite, > 0")));
             }
             (_, None) => {
-                return Err(src.err(
-                    &inp.shape,
-                    &path("width"),
-                    format!("a {} needs `width` (seconds, > 0)", inp.shape),
-                ));
+                return Err(
+                    src.invalid(path("width"), format!("a {} needs `width` (seconds, > 0)", inp.shape))
+                );
             }
         };
         out.push(Input { channel, shape, start: inp.start, width, amplitude: inp.amplitude });
@@ -465,48 +498,50 @@ impl FlightScene {
     /// [`SceneError::Invalid`] (bad values, unknown names, a trim that cannot be reached — the
     /// message names the condition that could not be met), each with line and column.
     pub fn from_toml(text: &str, file: &str) -> Result<Self, SceneError> {
-        let spec: FlightSceneSpec =
-            toml::from_str(text).map_err(|e| SceneError::from_toml(&e, text, file))?;
-        let src = Src { file, text };
+        let src = SceneSource::new(text, file)?;
+        Self::from_source(&src)
+    }
+
+    /// Validates the flight scene of a parsed source (errors located in it).
+    ///
+    /// # Errors
+    /// As [`FlightScene::from_toml`].
+    pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
+        let spec: FlightSceneSpec = src.deserialize()?;
+        vectrix_dynamics::scene::check_name(&spec.name, "scene name", true)
+            .map_err(|m| src.invalid("name", m))?;
         if !(spec.duration.is_finite() && spec.duration > 0.0) {
-            return Err(src.err(
-                "duration",
-                "duration",
-                format!("duration = {}; valid: finite, > 0", spec.duration),
-            ));
+            return Err(src.invalid("duration", format!("duration = {}; valid: finite, > 0", spec.duration)));
         }
-        if spec.samples < 2 {
-            return Err(src.err("samples", "samples", format!("samples = {}; valid: ≥ 2", spec.samples)));
+        if !(2..=MAX_FLIGHT_SAMPLES).contains(&spec.samples) {
+            return Err(src.invalid(
+                "samples",
+                format!("samples = {}; valid: 2 ..= {MAX_FLIGHT_SAMPLES}", spec.samples),
+            ));
         }
         let rtol = spec.accuracy.unwrap_or(1e-9);
         if !(rtol.is_finite() && rtol > 0.0 && rtol < 1.0) {
-            return Err(src.err(
-                "accuracy",
-                "accuracy",
-                format!("accuracy = {rtol}; valid: 0 < accuracy < 1"),
-            ));
+            return Err(src.invalid("accuracy", format!("accuracy = {rtol}; valid: 0 < accuracy < 1")));
         }
         let mut outputs = Vec::new();
-        for o in &spec.outputs {
+        for (i, o) in spec.outputs.iter().enumerate() {
             match OUTPUT_NAMES.iter().position(|n| n == o) {
                 Some(k) => outputs.push(k),
                 None => {
-                    return Err(src.err(
-                        &format!("\"{o}\""),
-                        "outputs",
+                    return Err(src.invalid(
+                        format!("outputs[{i}]"),
                         format!("unknown output `{o}`; valid: {}", OUTPUT_NAMES.join(", ")),
                     ));
                 }
             }
         }
-        let aircraft = build_aircraft(&spec.aircraft, &src)?;
-        let inputs = build_inputs(&spec, &src)?;
+        let aircraft = build_aircraft(&spec.aircraft, src)?;
+        let inputs = build_inputs(&spec, src)?;
         let t = &spec.trim;
         let trim_spec = match t.turn_rate {
             Some(_) if t.gamma != 0.0 => {
-                return Err(src.err(
-                    "turn_rate",
-                    "trim",
+                return Err(src.invalid(
+                    "trim.turn_rate",
                     "give either `gamma` (straight flight) or `turn_rate` (level turn), not both",
                 ));
             }
@@ -514,9 +549,9 @@ impl FlightScene {
             None => TrimSpec::Straight { airspeed: t.airspeed, gamma: t.gamma },
         };
         let trimmed = trim(&aircraft, trim_spec, TrimLimits::default())
-            .map_err(|e| src.err("[trim]", "trim", format!("cannot trim: {e}")))?;
+            .map_err(|e| src.invalid("trim", format!("cannot trim: {e}")))?;
         let linearization = linearize(&aircraft, &trimmed)
-            .map_err(|e| src.err("[trim]", "trim", format!("cannot linearize: {e}")))?;
+            .map_err(|e| src.invalid("trim", format!("cannot linearize: {e}")))?;
         Ok(Self { spec, aircraft, linearization, inputs, outputs, rtol })
     }
 
@@ -555,47 +590,75 @@ impl FlightScene {
         cuts.windows(2).map(|w| (w[0], w[1])).collect()
     }
 
-    /// Integrates ẋ = rhs(t, x, u(t)) segment by segment from x0 and samples it at `times`.
+    /// Integrates ẋ = rhs(t, x, u(t)) segment by segment from x0 (one integration per segment
+    /// between input discontinuities) and samples it at `times` from the dense output, up to
+    /// `t_limit`. Reports progress as `base + span·t/duration`; stops early when cancelled
+    /// and returns the time reached.
+    #[allow(clippy::too_many_arguments)]
     fn integrate(
         &self,
         x0: [f64; 12],
         times: &[f64],
         mut rhs: impl FnMut(&[f64; 12], &[f64; 4]) -> Result<[f64; 12], FlightError>,
-    ) -> Result<(Vec<[f64; 12]>, usize, usize), SceneError> {
-        let solver = Adaptive::dop853().rtol(self.rtol).atol(self.rtol).dense(true);
-        let mut samples = Vec::with_capacity(times.len());
-        let (mut x, mut fevals, mut steps) = (x0, 0, 0);
-        let mut k = 0;
+        ctl: &mut RunControl<'_>,
+        (base, span): (f64, f64),
+        t_limit: f64,
+    ) -> Result<Integrated, SceneError> {
+        let solver = Adaptive::dop853().rtol(self.rtol).atol(self.rtol);
+        let end = self.spec.duration;
+        let mut out = Integrated { samples: vec![x0], fevals: 0, steps: 0, stopped: None };
+        let mut x = x0;
+        let mut k = 1;
         for (a, b) in self.segments() {
+            if a >= t_limit {
+                break;
+            }
+            let b = b.min(t_limit);
             // controls are constant on [a, b): evaluate them just inside the segment
             let u = self.controls_at(a + 0.5 * (b - a));
-            let mut failure: Option<FlightError> = None;
+            let failure = std::cell::RefCell::new(None::<FlightError>);
             let f = |_t: f64, y: &[f64; 12]| match rhs(y, &u) {
                 Ok(d) => d,
                 Err(e) => {
-                    failure.get_or_insert(e);
+                    failure.borrow_mut().get_or_insert(e);
                     [f64::NAN; 12]
                 }
             };
-            let sol = solver.solve(f, a, &x, b).map_err(|e: OdeError| {
-                let message = match &failure {
+            let fail = |t: f64, e: OdeError| {
+                let message = match failure.borrow_mut().take() {
                     Some(fe) => fe.to_string(),
                     None => e.to_string(),
                 };
-                SceneError::Run { t: a, message }
-            })?;
-            fevals += sol.work.fevals;
-            steps += sol.work.accepted;
-            while k < times.len() && (times[k] < b || (b == self.spec.duration && times[k] <= b)) {
-                let y = sol
-                    .sample(times[k].clamp(a, b))
-                    .map_err(|e| SceneError::Run { t: times[k], message: e.to_string() })?;
-                samples.push(y);
-                k += 1;
+                SceneError::Run { t, message }
+            };
+            let mut st = Stepper::new(&solver, f, a, x, b).map_err(|e| fail(a, e))?;
+            while !st.done() {
+                st.step().map_err(|e| fail(st.t(), e))?;
+                let t = st.t();
+                while k < times.len() && times[k] <= t {
+                    let y = if times[k] == t {
+                        *st.y()
+                    } else {
+                        st.dense().map_err(|e| fail(t, e))?.eval(times[k])
+                    };
+                    out.samples.push(y);
+                    k += 1;
+                }
+                (ctl.progress)(base + span * t / end);
+                if ctl.cancel.is_some_and(|c| c.load(std::sync::atomic::Ordering::Relaxed)) {
+                    out.stopped = Some(t);
+                    break;
+                }
             }
-            x = *sol.last();
+            let w = st.work();
+            out.fevals += w.fevals;
+            out.steps += w.accepted;
+            x = *st.y();
+            if out.stopped.is_some() {
+                break;
+            }
         }
-        Ok((samples, fevals, steps))
+        Ok(out)
     }
 
     /// Runs the scene: nonlinear and linear responses to the inputs, and the modes.
@@ -606,25 +669,54 @@ impl FlightScene {
     /// [`SceneError::Run`] if the nonlinear equations fail (zero airspeed, a non-finite state)
     /// or the integrator does.
     pub fn run(&self) -> Result<FlightRun, SceneError> {
+        self.run_with(RunControl { progress: &mut |_| {}, cancel: None })
+    }
+
+    /// [`FlightScene::run`] with a progress callback (fraction done: the nonlinear run is the
+    /// first half, the linear one the second) and a cancellation flag: a cancelled run keeps
+    /// the samples up to the time the nonlinear run reached (both responses), with
+    /// [`FlightRun::stop`] set.
+    ///
+    /// # Errors
+    /// As [`FlightScene::run`].
+    pub fn run_with(&self, mut ctl: RunControl<'_>) -> Result<FlightRun, SceneError> {
         let n = self.spec.samples;
         let end = self.spec.duration;
         let times: Vec<f64> = (0..n).map(|k| end * k as f64 / (n - 1) as f64).collect();
         let trim = self.linearization.trim;
         let x0 = trim.state.to_array();
         let ac = &self.aircraft;
-        let (xs, fevals, steps) = self.integrate(x0, &times, |x, u| {
-            let d = ac.dynamics(&AircraftState::from_array(*x), &Controls::from_array(*u))?;
-            Ok(d.to_array())
-        })?;
-        // linear: δẋ = A δx + B δu, from δx = 0
+        let nl = self.integrate(
+            x0,
+            &times,
+            |x, u| {
+                let d = ac.dynamics(&AircraftState::from_array(*x), &Controls::from_array(*u))?;
+                Ok(d.to_array())
+            },
+            &mut ctl,
+            (0.0, 0.5),
+            end,
+        )?;
+        let t_limit = nl.stopped.unwrap_or(end);
+        // linear: δẋ = A δx + B δu, from δx = 0 (not cancelled again: it stops where the
+        // nonlinear run stopped)
         let ss = &self.linearization.state_space;
         let (a, b) = (ss.a().clone(), ss.b().clone());
         let u0 = trim.controls.to_array();
-        let (dxs, _, _) = self.integrate([0.0; 12], &times, |dx, u| {
-            let du = DVector::from_iterator(4, (0..4).map(|i| u[i] - u0[i]));
-            let d = &a * DVector::from_column_slice(dx) + &b * du;
-            Ok(std::array::from_fn(|i| d[i]))
-        })?;
+        let lin = self.integrate(
+            [0.0; 12],
+            &times,
+            |dx, u| {
+                let du = DVector::from_iterator(4, (0..4).map(|i| u[i] - u0[i]));
+                let d = &a * DVector::from_column_slice(dx) + &b * du;
+                Ok(std::array::from_fn(|i| d[i]))
+            },
+            &mut RunControl { progress: &mut |f| (ctl.progress)(f), cancel: None },
+            (0.5, 0.5),
+            t_limit,
+        )?;
+        let rows = nl.samples.len().min(lin.samples.len());
+        let (times, xs, dxs) = (&times[..rows], &nl.samples[..rows], &lin.samples[..rows]);
         // reference motion: ẋ at trim (nonzero only in X, Y, Z and, in a turn, Ψ)
         let f0 = ac
             .dynamics(&trim.state, &trim.controls)
@@ -634,7 +726,7 @@ impl FlightScene {
         let mut nonlinear = Vec::new();
         let mut linear = Vec::new();
         for &o in &self.outputs {
-            nonlinear.push(times.iter().zip(&xs).map(|(&t, x)| self.output(o, x, t)).collect());
+            nonlinear.push(times.iter().zip(xs).map(|(&t, x)| self.output(o, x, t)).collect());
             if turning && o < 2 {
                 linear.push(None);
                 continue;
@@ -642,7 +734,7 @@ impl FlightScene {
             linear.push(Some(
                 times
                     .iter()
-                    .zip(&dxs)
+                    .zip(dxs)
                     .map(|(&t, dx)| {
                         let x: [f64; 12] = std::array::from_fn(|i| x0[i] + f0[i] * t + dx[i]);
                         self.output(o, &x, t)
@@ -651,17 +743,23 @@ impl FlightScene {
             ));
         }
         let (modes, poles) = self.modes();
+        let stop = nl.stopped.map(|t| Stop {
+            reason: StopReason::Interrupted,
+            t,
+            message: format!("interrupted at t = {t} s of {end} s"),
+        });
         Ok(FlightRun {
             scene: self.spec.name.clone(),
             trim,
             modes,
             poles,
-            t: times,
+            t: times.to_vec(),
             outputs: self.outputs.iter().map(|&o| OUTPUT_NAMES[o].to_string()).collect(),
             nonlinear,
             linear,
-            fevals,
-            steps,
+            fevals: nl.fevals,
+            steps: nl.steps,
+            stop,
         })
     }
 
@@ -761,6 +859,9 @@ impl FlightRun {
         let (s, c) = (&self.trim.state, &self.trim.controls);
         let summary = Summary {
             scene: &self.scene,
+            complete: self.stop.is_none(),
+            stop: &self.stop,
+            rows: self.t.len(),
             trim: TrimSummary {
                 alpha: s.aero_angles().alpha,
                 theta: s.attitude.theta,

@@ -33,6 +33,16 @@ pub enum OdeError {
         /// Its value.
         value: f64,
     },
+    /// The right-hand side returned a state of the wrong dimension.
+    #[error("right-hand side returned {got} components at t = {t}; the state has {expected}")]
+    RhsLength {
+        /// Time at which f was evaluated.
+        t: f64,
+        /// Dimension of the state.
+        expected: usize,
+        /// Dimension returned.
+        got: usize,
+    },
     /// A step size or step count that is not positive and finite.
     #[error("step size h = {h} is invalid; it must be finite and > 0")]
     NonPositiveStep {

@@ -127,6 +127,9 @@ pub(crate) fn eval<S: State, F: FnMut(f64, &S) -> S>(
 ) -> Result<S, OdeError> {
     *fevals += 1;
     let k = f(t, y);
+    if k.dim() != y.dim() {
+        return Err(OdeError::RhsLength { t, expected: y.dim(), got: k.dim() });
+    }
     match first_non_finite(&k) {
         Some((index, value)) => Err(OdeError::RhsNotFinite { t, step_start, stage, index, value }),
         None => Ok(k),
@@ -158,6 +161,10 @@ pub(crate) fn check_stages<S: State>(
     h: f64,
     c: &[f64],
 ) -> Result<(), OdeError> {
+    let n = k[0].dim();
+    if let Some((i, ki)) = k.iter().enumerate().skip(first).find(|(_, ki)| ki.dim() != n) {
+        return Err(OdeError::RhsLength { t: t + c[i] * h, expected: n, got: ki.dim() });
+    }
     let mut acc = k[first].clone();
     for ki in &k[first + 1..] {
         acc.add_scaled(1.0, ki);

@@ -88,18 +88,57 @@ impl Axis {
             let step = nice_step(self.hi - self.lo);
             let first = (self.lo / step - 1e-9).ceil() as i64;
             let last = (self.hi / step + 1e-9).floor() as i64;
+            let off = self.offset();
             let decimals = (-step.log10().floor()).max(0.0) as usize;
             (first..=last)
                 .map(|i| {
                     let v = i as f64 * step;
-                    let mut s = format!("{v:.decimals$}");
-                    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
-                        s.remove(0);
-                    }
-                    Tick { value: v, label: Some(s) }
+                    let label = match off {
+                        // differences from the offset, in engineering form: "+2e-9"
+                        Some(o) => {
+                            let d = v - o;
+                            if d.abs() < 0.5 * step {
+                                "0".to_string()
+                            } else {
+                                format!("{d:+.1e}").replace(".0e", "e")
+                            }
+                        }
+                        None => {
+                            let mut s = format!("{v:.decimals$}");
+                            if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+                                s.remove(0);
+                            }
+                            s
+                        }
+                    };
+                    Tick { value: v, label: Some(label) }
                 })
                 .collect()
         }
+    }
+
+    /// For a linear axis whose span is tiny against its values (a near-constant series, e.g. an
+    /// energy conserved to 1e-9), the value that tick labels are measured from: the tick value
+    /// nearest the middle. `None` when plain labels fit (fewer than 7 significant digits).
+    pub(crate) fn offset(&self) -> Option<f64> {
+        if self.log {
+            return None;
+        }
+        let step = nice_step(self.hi - self.lo);
+        let big = self.lo.abs().max(self.hi.abs());
+        if big <= 1e5 * step {
+            return None;
+        }
+        Some((0.5 * (self.lo + self.hi) / step).round() * step)
+    }
+}
+
+/// The offset of a near-constant axis, with enough digits to be exact to its last tick.
+pub(crate) fn offset_label(o: f64) -> String {
+    let s = format!("{o:.12e}");
+    match s.split_once('e') {
+        Some((m, e)) => format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.')),
+        None => s,
     }
 }
 
@@ -118,4 +157,26 @@ pub(crate) fn nice_step(span: f64) -> f64 {
         10.0
     };
     m * mag
+}
+
+#[cfg(test)]
+mod offset_tests {
+    use super::*;
+
+    #[test]
+    fn near_constant_axes_label_differences_from_an_offset() {
+        // an energy of −0.5 J conserved to 1e-9
+        let a = Axis::new("y", -0.5 - 1e-9, -0.5 + 2e-9, false, true).unwrap();
+        let o = a.offset().expect("offset notation");
+        assert!((o + 0.5).abs() < 1e-9);
+        assert_eq!(offset_label(-0.5), "-5e-1");
+        let labels: Vec<String> = a.ticks().into_iter().filter_map(|t| t.label).collect();
+        assert!(labels.iter().all(|l| l.len() <= 8), "{labels:?}");
+        // distinct labels: legible, not clipped copies of −0.500000000
+        let mut dedup = labels.clone();
+        dedup.dedup();
+        assert_eq!(dedup, labels);
+        // an ordinary axis keeps plain labels
+        assert!(Axis::new("y", 0.0, 10.0, false, true).unwrap().offset().is_none());
+    }
 }

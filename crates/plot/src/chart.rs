@@ -13,6 +13,8 @@ const LEFT: f64 = 72.0;
 const RIGHT: f64 = 180.0;
 const TOP: f64 = 36.0;
 const BOTTOM: f64 = 52.0;
+/// Points closer than this to the last point drawn are dropped [px] (see `render`).
+const THIN_PX: f64 = 0.5;
 /// Pixel coordinates are clamped to this magnitude so that huge values stay printable;
 /// the clip path hides everything outside the plot area anyway.
 const PIXEL_CLAMP: f64 = 1e4;
@@ -200,6 +202,10 @@ impl Chart {
                 svg.text_markup(x, py + ph + 17.0, l, 11.0, "middle");
             }
         }
+        if let Some(off) = ay.offset() {
+            // near-constant data: tick labels are differences from this value
+            svg.text(px, py - 6.0, &format!("offset {}", crate::axis::offset_label(off)), 11.0, "start", 0.0);
+        }
         for t in ay.ticks() {
             let (_, y) = to_px((if ax.log { ax.lo } else { 0.0 }, t.value));
             let major = t.label.is_some();
@@ -241,15 +247,29 @@ impl Chart {
                 Stroke::Dashed => Some("8 5"),
                 Stroke::Dotted => Some("2 4"),
             };
-            let mut piece = Vec::new();
+            // Thinning: a point within THIN_PX of the last one kept is dropped (the last point of
+            // every piece is kept). The dropped points and the path through them lie in that
+            // disk, so the drawn line stays within THIN_PX of the full polyline everywhere:
+            // exact to a pixel, with a file size that follows the drawing, not the sample count.
+            let mut piece: Vec<(f64, f64)> = Vec::new();
+            let mut pending: Option<(f64, f64)> = None;
             for &(x, y) in &c.points {
                 if usable(x, self.log_x) && usable(y, self.log_y) {
-                    piece.push(to_px((x, y)));
+                    let p = to_px((x, y));
+                    match piece.last() {
+                        Some(l) if (p.0 - l.0).hypot(p.1 - l.1) < THIN_PX => pending = Some(p),
+                        _ => {
+                            piece.push(p);
+                            pending = None;
+                        }
+                    }
                 } else {
+                    piece.extend(pending.take());
                     svg.polyline(&piece, color, 2.0, dash, Some(id));
                     piece.clear();
                 }
             }
+            piece.extend(pending.take());
             svg.polyline(&piece, color, 2.0, dash, Some(id));
             if c.markers {
                 for &(x, y) in &c.points {

@@ -6,12 +6,14 @@
 //!
 //! Without projection the index-1 formulation keeps φ̈ = 0 only, so φ and φ̇ drift like the
 //! integration error integrated once and twice (HNW §VII.2); the projection removes it at
-//! every step, at the cost of one extra f-eval per step it changes.
+//! every step, at the cost of one extra f-eval per step it changes (the integrator restarts
+//! from the projected state, [`Stepper::restart`], keeping its step size).
 
 use std::cell::RefCell;
 
 use nalgebra::DVector;
-use vectrix_ode::{Adaptive, OdeError, Solution};
+use vectrix_ode::explicit::{DenseStep, Stepper};
+use vectrix_ode::{Adaptive, OdeError, Work};
 
 use super::eval::{counts, holonomic_rows, velocity_system};
 use super::{
@@ -81,6 +83,8 @@ pub struct ConstrainedIntegrator {
     pub project_initial: bool,
     /// Largest initial violation accepted as consistent. Default 1e-10 (absolute).
     pub initial_tol: f64,
+    /// Keep the dense output of every step for [`ConstrainedRun::sample`] (default `false`).
+    pub dense: bool,
 }
 
 /// What [`ConstrainedIntegrator::integrate`] returns.
@@ -88,8 +92,13 @@ pub struct ConstrainedIntegrator {
 /// Book: §9.11.
 #[derive(Debug, Clone)]
 pub struct ConstrainedRun {
-    /// The accepted steps; each state is y = (q, q̇), projected.
-    pub solution: Solution<DVector<f64>>,
+    /// Times of the accepted steps, starting with t₀.
+    pub t: Vec<f64>,
+    /// States y = (q, q̇) at those times, projected.
+    pub y: Vec<DVector<f64>>,
+    /// The interpolant of each step (when asked for), from its projected start to its end
+    /// before projection.
+    pub dense: Vec<DenseStep<DVector<f64>>>,
     /// The largest violation over the recorded states, after projection.
     pub max_constraint_violation: Violation,
     /// The largest violation found at a step's end before projection: the drift one step
@@ -97,17 +106,37 @@ pub struct ConstrainedRun {
     pub max_drift: Violation,
     /// How many states were projected (initial state included).
     pub projections: usize,
+    /// f-evaluations and steps.
+    pub work: Work,
     n: usize,
 }
 
 impl ConstrainedRun {
-    /// q at the i-th recorded time `solution.t[i]`.
+    /// q at the i-th recorded time `t[i]`.
     pub fn q(&self, i: usize) -> &[f64] {
-        &self.solution.y[i].as_slice()[..self.n]
+        &self.y[i].as_slice()[..self.n]
     }
     /// q̇ at the i-th recorded time.
     pub fn qd(&self, i: usize) -> &[f64] {
-        &self.solution.y[i].as_slice()[self.n..]
+        &self.y[i].as_slice()[self.n..]
+    }
+    /// y = (q, q̇) at time t from the dense output. Inside a step the interpolant runs to the
+    /// step's unprojected end, so it may differ from the constraint manifold by up to
+    /// [`ConstrainedRun::max_drift`].
+    ///
+    /// # Errors
+    /// [`OdeError::NoDenseOutput`] unless the integrator had `dense = true`;
+    /// [`OdeError::OutOfRange`] outside the run.
+    pub fn sample(&self, t: f64) -> Result<DVector<f64>, DynamicsError> {
+        if self.dense.is_empty() {
+            return Err(OdeError::NoDenseOutput.into());
+        }
+        let (t0, t1) = (self.t[0], self.t[self.t.len() - 1]);
+        if !(t >= t0 && t <= t1) {
+            return Err(OdeError::OutOfRange { t, t0, t1 }.into());
+        }
+        let i = self.dense.partition_point(|d| d.t + d.h < t).min(self.dense.len() - 1);
+        Ok(self.dense[i].eval(t))
     }
 }
 
@@ -121,6 +150,7 @@ impl ConstrainedIntegrator {
             project_steps: true,
             project_initial: false,
             initial_tol: 1e-10,
+            dense: false,
         }
     }
 
@@ -197,8 +227,17 @@ impl ConstrainedIntegrator {
             self.project(sys, t0, &mut y0)?;
             projections += 1;
         }
-        let mut worst = constraint_violation(sys, &y0.as_slice()[..n], &y0.as_slice()[n..], t0)?;
-        let mut drift = Violation::default();
+        let worst = constraint_violation(sys, &y0.as_slice()[..n], &y0.as_slice()[n..], t0)?;
+        let mut run = ConstrainedRun {
+            t: vec![t0],
+            y: vec![y0.clone()],
+            dense: Vec::new(),
+            max_constraint_violation: worst,
+            max_drift: Violation::default(),
+            projections,
+            work: Work::default(),
+            n,
+        };
         // the right-hand side cannot fail: a failure is kept here and NaN stops the solver
         let failure: RefCell<Option<DynamicsError>> = RefCell::new(None);
         let f = |t: f64, y: &DVector<f64>| {
@@ -211,25 +250,39 @@ impl ConstrainedIntegrator {
                 }
             }
         };
+        let ode = |e: OdeError| match e {
+            OdeError::RhsNotFinite { .. } => failure.borrow_mut().take().unwrap_or(DynamicsError::Ode(e)),
+            e => DynamicsError::Ode(e),
+        };
         let tol = self.projection.tol;
-        let hook = |t: f64, y: &mut DVector<f64>| -> Result<bool, DynamicsError> {
+        let mut st = Stepper::new(&self.solver, f, t0, y0, t1).map_err(ode)?;
+        while !st.done() {
+            st.step().map_err(ode)?;
+            let t = st.t();
+            if self.dense {
+                run.dense.push(st.dense().map_err(ode)?.clone());
+            }
+            let mut y = st.y().clone();
             let (q, qd) = y.as_slice().split_at(n);
             let before = constraint_violation(sys, q, qd, t)?;
-            drift = drift.max(before);
-            if !self.project_steps || (before.position <= tol && before.velocity <= tol) {
-                worst = worst.max(before);
-                return Ok(false);
+            run.max_drift = run.max_drift.max(before);
+            if self.project_steps && (before.position > tol || before.velocity > tol) {
+                self.project(sys, t, &mut y)?;
+                run.projections += 1;
+                let (q, qd) = y.as_slice().split_at(n);
+                run.max_constraint_violation =
+                    run.max_constraint_violation.max(constraint_violation(sys, q, qd, t)?);
+                if !st.done() {
+                    // continue from the projected state: a fresh first stage, the step size kept
+                    st.restart(t, y.clone()).map_err(ode)?;
+                }
+            } else {
+                run.max_constraint_violation = run.max_constraint_violation.max(before);
             }
-            self.project(sys, t, y)?;
-            projections += 1;
-            let (q, qd) = y.as_slice().split_at(n);
-            worst = worst.max(constraint_violation(sys, q, qd, t)?);
-            Ok(true)
-        };
-        let solution = self.solver.solve_with_hook(f, t0, &y0, t1, &mut [], hook).map_err(|e| match e {
-            DynamicsError::Ode(OdeError::RhsNotFinite { .. }) => failure.borrow_mut().take().unwrap_or(e),
-            e => e,
-        })?;
-        Ok(ConstrainedRun { solution, max_constraint_violation: worst, max_drift: drift, projections, n })
+            run.t.push(t);
+            run.y.push(y);
+        }
+        run.work = st.work();
+        Ok(run)
     }
 }

@@ -85,7 +85,12 @@ impl Model {
         self.aba_into(q, v, tau, None, vdot, s)
     }
 
-    fn aba_into(
+    /// [`Model::aba`] with external wrenches, without input checks and with caller-provided
+    /// scratch: the hot path of a scene's right-hand side.
+    ///
+    /// # Errors
+    /// [`DynamicsError::SingularMassMatrix`] as [`Model::aba`].
+    pub fn aba_into(
         &self,
         q: &[f64],
         v: &[f64],

@@ -441,15 +441,24 @@ impl Model {
     /// As [`Model::integrate`].
     pub fn poses(&self, q: &[f64]) -> Result<Vec<Pose>, DynamicsError> {
         self.check_q(q)?;
-        let mut world: Vec<Xform> = Vec::with_capacity(self.segs.len());
+        let (mut world, mut out) = (Vec::new(), Vec::new());
+        self.poses_into(q, &mut world, &mut out);
+        Ok(out)
+    }
+
+    /// [`Model::poses`] into caller-owned buffers (no allocation once they have grown), without
+    /// input checks: the hot path of a right-hand side. `world` is work space.
+    pub fn poses_into(&self, q: &[f64], world: &mut Vec<Pose>, out: &mut Vec<Pose>) {
+        world.clear();
         for s in &self.segs {
             let x = s.placement.then(&s.elem.xform(&q[s.qi..]));
             let w = match s.parent {
-                Some(p) => world[p].then(&x),
+                Some(p) => Xform { E: world[p].0, r: world[p].1 }.then(&x),
                 None => x,
             };
-            world.push(w);
+            world.push((w.E, w.r));
         }
-        Ok(self.link_seg.iter().map(|&k| (world[k].E, world[k].r)).collect())
+        out.clear();
+        out.extend(self.link_seg.iter().map(|&k| world[k]));
     }
 }

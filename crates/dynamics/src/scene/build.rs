@@ -6,6 +6,7 @@
 use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
 
 use super::SceneError;
+use super::source::{SceneSource, check_name};
 use super::spec::{Attach, EffectSpec, JointSpec, MassSpec, Profile, SceneSpec};
 use crate::multibody::{Joint, Link, Model};
 
@@ -22,6 +23,10 @@ pub(crate) struct Body {
     pub inertia: Matrix3<f64>,
     pub qi: usize,
     pub vi: usize,
+    /// The joint's unit axis (pin, sleeve, collar, slot; zero otherwise), joint frame.
+    pub axis: Vector3<f64>,
+    /// The slot's unit groove direction (zero otherwise), joint frame.
+    pub direction: Vector3<f64>,
 }
 
 /// A point of a body (or of the ground, `None`), link components.
@@ -108,27 +113,43 @@ pub(crate) enum Effect {
     },
 }
 
-/// Context for error locations.
-pub(crate) struct Src<'a> {
-    pub file: &'a str,
-    pub text: &'a str,
-}
-
-impl Src<'_> {
-    /// An `Invalid` error located at the first occurrence of `needle` (or at 1:1).
-    pub fn err(&self, needle: &str, path: impl Into<String>, message: impl Into<String>) -> SceneError {
-        SceneError::invalid_at(self.text, self.file, needle, path, message)
-    }
-}
+/// Errors are located by item path in the spanned document.
+pub(crate) type Src<'a> = SceneSource<'a>;
 
 /// (nq, nv) of a joint.
 pub(crate) fn dims(j: &JointSpec) -> (usize, usize) {
     match j {
         JointSpec::Pin { .. } | JointSpec::Sleeve { .. } => (1, 1),
         JointSpec::Collar { .. } | JointSpec::Slot { .. } => (2, 2),
-        JointSpec::Ball => (4, 3),
-        JointSpec::Weld => (0, 0),
-        JointSpec::Free => (7, 6),
+        JointSpec::Ball {} => (4, 3),
+        JointSpec::Weld {} => (0, 0),
+        JointSpec::Free {} => (7, 6),
+    }
+}
+
+/// The q and v layouts of a joint, as documented in docs/scenes.md.
+pub(crate) fn layout(j: &JointSpec) -> (&'static str, &'static str) {
+    match j {
+        JointSpec::Pin { .. } => ("q = [θ] rad", "v = [θ̇] rad/s"),
+        JointSpec::Sleeve { .. } => ("q = [s] m", "v = [ṡ] m/s"),
+        JointSpec::Collar { .. } | JointSpec::Slot { .. } => ("q = [s m, θ rad]", "v = [ṡ m/s, θ̇ rad/s]"),
+        JointSpec::Ball {} => {
+            ("q = [η, ε₁, ε₂, ε₃] (unit quaternion)", "v = [ω₁, ω₂, ω₃] rad/s in the link frame")
+        }
+        JointSpec::Weld {} => ("q = [] (no coordinates)", "v = []"),
+        JointSpec::Free {} => (
+            "q = [x, y, z m, η, ε₁, ε₂, ε₃]",
+            "v = [ẋ, ẏ, ż m/s in the joint frame, ω₁, ω₂, ω₃ rad/s in the link frame]",
+        ),
+    }
+}
+
+/// Index of the quaternion among a joint's coordinates, if it has one.
+pub(crate) fn quat_index(j: &JointSpec) -> Option<usize> {
+    match j {
+        JointSpec::Ball {} => Some(0),
+        JointSpec::Free {} => Some(3),
+        _ => None,
     }
 }
 
@@ -145,12 +166,19 @@ fn v3(a: [f64; 3]) -> Vector3<f64> {
     Vector3::new(a[0], a[1], a[2])
 }
 
-/// Mass m, centre offset, J_{B/c} (link components) of a mass spec.
-fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), String> {
-    let pos = |x: f64, what: &str| {
-        if x > 0.0 { Ok(x) } else { Err(format!("{what} = {x}; valid: a finite number > 0")) }
+/// Mass m and J_{B/c} (link components) of a mass spec; on error the offending key and why.
+///
+/// Book: §6.1–6.2 (inertia of shapes); an inertia matrix must be symmetric and positive
+/// semidefinite with principal moments obeying the triangle inequality J₁ ≤ J₂ + J₃ (§6.4).
+fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), (&'static str, String)> {
+    let pos = |x: f64, what: &'static str| {
+        if x > 0.0 && x.is_finite() {
+            Ok(x)
+        } else {
+            Err((what, format!("{what} = {x}; valid: a finite number > 0")))
+        }
     };
-    Ok(match m {
+    let (mass, j) = match m {
         MassSpec::Particle { mass } => (pos(*mass, "mass")?, Matrix3::zeros()),
         MassSpec::Sphere { mass, radius } => {
             let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
@@ -158,7 +186,7 @@ fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), String> {
         }
         MassSpec::Box { mass, sides } => {
             let m = pos(*mass, "mass")?;
-            let [a, b, c] = [pos(sides[0], "side")?, pos(sides[1], "side")?, pos(sides[2], "side")?];
+            let [a, b, c] = [pos(sides[0], "sides")?, pos(sides[1], "sides")?, pos(sides[2], "sides")?];
             let d = Vector3::new(b * b + c * c, a * a + c * c, a * a + b * b) * (m / 12.0);
             (m, Matrix3::from_diagonal(&d))
         }
@@ -172,13 +200,42 @@ fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), String> {
         }
         MassSpec::Value { mass, principal, matrix } => {
             let m = pos(*mass, "mass")?;
-            match (principal, matrix) {
-                (Some(p), None) => (m, Matrix3::from_diagonal(&v3(*p))),
-                (None, Some(r)) => (m, Matrix3::from_fn(|i, j| r[i][j])),
-                _ => return Err("give exactly one of `principal` or `matrix`".into()),
-            }
+            let (key, j) = match (principal, matrix) {
+                (Some(p), None) => ("principal", Matrix3::from_diagonal(&v3(*p))),
+                (None, Some(r)) => ("matrix", Matrix3::from_fn(|i, j| r[i][j])),
+                _ => return Err(("mass", "give exactly one of `principal` or `matrix`".into())),
+            };
+            check_inertia(&j).map_err(|msg| (key, msg))?;
+            (m, j)
         }
-    })
+    };
+    if !j.iter().all(|x| x.is_finite()) {
+        return Err((
+            "mass",
+            "the inertia overflows; valid: mass and size whose product m·l² is finite".into(),
+        ));
+    }
+    Ok((mass, j))
+}
+
+/// A given inertia matrix must be symmetric and positive semidefinite with principal moments
+/// obeying the triangle inequality (a physical body, §6.4).
+fn check_inertia(j: &Matrix3<f64>) -> Result<(), String> {
+    let scale = j.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let tol = 64.0 * f64::EPSILON * scale;
+    if (j - j.transpose()).iter().any(|x| x.abs() > tol) {
+        return Err("the inertia matrix is not symmetric; valid: rows of a symmetric matrix".into());
+    }
+    let mut p: Vec<f64> = j.symmetric_eigenvalues().iter().copied().collect();
+    p.sort_by(f64::total_cmp);
+    if p[0] < -tol || p[2] > p[0] + p[1] + tol {
+        return Err(format!(
+            "principal moments {:?} are not those of a body; valid: each ≥ 0 and the largest ≤ the sum of the \
+             other two (§6.4)",
+            p
+        ));
+    }
+    Ok(())
 }
 
 /// Checks every number of the spec is finite (TOML admits `inf` and `nan`).
@@ -193,16 +250,11 @@ fn check_finite(spec: &SceneSpec, src: &Src) -> Result<(), SceneError> {
             _ => {}
         }
     }
-    let value = toml::Value::try_from(spec).map_err(|e| src.err("", "scene", e.to_string()))?;
+    let value = toml::Value::try_from(spec).map_err(|e| src.invalid("", e.to_string()))?;
     let mut bad = None;
     walk(&value, "", &mut bad);
     if let Some(path) = bad {
-        let needle = ["nan", "inf"].iter().find(|n| src.text.contains(*n)).copied().unwrap_or("");
-        return Err(src.err(
-            needle,
-            path.trim_start_matches('.'),
-            "non-finite number; valid: finite numbers",
-        ));
+        return Err(src.invalid(path.trim_start_matches('.'), "non-finite number; valid: finite numbers"));
     }
     Ok(())
 }
@@ -219,14 +271,9 @@ pub(crate) struct Built {
 /// Validates `spec` and assembles the model and the effects.
 pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
     check_finite(spec, src)?;
-    if spec.duration.is_nan() || spec.duration <= 0.0 {
-        return Err(src.err("duration", "duration", format!("{} s; valid: > 0", spec.duration)));
-    }
-    if spec.samples == 0 || spec.samples > 1_000_000 {
-        return Err(src.err("samples", "samples", format!("{}; valid: 1 ..= 1000000", spec.samples)));
-    }
+    check_name(&spec.name, "scene name", true).map_err(|m| src.invalid("name", m))?;
     if spec.bodies.is_empty() {
-        return Err(src.err("", "bodies", "no bodies; valid: at least one [[bodies]] table"));
+        return Err(src.invalid("bodies", "no bodies; valid: at least one [[bodies]] table"));
     }
     let names: Vec<&str> = spec.bodies.iter().map(|b| b.name.as_str()).collect();
     let index = |name: &str, path: &str| -> Result<Option<usize>, SceneError> {
@@ -234,47 +281,64 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             return Ok(None);
         }
         names.iter().position(|n| *n == name).map(Some).ok_or_else(|| {
-            src.err(
-                &format!("\"{name}\""),
-                path,
-                format!("unknown body `{name}`; valid: ground, {}", names.join(", ")),
-            )
+            src.invalid(path, format!("unknown body `{name}`; valid: ground, {}", names.join(", ")))
         })
     };
     let body_of = |name: &str, path: &str| -> Result<usize, SceneError> {
-        index(name, path)?.ok_or_else(|| src.err(name, path, "the ground cannot move; valid: a body name"))
+        index(name, path)?.ok_or_else(|| src.invalid(path, "the ground cannot move; valid: a body name"))
     };
     let mut bodies = Vec::new();
     let (mut nq, mut nv) = (0, 0);
     for (i, b) in spec.bodies.iter().enumerate() {
         let path = format!("bodies[{i}]");
-        let here = format!("\"{}\"", b.name);
+        check_name(&b.name, "body name", false).map_err(|m| src.invalid(format!("{path}.name"), m))?;
         if b.name == "ground" || names[..i].contains(&b.name.as_str()) {
-            return Err(src.err(&here, &path, format!("body name `{}` is reserved or repeated", b.name)));
+            return Err(src.invalid(
+                format!("{path}.name"),
+                format!(
+                    "body name `{}` is reserved or repeated; valid: a new name other than `ground`",
+                    b.name
+                ),
+            ));
         }
         let parent = index(&b.parent, &format!("{path}.parent"))?;
         if parent == Some(i) {
-            return Err(src.err(&here, &path, "a body cannot be its own parent; joints must form a tree"));
+            return Err(src.invalid(
+                format!("{path}.parent"),
+                "a body cannot be its own parent; joints must form a tree",
+            ));
         }
         let orient = match &b.frame {
             None => Matrix3::identity(),
             Some(f) => {
-                let fr = spec.frames.iter().find(|x| &x.name == f).ok_or_else(|| {
-                    src.err(
-                        f,
+                let k = spec.frames.iter().position(|x| &x.name == f).ok_or_else(|| {
+                    src.invalid(
                         format!("{path}.frame"),
                         format!("unknown frame `{f}`; declare it in [[frames]]"),
                     )
                 })?;
-                let axis = Unit::try_new(v3(fr.axis), 1e-12)
-                    .ok_or_else(|| src.err(&fr.name, "frames", "zero axis; valid: a nonzero vector"))?;
+                let fr = &spec.frames[k];
+                let axis = Unit::try_new(v3(fr.axis), 1e-12).ok_or_else(|| {
+                    src.invalid(format!("frames[{k}].axis"), "zero axis; valid: a nonzero vector")
+                })?;
                 // 𝓞_{J/G} = 𝓡ᵀ of the active rotation of the ground axes
                 Rotation3::from_axis_angle(&axis, fr.angle).matrix().transpose()
             }
         };
-        let (mass, inertia) = mass_props(&b.mass).map_err(|m| src.err(&here, format!("{path}.mass"), m))?;
+        let (mass, inertia) =
+            mass_props(&b.mass).map_err(|(k, m)| src.invalid(format!("{path}.mass.{k}"), m))?;
         let (jq, jv) = dims(&b.joint);
+        let u = |a: &[f64; 3]| v3(*a).try_normalize(0.0).unwrap_or_default();
+        let (axis, direction) = match &b.joint {
+            JointSpec::Pin { axis } | JointSpec::Sleeve { axis } | JointSpec::Collar { axis } => {
+                (u(axis), Vector3::zeros())
+            }
+            JointSpec::Slot { axis, direction } => (u(axis), u(direction)),
+            _ => (Vector3::zeros(), Vector3::zeros()),
+        };
         bodies.push(Body {
+            axis,
+            direction,
             name: b.name.clone(),
             parent,
             joint: b.joint.clone(),
@@ -300,9 +364,9 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
                 JointSpec::Slot { axis, direction } => {
                     Joint::Slot { axis: v3(axis), direction: v3(direction) }
                 }
-                JointSpec::Ball => Joint::Ball,
-                JointSpec::Weld => Joint::Weld,
-                JointSpec::Free => Joint::Free,
+                JointSpec::Ball {} => Joint::Ball,
+                JointSpec::Weld {} => Joint::Weld,
+                JointSpec::Free {} => Joint::Free,
             };
             let mut l = Link::new(b.parent, joint, v3(s.offset), b.mass, b.com, b.inertia);
             l.orientation = b.orient;
@@ -315,42 +379,43 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             crate::DynamicsError::JointGeometry { link, .. } => *link,
             _ => 0,
         };
-        src.err(
-            &format!("\"{}\"", names[i]),
-            format!("bodies[{i}]"),
-            format!("{e} (joints must form a tree)"),
-        )
+        src.invalid(format!("bodies[{i}].joint"), format!("{e} (joints must form a tree)"))
     })?;
     let mut q0 = model.neutral();
     let mut v0 = vec![0.0; model.nv()];
     for (i, (s, b)) in spec.bodies.iter().zip(&bodies).enumerate() {
         let (jq, jv) = dims(&b.joint);
-        let here = format!("\"{}\"", b.name);
         if let Some(q) = &s.q {
             if q.len() != jq {
-                return Err(src.err(
-                    &here,
+                return Err(src.invalid(
                     format!("bodies[{i}].q"),
-                    format!("{} values; valid: {jq} for this joint", q.len()),
+                    format!("{} values; valid: {jq} for this joint ({})", q.len(), layout(&b.joint).0),
                 ));
             }
             q0[b.qi..b.qi + jq].copy_from_slice(q);
         }
         if let Some(v) = &s.v {
             if v.len() != jv {
-                return Err(src.err(
-                    &here,
+                return Err(src.invalid(
                     format!("bodies[{i}].v"),
-                    format!("{} values; valid: {jv} for this joint", v.len()),
+                    format!("{} values; valid: {jv} for this joint ({})", v.len(), layout(&b.joint).1),
                 ));
             }
             v0[b.vi..b.vi + jv].copy_from_slice(v);
         }
+        // a quaternion must be nonzero; it is normalized
+        if let Some(k) = quat_index(&b.joint) {
+            let qq = &mut q0[b.qi + k..b.qi + k + 4];
+            let n = qq.iter().map(|x| x * x).sum::<f64>().sqrt();
+            if !(n > 1e-150 && n.is_finite()) {
+                return Err(src.invalid(
+                    format!("bodies[{i}].q"),
+                    format!("the quaternion has norm {n:e}; valid: a nonzero (η, ε₁, ε₂, ε₃), normalized on loading"),
+                ));
+            }
+            qq.iter_mut().for_each(|x| *x /= n);
+        }
     }
-    // normalizes quaternions and rejects zero ones
-    q0 = model
-        .integrate(&q0, &vec![0.0; model.nv()], 0.0)
-        .map_err(|e| src.err("q =", "bodies.q", e.to_string()))?;
     let effects = spec
         .effects
         .iter()
@@ -367,7 +432,11 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
 }
 
 fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> {
-    if x >= 0.0 { Ok(x) } else { Err(src.err(what, path, format!("{what} = {x}; valid: ≥ 0"))) }
+    if x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(src.invalid(format!("{path}.{what}"), format!("{what} = {x}; valid: ≥ 0")))
+    }
 }
 
 fn unit(x: [f64; 3], what: &str, path: &str, src: &Src) -> Result<Vector3<f64>, SceneError> {
@@ -376,7 +445,7 @@ fn unit(x: [f64; 3], what: &str, path: &str, src: &Src) -> Result<Vector3<f64>, 
     if n > 1e-12 {
         Ok(v / n)
     } else {
-        Err(src.err(what, path, format!("{what} is zero; valid: a nonzero vector")))
+        Err(src.invalid(format!("{path}.{what}"), format!("{what} is zero; valid: a nonzero vector")))
     }
 }
 
@@ -391,24 +460,27 @@ fn effect(
     body_of: &BodyOf,
     src: &Src,
 ) -> Result<Effect, SceneError> {
-    let at = |a: &Attach| -> Result<At, SceneError> { Ok((index(&a.body, path)?, v3(a.point))) };
+    let key = |k: &str| format!("{path}.{k}");
+    let at = |a: &Attach, k: &str| -> Result<At, SceneError> {
+        Ok((index(&a.body, &format!("{path}.{k}.body"))?, v3(a.point)))
+    };
     let dof = |name: &str| -> Result<usize, SceneError> {
-        let b = &bodies[body_of(name, path)?];
+        let b = &bodies[body_of(name, &key("body"))?];
         angle_dof(&b.joint).map(|k| b.vi + k).ok_or_else(|| {
-            src.err(
-                name,
-                path,
-                format!("body `{name}` has no single joint angle; valid: a pin, collar or slot joint"),
+            src.invalid(
+                key("body"),
+                format!(
+                    "body `{name}` has no single joint angle; valid: a body on a pin, collar or slot joint"
+                ),
             )
         })
     };
-    let free = |name: &str| -> Result<usize, SceneError> {
-        let i = body_of(name, path)?;
-        if bodies[i].joint != JointSpec::Free || bodies[i].parent.is_some() {
-            return Err(src.err(
-                name,
-                path,
-                format!("body `{name}` must be free and on the ground for impacts and rolling"),
+    let free = |name: &str, k: &str| -> Result<usize, SceneError> {
+        let i = body_of(name, &key(k))?;
+        if !matches!(bodies[i].joint, JointSpec::Free {}) || bodies[i].parent.is_some() {
+            return Err(src.invalid(
+                key(k),
+                format!("body `{name}` must be on a free joint to the ground for impacts and rolling"),
             ));
         }
         Ok(i)
@@ -417,7 +489,7 @@ fn effect(
         if (0.0..=1.0).contains(&x) {
             Ok(x)
         } else {
-            Err(src.err("restitution", path, format!("e = {x}; valid: 0 ≤ e ≤ 1")))
+            Err(src.invalid(key("restitution"), format!("e = {x}; valid: 0 ≤ e ≤ 1")))
         }
     };
     check_profile(e, path, src)?;
@@ -428,17 +500,19 @@ fn effect(
         }
         EffectSpec::MutualGravitation { g } => Effect::Mutual { g: nonneg(*g, "g", path, src)? },
         EffectSpec::Spring { a, b, k, length } => Effect::Spring {
-            a: at(a)?,
-            b: at(b)?,
+            a: at(a, "a")?,
+            b: at(b, "b")?,
             k: nonneg(*k, "k", path, src)?,
             d: nonneg(*length, "length", path, src)?,
         },
         EffectSpec::Dashpot { a, b, c } => {
-            Effect::Dashpot { a: at(a)?, b: at(b)?, c: nonneg(*c, "c", path, src)? }
+            Effect::Dashpot { a: at(a, "a")?, b: at(b, "b")?, c: nonneg(*c, "c", path, src)? }
         }
-        EffectSpec::Inerter { a, b, inertance } => {
-            Effect::Inerter { a: at(a)?, b: at(b)?, b_in: nonneg(*inertance, "inertance", path, src)? }
-        }
+        EffectSpec::Inerter { a, b, inertance } => Effect::Inerter {
+            a: at(a, "a")?,
+            b: at(b, "b")?,
+            b_in: nonneg(*inertance, "inertance", path, src)?,
+        },
         EffectSpec::RotationalSpring { body, kappa, angle } => {
             Effect::RotSpring { dof: dof(body)?, kappa: nonneg(*kappa, "kappa", path, src)?, angle: *angle }
         }
@@ -451,19 +525,22 @@ fn effect(
         EffectSpec::Dipoles { dipoles } => Effect::Dipoles {
             list: dipoles
                 .iter()
-                .map(|d| Ok((body_of(&d.body, path)?, v3(d.moment))))
+                .enumerate()
+                .map(|(k, d)| Ok((body_of(&d.body, &key(&format!("dipoles[{k}].body")))?, v3(d.moment))))
                 .collect::<Result<_, SceneError>>()?,
         },
         EffectSpec::Force { at: a, direction, profile } => {
-            Effect::Force { at: at(a)?, dir: v3(*direction), profile: profile.clone() }
+            Effect::Force { at: at(a, "at")?, dir: v3(*direction), profile: profile.clone() }
         }
-        EffectSpec::Torque { body, direction, profile } => {
-            Effect::Torque { body: body_of(body, path)?, dir: v3(*direction), profile: profile.clone() }
-        }
+        EffectSpec::Torque { body, direction, profile } => Effect::Torque {
+            body: body_of(body, &key("body"))?,
+            dir: v3(*direction),
+            profile: profile.clone(),
+        },
         EffectSpec::ContactSpheres { a, b, radius_a, radius_b, restitution: e, friction } => {
             Effect::Spheres {
-                a: free(a)?,
-                b: free(b)?,
+                a: free(a, "a")?,
+                b: free(b, "b")?,
                 ra: nonneg(*radius_a, "radius_a", path, src)?,
                 rb: nonneg(*radius_b, "radius_b", path, src)?,
                 e: restitution(*e)?,
@@ -471,7 +548,7 @@ fn effect(
             }
         }
         EffectSpec::ContactPlane { body, radius, point, normal, restitution: e, friction } => Effect::Plane {
-            body: free(body)?,
+            body: free(body, "body")?,
             r: nonneg(*radius, "radius", path, src)?,
             point: v3(*point),
             n: unit(*normal, "normal", path, src)?,
@@ -482,10 +559,10 @@ fn effect(
             let disk = match shape.as_str() {
                 "disk" => true,
                 "sphere" => false,
-                s => return Err(src.err(s, path, format!("shape `{s}`; valid: sphere, disk"))),
+                s => return Err(src.invalid(key("shape"), format!("shape `{s}`; valid: sphere, disk"))),
             };
             Effect::Rolling {
-                body: free(body)?,
+                body: free(body, "body")?,
                 disk,
                 r: nonneg(*radius, "radius", path, src)?,
                 point: v3(*point),
@@ -502,14 +579,13 @@ fn check_profile(e: &EffectSpec, path: &str, src: &Src) -> Result<(), SceneError
     };
     match p {
         Profile::Ramp { t0, t1, .. } if t1 <= t0 => {
-            Err(src.err("ramp", path, format!("t1 = {t1} ≤ t0 = {t0}; valid: t1 > t0")))
+            Err(src.invalid(format!("{path}.profile.t1"), format!("t1 = {t1} ≤ t0 = {t0}; valid: t1 > t0")))
         }
         Profile::Table { t, value }
             if t.len() != value.len() || t.is_empty() || t.windows(2).any(|w| w[1] <= w[0]) =>
         {
-            Err(src.err(
-                "table",
-                path,
+            Err(src.invalid(
+                format!("{path}.profile.t"),
                 "valid: `t` and `value` of equal nonzero length, `t` strictly increasing",
             ))
         }

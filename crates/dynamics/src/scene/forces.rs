@@ -31,8 +31,8 @@ impl Ground {
 /// Accumulates link wrenches (link components, about the link origin) and joint torques.
 pub(crate) struct Loads<'a> {
     pub kin: &'a Kin,
-    pub wrenches: Vec<JointWrench>,
-    pub tau: Vec<f64>,
+    pub wrenches: &'a mut [JointWrench],
+    pub tau: &'a mut [f64],
 }
 
 impl Loads<'_> {

@@ -55,21 +55,26 @@ impl Scene {
         }
     }
 
-    /// True when a declared contact could close within `dt` (then the caller substeps).
-    pub(crate) fn contact_near(&self, kin: &Kin, dt: f64) -> bool {
-        let c = |i: usize| kin.point(&(Some(i), self.built.bodies[i].com));
-        self.built.effects.iter().any(|e| match e {
-            Effect::Spheres { a, b, ra, rb, .. } => {
-                let ((xa, va), (xb, vb)) = (c(*a), c(*b));
-                let gap = (xa - xb).norm() - ra - rb;
-                gap <= 2.0 * (va - vb).norm() * dt + 1e-9 * (ra + rb)
-            }
-            Effect::Plane { body, r, point, n, .. } => {
-                let (x, v) = c(*body);
-                (x - point).dot(n) - r <= 2.0 * v.norm() * dt + 1e-9 * r
-            }
-            _ => false,
-        })
+    /// Every declared contact in declaration order: its gap (sphere–sphere:
+    /// |x_a − x_b| − r_a − r_b; sphere–plane: (x − p)·n − r; negative when penetrating), the
+    /// position that the gap follows (x_a − x_b, or x) and its size (r_a + r_b, or r).
+    pub(crate) fn contact_geometry(&self, kin: &Kin) -> Vec<(f64, Vector3<f64>, f64)> {
+        let c = |i: usize| kin.point(&(Some(i), self.built.bodies[i].com)).0;
+        self.built
+            .effects
+            .iter()
+            .filter_map(|e| match e {
+                Effect::Spheres { a, b, ra, rb, .. } => {
+                    let d = c(*a) - c(*b);
+                    Some((d.norm() - ra - rb, d, ra + rb))
+                }
+                Effect::Plane { body, r, point, n, .. } => {
+                    let x = c(*body);
+                    Some(((x - point).dot(n) - r, x, *r))
+                }
+                _ => None,
+            })
+            .collect()
     }
 
     /// Resolves every touching, approaching contact once; returns how many impacts occurred.

@@ -56,8 +56,8 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
     for body in &b.bodies {
         if body.parent.is_none() {
             match body.joint {
-                JointSpec::Free => {}
-                JointSpec::Ball => points.push(Vector3::zeros()), // pivot at the ground origin + offset below
+                JointSpec::Free {} => {}
+                JointSpec::Ball {} => points.push(Vector3::zeros()), // pivot at the ground origin + offset below
                 _ => external_force = true,
             }
         }
@@ -66,7 +66,7 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
     if let Ok(p) = b.model.poses(&b.q0) {
         let mut k = 0;
         for (i, body) in b.bodies.iter().enumerate() {
-            if body.parent.is_none() && body.joint == JointSpec::Ball {
+            if body.parent.is_none() && matches!(body.joint, JointSpec::Ball {}) {
                 points[k] = p[i].1;
                 k += 1;
             }

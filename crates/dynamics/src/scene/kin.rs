@@ -18,10 +18,6 @@ pub(crate) struct Kin {
     pub vel: Vec<Vector3<f64>>,
 }
 
-fn unit(a: &[f64; 3]) -> Vector3<f64> {
-    Vector3::new(a[0], a[1], a[2]).normalize()
-}
-
 /// Link twists for the velocities `v`, given the poses (bodies in any order: parents are
 /// resolved recursively through `order`, parents first).
 pub(crate) fn twists(
@@ -33,6 +29,19 @@ pub(crate) fn twists(
     let n = bodies.len();
     let mut omega = vec![Vector3::zeros(); n];
     let mut vel = vec![Vector3::zeros(); n];
+    twists_into(bodies, order, poses, v, &mut omega, &mut vel);
+    (omega, vel)
+}
+
+/// [`twists`] into caller-owned slices of the bodies' length.
+pub(crate) fn twists_into(
+    bodies: &[Body],
+    order: &[usize],
+    poses: &[Pose],
+    v: &[f64],
+    omega: &mut [Vector3<f64>],
+    vel: &mut [Vector3<f64>],
+) {
     for &i in order {
         let b = &bodies[i];
         let (e_p, r_p, w_p, v_p) = match b.parent {
@@ -44,26 +53,23 @@ pub(crate) fn twists(
         let (e_l, r_l) = poses[i];
         let vv = &v[b.vi..];
         let (w_rel, v_rel) = match &b.joint {
-            JointSpec::Pin { axis } => (e_j.transpose() * unit(axis) * vv[0], Vector3::zeros()),
-            JointSpec::Sleeve { axis } => (Vector3::zeros(), e_j.transpose() * unit(axis) * vv[0]),
-            JointSpec::Collar { axis } => {
-                let a = e_j.transpose() * unit(axis);
+            JointSpec::Pin { .. } => (e_j.tr_mul(&b.axis) * vv[0], Vector3::zeros()),
+            JointSpec::Sleeve { .. } => (Vector3::zeros(), e_j.tr_mul(&b.axis) * vv[0]),
+            JointSpec::Collar { .. } => {
+                let a = e_j.tr_mul(&b.axis);
                 (a * vv[1], a * vv[0])
             }
-            JointSpec::Slot { axis, direction } => {
-                (e_j.transpose() * unit(axis) * vv[1], e_j.transpose() * unit(direction) * vv[0])
-            }
-            JointSpec::Ball => (e_l.transpose() * Vector3::new(vv[0], vv[1], vv[2]), Vector3::zeros()),
-            JointSpec::Free => (
+            JointSpec::Slot { .. } => (e_j.tr_mul(&b.axis) * vv[1], e_j.tr_mul(&b.direction) * vv[0]),
+            JointSpec::Ball {} => (e_l.transpose() * Vector3::new(vv[0], vv[1], vv[2]), Vector3::zeros()),
+            JointSpec::Free {} => (
                 e_l.transpose() * Vector3::new(vv[3], vv[4], vv[5]),
                 e_j.transpose() * Vector3::new(vv[0], vv[1], vv[2]),
             ),
-            JointSpec::Weld => (Vector3::zeros(), Vector3::zeros()),
+            JointSpec::Weld {} => (Vector3::zeros(), Vector3::zeros()),
         };
         omega[i] = w_p + w_rel;
         vel[i] = v_p + w_p.cross(&(r_l - r_p)) + v_rel;
     }
-    (omega, vel)
 }
 
 /// Poses and twists at (q, v).
@@ -79,7 +85,29 @@ pub(crate) fn kinematics(
     Ok(Kin { poses, omega, vel })
 }
 
+/// [`kinematics`] into a reused [`Kin`] (`world` is work space): no allocation once grown.
+pub(crate) fn kinematics_into(
+    model: &Model,
+    bodies: &[Body],
+    order: &[usize],
+    q: &[f64],
+    v: &[f64],
+    kin: &mut Kin,
+    world: &mut Vec<Pose>,
+) {
+    model.poses_into(q, world, &mut kin.poses);
+    let n = bodies.len();
+    kin.omega.resize(n, Vector3::zeros());
+    kin.vel.resize(n, Vector3::zeros());
+    twists_into(bodies, order, &kin.poses, v, &mut kin.omega, &mut kin.vel);
+}
+
 impl Kin {
+    /// An empty buffer for [`kinematics_into`].
+    pub fn empty() -> Self {
+        Self { poses: Vec::new(), omega: Vec::new(), vel: Vec::new() }
+    }
+
     /// Ground position and velocity of a point fixed in a body (or in the ground).
     pub fn point(&self, at: &At) -> (Vector3<f64>, Vector3<f64>) {
         match at.0 {
@@ -129,12 +157,12 @@ pub(crate) fn qdot(bodies: &[Body], q: &[f64], v: &[f64], out: &mut [f64]) {
                 out[qi] = v[vi];
                 out[qi + 1] = v[vi + 1];
             }
-            JointSpec::Ball => quat(&q[qi..qi + 4], &v[vi..vi + 3], &mut out[qi..qi + 4]),
-            JointSpec::Free => {
+            JointSpec::Ball {} => quat(&q[qi..qi + 4], &v[vi..vi + 3], &mut out[qi..qi + 4]),
+            JointSpec::Free {} => {
                 out[qi..qi + 3].copy_from_slice(&v[vi..vi + 3]);
                 quat(&q[qi + 3..qi + 7], &v[vi + 3..vi + 6], &mut out[qi + 3..qi + 7]);
             }
-            JointSpec::Weld => {}
+            JointSpec::Weld {} => {}
         }
     }
 }
@@ -143,8 +171,8 @@ pub(crate) fn qdot(bodies: &[Body], q: &[f64], v: &[f64], out: &mut [f64]) {
 pub(crate) fn normalize(bodies: &[Body], q: &mut [f64]) {
     for b in bodies {
         let k = match b.joint {
-            JointSpec::Ball => b.qi,
-            JointSpec::Free => b.qi + 3,
+            JointSpec::Ball {} => b.qi,
+            JointSpec::Free {} => b.qi + 3,
             _ => continue,
         };
         let n = q[k..k + 4].iter().map(|x| x * x).sum::<f64>().sqrt();

@@ -17,13 +17,21 @@ mod impacts;
 mod invariants;
 mod kin;
 mod outputs;
+mod query;
 mod rhs;
 mod run;
+mod source;
 pub mod spec;
 
 pub use error::SceneError;
 pub use invariants::Invariant;
-pub use run::{Drift, Run, RunWork};
+pub use query::StateQuery;
+pub use rhs::SceneRhs;
+pub use run::{
+    DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, Drift, InvariantValue, MAX_SAMPLE_VALUES, MAX_SAMPLES, Run,
+    RunControl, RunWork, Stop, StopReason,
+};
+pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
 
 use build::{Built, Src, build};
@@ -66,9 +74,9 @@ fn check_rolling_start(b: &Built, src: &Src) -> Result<(), SceneError> {
             let gap = (c - point).dot(n) - reach;
             if gap.abs() > 1e-9 * (1.0 + r) {
                 let name = &b.bodies[*body].name;
-                return Err(src.err(
-                    name,
-                    "effects.rolling",
+                let k = b.effects.iter().position(|x| std::ptr::eq(x, e)).unwrap_or(0);
+                return Err(src.invalid(
+                    format!("effects[{k}].body"),
                     format!(
                         "body `{name}` starts {gap:e} m off its rolling plane; valid: touching it (gap 0)"
                     ),
@@ -109,8 +117,26 @@ impl Scene {
     /// (unknown names, joints that do not form a tree, non-finite or out-of-range numbers),
     /// both with line and column.
     pub fn from_toml(text: &str, file: &str) -> Result<Self, SceneError> {
-        let spec: SceneSpec = toml::from_str(text).map_err(|e| SceneError::from_toml(&e, text, file))?;
-        Self::build(spec, &Src { file, text })
+        let src = SceneSource::new(text, file)?;
+        Self::from_source(&src)
+    }
+
+    /// Validates the scene of a parsed source (errors located in it).
+    ///
+    /// # Errors
+    /// As [`Scene::from_toml`].
+    pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
+        let spec: SceneSpec = src.deserialize()?;
+        Self::build(spec, src)
+    }
+
+    /// Validates `spec` with errors located in `src`, the file it was derived from (a sweep
+    /// changes numbers of the user's file: its errors point into that file).
+    ///
+    /// # Errors
+    /// As [`Scene::from_toml`].
+    pub fn from_spec_in(spec: SceneSpec, src: &SceneSource) -> Result<Self, SceneError> {
+        Self::build(spec, src)
     }
 
     /// Validates a scene given as a value (errors are located in its TOML form).
@@ -119,7 +145,8 @@ impl Scene {
     /// As [`Scene::from_toml`].
     pub fn from_spec(spec: SceneSpec) -> Result<Self, SceneError> {
         let text = toml::to_string(&spec).unwrap_or_default();
-        Self::build(spec, &Src { file: "<scene>", text: &text })
+        let src = SceneSource::new(&text, "<scene>")?;
+        Self::build(spec, &src)
     }
 
     fn build(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
@@ -127,6 +154,7 @@ impl Scene {
         let order = kin::tree_order(&built.bodies);
         let solver = run::solver(&spec, src)?;
         let outputs = outputs::parse(&spec, &built, src)?;
+        run::check_bounds(&spec, &built, &outputs, src)?;
         let invariants = invariants::derive(&built);
         let mut needs = Needs::default();
         for e in &built.effects {
@@ -143,11 +171,10 @@ impl Scene {
             }
         }
         check_rolling_start(&built, src)?;
-        for c in &spec.checks {
+        for (k, c) in spec.checks.iter().enumerate() {
             if !["energy", "momentum", "angular_momentum"].contains(&c.as_str()) {
-                return Err(src.err(
-                    c,
-                    "checks",
+                return Err(src.invalid(
+                    format!("checks[{k}]"),
                     format!("unknown check `{c}`; valid: energy, momentum, angular_momentum"),
                 ));
             }

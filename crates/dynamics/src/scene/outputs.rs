@@ -10,7 +10,7 @@ use super::SceneError;
 use super::build::{Built, Src, dims};
 use super::forces::centre;
 use super::kin::Kin;
-use super::spec::SceneSpec;
+use super::spec::{JointSpec, SceneSpec};
 
 /// One requested output.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,14 +35,20 @@ omega_body:BODY, coordinates:BODY, speeds:BODY";
 pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output>, SceneError> {
     spec.outputs
         .iter()
-        .map(|o| {
-            let bad = || src.err(o, "outputs", format!("unknown output `{o}`; valid: {VALID}"));
+        .enumerate()
+        .map(|(k, o)| {
+            let path = format!("outputs[{k}]");
+            let bad = || src.invalid(&path, format!("unknown output `{o}`; valid: {VALID}"));
             let (kind, body) = match o.split_once(':') {
-                Some((k, name)) => {
+                Some((kd, name)) => {
                     let i = b.bodies.iter().position(|x| x.name == name).ok_or_else(|| {
-                        src.err(o, "outputs", format!("unknown body `{name}` in output `{o}`"))
+                        let names: Vec<&str> = b.bodies.iter().map(|x| x.name.as_str()).collect();
+                        src.invalid(
+                            &path,
+                            format!("unknown body `{name}` in output `{o}`; valid: {}", names.join(", ")),
+                        )
                     })?;
-                    (k, Some(i))
+                    (kd, Some(i))
                 }
                 None => (o.as_str(), None),
             };
@@ -62,6 +68,21 @@ pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output
             })
         })
         .collect()
+}
+
+/// Number of CSV columns the outputs produce.
+pub(crate) fn count_columns(outputs: &[Output], b: &Built) -> usize {
+    outputs
+        .iter()
+        .map(|o| match o {
+            Output::Q => b.model.nq(),
+            Output::V => b.model.nv(),
+            Output::Energy => 1,
+            Output::Coordinates(i) => dims(&b.bodies[*i].joint).0,
+            Output::Speeds(i) => dims(&b.bodies[*i].joint).1,
+            _ => 3,
+        })
+        .sum()
 }
 
 fn xyz(prefix: &str) -> Vec<String> {
@@ -94,6 +115,45 @@ impl Scene {
             }
         }
         cols
+    }
+
+    /// The SI unit of every column of [`Scene::columns`], in the same order.
+    pub(crate) fn column_units(&self) -> Vec<String> {
+        let b = &self.built;
+        let joint_units = |i: usize, speed: bool| -> Vec<&'static str> {
+            let (l, a) = if speed { ("m/s", "rad/s") } else { ("m", "rad") };
+            match &b.bodies[i].joint {
+                JointSpec::Pin { .. } => vec![a],
+                JointSpec::Sleeve { .. } => vec![l],
+                JointSpec::Collar { .. } | JointSpec::Slot { .. } => vec![l, a],
+                JointSpec::Ball {} if speed => vec![a; 3],
+                JointSpec::Ball {} => vec!["1"; 4],
+                JointSpec::Free {} if speed => vec![l, l, l, a, a, a],
+                JointSpec::Free {} => vec![l, l, l, "1", "1", "1", "1"],
+                JointSpec::Weld {} => vec![],
+            }
+        };
+        let all = |speed: bool| -> Vec<&'static str> {
+            let mut order: Vec<usize> = (0..b.bodies.len()).collect();
+            order.sort_by_key(|&i| if speed { b.bodies[i].vi } else { b.bodies[i].qi });
+            order.into_iter().flat_map(|i| joint_units(i, speed)).collect()
+        };
+        let mut units: Vec<&str> = Vec::new();
+        for o in &self.outputs {
+            match o {
+                Output::Q => units.extend(all(false)),
+                Output::V => units.extend(all(true)),
+                Output::Energy => units.push("J"),
+                Output::Momentum => units.extend(["kg m/s"; 3]),
+                Output::AngularMomentum => units.extend(["kg m^2/s"; 3]),
+                Output::Position(_) => units.extend(["m"; 3]),
+                Output::Velocity(_) => units.extend(["m/s"; 3]),
+                Output::Omega(_) | Output::OmegaBody(_) => units.extend(["rad/s"; 3]),
+                Output::Coordinates(i) => units.extend(joint_units(*i, false)),
+                Output::Speeds(i) => units.extend(joint_units(*i, true)),
+            }
+        }
+        units.into_iter().map(String::from).collect()
     }
 
     /// The point about which `angular_momentum` is reported: that of the invariant, else the origin.

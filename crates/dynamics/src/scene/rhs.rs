@@ -7,36 +7,113 @@
 
 use nalgebra::{DMatrix, DVector, Vector3};
 
-use super::Scene;
 use super::build::Effect;
 use super::forces::{Loads, apply};
-use super::kin::{Kin, kinematics, qdot, twists};
-use crate::multibody::JointWrench;
+use super::kin::{Kin, kinematics_into, qdot, twists};
+use super::{Scene, SceneError};
+use crate::multibody::{AbaScratch, JointWrench, Pose};
 
 /// Finite-difference step for the rates Ġv and ġᵀv of constraint and inerter rows.
 const FD_STEP: f64 = 1e-7;
 
+/// Work space of the right-hand side: everything an evaluation needs, allocated once per run.
+pub(crate) struct RhsScratch {
+    aba: AbaScratch,
+    tau: Vec<f64>,
+    wrenches: Vec<JointWrench>,
+    kin: Kin,
+    world: Vec<Pose>,
+}
+
+impl RhsScratch {
+    pub fn new(scene: &Scene) -> Self {
+        let m = &scene.built.model;
+        Self {
+            aba: m.aba_scratch(),
+            tau: vec![0.0; m.nv()],
+            wrenches: vec![JointWrench::default(); scene.built.bodies.len()],
+            kin: Kin::empty(),
+            world: Vec::new(),
+        }
+    }
+}
+
+/// A reusable evaluator of a scene's right-hand side y′ = f(t, y), y = (q, v): its work space
+/// is allocated once, so an evaluation allocates nothing (the scene's own loads, ABA and
+/// joint kinematics; inerters and rolling still build small matrices). For your own
+/// integrators, sensitivity studies and benches.
+///
+/// Book: §7.11 (ABA), ch. 6 (the declared loads).
+pub struct SceneRhs<'a> {
+    scene: &'a Scene,
+    scratch: RhsScratch,
+}
+
+impl std::fmt::Debug for SceneRhs<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SceneRhs").field("scene", &self.scene.spec().name).finish_non_exhaustive()
+    }
+}
+
+impl SceneRhs<'_> {
+    /// y′ = f(t, y) into `out` (both of length nq + nv).
+    ///
+    /// # Errors
+    /// [`SceneError::Run`] for wrong lengths, or when the dynamics fail (a singular mass
+    /// matrix, coincident points).
+    pub fn eval(&mut self, t: f64, y: &[f64], out: &mut [f64]) -> Result<(), SceneError> {
+        let n = self.scene.built.model.nq() + self.scene.built.model.nv();
+        if y.len() != n || out.len() != n {
+            return Err(SceneError::Run {
+                t,
+                message: format!(
+                    "state of length {} and output of length {}; valid: {n} each",
+                    y.len(),
+                    out.len()
+                ),
+            });
+        }
+        self.scene.deriv_into(t, y, out, &mut self.scratch).map_err(|message| SceneError::Run { t, message })
+    }
+}
+
 impl Scene {
-    /// v̇ at (t, q, v).
-    pub(crate) fn accel(&self, t: f64, q: &[f64], v: &[f64]) -> Result<Vec<f64>, String> {
+    /// A reusable, allocation-free evaluator of the right-hand side (see [`SceneRhs`]).
+    pub fn rhs(&self) -> SceneRhs<'_> {
+        SceneRhs { scene: self, scratch: RhsScratch::new(self) }
+    }
+
+    /// y′ = (q̇, v̇) at (t, y) into `out`: q̇ from the joint kinematics, v̇ by ABA with the
+    /// declared loads (only when some are declared), then inerters and rolling.
+    pub(crate) fn deriv_into(
+        &self,
+        t: f64,
+        y: &[f64],
+        out: &mut [f64],
+        w: &mut RhsScratch,
+    ) -> Result<(), String> {
         let b = &self.built;
-        let nb = b.bodies.len();
-        let needs_kin = self.needs.loads;
-        let mut tau = vec![0.0; b.model.nv()];
-        let mut wrenches = vec![JointWrench::default(); nb];
-        if needs_kin {
-            let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
+        let nq = b.model.nq();
+        let (q, v) = y.split_at(nq);
+        let (qd, vd) = out.split_at_mut(nq);
+        qdot(&b.bodies, q, v, qd);
+        let ext = if self.needs.loads {
+            kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
+            w.tau.fill(0.0);
+            w.wrenches.fill(JointWrench::default());
             let q_angle = |dof: usize| self.angle_of_dof(q, dof);
-            let mut loads = Loads { kin: &kin, wrenches, tau };
+            let mut loads = Loads { kin: &w.kin, wrenches: &mut w.wrenches, tau: &mut w.tau };
             apply(&b.effects, &b.bodies, &self.ground, t, v, &q_angle, &mut loads)?;
-            (wrenches, tau) = (loads.wrenches, loads.tau);
+            Some(w.wrenches.as_slice())
+        } else {
+            None
+        };
+        b.model.aba_into(q, v, &w.tau, ext, vd, &mut w.aba).map_err(|e| e.to_string())?;
+        if self.needs.inerters || self.needs.rolling {
+            let a = self.constrained(q, v, vd.to_vec())?;
+            vd.copy_from_slice(&a);
         }
-        let ext = if needs_kin { Some(wrenches.as_slice()) } else { None };
-        let a = b.model.aba(q, v, &tau, ext).map_err(|e| e.to_string())?;
-        if !(self.needs.inerters || self.needs.rolling) {
-            return Ok(a);
-        }
-        self.constrained(q, v, a)
+        Ok(())
     }
 
     /// Inerters in the mass matrix and rolling constraints (only when declared).
@@ -87,6 +164,17 @@ impl Scene {
             acc -= minv_gt * lam;
         }
         Ok(acc.as_slice().to_vec())
+    }
+
+    /// M + Σ b g gᵀ: the mass matrix with the translational inerters (g: the row of ℓ̇ = g·v).
+    pub(crate) fn mass_with_inerters(&self, q: &[f64], mut m: DMatrix<f64>) -> Result<DMatrix<f64>, String> {
+        for e in &self.built.effects {
+            if let Effect::Inerter { a: pa, b: pb, b_in } = e {
+                let g = self.rate_row(q, &[*pa, *pb])?.row(0).transpose();
+                m += &g * g.transpose() * *b_in;
+            }
+        }
+        Ok(m)
     }
 
     /// Row of ℓ̇ = r̂·(v_b − v_a) as a linear function of v (one row), for an inerter.
@@ -140,14 +228,10 @@ impl Scene {
         Ok(g)
     }
 
-    /// y′ = (q̇, v̇).
+    /// y′ = (q̇, v̇), allocating its own work space (for one-off evaluations).
     pub(crate) fn deriv(&self, t: f64, y: &[f64]) -> Result<Vec<f64>, String> {
-        let nq = self.built.model.nq();
-        let (q, v) = y.split_at(nq);
         let mut out = vec![0.0; y.len()];
-        qdot(&self.built.bodies, q, v, &mut out[..nq]);
-        let a = self.accel(t, q, v)?;
-        out[nq..].copy_from_slice(&a);
+        self.deriv_into(t, y, &mut out, &mut RhsScratch::new(self))?;
         Ok(out)
     }
 

@@ -1,62 +1,135 @@
-//! Running a scene: adaptive integration between output samples (the method from the declared
-//! accuracy through `vectrix_ode::Accuracy`, or named), impacts between steps, the requested
-//! outputs at every sample and the drift of the checked invariants.
+//! Running a scene: **one** adaptive integration over [0, duration] (the method from the
+//! declared accuracy through `vectrix_ode::Accuracy`, or named). Output samples come from the
+//! dense output of the accepted steps, so their number does not change the steps taken;
+//! impacts are located events (zeros of the contact gaps on the interpolant), and the known
+//! discontinuities of applied-load profiles are step ends; at both the integration restarts.
+//! Budgets (steps, wall time) and cancellation stop a run cleanly with what was computed.
 //!
-//! Book: §4.11 (integration), §8.3 (energy), §7.4/§7.6 (momenta).
+//! Book: §4.11 (integration), §7.13 (impacts), §8.3 (energy), §7.4/§7.6 (momenta).
 
-use std::cell::RefCell;
-use std::time::{Duration, Instant};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
 
 use nalgebra::Vector3;
 use serde::Serialize;
-use vectrix_ode::Accuracy;
-use vectrix_ode::explicit::Adaptive;
+use vectrix_ode::explicit::{Adaptive, Stepper, bracket_zero};
+use vectrix_ode::{Accuracy, OdeError};
 
 use super::build::Src;
-use super::kin::{kinematics, normalize};
-use super::spec::SceneSpec;
+use super::kin::{Kin, kinematics, normalize};
+use super::rhs::RhsScratch;
+use super::spec::{Profile, SceneSpec};
 use super::{Invariant, Scene, SceneError};
 
-/// Substeps per sample while a contact may close.
-const CONTACT_SUBSTEPS: usize = 50;
+/// Default bound on the steps of a run (accepted + rejected).
+pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
+/// Default bound on the wall time of a run [s].
+pub const DEFAULT_MAX_WALL_SECONDS: f64 = 600.0;
+/// Most output samples of a scene (rows of trajectory.csv after the first).
+pub const MAX_SAMPLES: usize = 1_000_000;
+/// Most output values of a scene (rows × columns), which bounds its memory (8 bytes each).
+pub const MAX_SAMPLE_VALUES: usize = 50_000_000;
+/// Most points at which one step's contact gaps are scanned.
+const MAX_CONTACT_SCAN: usize = 1024;
+/// A run whose pace predicts more than this multiple of a budget stops at once (fail fast).
+const FAIL_FAST_FACTOR: f64 = 10.0;
 
-/// The solver a scene asks for: `method`, else `accuracy`, else `Accuracy::RelTol(1e-6)`.
+/// The solver a scene asks for: `method`, else `accuracy`, else `Accuracy::RelTol(1e-6)`; with
+/// the scene's step budget.
 pub(crate) fn solver(spec: &SceneSpec, src: &Src) -> Result<Adaptive, SceneError> {
-    if let Some(m) = &spec.method {
-        if m.rtol.is_nan() || m.rtol <= 0.0 {
-            return Err(src.err("rtol", "method.rtol", format!("rtol = {}; valid: > 0", m.rtol)));
+    let a = if let Some(m) = &spec.method {
+        if !(m.rtol > 0.0 && m.rtol < 1.0) {
+            return Err(src.invalid("method.rtol", format!("rtol = {}; valid: 0 < rtol < 1", m.rtol)));
         }
         let a = match m.name.as_str() {
             "dopri5" => Adaptive::dopri5(),
             "dop853" => Adaptive::dop853(),
             n => {
-                return Err(src.err(
-                    n,
-                    "method.name",
-                    format!("unknown method `{n}`; valid: dopri5, dop853"),
-                ));
+                return Err(
+                    src.invalid("method.name", format!("unknown method `{n}`; valid: dopri5, dop853"))
+                );
             }
         };
-        return Ok(a.rtol(m.rtol).atol(m.rtol));
+        a.rtol(m.rtol).atol(m.rtol)
+    } else {
+        let tol = spec.accuracy.unwrap_or(1e-6);
+        Accuracy::RelTol(tol).solver().map_err(|e| src.invalid("accuracy", e.to_string()))?
+    };
+    let max_steps = spec.max_steps.unwrap_or(DEFAULT_MAX_STEPS);
+    if max_steps == 0 {
+        return Err(src.invalid("max_steps", "max_steps = 0; valid: ≥ 1"));
     }
-    let tol = spec.accuracy.unwrap_or(1e-6);
-    Accuracy::RelTol(tol).solver().map_err(|e| src.err("accuracy", "accuracy", e.to_string()))
+    Ok(a.max_steps(max_steps))
 }
 
-/// Drift of one checked invariant over the run.
+/// Checks the run's sizes: duration, samples (and samples × columns), wall-time budget.
+pub(crate) fn check_bounds(
+    spec: &SceneSpec,
+    built: &super::build::Built,
+    outputs: &[super::outputs::Output],
+    src: &Src,
+) -> Result<(), SceneError> {
+    if !(spec.duration > 0.0 && spec.duration.is_finite()) {
+        return Err(
+            src.invalid("duration", format!("duration = {} s; valid: a finite number > 0", spec.duration))
+        );
+    }
+    if !(1..=MAX_SAMPLES).contains(&spec.samples) {
+        return Err(src.invalid("samples", format!("samples = {}; valid: 1 ..= {MAX_SAMPLES}", spec.samples)));
+    }
+    let columns = super::outputs::count_columns(outputs, built);
+    if (spec.samples + 1).saturating_mul(columns.max(1)) > MAX_SAMPLE_VALUES {
+        return Err(src.invalid(
+            "samples",
+            format!(
+                "samples = {} with {columns} output columns is {} values; valid: (samples + 1) × columns ≤ \
+                 {MAX_SAMPLE_VALUES}",
+                spec.samples,
+                (spec.samples + 1).saturating_mul(columns)
+            ),
+        ));
+    }
+    if let Some(w) = spec.max_wall_seconds
+        && !(w > 0.0 && w.is_finite())
+    {
+        return Err(
+            src.invalid("max_wall_seconds", format!("max_wall_seconds = {w}; valid: a finite number > 0"))
+        );
+    }
+    Ok(())
+}
+
+/// A value of an invariant: energy is a scalar, momenta are vectors (ground components).
+///
+/// Book: §8.3, §7.4, §7.6.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum InvariantValue {
+    /// T + U [J], or a component of H along an axis [kg m²/s].
+    Scalar(f64),
+    /// p [kg m/s] or H [kg m²/s].
+    Vector([f64; 3]),
+}
+
+/// Drift of one checked invariant over the run (at the output samples).
 ///
 /// Book: §8.3, §7.4, §7.6.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Drift {
     /// The invariant.
     pub invariant: Invariant,
-    /// Its initial value (the norm for vectors).
-    pub initial: f64,
+    /// Its signed value at t = 0.
+    pub initial: InvariantValue,
+    /// Its signed value at the last sample.
+    #[serde(rename = "final")]
+    pub last: InvariantValue,
     /// max |x(t) − x(0)| (vector norm for vectors).
     pub max_abs: f64,
-    /// max_abs / scale, scale = max(|x(0)|, the sum of the magnitudes of its terms at t = 0)
-    /// (T for energy, Σ m|v_c| for momentum, Σ |r × m v| + |J ω| for H), so that an
+    /// The scale of the relative drift: max(|x(0)|, the sum of the magnitudes of its terms at
+    /// t = 0) (T for energy, Σ m|v_c| for momentum, Σ |r × m v| + |J ω| for H), so that an
     /// invariant whose value is zero still gets a meaningful relative drift.
+    pub scale: f64,
+    /// max_abs / scale.
     pub max_rel: f64,
 }
 
@@ -73,8 +146,37 @@ pub struct RunWork {
     pub rejected: usize,
     /// Impacts resolved.
     pub impacts: usize,
+    /// Restarts of the integrator: impacts and discontinuities of load profiles.
+    pub restarts: usize,
     /// Wall time [s].
     pub wall_seconds: f64,
+}
+
+/// Why a run stopped before its end.
+///
+/// Book: — (run control).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StopReason {
+    /// Cancelled (Ctrl-C).
+    Interrupted,
+    /// The step budget `max_steps` was reached, or the pace predicted it would be.
+    MaxSteps,
+    /// The wall-time budget `max_wall_seconds` was reached, or the pace predicted it would be.
+    MaxWallSeconds,
+}
+
+/// A run that ended early: why, when, and what to do about it.
+///
+/// Book: — (run control).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Stop {
+    /// Why.
+    pub reason: StopReason,
+    /// Simulated time reached [s].
+    pub t: f64,
+    /// What happened and what would be valid.
+    pub message: String,
 }
 
 /// The result of a run: sampled outputs, invariant drift, work.
@@ -86,7 +188,9 @@ pub struct Run {
     pub scene: String,
     /// Column names (after `t`).
     pub columns: Vec<String>,
-    /// Sample times.
+    /// The SI unit of each column (`rad/s`, `J`, `m`; `1` for a quaternion component).
+    pub units: Vec<String>,
+    /// Sample times (the rows written; `t = 0` is the first).
     pub t: Vec<f64>,
     /// One row of column values per sample.
     pub rows: Vec<Vec<f64>>,
@@ -96,8 +200,11 @@ pub struct Run {
     pub drift: Vec<Drift>,
     /// Cost.
     pub work: RunWork,
-    /// Final state y = (q, v).
+    /// Final state y = (q, v) (quaternions normalized).
     pub final_state: Vec<f64>,
+    /// `Some` when the run ended before its duration (budget or cancellation): the rows hold
+    /// what was computed.
+    pub stop: Option<Stop>,
 }
 
 impl Run {
@@ -107,9 +214,19 @@ impl Run {
         Some(self.rows.iter().map(|r| r[k]).collect())
     }
 
-    /// trajectory.csv: header `t,<columns>`, one line per sample.
+    /// `true` when the run reached its duration.
+    pub fn is_complete(&self) -> bool {
+        self.stop.is_none()
+    }
+
+    /// trajectory.csv: header `t [s],<column> [unit],…`, one line per sample, shortest
+    /// round-trip decimal form of each number.
     pub fn to_csv(&self) -> String {
-        let mut s = format!("t,{}\n", self.columns.join(","));
+        let mut s = String::from("t [s]");
+        for (c, u) in self.columns.iter().zip(&self.units) {
+            s.push_str(&format!(",{c} [{u}]"));
+        }
+        s.push('\n');
         for (t, r) in self.t.iter().zip(&self.rows) {
             s.push_str(&format!("{t:e}"));
             for x in r {
@@ -121,16 +238,60 @@ impl Run {
     }
 }
 
-/// Tracked invariant values: energy (scalar) or vectors.
+/// Tracked invariant values at the samples.
 struct Tracker {
     inv: Invariant,
     x0: Option<Vector3<f64>>,
+    last: Vector3<f64>,
     scale: f64,
     max: f64,
 }
 
+impl Tracker {
+    fn value(&self, x: Vector3<f64>) -> InvariantValue {
+        match self.inv {
+            Invariant::Energy | Invariant::AngularMomentumAlong { .. } => InvariantValue::Scalar(x[0]),
+            _ => InvariantValue::Vector(x.into()),
+        }
+    }
+}
+
+/// Controls of a run beyond the scene file: a progress callback (fraction of the duration
+/// done, after every accepted step) and a cancellation flag.
+///
+/// Book: — (run control).
+pub struct RunControl<'a> {
+    /// Called with t/duration after every accepted step.
+    pub progress: &'a mut dyn FnMut(f64),
+    /// When it becomes `true`, the run stops after the current step with
+    /// [`StopReason::Interrupted`].
+    pub cancel: Option<&'a AtomicBool>,
+}
+
+/// Times in (0, duration) where an applied load profile is discontinuous or has a kink.
+fn breakpoints(spec: &SceneSpec) -> Vec<f64> {
+    let mut out = Vec::new();
+    for e in &spec.effects {
+        use super::spec::EffectSpec as E;
+        let p = match e {
+            E::Force { profile, .. } | E::Torque { profile, .. } => profile,
+            _ => continue,
+        };
+        match p {
+            Profile::Step { at, .. } => out.push(*at),
+            Profile::Ramp { t0, t1, .. } => out.extend([*t0, *t1]),
+            Profile::Table { t, .. } => out.extend(t.iter().copied()),
+            Profile::Constant { .. } | Profile::Sine { .. } => {}
+        }
+    }
+    out.retain(|&t| t > 0.0 && t < spec.duration);
+    out.sort_by(f64::total_cmp);
+    out.dedup();
+    out
+}
+
 impl Scene {
-    fn invariant_value(&self, inv: &Invariant, kin: &super::kin::Kin, q: &[f64], v: &[f64]) -> Vector3<f64> {
+    fn invariant_value(&self, inv: &Invariant, kin: &Kin, q: &[f64], v: &[f64]) -> Vector3<f64> {
         match inv {
             Invariant::Energy => Vector3::new(self.energy(kin, q, v), 0.0, 0.0),
             Invariant::Momentum => self.momentum(kin),
@@ -142,111 +303,296 @@ impl Scene {
         }
     }
 
-    /// Runs the scene; `progress` is called with the fraction done after every sample.
+    /// Runs the scene; `progress` is called with the fraction done after every accepted step.
     ///
     /// Book: §4.11, §7.11, §7.13.
     ///
     /// # Errors
-    /// [`SceneError::Run`] when the integrator or the dynamics fail.
+    /// [`SceneError::Run`] when the integrator or the dynamics fail. A run stopped by a budget
+    /// is not an error: it returns the rows computed, with [`Run::stop`] set.
     pub fn run(&self, progress: &mut dyn FnMut(f64)) -> Result<Run, SceneError> {
+        self.run_with(RunControl { progress, cancel: None })
+    }
+
+    /// [`Scene::run`] with a cancellation flag.
+    ///
+    /// # Errors
+    /// As [`Scene::run`].
+    pub fn run_with(&self, ctl: RunControl<'_>) -> Result<Run, SceneError> {
         let start = Instant::now();
         let b = &self.built;
         let nq = b.model.nq();
         let spec = self.spec();
+        let duration = spec.duration;
+        let max_wall = spec.max_wall_seconds.unwrap_or(DEFAULT_MAX_WALL_SECONDS);
         let mut trackers: Vec<Tracker> = self
             .invariants()
             .iter()
             .filter(|i| spec.checks.iter().any(|c| c == i.name()))
-            .map(|i| Tracker { inv: i.clone(), x0: None, scale: 0.0, max: 0.0 })
+            .map(|i| Tracker { inv: i.clone(), x0: None, last: Vector3::zeros(), scale: 0.0, max: 0.0 })
             .collect();
-        let want_kin = !self.outputs.is_empty() || !trackers.is_empty() || self.needs.impacts;
-        let mut y = self.initial_state();
         let mut run = Run {
             scene: spec.name.clone(),
             columns: self.columns(),
+            units: self.column_units(),
             t: Vec::with_capacity(spec.samples + 1),
             rows: Vec::with_capacity(spec.samples + 1),
             invariants: self.invariants().to_vec(),
             drift: Vec::new(),
             work: RunWork::default(),
             final_state: Vec::new(),
+            stop: None,
         };
-        let dt = spec.duration / spec.samples as f64;
-        let failure: RefCell<Option<String>> = RefCell::new(None);
-        let f = |t: f64, y: &Vec<f64>| match self.deriv(t, y) {
-            Ok(d) => d,
-            Err(e) => {
-                failure.borrow_mut().get_or_insert(e);
-                vec![f64::NAN; y.len()]
-            }
-        };
-        let mut solver = self.solver;
+        let sample_time = |k: usize| duration * (k as f64 / spec.samples as f64);
         let fail = |t: f64, e: String| SceneError::Run { t, message: e };
-        for k in 0..=spec.samples {
-            let t = k as f64 * dt;
-            if k > 0 {
-                let t0 = (k - 1) as f64 * dt;
-                let near = if self.needs.impacts {
-                    let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])
-                        .map_err(|e| fail(t0, e))?;
-                    self.contact_near(&kin, dt)
-                } else {
-                    false
-                };
-                let sub = if near { CONTACT_SUBSTEPS } else { 1 };
-                for s in 0..sub {
-                    let (ta, tb) = (t0 + dt * s as f64 / sub as f64, t0 + dt * (s + 1) as f64 / sub as f64);
-                    let sol = solver.solve(f, ta, &y, tb).map_err(|e| {
-                        fail(ta, failure.borrow_mut().take().unwrap_or_else(|| e.to_string()))
-                    })?;
-                    if sol.t.len() >= 2 {
-                        solver.h0 = Some(sol.t[sol.t.len() - 1] - sol.t[sol.t.len() - 2]);
-                    }
-                    run.work.fevals += sol.work.fevals;
-                    run.work.accepted += sol.work.accepted;
-                    run.work.rejected += sol.work.rejected;
-                    y = sol.last().clone();
-                    normalize(&b.bodies, &mut y[..nq]);
-                    if self.needs.impacts {
-                        let (q, v) = y.split_at_mut(nq);
-                        let kin =
-                            kinematics(&b.model, &b.bodies, &self.order, q, v).map_err(|e| fail(tb, e))?;
-                        run.work.impacts += self.impacts(&kin, v);
-                    }
+
+        // outputs and invariants at a sample
+        let mut record = |run: &mut Run, t: f64, y: &[f64]| -> Result<(), SceneError> {
+            let mut y = y.to_vec();
+            normalize(&b.bodies, &mut y[..nq]);
+            let (q, v) = y.split_at(nq);
+            let kin = kinematics(&b.model, &b.bodies, &self.order, q, v).map_err(|e| fail(t, e))?;
+            let mut row = Vec::with_capacity(run.columns.len());
+            self.row(&kin, q, v, &mut row);
+            run.t.push(t);
+            run.rows.push(row);
+            for tr in &mut trackers {
+                let x = self.invariant_value(&tr.inv, &kin, q, v);
+                if tr.x0.is_none() {
+                    tr.scale = self.invariant_scale(&tr.inv, &kin, v);
                 }
+                let x0 = *tr.x0.get_or_insert(x);
+                tr.last = x;
+                tr.max = tr.max.max((x - x0).norm());
             }
-            if want_kin {
-                let (q, v) = y.split_at(nq);
-                let kin = kinematics(&b.model, &b.bodies, &self.order, q, v).map_err(|e| fail(t, e))?;
-                let mut row = Vec::new();
-                self.row(&kin, q, v, &mut row);
-                run.t.push(t);
-                run.rows.push(row);
-                for tr in &mut trackers {
-                    let x = self.invariant_value(&tr.inv, &kin, q, v);
-                    if tr.x0.is_none() {
-                        tr.scale = self.invariant_scale(&tr.inv, &kin, v);
-                    }
-                    let x0 = *tr.x0.get_or_insert(x);
-                    tr.max = tr.max.max((x - x0).norm());
-                }
-            }
-            progress(k as f64 / spec.samples as f64);
+            Ok(())
+        };
+
+        let mut y0 = self.initial_state();
+        if self.needs.impacts {
+            run.work.impacts += self.resolve_contacts(&mut y0).map_err(|e| fail(0.0, e))?;
         }
+        record(&mut run, 0.0, &y0)?;
+        let mut next_sample = 1;
+        let nv = b.model.nv();
+        if nv == 0 {
+            // nothing moves (every joint a weld): the state is constant
+            while next_sample <= spec.samples {
+                record(&mut run, sample_time(next_sample), &y0)?;
+                next_sample += 1;
+            }
+            (ctl.progress)(1.0);
+            return Ok(self.finish(run, trackers, y0, start));
+        }
+
+        let failure = std::cell::RefCell::new(None::<String>);
+        let mut scratch = RhsScratch::new(self);
+        let f = |t: f64, y: &Vec<f64>| {
+            let mut out = vec![0.0; y.len()];
+            if let Err(e) = self.deriv_into(t, y, &mut out, &mut scratch) {
+                failure.borrow_mut().get_or_insert(e);
+                out.fill(f64::NAN);
+            }
+            out
+        };
+        let ode_err = |e: OdeError| -> SceneError {
+            let t = match &e {
+                OdeError::RhsNotFinite { t, .. }
+                | OdeError::StepSizeUnderflow { t, .. }
+                | OdeError::NonFiniteState { t, .. } => *t,
+                _ => 0.0,
+            };
+            fail(t, failure.borrow_mut().take().unwrap_or_else(|| e.to_string()))
+        };
+        let mut stops = breakpoints(spec);
+        stops.push(duration);
+        let mut stop_at = 0;
+        let mut st = Stepper::new(&self.solver, f, 0.0, y0, stops[0]).map_err(ode_err)?;
+        let mut geo = self.geometry(st.y()).map_err(|e| fail(0.0, e))?;
+        let mut last_check = 0usize;
+
+        loop {
+            if st.done() {
+                if stop_at + 1 == stops.len() {
+                    break;
+                }
+                // a discontinuity of a load profile: continue from it with a fresh first stage
+                stop_at += 1;
+                let (t, y) = (st.t(), st.y().clone());
+                st.set_end(stops[stop_at]).map_err(ode_err)?;
+                st.restart(t, y).map_err(ode_err)?;
+                run.work.restarts += 1;
+            }
+            match st.step() {
+                Ok(()) => {}
+                Err(OdeError::TooManySteps { t, max_steps }) => {
+                    run.stop = Some(Stop {
+                        reason: StopReason::MaxSteps,
+                        t,
+                        message: format!(
+                            "max_steps = {max_steps} reached at t = {t:.6e} s of duration = {duration} s; valid: \
+                             raise max_steps, loosen accuracy or shorten duration"
+                        ),
+                    });
+                    break;
+                }
+                Err(e) => return Err(ode_err(e)),
+            }
+            let (t0, t1) = (st.step_start().unwrap_or(0.0), st.t());
+            // the first contact that closes during the step, located on the interpolant: the
+            // gap is scanned at ⌈4|Δr|/size⌉ points of the step (Δr: how far the gap's
+            // position moved), so that no contact is stepped over
+            let mut event: Option<f64> = None;
+            if self.needs.impacts {
+                let geo1 = self.geometry(st.y()).map_err(|e| fail(t1, e))?;
+                for c in 0..geo1.len() {
+                    if geo[c].0 <= 0.0 || geo[c].0.is_nan() {
+                        continue;
+                    }
+                    let moved = (geo1[c].1 - geo[c].1).norm() / geo[c].2.max(f64::MIN_POSITIVE);
+                    let n = (4.0 * moved).ceil().clamp(1.0, MAX_CONTACT_SCAN as f64) as usize;
+                    let mut a = (t0, geo[c].0);
+                    for k in 1..=n {
+                        let tk = if k == n { t1 } else { t0 + (t1 - t0) * (k as f64 / n as f64) };
+                        let gk = if k == n {
+                            geo1[c].0
+                        } else {
+                            let d = st.dense().map_err(ode_err)?.eval(tk);
+                            self.geometry(&d).map_err(|e| fail(tk, e))?[c].0
+                        };
+                        if gk <= 0.0 {
+                            // the first instant known to touch (g ≤ 0): the contact is resolved there
+                            let d = st.dense().map_err(ode_err)?.clone();
+                            let g = |t: f64| self.geometry(&d.eval(t)).map_or(-1.0, |g| g[c].0);
+                            let (_, tz) = bracket_zero(g, a, (tk, gk));
+                            event = Some(event.map_or(tz, |e: f64| e.min(tz)));
+                            break;
+                        }
+                        if event.is_some_and(|e| tk >= e) {
+                            break;
+                        }
+                        a = (tk, gk);
+                    }
+                }
+                geo = geo1;
+            }
+            let t_end = event.unwrap_or(t1);
+            // samples in (t0, t_end] from the dense output (exactly y at the step end)
+            while next_sample <= spec.samples && sample_time(next_sample) <= t_end {
+                let ts = sample_time(next_sample);
+                if ts == t1 {
+                    let y = st.y().clone();
+                    record(&mut run, ts, &y)?;
+                } else {
+                    let y = st.dense().map_err(ode_err)?.eval(ts);
+                    record(&mut run, ts, &y)?;
+                }
+                next_sample += 1;
+            }
+            if let Some(te) = event {
+                let mut y = st.dense().map_err(ode_err)?.eval(te);
+                let k = self.resolve_contacts(&mut y).map_err(|e| fail(te, e))?;
+                if k == 0 {
+                    return Err(fail(te, "a contact closed but no impact could be resolved".into()));
+                }
+                if te <= t0 {
+                    return Err(fail(
+                        te,
+                        "a contact comes to rest (impacts accumulate at one instant); resting contact is not \
+                         simulated; valid: restitution 1, or a duration that ends before the bounces die out"
+                            .into(),
+                    ));
+                }
+                run.work.impacts += k;
+                run.work.restarts += 1;
+                geo = self.geometry(&y).map_err(|e| fail(te, e))?;
+                st.restart(te, y).map_err(ode_err)?;
+            }
+            (ctl.progress)(st.t() / duration);
+            // budgets: cancellation every step, wall time and the pace every 64 steps
+            let steps = st.work().accepted + st.work().rejected;
+            let t = st.t();
+            let mut stop = None;
+            if ctl.cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+                stop = Some((StopReason::Interrupted, format!("interrupted at t = {t} s of {duration} s")));
+            } else if steps >= last_check + 64 || steps + 1 >= self.solver.max_steps {
+                last_check = steps;
+                let wall = start.elapsed().as_secs_f64();
+                let pace = duration / t.max(f64::MIN_POSITIVE);
+                let (max_steps, s) = (self.solver.max_steps as f64, steps as f64);
+                if steps + 1 >= self.solver.max_steps
+                    || (steps >= 1024 && s * pace > FAIL_FAST_FACTOR * max_steps)
+                {
+                    stop = Some((
+                        StopReason::MaxSteps,
+                        format!(
+                            "{steps} steps reached t = {t:.6e} s of duration = {duration} s; at this pace the run \
+                             needs about {:.1e} steps, more than max_steps = {}; valid: raise max_steps, loosen \
+                             accuracy or shorten duration",
+                            s * pace,
+                            self.solver.max_steps
+                        ),
+                    ));
+                } else if wall >= max_wall || (wall >= 0.5 && wall * pace > FAIL_FAST_FACTOR * max_wall) {
+                    stop = Some((
+                        StopReason::MaxWallSeconds,
+                        format!(
+                            "{wall:.1} s of wall time reached t = {t:.6e} s of duration = {duration} s; at this \
+                             pace the run needs about {:.1e} s, more than max_wall_seconds = {max_wall}; valid: \
+                             raise max_wall_seconds, loosen accuracy or shorten duration",
+                            wall * pace
+                        ),
+                    ));
+                }
+            }
+            if let Some((reason, message)) = stop {
+                run.stop = Some(Stop { reason, t, message });
+                break;
+            }
+        }
+        let work = st.work();
+        run.work.fevals = work.fevals;
+        run.work.accepted = work.accepted;
+        run.work.rejected = work.rejected;
+        let y = st.y().clone();
+        Ok(self.finish(run, trackers, y, start))
+    }
+
+    fn finish(&self, mut run: Run, trackers: Vec<Tracker>, mut y: Vec<f64>, start: Instant) -> Run {
         run.drift = trackers
             .into_iter()
             .map(|tr| {
-                let initial = tr.x0.map_or(0.0, |x| x.norm());
+                let x0 = tr.x0.unwrap_or_default();
                 Drift {
-                    invariant: tr.inv,
-                    initial,
+                    initial: tr.value(x0),
+                    last: tr.value(tr.last),
                     max_abs: tr.max,
-                    max_rel: tr.max / initial.max(tr.scale).max(f64::MIN_POSITIVE),
+                    scale: x0.norm().max(tr.scale),
+                    max_rel: tr.max / x0.norm().max(tr.scale).max(f64::MIN_POSITIVE),
+                    invariant: tr.inv,
                 }
             })
             .collect();
+        normalize(&self.built.bodies, &mut y[..self.built.model.nq()]);
         run.final_state = y;
-        run.work.wall_seconds = Duration::as_secs_f64(&start.elapsed());
-        Ok(run)
+        run.work.wall_seconds = start.elapsed().as_secs_f64();
+        run
+    }
+
+    /// The declared contacts at state y: gap (negative: penetrating), tracked position, size.
+    fn geometry(&self, y: &[f64]) -> Result<Vec<(f64, Vector3<f64>, f64)>, String> {
+        let b = &self.built;
+        let nq = b.model.nq();
+        let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])?;
+        Ok(self.contact_geometry(&kin))
+    }
+
+    /// Applies the impulses of every touching, approaching contact to y's velocities.
+    fn resolve_contacts(&self, y: &mut [f64]) -> Result<usize, String> {
+        let b = &self.built;
+        let nq = b.model.nq();
+        let (q, v) = y.split_at_mut(nq);
+        let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
+        Ok(self.impacts(&kin, v))
     }
 }

@@ -21,9 +21,19 @@ pub struct SceneSpec {
     /// An explicit method instead of an accuracy.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub method: Option<MethodSpec>,
-    /// Number of output samples (rows of trajectory.csv after the initial one).
+    /// Number of output samples (rows of trajectory.csv after the initial one): intervals of
+    /// duration/samples, taken from the integrator's dense output (they do not change the
+    /// steps taken). At most 1 000 000, and samples × columns at most 5·10⁷.
     #[serde(default = "default_samples")]
     pub samples: usize,
+    /// Bound on the integrator's steps (accepted + rejected); 10⁷ when omitted. A run that
+    /// reaches it (or whose pace predicts it would by ten times) stops early with what it
+    /// computed, marked incomplete.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_steps: Option<usize>,
+    /// Bound on the wall time of the run [s]; 600 when omitted; as `max_steps`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_wall_seconds: Option<f64>,
     /// Named frames (orientations relative to the ground) that joints may be placed in.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub frames: Vec<FrameSpec>,
@@ -144,12 +154,13 @@ pub enum JointSpec {
         /// Groove direction.
         direction: [f64; 3],
     },
-    /// Spherical: q = quaternion (η, ε₁, ε₂, ε₃), v = ω in the link frame.
-    Ball,
+    /// Spherical: q = quaternion (η, ε₁, ε₂, ε₃), v = ω in the link frame. (Written `{}` so
+    /// that an unknown key in its table is an error, as in every other table.)
+    Ball {},
     /// Rigid attachment.
-    Weld,
+    Weld {},
     /// Six degrees of freedom: q = (x, y, z, η, ε₁, ε₂, ε₃), v = (ẋ, ẏ, ż, ω in the link).
-    Free,
+    Free {},
 }
 
 /// Mass properties by shape or by value (about the centre of mass, link components).

@@ -84,10 +84,27 @@ pub(crate) fn crosses(dir: Direction, ga: f64, gb: f64) -> Option<bool> {
 pub(crate) fn locate<S: State>(
     g: &mut dyn FnMut(f64, &S) -> f64,
     dense: &DenseStep<S>,
+    a: (f64, f64),
+    b: (f64, f64),
+) -> f64 {
+    let (a, b) = bracket_zero(|t| g(t, &dense.eval(t)), a, b);
+    let (ga, gb) = (g(a, &dense.eval(a)), g(b, &dense.eval(b)));
+    if gb == 0.0 || gb.abs() <= ga.abs() { b } else { a }
+}
+
+/// Narrows a bracket [a, b] of a sign change of a scalar function g (g(a)·g(b) ≤ 0, values
+/// given) to |b − a| ≤ 4ε·max(1, |a|, |b|) by the Illinois variant of regula falsi, at most
+/// 200 evaluations; returns the final bracket (a, b), each end keeping the sign of g it
+/// started with (so `b` is the first instant known to be past the zero).
+///
+/// Book: §4.11; HNW §II.6 (event location by dense output).
+pub fn bracket_zero(
+    mut g: impl FnMut(f64) -> f64,
     (mut a, mut ga): (f64, f64),
     (mut b, mut gb): (f64, f64),
-) -> f64 {
+) -> (f64, f64) {
     let tol = 4.0 * f64::EPSILON * a.abs().max(b.abs()).max(1.0);
+    let b_sign = gb.signum();
     let mut side = 0i8;
     for _ in 0..200 {
         if (b - a).abs() <= tol || gb == 0.0 {
@@ -98,12 +115,12 @@ pub(crate) fn locate<S: State>(
         if !c.is_finite() || c <= a.min(b) || c >= a.max(b) {
             c = 0.5 * (a + b);
         }
-        let gc = g(c, &dense.eval(c));
-        if gc == 0.0 {
-            return c;
-        }
-        if gc.signum() == gb.signum() {
+        let gc = g(c);
+        if gc == 0.0 || gc.signum() == b_sign {
             (b, gb) = (c, gc);
+            if gc == 0.0 {
+                break;
+            }
             if side == -1 {
                 ga *= 0.5; // Illinois: halve the retained end's value
             }
@@ -116,11 +133,5 @@ pub(crate) fn locate<S: State>(
             side = 1;
         }
     }
-    if gb == 0.0 {
-        b
-    } else if ga.abs() < gb.abs() {
-        a
-    } else {
-        b
-    }
+    (a, b)
 }

@@ -10,10 +10,12 @@ mod dop853_coefficients;
 mod dopri5;
 mod events;
 mod fixed;
+mod stepper;
 mod tableau;
 
 pub use adaptive::{Adaptive, Pair, Solution};
 pub use dense::DenseStep;
-pub use events::{Direction, Event, EventHit};
+pub use events::{Direction, Event, EventHit, bracket_zero};
 pub use fixed::integrate_fixed;
+pub use stepper::Stepper;
 pub use tableau::{DOP853, DOPRI5, EULER, HEUN, RK4, Tableau};
