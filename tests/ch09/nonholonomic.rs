@@ -92,6 +92,8 @@ fn section_9_12_rolling_disk_down_incline() {
     // the integrator's tolerance 1e-12 on a polynomial motion
     assert_abs(run.q(last)[0], qd[0] + 0.5 * a, 1e-10);
     assert!(run.max_constraint_violation.velocity <= 1e-12);
+    // no dense output was asked for
+    assert!(matches!(run.sample(0.5), Err(DynamicsError::Ode(vectrix::ode::OdeError::NoDenseOutput))));
 }
 
 /// Steady turning of a rolling disk, derived from Euler's equation about the centre in the
@@ -204,9 +206,11 @@ fn section_9_12_chaplygin_sleigh_offset_centre_closed_form() {
     let k = s.a * s.m * v_inf / ip;
     let u0 = (v0 / v_inf).atanh();
     let gd = |u: f64| 2.0 * (0.5 * u).tanh().atan();
-    let run = ConstrainedIntegrator::new(Adaptive::dop853().rtol(1e-12).atol(1e-12))
-        .integrate(&LagrangeForm(&s), &[0.0; 3], &[v0, 0.0, w0], 0.0, 40.0)
-        .unwrap();
+    let integrator = ConstrainedIntegrator {
+        dense: true,
+        ..ConstrainedIntegrator::new(Adaptive::dop853().rtol(1e-12).atol(1e-12))
+    };
+    let run = integrator.integrate(&LagrangeForm(&s), &[0.0; 3], &[v0, 0.0, w0], 0.0, 40.0).unwrap();
     for i in 0..run.t.len() {
         let (t, q, qd) = (run.t[i], run.q(i), run.qd(i));
         let (v, w) = sleigh_speeds(q, qd);
@@ -220,4 +224,11 @@ fn section_9_12_chaplygin_sleigh_offset_centre_closed_form() {
     // after 40 s the sleigh runs straight ahead at v∞, centre first
     let (v, w) = sleigh_speeds(run.q(run.t.len() - 1), run.qd(run.t.len() - 1));
     assert!(w.abs() < 1e-6 && (v - v_inf).abs() < 1e-9);
+    // between the steps, the dense output (DOP853's 7th-order interpolant)
+    for t in [0.37, 3.3, 12.9, 39.99] {
+        let y = run.sample(t).unwrap();
+        let (v, _) = sleigh_speeds(&y.as_slice()[..3], &y.as_slice()[3..]);
+        assert_abs(v, v_inf * (k * t + u0).tanh(), 1e-9);
+    }
+    assert!(matches!(run.sample(40.5), Err(DynamicsError::Ode(vectrix::ode::OdeError::OutOfRange { .. }))));
 }
