@@ -45,7 +45,9 @@ fn four_bar(c: &mut Criterion) {
     let fb = FourBar { a: 1.0, b: 3.5, c: 3.0, d: 4.0, rho: 1.0, g: 9.81 };
     let (q0, qd0) = start(&fb);
     c.bench_function("constraints/four_bar f-eval (MapForm, KKT)", |b| {
-        b.iter(|| map_constrained_accelerations(black_box(&fb), black_box(&q0), black_box(&qd0), 0.0).unwrap())
+        b.iter(|| {
+            map_constrained_accelerations(black_box(&fb), black_box(&q0), black_box(&qd0), 0.0).unwrap()
+        })
     });
     let mut g = c.benchmark_group("constraints/four_bar_2s_dopri5_projected");
     for rtol in [1e-6, 1e-8, 1e-10] {
