@@ -161,6 +161,48 @@ fn section_9_11_double_pendulum_cartesian_vs_joint_coordinates() {
     }
 }
 
+/// The same double pendulum by Newton–Euler: a two-link chain of point masses on pins
+/// (vectrix's articulated-body algorithm, §7.11, joint angles relative) gives the Cartesian
+/// accelerations of the constrained particles.
+#[test]
+fn section_9_11_double_pendulum_cartesian_vs_newton_euler_chain() {
+    use vectrix::dynamics::multibody::{Joint, Link, Model};
+    use vectrix::nalgebra::{Matrix3, Vector3};
+    let p = CartesianDoublePendulum { m1: 1.2, m2: 0.7, l1: 1.0, l2: 0.6, g: 9.81 };
+    let pin = Joint::Pin { axis: Vector3::z() };
+    let links = [
+        Link::new(None, pin.clone(), Vector3::zeros(), p.m1, Vector3::new(0.0, -p.l1, 0.0), Matrix3::zeros()),
+        Link::new(
+            Some(0),
+            pin,
+            Vector3::new(0.0, -p.l1, 0.0),
+            p.m2,
+            Vector3::new(0.0, -p.l2, 0.0),
+            Matrix3::zeros(),
+        ),
+    ];
+    let mut chain = Model::new(&links).unwrap();
+    chain.gravity = Vector3::new(0.0, -p.g, 0.0);
+    for &(th, w) in &[([0.3, -0.5], [0.0, 0.0]), ([2.0, 0.1], [1.5, -3.0]), ([-2.9, 2.9], [-4.0, 6.0])] {
+        let (q, qd, _, _) = double_pendulum_from_joints(&p, th, w);
+        let rel = [th[0], th[1] - th[0]];
+        let alpha = chain.aba(&rel, &[w[0], w[1] - w[0]], &[0.0, 0.0], None).unwrap();
+        let (a1, a2) = (alpha[0], alpha[0] + alpha[1]);
+        let ((s1, c1), (s2, c2)) = (th[0].sin_cos(), th[1].sin_cos());
+        let ax1 = [p.l1 * (c1 * a1 - s1 * w[0] * w[0]), p.l1 * (s1 * a1 + c1 * w[0] * w[0])];
+        let want = [
+            ax1[0],
+            ax1[1],
+            ax1[0] + p.l2 * (c2 * a2 - s2 * w[1] * w[1]),
+            ax1[1] + p.l2 * (s2 * a2 + c2 * w[1] * w[1]),
+        ];
+        let s = constrained_accelerations(&p, &q, &qd, 0.0).unwrap();
+        for (got, want) in s.qdd.iter().zip(want) {
+            assert_abs(*got, want, 1e-12);
+        }
+    }
+}
+
 /// Bad input: initial conditions off the constraint manifold are an error naming the
 /// violation, unless projection of the initial state is asked for.
 #[test]
