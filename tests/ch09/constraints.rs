@@ -171,7 +171,7 @@ fn section_9_11_double_pendulum_cartesian_vs_newton_euler_chain() {
     let p = CartesianDoublePendulum { m1: 1.2, m2: 0.7, l1: 1.0, l2: 0.6, g: 9.81 };
     let pin = Joint::Pin { axis: Vector3::z() };
     let links = [
-        Link::new(None, pin.clone(), Vector3::zeros(), p.m1, Vector3::new(0.0, -p.l1, 0.0), Matrix3::zeros()),
+        Link::new(None, pin, Vector3::zeros(), p.m1, Vector3::new(0.0, -p.l1, 0.0), Matrix3::zeros()),
         Link::new(
             Some(0),
             pin,
