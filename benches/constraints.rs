@@ -14,36 +14,15 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use mechanisms::FourBar;
-use vectrix::dynamics::constraints::{
-    ConstrainedIntegrator, MapForm, ProjectionOptions, constraint_terms, map_constrained_accelerations,
-    project_positions,
-};
-use vectrix::nalgebra::{DMatrix, DVector};
+use vectrix::dynamics::constraints::{ConstrainedIntegrator, MapForm, map_constrained_accelerations};
 use vectrix::ode::Adaptive;
 
 /// θ₂(2 s) from scipy's DOP853 at rtol 1e-12 (scripts/peers/bench_mujoco_four_bar.py).
 const THETA2_REF: f64 = 12.118579864419;
 
-fn start(fb: &FourBar) -> (Vec<f64>, Vec<f64>) {
-    let rows = |q: &[f64]| {
-        let t = constraint_terms(fb, q, &[0.0; 3], 0.0)?;
-        let mut jac = DMatrix::zeros(3, 3);
-        jac.rows_mut(0, 2).copy_from(&t.jacobian);
-        jac[(2, 0)] = 1.0;
-        Ok((DVector::from_vec(vec![t.position[0], t.position[1], q[0] - 0.3]), jac))
-    };
-    let plus = |q: &[f64], d: &DVector<f64>| Ok(q.iter().zip(d.iter()).map(|(a, b)| a + b).collect());
-    let opts = ProjectionOptions::default();
-    let q0 = project_positions(&[0.3, 1.2, 1.9], &DMatrix::identity(3, 3), rows, plus, &opts).unwrap().q;
-    let g = constraint_terms(fb, &q0, &[0.0; 3], 0.0).unwrap().jacobian;
-    let sub = DMatrix::from_fn(2, 2, |i, j| g[(i, j + 1)]);
-    let rest = sub.lu().solve(&(-g.column(0) * 6.0)).unwrap();
-    (q0, vec![6.0, rest[0], rest[1]])
-}
-
 fn four_bar(c: &mut Criterion) {
     let fb = FourBar { a: 1.0, b: 3.5, c: 3.0, d: 4.0, rho: 1.0, g: 9.81 };
-    let (q0, qd0) = start(&fb);
+    let (q0, qd0) = fb.start(0.3, &[0.3, 1.2, 1.9], 6.0);
     c.bench_function("constraints/four_bar f-eval (MapForm, KKT)", |b| {
         b.iter(|| {
             map_constrained_accelerations(black_box(&fb), black_box(&q0), black_box(&qd0), 0.0).unwrap()

@@ -21,42 +21,15 @@ use mechanisms::{CartesianDoublePendulum, FourBar, JointDoublePendulum};
 use rolling::{KaneDisk, RollingDisk};
 use vectrix::dynamics::constraints::kane::kane_accelerations;
 use vectrix::dynamics::constraints::{
-    ConstrainedIntegrator, MapForm, ProjectionOptions, constrained_accelerations, constraint_terms,
-    map_constrained_accelerations, project_positions,
+    ConstrainedIntegrator, MapForm, constrained_accelerations, map_constrained_accelerations,
 };
 use vectrix::dynamics::lagrange::{accelerations, map_kinetic_energy};
-use vectrix::nalgebra::{DMatrix, DVector};
 use vectrix::ode::Adaptive;
 use vectrix::prelude::*;
 
-/// The crank-rocker of the tests assembled at θ₂ with a crank rate of 6 rad/s.
-fn four_bar_start(fb: &FourBar) -> (Vec<f64>, [f64; 3]) {
-    let rows = |q: &[f64]| {
-        let t = constraint_terms(fb, q, &[0.0; 3], 0.0)?;
-        let mut jac = DMatrix::zeros(3, 3);
-        jac.rows_mut(0, 2).copy_from(&t.jacobian);
-        jac[(2, 0)] = 1.0;
-        Ok((DVector::from_vec(vec![t.position[0], t.position[1], q[0] - 0.3]), jac))
-    };
-    let plus = |q: &[f64], d: &DVector<f64>| Ok(q.iter().zip(d.iter()).map(|(a, b)| a + b).collect());
-    let q0 = project_positions(
-        &[0.3, 1.2, 1.9],
-        &DMatrix::identity(3, 3),
-        rows,
-        plus,
-        &ProjectionOptions::default(),
-    )
-    .expect("assembles")
-    .q;
-    let g = constraint_terms(fb, &q0, &[0.0; 3], 0.0).expect("finite").jacobian;
-    let sub = DMatrix::from_fn(2, 2, |i, j| g[(i, j + 1)]);
-    let rest = sub.lu().solve(&(-g.column(0) * 6.0)).expect("away from a dead point");
-    (q0, [6.0, rest[0], rest[1]])
-}
-
 fn four_bar_table() {
     let fb = FourBar { a: 1.0, b: 3.5, c: 3.0, d: 4.0, rho: 1.0, g: 9.81 };
-    let (q0, qd0) = four_bar_start(&fb);
+    let (q0, qd0) = fb.start(0.3, &[0.3, 1.2, 1.9], 6.0);
     let energy = |q: &[f64], qd: &[f64]| {
         map_kinetic_energy(&fb, q, qd, 0.0).expect("finite") + KinematicMap::potential(&fb, q, 0.0)
     };

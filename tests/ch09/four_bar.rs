@@ -9,7 +9,7 @@ use vectrix::dynamics::constraints::{
     ConstrainedIntegrator, MapForm, ProjectionOptions, constraint_terms, project_positions,
 };
 use vectrix::dynamics::lagrange::map_kinetic_energy;
-use vectrix::nalgebra::{DMatrix, DVector};
+use vectrix::nalgebra::DVector;
 use vectrix::ode::Adaptive;
 use vectrix::prelude::*;
 
@@ -18,20 +18,6 @@ use super::mechanisms::{FourBar, assert_abs, freudenstein};
 /// The four-bar of the tests: a Grashof crank-rocker (s + l = 1 + 4 < p + q = 3.5 + 3).
 pub fn crank_rocker() -> FourBar {
     FourBar { a: 1.0, b: 3.5, c: 3.0, d: 4.0, rho: 1.0, g: 9.81 }
-}
-
-/// Assembles the four-bar at crank angle θ₂ from the guess `q` by Gauss–Newton on the loop
-/// closure plus the driving row θ₂ − θ₂* = 0 (M = I).
-pub fn assemble(fb: &FourBar, th2: f64, q: &[f64]) -> Result<Vec<f64>, DynamicsError> {
-    let rows = |q: &[f64]| {
-        let t = constraint_terms(fb, q, &[0.0; 3], 0.0)?;
-        let mut jac = DMatrix::zeros(3, 3);
-        jac.rows_mut(0, 2).copy_from(&t.jacobian);
-        jac[(2, 0)] = 1.0;
-        Ok((DVector::from_vec(vec![t.position[0], t.position[1], q[0] - th2]), jac))
-    };
-    let plus = |q: &[f64], d: &DVector<f64>| Ok(q.iter().zip(d.iter()).map(|(a, b)| a + b).collect());
-    Ok(project_positions(q, &DMatrix::identity(3, 3), rows, plus, &ProjectionOptions::default())?.q)
 }
 
 /// §9.11 (the book's own example: a linkage whose angles are not independent). Freudenstein's
@@ -44,16 +30,16 @@ fn section_9_11_four_bar_freudenstein() {
     let mut q = vec![0.0, 1.2, 1.9];
     for k in 0..=72 {
         let th2 = 2.0 * PI * f64::from(k) / 72.0;
-        q = assemble(&fb, th2, &q).unwrap();
+        q = fb.assemble(th2, &q).unwrap();
         // terms of size K₁ + K₂ + K₃ + 1 ≈ 7, the assembly to 1e-12 in the loop rows
         assert_abs(freudenstein(&fb, q[0], q[2]), 0.0, 1e-11);
     }
     // a triple rocker (non-Grashof: 3 + 4 > 1.5 + 2) assembles only while the crank pin is
     // within b + c of O₄, |θ₂| ≤ acos(0.53) ≈ 1.01: beyond, the loop cannot close (a typed error)
     let rocker = FourBar { a: 3.0, b: 1.5, c: 2.0, d: 4.0, rho: 1.0, g: 9.81 };
-    let q = assemble(&rocker, 0.5, &[0.5, 0.4, 1.5]).unwrap();
+    let q = rocker.assemble(0.5, &[0.5, 0.4, 1.5]).unwrap();
     assert_abs(freudenstein(&rocker, q[0], q[2]), 0.0, 1e-11);
-    let err = assemble(&rocker, 1.5, &q).unwrap_err();
+    let err = rocker.assemble(1.5, &q).unwrap_err();
     assert!(
         matches!(err, DynamicsError::ProjectionFailed { .. } | DynamicsError::DependentConstraint { .. }),
         "{err}"
@@ -67,13 +53,7 @@ fn section_9_11_four_bar_freudenstein() {
 #[test]
 fn section_9_11_four_bar_long_run_projected() {
     let fb = crank_rocker();
-    let q0 = assemble(&fb, 0.3, &[0.3, 1.2, 1.9]).unwrap();
-    // a crank rate, and the coupler and rocker rates that keep Φ_q q̇ = 0
-    let t0 = constraint_terms(&fb, &q0, &[0.0; 3], 0.0).unwrap();
-    let g = &t0.jacobian;
-    let sub = DMatrix::from_fn(2, 2, |i, j| g[(i, j + 1)]);
-    let rest = sub.lu().solve(&(-g.column(0) * 6.0)).unwrap();
-    let qd0 = [6.0, rest[0], rest[1]];
+    let (q0, qd0) = fb.start(0.3, &[0.3, 1.2, 1.9], 6.0);
     let energy = |q: &[f64], qd: &[f64]| {
         map_kinetic_energy(&fb, q, qd, 0.0).unwrap() + KinematicMap::potential(&fb, q, 0.0)
     };
@@ -113,12 +93,12 @@ mod prop {
         #[test]
         fn four_bar_projection_converges(th2 in 0.0..(2.0 * PI), dq in [-1e-3..1e-3f64, -1e-3..1e-3f64, -1e-3..1e-3f64]) {
             let fb = crank_rocker();
-            let guess = assemble(&fb, 0.0, &[0.0, 1.2, 1.9]).unwrap();
+            let guess = fb.assemble(0.0, &[0.0, 1.2, 1.9]).unwrap();
             let mut q = guess;
             // continuation to θ₂ in steps of ≤ 0.2 rad
             let steps = (th2 / 0.2).ceil().max(1.0) as usize;
             for k in 1..=steps {
-                q = assemble(&fb, th2 * k as f64 / steps as f64, &q).unwrap();
+                q = fb.assemble(th2 * k as f64 / steps as f64, &q).unwrap();
             }
             let rows = |q: &[f64]| {
                 let t = constraint_terms(&fb, q, &[0.0; 3], 0.0)?;

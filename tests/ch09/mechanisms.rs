@@ -2,8 +2,8 @@
 //! energies or positions in redundant coordinates, plus the constraints.
 #![allow(dead_code)]
 
-use vectrix::dynamics::constraints::Constraints;
-use vectrix::nalgebra::{Matrix3, Vector3};
+use vectrix::dynamics::constraints::{Constraints, ProjectionOptions, constraint_terms, project_positions};
+use vectrix::nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use vectrix::prelude::*;
 
 /// |got − want| ≤ tol (absolute).
@@ -243,6 +243,30 @@ impl FourBar {
             p_a + e(q[1]) * (b * T::lit(0.5)),
             Vector3::new(d, T::zero(), T::zero()) + e(q[2]) * (c * T::lit(0.5)),
         ]
+    }
+
+    /// Assembles the linkage at crank angle θ₂ from the guess `q` by Gauss–Newton on the loop
+    /// closure plus the driving row θ₂ − θ₂* = 0 (metric M = I).
+    pub fn assemble(&self, th2: f64, q: &[f64]) -> Result<Vec<f64>, DynamicsError> {
+        let rows = |q: &[f64]| {
+            let t = constraint_terms(self, q, &[0.0; 3], 0.0)?;
+            let mut jac = DMatrix::zeros(3, 3);
+            jac.rows_mut(0, 2).copy_from(&t.jacobian);
+            jac[(2, 0)] = 1.0;
+            Ok((DVector::from_vec(vec![t.position[0], t.position[1], q[0] - th2]), jac))
+        };
+        let plus = |q: &[f64], d: &DVector<f64>| Ok(q.iter().zip(d.iter()).map(|(a, b)| a + b).collect());
+        Ok(project_positions(q, &DMatrix::identity(3, 3), rows, plus, &ProjectionOptions::default())?.q)
+    }
+
+    /// A consistent initial state: assembled at θ₂ from `guess`, the crank turning at ω and the
+    /// coupler and rocker rates solving Φ_q q̇ = 0 (test set-up: panics at a dead point).
+    pub fn start(&self, th2: f64, guess: &[f64], omega: f64) -> (Vec<f64>, Vec<f64>) {
+        let q0 = self.assemble(th2, guess).expect("the linkage assembles");
+        let g = constraint_terms(self, &q0, &[0.0; 3], 0.0).expect("finite").jacobian;
+        let sub = DMatrix::from_fn(2, 2, |i, j| g[(i, j + 1)]);
+        let rest = sub.lu().solve(&(-g.column(0) * omega)).expect("away from a dead point");
+        (q0, vec![omega, rest[0], rest[1]])
     }
 
     /// The coupler point at (u, v) in the coupler's frame (origin at the crank pin, x along
