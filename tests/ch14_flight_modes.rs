@@ -444,7 +444,8 @@ mod flight_scene {
         assert_eq!((line, path.as_str()), (line_of("control ="), "inputs[0].control"));
         assert!(msg.contains("valid: elevator, aileron, rudder, thrust"), "{msg}");
         let (_, path, msg) = invalid(&with(&ok, "\"theta\"", "\"pitch\""));
-        assert_eq!(path, "outputs");
+        // the offending element itself (the fourth output)
+        assert_eq!(path, "outputs[3]");
         assert!(msg.contains("unknown output `pitch`") && msg.contains("theta"), "{msg}");
         let (_, path, msg) = invalid(&with(&ok, "width = 1.0\n", ""));
         assert_eq!(path, "inputs[0].width");

@@ -678,3 +678,133 @@ fn issue_16_worked_example_bead_on_free_wire() {
         assert!(d.max_rel < 1e-8, "{:?}", d);
     }
 }
+
+// --------------------------------------------------- issue 21: quantities in scene files
+
+#[test]
+fn issue_21_quantity_strings_give_the_si_trajectory_to_rounding() {
+    // the same pendulum in SI numbers and in imperial quantity strings (exact factors: ft =
+    // 0.3048 m, lb = 0.45359237 kg): the trajectories agree to a few roundings
+    let si = "name = \"p\"\nduration = 2.0\nsamples = 20\naccuracy = 1e-10\noutputs = [\"coordinates:bob\", \
+              \"energy\"]\n[[bodies]]\nname = \"bob\"\njoint = { type = \"pin\", axis = [0.0, 0.0, 1.0] }\nmass = { \
+              shape = \"particle\", mass = 0.45359237 }\ncom = [0.0, -0.9144, 0.0]\nq = [0.5235987755982988]\n\
+              [[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, -9.80665, 0.0]\n";
+    let imperial = si
+        .replace("mass = 0.45359237", "mass = \"1 lb\"")
+        .replace("com = [0.0, -0.9144, 0.0]", "com = [\"0 ft\", \"-3 ft\", \"0 in\"]")
+        .replace("q = [0.5235987755982988]", "q = [\"30 deg\"]")
+        .replace("g = [0.0, -9.80665, 0.0]", "g = [\"0 ft/s^2\", \"-1 g0\", \"0 m/s^2\"]")
+        .replace("duration = 2.0", "duration = \"2 s\"");
+    let (a, b) = (
+        run(&Scene::from_toml(si, "si.toml").unwrap()),
+        run(&Scene::from_toml(&imperial, "imp.toml").unwrap()),
+    );
+    assert_eq!(a.t, b.t);
+    for (ra, rb) in a.rows.iter().zip(&b.rows) {
+        for (x, y) in ra.iter().zip(rb) {
+            assert!((x - y).abs() <= 1e-12 * x.abs().max(1.0), "{x} vs {y}");
+        }
+    }
+}
+
+#[test]
+fn issue_21_wrong_units_are_located_errors() {
+    let base = pendulum("name = \"p\"");
+    for (from, to, col, what) in [
+        // a length given as a mass: the error names both dimensions, at the unit
+        ("com = [0.0, -1.0, 0.0]", "com = [0.0, \"-1 kg\", 0.0]", 17, "length"),
+        ("mass = 1.0", "mass = \"1 furlong\"", 37, "furlong"),
+        ("q = [0.5]", "q = [\"thirty deg\"]", 6, "thirty"),
+        ("q = [0.5]", "q = [\"1e400 deg\"]", 6, "1e400"),
+    ] {
+        let text = base.replace(from, to);
+        assert_ne!(text, base, "{from}");
+        match Scene::from_toml(&text, "p.toml").unwrap_err() {
+            SceneError::Invalid { line, column, message, .. } => {
+                let l =
+                    text.lines().position(|l| l.contains(to.split('=').next().unwrap().trim())).unwrap() + 1;
+                assert_eq!(line, l, "{message}");
+                assert!(column >= col, "{to}: column {column}, {message}");
+                assert!(message.contains(what) && message.contains("valid:"), "{message}");
+            }
+            e => panic!("{to}: {e}"),
+        }
+    }
+}
+
+#[test]
+fn issue_21_outputs_in_imperial_units() {
+    let dir = temp_dir("imperial");
+    std::fs::write(
+        dir.join("p.toml"),
+        pendulum("name = \"pend\"").replace("[\"energy\"]", "[\"energy\", \"position:bob\"]"),
+    )
+    .unwrap();
+    assert!(vectrix(&dir, &["run", "p.toml", "--quiet", "--out", "si"]).status.success());
+    assert!(
+        vectrix(&dir, &["run", "p.toml", "--quiet", "--out", "imp", "--units", "imperial"]).status.success()
+    );
+    let si = std::fs::read_to_string(dir.join("si/pend/trajectory.csv")).unwrap();
+    let imp = std::fs::read_to_string(dir.join("imp/pend/trajectory.csv")).unwrap();
+    assert!(si.lines().next().unwrap().contains("position:bob.y [m]"), "{si}");
+    let head = imp.lines().next().unwrap();
+    assert!(head.contains("position:bob.y [ft]") && head.contains("energy [ft*lbf]"), "{head}");
+    // y = −cos(0.5) m at t = 0, written in feet (0.3048 m exactly)
+    let col = head.split(',').position(|c| c.starts_with("position:bob.y")).unwrap();
+    let y_ft: f64 = imp.lines().nth(1).unwrap().split(',').nth(col).unwrap().parse().unwrap();
+    assert!((y_ft + 0.5f64.cos() / 0.3048).abs() < 4.0 * f64::EPSILON * y_ft.abs(), "{y_ft}");
+    let summary = std::fs::read_to_string(dir.join("imp/pend/summary.json")).unwrap();
+    assert!(summary.contains("\"units\": \"imperial\""), "{summary}");
+    let o = vectrix(&dir, &["run", "p.toml", "--quiet", "--out", "x", "--units", "furlongs"]);
+    assert_eq!(o.status.code(), Some(1));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn issue_16_a_cancelled_run_keeps_what_it_computed() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use vectrix::dynamics::scene::RunControl;
+    let scene = kepler_scene(0.9, 4.0, 400, 1e-10);
+    let cancel = AtomicBool::new(false);
+    let mut progress = |f: f64| {
+        if f > 0.3 {
+            cancel.store(true, Ordering::Relaxed);
+        }
+    };
+    let r = scene.run_with(RunControl { progress: &mut progress, cancel: Some(&cancel) }).unwrap();
+    let stop = r.stop.as_ref().expect("stopped");
+    assert_eq!(stop.reason, StopReason::Interrupted);
+    assert!(r.t.len() > 100 && r.t.len() < 401, "{}", r.t.len());
+    assert!(*r.t.last().unwrap() <= stop.t);
+    // what was computed is right
+    assert!(kepler_error(&r, 0.9) < 1e-6);
+}
+
+#[cfg(unix)]
+#[test]
+fn issue_16_ctrl_c_writes_the_rows_computed_marked_incomplete() {
+    // a long run, interrupted by SIGINT: exit code 130, output written, "complete": false
+    let dir = temp_dir("sigint");
+    let text = pendulum("name = \"long\"").replace("duration = 0.2", "duration = 1e6\nmax_steps = 100000000");
+    std::fs::write(dir.join("l.toml"), text).unwrap();
+    let child = Command::new(env!("CARGO_BIN_EXE_vectrix"))
+        .current_dir(&dir)
+        .args(["run", "l.toml", "--quiet", "--out", "o"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let ok = Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+    assert!(ok.success());
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(130), "{}", String::from_utf8_lossy(&o.stderr));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("o/long/summary.json")).unwrap()).unwrap();
+    assert_eq!(s["complete"], serde_json::Value::Bool(false));
+    assert_eq!(s["stop"]["reason"], "interrupted");
+    let rows = s["rows"].as_u64().unwrap();
+    let csv = std::fs::read_to_string(dir.join("o/long/trajectory.csv")).unwrap();
+    assert_eq!(csv.lines().count() as u64, rows + 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}

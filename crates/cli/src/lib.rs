@@ -19,6 +19,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use vectrix_units::UnitSystem;
 
 mod accuracy;
 mod check;
@@ -53,6 +54,9 @@ pub enum Command {
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
+        /// Unit system of trajectory.csv, the plots and summary.json: `si` or `imperial`.
+        #[arg(long, default_value = "si")]
+        units: String,
     },
     /// Validates a scene file without running it.
     Check {
@@ -73,6 +77,9 @@ pub enum Command {
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
+        /// Unit system of the outputs: `si` or `imperial`.
+        #[arg(long, default_value = "si")]
+        units: String,
     },
     /// A short tour: frames, resolution, a rotor, a contraction.
     Tour,
@@ -109,11 +116,13 @@ where
     let cli = Cli::try_parse_from(args)?;
     let done = |r: Result<(), Box<dyn std::error::Error + Send + Sync>>| r.map(|()| Outcome::Complete);
     match cli.command {
-        None => run::run(out, None, &PathBuf::from("out"), false),
-        Some(Command::Run { scene, out: dir, quiet }) => run::run(out, scene.as_deref(), &dir, quiet),
+        None => run::run(out, None, &PathBuf::from("out"), false, UnitSystem::Si),
+        Some(Command::Run { scene, out: dir, quiet, units }) => {
+            run::run(out, scene.as_deref(), &dir, quiet, units.parse::<UnitSystem>()?)
+        }
         Some(Command::Check { scene }) => done(check::check(out, &scene)),
-        Some(Command::Sweep { scene, param, out: dir, quiet }) => {
-            sweep::sweep(out, &scene, &param, &dir, quiet)
+        Some(Command::Sweep { scene, param, out: dir, quiet, units }) => {
+            sweep::sweep(out, &scene, &param, &dir, quiet, units.parse::<UnitSystem>()?)
         }
         Some(Command::Tour) => done(tour::run(out).map_err(|e| e.to_string().into())),
         Some(Command::Accuracy { out: dir, quick, all }) => {
@@ -125,6 +134,8 @@ where
 /// Entry point of the binary: parses `std::env::args` and runs. Exit codes: 0 done, 1 error
 /// or a run stopped by its budget (output written, marked incomplete), 130 interrupted.
 pub fn main() -> ExitCode {
+    // Ctrl-C stops a run cleanly from the first instant on (the handler sets a flag)
+    run::interrupted();
     let mut out = std::io::stdout().lock();
     match run_with_args(std::env::args_os(), &mut out) {
         Ok(Outcome::Complete) => ExitCode::SUCCESS,

@@ -39,7 +39,8 @@ struct Summary<'a> {
     t_end: f64,
     columns: Vec<Column<'a>>,
     outputs: &'a [String],
-    /// All quantities are SI: m, kg, s, rad, N, J.
+    /// The unit system of the columns and drift values (`si` or `imperial`); each column's unit
+    /// is in `columns`.
     units: &'static str,
     invariants: &'a [Invariant],
     drift: &'a [Drift],
@@ -127,7 +128,7 @@ pub(crate) fn summary_json(scene: &Scene, run: &Run) -> Result<String, BoxError>
         t_end: run.t.last().copied().unwrap_or(0.0),
         columns: run.columns.iter().zip(&run.units).map(|(n, u)| Column { name: n, unit: u }).collect(),
         outputs: &scene.spec().outputs,
-        units: "SI (m, kg, s, rad, N, J)",
+        units: run.unit_system,
         invariants: &run.invariants,
         drift: &run.drift,
         work: run.work,
@@ -160,8 +161,8 @@ fn path_svg(run: &Run, o: &str, body: &str) -> Result<Option<String>, BoxError> 
     let start = pts[0];
     let chart = Chart {
         title: format!("{}: path of {body}", run.scene),
-        x_label: format!("{cx} [m]"),
-        y_label: format!("{cy} [m]"),
+        x_label: format!("{cx} [{}]", run.units[kx]),
+        y_label: format!("{cy} [{}]", run.units[ky]),
         equal_aspect: true,
         curves: vec![Curve::new(body, pts, 0)],
         markers: vec![vectrix_plot::Marker {

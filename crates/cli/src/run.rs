@@ -13,6 +13,7 @@ use std::time::{Duration, Instant};
 use indicatif::{ProgressBar, ProgressStyle};
 use vectrix_dynamics::scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, StopReason};
 use vectrix_flight::scene::{AnyScene, FlightScene};
+use vectrix_units::UnitSystem;
 
 use crate::output::{BoxError, write_dir};
 
@@ -168,7 +169,13 @@ pub enum Outcome {
 }
 
 /// `vectrix run`.
-pub fn run(out: &mut impl Write, path: Option<&Path>, dir: &Path, quiet: bool) -> Result<Outcome, BoxError> {
+pub fn run(
+    out: &mut impl Write,
+    path: Option<&Path>,
+    dir: &Path,
+    quiet: bool,
+    units: UnitSystem,
+) -> Result<Outcome, BoxError> {
     let scene = match path {
         Some(p) => match load(p)? {
             AnyScene::Bodies(s) => *s,
@@ -177,7 +184,7 @@ pub fn run(out: &mut impl Write, path: Option<&Path>, dir: &Path, quiet: bool) -
         None => Scene::from_toml(DEFAULT_SCENE, "<default scene>")?,
     };
     crate::output::preflight(dir, &scene.spec().name)?;
-    let run = simulate(&scene, quiet)?;
+    let run = simulate(&scene, quiet)?.in_units(units)?;
     let dest = write_dir(dir, &scene.spec().name, |tmp| crate::report::write_scene(tmp, &scene, &run))?;
     print_summary(out, &scene, &run)?;
     writeln!(out, "wrote {}", dest.display())?;

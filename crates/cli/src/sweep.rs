@@ -13,9 +13,10 @@ use std::path::Path;
 use std::sync::Mutex;
 
 use rayon::prelude::*;
-use vectrix_dynamics::scene::{Run, RunControl, Scene, SceneSource, SceneSpec};
+use vectrix_dynamics::scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, body_schema};
 use vectrix_flight::scene::AnyScene;
 use vectrix_plot::LineChart;
+use vectrix_units::UnitSystem;
 
 use crate::output::{BoxError, file_stem, write_dir};
 use crate::report::{columns_of, y_label};
@@ -24,14 +25,27 @@ use crate::run::{Progress, interrupted};
 /// Most runs one sweep may ask for (the product of the value counts).
 pub const MAX_SWEEP_RUNS: usize = 10_000;
 
-/// One parameter: its dotted path and values.
-fn parse_param(p: &str) -> Result<(String, Vec<f64>), String> {
+/// One parameter: its dotted path and values; a value may be a quantity string (`2 lbf/ft`),
+/// converted by the scene schema's dimension for that key.
+fn parse_param(p: &str, doc: &toml::Value) -> Result<(String, Vec<f64>), String> {
     let (path, values) = p.split_once('=').ok_or_else(|| format!("`{p}`: expected PATH=v1,v2,…"))?;
+    let steps: Vec<Step> = path
+        .split('.')
+        .map(|s| s.parse::<usize>().map_or_else(|_| Step::Key(s.to_string()), Step::Index))
+        .collect();
+    let expect = body_schema(&steps, doc);
     let vals = values
         .split(',')
-        .map(|v| match v.trim().parse::<f64>() {
-            Ok(x) if x.is_finite() => Ok(x),
-            _ => Err(format!("`{v}` in `{p}` is not a finite number")),
+        .map(|v| match (v.trim().parse::<f64>(), expect) {
+            (Ok(x), _) if x.is_finite() => Ok(x),
+            (Ok(_), _) => Err(format!("`{v}` in `{p}` is not a finite number")),
+            (Err(_), Some(e)) => vectrix_units::Quantity::parse(v.trim())
+                .and_then(|q| {
+                    let d = e.dims.iter().copied().find(|d| *d == q.dimension()).unwrap_or(e.dims[0]);
+                    q.to_si(d)
+                })
+                .map_err(|err| format!("`{v}` in `{p}`: {err}")),
+            (Err(_), None) => Err(format!("`{v}` in `{p}` is not a finite number")),
         })
         .collect::<Result<Vec<_>, _>>()?;
     if vals.is_empty() || path.is_empty() {
@@ -95,6 +109,7 @@ pub fn sweep(
     params: &[String],
     dir: &Path,
     quiet: bool,
+    units: UnitSystem,
 ) -> Result<crate::run::Outcome, BoxError> {
     let base_scene = match crate::run::load(path)? {
         AnyScene::Bodies(s) => *s,
@@ -110,7 +125,7 @@ pub fn sweep(
     let file = path.display().to_string();
     let src = SceneSource::new(&text, &file)?;
     let doc: toml::Value = toml::from_str(&text)?;
-    let params = params.iter().map(|p| parse_param(p)).collect::<Result<Vec<_>, _>>()?;
+    let params = params.iter().map(|p| parse_param(p, &doc)).collect::<Result<Vec<_>, _>>()?;
     let total = params.iter().try_fold(1usize, |n, (_, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
     if total > MAX_SWEEP_RUNS {
         return Err(format!("the sweep asks for {total} runs; valid: at most {MAX_SWEEP_RUNS}").into());
@@ -146,6 +161,7 @@ pub fn sweep(
         .map(|(index, (scene, label))| {
             let run = scene
                 .run_with(RunControl { progress: &mut |_| {}, cancel: Some(interrupted()) })
+                .and_then(|r| r.in_units(units))
                 .map_err(|e| format!("run {index} ({}): {e}", describe(&label)))?;
             if let Ok(mut p) = progress.lock() {
                 p.1 += 1;

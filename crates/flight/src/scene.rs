@@ -37,10 +37,11 @@ use std::collections::BTreeMap;
 
 use nalgebra::DVector;
 use serde::{Deserialize, Serialize};
-use vectrix_dynamics::scene::{RunControl, Scene, SceneError, SceneSource, Stop, StopReason};
+use vectrix_dynamics::scene::{Expect, RunControl, Scene, SceneError, SceneSource, Step, Stop, StopReason};
 use vectrix_lti::Complex64;
 use vectrix_ode::OdeError;
 use vectrix_ode::explicit::{Adaptive, Stepper};
+use vectrix_units::UnitSystem;
 
 use crate::{
     Aircraft, AircraftState, Airframe, Controls, FlightError, FlightMode, Linearization, Trim, TrimLimits,
@@ -364,6 +365,42 @@ struct OutputSummary<'a> {
     max_linear_error: Option<f64>,
 }
 
+/// The expected dimensions of a flight scene's numbers. Bare numbers are in the units of the
+/// aircraft catalogue — the book's (ft, slug, s, lbf, rad) for the business jet — and quantity
+/// strings are converted exactly into them: `airspeed = "400 kt"`, `mass = "17.8 t"`.
+///
+/// Book: §15.19; Tables 14.1–14.2.
+pub fn flight_schema(path: &[Step], root: &toml::Value) -> Option<Expect> {
+    use vectrix_units::Dimension as D;
+    const fn imp(dims: &'static [D]) -> Option<Expect> {
+        Some(Expect { dims, system: UnitSystem::Imperial })
+    }
+    let keys: Vec<Option<&str>> = path.iter().map(vectrix_dynamics::scene::key_of).collect();
+    match keys.as_slice() {
+        [Some("duration")] | [Some("inputs"), None, Some("start" | "width")] => imp(&[D::TIME]),
+        [Some("accuracy")] => imp(&[D::DIMENSIONLESS]),
+        [Some("aircraft"), Some("mass")] => imp(&[D::MASS]),
+        [Some("aircraft"), Some("inertia"), None] => imp(&[D::MOMENT_OF_INERTIA]),
+        [Some("aircraft"), Some("area")] => imp(&[D::AREA]),
+        [Some("aircraft"), Some("chord" | "span")] => imp(&[D::LENGTH]),
+        [Some("aircraft"), Some("rho")] => imp(&[D::DENSITY]),
+        [Some("aircraft"), Some("g")] => imp(&[D::ACCELERATION]),
+        [Some("aircraft"), Some("thrust_angle")] | [Some("trim"), Some("gamma")] => imp(&[D::ANGLE]),
+        [Some("aircraft"), Some("coefficients"), Some("u_ref")] | [Some("trim"), Some("airspeed")] => {
+            imp(&[D::VELOCITY])
+        }
+        [Some("aircraft"), Some("coefficients"), Some(_)] => imp(&[D::DIMENSIONLESS]),
+        [Some("trim"), Some("turn_rate")] => imp(&[D::ANGULAR_VELOCITY, D::FREQUENCY]),
+        [Some("inputs"), None, Some("amplitude")] => {
+            let Step::Index(i) = path[1] else { return None };
+            let control =
+                vectrix_dynamics::scene::tag(root, &[Step::Key("inputs".into()), Step::Index(i)], "control");
+            if control == Some("thrust") { imp(&[D::FORCE]) } else { imp(&[D::ANGLE]) }
+        }
+        _ => None,
+    }
+}
+
 /// Most output samples of a flight scene (rows of trajectory.csv; bounds memory and time).
 pub const MAX_FLIGHT_SAMPLES: usize = 1_000_000;
 
@@ -507,7 +544,7 @@ impl FlightScene {
     /// # Errors
     /// As [`FlightScene::from_toml`].
     pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
-        let spec: FlightSceneSpec = src.deserialize()?;
+        let spec: FlightSceneSpec = src.deserialize_with(&flight_schema)?;
         vectrix_dynamics::scene::check_name(&spec.name, "scene name", true)
             .map_err(|m| src.invalid("name", m))?;
         if !(spec.duration.is_finite() && spec.duration > 0.0) {

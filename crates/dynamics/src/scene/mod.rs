@@ -17,6 +17,7 @@ mod impacts;
 mod invariants;
 mod kin;
 mod outputs;
+mod quantities;
 mod query;
 mod rhs;
 mod run;
@@ -25,6 +26,9 @@ pub mod spec;
 
 pub use error::SceneError;
 pub use invariants::Invariant;
+pub use quantities::{
+    Expect, Schema, Step, body_schema, convert as convert_quantities, key_of, render as render_path, tag,
+};
 pub use query::StateQuery;
 pub use rhs::SceneRhs;
 pub use run::{
@@ -126,7 +130,7 @@ impl Scene {
     /// # Errors
     /// As [`Scene::from_toml`].
     pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
-        let spec: SceneSpec = src.deserialize()?;
+        let spec: SceneSpec = src.deserialize_with(&body_schema)?;
         Self::build(spec, src)
     }
 

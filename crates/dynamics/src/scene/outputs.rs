@@ -11,6 +11,7 @@ use super::build::{Built, Src, dims};
 use super::forces::centre;
 use super::kin::Kin;
 use super::spec::{JointSpec, SceneSpec};
+use vectrix_units::Dimension;
 
 /// One requested output.
 #[derive(Debug, Clone, PartialEq)]
@@ -117,43 +118,46 @@ impl Scene {
         cols
     }
 
-    /// The SI unit of every column of [`Scene::columns`], in the same order.
-    pub(crate) fn column_units(&self) -> Vec<String> {
+    /// The dimension of every column of [`Scene::columns`], in the same order.
+    pub(crate) fn column_dims(&self) -> Vec<Dimension> {
         let b = &self.built;
-        let joint_units = |i: usize, speed: bool| -> Vec<&'static str> {
-            let (l, a) = if speed { ("m/s", "rad/s") } else { ("m", "rad") };
+        let joint_dims = |i: usize, speed: bool| -> Vec<Dimension> {
+            let (l, a) = if speed {
+                (Dimension::VELOCITY, Dimension::ANGULAR_VELOCITY)
+            } else {
+                (Dimension::LENGTH, Dimension::ANGLE)
+            };
+            let one = Dimension::DIMENSIONLESS;
             match &b.bodies[i].joint {
                 JointSpec::Pin { .. } => vec![a],
                 JointSpec::Sleeve { .. } => vec![l],
                 JointSpec::Collar { .. } | JointSpec::Slot { .. } => vec![l, a],
                 JointSpec::Ball {} if speed => vec![a; 3],
-                JointSpec::Ball {} => vec!["1"; 4],
+                JointSpec::Ball {} => vec![one; 4],
                 JointSpec::Free {} if speed => vec![l, l, l, a, a, a],
-                JointSpec::Free {} => vec![l, l, l, "1", "1", "1", "1"],
+                JointSpec::Free {} => vec![l, l, l, one, one, one, one],
                 JointSpec::Weld {} => vec![],
             }
         };
-        let all = |speed: bool| -> Vec<&'static str> {
-            let mut order: Vec<usize> = (0..b.bodies.len()).collect();
-            order.sort_by_key(|&i| if speed { b.bodies[i].vi } else { b.bodies[i].qi });
-            order.into_iter().flat_map(|i| joint_units(i, speed)).collect()
+        let all = |speed: bool| -> Vec<Dimension> {
+            (0..b.bodies.len()).flat_map(|i| joint_dims(i, speed)).collect()
         };
-        let mut units: Vec<&str> = Vec::new();
+        let mut dims: Vec<Dimension> = Vec::new();
         for o in &self.outputs {
             match o {
-                Output::Q => units.extend(all(false)),
-                Output::V => units.extend(all(true)),
-                Output::Energy => units.push("J"),
-                Output::Momentum => units.extend(["kg m/s"; 3]),
-                Output::AngularMomentum => units.extend(["kg m^2/s"; 3]),
-                Output::Position(_) => units.extend(["m"; 3]),
-                Output::Velocity(_) => units.extend(["m/s"; 3]),
-                Output::Omega(_) | Output::OmegaBody(_) => units.extend(["rad/s"; 3]),
-                Output::Coordinates(i) => units.extend(joint_units(*i, false)),
-                Output::Speeds(i) => units.extend(joint_units(*i, true)),
+                Output::Q => dims.extend(all(false)),
+                Output::V => dims.extend(all(true)),
+                Output::Energy => dims.push(Dimension::ENERGY),
+                Output::Momentum => dims.extend([Dimension::MOMENTUM; 3]),
+                Output::AngularMomentum => dims.extend([Dimension::ANGULAR_MOMENTUM; 3]),
+                Output::Position(_) => dims.extend([Dimension::LENGTH; 3]),
+                Output::Velocity(_) => dims.extend([Dimension::VELOCITY; 3]),
+                Output::Omega(_) | Output::OmegaBody(_) => dims.extend([Dimension::ANGULAR_VELOCITY; 3]),
+                Output::Coordinates(i) => dims.extend(joint_dims(*i, false)),
+                Output::Speeds(i) => dims.extend(joint_dims(*i, true)),
             }
         }
-        units.into_iter().map(String::from).collect()
+        dims
     }
 
     /// The point about which `angular_momentum` is reported: that of the invariant, else the origin.

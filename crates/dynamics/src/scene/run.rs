@@ -14,6 +14,7 @@ use nalgebra::Vector3;
 use serde::Serialize;
 use vectrix_ode::explicit::{Adaptive, Stepper, bracket_zero};
 use vectrix_ode::{Accuracy, OdeError};
+use vectrix_units::{Dimension, UnitSystem};
 
 use super::build::Src;
 use super::kin::{Kin, kinematics, normalize};
@@ -188,8 +189,14 @@ pub struct Run {
     pub scene: String,
     /// Column names (after `t`).
     pub columns: Vec<String>,
-    /// The SI unit of each column (`rad/s`, `J`, `m`; `1` for a quaternion component).
+    /// The unit of each column (`rad/s`, `J`, `m`; `1` for a quaternion component): SI, unless
+    /// converted by [`Run::in_units`].
     pub units: Vec<String>,
+    /// The dimension of each column.
+    #[serde(skip)]
+    pub dimensions: Vec<Dimension>,
+    /// The unit system of the columns and the drift values (`si` or `imperial`).
+    pub unit_system: &'static str,
     /// Sample times (the rows written; `t = 0` is the first).
     pub t: Vec<f64>,
     /// One row of column values per sample.
@@ -214,6 +221,49 @@ impl Run {
         Some(self.rows.iter().map(|r| r[k]).collect())
     }
 
+    /// The run with every column and drift value written in `system` (`ft`, `slug*ft^2/s`, …),
+    /// converted exactly (two roundings; vectrix_units). A run is in SI until converted.
+    ///
+    /// Book: §15.19.
+    ///
+    /// # Errors
+    /// [`SceneError::Run`] when a value overflows in the new unit.
+    pub fn in_units(mut self, system: UnitSystem) -> Result<Run, SceneError> {
+        let fail = |e: vectrix_units::UnitError| SceneError::Run { t: 0.0, message: e.to_string() };
+        for (k, d) in self.dimensions.iter().enumerate() {
+            let c = system.converter(*d).map_err(fail)?;
+            for r in &mut self.rows {
+                r[k] = c.from_si(r[k]).map_err(fail)?;
+            }
+            self.units[k] = label(system, *d, &self.columns[k]);
+        }
+        for dr in &mut self.drift {
+            let d = match dr.invariant {
+                Invariant::Energy => Dimension::ENERGY,
+                Invariant::Momentum => Dimension::MOMENTUM,
+                _ => Dimension::ANGULAR_MOMENTUM,
+            };
+            let c = system.converter(d).map_err(fail)?;
+            let conv = |v: &mut InvariantValue| -> Result<(), SceneError> {
+                match v {
+                    InvariantValue::Scalar(x) => *x = c.from_si(*x).map_err(fail)?,
+                    InvariantValue::Vector(x) => {
+                        for e in x.iter_mut() {
+                            *e = c.from_si(*e).map_err(fail)?;
+                        }
+                    }
+                }
+                Ok(())
+            };
+            conv(&mut dr.initial)?;
+            conv(&mut dr.last)?;
+            dr.max_abs = c.from_si(dr.max_abs).map_err(fail)?;
+            dr.scale = c.from_si(dr.scale).map_err(fail)?;
+        }
+        self.unit_system = system.name();
+        Ok(self)
+    }
+
     /// `true` when the run reached its duration.
     pub fn is_complete(&self) -> bool {
         self.stop.is_none()
@@ -235,6 +285,18 @@ impl Run {
             s.push('\n');
         }
         s
+    }
+}
+
+/// The unit label of a column in a system: `1` for a pure number, `J` for the SI energy
+/// (whose dimension is that of a moment, N·m), the system's unit otherwise.
+fn label(system: UnitSystem, d: Dimension, column: &str) -> String {
+    if d == Dimension::DIMENSIONLESS {
+        "1".into()
+    } else if column == "energy" && system == UnitSystem::Si {
+        "J".into()
+    } else {
+        system.label(d)
     }
 }
 
@@ -334,7 +396,14 @@ impl Scene {
         let mut run = Run {
             scene: spec.name.clone(),
             columns: self.columns(),
-            units: self.column_units(),
+            units: self
+                .column_dims()
+                .iter()
+                .zip(self.columns())
+                .map(|(d, c)| label(UnitSystem::Si, *d, &c))
+                .collect(),
+            dimensions: self.column_dims(),
+            unit_system: UnitSystem::Si.name(),
             t: Vec::with_capacity(spec.samples + 1),
             rows: Vec::with_capacity(spec.samples + 1),
             invariants: self.invariants().to_vec(),

@@ -97,6 +97,83 @@ impl<'a> SceneSource<'a> {
         toml::from_str(self.text).map_err(|e| SceneError::from_toml(&e, self.text, self.file))
     }
 
+    /// Deserializes the document into `T` after converting its quantity strings by `schema`
+    /// (see [`super::quantities`]). Without quantity strings the TOML parser locates serde's
+    /// errors; with them, errors are located by the item path serde reports.
+    ///
+    /// # Errors
+    /// [`SceneError::Parse`] (shape: unknown or missing keys, wrong types) and
+    /// [`SceneError::Invalid`] (a quantity string that is wrong where it stands).
+    pub fn deserialize_with<T: DeserializeOwned>(
+        &self,
+        schema: &super::quantities::Schema,
+    ) -> Result<T, SceneError> {
+        let mut doc: toml::Value =
+            toml::from_str(self.text).map_err(|e| SceneError::from_toml(&e, self.text, self.file))?;
+        if super::quantities::convert(self, &mut doc, schema)? == 0 {
+            return self.deserialize();
+        }
+        serde_path_to_error::deserialize(doc).map_err(|e| {
+            let mut path = String::new();
+            for seg in e.path().iter() {
+                match seg {
+                    serde_path_to_error::Segment::Seq { index } => path.push_str(&format!("[{index}]")),
+                    serde_path_to_error::Segment::Map { key } => {
+                        if !path.is_empty() {
+                            path.push('.');
+                        }
+                        path.push_str(key);
+                    }
+                    _ => {}
+                }
+            }
+            let message = e.inner().to_string();
+            // an unknown key: point at it
+            if let Some(key) = message.split('`').nth(1).filter(|_| message.starts_with("unknown field")) {
+                path = if path.is_empty() { key.to_string() } else { format!("{path}.{key}") };
+            }
+            let (line, column) = self.locate(&path);
+            SceneError::Parse { file: self.file.into(), line, column, message: message.trim().to_string() }
+        })
+    }
+
+    /// Byte range of the *value* at `path` (a string literal with its quotes), or of the
+    /// nearest existing ancestor.
+    pub fn value_span(&self, path: &str) -> std::ops::Range<usize> {
+        let mut best = 0..0;
+        let mut table: Option<&DeTable<'a>> = Some(self.doc.get_ref());
+        let mut array: Option<&[Spanned<DeValue<'a>>]> = None;
+        for seg in segments(path) {
+            let next = match (seg, table, array) {
+                (Seg::Key(k), Some(t), _) => t.iter().find(|(key, _)| key.get_ref() == k).map(|(_, v)| v),
+                (Seg::Index(i), _, Some(a)) => a.get(i),
+                _ => None,
+            };
+            let Some(v) = next else { break };
+            best = v.span();
+            table = v.get_ref().as_table();
+            array = v.get_ref().as_array().map(|a| &a[..]);
+        }
+        best
+    }
+
+    /// A [`SceneError::Invalid`] for the item `path`, located at byte `offset` of the file.
+    pub fn invalid_at(
+        &self,
+        offset: usize,
+        path: impl Into<String>,
+        message: impl Into<String>,
+    ) -> SceneError {
+        let (line, column) = line_col(self.text, offset);
+        SceneError::Invalid {
+            file: self.file.into(),
+            line,
+            column,
+            path: path.into(),
+            message: message.into(),
+        }
+    }
+
     /// Byte range of the item at `path`: the key of a table entry, the element of an array;
     /// the deepest existing ancestor when the path goes further than the file (a key left
     /// to its default), the start of the file for the empty path.
