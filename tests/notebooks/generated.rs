@@ -390,6 +390,76 @@ fn notebook_07_lagrange() {
         .to_svg()
         .expect("finite data");
     println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    // cell 6
+    use vectrix::dynamics::constraints::{Constraints, ProjectionOptions, constraint_terms, project_positions};
+    use vectrix::nalgebra::DMatrix;
+
+    /// Crank a, coupler b, rocker c, ground d; q = (θ₂, θ₃, θ₄) from the ground line.
+    struct Linkage {
+        a: f64,
+        b: f64,
+        c: f64,
+        d: f64,
+    }
+    impl Constraints for Linkage {
+        fn constraint_count(&self) -> usize {
+            2
+        }
+        // loop closure: a e(θ₂) + b e(θ₃) − c e(θ₄) − d î = 0
+        fn constraints<T: Scalar>(&self, q: &[T], _t: T, out: &mut [T]) {
+            let (a, b, c) = (T::lit(self.a), T::lit(self.b), T::lit(self.c));
+            out[0] = a * q[0].cos() + b * q[1].cos() - c * q[2].cos() - T::lit(self.d);
+            out[1] = a * q[0].sin() + b * q[1].sin() - c * q[2].sin();
+        }
+    }
+    let linkage = Linkage { a: 1.0, b: 3.5, c: 3.0, d: 4.0 };
+    // assemble at crank angle θ₂* from a guess: the loop rows plus θ₂ − θ₂* = 0, metric M = I
+    let assemble = |th2: f64, guess: &[f64]| {
+        let rows = |q: &[f64]| {
+            let t = constraint_terms(&linkage, q, &[0.0; 3], 0.0)?;
+            let mut jac = DMatrix::zeros(3, 3);
+            jac.rows_mut(0, 2).copy_from(&t.jacobian);
+            jac[(2, 0)] = 1.0;
+            Ok((DVector::from_vec(vec![t.position[0], t.position[1], q[0] - th2]), jac))
+        };
+        let plus = |q: &[f64], dq: &DVector<f64>| Ok(q.iter().zip(dq.iter()).map(|(x, dx)| x + dx).collect());
+        project_positions(guess, &DMatrix::identity(3, 3), rows, plus, &ProjectionOptions::default()).map(|p| p.q)
+    };
+    // the coupler point 1.2 along the coupler from the crank pin and 0.8 to its left
+    let (u, v) = (1.2, 0.8);
+    let coupler_point = |q: &[f64]| {
+        let pin = (linkage.a * q[0].cos(), linkage.a * q[0].sin());
+        (pin.0 + u * q[1].cos() - v * q[1].sin(), pin.1 + u * q[1].sin() + v * q[1].cos())
+    };
+    let k3 = (linkage.a.powi(2) - linkage.b.powi(2) + linkage.c.powi(2) + linkage.d.powi(2)) / (2.0 * linkage.a * linkage.c);
+    let (mut q, mut curve, mut worst) = (vec![0.0, 1.2, 1.9], Vec::new(), 0.0_f64);
+    for k in 0..=180 {
+        let th2 = std::f64::consts::TAU * f64::from(k) / 180.0;
+        q = assemble(th2, &q).expect("a Grashof crank-rocker assembles at every crank angle");
+        let freudenstein = linkage.d / linkage.a * q[2].cos() - linkage.d / linkage.c * q[0].cos() + k3 - (q[0] - q[2]).cos();
+        worst = worst.max(freudenstein.abs());
+        curve.push(coupler_point(&q));
+    }
+    println!("largest Freudenstein residual over a full turn of the crank: {worst:.1e}");
+    assert!(worst < 1e-11);
+    // cell 7
+    let q60 = assemble(std::f64::consts::FRAC_PI_3, &[1.0, 1.2, 1.9]).expect("assembles");
+    let pin = (linkage.a * q60[0].cos(), linkage.a * q60[0].sin());
+    let tip = (linkage.d + linkage.c * q60[2].cos(), linkage.c * q60[2].sin());
+    let chart = Chart {
+        title: "Four-bar coupler curve (§9.11)".into(),
+        x_label: "x".into(),
+        y_label: "y".into(),
+        equal_aspect: true,
+        curves: vec![
+            Curve::new("coupler point", curve, 0),
+            Curve::new("linkage at θ₂ = 60°", vec![(0.0, 0.0), pin, tip, (linkage.d, 0.0)], 1),
+            Curve::new("coupler plate", vec![pin, coupler_point(&q60), tip], 2),
+        ],
+        ..Chart::default()
+    };
+    let svg = chart.to_svg().expect("finite data");
+    println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
 }
 
 /// `docs/notebooks/08-aircraft.ipynb`

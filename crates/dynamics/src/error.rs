@@ -115,6 +115,85 @@ pub enum DynamicsError {
         /// Why.
         detail: &'static str,
     },
+    /// A constraint whose gradient vanishes at this configuration (row `row` of Φ_q, or of
+    /// [Φ_q; A], is zero to working precision): its multiplier is not determined.
+    #[error(
+        "constraint row {row} has a vanishing gradient (M-weighted norm {norm:e}, largest row {scale:e}): \
+         φ or ψ is stationary here (e.g. written squared) and its reaction is not determined; \
+         write the constraint so that its gradient is nonzero on the constraint set"
+    )]
+    SingularConstraint {
+        /// Row of the constraint Jacobian (holonomic rows first, then velocity rows).
+        row: usize,
+        /// ‖L⁻¹ gᵢ‖ with M = LLᵀ and gᵢ the row.
+        norm: f64,
+        /// The largest such norm over all rows.
+        scale: f64,
+    },
+    /// A constraint that is a linear combination of earlier ones (a redundant constraint set,
+    /// or a singular configuration such as a linkage at a dead point).
+    #[error(
+        "constraint row {row} is dependent on rows {depends_on:?} (relative residual {residual:e} ≤ tolerance {tol:e}): \
+         the constraint set is redundant or the configuration is singular; remove row {row} or move away \
+         from the singular configuration"
+    )]
+    DependentConstraint {
+        /// Row of the constraint Jacobian (holonomic rows first, then velocity rows).
+        row: usize,
+        /// Earlier rows that it is a combination of.
+        depends_on: Vec<usize>,
+        /// |R_kk| / ‖L⁻¹gₖ‖: the part of the row independent of the earlier rows.
+        residual: f64,
+        /// The rank tolerance used.
+        tol: f64,
+    },
+    /// More constraints than generalized coordinates: some must be dependent.
+    #[error("{count} constraints on {dof} coordinates: at most {dof} constraints can be independent")]
+    TooManyConstraints {
+        /// Number of constraints (holonomic plus velocity).
+        count: usize,
+        /// Number of generalized coordinates.
+        dof: usize,
+    },
+    /// Initial conditions that violate the constraints, with projection not requested.
+    #[error(
+        "initial conditions violate the constraints: |φ(q₀)|∞ = {position:e}, |Φ_q q̇₀ + Φ_t|∞ or |Aq̇₀ + b|∞ = {velocity:e} \
+         (tolerance {tol:e}); start on the constraint manifold or ask for the initial state to be projected"
+    )]
+    InconsistentInitialConditions {
+        /// Largest |φᵢ(q₀, t₀)|.
+        position: f64,
+        /// Largest velocity-constraint residual at (q₀, q̇₀, t₀).
+        velocity: f64,
+        /// The tolerance.
+        tol: f64,
+    },
+    /// The projection onto the constraint manifold did not converge.
+    #[error(
+        "projection onto the constraints did not converge: |φ|∞ = {violation:e} after {iterations} Gauss–Newton \
+         iterations (tolerance {tol:e}); the state is too far from the constraint manifold or near a singular configuration"
+    )]
+    ProjectionFailed {
+        /// Iterations done.
+        iterations: usize,
+        /// The remaining violation.
+        violation: f64,
+        /// The tolerance asked for.
+        tol: f64,
+    },
+    /// Speed constraints that do not determine the dependent speeds (Kane's method).
+    #[error(
+        "speed constraint row {row} does not determine the dependent speeds: the columns of the last {dependent} speeds \
+         are singular there (relative pivot {residual:e}); order the speeds so that the dependent ones can be solved for"
+    )]
+    SpeedsNotDetermined {
+        /// Row of the speed constraints.
+        row: usize,
+        /// Number of dependent speeds.
+        dependent: usize,
+        /// The relative pivot found.
+        residual: f64,
+    },
     /// An error from the statics layer.
     #[error(transparent)]
     Statics(#[from] vectrix_statics::StaticsError),

@@ -9,6 +9,9 @@
 //!   CRBA + Cholesky (§7.11); [`Network`]: spring–dashpot–inerter networks (§7.5).
 //! * [`lagrange`]: Lagrange's and Hamilton's equations from user energies, differentiated
 //!   exactly by dual numbers (ch. 9), and the kinematic-map form that builds T itself.
+//! * [`constraints`]: holonomic and nonholonomic constraints with multipliers (§9.11–9.12),
+//!   Kane's equations with user-chosen speeds (§9.14), and integration with drift projected
+//!   away ([`constraints::ConstrainedIntegrator`]).
 //! * Collisions and impulses (§7.13–7.14) and impacts during integration with Zeno
 //!   protection ([`simulate_with_impacts`]).
 //!
@@ -20,6 +23,7 @@
 #![warn(missing_docs)]
 
 mod collision;
+pub mod constraints;
 mod eigenaxis;
 mod energy;
 mod error;
@@ -47,6 +51,8 @@ pub use sixd::{newton_euler_6d, twist_cross_matrix};
 
 /// `use vectrix_dynamics::prelude::*;`
 pub mod prelude {
+    pub use crate::constraints::Constraints;
+    pub use crate::constraints::kane::KaneSystem;
     pub use crate::scene::{Scene, SceneError};
     pub use crate::{DynamicsError, Joint, KinematicMap, Lagrangian, Link, MapMasses, Model, RigidBody};
 }

@@ -147,6 +147,24 @@ fn assemble<K: KinematicMap>(sys: &K, q: &[f64], qd: &[f64], t: f64) -> Result<M
     Ok(MapState { m, rhs, t_kin })
 }
 
+/// The equations of motion M(q, t) q̈ = f(q, q̇, t) of a kinematic-map system: M as in
+/// [`map_mass_matrix`], f = Q − ∂U/∂q − Σ m Jᵀr̈₀ − Σ J_ωᵀ(J⃗ω̇₀ + ω⃗×J⃗ω⃗) (the inertial
+/// terms at q̈ = 0 moved to the right).
+///
+/// Book: (9.3.12), (9.4.2), (9.5.2).
+///
+/// # Errors
+/// As [`map_mass_matrix`].
+pub fn map_equations<K: KinematicMap>(
+    sys: &K,
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+) -> Result<(DMatrix<f64>, DVector<f64>), DynamicsError> {
+    let s = assemble(sys, q, qd, t)?;
+    Ok((s.m, s.rhs))
+}
+
 /// M(q, t) = Σ m_i J_iᵀJ_i + Σ (m J_cᵀJ_c + J_ωᵀ J⃗ J_ω) (9.3.12, 9.3.17).
 ///
 /// Book: (9.3.12), (9.3.17).

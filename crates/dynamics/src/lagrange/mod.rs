@@ -21,7 +21,9 @@ pub use ad::{
     LagrangeTerms, accelerations, energy, energy_rate, generalized_momentum, lagrange_terms, mass_matrix,
 };
 pub use hamilton::{hamilton_rhs, hamiltonian, velocities_from_momenta};
-pub use map::{KinematicMap, MapMasses, map_accelerations, map_kinetic_energy, map_mass_matrix};
+pub use map::{
+    KinematicMap, MapMasses, map_accelerations, map_equations, map_kinetic_energy, map_mass_matrix,
+};
 
 use nalgebra::{DMatrix, DVector};
 use vectrix_tensor::Scalar;
@@ -64,10 +66,18 @@ pub const SINGULAR_PIVOT_REL_TOL: f64 = 64.0 * f64::EPSILON;
 /// Solves M x = b by Cholesky; `Err(SingularMassMatrix)` when M is not positive definite or
 /// a pivot L_kk² falls below [`SINGULAR_PIVOT_REL_TOL`]·r·max M_ii.
 pub(crate) fn cholesky_solve(m: DMatrix<f64>, b: DVector<f64>) -> Result<DVector<f64>, DynamicsError> {
-    let r = m.nrows();
     if !m.iter().chain(b.iter()).all(|x| x.is_finite()) {
         return Err(DynamicsError::NonFinite { what: "mass matrix or right-hand side" });
     }
+    Ok(checked_cholesky(m)?.solve(&b))
+}
+
+/// The Cholesky factor of M, `Err(SingularMassMatrix)` when M is not positive definite or a
+/// pivot L_kk² falls below [`SINGULAR_PIVOT_REL_TOL`]·r·max M_ii.
+pub(crate) fn checked_cholesky(
+    m: DMatrix<f64>,
+) -> Result<nalgebra::Cholesky<f64, nalgebra::Dyn>, DynamicsError> {
+    let r = m.nrows();
     let scale = (0..r).map(|i| m[(i, i)].abs()).fold(0.0, f64::max);
     let chol = nalgebra::Cholesky::new(m).ok_or_else(|| DynamicsError::SingularMassMatrix {
         detail: "Cholesky found a non-positive pivot".into(),
@@ -84,5 +94,5 @@ pub(crate) fn cholesky_solve(m: DMatrix<f64>, b: DVector<f64>) -> Result<DVector
             });
         }
     }
-    Ok(chol.solve(&b))
+    Ok(chol)
 }
