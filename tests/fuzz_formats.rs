@@ -411,7 +411,7 @@ fn cli_check_contract(bytes: Vec<u8>) -> Result<(), TestCaseError> {
 }
 
 fn vectrix_cli_run(args: &[std::ffi::OsString], out: &mut Vec<u8>) -> Result<(), String> {
-    vectrix_cli::run_with_args(args.iter().cloned(), out).map_err(|e| e.to_string())
+    vectrix_cli::run_with_args(args.iter().cloned(), out).map(|_| ()).map_err(|e| e.to_string())
 }
 
 fn run(

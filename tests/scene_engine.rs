@@ -277,7 +277,7 @@ fn issue_16_a_step_budget_stops_the_run_with_what_it_computed() {
     let stop = r.stop.as_ref().expect("stopped");
     assert_eq!(stop.reason, StopReason::MaxSteps);
     assert!(stop.message.contains("max_steps = 50") && stop.message.contains("valid:"), "{}", stop.message);
-    assert!(!r.is_complete() && r.t.len() < 101 && r.t.len() >= 1);
+    assert!(!r.is_complete() && r.t.len() < 101 && !r.t.is_empty());
     assert!(r.work.accepted + r.work.rejected <= 50);
 }
 
@@ -424,11 +424,8 @@ fn issue_16_double_pendulum_query_matches_lagrange_by_hand() {
         let r = scene.query(0.0, &[th1, phi, w1, wphi]).unwrap();
         let scale = mphi[0][0];
         for i in 0..2 {
-            for j in 0..2 {
-                assert!(
-                    (r.mass_matrix[(i, j)] - mphi[i][j]).abs() < 16.0 * f64::EPSILON * scale,
-                    "M[{i}{j}]"
-                );
+            for (j, mij) in mphi[i].iter().enumerate() {
+                assert!((r.mass_matrix[(i, j)] - mij).abs() < 16.0 * f64::EPSILON * scale, "M[{i}{j}]");
             }
             let qs = qphi[0].abs() + qphi[1].abs() + scale * (w1 * w1 + w2 * w2);
             assert!((r.generalized_forces[i] - qphi[i]).abs() < 32.0 * f64::EPSILON * qs, "Q[{i}]");

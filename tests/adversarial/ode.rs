@@ -24,6 +24,59 @@ fn fin(s: &[f64]) -> bool {
 }
 
 cases! {
+    // The step-by-step driver: hostile intervals, states, restarts and end times are refused;
+    // one step at a time reaches t_end exactly; the interpolant agrees with e^{−t}; a restart
+    // with the wrong dimension or a NaN state is refused; bracket_zero keeps its bracket even
+    // when g is NaN or a step function.
+    stepper ["Stepper::new", "Stepper::step", "Stepper::dense", "Stepper::restart", "Stepper::set_end",
+        "Stepper::end", "Stepper::done", "Stepper::t", "Stepper::y", "Stepper::step_start", "Stepper::work",
+        "Stepper::proposed_step", "bracket_zero"] {
+        use vectrix::ode::explicit::{Stepper, bracket_zero};
+        let f = |_t: f64, y: &Vec<f64>| vec![-y[0]];
+        for x in hostile() {
+            err_or(Stepper::new(&Adaptive::dop853(), f, 0.0, vec![x], 1.0), "new(hostile y0)", |s| fin(s.y()));
+            err_or(Stepper::new(&Adaptive::dop853(), f, 0.0, vec![1.0], x), "new(hostile t_end)", |s| s.end().is_finite());
+            err_or(Stepper::new(&Adaptive::dopri5().rtol(x), f, 0.0, vec![1.0], 1.0), "new(hostile rtol)", |s| fin(s.y()));
+        }
+        let mut st = Stepper::new(&Adaptive::dop853().rtol(1e-10).atol(1e-12), f, 0.0, vec![1.0], 1.0).unwrap();
+        assert!(st.step_start().is_none());
+        refused(st.dense().map(|d| d.h), "dense before a step");
+        let mut n = 0;
+        while !st.done() {
+            st.step().unwrap();
+            n += 1;
+            assert!(n < 10_000 && st.proposed_step() > 0.0);
+            let (a, b) = (st.step_start().unwrap(), st.t());
+            let m = 0.5 * (a + b);
+            assert!((st.dense().unwrap().eval(m)[0] - (-m).exp()).abs() < 1e-9);
+        }
+        assert_eq!(st.t(), 1.0);
+        assert!((st.y()[0] - (-1.0f64).exp()).abs() < 1e-10 && st.work().accepted == n);
+        st.step().unwrap(); // done: nothing happens
+        assert_eq!(st.t(), 1.0);
+        for x in hostile() {
+            err_or(st.set_end(x).map(|()| st.end()), "set_end(hostile)", |e| e.is_finite() && *e > 1.0);
+            err_or(st.restart(1.0, vec![x]).map(|()| st.y()[0]), "restart(hostile)", |y| y.is_finite());
+        }
+        refused(st.restart(1.0, vec![1.0, 2.0]), "restart with another dimension");
+        refused(st.set_end(0.5), "set_end before t");
+        // a right-hand side that changes length mid-run is refused, not truncated
+        let mut calls = 0;
+        let g = move |_t: f64, y: &Vec<f64>| {
+            calls += 1;
+            if calls > 5 { vec![0.0; 3] } else { vec![-y[0]] }
+        };
+        let mut bad = Stepper::new(&Adaptive::dopri5(), g, 0.0, vec![1.0], 1.0).unwrap();
+        assert!(matches!(bad.step(), Err(OdeError::DimensionMismatch { .. })));
+        // bracket_zero: a root of x² − 2 on [0, 2], a NaN function, a jump
+        let (a, b) = bracket_zero(|x| x * x - 2.0, (0.0, -2.0), (2.0, 2.0));
+        assert!(a <= 2f64.sqrt() && b >= 2f64.sqrt() && b - a <= 8.0 * f64::EPSILON);
+        let (a, b) = bracket_zero(|_| f64::NAN, (0.0, -1.0), (1.0, 1.0));
+        assert!(a.is_finite() && b.is_finite() && a <= b);
+        let (a, b) = bracket_zero(|x| if x < 0.3 { -1.0 } else { 1.0 }, (0.0, -1.0), (1.0, 1.0));
+        assert!(a < 0.3 && b >= 0.3 && b - a < 1e-12);
+    }
+
     // Adaptive pairs (HNW II.4–II.6): y′ = −y from y0 gives y0 e^{−t}; every hostile
     // interval, state, tolerance and step setting is refused or solved finitely; a right-hand
     // side of the wrong length is a DimensionMismatch, not a silent truncation.

@@ -183,7 +183,30 @@ impl Scene {
                 ));
             }
         }
-        Ok(Self { spec, built, order, ground: Ground::new(), needs, solver, outputs, invariants })
+        let scene = Self { spec, built, order, ground: Ground::new(), needs, solver, outputs, invariants };
+        scene.check_start(src)?;
+        Ok(scene)
+    }
+
+    /// The dynamics must be defined at t = 0: `check` reports a mechanism that cannot start
+    /// (a singular joint inertia, coincident points, an overflowing load) where the scene is
+    /// declared, instead of the run failing at its first step.
+    fn check_start(&self, src: &SceneSource) -> Result<(), SceneError> {
+        let y0 = self.initial_state();
+        let started = self.deriv(0.0, &y0).and_then(|d| match d.iter().position(|x| !x.is_finite()) {
+            None => Ok(()),
+            Some(k) => Err(format!("the right-hand side is not finite at t = 0 (component {k}: {})", d[k])),
+        });
+        started.map_err(|m| {
+            src.invalid(
+                "bodies",
+                format!(
+                    "the dynamics cannot start: {m}; valid: bodies with inertia about every free direction of their \
+                     joints (a particle needs a joint that leaves it no free rotation about itself), and finite \
+                     loads and velocities"
+                ),
+            )
+        })
     }
 
     /// The scene as declared.

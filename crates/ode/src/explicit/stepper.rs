@@ -253,7 +253,11 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
         check_interval(t, self.t_end).or_else(|e| if t == self.t_end { Ok(()) } else { Err(e) })?;
         check_state(t, &y)?;
         if y.dim() != self.y.dim() {
-            return Err(OdeError::DimensionMismatch { what: "restarted state", got: y.dim(), expected: self.y.dim() });
+            return Err(OdeError::DimensionMismatch {
+                what: "restarted state",
+                got: y.dim(),
+                expected: self.y.dim(),
+            });
         }
         self.f_now = eval(&mut self.f, t, &y, t, 1, &mut self.work.fevals)?;
         self.t = t;
