@@ -7,7 +7,7 @@ use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
 
 use super::SceneError;
 use super::source::{SceneSource, check_name};
-use super::spec::{Attach, EffectSpec, JointSpec, MassSpec, Profile, SceneSpec};
+use super::spec::{Attach, EffectSpec, JointSpec, LoopSpec, MassSpec, Profile, SceneSpec};
 use crate::multibody::{Joint, Link, Model};
 
 /// A body after validation: indices, offsets and mass properties in link components.
@@ -264,6 +264,7 @@ pub(crate) struct Built {
     pub model: Model,
     pub bodies: Vec<Body>,
     pub effects: Vec<Effect>,
+    pub loops: Vec<super::loops::Loop>,
     pub q0: Vec<f64>,
     pub v0: Vec<f64>,
 }
@@ -428,7 +429,22 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             model.gravity += g;
         }
     }
-    Ok(Built { model, bodies, effects, q0, v0 })
+    let loops = spec
+        .loops
+        .iter()
+        .enumerate()
+        .map(|(i, l)| loop_joint(l, &format!("loops[{i}]"), &index, &model, &q0, src))
+        .collect::<Result<Vec<_>, _>>()?;
+    for (i, l) in spec.loops.iter().enumerate() {
+        check_name(l.name(), "loop name", false).map_err(|m| src.invalid(format!("loops[{i}].name"), m))?;
+        if spec.loops[..i].iter().any(|x| x.name() == l.name()) || names.contains(&l.name()) {
+            return Err(src.invalid(
+                format!("loops[{i}].name"),
+                format!("loop name `{}` is repeated or names a body; valid: a new name", l.name()),
+            ));
+        }
+    }
+    Ok(Built { model, bodies, effects, loops, q0, v0 })
 }
 
 fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> {
@@ -450,6 +466,56 @@ fn unit(x: [f64; 3], what: &str, path: &str, src: &Src) -> Result<Vector3<f64>, 
 }
 
 type Index<'a> = dyn Fn(&str, &str) -> Result<Option<usize>, SceneError> + 'a;
+
+/// A loop-closing joint with names resolved and its geometry in the bodies' link frames.
+fn loop_joint(
+    l: &LoopSpec,
+    path: &str,
+    index: &Index,
+    model: &Model,
+    q0: &[f64],
+    src: &Src,
+) -> Result<super::loops::Loop, SceneError> {
+    use super::loops::{Loop, LoopKind, normals};
+    let (name, a, b) = match l {
+        LoopSpec::Ball { name, a, b }
+        | LoopSpec::Pin { name, a, b, .. }
+        | LoopSpec::PointOnLine { name, a, b, .. }
+        | LoopSpec::PointOnPlane { name, a, b, .. } => (name, a, b),
+    };
+    let at = |x: &Attach, k: &str| -> Result<At, SceneError> {
+        Ok((index(&x.body, &format!("{path}.{k}.body"))?, v3(x.point)))
+    };
+    let (a, b) = (at(a, "a")?, at(b, "b")?);
+    if a.0.is_none() && b.0.is_none() {
+        return Err(
+            src.invalid(format!("{path}.a.body"), "both ends are the ground; valid: at least one body")
+        );
+    }
+    if a.0 == b.0 {
+        return Err(
+            src.invalid(format!("{path}.b.body"), "both ends are the same body; valid: two different bodies")
+        );
+    }
+    let kind = match l {
+        LoopSpec::Ball { .. } => LoopKind::Ball,
+        LoopSpec::Pin { axis, .. } => {
+            let ax = unit(*axis, "axis", path, src)?;
+            let (e1_a, e2_a) = normals(&ax);
+            // the axis in b's link frame at q₀: 𝓞_{B/G} 𝓞_{A/G}ᵀ axis
+            let poses = model.poses(q0).map_err(|e| src.invalid(path, e.to_string()))?;
+            let o = |x: Option<usize>| x.map_or_else(Matrix3::identity, |i| poses[i].0);
+            let axis_b = o(b.0) * o(a.0).transpose() * ax;
+            LoopKind::Pin { e1_a, e2_a, axis_b }
+        }
+        LoopSpec::PointOnLine { direction, .. } => {
+            let (n1_b, n2_b) = normals(&unit(*direction, "direction", path, src)?);
+            LoopKind::Line { n1_b, n2_b }
+        }
+        LoopSpec::PointOnPlane { normal, .. } => LoopKind::Plane { n_b: unit(*normal, "normal", path, src)? },
+    };
+    Ok(Loop { name: name.clone(), kind, a, b })
+}
 type BodyOf<'a> = dyn Fn(&str, &str) -> Result<usize, SceneError> + 'a;
 
 fn effect(

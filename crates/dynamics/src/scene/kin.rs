@@ -72,6 +72,43 @@ pub(crate) fn twists_into(
     }
 }
 
+/// Link bias accelerations at (q, v): the angular acceleration α and the acceleration of the
+/// link origin of every link when every joint acceleration vanishes (v̇ = 0), ground
+/// components. With them, d/dt of any velocity that is linear in v (a point velocity, a loop
+/// closure, an inerter's length rate) splits exactly into its v̇ part and this bias: no finite
+/// differences. Recursively, parent p → link i with ρ = r_i − r_p and the joint's relative
+/// rates ω_rel = ω_i − ω_p, v_rel = v_i − v_p − ω_p × ρ:
+///   α_i = α_p + ω_f × ω_rel (ω_f = ω_i for a ball or free joint, whose rates are in the link
+///   frame; ω_p for the others, whose axes are fixed in the parent),
+///   a_i = a_p + α_p × ρ + ω_p × (ω_p × ρ) + 2 ω_p × v_rel.
+///
+/// Book: §5.x (transport theorem), (4.5.x) angular velocity along a chain, (5.x.x) double
+/// transport a = a₀ + α × r + ω × (ω × r).
+pub(crate) fn bias_accelerations(
+    bodies: &[Body],
+    order: &[usize],
+    kin: &Kin,
+) -> (Vec<Vector3<f64>>, Vec<Vector3<f64>>) {
+    let n = bodies.len();
+    let (mut alpha, mut acc) = (vec![Vector3::zeros(); n], vec![Vector3::zeros(); n]);
+    for &i in order {
+        let b = &bodies[i];
+        let (w_p, v_p, r_p, al_p, a_p) = match b.parent {
+            Some(p) => (kin.omega[p], kin.vel[p], kin.poses[p].1, alpha[p], acc[p]),
+            None => {
+                (Vector3::zeros(), Vector3::zeros(), Vector3::zeros(), Vector3::zeros(), Vector3::zeros())
+            }
+        };
+        let rho = kin.poses[i].1 - r_p;
+        let w_rel = kin.omega[i] - w_p;
+        let v_rel = kin.vel[i] - v_p - w_p.cross(&rho);
+        let w_f = if matches!(b.joint, JointSpec::Ball {} | JointSpec::Free {}) { kin.omega[i] } else { w_p };
+        alpha[i] = al_p + w_f.cross(&w_rel);
+        acc[i] = a_p + al_p.cross(&rho) + w_p.cross(&w_p.cross(&rho)) + w_p.cross(&v_rel) * 2.0;
+    }
+    (alpha, acc)
+}
+
 /// Poses and twists at (q, v).
 pub(crate) fn kinematics(
     model: &Model,
@@ -103,6 +140,18 @@ pub(crate) fn kinematics_into(
 }
 
 impl Kin {
+    /// The bias acceleration (v̇ = 0) of a point fixed in a body (or in the ground), given the
+    /// links' bias accelerations: a = a_o + α × d + ω × (ω × d).
+    pub fn point_bias(&self, at: &At, alpha: &[Vector3<f64>], acc: &[Vector3<f64>]) -> Vector3<f64> {
+        match at.0 {
+            None => Vector3::zeros(),
+            Some(i) => {
+                let d = self.poses[i].0.transpose() * at.1;
+                acc[i] + alpha[i].cross(&d) + self.omega[i].cross(&self.omega[i].cross(&d))
+            }
+        }
+    }
+
     /// An empty buffer for [`kinematics_into`].
     pub fn empty() -> Self {
         Self { poses: Vec::new(), omega: Vec::new(), vel: Vec::new() }

@@ -16,6 +16,7 @@ mod forces;
 mod impacts;
 mod invariants;
 mod kin;
+mod loops;
 mod outputs;
 mod quantities;
 mod query;
@@ -59,6 +60,14 @@ pub(crate) struct Needs {
     pub inerters: bool,
     pub rolling: bool,
     pub impacts: bool,
+    pub loops: bool,
+}
+
+impl Needs {
+    /// Whether accelerations need the multiplier system (inerters, rolling, loops).
+    pub fn constrained(&self) -> bool {
+        self.inerters || self.rolling || self.loops
+    }
 }
 
 /// A rolling body must start touching its plane: |(c − p)·n − r| small (for a disk, the
@@ -174,6 +183,7 @@ impl Scene {
                 needs.loads = true;
             }
         }
+        needs.loops = !built.loops.is_empty();
         check_rolling_start(&built, src)?;
         for (k, c) in spec.checks.iter().enumerate() {
             if !["energy", "momentum", "angular_momentum"].contains(&c.as_str()) {

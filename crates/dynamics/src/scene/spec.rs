@@ -42,6 +42,15 @@ pub struct SceneSpec {
     /// The effects acting: only these are assembled.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub effects: Vec<EffectSpec>,
+    /// Joints that close kinematic loops (a four-bar's coupler–rocker pin): constraints between
+    /// two points of the tree, solved with Lagrange multipliers (§9.11), their drift projected
+    /// away after every step.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub loops: Vec<LoopSpec>,
+    /// Project the initial state onto the loop constraints (assemble the mechanism) instead of
+    /// refusing a start that violates them.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub assemble: bool,
     /// Quantities written to trajectory.csv and plotted.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub outputs: Vec<String>,
@@ -432,6 +441,77 @@ pub enum EffectSpec {
         /// Plane normal (toward the body).
         normal: [f64; 3],
     },
+}
+
+/// A loop-closing joint between a point of body `a` and a point of body `b` (or the ground).
+///
+/// Book: §9.11 (holonomic constraints), §6.10 (reactions of joints), §1.5 (joints).
+///
+/// # Conventions
+/// Points are link components of their body (ground components for `ground`); `axis` is in
+/// `a`'s link frame, `direction` and `normal` in `b`'s. The reaction reported as
+/// `reaction:NAME` is the force (and moment) the loop joint exerts on body `a`, ground
+/// components.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum LoopSpec {
+    /// The two points coincide (a spherical joint): 3 constraints.
+    Ball {
+        /// Name (outputs `reaction:NAME`).
+        name: String,
+        /// Point of the first body.
+        a: Attach,
+        /// Point of the second body.
+        b: Attach,
+    },
+    /// The two points coincide and the bodies turn relative to each other only about `axis`
+    /// (a revolute joint): 3 + 2 constraints (in a planar mechanism some are redundant, and
+    /// are dropped: their reactions are indeterminate and reported as 0).
+    Pin {
+        /// Name.
+        name: String,
+        /// Point of the first body.
+        a: Attach,
+        /// Point of the second body.
+        b: Attach,
+        /// The pin axis, `a`'s link components.
+        axis: [f64; 3],
+    },
+    /// Point `a` stays on the line through point `b` along `direction` (a slider): 2
+    /// constraints.
+    PointOnLine {
+        /// Name.
+        name: String,
+        /// The sliding point.
+        a: Attach,
+        /// A point of the line.
+        b: Attach,
+        /// The line's direction, `b`'s link components.
+        direction: [f64; 3],
+    },
+    /// Point `a` stays on the plane through point `b` with `normal`: 1 constraint.
+    PointOnPlane {
+        /// Name.
+        name: String,
+        /// The point.
+        a: Attach,
+        /// A point of the plane.
+        b: Attach,
+        /// The plane's normal, `b`'s link components.
+        normal: [f64; 3],
+    },
+}
+
+impl LoopSpec {
+    /// The loop's name.
+    pub fn name(&self) -> &str {
+        match self {
+            Self::Ball { name, .. }
+            | Self::Pin { name, .. }
+            | Self::PointOnLine { name, .. }
+            | Self::PointOnPlane { name, .. } => name,
+        }
+    }
 }
 
 /// A magnetic dipole m (link components) at the body's centre of mass.
