@@ -1,73 +1,142 @@
-//! The joint-space mass matrix by the composite-rigid-body algorithm, and forward dynamics
-//! by CRBA + Cholesky (the cross-check of the articulated-body algorithm).
+//! The joint-space mass matrix by the composite-rigid-body algorithm (in ground coordinates,
+//! where composite inertias add without transforms), and forward dynamics by CRBA + Cholesky
+//! (the cross-check of the articulated-body algorithm).
+#![allow(non_snake_case)]
 
-use nalgebra::{DMatrix, DVector, Matrix6, Vector6};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Matrix6x3, Vector3};
+use vectrix_tensor::Scalar;
 
 use super::model::{Elem, Model};
 use super::rnea::LinkWrenches;
-use super::spatial::{Xform, join};
+use super::spatial::{BodyInertia, Xform, join};
 use crate::DynamicsError;
 
-/// The columns of S for one elementary joint (6-vectors in (ω, v) ordering).
-fn subspace(elem: &Elem) -> Vec<Vector6<f64>> {
-    let z = nalgebra::Vector3::zeros();
-    match elem {
-        Elem::Revolute(a) => vec![join(a, &z)],
-        Elem::Prismatic(a) => vec![join(&z, a)],
-        Elem::Spherical => (0..3).map(|k| Vector6::ith(k, 1.0)).collect(),
-        Elem::Fixed => vec![],
-    }
+/// A Cholesky pivot below this multiple of n ε × max Mᵢᵢ counts as singular (the rounding
+/// level of a mass matrix assembled by O(n) sums of products).
+pub(crate) const MASS_PIVOT_REL_TOL: f64 = 64.0 * f64::EPSILON;
+
+/// Work space of [`Model::crba_into`].
+#[derive(Debug, Clone)]
+pub struct CrbaScratch<T: Scalar = f64> {
+    world: Vec<Xform<T>>,
+    S: Vec<Matrix6x3<T>>,
+    Ic: Vec<BodyInertia<T>>,
 }
 
-impl Model {
+/// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
+/// segment whose ground-to-segment transform is `x` (E = 𝓞_{i/G}, origin p): a pin about the
+/// link axis a has S = (u, p × u) with u = Eᵀa; a slider (0, Eᵀa); a ball the three columns
+/// (uₖ, p × uₖ), uₖ = Eᵀeₖ.
+#[inline(always)]
+pub(crate) fn world_subspace<T: Scalar>(elem: &Elem<T>, x: &Xform<T>) -> Matrix6x3<T> {
+    let mut s = Matrix6x3::zeros();
+    match elem {
+        Elem::Revolute(a) => {
+            let u = x.E.tr_mul(a);
+            s.set_column(0, &join(&u, &x.r.cross(&u)));
+        }
+        Elem::Prismatic(a) => s.set_column(0, &join(&Vector3::zeros(), &x.E.tr_mul(a))),
+        Elem::Spherical => {
+            for k in 0..3 {
+                let u: Vector3<T> = x.E.row(k).transpose();
+                s.set_column(k, &join(&u, &x.r.cross(&u)));
+            }
+        }
+        Elem::Fixed => {}
+    }
+    s
+}
+
+impl<T: Scalar> Model<T> {
+    /// A work space for [`Model::crba_into`].
+    pub fn crba_scratch(&self) -> CrbaScratch<T> {
+        let n = self.segs.len();
+        CrbaScratch {
+            world: vec![Xform::identity(); n],
+            S: vec![Matrix6x3::zeros(); n],
+            Ic: vec![BodyInertia::zero(); n],
+        }
+    }
+
     /// The joint-space mass matrix H(q) (symmetric, nv × nv) by the composite-rigid-body
-    /// algorithm: composite inertias accumulated tip to base, H_ij = S_iᵀ Iᶜ_i X S_j.
+    /// algorithm: composite inertias Iᶜᵢ accumulated tip to base, Hᵢⱼ = Sᵢᵀ Iᶜⱼ Sⱼ for every
+    /// ancestor i of j (all in ground coordinates), zero between branches.
     ///
     /// Book: §7.11 (the mass matrix of the chain), §9.3 (M(q) of (9.3.11)); RBDA Table 6.2.
     ///
+    /// # Degenerate inputs
+    /// A model with an inert joint direction (see [`Model::aba`]: a particle on a ball joint,
+    /// a massless link between coaxial pins) has a singular H; it is returned as computed
+    /// (positive semidefinite), and solving with it is the caller's decision.
+    ///
     /// # Errors
-    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`].
-    pub fn crba(&self, q: &[f64]) -> Result<DMatrix<f64>, DynamicsError> {
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
+    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
+    pub fn crba(&self, q: &[T]) -> Result<DMatrix<T>, DynamicsError> {
         self.check_q(q)?;
         Ok(self.crba_unchecked(q))
     }
 
     /// [`Model::crba`] without input checks.
-    pub fn crba_unchecked(&self, q: &[f64]) -> DMatrix<f64> {
-        let n = self.segs.len();
-        let x: Vec<Xform> = self.segs.iter().map(|s| s.placement.then(&s.elem.xform(&q[s.qi..]))).collect();
-        let subspaces: Vec<Vec<Vector6<f64>>> = self.segs.iter().map(|s| subspace(&s.elem)).collect();
-        // composite inertias, tip to base: Iᶜ_p += Xᵀ Iᶜ_i X
-        let mut ic: Vec<Matrix6<f64>> = self.segs.iter().map(|s| s.inertia.matrix()).collect();
-        for i in (0..n).rev() {
-            if let Some(p) = self.segs[i].parent {
-                let add = x[i].inertia_to_parent(&ic[i]);
-                ic[p] += add;
-            }
-        }
+    pub fn crba_unchecked(&self, q: &[T]) -> DMatrix<T> {
         let mut h = DMatrix::zeros(self.nv, self.nv);
-        for i in 0..n {
-            for (ki, s) in subspaces[i].iter().enumerate() {
-                let row = self.segs[i].vi + ki;
-                // F = Iᶜ_i S_i, carried towards the base: H_ij = S_jᵀ F
-                let mut f = ic[i] * s;
-                for (kj, sj) in subspaces[i].iter().enumerate() {
-                    h[(row, self.segs[i].vi + kj)] = sj.dot(&f);
+        let mut s = self.crba_scratch();
+        self.crba_into(q, &mut h, &mut s);
+        h
+    }
+
+    /// [`Model::crba`] without input checks, into a caller-provided nv × nv matrix with
+    /// caller-provided scratch (no allocation): the hot path.
+    ///
+    /// # Panics
+    /// If `h` is not nv × nv (a programming error, not user input).
+    pub fn crba_into(&self, q: &[T], h: &mut DMatrix<T>, s: &mut CrbaScratch<T>) {
+        assert_eq!(h.shape(), (self.nv, self.nv), "crba_into: h must be nv × nv");
+        // outward: ground placement of every segment, its S in ground coordinates, and its
+        // own inertia about the ground origin
+        for (i, seg) in self.segs.iter().enumerate() {
+            let x = self.seg_xform(i, q);
+            let w = match seg.parent {
+                Some(p) => s.world[p].then(&x),
+                None => x,
+            };
+            s.S[i] = world_subspace(&seg.elem, &w);
+            s.Ic[i] = if seg.massless { BodyInertia::zero() } else { seg.inertia.to_world(&w.E, &w.r) };
+            s.world[i] = w;
+        }
+        h.fill(T::zero());
+        // inward: Iᶜ_i is complete when i is reached (descendants come later in the order);
+        // F = Iᶜ_i S_i, then Hⱼᵢ = SⱼᵀF for i and each ancestor j, and Iᶜ_p += Iᶜ_i (same
+        // coordinates: a plain sum)
+        for i in (0..self.segs.len()).rev() {
+            let seg = &self.segs[i];
+            let ni = seg.elem.nv();
+            let mut F = Matrix6x3::zeros();
+            for k in 0..ni {
+                F.set_column(k, &s.Ic[i].apply6(&s.S[i].column(k).into_owned()));
+            }
+            for a in 0..ni {
+                for b in 0..ni {
+                    h[(seg.vi + a, seg.vi + b)] = s.S[i].column(a).dot(&F.column(b));
                 }
-                let mut j = i;
-                while let Some(p) = self.segs[j].parent {
-                    f = x[j].force6_to_parent(&f);
-                    j = p;
-                    for (kj, sj) in subspaces[j].iter().enumerate() {
-                        let col = self.segs[j].vi + kj;
-                        let hij = sj.dot(&f);
-                        h[(row, col)] = hij;
-                        h[(col, row)] = hij;
+            }
+            let mut j = i;
+            while let Some(p) = self.segs[j].parent {
+                j = p;
+                let sj = &self.segs[j];
+                for a in 0..sj.elem.nv() {
+                    for b in 0..ni {
+                        let hab = s.S[j].column(a).dot(&F.column(b));
+                        h[(sj.vi + a, seg.vi + b)] = hab;
+                        h[(seg.vi + b, sj.vi + a)] = hab;
                     }
                 }
             }
+            if let Some(p) = seg.parent {
+                let ic = s.Ic[i];
+                s.Ic[p].add(&ic);
+            }
         }
-        h
     }
 
     /// Forward dynamics by H(q) v̇ = τ − C(q, v), C from [`Model::rnea`] with v̇ = 0, solved
@@ -76,19 +145,48 @@ impl Model {
     /// Book: §7.11, §9.6 (M q̈ = Q − …).
     ///
     /// # Errors
-    /// As [`Model::rnea`]; [`DynamicsError::SingularMassMatrix`] when H is not positive definite.
+    /// As [`Model::rnea`]; [`DynamicsError::SingularMassMatrix`] when H is not positive
+    /// definite (a Cholesky pivot ≤ 64 n ε max Hᵢᵢ), e.g. a model with an inert joint
+    /// direction, which [`Model::aba`] solves exactly.
     pub fn forward_dynamics_crba(
         &self,
-        q: &[f64],
-        v: &[f64],
-        tau: &[f64],
-        f_ext: Option<&LinkWrenches>,
-    ) -> Result<Vec<f64>, DynamicsError> {
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<Vec<T>, DynamicsError> {
         self.check_v(tau, "τ")?;
-        let zero = vec![0.0; self.nv];
+        let zero = vec![T::zero(); self.nv];
         let bias = self.rnea(q, v, &zero, f_ext)?.tau;
         let h = self.crba_unchecked(q);
-        let rhs = DVector::from_iterator(self.nv, tau.iter().zip(&bias).map(|(t, c)| t - c));
-        crate::lagrange::cholesky_solve(h, rhs).map(|x| x.as_slice().to_vec())
+        let rhs = DVector::from_iterator(self.nv, tau.iter().zip(&bias).map(|(&t, &c)| t - c));
+        let x = mass_cholesky(h)?.solve(&rhs);
+        if !crate::error::all_finite(x.as_slice()) {
+            return Err(DynamicsError::Overflow { what: "forward dynamics v̇" });
+        }
+        Ok(x.as_slice().to_vec())
     }
+}
+
+/// Cholesky factor of a mass matrix, refusing pivots at the rounding level.
+///
+/// # Errors
+/// [`DynamicsError::SingularMassMatrix`] with the pivot and the bound.
+pub(crate) fn mass_cholesky<T: Scalar>(m: DMatrix<T>) -> Result<Cholesky<T, Dyn>, DynamicsError> {
+    let r = m.nrows();
+    let scale = (0..r).map(|i| m[(i, i)].re().abs()).fold(0.0, f64::max);
+    let chol = Cholesky::new(m).ok_or_else(|| DynamicsError::SingularMassMatrix {
+        detail: "Cholesky found a non-positive pivot".into(),
+    })?;
+    let l = chol.l_dirty();
+    let bound = MASS_PIVOT_REL_TOL * r as f64 * scale;
+    for k in 0..r {
+        let pivot = (l[(k, k)] * l[(k, k)]).re();
+        if !(pivot > bound) {
+            return Err(DynamicsError::SingularMassMatrix {
+                detail: format!("pivot {k} is {pivot:e}, at or below {bound:e} = 64 n ε max Mᵢᵢ"),
+            });
+        }
+    }
+    Ok(chol)
 }

@@ -1,10 +1,12 @@
 //! Kinematic trees of rigid bodies connected by the book's joints (book §1.5, Table 1.3,
-//! §7.11), in reduced coordinates.
+//! §7.11), in reduced coordinates, generic over the scalar (f64 by default; dual numbers give
+//! exact derivatives of everything computed from a model).
 #![allow(non_snake_case)]
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use vectrix_frames::Frame;
 use vectrix_statics::{INERTIA_REL_TOL, check_inertia};
+use vectrix_tensor::Scalar;
 
 use super::spatial::{BodyInertia, Xform};
 use crate::DynamicsError;
@@ -105,18 +107,29 @@ impl Link {
 }
 
 /// A link pose: 𝓞_{link/ground} and r_{link origin/ground origin} resolved in the ground frame.
-pub type Pose = (Matrix3<f64>, Vector3<f64>);
+pub type Pose<T = f64> = (Matrix3<T>, Vector3<T>);
 
 /// Elementary joints the book's joints are made of.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Elem {
-    Revolute(Vector3<f64>),
-    Prismatic(Vector3<f64>),
+pub(crate) enum Elem<T: Scalar> {
+    Revolute(Vector3<T>),
+    Prismatic(Vector3<T>),
     Spherical,
     Fixed,
 }
 
-impl Elem {
+impl Elem<f64> {
+    fn cast<U: Scalar>(&self) -> Elem<U> {
+        match self {
+            Elem::Revolute(a) => Elem::Revolute(a.map(U::lit)),
+            Elem::Prismatic(a) => Elem::Prismatic(a.map(U::lit)),
+            Elem::Spherical => Elem::Spherical,
+            Elem::Fixed => Elem::Fixed,
+        }
+    }
+}
+
+impl<T: Scalar> Elem<T> {
     pub fn nq(&self) -> usize {
         match self {
             Elem::Revolute(_) | Elem::Prismatic(_) => 1,
@@ -134,13 +147,13 @@ impl Elem {
 
     /// The joint transform for the coordinates `q` (length nq).
     #[inline(always)]
-    pub fn xform(&self, q: &[f64]) -> Xform {
+    pub fn xform(&self, q: &[T]) -> Xform<T> {
         match self {
-            // passive rotation about a by θ: E = 𝓡(a, θ)ᵀ
             Elem::Revolute(a) => {
-                // E = 𝓡(a, θ)ᵀ = c I − s a^× + (1 − c) a aᵀ (Rodrigues, transposed)
+                // passive rotation about a by θ: E = 𝓡(a, θ)ᵀ = c 1 − s a^× + (1 − c) a aᵀ
+                // (Rodrigues (2.11.1), transposed)
                 let (s, c) = q[0].sin_cos();
-                let k = 1.0 - c;
+                let k = T::one() - c;
                 let (x, y, z) = (a.x, a.y, a.z);
                 let e = Matrix3::new(
                     c + k * x * x,
@@ -157,6 +170,7 @@ impl Elem {
             }
             Elem::Prismatic(a) => Xform { E: Matrix3::identity(), r: a * q[0] },
             Elem::Spherical => {
+                // 𝓞_{C/P} = 𝓡(q)ᵀ of the normalized quaternion (η, ε), scalar first
                 let uq = UnitQuaternion::new_normalize(Quaternion::new(q[0], q[1], q[2], q[3]));
                 Xform { E: uq.to_rotation_matrix().matrix().transpose(), r: Vector3::zeros() }
             }
@@ -167,28 +181,34 @@ impl Elem {
 
 /// One elementary segment (a link, or a massless intermediate of a compound joint).
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Segment {
+pub(crate) struct Segment<T: Scalar> {
     pub parent: Option<usize>,
-    pub placement: Xform,
-    pub elem: Elem,
+    pub placement: Xform<T>,
+    pub elem: Elem<T>,
     pub qi: usize,
     pub vi: usize,
-    pub inertia: BodyInertia,
+    pub inertia: BodyInertia<T>,
+    /// Zero mass and zero inertia (intermediate segments of compound joints, massless links).
+    pub massless: bool,
 }
 
-/// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA.
+/// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA, generic
+/// over the scalar: `Model` is `Model<f64>`; [`Model::cast`] gives the same tree over dual
+/// numbers (`Model<Dual64>`, `Model<HyperDual64>`, `Model<DualSVec64<N>>`), whose
+/// algorithms then return exact derivatives of their results with respect to whatever the
+/// caller seeded (states, or the model's own numbers).
 ///
-/// Book: §7.11.
+/// Book: §7.11; DESIGN §1.4 (generic scalar).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Model {
-    pub(crate) segs: Vec<Segment>,
+pub struct Model<T: Scalar = f64> {
+    pub(crate) segs: Vec<Segment<T>>,
     /// For each user link, the index of its (last) segment.
     pub(crate) link_seg: Vec<usize>,
     pub(crate) nq: usize,
     pub(crate) nv: usize,
     /// Gravitational acceleration g resolved in the ground frame.
-    pub gravity: Vector3<f64>,
-    pub(crate) q_neutral: Vec<f64>,
+    pub gravity: Vector3<T>,
+    pub(crate) q_neutral: Vec<T>,
 }
 
 fn unit_axis(a: &Vector3<f64>, link: usize, what: &'static str) -> Result<Vector3<f64>, DynamicsError> {
@@ -200,7 +220,7 @@ fn unit_axis(a: &Vector3<f64>, link: usize, what: &'static str) -> Result<Vector
     Ok(a / n)
 }
 
-fn elems(joint: &Joint, link: usize) -> Result<Vec<Elem>, DynamicsError> {
+fn elems(joint: &Joint, link: usize) -> Result<Vec<Elem<f64>>, DynamicsError> {
     Ok(match joint {
         Joint::Pin { axis } => vec![Elem::Revolute(unit_axis(axis, link, "pin axis")?)],
         Joint::Sleeve { axis } => vec![Elem::Prismatic(unit_axis(axis, link, "sleeve axis")?)],
@@ -261,7 +281,7 @@ fn topological_order(links: &[Link]) -> Result<Vec<usize>, DynamicsError> {
     Ok(order)
 }
 
-impl Model {
+impl Model<f64> {
     /// Validates the links and builds the tree. Gravity defaults to zero; set
     /// [`Model::gravity`] (components in the ground frame).
     ///
@@ -302,7 +322,7 @@ impl Model {
             nv += e.iter().map(Elem::nv).sum::<usize>();
             expanded.push(e);
         }
-        let mut segs: Vec<Segment> = Vec::new();
+        let mut segs: Vec<Segment<f64>> = Vec::new();
         let mut link_seg = vec![0usize; links.len()];
         let mut q_neutral = vec![0.0; nq];
         for &i in &order {
@@ -316,12 +336,13 @@ impl Model {
                 let inertia = if last {
                     BodyInertia::from_centre(l.mass, &l.com, &l.inertia)
                 } else {
-                    BodyInertia { m: 0.0, h: Vector3::zeros(), I: Matrix3::zeros() }
+                    BodyInertia::zero()
                 };
                 if *elem == Elem::Spherical {
                     q_neutral[qi] = 1.0;
                 }
-                segs.push(Segment { parent, placement, elem: *elem, qi, vi, inertia });
+                let massless = inertia == BodyInertia::zero();
+                segs.push(Segment { parent, placement, elem: *elem, qi, vi, inertia, massless });
                 parent = Some(segs.len() - 1);
                 placement = Xform::identity();
                 qi += elem.nq();
@@ -359,6 +380,38 @@ impl Model {
         Self::new(&links)
     }
 
+    /// The same tree over another scalar: every number (axes, placements, masses, inertias,
+    /// gravity) converted exactly from f64 (a dual number's derivative parts are zero).
+    /// `model.cast::<Dual64>()` is how dual numbers enter the tree algorithms; seed the
+    /// state (or the model's public `gravity`) to differentiate.
+    ///
+    /// Book: DESIGN §1.4; §7.11.
+    #[doc(alias = "to_dual")]
+    pub fn cast<U: Scalar>(&self) -> Model<U> {
+        Model {
+            segs: self
+                .segs
+                .iter()
+                .map(|s| Segment {
+                    parent: s.parent,
+                    placement: s.placement.cast(),
+                    elem: s.elem.cast(),
+                    qi: s.qi,
+                    vi: s.vi,
+                    inertia: s.inertia.cast(),
+                    massless: s.massless,
+                })
+                .collect(),
+            link_seg: self.link_seg.clone(),
+            nq: self.nq,
+            nv: self.nv,
+            gravity: self.gravity.map(U::lit),
+            q_neutral: self.q_neutral.iter().map(|&x| U::lit(x)).collect(),
+        }
+    }
+}
+
+impl<T: Scalar> Model<T> {
     /// Number of configuration coordinates (quaternions count 4).
     pub fn nq(&self) -> usize {
         self.nq
@@ -375,20 +428,30 @@ impl Model {
     }
 
     /// The neutral configuration: zero for every coordinate, identity quaternions.
-    pub fn neutral(&self) -> Vec<f64> {
+    pub fn neutral(&self) -> Vec<T> {
         self.q_neutral.clone()
     }
 
     /// q ⊕ v dt: adds v dt to every coordinate, and for ball joints composes the quaternion
-    /// with exp(ω dt / 2) (ω in the link frame), keeping it unit.
+    /// with exp(ω dt / 2) on the right (ω in the link frame), keeping it unit. This is the
+    /// retraction the tangent-space derivatives use: ∂/∂q along direction k means
+    /// d/dε f(q ⊕ ε e_k) at ε = 0 (for a ball joint: a rotation about the link's own axis k).
     ///
     /// Book: §4.11 (exact quaternion step (4.11.17)).
     ///
+    /// # Degenerate inputs
+    /// A zero rotation step (ω dt = 0, also a dual number whose real part is 0) takes the
+    /// Taylor branch of cos(θ/2) and sin(θ/2)/θ, so its derivatives are exact.
+    ///
     /// # Errors
-    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`].
-    pub fn integrate(&self, q: &[f64], v: &[f64], dt: f64) -> Result<Vec<f64>, DynamicsError> {
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`] (also for a
+    /// non-finite `dt`).
+    pub fn integrate(&self, q: &[T], v: &[T], dt: T) -> Result<Vec<T>, DynamicsError> {
         self.check_q(q)?;
         self.check_v(v, "v")?;
+        if !dt.re().is_finite() {
+            return Err(DynamicsError::NonFinite { what: "dt" });
+        }
         let mut out = q.to_vec();
         for s in &self.segs {
             match s.elem {
@@ -401,26 +464,29 @@ impl Model {
                         q[s.qi + 3],
                     ));
                     let w = Vector3::new(v[s.vi], v[s.vi + 1], v[s.vi + 2]);
-                    let q1 = q0 * UnitQuaternion::from_scaled_axis(w * dt);
+                    let q1 = q0 * quaternion_exp(&(w * dt));
                     out[s.qi..s.qi + 4].copy_from_slice(&[q1.w, q1.i, q1.j, q1.k]);
                 }
                 Elem::Fixed => {}
             }
         }
+        if !crate::error::all_finite(&out) {
+            return Err(DynamicsError::Overflow { what: "integrated configuration q ⊕ v dt" });
+        }
         Ok(out)
     }
 
-    pub(crate) fn check_q(&self, q: &[f64]) -> Result<(), DynamicsError> {
+    pub(crate) fn check_q(&self, q: &[T]) -> Result<(), DynamicsError> {
         crate::error::check_len(q.len(), self.nq, "q")?;
-        check_finite(q, "q")?;
+        crate::error::check_finite_t(q, "q")?;
         for s in &self.segs {
             if s.elem == Elem::Spherical {
-                let n = q[s.qi..s.qi + 4].iter().map(|x| x * x).sum::<f64>().sqrt();
-                if n < 1e-6 {
+                let n = q[s.qi..s.qi + 4].iter().map(|x| x.re() * x.re()).sum::<f64>().sqrt();
+                if !(n >= 1e-6 && n <= 1e150) {
                     return Err(DynamicsError::InvalidParameter {
                         what: "ball-joint quaternion norm",
                         value: n,
-                        valid: "a nonzero quaternion (it is normalized)",
+                        valid: "a quaternion of norm in [1e-6, 1e150] (it is normalized)",
                     });
                 }
             }
@@ -428,9 +494,16 @@ impl Model {
         Ok(())
     }
 
-    pub(crate) fn check_v(&self, v: &[f64], what: &'static str) -> Result<(), DynamicsError> {
+    pub(crate) fn check_v(&self, v: &[T], what: &'static str) -> Result<(), DynamicsError> {
         crate::error::check_len(v.len(), self.nv, what)?;
-        check_finite(v, what)
+        crate::error::check_finite_t(v, what)
+    }
+
+    /// The joint-to-parent transform of every segment at q (placement ∘ joint).
+    #[inline(always)]
+    pub(crate) fn seg_xform(&self, i: usize, q: &[T]) -> Xform<T> {
+        let s = &self.segs[i];
+        s.placement.then(&s.elem.xform(&q[s.qi..]))
     }
 
     /// Link poses: for each link, 𝓞_{link/ground} and r_{link origin/ground origin}|_ground.
@@ -438,18 +511,48 @@ impl Model {
     /// Book: §2.22 (chains), (2.10.46) composition.
     ///
     /// # Errors
-    /// As [`Model::integrate`].
-    pub fn poses(&self, q: &[f64]) -> Result<Vec<Pose>, DynamicsError> {
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
+    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
+    pub fn poses(&self, q: &[T]) -> Result<Vec<Pose<T>>, DynamicsError> {
         self.check_q(q)?;
-        let mut world: Vec<Xform> = Vec::with_capacity(self.segs.len());
-        for s in &self.segs {
-            let x = s.placement.then(&s.elem.xform(&q[s.qi..]));
+        let world = self.world_xforms(q);
+        Ok(self.link_seg.iter().map(|&k| (world[k].E, world[k].r)).collect())
+    }
+
+    /// Ground-to-segment transforms of every segment (parents first).
+    pub(crate) fn world_xforms(&self, q: &[T]) -> Vec<Xform<T>> {
+        let mut world: Vec<Xform<T>> = Vec::with_capacity(self.segs.len());
+        for (i, s) in self.segs.iter().enumerate() {
+            let x = self.seg_xform(i, q);
             let w = match s.parent {
                 Some(p) => world[p].then(&x),
                 None => x,
             };
             world.push(w);
         }
-        Ok(self.link_seg.iter().map(|&k| (world[k].E, world[k].r)).collect())
+        world
     }
+}
+
+/// exp of a rotation vector θ as a unit quaternion (cos(θ/2), sin(θ/2) θ̂), scalar first.
+///
+/// Book: (4.11.17), (2.15.x) Euler parameters of an eigenaxis rotation.
+///
+/// # Degenerate inputs
+/// For |θ|² ≤ ε the Taylor series cos(θ/2) = 1 − θ²/8 + θ⁴/384, sin(θ/2)/θ = ½ − θ²/48 +
+/// θ⁴/3840 (exact to rounding there, and differentiable at θ = 0, where √(θ·θ) is not).
+pub(crate) fn quaternion_exp<T: Scalar>(theta: &Vector3<T>) -> UnitQuaternion<T> {
+    let t2 = theta.dot(theta);
+    let (c, s_over) = if t2.re() <= f64::EPSILON {
+        // small-angle branch: no square root of 0
+        (
+            T::one() - t2 / T::lit(8.0) + t2 * t2 / T::lit(384.0),
+            T::lit(0.5) - t2 / T::lit(48.0) + t2 * t2 / T::lit(3840.0),
+        )
+    } else {
+        let t = t2.sqrt();
+        let (s, c) = (t * T::lit(0.5)).sin_cos();
+        (c, s / t)
+    };
+    UnitQuaternion::new_unchecked(Quaternion::new(c, theta.x * s_over, theta.y * s_over, theta.z * s_over))
 }

@@ -1,0 +1,583 @@
+//! Exact (analytical) derivatives of inverse and forward dynamics: ∂τ/∂(q, v, v̇) of RNEA and
+//! ∂v̇/∂(q, v, τ) of ABA, by one outward and one inward pass in ground coordinates
+//! (Carpentier & Mansard, *Analytical derivatives of rigid body dynamics algorithms*, RSS 2018).
+//!
+//! # Derivation (all spatial vectors in ground coordinates about the ground origin)
+//! Moving joint coordinate j by δ moves the subtree of j rigidly by the screw Jⱼδ, where Jⱼ
+//! is the joint's motion subspace in the ground. Every quantity attached to a body i of that
+//! subtree then changes by Jⱼ × (·) (motions) or Jⱼ ×* (·) (forces, inertias), plus what
+//! changes in the body's own motion:
+//! * ∂vᵢ/∂qⱼ = Jⱼ × vᵢ + vλ × Jⱼ, with λ the parent of j (so dVdqⱼ = vλ × Jⱼ);
+//! * ∂aᵢ/∂qⱼ = Jⱼ × aᵢ + dAdqⱼ + dVdqⱼ × vᵢ, dAdqⱼ = aλ × Jⱼ + vλ × dVdqⱼ (a with −g);
+//! * ∂vᵢ/∂v̇ⱼ… and ∂aᵢ/∂q̇ⱼ = Jⱼ × vᵢ + dAdvⱼ, dAdvⱼ = vⱼ × Jⱼ + vλ × Jⱼ.
+//!
+//! The body force fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ then has ∂fᵢ/∂qⱼ = Jⱼ ×* fᵢ + Iᵢ dAdqⱼ + Bᵢ dVdqⱼ
+//! with Bᵢ = İᵢ + (· ×* Iᵢvᵢ) = [[Ī̇ − n^×, 0], [−2 f^×, 0]] ((n, f) = Iᵢvᵢ, the momentum).
+//! All of it is linear in (Iᵢ, Bᵢ, fᵢ), so subtree sums (composites Iᶜ, Bᶜ, Fᶜ) give
+//! τᵢ = JᵢᵀFᶜᵢ and
+//! * ∂τᵢ/∂qⱼ = (IᶜᵢJᵢ)·dAdqⱼ + (BᶜᵢᵀJᵢ)·dVdqⱼ for j an ancestor of i (or i itself; the
+//!   Jⱼ × Jᵢ and Jⱼ ×* Fᶜᵢ terms cancel in the pairing),
+//! * ∂τᵢ/∂qⱼ = Jᵢ·(Jⱼ ×* Fᶜⱼ + Iᶜⱼ dAdqⱼ + Bᶜⱼ dVdqⱼ) for j a descendant of i,
+//!
+//! and the same with (dAdvⱼ, Jⱼ) for q̇ⱼ; ∂τ/∂v̇ = M. ABA's derivatives follow from
+//! RNEA(q, v, ABA(q, v, τ)) = τ: ∂v̇/∂(q, v) = −M⁻¹ ∂τ/∂(q, v), ∂v̇/∂τ = M⁻¹.
+//!
+//! # Tangent space
+//! ∂/∂q is taken in the tangent space of the configuration, one column per velocity
+//! coordinate: column k is d/dε f(q ⊕ ε eₖ) at ε = 0 with ⊕ = [`Model::integrate`]. For
+//! scalar joints that is the ordinary partial derivative; for a ball joint (and the rotation
+//! of a free joint) it is a rotation of the link about its own k-th axis (q ⊗ exp(ε eₖ/2)),
+//! as Pinocchio does; the free joint's translation is ordinary (x, y, z are coordinates in
+//! the joint frame, vectrix's free joint is ℝ³ × SO(3), not SE(3)).
+//!
+//! Book: §7.11; §12–§15 (linearization about a state).
+#![allow(non_snake_case)]
+
+use nalgebra::{DMatrix, Matrix3, Matrix6x3, Vector3, Vector6};
+use vectrix_tensor::Scalar;
+
+use super::crba::{mass_cholesky, world_subspace};
+use super::model::Model;
+use super::rnea::LinkWrenches;
+use super::spatial::{BodyInertia, Xform, cross_force6, cross_motion6, join, split};
+use crate::DynamicsError;
+
+/// Derivatives of inverse dynamics τ = RNEA(q, v, v̇) (tangent-space q-derivatives, see the
+/// module documentation).
+///
+/// Book: §7.11.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RneaDerivatives<T: Scalar = f64> {
+    /// τ at the point.
+    pub tau: Vec<T>,
+    /// ∂τ/∂q (nv × nv; column k along the tangent direction k).
+    pub dtau_dq: DMatrix<T>,
+    /// ∂τ/∂v (nv × nv).
+    pub dtau_dv: DMatrix<T>,
+    /// ∂τ/∂v̇ = M(q), the joint-space mass matrix.
+    pub mass_matrix: DMatrix<T>,
+}
+
+impl<T: Scalar> RneaDerivatives<T> {
+    /// Zero matrices sized for `model` (the output buffer of the `_into` hot path).
+    pub fn zeros(model: &Model<T>) -> Self {
+        let n = model.nv();
+        Self {
+            tau: vec![T::zero(); n],
+            dtau_dq: DMatrix::zeros(n, n),
+            dtau_dv: DMatrix::zeros(n, n),
+            mass_matrix: DMatrix::zeros(n, n),
+        }
+    }
+}
+
+/// Derivatives of forward dynamics v̇ = ABA(q, v, τ) (tangent-space q-derivatives).
+///
+/// Book: §7.11.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AbaDerivatives<T: Scalar = f64> {
+    /// v̇ at the point.
+    pub vdot: Vec<T>,
+    /// ∂v̇/∂q (nv × nv; column k along the tangent direction k).
+    pub dvdot_dq: DMatrix<T>,
+    /// ∂v̇/∂v (nv × nv).
+    pub dvdot_dv: DMatrix<T>,
+    /// ∂v̇/∂τ = M(q)⁻¹.
+    pub dvdot_dtau: DMatrix<T>,
+}
+
+impl<T: Scalar> AbaDerivatives<T> {
+    /// Zero matrices sized for `model` (the output buffer of the `_into` hot path).
+    pub fn zeros(model: &Model<T>) -> Self {
+        let n = model.nv();
+        Self {
+            vdot: vec![T::zero(); n],
+            dvdot_dq: DMatrix::zeros(n, n),
+            dvdot_dv: DMatrix::zeros(n, n),
+            dvdot_dtau: DMatrix::zeros(n, n),
+        }
+    }
+}
+
+/// The composite "velocity variation" Bᶜ = [[P, 0], [−2 f^×, 0]] of a subtree (module docs).
+#[derive(Debug, Clone, Copy)]
+struct Variation<T: Scalar> {
+    P: Matrix3<T>,
+    f: Vector3<T>,
+}
+
+impl<T: Scalar> Variation<T> {
+    fn zero() -> Self {
+        Self { P: Matrix3::zeros(), f: Vector3::zeros() }
+    }
+
+    /// B of one body of ground inertia `y` moving with twist (ω, v):
+    /// P = Ī̇ − n^× with Ī̇ = ω^×Ī − Īω^× − h vᵀ − v hᵀ + 2(v·h)1, (n, f) = I(ω, v).
+    fn of_body(y: &BodyInertia<T>, w: &Vector3<T>, v: &Vector3<T>) -> Self {
+        let (n, f) = y.apply(w, v);
+        let wx = w.cross_matrix();
+        let hv = y.h * v.transpose();
+        let two_vh = (v.dot(&y.h)) * T::lit(2.0);
+        let mut P = wx * y.I - y.I * wx - hv - hv.transpose() - n.cross_matrix();
+        P[(0, 0)] += two_vh;
+        P[(1, 1)] += two_vh;
+        P[(2, 2)] += two_vh;
+        Self { P, f }
+    }
+
+    fn add(&mut self, o: &Self) {
+        self.P += o.P;
+        self.f += o.f;
+    }
+
+    /// B·(ω, v) = (P ω, −2 f × ω).
+    #[inline(always)]
+    fn apply(&self, m: &Vector6<T>) -> Vector6<T> {
+        let (w, _) = split(m);
+        join(&(self.P * w), &(self.f.cross(&w) * T::lit(-2.0)))
+    }
+
+    /// The angular half of Bᵀ·(ω, v) = (Pᵀω + 2 f × v, 0).
+    #[inline(always)]
+    fn apply_transpose_angular(&self, m: &Vector6<T>) -> Vector3<T> {
+        let (w, v) = split(m);
+        self.P.tr_mul(&w) + self.f.cross(&v) * T::lit(2.0)
+    }
+}
+
+/// Work space of the derivative algorithms (one entry per elementary segment).
+#[derive(Debug, Clone)]
+pub struct DerivativeScratch<T: Scalar = f64> {
+    world: Vec<Xform<T>>,
+    J: Vec<Matrix6x3<T>>,
+    dVdq: Vec<Matrix6x3<T>>,
+    dAdq: Vec<Matrix6x3<T>>,
+    dAdv: Vec<Matrix6x3<T>>,
+    ov: Vec<Vector6<T>>,
+    oa: Vec<Vector6<T>>,
+    Yc: Vec<BodyInertia<T>>,
+    Bc: Vec<Variation<T>>,
+    Fc: Vec<Vector6<T>>,
+    rnea: Option<Box<RneaDerivatives<T>>>,
+    aba: Option<super::aba::AbaScratch<T>>,
+}
+
+impl<T: Scalar> Model<T> {
+    /// A work space for the `_into` derivative hot paths.
+    pub fn derivative_scratch(&self) -> DerivativeScratch<T> {
+        let n = self.segs.len();
+        DerivativeScratch {
+            world: vec![Xform::identity(); n],
+            J: vec![Matrix6x3::zeros(); n],
+            dVdq: vec![Matrix6x3::zeros(); n],
+            dAdq: vec![Matrix6x3::zeros(); n],
+            dAdv: vec![Matrix6x3::zeros(); n],
+            ov: vec![Vector6::zeros(); n],
+            oa: vec![Vector6::zeros(); n],
+            Yc: vec![BodyInertia::zero(); n],
+            Bc: vec![Variation::zero(); n],
+            Fc: vec![Vector6::zeros(); n],
+            rnea: None,
+            aba: None,
+        }
+    }
+
+    /// Exact derivatives of inverse dynamics at (q, v, v̇): τ, ∂τ/∂q, ∂τ/∂v and ∂τ/∂v̇ = M,
+    /// analytically in O(n·depth) (the module documentation has the derivation and the
+    /// tangent-space convention for ball and free joints). External wrenches `f_ext` are
+    /// fixed in their links (they turn with them).
+    ///
+    /// Book: §7.11 (RNEA), §12.x (linearization).
+    ///
+    /// # Errors
+    /// As [`Model::rnea`].
+    pub fn rnea_derivatives(
+        &self,
+        q: &[T],
+        v: &[T],
+        vdot: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<RneaDerivatives<T>, DynamicsError> {
+        self.check_q(q)?;
+        self.check_v(v, "v")?;
+        self.check_v(vdot, "v̇")?;
+        self.check_wrenches(f_ext)?;
+        let mut out = RneaDerivatives::zeros(self);
+        let mut s = self.derivative_scratch();
+        self.rnea_derivatives_into(q, v, vdot, f_ext, &mut out, &mut s);
+        let all = [&out.tau[..], out.dtau_dq.as_slice(), out.dtau_dv.as_slice(), out.mass_matrix.as_slice()];
+        if !all.iter().all(|x| crate::error::all_finite(x)) {
+            return Err(DynamicsError::Overflow { what: "derivatives of inverse dynamics" });
+        }
+        Ok(out)
+    }
+
+    /// Exact derivatives of forward dynamics at (q, v, τ): v̇, ∂v̇/∂q, ∂v̇/∂v and ∂v̇/∂τ = M⁻¹,
+    /// from ∂v̇/∂(q, v) = −M⁻¹ ∂τ/∂(q, v) at v̇ = ABA(q, v, τ) (tangent-space convention as
+    /// in the module documentation).
+    ///
+    /// Book: §7.11 (ABA), §12.x (linearization).
+    ///
+    /// # Errors
+    /// As [`Model::aba`]; [`DynamicsError::SingularMassMatrix`] when M is singular (a model
+    /// with an inert joint direction: the derivative along it is infinite).
+    pub fn aba_derivatives(
+        &self,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<AbaDerivatives<T>, DynamicsError> {
+        self.check_q(q)?;
+        self.check_v(v, "v")?;
+        self.check_v(tau, "τ")?;
+        self.check_wrenches(f_ext)?;
+        let mut out = AbaDerivatives::zeros(self);
+        let mut s = self.derivative_scratch();
+        self.aba_derivatives_into(q, v, tau, f_ext, &mut out, &mut s)?;
+        let all = [&out.vdot[..], out.dvdot_dq.as_slice(), out.dvdot_dv.as_slice(), out.dvdot_dtau.as_slice()];
+        if !all.iter().all(|x| crate::error::all_finite(x)) {
+            return Err(DynamicsError::Overflow { what: "derivatives of forward dynamics" });
+        }
+        Ok(out)
+    }
+
+    /// [`Model::aba_derivatives`] without input checks, into caller-provided output and
+    /// scratch: the hot path.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InertJointForce`] (from ABA), [`DynamicsError::SingularMassMatrix`].
+    ///
+    /// # Panics
+    /// If `out` was not made by [`AbaDerivatives::zeros`] for this model.
+    pub fn aba_derivatives_into(
+        &self,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        out: &mut AbaDerivatives<T>,
+        s: &mut DerivativeScratch<T>,
+    ) -> Result<(), DynamicsError> {
+        let mut aba = s.aba.take().unwrap_or_else(|| self.aba_scratch());
+        let r = self.aba_into(q, v, tau, f_ext, &mut out.vdot, &mut aba);
+        s.aba = Some(aba);
+        r?;
+        let mut rd = s.rnea.take().unwrap_or_else(|| Box::new(RneaDerivatives::zeros(self)));
+        self.rnea_derivatives_into(q, v, &out.vdot, f_ext, &mut rd, s);
+        // M⁻¹ [∂τ/∂q, ∂τ/∂v, 1] by one Cholesky factorization (M's buffer is lent to it)
+        let m = std::mem::replace(&mut rd.mass_matrix, DMatrix::zeros(0, 0));
+        let result = match mass_cholesky(m) {
+            Ok(chol) => {
+                out.dvdot_dq.copy_from(&rd.dtau_dq);
+                chol.solve_mut(&mut out.dvdot_dq);
+                out.dvdot_dq.neg_mut();
+                out.dvdot_dv.copy_from(&rd.dtau_dv);
+                chol.solve_mut(&mut out.dvdot_dv);
+                out.dvdot_dv.neg_mut();
+                out.dvdot_dtau.fill_with_identity();
+                chol.solve_mut(&mut out.dvdot_dtau);
+                rd.mass_matrix = chol.unpack();
+                Ok(())
+            }
+            Err(e) => {
+                rd.mass_matrix = DMatrix::zeros(self.nv, self.nv);
+                Err(e)
+            }
+        };
+        s.rnea = Some(rd);
+        result
+    }
+
+    /// [`Model::rnea_derivatives`] without input checks, into caller-provided output and
+    /// scratch: the hot path.
+    ///
+    /// # Panics
+    /// If `out` was not made by [`RneaDerivatives::zeros`] for this model.
+    pub fn rnea_derivatives_into(
+        &self,
+        q: &[T],
+        v: &[T],
+        vdot: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        out: &mut RneaDerivatives<T>,
+        s: &mut DerivativeScratch<T>,
+    ) {
+        let minus_g = join(&Vector3::zeros(), &(-self.gravity));
+        // outward pass, ground coordinates: placement, J, v, a (with −g), composite seeds
+        for (i, seg) in self.segs.iter().enumerate() {
+            let x = self.seg_xform(i, q);
+            let (w, ov_p, oa_p) = match seg.parent {
+                Some(p) => (s.world[p].then(&x), s.ov[p], s.oa[p]),
+                None => (x, Vector6::zeros(), minus_g),
+            };
+            let J = world_subspace(&seg.elem, &w);
+            let nvi = seg.elem.nv();
+            let (mut jv, mut ja) = (Vector6::zeros(), Vector6::zeros());
+            for k in 0..nvi {
+                jv += J.column(k) * v[seg.vi + k];
+                ja += J.column(k) * vdot[seg.vi + k];
+            }
+            // vᵢ = vλ + J q̇, aᵢ = aλ + J q̈ + vᵢ × J q̇
+            let ov = ov_p + jv;
+            let oa = oa_p + ja + cross_motion6(&ov, &jv);
+            for k in 0..nvi {
+                let Jk: Vector6<T> = J.column(k).into_owned();
+                let dV = cross_motion6(&ov_p, &Jk);
+                s.dVdq[i].set_column(k, &dV);
+                s.dAdq[i].set_column(k, &(cross_motion6(&oa_p, &Jk) + cross_motion6(&ov_p, &dV)));
+                s.dAdv[i].set_column(k, &(cross_motion6(&ov, &Jk) + dV));
+            }
+            // fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ − f_ext, and Bᵢ
+            if seg.massless {
+                s.Yc[i] = BodyInertia::zero();
+                s.Bc[i] = Variation::zero();
+                s.Fc[i] = Vector6::zeros();
+            } else {
+                let Y = seg.inertia.to_world(&w.E, &w.r);
+                let (ow, ovl) = split(&ov);
+                let h = Y.apply6(&ov);
+                s.Fc[i] = Y.apply6(&oa) + cross_force6(&ov, &h);
+                s.Bc[i] = Variation::of_body(&Y, &ow, &ovl);
+                s.Yc[i] = Y;
+            }
+            s.J[i] = J;
+            s.world[i] = w;
+            s.ov[i] = ov;
+            s.oa[i] = oa;
+        }
+        if let Some(fe) = f_ext {
+            // a wrench (n, f) about the link origin in link components, to ground about the
+            // ground origin: f_G = Eᵀf, n_G = Eᵀn + p × f_G
+            for (l, &k) in self.link_seg.iter().enumerate() {
+                let w = &s.world[k];
+                let f = w.E.tr_mul(&fe[l].force);
+                let n = w.E.tr_mul(&fe[l].moment) + w.r.cross(&f);
+                s.Fc[k] -= join(&n, &f);
+            }
+        }
+        out.dtau_dq.fill(T::zero());
+        out.dtau_dv.fill(T::zero());
+        out.mass_matrix.fill(T::zero());
+        // inward pass
+        for i in (0..self.segs.len()).rev() {
+            let seg = &self.segs[i];
+            let nvi = seg.elem.nv();
+            let (Yc, Bc, Fc) = (s.Yc[i], s.Bc[i], s.Fc[i]);
+            let mut YJ = Matrix6x3::zeros();
+            let mut BtJ = Matrix3::zeros();
+            let mut dFdq = Matrix6x3::zeros();
+            let mut dFdv = Matrix6x3::zeros();
+            for b in 0..nvi {
+                let Jb: Vector6<T> = s.J[i].column(b).into_owned();
+                YJ.set_column(b, &Yc.apply6(&Jb));
+                BtJ.set_column(b, &Bc.apply_transpose_angular(&Jb));
+                dFdq.set_column(b, &(Bc.apply(&s.dVdq[i].column(b).into_owned()) + Yc.apply6(&s.dAdq[i].column(b).into_owned())));
+                dFdv.set_column(b, &(Bc.apply(&Jb) + Yc.apply6(&s.dAdv[i].column(b).into_owned())));
+            }
+            // own block: τ, M, ∂τ/∂q and ∂τ/∂q̇ between the joint's own coordinates
+            for a in 0..nvi {
+                let Ja = s.J[i].column(a);
+                out.tau[seg.vi + a] = Ja.dot(&Fc);
+                for b in 0..nvi {
+                    out.mass_matrix[(seg.vi + a, seg.vi + b)] = Ja.dot(&YJ.column(b));
+                    out.dtau_dq[(seg.vi + a, seg.vi + b)] = Ja.dot(&dFdq.column(b));
+                    out.dtau_dv[(seg.vi + a, seg.vi + b)] = Ja.dot(&dFdv.column(b));
+                }
+            }
+            // for the ancestors' rows: ∂Fᶜ/∂qᵢ gains the rigid-motion term Jᵢ ×* Fᶜᵢ
+            for b in 0..nvi {
+                let add = cross_force6(&s.J[i].column(b).into_owned(), &Fc);
+                let col = dFdq.column(b) + add;
+                dFdq.set_column(b, &col);
+            }
+            let mut j = i;
+            while let Some(p) = self.segs[j].parent {
+                j = p;
+                let sj = &self.segs[j];
+                for a in 0..sj.elem.nv() {
+                    let (ra, Ja) = (sj.vi + a, s.J[j].column(a));
+                    let (Jaw, _) = split(&Ja.into_owned());
+                    for b in 0..nvi {
+                        let cb = seg.vi + b;
+                        // ancestor row, descendant column
+                        out.dtau_dq[(ra, cb)] = Ja.dot(&dFdq.column(b));
+                        out.dtau_dv[(ra, cb)] = Ja.dot(&dFdv.column(b));
+                        let m = Ja.dot(&YJ.column(b));
+                        out.mass_matrix[(ra, cb)] = m;
+                        out.mass_matrix[(cb, ra)] = m;
+                        // descendant row, ancestor column
+                        let (dv_w, _) = split(&s.dVdq[j].column(a).into_owned());
+                        out.dtau_dq[(cb, ra)] = YJ.column(b).dot(&s.dAdq[j].column(a)) + BtJ.column(b).dot(&dv_w);
+                        out.dtau_dv[(cb, ra)] = YJ.column(b).dot(&s.dAdv[j].column(a)) + BtJ.column(b).dot(&Jaw);
+                    }
+                }
+            }
+            if let Some(p) = seg.parent {
+                s.Yc[p].add(&Yc);
+                s.Bc[p].add(&Bc);
+                s.Fc[p] += Fc;
+            }
+        }
+    }
+}
+
+impl Model<f64> {
+    /// ∂M/∂q: the derivative of the mass matrix along each tangent direction k (k-th entry,
+    /// nv × nv), exact by dual numbers through the generic CRBA (one `Dual64` pass per
+    /// direction, q ⊕ ε eₖ by [`Model::integrate`]).
+    ///
+    /// Book: §7.11, §9.3 (the Christoffel terms of (9.3.11) are built from these).
+    ///
+    /// # Errors
+    /// As [`Model::crba`].
+    pub fn mass_matrix_derivatives(&self, q: &[f64]) -> Result<Vec<DMatrix<f64>>, DynamicsError> {
+        use num_dual::Dual64;
+        self.check_q(q)?;
+        let dual = self.cast::<Dual64>();
+        let qd: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
+        let mut h = DMatrix::zeros(self.nv, self.nv);
+        let mut s = dual.crba_scratch();
+        (0..self.nv)
+            .map(|k| {
+                let e: Vec<Dual64> = (0..self.nv).map(|i| if i == k { Dual64::from(0.0).derivative() } else { Dual64::from(0.0) }).collect();
+                let qk = dual.integrate(&qd, &e, Dual64::from(1.0))?;
+                dual.crba_into(&qk, &mut h, &mut s);
+                Ok(h.map(|x| x.eps))
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::{Matrix3, Vector3};
+    use num_dual::Dual64;
+
+    use super::*;
+    use crate::multibody::{Joint, JointWrench, Link};
+
+    /// A tree with every joint type, off-axis centres, rotated joint frames and gravity.
+    fn tree() -> Model {
+        let body = |parent, joint, offset: [f64; 3], k: f64| {
+            let mut l = Link::new(
+                parent,
+                joint,
+                Vector3::from(offset),
+                1.0 + 0.3 * k,
+                Vector3::new(0.1 * k, -0.2, 0.15),
+                Matrix3::new(0.3, 0.01, 0.02, 0.01, 0.4, -0.03, 0.02, -0.03, 0.5),
+            );
+            l.orientation = nalgebra::Rotation3::from_scaled_axis(Vector3::new(0.2 * k, -0.1, 0.3)).into_inner();
+            l
+        };
+        let z = Vector3::z();
+        let links = vec![
+            body(None, Joint::Free, [0.1, 0.0, 0.2], 0.0),
+            body(Some(0), Joint::Pin { axis: Vector3::new(1.0, 2.0, 0.5) }, [0.5, 0.0, 0.0], 1.0),
+            body(Some(1), Joint::Sleeve { axis: Vector3::x() }, [0.0, 0.4, 0.0], 2.0),
+            body(Some(0), Joint::Collar { axis: z }, [0.0, -0.5, 0.1], 3.0),
+            body(Some(3), Joint::Slot { axis: z, direction: Vector3::y() }, [0.3, 0.0, 0.0], 4.0),
+            body(Some(4), Joint::Ball, [0.0, 0.0, 0.6], 5.0),
+            body(Some(5), Joint::Weld, [0.2, 0.2, 0.0], 6.0),
+            body(Some(6), Joint::Pin { axis: Vector3::y() }, [0.0, 0.3, 0.1], 7.0),
+        ];
+        let mut m = Model::new(&links).unwrap();
+        m.gravity = Vector3::new(0.3, -0.2, -9.81);
+        m
+    }
+
+    fn state(m: &Model) -> (Vec<f64>, Vec<f64>, Vec<f64>, Vec<JointWrench>) {
+        let mut q = m.neutral();
+        for (k, x) in q.iter_mut().enumerate() {
+            *x += 0.4 * (1.3 * k as f64 + 0.2).sin();
+        }
+        let v: Vec<f64> = (0..m.nv()).map(|k| 0.7 * (1.7 * k as f64).cos()).collect();
+        let a: Vec<f64> = (0..m.nv()).map(|k| 0.5 * (0.9 * k as f64 + 1.0).sin()).collect();
+        let f: Vec<JointWrench> = (0..m.links())
+            .map(|l| JointWrench {
+                force: Vector3::new(0.3, -0.1 * l as f64, 0.2),
+                moment: Vector3::new(-0.05, 0.02, 0.01 * l as f64),
+            })
+            .collect();
+        (q, v, a, f)
+    }
+
+    /// Tangent-space directional derivative of any generic computation by one Dual64 pass.
+    fn seeded(m: &Model, q: &[f64], k: usize) -> Vec<Dual64> {
+        let dual = m.cast::<Dual64>();
+        let qd: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
+        let e: Vec<Dual64> =
+            (0..m.nv()).map(|i| if i == k { Dual64::from(0.0).derivative() } else { Dual64::from(0.0) }).collect();
+        dual.integrate(&qd, &e, Dual64::from(1.0)).unwrap()
+    }
+
+    fn lift(x: &[f64]) -> Vec<Dual64> {
+        x.iter().map(|&x| Dual64::from(x)).collect()
+    }
+
+    fn lift_wrenches(f: &[JointWrench]) -> Vec<JointWrench<Dual64>> {
+        f.iter().map(|w| JointWrench { force: w.force.map(Dual64::from), moment: w.moment.map(Dual64::from) }).collect()
+    }
+
+    /// The analytical ∂τ/∂q and ∂τ/∂v agree with forward-mode dual numbers through the
+    /// generic RNEA to rounding; ∂τ/∂v̇ is the CRBA mass matrix.
+    #[test]
+    fn rnea_derivatives_match_dual_numbers() {
+        let m = tree();
+        let (q, v, a, f) = state(&m);
+        let d = m.rnea_derivatives(&q, &v, &a, Some(&f)).unwrap();
+        let tau = m.rnea(&q, &v, &a, Some(&f)).unwrap().tau;
+        let dual = m.cast::<Dual64>();
+        let fd = lift_wrenches(&f);
+        let scale = 1.0 + d.dtau_dq.amax().max(d.dtau_dv.amax());
+        for (x, y) in d.tau.iter().zip(&tau) {
+            assert!((x - y).abs() <= 1e-13 * scale, "τ {x} vs {y}");
+        }
+        for k in 0..m.nv() {
+            let qk = seeded(&m, &q, k);
+            let t = dual.rnea(&qk, &lift(&v), &lift(&a), Some(&fd)).unwrap().tau;
+            for r in 0..m.nv() {
+                assert!((t[r].eps - d.dtau_dq[(r, k)]).abs() <= 1e-13 * scale, "dq ({r},{k}): {} vs {}", t[r].eps, d.dtau_dq[(r, k)]);
+            }
+            let mut vk = lift(&v);
+            vk[k].eps = 1.0;
+            let t = dual.rnea(&lift(&q), &vk, &lift(&a), Some(&fd)).unwrap().tau;
+            for r in 0..m.nv() {
+                assert!((t[r].eps - d.dtau_dv[(r, k)]).abs() <= 1e-13 * scale, "dv ({r},{k}): {} vs {}", t[r].eps, d.dtau_dv[(r, k)]);
+            }
+        }
+        let h = m.crba(&q).unwrap();
+        assert!((&h - &d.mass_matrix).amax() <= 1e-14 * h.amax());
+    }
+
+    /// ∂v̇/∂(q, v, τ) agree with dual numbers through the generic ABA.
+    #[test]
+    fn aba_derivatives_match_dual_numbers() {
+        let m = tree();
+        let (q, v, tau, f) = state(&m);
+        let d = m.aba_derivatives(&q, &v, &tau, Some(&f)).unwrap();
+        let dual = m.cast::<Dual64>();
+        let fd = lift_wrenches(&f);
+        let scale = 1.0 + d.dvdot_dq.amax().max(d.dvdot_dv.amax()).max(d.dvdot_dtau.amax());
+        for k in 0..m.nv() {
+            let qk = seeded(&m, &q, k);
+            let a = dual.aba(&qk, &lift(&v), &lift(&tau), Some(&fd)).unwrap();
+            for r in 0..m.nv() {
+                assert!((a[r].eps - d.dvdot_dq[(r, k)]).abs() <= 1e-12 * scale, "dq ({r},{k})");
+            }
+            let mut vk = lift(&v);
+            vk[k].eps = 1.0;
+            let a = dual.aba(&lift(&q), &vk, &lift(&tau), Some(&fd)).unwrap();
+            for r in 0..m.nv() {
+                assert!((a[r].eps - d.dvdot_dv[(r, k)]).abs() <= 1e-12 * scale, "dv ({r},{k})");
+            }
+            let mut tk = lift(&tau);
+            tk[k].eps = 1.0;
+            let a = dual.aba(&lift(&q), &lift(&v), &tk, Some(&fd)).unwrap();
+            for r in 0..m.nv() {
+                assert!((a[r].eps - d.dvdot_dtau[(r, k)]).abs() <= 1e-12 * scale, "dτ ({r},{k})");
+            }
+        }
+    }
+}
