@@ -48,16 +48,21 @@ template <class F> static void bench(const char* name, int n, long iters, F f) {
               name, n, s[s.size() / 2], s[0], s[s.size() - 1], iters);
 }
 
-// Usage: vectrix_pin_chain [filter] [iterations-scale]
+// Usage: vectrix_pin_chain [filter] [iterations-scale] [n]
 //   filter: run only algorithms whose name contains it (e.g. "deriv"); default all.
-//   iterations-scale: multiplies the iteration counts (use 0.01 under callgrind, with reps = 1).
+//   iterations-scale: multiplies the iteration counts; below 1 a single repetition (for
+//     instruction counts under callgrind: two runs with different scales, difference of the
+//     totals over the difference of the iteration counts).
+//   n: run only the chain of n links (default: 1, 6, 12, 30).
 int main(int argc, char** argv) {
   const char* filter = argc > 1 ? argv[1] : "";
   double scale = argc > 2 ? std::atof(argv[2]) : 1.0;
   if (scale < 1.0) reps = 1;
   auto want = [&](const char* name) { return std::strstr(name, filter) != nullptr; };
   const int NS = 256;  // pre-generated random states, cycled
+  int only = argc > 3 ? std::atoi(argv[3]) : 0;
   for (int n : {1, 6, 12, 30}) {
+    if (only && n != only) continue;
     Model model = chain(n);
     Data data(model);
     std::vector<Eigen::VectorXd> q(NS), v(NS), a(NS);

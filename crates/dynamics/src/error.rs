@@ -152,7 +152,10 @@ pub(crate) fn check_finite(values: &[f64], what: &'static str) -> Result<(), Dyn
 }
 
 /// `Err(NonFinite)` unless every value's real part is finite (generic scalars).
-pub(crate) fn check_finite_t<T: vectrix_tensor::Scalar>(values: &[T], what: &'static str) -> Result<(), DynamicsError> {
+pub(crate) fn check_finite_t<T: vectrix_tensor::Scalar>(
+    values: &[T],
+    what: &'static str,
+) -> Result<(), DynamicsError> {
     if all_finite(values) { Ok(()) } else { Err(DynamicsError::NonFinite { what }) }
 }
 

@@ -25,6 +25,8 @@ pub struct AbaScratch<T: Scalar = f64> {
     a: Vec<Vector6<T>>,
     w: Vec<Vector3<T>>,
     v: Vec<Vector3<T>>,
+    /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
+    reach: Vec<f64>,
 }
 
 impl<T: Scalar> Model<T> {
@@ -42,6 +44,7 @@ impl<T: Scalar> Model<T> {
             a: vec![Vector6::zeros(); n],
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
+            reach: vec![0.0; n],
         }
     }
 
@@ -131,6 +134,7 @@ impl<T: Scalar> Model<T> {
             s.c[i] = join(&cw, &cv);
             s.IA[i] = seg.inertia.matrix();
             s.pA[i] = join(&bn, &bf);
+            s.reach[i] = seg.own_reach;
             (s.w[i], s.v[i]) = (wi, vi);
         }
         if let Some(fe) = f_ext {
@@ -144,6 +148,10 @@ impl<T: Scalar> Model<T> {
             let seg = &self.segs[i];
             let IA = s.IA[i];
             let pA = s.pA[i];
+            // rounding scale of the joint's block of Iᴬ: the subtree's composite inertia bounds
+            // it (Iᴬ ≼ Iᶜ) and has no cancellation: its mass M for a slider, Σ tr J_c + 2Mρ² for
+            // a pin or a ball
+            let angular_scale = seg.sub_trace + 2.0 * seg.sub_mass * s.reach[i] * s.reach[i];
             let (Ia, pa) = match seg.elem {
                 Elem::Revolute(a) | Elem::Prismatic(a) => {
                     let revolute = matches!(seg.elem, Elem::Revolute(_));
@@ -151,10 +159,7 @@ impl<T: Scalar> Model<T> {
                     let U = IA * sv;
                     let D = sv.dot(&U);
                     let u = tau[seg.vi] - sv.dot(&pA);
-                    // the joint's block of Iᴬ (angular for a pin, linear for a slider) sets the
-                    // rounding scale of D
-                    let k = if revolute { 0 } else { 3 };
-                    let scale = (IA[(k, k)] + IA[(k + 1, k + 1)] + IA[(k + 2, k + 2)]).re();
+                    let scale = if revolute { angular_scale } else { seg.sub_mass };
                     if D.re() > PIVOT_TOL * scale {
                         s.U[i].set_column(0, &U);
                         s.Dinv[i][(0, 0)] = D.recip();
@@ -165,9 +170,7 @@ impl<T: Scalar> Model<T> {
                     } else {
                         // singular: D = 0 means IᴬS = 0, the coordinate carries no inertia; its
                         // force must vanish (else q̈ = ∞), and it gets q̈ = 0
-                        let (pn, pf) = split(&pA);
-                        let force_scale = tau[seg.vi].re().abs() + if revolute { pn.norm().re() } else { pf.norm().re() };
-                        let tolerance = PIVOT_TOL * force_scale;
+                        let tolerance = PIVOT_TOL * self.force_scale(i, tau, s);
                         if u.re().abs() > tolerance {
                             return Err(DynamicsError::InertJointForce {
                                 coordinate: seg.vi,
@@ -184,22 +187,21 @@ impl<T: Scalar> Model<T> {
                 Elem::Spherical => {
                     let U: Matrix6x3<T> = IA.fixed_columns::<3>(0).into_owned();
                     let D: Matrix3<T> = U.fixed_rows::<3>(0).into_owned();
-                    let u = Vector3::new(tau[seg.vi], tau[seg.vi + 1], tau[seg.vi + 2]) - pA.fixed_rows::<3>(0);
-                    let scale = D.trace().re();
+                    let u =
+                        Vector3::new(tau[seg.vi], tau[seg.vi + 1], tau[seg.vi + 2]) - pA.fixed_rows::<3>(0);
                     // fast path: Cholesky with every pivot above the rounding level
                     let fast = D.cholesky().filter(|c| {
                         let l = c.l_dirty();
-                        (0..3).all(|k| (l[(k, k)] * l[(k, k)]).re() > PIVOT_TOL * scale)
+                        (0..3).all(|k| (l[(k, k)] * l[(k, k)]).re() > PIVOT_TOL * angular_scale)
                     });
                     let Dinv = match fast {
                         Some(c) => c.inverse(),
                         None => {
                             // slow path: rank-revealing pseudo-inverse; no force along the
                             // inert directions (a particle cannot take a torque about its radius)
-                            let (pinv, null, _) = psd_pinv3(&D, PIVOT_TOL * scale);
-                            let (pn, _) = split(&pA);
-                            let tolerance = PIVOT_TOL * (pn.norm().re() + u.map(|x| x.re()).norm());
+                            let (pinv, null, _) = psd_pinv3(&D, PIVOT_TOL * angular_scale);
                             let along = null_component(&null, &u);
+                            let tolerance = PIVOT_TOL * self.force_scale(i, tau, s);
                             if along > tolerance {
                                 return Err(DynamicsError::InertJointForce {
                                     coordinate: seg.vi,
@@ -222,6 +224,12 @@ impl<T: Scalar> Model<T> {
                 let add = s.x[i].inertia_to_parent(&Ia);
                 s.IA[p] += add;
                 s.pA[p] += s.x[i].force6_to_parent(&pa);
+                if seg.sub_mass > 0.0 {
+                    // ρ_p ≥ ρ_i + |r_i| (‖·‖₁ ≥ ‖·‖₂)
+                    let r = &s.x[i].r;
+                    let reach = s.reach[i] + r.x.re().abs() + r.y.re().abs() + r.z.re().abs();
+                    s.reach[p] = s.reach[p].max(reach);
+                }
             }
         }
         // pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈
@@ -254,5 +262,33 @@ impl<T: Scalar> Model<T> {
             s.a[i] = a;
         }
         Ok(())
+    }
+
+    /// The size of the forces that meet at segment i before the eliminations of pass 2 cancel
+    /// them (slow path only): over i and its subtree k, max of |τₖ| + ‖Iᴬₖ‖(‖cₖ‖ + |𝒱ₖ|²) +
+    /// ‖pᴬₖ‖ + ‖UₖDₖ⁺uₖ‖, times (1 + ρᵢ) for the lever arms. A generalized force along an inert
+    /// direction is rounding noise when it is below [`PIVOT_TOL`] times this.
+    fn force_scale(&self, i: usize, tau: &[T], s: &AbaScratch<T>) -> f64 {
+        let mut mag = 0.0f64;
+        for k in i..self.segs.len() {
+            // k in the subtree of i: its ancestors (which have smaller indices) reach i
+            let mut j = k;
+            while j > i {
+                match self.segs[j].parent {
+                    Some(p) => j = p,
+                    None => break,
+                }
+            }
+            if j != i {
+                continue;
+            }
+            let seg = &self.segs[k];
+            let t: f64 = (0..seg.elem.nv()).map(|a| tau[seg.vi + a].re().abs()).sum();
+            let v2 = (s.w[k].norm_squared() + s.v[k].norm_squared()).re();
+            let inertial = s.IA[k].norm().re() * (s.c[k].norm().re() + v2);
+            let udu = if k > i { (s.U[k] * (s.Dinv[k] * s.u[k])).norm().re() } else { 0.0 };
+            mag = mag.max(t + inertial + s.pA[k].norm().re() + udu);
+        }
+        mag * (1.0 + s.reach[i])
     }
 }

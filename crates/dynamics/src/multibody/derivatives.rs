@@ -235,7 +235,8 @@ impl<T: Scalar> Model<T> {
         let mut out = AbaDerivatives::zeros(self);
         let mut s = self.derivative_scratch();
         self.aba_derivatives_into(q, v, tau, f_ext, &mut out, &mut s)?;
-        let all = [&out.vdot[..], out.dvdot_dq.as_slice(), out.dvdot_dv.as_slice(), out.dvdot_dtau.as_slice()];
+        let all =
+            [&out.vdot[..], out.dvdot_dq.as_slice(), out.dvdot_dv.as_slice(), out.dvdot_dtau.as_slice()];
         if !all.iter().all(|x| crate::error::all_finite(x)) {
             return Err(DynamicsError::Overflow { what: "derivatives of forward dynamics" });
         }
@@ -372,7 +373,11 @@ impl<T: Scalar> Model<T> {
                 let Jb: Vector6<T> = s.J[i].column(b).into_owned();
                 YJ.set_column(b, &Yc.apply6(&Jb));
                 BtJ.set_column(b, &Bc.apply_transpose_angular(&Jb));
-                dFdq.set_column(b, &(Bc.apply(&s.dVdq[i].column(b).into_owned()) + Yc.apply6(&s.dAdq[i].column(b).into_owned())));
+                dFdq.set_column(
+                    b,
+                    &(Bc.apply(&s.dVdq[i].column(b).into_owned())
+                        + Yc.apply6(&s.dAdq[i].column(b).into_owned())),
+                );
                 dFdv.set_column(b, &(Bc.apply(&Jb) + Yc.apply6(&s.dAdv[i].column(b).into_owned())));
             }
             // own block: τ, M, ∂τ/∂q and ∂τ/∂q̇ between the joint's own coordinates
@@ -408,8 +413,10 @@ impl<T: Scalar> Model<T> {
                         out.mass_matrix[(cb, ra)] = m;
                         // descendant row, ancestor column
                         let (dv_w, _) = split(&s.dVdq[j].column(a).into_owned());
-                        out.dtau_dq[(cb, ra)] = YJ.column(b).dot(&s.dAdq[j].column(a)) + BtJ.column(b).dot(&dv_w);
-                        out.dtau_dv[(cb, ra)] = YJ.column(b).dot(&s.dAdv[j].column(a)) + BtJ.column(b).dot(&Jaw);
+                        out.dtau_dq[(cb, ra)] =
+                            YJ.column(b).dot(&s.dAdq[j].column(a)) + BtJ.column(b).dot(&dv_w);
+                        out.dtau_dv[(cb, ra)] =
+                            YJ.column(b).dot(&s.dAdv[j].column(a)) + BtJ.column(b).dot(&Jaw);
                     }
                 }
             }
@@ -440,7 +447,9 @@ impl Model<f64> {
         let mut s = dual.crba_scratch();
         (0..self.nv)
             .map(|k| {
-                let e: Vec<Dual64> = (0..self.nv).map(|i| if i == k { Dual64::from(0.0).derivative() } else { Dual64::from(0.0) }).collect();
+                let e: Vec<Dual64> = (0..self.nv)
+                    .map(|i| if i == k { Dual64::from(0.0).derivative() } else { Dual64::from(0.0) })
+                    .collect();
                 let qk = dual.integrate(&qd, &e, Dual64::from(1.0))?;
                 dual.crba_into(&qk, &mut h, &mut s);
                 Ok(h.map(|x| x.eps))
@@ -468,7 +477,8 @@ mod tests {
                 Vector3::new(0.1 * k, -0.2, 0.15),
                 Matrix3::new(0.3, 0.01, 0.02, 0.01, 0.4, -0.03, 0.02, -0.03, 0.5),
             );
-            l.orientation = nalgebra::Rotation3::from_scaled_axis(Vector3::new(0.2 * k, -0.1, 0.3)).into_inner();
+            l.orientation =
+                nalgebra::Rotation3::from_scaled_axis(Vector3::new(0.2 * k, -0.1, 0.3)).into_inner();
             l
         };
         let z = Vector3::z();
@@ -507,8 +517,9 @@ mod tests {
     fn seeded(m: &Model, q: &[f64], k: usize) -> Vec<Dual64> {
         let dual = m.cast::<Dual64>();
         let qd: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
-        let e: Vec<Dual64> =
-            (0..m.nv()).map(|i| if i == k { Dual64::from(0.0).derivative() } else { Dual64::from(0.0) }).collect();
+        let e: Vec<Dual64> = (0..m.nv())
+            .map(|i| if i == k { Dual64::from(0.0).derivative() } else { Dual64::from(0.0) })
+            .collect();
         dual.integrate(&qd, &e, Dual64::from(1.0)).unwrap()
     }
 
@@ -517,7 +528,9 @@ mod tests {
     }
 
     fn lift_wrenches(f: &[JointWrench]) -> Vec<JointWrench<Dual64>> {
-        f.iter().map(|w| JointWrench { force: w.force.map(Dual64::from), moment: w.moment.map(Dual64::from) }).collect()
+        f.iter()
+            .map(|w| JointWrench { force: w.force.map(Dual64::from), moment: w.moment.map(Dual64::from) })
+            .collect()
     }
 
     /// The analytical ∂τ/∂q and ∂τ/∂v agree with forward-mode dual numbers through the
@@ -538,13 +551,23 @@ mod tests {
             let qk = seeded(&m, &q, k);
             let t = dual.rnea(&qk, &lift(&v), &lift(&a), Some(&fd)).unwrap().tau;
             for r in 0..m.nv() {
-                assert!((t[r].eps - d.dtau_dq[(r, k)]).abs() <= 1e-13 * scale, "dq ({r},{k}): {} vs {}", t[r].eps, d.dtau_dq[(r, k)]);
+                assert!(
+                    (t[r].eps - d.dtau_dq[(r, k)]).abs() <= 1e-13 * scale,
+                    "dq ({r},{k}): {} vs {}",
+                    t[r].eps,
+                    d.dtau_dq[(r, k)]
+                );
             }
             let mut vk = lift(&v);
             vk[k].eps = 1.0;
             let t = dual.rnea(&lift(&q), &vk, &lift(&a), Some(&fd)).unwrap().tau;
             for r in 0..m.nv() {
-                assert!((t[r].eps - d.dtau_dv[(r, k)]).abs() <= 1e-13 * scale, "dv ({r},{k}): {} vs {}", t[r].eps, d.dtau_dv[(r, k)]);
+                assert!(
+                    (t[r].eps - d.dtau_dv[(r, k)]).abs() <= 1e-13 * scale,
+                    "dv ({r},{k}): {} vs {}",
+                    t[r].eps,
+                    d.dtau_dv[(r, k)]
+                );
             }
         }
         let h = m.crba(&q).unwrap();

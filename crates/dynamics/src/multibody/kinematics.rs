@@ -75,7 +75,9 @@ impl<T: Scalar> Model<T> {
             .iter()
             .map(|&k| LinkTwist { omega: world[k].E.tr_mul(&tw[k].0), velocity: world[k].E.tr_mul(&tw[k].1) })
             .collect();
-        if !out.iter().all(|t| crate::error::all_finite(t.omega.as_slice()) && crate::error::all_finite(t.velocity.as_slice())) {
+        if !out.iter().all(|t| {
+            crate::error::all_finite(t.omega.as_slice()) && crate::error::all_finite(t.velocity.as_slice())
+        }) {
             return Err(DynamicsError::Overflow { what: "link twists" });
         }
         Ok(out)

@@ -190,6 +190,12 @@ pub(crate) struct Segment<T: Scalar> {
     pub inertia: BodyInertia<T>,
     /// Zero mass and zero inertia (intermediate segments of compound joints, massless links).
     pub massless: bool,
+    /// Scales for ABA's singularity tests (real numbers, configuration-independent): the
+    /// total mass of the subtree, Σ tr J_c over its bodies, and |c| of the own body (0 when
+    /// massless).
+    pub sub_mass: f64,
+    pub sub_trace: f64,
+    pub own_reach: f64,
 }
 
 /// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA, generic
@@ -342,13 +348,37 @@ impl Model<f64> {
                     q_neutral[qi] = 1.0;
                 }
                 let massless = inertia == BodyInertia::zero();
-                segs.push(Segment { parent, placement, elem: *elem, qi, vi, inertia, massless });
+                let (sub_mass, sub_trace, own_reach) = if last {
+                    (l.mass, l.inertia.trace(), if l.mass > 0.0 { l.com.norm() } else { 0.0 })
+                } else {
+                    (0.0, 0.0, 0.0)
+                };
+                segs.push(Segment {
+                    parent,
+                    placement,
+                    elem: *elem,
+                    qi,
+                    vi,
+                    inertia,
+                    massless,
+                    sub_mass,
+                    sub_trace,
+                    own_reach,
+                });
                 parent = Some(segs.len() - 1);
                 placement = Xform::identity();
                 qi += elem.nq();
                 vi += elem.nv();
             }
             link_seg[i] = segs.len() - 1;
+        }
+        // subtree sums, tips to base (children come after their parents)
+        for i in (0..segs.len()).rev() {
+            if let Some(p) = segs[i].parent {
+                let (m, t) = (segs[i].sub_mass, segs[i].sub_trace);
+                segs[p].sub_mass += m;
+                segs[p].sub_trace += t;
+            }
         }
         Ok(Self { segs, link_seg, nq, nv, gravity: Vector3::zeros(), q_neutral })
     }
@@ -400,6 +430,9 @@ impl Model<f64> {
                     vi: s.vi,
                     inertia: s.inertia.cast(),
                     massless: s.massless,
+                    sub_mass: s.sub_mass,
+                    sub_trace: s.sub_trace,
+                    own_reach: s.own_reach,
                 })
                 .collect(),
             link_seg: self.link_seg.clone(),

@@ -73,8 +73,9 @@ impl<T: Scalar> Model<T> {
             .iter()
             .map(|&k| JointWrench { force: scratch.f[k], moment: scratch.n[k] })
             .collect();
-        let wrench_finite =
-            wrenches.iter().all(|w| crate::error::all_finite(w.force.as_slice()) && crate::error::all_finite(w.moment.as_slice()));
+        let wrench_finite = wrenches.iter().all(|w| {
+            crate::error::all_finite(w.force.as_slice()) && crate::error::all_finite(w.moment.as_slice())
+        });
         if !(crate::error::all_finite(&tau) && wrench_finite) {
             return Err(DynamicsError::Overflow { what: "inverse dynamics τ" });
         }

@@ -8,9 +8,12 @@
 use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
-/// Rounding tolerance, as a multiple of ε times the scale of the joint's block of Iᴬ, below
-/// which a pivot of Dᵢ counts as zero (Dᵢ is formed from Iᴬᵢ by products whose rounding is a
-/// few ε of that scale, accumulated over the tree; 64 leaves room for deep trees).
+/// Rounding tolerance, as a multiple of ε times the scale of the joint's block of the
+/// subtree's composite inertia, below which a pivot of Dᵢ counts as zero (Dᵢ comes from
+/// sums and Schur complements of the subtree's inertias, whose rounding is a few ε of that
+/// scale per level; 64 leaves room for deep trees). The same factor times the size of the
+/// forces meeting at the joint bounds the rounding of a generalized force along an inert
+/// direction.
 pub(crate) const PIVOT_TOL: f64 = 64.0 * f64::EPSILON;
 
 /// D⁺ and the projector onto the null space of D for a symmetric PSD 3×3 D, by Cholesky with
