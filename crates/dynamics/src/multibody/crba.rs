@@ -3,7 +3,7 @@
 //! (the cross-check of the articulated-body algorithm).
 #![allow(non_snake_case)]
 
-use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Matrix6x3, Vector3};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Matrix6x3, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
 use super::model::{Elem, Model};
@@ -19,7 +19,8 @@ pub(crate) const MASS_PIVOT_REL_TOL: f64 = 64.0 * f64::EPSILON;
 #[derive(Debug, Clone)]
 pub struct CrbaScratch<T: Scalar = f64> {
     world: Vec<Xform<T>>,
-    S: Vec<Matrix6x3<T>>,
+    /// One motion-subspace column per velocity coordinate, ground coordinates.
+    S: Vec<Vector6<T>>,
     Ic: Vec<BodyInertia<T>>,
 }
 
@@ -51,11 +52,7 @@ impl<T: Scalar> Model<T> {
     /// A work space for [`Model::crba_into`].
     pub fn crba_scratch(&self) -> CrbaScratch<T> {
         let n = self.segs.len();
-        CrbaScratch {
-            world: vec![Xform::identity(); n],
-            S: vec![Matrix6x3::zeros(); n],
-            Ic: vec![BodyInertia::zero(); n],
-        }
+        CrbaScratch { world: vec![Xform::identity(); n], S: vec![Vector6::zeros(); self.nv], Ic: vec![BodyInertia::zero(); n] }
     }
 
     /// The joint-space mass matrix H(q) (symmetric, nv × nv) by the composite-rigid-body
@@ -100,36 +97,29 @@ impl<T: Scalar> Model<T> {
                 Some(p) => s.world[p].then(&x),
                 None => x,
             };
-            s.S[i] = world_subspace(&seg.elem, &w);
+            let sw = world_subspace(&seg.elem, &w);
+            for k in 0..seg.elem.nv() {
+                s.S[seg.vi + k] = sw.column(k).into_owned();
+            }
             s.Ic[i] = if seg.massless { BodyInertia::zero() } else { seg.inertia.to_world(&w.E, &w.r) };
             s.world[i] = w;
         }
         h.fill(T::zero());
+        let n = self.nv;
+        let hs = h.as_mut_slice();
         // inward: Iᶜ_i is complete when i is reached (descendants come later in the order);
-        // F = Iᶜ_i S_i, then Hⱼᵢ = SⱼᵀF for i and each ancestor j, and Iᶜ_p += Iᶜ_i (same
-        // coordinates: a plain sum)
+        // for each column b of joint i, F = Iᶜ_i S_b, then H_cb = H_bc = S_c·F for b and every
+        // coordinate c above it; Iᶜ_p += Iᶜ_i (same coordinates: a plain sum)
         for i in (0..self.segs.len()).rev() {
             let seg = &self.segs[i];
-            let ni = seg.elem.nv();
-            let mut F = Matrix6x3::zeros();
-            for k in 0..ni {
-                F.set_column(k, &s.Ic[i].apply6(&s.S[i].column(k).into_owned()));
-            }
-            for a in 0..ni {
-                for b in 0..ni {
-                    h[(seg.vi + a, seg.vi + b)] = s.S[i].column(a).dot(&F.column(b));
-                }
-            }
-            let mut j = i;
-            while let Some(p) = self.segs[j].parent {
-                j = p;
-                let sj = &self.segs[j];
-                for a in 0..sj.elem.nv() {
-                    for b in 0..ni {
-                        let hab = s.S[j].column(a).dot(&F.column(b));
-                        h[(sj.vi + a, seg.vi + b)] = hab;
-                        h[(seg.vi + b, sj.vi + a)] = hab;
-                    }
+            for b in seg.vi..seg.vi + seg.elem.nv() {
+                let F = s.Ic[i].apply6(&s.S[b]);
+                let mut c = Some(b);
+                while let Some(a) = c {
+                    let hab = s.S[a].dot(&F);
+                    hs[a + b * n] = hab;
+                    hs[b + a * n] = hab;
+                    c = self.parent_col[a];
                 }
             }
             if let Some(p) = seg.parent {

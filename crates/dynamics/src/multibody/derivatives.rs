@@ -33,7 +33,7 @@
 //! Book: §7.11; §12–§15 (linearization about a state).
 #![allow(non_snake_case)]
 
-use nalgebra::{DMatrix, Matrix3, Matrix6x3, Vector3, Vector6};
+use nalgebra::{DMatrix, Matrix3, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
 use super::crba::{mass_cholesky, world_subspace};
@@ -145,19 +145,22 @@ impl<T: Scalar> Variation<T> {
     }
 }
 
-/// Work space of the derivative algorithms (one entry per elementary segment).
+/// Work space of the derivative algorithms (per segment, and per velocity coordinate).
 #[derive(Debug, Clone)]
 pub struct DerivativeScratch<T: Scalar = f64> {
     world: Vec<Xform<T>>,
-    J: Vec<Matrix6x3<T>>,
-    dVdq: Vec<Matrix6x3<T>>,
-    dAdq: Vec<Matrix6x3<T>>,
-    dAdv: Vec<Matrix6x3<T>>,
     ov: Vec<Vector6<T>>,
     oa: Vec<Vector6<T>>,
     Yc: Vec<BodyInertia<T>>,
     Bc: Vec<Variation<T>>,
     Fc: Vec<Vector6<T>>,
+    /// Per velocity coordinate: J, dVdq, dAdq, dAdv (ground coordinates).
+    J: Vec<Vector6<T>>,
+    dVdq: Vec<Vector6<T>>,
+    dAdq: Vec<Vector6<T>>,
+    dAdv: Vec<Vector6<T>>,
+    /// L⁻¹ while forming M⁻¹.
+    work: DMatrix<T>,
     rnea: Option<Box<RneaDerivatives<T>>>,
     aba: Option<super::aba::AbaScratch<T>>,
 }
@@ -166,17 +169,19 @@ impl<T: Scalar> Model<T> {
     /// A work space for the `_into` derivative hot paths.
     pub fn derivative_scratch(&self) -> DerivativeScratch<T> {
         let n = self.segs.len();
+        let nv = self.nv;
         DerivativeScratch {
             world: vec![Xform::identity(); n],
-            J: vec![Matrix6x3::zeros(); n],
-            dVdq: vec![Matrix6x3::zeros(); n],
-            dAdq: vec![Matrix6x3::zeros(); n],
-            dAdv: vec![Matrix6x3::zeros(); n],
             ov: vec![Vector6::zeros(); n],
             oa: vec![Vector6::zeros(); n],
             Yc: vec![BodyInertia::zero(); n],
             Bc: vec![Variation::zero(); n],
             Fc: vec![Vector6::zeros(); n],
+            J: vec![Vector6::zeros(); nv],
+            dVdq: vec![Vector6::zeros(); nv],
+            dAdq: vec![Vector6::zeros(); nv],
+            dAdv: vec![Vector6::zeros(); nv],
+            work: DMatrix::zeros(nv, nv),
             rnea: None,
             aba: None,
         }
@@ -266,19 +271,16 @@ impl<T: Scalar> Model<T> {
         r?;
         let mut rd = s.rnea.take().unwrap_or_else(|| Box::new(RneaDerivatives::zeros(self)));
         self.rnea_derivatives_into(q, v, &out.vdot, f_ext, &mut rd, s);
-        // M⁻¹ [∂τ/∂q, ∂τ/∂v, 1] by one Cholesky factorization (M's buffer is lent to it)
+        // M⁻¹ = L⁻ᵀL⁻¹ from one Cholesky factorization (M's buffer is lent to it), then
+        // ∂v̇/∂q = −M⁻¹ ∂τ/∂q and ∂v̇/∂v = −M⁻¹ ∂τ/∂v by matrix products
         let m = std::mem::replace(&mut rd.mass_matrix, DMatrix::zeros(0, 0));
         let result = match mass_cholesky(m) {
             Ok(chol) => {
-                out.dvdot_dq.copy_from(&rd.dtau_dq);
-                chol.solve_mut(&mut out.dvdot_dq);
-                out.dvdot_dq.neg_mut();
-                out.dvdot_dv.copy_from(&rd.dtau_dv);
-                chol.solve_mut(&mut out.dvdot_dv);
-                out.dvdot_dv.neg_mut();
-                out.dvdot_dtau.fill_with_identity();
-                chol.solve_mut(&mut out.dvdot_dtau);
-                rd.mass_matrix = chol.unpack();
+                let l = chol.unpack();
+                inverse_from_cholesky(&l, &mut out.dvdot_dtau, &mut s.work);
+                out.dvdot_dq.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dq, T::zero());
+                out.dvdot_dv.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dv, T::zero());
+                rd.mass_matrix = l;
                 Ok(())
             }
             Err(e) => {
@@ -313,21 +315,24 @@ impl<T: Scalar> Model<T> {
                 None => (x, Vector6::zeros(), minus_g),
             };
             let J = world_subspace(&seg.elem, &w);
-            let nvi = seg.elem.nv();
+            let cols = seg.vi..seg.vi + seg.elem.nv();
             let (mut jv, mut ja) = (Vector6::zeros(), Vector6::zeros());
-            for k in 0..nvi {
-                jv += J.column(k) * v[seg.vi + k];
-                ja += J.column(k) * vdot[seg.vi + k];
+            for (k, c) in cols.clone().enumerate() {
+                let Jk: Vector6<T> = J.column(k).into_owned();
+                jv += Jk * v[c];
+                ja += Jk * vdot[c];
+                s.J[c] = Jk;
             }
             // vᵢ = vλ + J q̇, aᵢ = aλ + J q̈ + vᵢ × J q̇
             let ov = ov_p + jv;
             let oa = oa_p + ja + cross_motion6(&ov, &jv);
-            for k in 0..nvi {
-                let Jk: Vector6<T> = J.column(k).into_owned();
-                let dV = cross_motion6(&ov_p, &Jk);
-                s.dVdq[i].set_column(k, &dV);
-                s.dAdq[i].set_column(k, &(cross_motion6(&oa_p, &Jk) + cross_motion6(&ov_p, &dV)));
-                s.dAdv[i].set_column(k, &(cross_motion6(&ov, &Jk) + dV));
+            // dVdq = vλ × J, dAdq = aλ × J + vλ × dVdq, dAdv = vᵢ × J + dVdq
+            for c in cols {
+                let Jc = s.J[c];
+                let dV = cross_motion6(&ov_p, &Jc);
+                s.dAdq[c] = cross_motion6(&oa_p, &Jc) + cross_motion6(&ov_p, &dV);
+                s.dAdv[c] = cross_motion6(&ov, &Jc) + dV;
+                s.dVdq[c] = dV;
             }
             // fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ − f_ext, and Bᵢ
             if seg.massless {
@@ -342,7 +347,6 @@ impl<T: Scalar> Model<T> {
                 s.Bc[i] = Variation::of_body(&Y, &ow, &ovl);
                 s.Yc[i] = Y;
             }
-            s.J[i] = J;
             s.world[i] = w;
             s.ov[i] = ov;
             s.oa[i] = oa;
@@ -357,67 +361,48 @@ impl<T: Scalar> Model<T> {
                 s.Fc[k] -= join(&n, &f);
             }
         }
+        let n = self.nv;
         out.dtau_dq.fill(T::zero());
         out.dtau_dv.fill(T::zero());
         out.mass_matrix.fill(T::zero());
+        let (dq, dv, mm) = (out.dtau_dq.as_mut_slice(), out.dtau_dv.as_mut_slice(), out.mass_matrix.as_mut_slice());
         // inward pass
         for i in (0..self.segs.len()).rev() {
             let seg = &self.segs[i];
             let nvi = seg.elem.nv();
             let (Yc, Bc, Fc) = (s.Yc[i], s.Bc[i], s.Fc[i]);
-            let mut YJ = Matrix6x3::zeros();
-            let mut BtJ = Matrix3::zeros();
-            let mut dFdq = Matrix6x3::zeros();
-            let mut dFdv = Matrix6x3::zeros();
-            for b in 0..nvi {
-                let Jb: Vector6<T> = s.J[i].column(b).into_owned();
-                YJ.set_column(b, &Yc.apply6(&Jb));
-                BtJ.set_column(b, &Bc.apply_transpose_angular(&Jb));
-                dFdq.set_column(
-                    b,
-                    &(Bc.apply(&s.dVdq[i].column(b).into_owned())
-                        + Yc.apply6(&s.dAdq[i].column(b).into_owned())),
-                );
-                dFdv.set_column(b, &(Bc.apply(&Jb) + Yc.apply6(&s.dAdv[i].column(b).into_owned())));
-            }
-            // own block: τ, M, ∂τ/∂q and ∂τ/∂q̇ between the joint's own coordinates
-            for a in 0..nvi {
-                let Ja = s.J[i].column(a);
-                out.tau[seg.vi + a] = Ja.dot(&Fc);
-                for b in 0..nvi {
-                    out.mass_matrix[(seg.vi + a, seg.vi + b)] = Ja.dot(&YJ.column(b));
-                    out.dtau_dq[(seg.vi + a, seg.vi + b)] = Ja.dot(&dFdq.column(b));
-                    out.dtau_dv[(seg.vi + a, seg.vi + b)] = Ja.dot(&dFdv.column(b));
+            for b in seg.vi..seg.vi + nvi {
+                let Jb = s.J[b];
+                let YJ = Yc.apply6(&Jb);
+                let BtJ = Bc.apply_transpose_angular(&Jb);
+                let mut dFdq = Bc.apply(&s.dVdq[b]) + Yc.apply6(&s.dAdq[b]);
+                let dFdv = Bc.apply(&Jb) + Yc.apply6(&s.dAdv[b]);
+                out.tau[b] = Jb.dot(&Fc);
+                // the joint's own columns a (a ball's three): ∂τₐ/∂q_b, ∂τₐ/∂q̇_b, Mₐb
+                for a in seg.vi..seg.vi + nvi {
+                    let Ja = &s.J[a];
+                    mm[a + b * n] = Ja.dot(&YJ);
+                    dq[a + b * n] = Ja.dot(&dFdq);
+                    dv[a + b * n] = Ja.dot(&dFdv);
                 }
-            }
-            // for the ancestors' rows: ∂Fᶜ/∂qᵢ gains the rigid-motion term Jᵢ ×* Fᶜᵢ
-            for b in 0..nvi {
-                let add = cross_force6(&s.J[i].column(b).into_owned(), &Fc);
-                let col = dFdq.column(b) + add;
-                dFdq.set_column(b, &col);
-            }
-            let mut j = i;
-            while let Some(p) = self.segs[j].parent {
-                j = p;
-                let sj = &self.segs[j];
-                for a in 0..sj.elem.nv() {
-                    let (ra, Ja) = (sj.vi + a, s.J[j].column(a));
-                    let (Jaw, _) = split(&Ja.into_owned());
-                    for b in 0..nvi {
-                        let cb = seg.vi + b;
-                        // ancestor row, descendant column
-                        out.dtau_dq[(ra, cb)] = Ja.dot(&dFdq.column(b));
-                        out.dtau_dv[(ra, cb)] = Ja.dot(&dFdv.column(b));
-                        let m = Ja.dot(&YJ.column(b));
-                        out.mass_matrix[(ra, cb)] = m;
-                        out.mass_matrix[(cb, ra)] = m;
-                        // descendant row, ancestor column
-                        let (dv_w, _) = split(&s.dVdq[j].column(a).into_owned());
-                        out.dtau_dq[(cb, ra)] =
-                            YJ.column(b).dot(&s.dAdq[j].column(a)) + BtJ.column(b).dot(&dv_w);
-                        out.dtau_dv[(cb, ra)] =
-                            YJ.column(b).dot(&s.dAdv[j].column(a)) + BtJ.column(b).dot(&Jaw);
-                    }
+                // for the ancestors' rows, ∂Fᶜ/∂q_b gains the rigid-motion term J_b ×* Fᶜᵢ
+                dFdq += cross_force6(&Jb, &Fc);
+                let (BtJw, dFdq, dFdv) = (BtJ, dFdq, dFdv);
+                let mut c = self.parent_col[seg.vi];
+                while let Some(a) = c {
+                    let Ja = &s.J[a];
+                    let Jaw = Vector3::new(Ja[0], Ja[1], Ja[2]);
+                    let dVw = Vector3::new(s.dVdq[a][0], s.dVdq[a][1], s.dVdq[a][2]);
+                    // ancestor row a, descendant column b
+                    dq[a + b * n] = Ja.dot(&dFdq);
+                    dv[a + b * n] = Ja.dot(&dFdv);
+                    let m = Ja.dot(&YJ);
+                    mm[a + b * n] = m;
+                    mm[b + a * n] = m;
+                    // descendant row b, ancestor column a
+                    dq[b + a * n] = YJ.dot(&s.dAdq[a]) + BtJw.dot(&dVw);
+                    dv[b + a * n] = YJ.dot(&s.dAdv[a]) + BtJw.dot(&Jaw);
+                    c = self.parent_col[a];
                 }
             }
             if let Some(p) = seg.parent {
@@ -425,6 +410,39 @@ impl<T: Scalar> Model<T> {
                 s.Bc[p].add(&Bc);
                 s.Fc[p] += Fc;
             }
+        }
+    }
+}
+
+/// M⁻¹ = L⁻ᵀ L⁻¹ from the Cholesky factor L (lower; its strict upper part is ignored), into
+/// `out`, with `w` (n × n) holding L⁻¹: forward substitution of each unit vector from its own
+/// row on (L⁻¹ is lower triangular), then (M⁻¹)ᵢₖ = Σ_{p ≥ max(i,k)} (L⁻¹)ₚᵢ (L⁻¹)ₚₖ.
+fn inverse_from_cholesky<T: Scalar>(l: &DMatrix<T>, out: &mut DMatrix<T>, w: &mut DMatrix<T>) {
+    let n = l.nrows();
+    let ls = l.as_slice();
+    let ws = w.as_mut_slice();
+    ws.fill(T::zero());
+    for j in 0..n {
+        let col = &mut ws[j * n..(j + 1) * n];
+        col[j] = T::one();
+        for p in j..n {
+            let xp = col[p] / ls[p + p * n];
+            col[p] = xp;
+            for (x, &lv) in col[p + 1..].iter_mut().zip(&ls[p * n + p + 1..(p + 1) * n]) {
+                *x -= lv * xp;
+            }
+        }
+    }
+    let os = out.as_mut_slice();
+    for i in 0..n {
+        for k in i..n {
+            let (ci, ck) = (&ws[i * n + k..(i + 1) * n], &ws[k * n + k..(k + 1) * n]);
+            let mut sum = T::zero();
+            for (&a, &b) in ci.iter().zip(ck) {
+                sum += a * b;
+            }
+            os[i + k * n] = sum;
+            os[k + i * n] = sum;
         }
     }
 }

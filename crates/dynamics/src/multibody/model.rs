@@ -215,6 +215,11 @@ pub struct Model<T: Scalar = f64> {
     /// Gravitational acceleration g resolved in the ground frame.
     pub gravity: Vector3<T>,
     pub(crate) q_neutral: Vec<T>,
+    /// For each velocity coordinate, the nearest coordinate above it in the tree (the previous
+    /// column of the same joint, else the last column of the nearest ancestor that has one).
+    pub(crate) parent_col: Vec<Option<usize>>,
+    /// For each velocity coordinate, its segment.
+    pub(crate) col_seg: Vec<usize>,
 }
 
 fn unit_axis(a: &Vector3<f64>, link: usize, what: &'static str) -> Result<Vector3<f64>, DynamicsError> {
@@ -380,7 +385,20 @@ impl Model<f64> {
                 segs[p].sub_trace += t;
             }
         }
-        Ok(Self { segs, link_seg, nq, nv, gravity: Vector3::zeros(), q_neutral })
+        // column tree: the nearest coordinate above each coordinate
+        let mut parent_col = vec![None; nv];
+        let mut col_seg = vec![0usize; nv];
+        let mut last_col: Vec<Option<usize>> = vec![None; segs.len()];
+        for (i, sg) in segs.iter().enumerate() {
+            let mut above = sg.parent.and_then(|p| last_col[p]);
+            for k in 0..sg.elem.nv() {
+                parent_col[sg.vi + k] = above;
+                col_seg[sg.vi + k] = i;
+                above = Some(sg.vi + k);
+            }
+            last_col[i] = above;
+        }
+        Ok(Self { segs, link_seg, nq, nv, gravity: Vector3::zeros(), q_neutral, parent_col, col_seg })
     }
 
     /// A chain of n pin joints about ẑ, each link a thin-ish rod of mass m and length l along
@@ -440,6 +458,8 @@ impl Model<f64> {
             nv: self.nv,
             gravity: self.gravity.map(U::lit),
             q_neutral: self.q_neutral.iter().map(|&x| U::lit(x)).collect(),
+            parent_col: self.parent_col.clone(),
+            col_seg: self.col_seg.clone(),
         }
     }
 }
