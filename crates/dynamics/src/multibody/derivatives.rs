@@ -159,8 +159,9 @@ pub struct DerivativeScratch<T: Scalar = f64> {
     dVdq: Vec<Vector6<T>>,
     dAdq: Vec<Vector6<T>>,
     dAdv: Vec<Vector6<T>>,
-    /// L⁻¹ while forming M⁻¹.
+    /// L⁻¹ and its transpose while forming M⁻¹.
     work: DMatrix<T>,
+    work_t: DMatrix<T>,
     rnea: Option<Box<RneaDerivatives<T>>>,
     aba: Option<super::aba::AbaScratch<T>>,
 }
@@ -182,6 +183,7 @@ impl<T: Scalar> Model<T> {
             dAdq: vec![Vector6::zeros(); nv],
             dAdv: vec![Vector6::zeros(); nv],
             work: DMatrix::zeros(nv, nv),
+            work_t: DMatrix::zeros(nv, nv),
             rnea: None,
             aba: None,
         }
@@ -277,7 +279,7 @@ impl<T: Scalar> Model<T> {
         let result = match mass_cholesky(m) {
             Ok(chol) => {
                 let l = chol.unpack();
-                inverse_from_cholesky(&l, &mut out.dvdot_dtau, &mut s.work);
+                inverse_from_cholesky(&l, &mut out.dvdot_dtau, &mut s.work, &mut s.work_t);
                 out.dvdot_dq.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dq, T::zero());
                 out.dvdot_dv.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dv, T::zero());
                 rd.mass_matrix = l;
@@ -390,18 +392,16 @@ impl<T: Scalar> Model<T> {
                 let (BtJw, dFdq, dFdv) = (BtJ, dFdq, dFdv);
                 let mut c = self.parent_col[seg.vi];
                 while let Some(a) = c {
-                    let Ja = &s.J[a];
-                    let Jaw = Vector3::new(Ja[0], Ja[1], Ja[2]);
-                    let dVw = Vector3::new(s.dVdq[a][0], s.dVdq[a][1], s.dVdq[a][2]);
+                    let (Ja, dV, dAq, dAv) = (&s.J[a], &s.dVdq[a], &s.dAdq[a], &s.dAdv[a]);
                     // ancestor row a, descendant column b
-                    dq[a + b * n] = Ja.dot(&dFdq);
-                    dv[a + b * n] = Ja.dot(&dFdv);
-                    let m = Ja.dot(&YJ);
+                    dq[a + b * n] = dot6(Ja, &dFdq);
+                    dv[a + b * n] = dot6(Ja, &dFdv);
+                    let m = dot6(Ja, &YJ);
                     mm[a + b * n] = m;
                     mm[b + a * n] = m;
-                    // descendant row b, ancestor column a
-                    dq[b + a * n] = YJ.dot(&s.dAdq[a]) + BtJw.dot(&dVw);
-                    dv[b + a * n] = YJ.dot(&s.dAdv[a]) + BtJw.dot(&Jaw);
+                    // descendant row b, ancestor column a (Bᵀ J has no linear half)
+                    dq[b + a * n] = dot6(&YJ, dAq) + BtJw.x * dV[0] + BtJw.y * dV[1] + BtJw.z * dV[2];
+                    dv[b + a * n] = dot6(&YJ, dAv) + BtJw.x * Ja[0] + BtJw.y * Ja[1] + BtJw.z * Ja[2];
                     c = self.parent_col[a];
                 }
             }
@@ -414,10 +414,16 @@ impl<T: Scalar> Model<T> {
     }
 }
 
+/// a·b of two 6-vectors, written out (the hot loop of the inward pass).
+#[inline(always)]
+fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
+}
+
 /// M⁻¹ = L⁻ᵀ L⁻¹ from the Cholesky factor L (lower; its strict upper part is ignored), into
-/// `out`, with `w` (n × n) holding L⁻¹: forward substitution of each unit vector from its own
-/// row on (L⁻¹ is lower triangular), then (M⁻¹)ᵢₖ = Σ_{p ≥ max(i,k)} (L⁻¹)ₚᵢ (L⁻¹)ₚₖ.
-fn inverse_from_cholesky<T: Scalar>(l: &DMatrix<T>, out: &mut DMatrix<T>, w: &mut DMatrix<T>) {
+/// `out`, with `w` (n × n) holding L⁻¹ and `wt` its transpose: forward substitution of each
+/// unit vector from its own row on (L⁻¹ is lower triangular), then M⁻¹ = (L⁻¹)ᵀL⁻¹.
+fn inverse_from_cholesky<T: Scalar>(l: &DMatrix<T>, out: &mut DMatrix<T>, w: &mut DMatrix<T>, wt: &mut DMatrix<T>) {
     let n = l.nrows();
     let ls = l.as_slice();
     let ws = w.as_mut_slice();
@@ -433,18 +439,9 @@ fn inverse_from_cholesky<T: Scalar>(l: &DMatrix<T>, out: &mut DMatrix<T>, w: &mu
             }
         }
     }
-    let os = out.as_mut_slice();
-    for i in 0..n {
-        for k in i..n {
-            let (ci, ck) = (&ws[i * n + k..(i + 1) * n], &ws[k * n + k..(k + 1) * n]);
-            let mut sum = T::zero();
-            for (&a, &b) in ci.iter().zip(ck) {
-                sum += a * b;
-            }
-            os[i + k * n] = sum;
-            os[k + i * n] = sum;
-        }
-    }
+    // M⁻¹ = WᵀW with W = L⁻¹ (a matrix product, through matrixmultiply for f64)
+    w.transpose_to(wt);
+    out.gemm(T::one(), wt, w, T::zero());
 }
 
 impl Model<f64> {

@@ -196,6 +196,8 @@ pub(crate) struct Segment<T: Scalar> {
     pub sub_mass: f64,
     pub sub_trace: f64,
     pub own_reach: f64,
+    /// The placement has no rotation (𝓞_{J/P} = 1 exactly): composing with it is a shift.
+    pub placement_is_shift: bool,
 }
 
 /// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA, generic
@@ -369,6 +371,7 @@ impl Model<f64> {
                     sub_mass,
                     sub_trace,
                     own_reach,
+                    placement_is_shift: placement.E == Matrix3::identity(),
                 });
                 parent = Some(segs.len() - 1);
                 placement = Xform::identity();
@@ -451,6 +454,7 @@ impl Model<f64> {
                     sub_mass: s.sub_mass,
                     sub_trace: s.sub_trace,
                     own_reach: s.own_reach,
+                    placement_is_shift: s.placement_is_shift,
                 })
                 .collect(),
             link_seg: self.link_seg.clone(),
@@ -556,7 +560,13 @@ impl<T: Scalar> Model<T> {
     #[inline(always)]
     pub(crate) fn seg_xform(&self, i: usize, q: &[T]) -> Xform<T> {
         let s = &self.segs[i];
-        s.placement.then(&s.elem.xform(&q[s.qi..]))
+        let j = s.elem.xform(&q[s.qi..]);
+        if s.placement_is_shift {
+            // placement E = 1: placement ∘ joint = (E_joint, r_placement + r_joint)
+            Xform { E: j.E, r: s.placement.r + j.r }
+        } else {
+            s.placement.then(&j)
+        }
     }
 
     /// Link poses: for each link, 𝓞_{link/ground} and r_{link origin/ground origin}|_ground.
