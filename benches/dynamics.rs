@@ -159,6 +159,35 @@ fn dual_derivatives(c: &mut Criterion) {
     g.finish();
 }
 
+/// `VECTRIX_TIME=algo:n:iters`: seven repetitions of `iters` calls, printed like the C++
+/// harness (`benches/peers/pin_chain.cpp`: median, min, max per call), for interleaved runs
+/// beside it on a loaded machine, where the minimum is the steadier figure.
+fn time_driver() -> bool {
+    let Ok(spec) = std::env::var("VECTRIX_TIME") else { return false };
+    let parts: Vec<&str> = spec.split(':').collect();
+    let (algo, n, iters) = (parts[0], parts[1].parse().unwrap(), parts[2].parse::<usize>().unwrap());
+    let mut chain = Chain::new(n);
+    let mut sink = 0.0;
+    let mut t: Vec<f64> = (0..7)
+        .map(|_| {
+            let t0 = std::time::Instant::now();
+            for _ in 0..iters {
+                sink += chain.run(algo);
+            }
+            t0.elapsed().as_secs_f64() / iters as f64
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    println!(
+        "{{\"what\": \"vectrix {algo}\", \"n\": {n}, \"median\": {:.4e}, \"min\": {:.4e}, \"max\": {:.4e}, \"number\": {iters}, \"sink\": {}}}",
+        t[3],
+        t[0],
+        t[6],
+        black_box(sink).is_finite()
+    );
+    true
+}
+
 /// `VECTRIX_ICOUNT=algo:n:iters`: run one algorithm `iters` times and exit (for callgrind).
 fn icount_driver() -> bool {
     let Ok(spec) = std::env::var("VECTRIX_ICOUNT") else { return false };
@@ -271,7 +300,7 @@ fn lagrangian_pendulum(c: &mut Criterion) {
 criterion_group!(benches, tree_algorithms, dual_derivatives, rigid_body_steps, lagrangian_pendulum);
 
 fn main() {
-    if icount_driver() {
+    if icount_driver() || time_driver() {
         return;
     }
     benches();

@@ -3,10 +3,10 @@
 //! (the cross-check of the articulated-body algorithm).
 #![allow(non_snake_case)]
 
-use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Matrix6x3, Vector3, Vector6};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
-use super::model::{Elem, Model};
+use super::model::{Elem, Model, Segment};
 use super::rnea::LinkWrenches;
 use super::spatial::{BodyInertia, Xform, join};
 use crate::DynamicsError;
@@ -25,34 +25,41 @@ pub struct CrbaScratch<T: Scalar = f64> {
 }
 
 /// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
-/// segment whose ground-to-segment transform is `x` (E = 𝓞_{i/G}, origin p): a pin about the
-/// link axis a has S = (u, p × u) with u = Eᵀa; a slider (0, Eᵀa); a ball the three columns
-/// (uₖ, p × uₖ), uₖ = Eᵀeₖ.
+/// segment whose ground-to-segment transform is `x` (E = 𝓞_{i/G}, origin p), written into
+/// `out` (one entry per column): a pin about the link axis a has S = (u, p × u) with u = Eᵀa;
+/// a slider (0, Eᵀa); a ball the three columns (uₖ, p × uₖ), uₖ = Eᵀeₖ.
 #[inline(always)]
-pub(crate) fn world_subspace<T: Scalar>(elem: &Elem<T>, x: &Xform<T>) -> Matrix6x3<T> {
-    let mut s = Matrix6x3::zeros();
-    match elem {
+pub(crate) fn world_subspace<T: Scalar>(seg: &Segment<T>, x: &Xform<T>, out: &mut [Vector6<T>]) {
+    match &seg.elem {
         Elem::Revolute(a) => {
-            let u = x.E.tr_mul(a);
-            s.set_column(0, &join(&u, &x.r.cross(&u)));
+            // Eᵀa: ± a row of E for a coordinate axis
+            let u = match seg.coord_axis {
+                Some((k, false)) => x.E.row(k).transpose(),
+                Some((k, true)) => -x.E.row(k).transpose(),
+                None => x.E.tr_mul(a),
+            };
+            out[0] = join(&u, &x.r.cross(&u));
         }
-        Elem::Prismatic(a) => s.set_column(0, &join(&Vector3::zeros(), &x.E.tr_mul(a))),
+        Elem::Prismatic(a) => out[0] = join(&Vector3::zeros(), &x.E.tr_mul(a)),
         Elem::Spherical => {
-            for k in 0..3 {
+            for (k, o) in out.iter_mut().take(3).enumerate() {
                 let u: Vector3<T> = x.E.row(k).transpose();
-                s.set_column(k, &join(&u, &x.r.cross(&u)));
+                *o = join(&u, &x.r.cross(&u));
             }
         }
         Elem::Fixed => {}
     }
-    s
 }
 
 impl<T: Scalar> Model<T> {
     /// A work space for [`Model::crba_into`].
     pub fn crba_scratch(&self) -> CrbaScratch<T> {
         let n = self.segs.len();
-        CrbaScratch { world: vec![Xform::identity(); n], S: vec![Vector6::zeros(); self.nv], Ic: vec![BodyInertia::zero(); n] }
+        CrbaScratch {
+            world: vec![Xform::identity(); n],
+            S: vec![Vector6::zeros(); self.nv],
+            Ic: vec![BodyInertia::zero(); n],
+        }
     }
 
     /// The joint-space mass matrix H(q) (symmetric, nv × nv) by the composite-rigid-body
@@ -92,16 +99,13 @@ impl<T: Scalar> Model<T> {
         // outward: ground placement of every segment, its S in ground coordinates, and its
         // own inertia about the ground origin
         for (i, seg) in self.segs.iter().enumerate() {
-            let x = self.seg_xform(i, q);
-            let w = match seg.parent {
-                Some(p) => s.world[p].then(&x),
-                None => x,
+            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]));
+            world_subspace(seg, &w, &mut s.S[seg.vi..]);
+            s.Ic[i] = if seg.massless {
+                BodyInertia::zero()
+            } else {
+                BodyInertia::from_centre_in_ground(seg.inertia.m, &seg.com, &seg.j_c, &w.E, &w.r)
             };
-            let sw = world_subspace(&seg.elem, &w);
-            for k in 0..seg.elem.nv() {
-                s.S[seg.vi + k] = sw.column(k).into_owned();
-            }
-            s.Ic[i] = if seg.massless { BodyInertia::zero() } else { seg.inertia.to_world(&w.E, &w.r) };
             s.world[i] = w;
         }
         h.fill(T::zero());

@@ -311,19 +311,17 @@ impl<T: Scalar> Model<T> {
         let minus_g = join(&Vector3::zeros(), &(-self.gravity));
         // outward pass, ground coordinates: placement, J, v, a (with −g), composite seeds
         for (i, seg) in self.segs.iter().enumerate() {
-            let x = self.seg_xform(i, q);
-            let (w, ov_p, oa_p) = match seg.parent {
-                Some(p) => (s.world[p].then(&x), s.ov[p], s.oa[p]),
-                None => (x, Vector6::zeros(), minus_g),
+            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]));
+            let (ov_p, oa_p) = match seg.parent {
+                Some(p) => (s.ov[p], s.oa[p]),
+                None => (Vector6::zeros(), minus_g),
             };
-            let J = world_subspace(&seg.elem, &w);
+            world_subspace(seg, &w, &mut s.J[seg.vi..]);
             let cols = seg.vi..seg.vi + seg.elem.nv();
             let (mut jv, mut ja) = (Vector6::zeros(), Vector6::zeros());
-            for (k, c) in cols.clone().enumerate() {
-                let Jk: Vector6<T> = J.column(k).into_owned();
-                jv += Jk * v[c];
-                ja += Jk * vdot[c];
-                s.J[c] = Jk;
+            for c in cols.clone() {
+                jv += s.J[c] * v[c];
+                ja += s.J[c] * vdot[c];
             }
             // vᵢ = vλ + J q̇, aᵢ = aλ + J q̈ + vᵢ × J q̇
             let ov = ov_p + jv;
@@ -342,7 +340,7 @@ impl<T: Scalar> Model<T> {
                 s.Bc[i] = Variation::zero();
                 s.Fc[i] = Vector6::zeros();
             } else {
-                let Y = seg.inertia.to_world(&w.E, &w.r);
+                let Y = BodyInertia::from_centre_in_ground(seg.inertia.m, &seg.com, &seg.j_c, &w.E, &w.r);
                 let (ow, ovl) = split(&ov);
                 let h = Y.apply6(&ov);
                 s.Fc[i] = Y.apply6(&oa) + cross_force6(&ov, &h);
@@ -367,7 +365,8 @@ impl<T: Scalar> Model<T> {
         out.dtau_dq.fill(T::zero());
         out.dtau_dv.fill(T::zero());
         out.mass_matrix.fill(T::zero());
-        let (dq, dv, mm) = (out.dtau_dq.as_mut_slice(), out.dtau_dv.as_mut_slice(), out.mass_matrix.as_mut_slice());
+        let (dq, dv, mm) =
+            (out.dtau_dq.as_mut_slice(), out.dtau_dv.as_mut_slice(), out.mass_matrix.as_mut_slice());
         // inward pass
         for i in (0..self.segs.len()).rev() {
             let seg = &self.segs[i];
@@ -423,7 +422,12 @@ fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
 /// M⁻¹ = L⁻ᵀ L⁻¹ from the Cholesky factor L (lower; its strict upper part is ignored), into
 /// `out`, with `w` (n × n) holding L⁻¹ and `wt` its transpose: forward substitution of each
 /// unit vector from its own row on (L⁻¹ is lower triangular), then M⁻¹ = (L⁻¹)ᵀL⁻¹.
-fn inverse_from_cholesky<T: Scalar>(l: &DMatrix<T>, out: &mut DMatrix<T>, w: &mut DMatrix<T>, wt: &mut DMatrix<T>) {
+fn inverse_from_cholesky<T: Scalar>(
+    l: &DMatrix<T>,
+    out: &mut DMatrix<T>,
+    w: &mut DMatrix<T>,
+    wt: &mut DMatrix<T>,
+) {
     let n = l.nrows();
     let ls = l.as_slice();
     let ws = w.as_mut_slice();

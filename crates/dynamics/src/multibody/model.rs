@@ -153,6 +153,21 @@ impl<T: Scalar> Elem<T> {
                 // passive rotation about a by θ: E = 𝓡(a, θ)ᵀ = c 1 − s a^× + (1 − c) a aᵀ
                 // (Rodrigues (2.11.1), transposed)
                 let (s, c) = q[0].sin_cos();
+                let (o, z0) = (T::one(), T::zero());
+                // about a coordinate axis (±x̂, ±ŷ, ±ẑ): the same matrix with its zeros and
+                // ones exact, and 30 fewer operations
+                if a.y == z0 && a.z == z0 {
+                    let s = s * a.x;
+                    return Xform { E: Matrix3::new(o, z0, z0, z0, c, s, z0, -s, c), r: Vector3::zeros() };
+                }
+                if a.x == z0 && a.z == z0 {
+                    let s = s * a.y;
+                    return Xform { E: Matrix3::new(c, z0, -s, z0, o, z0, s, z0, c), r: Vector3::zeros() };
+                }
+                if a.x == z0 && a.y == z0 {
+                    let s = s * a.z;
+                    return Xform { E: Matrix3::new(c, s, z0, -s, c, z0, z0, z0, o), r: Vector3::zeros() };
+                }
                 let k = T::one() - c;
                 let (x, y, z) = (a.x, a.y, a.z);
                 let e = Matrix3::new(
@@ -188,6 +203,9 @@ pub(crate) struct Segment<T: Scalar> {
     pub qi: usize,
     pub vi: usize,
     pub inertia: BodyInertia<T>,
+    /// The same body as mass m (in `inertia`), centre c and J_c, link components.
+    pub com: Vector3<T>,
+    pub j_c: Matrix3<T>,
     /// Zero mass and zero inertia (intermediate segments of compound joints, massless links).
     pub massless: bool,
     /// Scales for ABA's singularity tests (real numbers, configuration-independent): the
@@ -198,6 +216,8 @@ pub(crate) struct Segment<T: Scalar> {
     pub own_reach: f64,
     /// The placement has no rotation (𝓞_{J/P} = 1 exactly): composing with it is a shift.
     pub placement_is_shift: bool,
+    /// A pin or slider along a coordinate axis: (axis index, negative direction).
+    pub coord_axis: Option<(usize, bool)>,
 }
 
 /// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA, generic
@@ -264,6 +284,13 @@ fn elems(joint: &Joint, link: usize) -> Result<Vec<Elem<f64>>, DynamicsError> {
             Elem::Spherical,
         ],
     })
+}
+
+/// For a pin or slider whose unit axis is ±x̂, ±ŷ or ±ẑ exactly: the axis index and whether
+/// it points the negative way.
+fn coordinate_axis(elem: &Elem<f64>) -> Option<(usize, bool)> {
+    let (Elem::Revolute(a) | Elem::Prismatic(a)) = elem else { return None };
+    (0..3).find(|&k| a[(k + 1) % 3] == 0.0 && a[(k + 2) % 3] == 0.0).map(|k| (k, a[k] < 0.0))
 }
 
 /// Parents before children; errors for missing parents and cycles.
@@ -355,6 +382,7 @@ impl Model<f64> {
                     q_neutral[qi] = 1.0;
                 }
                 let massless = inertia == BodyInertia::zero();
+                let (com, j_c) = if last { (l.com, l.inertia) } else { (Vector3::zeros(), Matrix3::zeros()) };
                 let (sub_mass, sub_trace, own_reach) = if last {
                     (l.mass, l.inertia.trace(), if l.mass > 0.0 { l.com.norm() } else { 0.0 })
                 } else {
@@ -367,11 +395,14 @@ impl Model<f64> {
                     qi,
                     vi,
                     inertia,
+                    com,
+                    j_c,
                     massless,
                     sub_mass,
                     sub_trace,
                     own_reach,
                     placement_is_shift: placement.E == Matrix3::identity(),
+                    coord_axis: coordinate_axis(elem),
                 });
                 parent = Some(segs.len() - 1);
                 placement = Xform::identity();
@@ -450,11 +481,14 @@ impl Model<f64> {
                     qi: s.qi,
                     vi: s.vi,
                     inertia: s.inertia.cast(),
+                    com: s.com.map(U::lit),
+                    j_c: s.j_c.map(U::lit),
                     massless: s.massless,
                     sub_mass: s.sub_mass,
                     sub_trace: s.sub_trace,
                     own_reach: s.own_reach,
                     placement_is_shift: s.placement_is_shift,
+                    coord_axis: s.coord_axis,
                 })
                 .collect(),
             link_seg: self.link_seg.clone(),
@@ -569,6 +603,35 @@ impl<T: Scalar> Model<T> {
         }
     }
 
+    /// Ground-to-segment transform of segment i from its parent's (`None` at the root):
+    /// parent ∘ placement ∘ joint. A pin about a coordinate axis behind a placement without
+    /// rotation mixes two rows of the parent's orientation (12 products instead of 27).
+    #[inline(always)]
+    pub(crate) fn world_xform(&self, i: usize, q: &[T], parent: Option<&Xform<T>>) -> Xform<T> {
+        let s = &self.segs[i];
+        if let (Some(p), true, Elem::Revolute(_), Some((axis, negative))) =
+            (parent, s.placement_is_shift, &s.elem, s.coord_axis)
+        {
+            let (sn, c) = q[s.qi].sin_cos();
+            let sn = if negative { -sn } else { sn };
+            let r = p.r + p.E.tr_mul(&s.placement.r);
+            // 𝓞_{i/G} = 𝓞_k(θ) 𝓞_{p/G}: rows (i1, i2) turn by θ, the axis row stays
+            let (i1, i2) = [(1, 2), (2, 0), (0, 1)][axis];
+            let mut e = p.E;
+            for col in 0..3 {
+                let (a1, a2) = (p.E[(i1, col)], p.E[(i2, col)]);
+                e[(i1, col)] = c * a1 + sn * a2;
+                e[(i2, col)] = c * a2 - sn * a1;
+            }
+            return Xform { E: e, r };
+        }
+        let x = self.seg_xform(i, q);
+        match parent {
+            Some(p) => p.then(&x),
+            None => x,
+        }
+    }
+
     /// Link poses: for each link, 𝓞_{link/ground} and r_{link origin/ground origin}|_ground.
     ///
     /// Book: §2.22 (chains), (2.10.46) composition.
@@ -586,11 +649,7 @@ impl<T: Scalar> Model<T> {
     pub(crate) fn world_xforms(&self, q: &[T]) -> Vec<Xform<T>> {
         let mut world: Vec<Xform<T>> = Vec::with_capacity(self.segs.len());
         for (i, s) in self.segs.iter().enumerate() {
-            let x = self.seg_xform(i, q);
-            let w = match s.parent {
-                Some(p) => world[p].then(&x),
-                None => x,
-            };
+            let w = self.world_xform(i, q, s.parent.map(|p| &world[p]));
             world.push(w);
         }
         world

@@ -134,22 +134,28 @@ impl<T: Scalar> BodyInertia<T> {
         self.I += o.I;
     }
 
-    /// The inertia about the ground origin, components in the ground frame, of a body whose
-    /// frame has orientation E = 𝓞_{B/G} (passive; R = Eᵀ has the body axes as columns) and
-    /// origin p: h' = m p + R h, Ī' = R Ī Rᵀ − m p^×p^× − p^×(Rh)^× − (Rh)^×p^× (parallel
-    /// axes, book (6.4.x)).
+    /// The inertia about the ground origin, components in the ground frame, of a body of mass
+    /// m with centre c and J_c (link components) whose frame has orientation E = 𝓞_{B/G}
+    /// (passive; R = Eᵀ has the body axes as columns) and origin p: with c' = p + Rc,
+    /// Ī' = R J_c Rᵀ + m(|c'|² 1 − c'c'ᵀ) (parallel axes, book (6.4.x)), h' = m c'.
     #[inline(always)]
-    pub fn to_world(&self, E: &Matrix3<T>, p: &Vector3<T>) -> BodyInertia<T> {
-        let g = E.tr_mul(&self.h);
-        let rot = E.tr_mul(&(self.I * E));
-        // −a^×b^× = (a·b) 1 − b aᵀ, so the shift is (m|p|² + 2p·g) 1 − m p pᵀ − g pᵀ − p gᵀ
-        let mp = p * self.m;
-        let d = mp.dot(p) + (g.dot(p) + g.dot(p));
-        let mut I = rot - (mp + g) * p.transpose() - p * g.transpose();
-        I[(0, 0)] += d;
-        I[(1, 1)] += d;
-        I[(2, 2)] += d;
-        BodyInertia { m: self.m, h: mp + g, I }
+    pub fn from_centre_in_ground(
+        m: T,
+        c: &Vector3<T>,
+        j_c: &Matrix3<T>,
+        E: &Matrix3<T>,
+        p: &Vector3<T>,
+    ) -> Self {
+        let cw = p + E.tr_mul(c);
+        // R J_c Rᵀ = Eᵀ(J_c E), symmetric: six entries (column i of E · column k of J_c E)
+        let je = j_c * E;
+        let d = |i: usize, k: usize| E[(0, i)] * je[(0, k)] + E[(1, i)] * je[(1, k)] + E[(2, i)] * je[(2, k)];
+        let mc = cw * m;
+        let s = mc.dot(&cw);
+        let (a01, a02, a12) = (d(0, 1) - mc.x * cw.y, d(0, 2) - mc.x * cw.z, d(1, 2) - mc.y * cw.z);
+        let (a00, a11, a22) =
+            (d(0, 0) + s - mc.x * cw.x, d(1, 1) + s - mc.y * cw.y, d(2, 2) + s - mc.z * cw.z);
+        Self { m, h: mc, I: Matrix3::new(a00, a01, a02, a01, a11, a12, a02, a12, a22) }
     }
 
     pub fn matrix(&self) -> Matrix6<T> {
@@ -248,14 +254,12 @@ mod tests {
     fn to_world_matches_transformed_inertia() {
         let e = nalgebra::Rotation3::from_scaled_axis(Vector3::new(-0.4, 0.9, 0.2)).into_inner();
         let p = Vector3::new(0.7, -1.1, 0.35);
-        let body = BodyInertia::from_centre(
-            2.1,
-            &Vector3::new(-0.2, 0.3, 0.15),
-            &Matrix3::new(1.0, 0.05, -0.1, 0.05, 1.5, 0.02, -0.1, 0.02, 0.8),
-        );
+        let (c, j) =
+            (Vector3::new(-0.2, 0.3, 0.15), Matrix3::new(1.0, 0.05, -0.1, 0.05, 1.5, 0.02, -0.1, 0.02, 0.8));
+        let body = BodyInertia::from_centre(2.1, &c, &j);
         let x = Xform { E: e, r: p };
         let want = x.inertia_to_parent(&body.matrix());
-        let got = body.to_world(&e, &p).matrix();
+        let got = BodyInertia::from_centre_in_ground(2.1, &c, &j, &e, &p).matrix();
         assert!((got - want).norm() < 1e-14 * want.norm(), "{}", (got - want).norm());
     }
 }
