@@ -415,12 +415,9 @@ fn generic_scalar_dual_numbers_through_the_tree_algorithms() {
             v1[k].eps = 1.0;
         }
         let a1 = d1.aba(&lift(&q), &v1, &t1, None).unwrap();
-        for r in 0..n {
-            let got = a3[r]
-                .eps
-                .clone()
-                .unwrap_generic(vectrix::nalgebra::Const::<3>, vectrix::nalgebra::Const::<1>)[d];
-            assert_abs(got, a1[r].eps, 16.0 * EPS * (1.0 + a1[r].eps.abs()));
+        for (a3r, a1r) in a3.iter().zip(&a1) {
+            let got = a3r.eps.unwrap_generic(vectrix::nalgebra::Const::<3>, vectrix::nalgebra::Const::<1>)[d];
+            assert_abs(got, a1r.eps, 16.0 * EPS * (1.0 + a1r.eps.abs()));
         }
     }
     // f32 runs the same algorithms (single precision: ~1e-5 of the f64 result)

@@ -176,7 +176,8 @@ pub(crate) fn mass_cholesky<T: Scalar>(m: DMatrix<T>) -> Result<Cholesky<T, Dyn>
     let bound = MASS_PIVOT_REL_TOL * r as f64 * scale;
     for k in 0..r {
         let pivot = (l[(k, k)] * l[(k, k)]).re();
-        if !(pivot > bound) {
+        // (a NaN pivot fails too)
+        if pivot.partial_cmp(&bound) != Some(std::cmp::Ordering::Greater) {
             return Err(DynamicsError::SingularMassMatrix {
                 detail: format!("pivot {k} is {pivot:e}, at or below {bound:e} = 64 n ε max Mᵢᵢ"),
             });

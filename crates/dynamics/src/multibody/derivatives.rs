@@ -569,22 +569,22 @@ mod tests {
         for k in 0..m.nv() {
             let qk = seeded(&m, &q, k);
             let t = dual.rnea(&qk, &lift(&v), &lift(&a), Some(&fd)).unwrap().tau;
-            for r in 0..m.nv() {
+            for (r, tr) in t.iter().enumerate() {
                 assert!(
-                    (t[r].eps - d.dtau_dq[(r, k)]).abs() <= 1e-13 * scale,
+                    (tr.eps - d.dtau_dq[(r, k)]).abs() <= 1e-13 * scale,
                     "dq ({r},{k}): {} vs {}",
-                    t[r].eps,
+                    tr.eps,
                     d.dtau_dq[(r, k)]
                 );
             }
             let mut vk = lift(&v);
             vk[k].eps = 1.0;
             let t = dual.rnea(&lift(&q), &vk, &lift(&a), Some(&fd)).unwrap().tau;
-            for r in 0..m.nv() {
+            for (r, tr) in t.iter().enumerate() {
                 assert!(
-                    (t[r].eps - d.dtau_dv[(r, k)]).abs() <= 1e-13 * scale,
+                    (tr.eps - d.dtau_dv[(r, k)]).abs() <= 1e-13 * scale,
                     "dv ({r},{k}): {} vs {}",
-                    t[r].eps,
+                    tr.eps,
                     d.dtau_dv[(r, k)]
                 );
             }
@@ -605,20 +605,20 @@ mod tests {
         for k in 0..m.nv() {
             let qk = seeded(&m, &q, k);
             let a = dual.aba(&qk, &lift(&v), &lift(&tau), Some(&fd)).unwrap();
-            for r in 0..m.nv() {
-                assert!((a[r].eps - d.dvdot_dq[(r, k)]).abs() <= 1e-12 * scale, "dq ({r},{k})");
+            for (r, ar) in a.iter().enumerate() {
+                assert!((ar.eps - d.dvdot_dq[(r, k)]).abs() <= 1e-12 * scale, "dq ({r},{k})");
             }
             let mut vk = lift(&v);
             vk[k].eps = 1.0;
             let a = dual.aba(&lift(&q), &vk, &lift(&tau), Some(&fd)).unwrap();
-            for r in 0..m.nv() {
-                assert!((a[r].eps - d.dvdot_dv[(r, k)]).abs() <= 1e-12 * scale, "dv ({r},{k})");
+            for (r, ar) in a.iter().enumerate() {
+                assert!((ar.eps - d.dvdot_dv[(r, k)]).abs() <= 1e-12 * scale, "dv ({r},{k})");
             }
             let mut tk = lift(&tau);
             tk[k].eps = 1.0;
             let a = dual.aba(&lift(&q), &lift(&v), &tk, Some(&fd)).unwrap();
-            for r in 0..m.nv() {
-                assert!((a[r].eps - d.dvdot_dtau[(r, k)]).abs() <= 1e-12 * scale, "dτ ({r},{k})");
+            for (r, ar) in a.iter().enumerate() {
+                assert!((ar.eps - d.dvdot_dtau[(r, k)]).abs() <= 1e-12 * scale, "dτ ({r},{k})");
             }
         }
     }

@@ -34,12 +34,15 @@ impl<T: Scalar> LinkTwist<T> {
     }
 }
 
+/// A twist (ω, v) in body components.
+type BodyTwist<T> = (Vector3<T>, Vector3<T>);
+
 impl<T: Scalar> Model<T> {
-    /// Body-frame twists (ω, v) of every segment and the segment transforms (outward pass).
-    fn body_twists(&self, q: &[T], v: &[T]) -> (Vec<Xform<T>>, Vec<(Vector3<T>, Vector3<T>)>) {
+    /// Body-frame twists (ω, v) of every segment and the ground-to-segment transforms.
+    fn body_twists(&self, q: &[T], v: &[T]) -> (Vec<Xform<T>>, Vec<BodyTwist<T>>) {
         let n = self.segs.len();
         let mut world: Vec<Xform<T>> = Vec::with_capacity(n);
-        let mut tw: Vec<(Vector3<T>, Vector3<T>)> = Vec::with_capacity(n);
+        let mut tw: Vec<BodyTwist<T>> = Vec::with_capacity(n);
         for (i, seg) in self.segs.iter().enumerate() {
             let x = self.seg_xform(i, q);
             let (wp, vp, xw) = match seg.parent {

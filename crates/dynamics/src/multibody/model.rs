@@ -573,7 +573,7 @@ impl<T: Scalar> Model<T> {
         for s in &self.segs {
             if s.elem == Elem::Spherical {
                 let n = q[s.qi..s.qi + 4].iter().map(|x| x.re() * x.re()).sum::<f64>().sqrt();
-                if !(n >= 1e-6 && n <= 1e150) {
+                if !(1e-6..=1e150).contains(&n) {
                     return Err(DynamicsError::InvalidParameter {
                         what: "ball-joint quaternion norm",
                         value: n,

@@ -34,7 +34,7 @@ pub(crate) fn psd_pinv3<T: Scalar>(d: &Matrix3<T>, tol: f64) -> (Matrix3<T>, Mat
                 (j, best) = (i, a[(i, i)].re());
             }
         }
-        if !(best > tol) {
+        if best.partial_cmp(&tol) != Some(std::cmp::Ordering::Greater) {
             break;
         }
         if j != k {
