@@ -159,13 +159,27 @@ fn dual_derivatives(c: &mut Criterion) {
     g.finish();
 }
 
+/// `algo:n:iters` from an environment variable of the drivers below.
+fn driver_spec(var: &str) -> Option<(String, usize, usize)> {
+    let spec = std::env::var(var).ok()?;
+    let parts: Vec<&str> = spec.split(':').collect();
+    let bad = || panic!("{var} must be algo:n:iters, got {spec}");
+    if parts.len() != 3 {
+        bad();
+    }
+    Some((
+        parts[0].to_string(),
+        parts[1].parse().unwrap_or_else(|_| bad()),
+        parts[2].parse().unwrap_or_else(|_| bad()),
+    ))
+}
+
 /// `VECTRIX_TIME=algo:n:iters`: seven repetitions of `iters` calls, printed like the C++
 /// harness (`benches/peers/pin_chain.cpp`: median, min, max per call), for interleaved runs
 /// beside it on a loaded machine, where the minimum is the steadier figure.
 fn time_driver() -> bool {
-    let Ok(spec) = std::env::var("VECTRIX_TIME") else { return false };
-    let parts: Vec<&str> = spec.split(':').collect();
-    let (algo, n, iters) = (parts[0], parts[1].parse().unwrap(), parts[2].parse::<usize>().unwrap());
+    let Some((algo, n, iters)) = driver_spec("VECTRIX_TIME") else { return false };
+    let algo = algo.as_str();
     let mut chain = Chain::new(n);
     let mut sink = 0.0;
     let mut t: Vec<f64> = (0..7)
@@ -190,9 +204,8 @@ fn time_driver() -> bool {
 
 /// `VECTRIX_ICOUNT=algo:n:iters`: run one algorithm `iters` times and exit (for callgrind).
 fn icount_driver() -> bool {
-    let Ok(spec) = std::env::var("VECTRIX_ICOUNT") else { return false };
-    let parts: Vec<&str> = spec.split(':').collect();
-    let (algo, n, iters) = (parts[0], parts[1].parse().unwrap(), parts[2].parse::<usize>().unwrap());
+    let Some((algo, n, iters)) = driver_spec("VECTRIX_ICOUNT") else { return false };
+    let algo = algo.as_str();
     let mut chain = Chain::new(n);
     let mut sink = 0.0;
     for _ in 0..iters {

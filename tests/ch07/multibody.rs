@@ -278,6 +278,31 @@ fn point_mass_on_free_joint_is_exact() {
     }
 }
 
+/// A pin about ẑ at the ground origin carrying a link of zero mass and inertia.
+fn massless_pin() -> Link {
+    Link::new(
+        None,
+        Joint::Pin { axis: Vector3::z() },
+        Vector3::zeros(),
+        0.0,
+        Vector3::zeros(),
+        Matrix3::zeros(),
+    )
+}
+
+/// A rigid link on a pin about ẑ at (l1, 0, 0) of link 0: mass m, centre at c along x̂,
+/// J_zz = jz about the centre.
+fn rod_on_pin(l1: f64, m: f64, c: f64, jz: f64) -> Link {
+    Link::new(
+        Some(0),
+        Joint::Pin { axis: Vector3::z() },
+        Vector3::new(l1, 0.0, 0.0),
+        m,
+        Vector3::new(c, 0.0, 0.0),
+        Matrix3::from_diagonal(&Vector3::new(0.01, jz, jz)),
+    )
+}
+
 /// The two-link pendulum with a massless first link (zero mass and inertia between two pins)
 /// and a rigid second link (mass m, centre at c along it, J about the centre), gravity −g ŷ,
 /// relative angles (θ1, θ2): the closed form of the textbook two-link arm,
@@ -287,23 +312,7 @@ fn point_mass_on_free_joint_is_exact() {
 #[test]
 fn massless_intermediate_link_matches_two_link_closed_form() {
     let (l1, m, c, jz, g) = (0.7, 1.9, 0.35, 0.05, 9.81);
-    let first = Link::new(
-        None,
-        Joint::Pin { axis: Vector3::z() },
-        Vector3::zeros(),
-        0.0,
-        Vector3::zeros(),
-        Matrix3::zeros(),
-    );
-    let second = Link::new(
-        Some(0),
-        Joint::Pin { axis: Vector3::z() },
-        Vector3::new(l1, 0.0, 0.0),
-        m,
-        Vector3::new(c, 0.0, 0.0),
-        Matrix3::from_diagonal(&Vector3::new(0.01, jz, jz)),
-    );
-    let mut model = Model::new(&[first, second]).unwrap();
+    let mut model = Model::new(&[massless_pin(), rod_on_pin(l1, m, c, jz)]).unwrap();
     model.gravity = Vector3::new(0.0, -g, 0.0);
     let mut seed = 3u64;
     for _ in 0..200 {
@@ -332,23 +341,7 @@ fn massless_intermediate_link_matches_two_link_closed_form() {
 #[test]
 fn coaxial_pins_with_massless_link_are_exact() {
     let (m, c, jz, g) = (1.2, 0.4, 0.03, 9.81);
-    let first = Link::new(
-        None,
-        Joint::Pin { axis: Vector3::z() },
-        Vector3::zeros(),
-        0.0,
-        Vector3::zeros(),
-        Matrix3::zeros(),
-    );
-    let second = Link::new(
-        Some(0),
-        Joint::Pin { axis: Vector3::z() },
-        Vector3::zeros(),
-        m,
-        Vector3::new(c, 0.0, 0.0),
-        Matrix3::from_diagonal(&Vector3::new(0.01, jz, jz)),
-    );
-    let mut model = Model::new(&[first, second]).unwrap();
+    let mut model = Model::new(&[massless_pin(), rod_on_pin(0.0, m, c, jz)]).unwrap();
     model.gravity = Vector3::new(0.0, -g, 0.0);
     let (t1, t2, tau) = (0.4, -1.1, 0.7);
     let a = model.aba(&[t1, t2], &[0.5, -0.3], &[tau, tau], None).unwrap();
