@@ -147,8 +147,20 @@ impl<T: Scalar> BodyInertia<T> {
         p: &Vector3<T>,
     ) -> Self {
         let cw = p + E.tr_mul(c);
-        // R J_c Rᵀ = Eᵀ(J_c E), symmetric: six entries (column i of E · column k of J_c E)
-        let je = j_c * E;
+        // R J_c Rᵀ = Eᵀ(J_c E), symmetric: six entries (column i of E · column k of J_c E);
+        // a diagonal J_c (principal link axes) scales the rows of E
+        let je = if j_c[(0, 1)] == T::zero() && j_c[(0, 2)] == T::zero() && j_c[(1, 2)] == T::zero() {
+            let mut je = *E;
+            for r in 0..3 {
+                let l = j_c[(r, r)];
+                for k in 0..3 {
+                    je[(r, k)] *= l;
+                }
+            }
+            je
+        } else {
+            j_c * E
+        };
         let d = |i: usize, k: usize| E[(0, i)] * je[(0, k)] + E[(1, i)] * je[(1, k)] + E[(2, i)] * je[(2, k)];
         let mc = cw * m;
         let s = mc.dot(&cw);
