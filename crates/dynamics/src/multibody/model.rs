@@ -14,17 +14,17 @@ use crate::error::check_finite;
 
 /// A joint between a link and its parent (book Table 1.3 and §1.5: pin, sleeve, collar,
 /// slot, ball; plus weld and free). Axes and directions are components in the joint frame,
-/// which is placed in the parent link by [`Link::placement`].
+/// which is placed in the parent link by [`Link::offset`] and [`Link::orientation`].
 ///
 /// Book: §1.5 (the five joint types), Table 1.3.
 ///
 /// # Conventions
 /// Coordinates q (and velocities v) per joint:
-/// * `Pin` – rotation θ about `axis` (right-hand rule): q = [θ], v = [θ̇].
-/// * `Sleeve` – translation s along `axis`: q = [s].
-/// * `Collar` – translation s along `axis`, then rotation θ about the same axis: q = [s, θ].
+/// * `Pin` – rotation θ about `axis` (right-hand rule): q = (θ), v = (θ̇).
+/// * `Sleeve` – translation s along `axis`: q = (s).
+/// * `Collar` – translation s along `axis`, then rotation θ about the same axis: q = (s, θ).
 /// * `Slot` – translation s along `direction` (a groove in the parent), then rotation θ about
-///   `axis` ⊥ `direction` (the pin): q = [s, θ].
+///   `axis` ⊥ `direction` (the pin): q = (s, θ).
 /// * `Ball` – attitude as a unit quaternion (η, ε₁, ε₂, ε₃) of the link relative to the joint
 ///   frame, scalar first: q has 4 entries, v = ω_{link/joint} resolved in the link (3).
 /// * `Weld` – no coordinates.
