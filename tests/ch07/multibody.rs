@@ -139,7 +139,7 @@ fn hard_case_huge_velocity_is_an_overflow_error() {
 /// acceleration (a typed error), and without a torque its coordinate is inert (v̇ = 0), while
 /// the mass matrix is singular and CRBA + Cholesky says so.
 #[test]
-fn massless_leaf_is_inert() {
+fn section_7_11_massless_leaf_is_inert() {
     let mut l = body(None, Joint::Pin { axis: Vector3::z() }, [0.0; 3]);
     l.mass = 0.0;
     l.inertia = Matrix3::zeros();
@@ -184,7 +184,7 @@ pub fn pendulum_motion(model: &Model, q: &[f64], w: &Vector3<f64>, l: f64) -> [V
 /// φ̈ = −2 cot θ θ̇ φ̇; in Cartesian form (valid at the poles too) p̈ = g − (g·p̂)p̂ − (|ṗ|²/L²) p.
 /// The spin about the rod carries no inertia and gets ω̇·ê = 0.
 #[test]
-fn spherical_pendulum_matches_closed_form() {
+fn section_7_11_spherical_pendulum_matches_closed_form() {
     let (m, l, g) = (1.3, 0.8, 9.81);
     let model = spherical_pendulum(m, l, g);
     let gv = Vector3::new(0.0, 0.0, -g);
@@ -227,7 +227,7 @@ fn spherical_pendulum_matches_closed_form() {
 /// The spherical pendulum cannot take a torque about its own rod (infinite acceleration):
 /// typed error; a torque perpendicular to the rod is fine.
 #[test]
-fn spherical_pendulum_refuses_torque_about_the_rod() {
+fn section_7_11_spherical_pendulum_refuses_torque_about_the_rod() {
     let model = spherical_pendulum(1.0, 0.5, 9.81);
     let q = [1.0, 0.0, 0.0, 0.0];
     let err = model.aba(&q, &[0.0; 3], &[0.0, 0.0, 0.2], None).unwrap_err();
@@ -242,7 +242,7 @@ fn spherical_pendulum_refuses_torque_about_the_rod() {
 /// particle off the link origin (at c), its own acceleration is still g + F/m:
 /// p̈ = ẍ + R(ω̇ × c + ω × (ω × c)).
 #[test]
-fn point_mass_on_free_joint_is_exact() {
+fn section_7_11_point_mass_on_free_joint_is_exact() {
     let g = Vector3::new(0.5, -1.0, -9.81);
     for c in [Vector3::zeros(), Vector3::new(0.3, -0.2, 0.4)] {
         let link = Link::new(None, Joint::Free, Vector3::zeros(), 2.0, c, Matrix3::zeros());
@@ -310,7 +310,7 @@ fn rod_on_pin(l1: f64, m: f64, c: f64, jz: f64) -> Link {
 /// C = h(−2θ̇1θ̇2 − θ̇2², θ̇1²) with h = m l1 c sin θ2, G = m g (l1 cos θ1 + c cos θ12, c cos θ12),
 /// M q̈ = τ − C − G (solved here by Cramer's rule).
 #[test]
-fn massless_intermediate_link_matches_two_link_closed_form() {
+fn section_7_11_massless_intermediate_link_matches_two_link_closed_form() {
     let (l1, m, c, jz, g) = (0.7, 1.9, 0.35, 0.05, 9.81);
     let mut model = Model::new(&[massless_pin(), rod_on_pin(l1, m, c, jz)]).unwrap();
     model.gravity = Vector3::new(0.0, -g, 0.0);
@@ -339,7 +339,7 @@ fn massless_intermediate_link_matches_two_link_closed_form() {
 /// single pendulum about the common axis; the massless link transmits torque unchanged, so
 /// τ₁ = τ₂ is required, and τ₁ ≠ τ₂ (an infinite acceleration) is refused.
 #[test]
-fn coaxial_pins_with_massless_link_are_exact() {
+fn section_7_11_coaxial_pins_with_massless_link_are_exact() {
     let (m, c, jz, g) = (1.2, 0.4, 0.03, 9.81);
     let mut model = Model::new(&[massless_pin(), rod_on_pin(0.0, m, c, jz)]).unwrap();
     model.gravity = Vector3::new(0.0, -g, 0.0);
@@ -429,10 +429,11 @@ fn generic_scalar_dual_numbers_through_the_tree_algorithms() {
     assert_rel_to_max(&got, &a64, 1e-4);
 }
 
-/// §8 (work–energy, (8.3.x)): along the motion, d(T + V)/dt = τᵀv. Differentiated exactly by
-/// one `Dual64` pass: the state (q ⊕ ε v, v + ε v̇) with v̇ from ABA.
+/// Fact 8.4.1 (E = T + U is conserved when every force is potential), with the joint forces
+/// τ as the only non-potential ones: d(T + U)/dt = τᵀv along the motion (work (8.2.1)).
+/// Differentiated exactly by one `Dual64` pass: the state (q ⊕ ε v, v + ε v̇), v̇ from ABA.
 #[test]
-fn energy_rate_equals_power_of_joint_forces() {
+fn fact_8_4_1_energy_rate_equals_power_of_joint_forces() {
     let model = all_joints_tree();
     let (q, v, tau) = all_joints_state(&model);
     let a = model.aba(&q, &v, &tau, None).unwrap();
@@ -449,10 +450,10 @@ fn energy_rate_equals_power_of_joint_forces() {
     assert_abs(rate, power, 256.0 * EPS * scale);
 }
 
-/// Link twists: the ground-frame velocity of a link origin is the transport-theorem sum along
-/// the chain, and ½ Σ (m|v_c|² + ωᵀJ_cω) over links is the kinetic energy (§8.1).
+/// (8.1.19): T = ½ Σ (m|v_c|² + ωᵀJ_cω) over the links, with v_c = v + ω × r_{c/origin} from
+/// the link twists (transport theorem), equals the tree's kinetic energy ½ Σ 𝒱ᵀ𝒥𝒱.
 #[test]
-fn twists_give_the_kinetic_energy() {
+fn eq_8_1_19_twists_give_the_kinetic_energy() {
     let model = all_joints_tree();
     let (q, v, _) = all_joints_state(&model);
     let tw = model.twists(&q, &v).unwrap();

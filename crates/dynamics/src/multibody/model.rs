@@ -468,6 +468,26 @@ impl Model<f64> {
     /// state (or the model's public `gravity`) to differentiate.
     ///
     /// Book: DESIGN §1.4; §7.11.
+    ///
+    /// # Examples
+    /// Time derivatives along the motion, exactly: seed the state (q ⊕ ε v, v + ε v̇) and read
+    /// the ε-parts. Here the angular acceleration of the first link of a chain is v̇₀ ẑ.
+    /// ```
+    /// use num_dual::Dual64;
+    /// use vectrix_dynamics::multibody::Model;
+    ///
+    /// let model = Model::revolute_chain(3, 1.0, 0.5).unwrap();
+    /// let (q, v) = (vec![0.1, 0.2, 0.3], vec![1.0, -0.5, 0.2]);
+    /// let vdot = model.aba(&q, &v, &[0.0; 3], None).unwrap();
+    /// let d = model.cast::<Dual64>();
+    /// let q0: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
+    /// let step: Vec<Dual64> = v.iter().map(|&x| Dual64::new(0.0, x)).collect();
+    /// let qe = d.integrate(&q0, &step, Dual64::from(1.0)).unwrap();
+    /// let ve: Vec<Dual64> = v.iter().zip(&vdot).map(|(&x, &a)| Dual64::new(x, a)).collect();
+    /// let twists = d.twists(&qe, &ve).unwrap();
+    /// let alpha = twists[0].omega.map(|x| x.eps);
+    /// assert!((alpha - nalgebra::Vector3::new(0.0, 0.0, vdot[0])).norm() < 1e-14);
+    /// ```
     #[doc(alias = "to_dual")]
     pub fn cast<U: Scalar>(&self) -> Model<U> {
         Model {
