@@ -153,6 +153,36 @@ fn section_7_11_massless_leaf_is_inert() {
     ));
 }
 
+/// Degenerate trees: no links, and weld-only links (no coordinates): every algorithm returns
+/// empty results instead of failing, and the weld-only tree still has poses and a weight.
+#[test]
+fn hard_case_empty_and_weld_only_trees() {
+    let empty = Model::new(&[]).unwrap();
+    let weld = {
+        let mut m = Model::new(&[
+            body(None, Joint::Weld, [0.0, 0.0, 1.0]),
+            body(Some(0), Joint::Weld, [0.5, 0.0, 0.0]),
+        ])
+        .unwrap();
+        m.gravity = Vector3::new(0.0, 0.0, -9.81);
+        m
+    };
+    for m in [&empty, &weld] {
+        assert_eq!(m.nv(), 0);
+        let q = m.neutral();
+        assert!(m.aba(&q, &[], &[], None).unwrap().is_empty());
+        assert!(m.rnea(&q, &[], &[], None).unwrap().tau.is_empty());
+        assert_eq!(m.crba(&q).unwrap().shape(), (0, 0));
+        let d = m.aba_derivatives(&q, &[], &[], None).unwrap();
+        assert_eq!(d.dvdot_dq.shape(), (0, 0));
+        assert_eq!(m.kinetic_energy(&q, &[]).unwrap(), 0.0);
+    }
+    // two welded bodies of 1.5 kg with centres at z = 1.3 and 1.3: U = −Σ m g·r_c
+    let poses = weld.poses(&[]).unwrap();
+    assert_eq!(poses[1].1, Vector3::new(0.5, 0.0, 1.0));
+    assert_abs(weld.potential_energy(&[]).unwrap(), 2.0 * 1.5 * 9.81 * 1.3, 8.0 * EPS * 40.0);
+}
+
 /// A deterministic pseudo-random sequence in [−1, 1) (no test dependency on a generator).
 fn lcg(seed: &mut u64) -> f64 {
     *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
@@ -222,6 +252,23 @@ fn section_7_11_spherical_pendulum_matches_closed_form() {
         assert_abs(thdd, want_thdd, 2.0 * tol / (l * 0.05));
         assert_abs(phdd, want_phdd, 2.0 * tol / (l * 0.05 * 0.05));
     }
+}
+
+/// The singular joint inertia in single precision: `Model<f32>` takes the same pseudo-inverse
+/// path with f32's rounding level (64 ε₃₂), and agrees with the f64 model to f32 accuracy.
+#[test]
+fn section_7_11_spherical_pendulum_in_single_precision() {
+    let model = spherical_pendulum(1.3, 0.8, 9.81);
+    let m32 = model.cast::<f32>();
+    let q = UnitQuaternion::from_scaled_axis(Vector3::new(0.4, -0.7, 0.2));
+    let qv = [q.w, q.i, q.j, q.k];
+    let w = [0.9, -1.4, 2.2];
+    let a64 = model.aba(&qv, &w, &[0.0; 3], None).unwrap();
+    let to32 = |x: &[f64]| x.iter().map(|&y| y as f32).collect::<Vec<f32>>();
+    let a32 = m32.aba(&to32(&qv), &to32(&w), &[0.0; 3], None).unwrap();
+    let got: Vec<f64> = a32.iter().map(|&x| f64::from(x)).collect();
+    // f32 rounding (1.2e-7) over a few dozen operations
+    assert_rel_to_max(&got, &a64, 64.0 * f64::from(f32::EPSILON));
 }
 
 /// The spherical pendulum cannot take a torque about its own rod (infinite acceleration):

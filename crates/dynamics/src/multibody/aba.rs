@@ -8,7 +8,7 @@ use vectrix_tensor::Scalar;
 
 use super::model::{Elem, Model};
 use super::rnea::{LinkWrenches, joint_motion};
-use super::singular::{PIVOT_TOL, null_component, psd_pinv3};
+use super::singular::{null_component, pivot_tol, psd_pinv3};
 use super::spatial::{Xform, cross_force, cross_motion, join, split};
 use crate::DynamicsError;
 
@@ -160,7 +160,7 @@ impl<T: Scalar> Model<T> {
                     let D = sv.dot(&U);
                     let u = tau[seg.vi] - sv.dot(&pA);
                     let scale = if revolute { angular_scale } else { seg.sub_mass };
-                    if D.re() > PIVOT_TOL * scale {
+                    if D.re() > pivot_tol::<T>() * scale {
                         s.U[i].set_column(0, &U);
                         s.Dinv[i][(0, 0)] = D.recip();
                         s.u[i][0] = u;
@@ -170,7 +170,7 @@ impl<T: Scalar> Model<T> {
                     } else {
                         // singular: D = 0 means IᴬS = 0, the coordinate carries no inertia; its
                         // force must vanish (else q̈ = ∞), and it gets q̈ = 0
-                        let tolerance = PIVOT_TOL * self.force_scale(i, tau, s);
+                        let tolerance = pivot_tol::<T>() * self.force_scale(i, tau, s);
                         if u.re().abs() > tolerance {
                             return Err(DynamicsError::InertJointForce {
                                 coordinate: seg.vi,
@@ -192,16 +192,16 @@ impl<T: Scalar> Model<T> {
                     // fast path: Cholesky with every pivot above the rounding level
                     let fast = D.cholesky().filter(|c| {
                         let l = c.l_dirty();
-                        (0..3).all(|k| (l[(k, k)] * l[(k, k)]).re() > PIVOT_TOL * angular_scale)
+                        (0..3).all(|k| (l[(k, k)] * l[(k, k)]).re() > pivot_tol::<T>() * angular_scale)
                     });
                     let Dinv = match fast {
                         Some(c) => c.inverse(),
                         None => {
                             // slow path: rank-revealing pseudo-inverse; no force along the
                             // inert directions (a particle cannot take a torque about its radius)
-                            let (pinv, null, _) = psd_pinv3(&D, PIVOT_TOL * angular_scale);
+                            let (pinv, null, _) = psd_pinv3(&D, pivot_tol::<T>() * angular_scale);
                             let along = null_component(&null, &u);
-                            let tolerance = PIVOT_TOL * self.force_scale(i, tau, s);
+                            let tolerance = pivot_tol::<T>() * self.force_scale(i, tau, s);
                             if along > tolerance {
                                 return Err(DynamicsError::InertJointForce {
                                     coordinate: seg.vi,
@@ -267,7 +267,7 @@ impl<T: Scalar> Model<T> {
     /// The size of the forces that meet at segment i before the eliminations of pass 2 cancel
     /// them (slow path only): over i and its subtree k, max of |τₖ| + ‖Iᴬₖ‖(‖cₖ‖ + |𝒱ₖ|²) +
     /// ‖pᴬₖ‖ + ‖UₖDₖ⁺uₖ‖, times (1 + ρᵢ) for the lever arms. A generalized force along an inert
-    /// direction is rounding noise when it is below [`PIVOT_TOL`] times this.
+    /// direction is rounding noise when it is below 64 ε times this.
     fn force_scale(&self, i: usize, tau: &[T], s: &AbaScratch<T>) -> f64 {
         let mut mag = 0.0f64;
         for k in i..self.segs.len() {

@@ -11,9 +11,9 @@ use super::rnea::LinkWrenches;
 use super::spatial::{BodyInertia, Xform, join};
 use crate::DynamicsError;
 
-/// A Cholesky pivot below this multiple of n ε × max Mᵢᵢ counts as singular (the rounding
-/// level of a mass matrix assembled by O(n) sums of products).
-pub(crate) const MASS_PIVOT_REL_TOL: f64 = 64.0 * f64::EPSILON;
+/// A Cholesky pivot below this multiple of n ε × max Mᵢᵢ (ε of the scalar) counts as
+/// singular (the rounding level of a mass matrix assembled by O(n) sums of products).
+pub(crate) const MASS_PIVOT_EPS: f64 = 64.0;
 
 /// Work space of [`Model::crba_into`].
 #[derive(Debug, Clone)]
@@ -173,7 +173,7 @@ pub(crate) fn mass_cholesky<T: Scalar>(m: DMatrix<T>) -> Result<Cholesky<T, Dyn>
         detail: "Cholesky found a non-positive pivot".into(),
     })?;
     let l = chol.l_dirty();
-    let bound = MASS_PIVOT_REL_TOL * r as f64 * scale;
+    let bound = MASS_PIVOT_EPS * T::eps() * r as f64 * scale;
     for k in 0..r {
         let pivot = (l[(k, k)] * l[(k, k)]).re();
         // (a NaN pivot fails too)

@@ -8,13 +8,19 @@
 use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
-/// Rounding tolerance, as a multiple of ε times the scale of the joint's block of the
+/// Rounding tolerance, as a multiple of ε (of the scalar: f64's, or f32's for `Model<f32>`) times the scale of the joint's block of the
 /// subtree's composite inertia, below which a pivot of Dᵢ counts as zero (Dᵢ comes from
 /// sums and Schur complements of the subtree's inertias, whose rounding is a few ε of that
 /// scale per level; 64 leaves room for deep trees). The same factor times the size of the
 /// forces meeting at the joint bounds the rounding of a generalized force along an inert
 /// direction.
-pub(crate) const PIVOT_TOL: f64 = 64.0 * f64::EPSILON;
+pub(crate) const PIVOT_EPS: f64 = 64.0;
+
+/// [`PIVOT_EPS`] ε of the scalar T.
+#[inline(always)]
+pub(crate) fn pivot_tol<T: Scalar>() -> f64 {
+    PIVOT_EPS * T::eps()
+}
 
 /// D⁺ and the projector onto the null space of D for a symmetric PSD 3×3 D, by Cholesky with
 /// complete pivoting stopped at the first pivot ≤ `tol` (rank-revealing): D = G Gᵀ with G of
