@@ -6,7 +6,8 @@
 use nalgebra::{Matrix3, Matrix6, Matrix6x3, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
-use super::model::{Elem, Model};
+use super::joint::Elem;
+use super::model::Model;
 use super::rnea::{LinkWrenches, joint_motion};
 use super::singular::{null_component, pivot_tol, psd_pinv3};
 use super::spatial::{Xform, cross_force, cross_motion, join, split};

@@ -6,7 +6,8 @@
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
-use super::model::{Elem, Model, Segment};
+use super::joint::Elem;
+use super::model::{Model, Segment};
 use super::rnea::LinkWrenches;
 use super::spatial::{BodyInertia, Xform, join};
 use crate::DynamicsError;

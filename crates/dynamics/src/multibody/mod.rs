@@ -6,8 +6,10 @@
 //! Book: §1.5 (joints), §7.11 (chains of rigid bodies).
 
 mod aba;
+mod configuration;
 mod crba;
 mod derivatives;
+mod joint;
 mod kinematics;
 mod model;
 mod rnea;
@@ -17,6 +19,7 @@ mod spatial;
 pub use aba::AbaScratch;
 pub use crba::CrbaScratch;
 pub use derivatives::{AbaDerivatives, DerivativeScratch, RneaDerivatives};
+pub use joint::{Joint, Link, Pose};
 pub use kinematics::LinkTwist;
-pub use model::{Joint, Link, Model, Pose};
+pub use model::Model;
 pub use rnea::{InverseDynamics, JointWrench, LinkWrenches, Scratch};

@@ -4,7 +4,8 @@
 use nalgebra::Vector3;
 use vectrix_tensor::Scalar;
 
-use super::model::{Elem, Model};
+use super::joint::Elem;
+use super::model::Model;
 use super::spatial::{Xform, cross_force, cross_motion};
 use crate::DynamicsError;
 
