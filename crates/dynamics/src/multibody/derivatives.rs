@@ -2,34 +2,6 @@
 //! ∂v̇/∂(q, v, τ) of ABA, by one outward and one inward pass in ground coordinates
 //! (Carpentier & Mansard, *Analytical derivatives of rigid body dynamics algorithms*, RSS 2018).
 //!
-//! # Derivation (all spatial vectors in ground coordinates about the ground origin)
-//! Moving joint coordinate j by δ moves the subtree of j rigidly by the screw Jⱼδ, where Jⱼ
-//! is the joint's motion subspace in the ground. Every quantity attached to a body i of that
-//! subtree then changes by Jⱼ × (·) (motions) or Jⱼ ×* (·) (forces, inertias), plus what
-//! changes in the body's own motion:
-//! * ∂vᵢ/∂qⱼ = Jⱼ × vᵢ + vλ × Jⱼ, with λ the parent of j (so dVdqⱼ = vλ × Jⱼ);
-//! * ∂aᵢ/∂qⱼ = Jⱼ × aᵢ + dAdqⱼ + dVdqⱼ × vᵢ, dAdqⱼ = aλ × Jⱼ + vλ × dVdqⱼ (a with −g);
-//! * ∂vᵢ/∂v̇ⱼ… and ∂aᵢ/∂q̇ⱼ = Jⱼ × vᵢ + dAdvⱼ, dAdvⱼ = vⱼ × Jⱼ + vλ × Jⱼ.
-//!
-//! The body force fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ then has ∂fᵢ/∂qⱼ = Jⱼ ×* fᵢ + Iᵢ dAdqⱼ + Bᵢ dVdqⱼ
-//! with Bᵢ = İᵢ + (· ×* Iᵢvᵢ) = [[Ī̇ − n^×, 0], [−2 f^×, 0]] ((n, f) = Iᵢvᵢ, the momentum).
-//! All of it is linear in (Iᵢ, Bᵢ, fᵢ), so subtree sums (composites Iᶜ, Bᶜ, Fᶜ) give
-//! τᵢ = JᵢᵀFᶜᵢ and
-//! * ∂τᵢ/∂qⱼ = (IᶜᵢJᵢ)·dAdqⱼ + (BᶜᵢᵀJᵢ)·dVdqⱼ for j an ancestor of i (or i itself; the
-//!   Jⱼ × Jᵢ and Jⱼ ×* Fᶜᵢ terms cancel in the pairing),
-//! * ∂τᵢ/∂qⱼ = Jᵢ·(Jⱼ ×* Fᶜⱼ + Iᶜⱼ dAdqⱼ + Bᶜⱼ dVdqⱼ) for j a descendant of i,
-//!
-//! and the same with (dAdvⱼ, Jⱼ) for q̇ⱼ; ∂τ/∂v̇ = M. ABA's derivatives follow from
-//! RNEA(q, v, ABA(q, v, τ)) = τ: ∂v̇/∂(q, v) = −M⁻¹ ∂τ/∂(q, v), ∂v̇/∂τ = M⁻¹.
-//!
-//! # Tangent space
-//! ∂/∂q is taken in the tangent space of the configuration, one column per velocity
-//! coordinate: column k is d/dε f(q ⊕ ε eₖ) at ε = 0 with ⊕ = [`Model::integrate`]. For
-//! scalar joints that is the ordinary partial derivative; for a ball joint (and the rotation
-//! of a free joint) it is a rotation of the link about its own k-th axis (q ⊗ exp(ε eₖ/2)),
-//! as Pinocchio does; the free joint's translation is ordinary (x, y, z are coordinates in
-//! the joint frame, vectrix's free joint is ℝ³ × SO(3), not SE(3)).
-//!
 //! Book: §7.11; §12–§15 (linearization about a state).
 #![allow(non_snake_case)]
 
@@ -42,8 +14,37 @@ use super::rnea::LinkWrenches;
 use super::spatial::{BodyInertia, Xform, cross_force6, cross_motion6, join, split};
 use crate::DynamicsError;
 
-/// Derivatives of inverse dynamics τ = RNEA(q, v, v̇) (tangent-space q-derivatives, see the
-/// module documentation).
+/// Derivatives of inverse dynamics τ = RNEA(q, v, v̇), computed by
+/// [`Model::rnea_derivatives`] (and inside [`Model::aba_derivatives`]).
+///
+/// # Derivation (all spatial vectors in ground coordinates about the ground origin)
+/// Moving joint coordinate j by δ moves the subtree of j rigidly by the screw Jⱼδ, where Jⱼ
+/// is the joint's motion subspace in the ground. Every quantity attached to a body i of that
+/// subtree then changes by Jⱼ × (·) (motions) or Jⱼ ×* (·) (forces, inertias), plus what
+/// changes in the body's own motion:
+/// * ∂vᵢ/∂qⱼ = Jⱼ × vᵢ + vλ × Jⱼ, with λ the parent of j (so dVdqⱼ = vλ × Jⱼ);
+/// * ∂aᵢ/∂qⱼ = Jⱼ × aᵢ + dAdqⱼ + dVdqⱼ × vᵢ, dAdqⱼ = aλ × Jⱼ + vλ × dVdqⱼ (a with −g);
+/// * ∂vᵢ/∂q̇ⱼ = Jⱼ and ∂aᵢ/∂q̇ⱼ = Jⱼ × vᵢ + dAdvⱼ, dAdvⱼ = vⱼ × Jⱼ + vλ × Jⱼ.
+///
+/// The body force fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ then has ∂fᵢ/∂qⱼ = Jⱼ ×* fᵢ + Iᵢ dAdqⱼ + Bᵢ dVdqⱼ
+/// with Bᵢ = İᵢ + (· ×* Iᵢvᵢ) = [[Ī̇ − n^×, 0], [−2 f^×, 0]] ((n, f) = Iᵢvᵢ, the momentum).
+/// All of it is linear in (Iᵢ, Bᵢ, fᵢ), so subtree sums (composites Iᶜ, Bᶜ, Fᶜ) give
+/// τᵢ = JᵢᵀFᶜᵢ and
+/// * ∂τᵢ/∂qⱼ = (IᶜᵢJᵢ)·dAdqⱼ + (BᶜᵢᵀJᵢ)·dVdqⱼ for j an ancestor of i (or i itself; the
+///   Jⱼ × Jᵢ and Jⱼ ×* Fᶜᵢ terms cancel in the pairing),
+/// * ∂τᵢ/∂qⱼ = Jᵢ·(Jⱼ ×* Fᶜⱼ + Iᶜⱼ dAdqⱼ + Bᶜⱼ dVdqⱼ) for j a descendant of i,
+///
+/// and the same with (dAdvⱼ, Jⱼ) for q̇ⱼ; ∂τ/∂v̇ = M. ABA's derivatives follow from
+/// RNEA(q, v, ABA(q, v, τ)) = τ: ∂v̇/∂(q, v) = −M⁻¹ ∂τ/∂(q, v), ∂v̇/∂τ = M⁻¹.
+///
+/// # Tangent space
+/// ∂/∂q is taken in the tangent space of the configuration, one column per velocity
+/// coordinate: column k is d/dε f(q ⊕ ε eₖ) at ε = 0 with ⊕ = [`Model::integrate`]. For
+/// scalar joints that is the ordinary partial derivative; for a ball joint (and the rotation
+/// of a free joint) it is a rotation of the link about its own k-th axis (q ⊗ exp(ε eₖ/2)),
+/// as Pinocchio does; the free joint's translation is ordinary (x, y, z are coordinates in
+/// the joint frame, vectrix's free joint is ℝ³ × SO(3), not SE(3)).
+///
 ///
 /// Book: §7.11.
 #[derive(Debug, Clone, PartialEq)]
@@ -99,7 +100,8 @@ impl<T: Scalar> AbaDerivatives<T> {
     }
 }
 
-/// The composite "velocity variation" Bᶜ = [[P, 0], [−2 f^×, 0]] of a subtree (module docs).
+/// The composite "velocity variation" Bᶜ = [[P, 0], [−2 f^×, 0]] of a subtree (see
+/// [`RneaDerivatives`]).
 #[derive(Debug, Clone, Copy)]
 struct Variation<T: Scalar> {
     P: Matrix3<T>,
@@ -190,7 +192,7 @@ impl<T: Scalar> Model<T> {
     }
 
     /// Exact derivatives of inverse dynamics at (q, v, v̇): τ, ∂τ/∂q, ∂τ/∂v and ∂τ/∂v̇ = M,
-    /// analytically in O(n·depth) (the module documentation has the derivation and the
+    /// analytically in O(n·depth) ([`RneaDerivatives`] has the derivation and the
     /// tangent-space convention for ball and free joints). External wrenches `f_ext` are
     /// fixed in their links (they turn with them).
     ///
@@ -221,7 +223,7 @@ impl<T: Scalar> Model<T> {
 
     /// Exact derivatives of forward dynamics at (q, v, τ): v̇, ∂v̇/∂q, ∂v̇/∂v and ∂v̇/∂τ = M⁻¹,
     /// from ∂v̇/∂(q, v) = −M⁻¹ ∂τ/∂(q, v) at v̇ = ABA(q, v, τ) (tangent-space convention as
-    /// in the module documentation).
+    /// in [`RneaDerivatives`]).
     ///
     /// Book: §7.11 (ABA), §12.x (linearization).
     ///
