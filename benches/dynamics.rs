@@ -1,13 +1,23 @@
-//! Dynamics benches: RNEA, ABA, CRBA on revolute chains (n = 1, 6, 12, 30, the chain of
-//! `../shared/peers/bench_pinocchio.py`), rigid-body steps, and Lagrangian accelerations of an
-//! n-link pendulum through dual numbers (n = 1..12, the system of `bench_sympy.py`).
+//! Dynamics benches: RNEA, ABA, CRBA and the analytical derivatives of RNEA and ABA on
+//! revolute chains (n = 1, 6, 12, 30, the chain of `../shared/peers/bench_pinocchio.py` and
+//! `benches/peers/pin_chain.cpp`), the same through dual numbers, rigid-body steps, and
+//! Lagrangian accelerations of an n-link pendulum through dual numbers (n = 1..12, the system
+//! of `bench_sympy.py`).
 //!
-//! Run: `cargo bench --bench dynamics -- --warm-up-time 1 --measurement-time 3`.
+//! Run: `cargo bench --bench dynamics -- --warm-up-time 1 --measurement-time 3`; beside
+//! Pinocchio C++ in one sitting: `sh benches/peers/run.sh` (see docs/performance.md).
+//!
+//! Instruction counts (repeatable on a loaded machine): with `VECTRIX_ICOUNT=algo:n:iters`
+//! the binary runs `iters` calls of one algorithm (`rnea`, `aba`, `crba`, `rnea_derivatives`,
+//! `aba_derivatives`) on the n-link chain and exits, e.g.
+//! `valgrind --tool=callgrind --callgrind-out-file=/tmp/x.out target/release/deps/dynamics-* `
+//! with `VECTRIX_ICOUNT=crba:6:1000` and again with `:2000`; the difference / 1000 is the
+//! count per call (set-up cancels).
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use vectrix::dynamics::lagrange::accelerations;
-use vectrix::dynamics::multibody::{Joint, Link, Model};
+use vectrix::dynamics::multibody::{AbaDerivatives, Joint, Link, Model, RneaDerivatives};
 use vectrix::nalgebra::{Matrix3, Vector3};
 use vectrix::prelude::*;
 use vectrix::statics::{MassProperties, Point, Wrench};
@@ -49,37 +59,160 @@ fn states(n: usize, count: usize) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// Everything one chain needs for the five algorithms, with caller-owned scratch.
+struct Chain {
+    model: Model,
+    s: Vec<Vec<f64>>,
+    scratch: vectrix::dynamics::multibody::Scratch,
+    aba: vectrix::dynamics::multibody::AbaScratch,
+    crba: vectrix::dynamics::multibody::CrbaScratch,
+    deriv: vectrix::dynamics::multibody::DerivativeScratch,
+    h: vectrix::nalgebra::DMatrix<f64>,
+    rd: RneaDerivatives,
+    ad: AbaDerivatives,
+    out: Vec<f64>,
+    k: usize,
+}
+
+impl Chain {
+    fn new(n: usize) -> Self {
+        let model = pinocchio_chain(n);
+        Self {
+            s: states(n, 64),
+            scratch: model.scratch(),
+            aba: model.aba_scratch(),
+            crba: model.crba_scratch(),
+            deriv: model.derivative_scratch(),
+            h: vectrix::nalgebra::DMatrix::zeros(n, n),
+            rd: RneaDerivatives::zeros(&model),
+            ad: AbaDerivatives::zeros(&model),
+            out: vec![0.0; n],
+            k: 0,
+            model,
+        }
+    }
+
+    /// One call of `algo` on the next state; returns one output number.
+    fn run(&mut self, algo: &str) -> f64 {
+        self.k = (self.k + 1) % 61;
+        let (q, v, a) = (&self.s[self.k], &self.s[self.k + 1], &self.s[self.k + 2]);
+        match algo {
+            "rnea" => {
+                self.model.rnea_unchecked(q, v, a, &mut self.out, &mut self.scratch);
+                self.out[0]
+            }
+            "aba" => {
+                self.model.aba_unchecked(q, v, a, &mut self.out, &mut self.aba).unwrap();
+                self.out[0]
+            }
+            "crba" => {
+                self.model.crba_into(q, &mut self.h, &mut self.crba);
+                self.h[(0, 0)]
+            }
+            "rnea_derivatives" => {
+                self.model.rnea_derivatives_into(q, v, a, None, &mut self.rd, &mut self.deriv);
+                self.rd.dtau_dq[(0, 0)] + self.rd.dtau_dv[(0, 0)]
+            }
+            "aba_derivatives" => {
+                self.model.aba_derivatives_into(q, v, a, None, &mut self.ad, &mut self.deriv).unwrap();
+                self.ad.dvdot_dq[(0, 0)] + self.ad.dvdot_dv[(0, 0)] + self.ad.dvdot_dtau[(0, 0)]
+            }
+            other => panic!("unknown algorithm {other}"),
+        }
+    }
+}
+
+const ALGORITHMS: [&str; 5] = ["rnea", "aba", "crba", "rnea_derivatives", "aba_derivatives"];
+
 fn tree_algorithms(c: &mut Criterion) {
     let mut g = c.benchmark_group("dynamics");
     for n in [1usize, 6, 12, 30] {
-        let model = pinocchio_chain(n);
-        let s = states(n, 64);
-        let mut scratch = model.scratch();
-        let mut aba_scratch = model.aba_scratch();
-        let mut out = vec![0.0; n];
-        let mut k = 0usize;
-        g.bench_with_input(BenchmarkId::new("rnea", n), &n, |b, _| {
+        let mut chain = Chain::new(n);
+        for algo in ALGORITHMS {
+            g.bench_with_input(BenchmarkId::new(algo, n), &n, |b, _| b.iter(|| black_box(chain.run(algo))));
+        }
+    }
+    g.finish();
+}
+
+/// The dual-number route beside the analytical one: v̇ and one directional derivative
+/// ∂v̇/∂q·e₀ by ABA over `Dual64` (a full Jacobian costs nv such passes).
+fn dual_derivatives(c: &mut Criterion) {
+    use vectrix::num_dual::Dual64;
+    let mut g = c.benchmark_group("dynamics/dual");
+    for n in [6usize, 30] {
+        let model = pinocchio_chain(n).cast::<Dual64>();
+        let s = states(n, 3);
+        let lift = |x: &[f64]| x.iter().map(|&x| Dual64::from(x)).collect::<Vec<_>>();
+        let mut q = lift(&s[0]);
+        q[0].eps = 1.0;
+        let (v, tau) = (lift(&s[1]), lift(&s[2]));
+        let mut scratch = model.aba_scratch();
+        let mut out = vec![Dual64::from(0.0); n];
+        g.bench_with_input(BenchmarkId::new("aba_dual64_one_direction", n), &n, |b, _| {
             b.iter(|| {
-                k = (k + 1) % 61;
-                model.rnea_unchecked(&s[k], &s[k + 1], &s[k + 2], &mut out, &mut scratch);
-                black_box(out[0])
-            })
-        });
-        g.bench_with_input(BenchmarkId::new("aba", n), &n, |b, _| {
-            b.iter(|| {
-                k = (k + 1) % 61;
-                model.aba_unchecked(&s[k], &s[k + 1], &s[k + 2], &mut out, &mut aba_scratch).unwrap();
-                black_box(out[0])
-            })
-        });
-        g.bench_with_input(BenchmarkId::new("crba", n), &n, |b, _| {
-            b.iter(|| {
-                k = (k + 1) % 61;
-                black_box(model.crba_unchecked(&s[k])[(0, 0)])
+                model.aba_unchecked(&q, &v, &tau, &mut out, &mut scratch).unwrap();
+                black_box(out[0].eps)
             })
         });
     }
     g.finish();
+}
+
+/// `algo:n:iters` from an environment variable of the drivers below.
+fn driver_spec(var: &str) -> Option<(String, usize, usize)> {
+    let spec = std::env::var(var).ok()?;
+    let parts: Vec<&str> = spec.split(':').collect();
+    let bad = || panic!("{var} must be algo:n:iters, got {spec}");
+    if parts.len() != 3 {
+        bad();
+    }
+    Some((
+        parts[0].to_string(),
+        parts[1].parse().unwrap_or_else(|_| bad()),
+        parts[2].parse().unwrap_or_else(|_| bad()),
+    ))
+}
+
+/// `VECTRIX_TIME=algo:n:iters`: seven repetitions of `iters` calls, printed like the C++
+/// harness (`benches/peers/pin_chain.cpp`: median, min, max per call), for interleaved runs
+/// beside it on a loaded machine, where the minimum is the steadier figure.
+fn time_driver() -> bool {
+    let Some((algo, n, iters)) = driver_spec("VECTRIX_TIME") else { return false };
+    let algo = algo.as_str();
+    let mut chain = Chain::new(n);
+    let mut sink = 0.0;
+    let mut t: Vec<f64> = (0..7)
+        .map(|_| {
+            let t0 = std::time::Instant::now();
+            for _ in 0..iters {
+                sink += chain.run(algo);
+            }
+            t0.elapsed().as_secs_f64() / iters as f64
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    println!(
+        "{{\"what\": \"vectrix {algo}\", \"n\": {n}, \"median\": {:.4e}, \"min\": {:.4e}, \"max\": {:.4e}, \"number\": {iters}, \"sink\": {}}}",
+        t[3],
+        t[0],
+        t[6],
+        black_box(sink).is_finite()
+    );
+    true
+}
+
+/// `VECTRIX_ICOUNT=algo:n:iters`: run one algorithm `iters` times and exit (for callgrind).
+fn icount_driver() -> bool {
+    let Some((algo, n, iters)) = driver_spec("VECTRIX_ICOUNT") else { return false };
+    let algo = algo.as_str();
+    let mut chain = Chain::new(n);
+    let mut sink = 0.0;
+    for _ in 0..iters {
+        sink += chain.run(algo);
+    }
+    println!("{algo} n={n} iters={iters} sink={sink}");
+    true
 }
 
 fn rigid_body_steps(c: &mut Criterion) {
@@ -177,5 +310,12 @@ fn lagrangian_pendulum(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, tree_algorithms, rigid_body_steps, lagrangian_pendulum);
-criterion_main!(benches);
+criterion_group!(benches, tree_algorithms, dual_derivatives, rigid_body_steps, lagrangian_pendulum);
+
+fn main() {
+    if icount_driver() || time_driver() {
+        return;
+    }
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}

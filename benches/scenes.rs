@@ -11,7 +11,7 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use nalgebra::Vector3;
-use vectrix::dynamics::multibody::{AbaScratch, JointWrench, Model, Pose};
+use vectrix::dynamics::multibody::{AbaScratch, JointWrench, Model, Pose, PosesScratch};
 use vectrix::dynamics::scene::{DEFAULT_SCENE, Scene};
 
 /// A chain of n pin-jointed rods under gravity, every other axis ŷ (a spatial chain).
@@ -97,7 +97,7 @@ struct Direct<'a> {
     model: &'a Model,
     aba: AbaScratch,
     tau: Vec<f64>,
-    world: Vec<Pose>,
+    world: PosesScratch,
     poses: Vec<Pose>,
     wrenches: Vec<JointWrench>,
 }
@@ -108,7 +108,7 @@ impl<'a> Direct<'a> {
             model,
             aba: model.aba_scratch(),
             tau: vec![0.0; model.nv()],
-            world: Vec::new(),
+            world: PosesScratch::default(),
             poses: Vec::new(),
             wrenches: vec![JointWrench::default(); model.links()],
         }

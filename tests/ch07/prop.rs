@@ -1,14 +1,17 @@
 //! Property tests for chapter 7: RNEA ∘ ABA = identity on random trees and states, ABA = CRBA,
-//! momenta of rigid particle sets, and collisions.
+//! the analytical derivatives of ABA against dual numbers on random trees, the spherical
+//! pendulum at the hard attitudes, momenta of rigid particle sets, and collisions.
 
 use proptest::prelude::*;
 use vectrix::dynamics::multibody::{Joint, Link, Model};
 use vectrix::dynamics::restitution_1d;
-use vectrix::nalgebra::{Matrix3, Rotation3, Vector3};
+use vectrix::nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
+use vectrix::num_dual::Dual64;
 use vectrix::prelude::*;
 use vectrix::statics::{MassProperties, Point};
 
-use crate::support::triple;
+use crate::multibody::{pendulum_motion, spherical_pendulum};
+use crate::support::{EPS, triple};
 
 fn joint() -> impl Strategy<Value = Joint> {
     let axis = || triple().prop_filter("nonzero", |a| Vector3::from(*a).norm() > 0.1).prop_map(Vector3::from);
@@ -85,6 +88,68 @@ proptest! {
         for (x, y) in a.iter().zip(&a2) {
             prop_assert!((x - y).abs() <= 1e-7 * sa, "{a:?} vs {a2:?}");
         }
+    }
+
+    /// The analytical ∂v̇/∂q and ∂v̇/∂v of ABA (module `derivatives`) equal forward-mode dual
+    /// numbers through the generic ABA (one `Dual64` pass per tangent direction, q ⊕ ε eₖ),
+    /// on random trees of every joint type and random states.
+    #[test]
+    fn aba_derivatives_equal_dual_numbers(model in tree(), seed in prop::collection::vec(-1.0..1.0f64, 64)) {
+        let mut q = model.neutral();
+        for (k, x) in q.iter_mut().enumerate() {
+            *x += seed[k % 64];
+        }
+        let n = model.nv();
+        // an all-weld tree has no coordinates and nothing to differentiate
+        prop_assume!(n > 0);
+        let v: Vec<f64> = (0..n).map(|k| 2.0 * seed[(k + 17) % 64]).collect();
+        let tau: Vec<f64> = (0..n).map(|k| 3.0 * seed[(k + 33) % 64]).collect();
+        let d = model.aba_derivatives(&q, &v, &tau, None).unwrap();
+        let dual = model.cast::<Dual64>();
+        let lift = |x: &[f64]| x.iter().map(|&x| Dual64::from(x)).collect::<Vec<_>>();
+        let h = model.crba(&q).unwrap();
+        let eig = h.symmetric_eigen().eigenvalues;
+        let cond = eig.max() / eig.min();
+        let scale = d.dvdot_dq.amax().max(d.dvdot_dv.amax());
+        for k in 0..n {
+            let mut e = lift(&vec![0.0; n]);
+            e[k].eps = 1.0;
+            let qk = dual.integrate(&lift(&q), &e, Dual64::from(1.0)).unwrap();
+            let aq = dual.aba(&qk, &lift(&v), &lift(&tau), None).unwrap();
+            let mut vk = lift(&v);
+            vk[k].eps = 1.0;
+            let av = dual.aba(&lift(&q), &vk, &lift(&tau), None).unwrap();
+            for r in 0..n {
+                // both are exact to rounding: ε κ(M) of the largest entry, 1024 for the
+                // random trees' depth and the dual route's longer expressions
+                prop_assert!((aq[r].eps - d.dvdot_dq[(r, k)]).abs() <= 1024.0 * EPS * cond * scale);
+                prop_assert!((av[r].eps - d.dvdot_dv[(r, k)]).abs() <= 1024.0 * EPS * cond * scale);
+            }
+        }
+    }
+
+    /// The spherical pendulum at the hard attitudes (hanging straight down θ = 0, tiny θ,
+    /// horizontal, nearly and exactly inverted θ = π): ABA with its singular joint inertia
+    /// gives the closed form p̈ = g − (g·p̂)p̂ − (|ṗ|²/L²) p and no spin acceleration.
+    #[test]
+    fn spherical_pendulum_at_hard_attitudes(
+        theta in prop_oneof![Just(0.0), Just(1e-300), Just(1e-8), Just(std::f64::consts::FRAC_PI_2),
+                             Just(std::f64::consts::PI - 1e-8), Just(std::f64::consts::PI), 0.0..std::f64::consts::PI],
+        azimuth in -3.0..3.0f64, spin in -3.0..3.0f64, w in triple(),
+    ) {
+        let (l, g) = (0.6, 9.81);
+        let model = spherical_pendulum(0.7, l, g);
+        // attitude: tilt θ about the horizontal axis at the azimuth, then any spin about the rod
+        let axis = Vector3::new(-azimuth.sin(), azimuth.cos(), 0.0);
+        let uq = UnitQuaternion::from_scaled_axis(axis * theta) * UnitQuaternion::from_scaled_axis(Vector3::z() * spin);
+        let q = [uq.w, uq.i, uq.j, uq.k];
+        let w = Vector3::from(w) * 0.3;
+        let [p, pd, pdd, wd] = pendulum_motion(&model, &q, &w, l);
+        let gv = Vector3::new(0.0, 0.0, -g);
+        let want = gv - p * (gv.dot(&p) / (l * l)) - p * (pd.norm_squared() / (l * l));
+        let tol = 64.0 * EPS * (g + l * w.norm_squared());
+        prop_assert!((pdd - want).norm() <= tol, "{pdd} vs {want}");
+        prop_assert!(wd.z.abs() <= tol / l);
     }
 
     /// (7.6.10), (8.1.19): a rigid set of particles moving with (v_c, ω) has momentum m v_c,

@@ -103,6 +103,23 @@ pub enum DynamicsError {
         /// The principal moments λ1 ≥ λ2 ≥ λ3.
         moments: [f64; 3],
     },
+    /// A generalized force along a joint direction that carries no inertia (a particle on a
+    /// ball joint turned about its own radius, a pin whose axis passes through a point mass,
+    /// two coaxial pins joined by a massless link with unequal torques): the acceleration
+    /// would be infinite.
+    #[error(
+        "generalized force {force:e} acts at velocity coordinate {coordinate} along a direction that \
+         carries no inertia (articulated inertia SᵀIᴬS is singular there; tolerance {tolerance:e}): the \
+         acceleration would be infinite; remove the force, or give the link inertia about that axis"
+    )]
+    InertJointForce {
+        /// The first velocity coordinate of the joint.
+        coordinate: usize,
+        /// The component of u = τ − Sᵀpᴬ along the inert direction.
+        force: f64,
+        /// The rounding tolerance it was compared with.
+        tolerance: f64,
+    },
     /// An impact that does not close the gap (the bodies separate already).
     #[error("the bodies are separating (normal approach speed {approach:e} ≤ 0): no impact")]
     Separating {
@@ -208,6 +225,19 @@ pub enum DynamicsError {
 /// `Err(NonFinite)` unless every value is finite.
 pub(crate) fn check_finite(values: &[f64], what: &'static str) -> Result<(), DynamicsError> {
     if values.iter().all(|v| v.is_finite()) { Ok(()) } else { Err(DynamicsError::NonFinite { what }) }
+}
+
+/// `Err(NonFinite)` unless every value's real part is finite (generic scalars).
+pub(crate) fn check_finite_t<T: vectrix_tensor::Scalar>(
+    values: &[T],
+    what: &'static str,
+) -> Result<(), DynamicsError> {
+    if all_finite(values) { Ok(()) } else { Err(DynamicsError::NonFinite { what }) }
+}
+
+/// `true` when every value's real part is finite.
+pub(crate) fn all_finite<T: vectrix_tensor::Scalar>(values: &[T]) -> bool {
+    values.iter().all(|v| v.re().is_finite())
 }
 
 /// `Err(DimensionMismatch)` unless `got == expected`.

@@ -5,8 +5,11 @@
 //!   form [`newton_euler_6d`] (§7.10); the eigenaxis form [`eigenaxis_acceleration`] (§7.9);
 //!   energy and work (§8.1–8.3).
 //! * [`multibody`]: trees of links joined by the book's joints (pin, sleeve, collar, slot,
-//!   ball, weld, free) in reduced coordinates; RNEA with joint reaction wrenches, ABA in O(n),
-//!   CRBA + Cholesky (§7.11); [`Network`]: spring–dashpot–inerter networks (§7.5).
+//!   ball, weld, free) in reduced coordinates; RNEA with joint reaction wrenches, ABA in O(n)
+//!   (exact for singular joint inertia: particles on ball and free joints, massless links),
+//!   CRBA + Cholesky, forward kinematics and energies (§7.11); the analytical derivatives
+//!   ∂τ/∂(q, v, v̇) and ∂v̇/∂(q, v, τ); all generic over the scalar (`Model<Dual64>` by
+//!   [`Model::cast`]); [`Network`]: spring–dashpot–inerter networks (§7.5).
 //! * [`lagrange`]: Lagrange's and Hamilton's equations from user energies, differentiated
 //!   exactly by dual numbers (ch. 9), and the kinematic-map form that builds T itself.
 //! * [`constraints`]: holonomic and nonholonomic constraints with multipliers (§9.11–9.12),
@@ -44,7 +47,7 @@ pub use energy::{kinetic_energy_about_centre_pairwise, particles_kinetic_energy,
 pub use error::DynamicsError;
 pub use impact::{ImpactEnd, ImpactRun, ZenoGuard, simulate_with_impacts};
 pub use lagrange::{KinematicMap, Lagrangian, MapMasses};
-pub use multibody::{Joint, Link, Model};
+pub use multibody::{AbaDerivatives, Joint, Link, Model, RneaDerivatives};
 pub use network::{Element, Network, NetworkMatrices};
 pub use rigid::{RigidBody, particle_acceleration};
 pub use sixd::{newton_euler_6d, twist_cross_matrix};

@@ -1,31 +1,38 @@
-//! Forward dynamics in O(n) by the articulated-body algorithm.
+//! Forward dynamics in O(n) by the articulated-body algorithm, generic over the scalar, exact
+//! for joints whose articulated inertia is only semidefinite (particles on ball or free
+//! joints, pins through a point mass, massless links between coaxial joints).
 #![allow(non_snake_case)]
 
 use nalgebra::{Matrix3, Matrix6, Matrix6x3, Vector3, Vector6};
+use vectrix_tensor::Scalar;
 
-use super::model::{Elem, Model};
+use super::joint::Elem;
+use super::model::Model;
 use super::rnea::{LinkWrenches, joint_motion};
+use super::singular::{null_component, pivot_tol, psd_pinv3};
 use super::spatial::{Xform, cross_force, cross_motion, join, split};
 use crate::DynamicsError;
 
 /// Work space of the articulated-body algorithm.
 #[derive(Debug, Clone)]
-pub struct AbaScratch {
-    x: Vec<Xform>,
-    IA: Vec<Matrix6<f64>>,
-    pA: Vec<Vector6<f64>>,
-    c: Vec<Vector6<f64>>,
-    U: Vec<Matrix6x3<f64>>,
-    Dinv: Vec<Matrix3<f64>>,
-    u: Vec<Vector3<f64>>,
-    a: Vec<Vector6<f64>>,
-    w: Vec<Vector3<f64>>,
-    v: Vec<Vector3<f64>>,
+pub struct AbaScratch<T: Scalar = f64> {
+    x: Vec<Xform<T>>,
+    IA: Vec<Matrix6<T>>,
+    pA: Vec<Vector6<T>>,
+    c: Vec<Vector6<T>>,
+    U: Vec<Matrix6x3<T>>,
+    Dinv: Vec<Matrix3<T>>,
+    u: Vec<Vector3<T>>,
+    a: Vec<Vector6<T>>,
+    w: Vec<Vector3<T>>,
+    v: Vec<Vector3<T>>,
+    /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
+    reach: Vec<f64>,
 }
 
-impl Model {
+impl<T: Scalar> Model<T> {
     /// A work space for [`Model::aba_unchecked`].
-    pub fn aba_scratch(&self) -> AbaScratch {
+    pub fn aba_scratch(&self) -> AbaScratch<T> {
         let n = self.segs.len();
         AbaScratch {
             x: vec![Xform::identity(); n],
@@ -38,6 +45,7 @@ impl Model {
             a: vec![Vector6::zeros(); n],
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
+            reach: vec![0.0; n],
         }
     }
 
@@ -47,40 +55,54 @@ impl Model {
     ///
     /// Book: §7.11; RBDA Table 7.1.
     ///
+    /// # Degenerate inputs
+    /// A joint whose articulated inertia Dᵢ = SᵢᵀIᴬᵢSᵢ is singular (a particle on a ball or
+    /// free joint: no inertia about its own radius; a pin whose axis passes through a point
+    /// mass; two coaxial pins joined by a massless link) is solved exactly: a direction n with
+    /// Dᵢn = 0 has Iᴬᵢ Sᵢ n = 0 (Iᴬ is PSD), so it carries no inertia and couples to nothing;
+    /// it gets zero acceleration (the minimum-norm solution, D⁺ by a rank-revealing Cholesky,
+    /// taken only when the fast Cholesky finds a pivot ≤ 64 ε × the joint's block of Iᴬ). The
+    /// other coordinates are exact. The mass matrix of such a model is singular, so
+    /// [`Model::forward_dynamics_crba`] refuses it while ABA does not.
+    ///
     /// # Errors
-    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`];
-    /// [`DynamicsError::SingularMassMatrix`] when a joint's articulated inertia SᵀIᴬS is not
-    /// positive definite (a massless leaf link, or a massless chain end).
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`] (an input),
+    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6);
+    /// [`DynamicsError::InertJointForce`] when a generalized force acts along an inert
+    /// direction (its acceleration would be infinite), e.g. a massless leaf link driven by a
+    /// torque; [`DynamicsError::Overflow`] when finite inputs give a non-finite v̇ (v ≈ 1e200).
     pub fn aba(
         &self,
-        q: &[f64],
-        v: &[f64],
-        tau: &[f64],
-        f_ext: Option<&LinkWrenches>,
-    ) -> Result<Vec<f64>, DynamicsError> {
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<Vec<T>, DynamicsError> {
         self.check_q(q)?;
         self.check_v(v, "v")?;
         self.check_v(tau, "τ")?;
-        if let Some(f) = f_ext {
-            crate::error::check_len(f.len(), self.links(), "external wrenches")?;
-        }
-        let mut out = vec![0.0; self.nv];
+        self.check_wrenches(f_ext)?;
+        let mut out = vec![T::zero(); self.nv];
         let mut s = self.aba_scratch();
         self.aba_into(q, v, tau, f_ext, &mut out, &mut s)?;
+        if !crate::error::all_finite(&out) {
+            return Err(DynamicsError::Overflow { what: "forward dynamics v̇" });
+        }
         Ok(out)
     }
 
     /// [`Model::aba`] without input checks and with caller-provided scratch: the hot path.
+    /// An overflow (inputs near 1e200) shows as a non-finite v̇ here.
     ///
     /// # Errors
-    /// [`DynamicsError::SingularMassMatrix`] as [`Model::aba`].
+    /// [`DynamicsError::InertJointForce`] as [`Model::aba`].
     pub fn aba_unchecked(
         &self,
-        q: &[f64],
-        v: &[f64],
-        tau: &[f64],
-        vdot: &mut [f64],
-        s: &mut AbaScratch,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        vdot: &mut [T],
+        s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         self.aba_into(q, v, tau, None, vdot, s)
     }
@@ -92,17 +114,17 @@ impl Model {
     /// [`DynamicsError::SingularMassMatrix`] as [`Model::aba`].
     pub fn aba_into(
         &self,
-        q: &[f64],
-        v: &[f64],
-        tau: &[f64],
-        f_ext: Option<&LinkWrenches>,
-        vdot: &mut [f64],
-        s: &mut AbaScratch,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        vdot: &mut [T],
+        s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
         // pass 1 (outward): twists, bias accelerations c = 𝒱 ×m S q̇, bias forces 𝒱 ×f 𝒥𝒱
         for (i, seg) in self.segs.iter().enumerate() {
-            let x = seg.placement.then(&seg.elem.xform(&q[seg.qi..]));
+            let x = self.seg_xform(i, q);
             let (wp, vp) = match seg.parent {
                 Some(p) => (s.w[p], s.v[p]),
                 None => (Vector3::zeros(), Vector3::zeros()),
@@ -118,6 +140,7 @@ impl Model {
             s.c[i] = join(&cw, &cv);
             s.IA[i] = seg.inertia.matrix();
             s.pA[i] = join(&bn, &bf);
+            s.reach[i] = seg.own_reach;
             (s.w[i], s.v[i]) = (wi, vi);
         }
         if let Some(fe) = f_ext {
@@ -131,43 +154,70 @@ impl Model {
             let seg = &self.segs[i];
             let IA = s.IA[i];
             let pA = s.pA[i];
+            // rounding scale of the joint's block of Iᴬ: the subtree's composite inertia bounds
+            // it (Iᴬ ≼ Iᶜ) and has no cancellation: its mass M for a slider, Σ tr J_c + 2Mρ² for
+            // a pin or a ball
+            let angular_scale = seg.sub_trace + 2.0 * seg.sub_mass * s.reach[i] * s.reach[i];
             let (Ia, pa) = match seg.elem {
                 Elem::Revolute(a) | Elem::Prismatic(a) => {
-                    let sv = match seg.elem {
-                        Elem::Revolute(_) => join(&a, &Vector3::zeros()),
-                        _ => join(&Vector3::zeros(), &a),
-                    };
+                    let revolute = matches!(seg.elem, Elem::Revolute(_));
+                    let sv = if revolute { join(&a, &Vector3::zeros()) } else { join(&Vector3::zeros(), &a) };
                     let U = IA * sv;
                     let D = sv.dot(&U);
-                    if D.is_nan() || D <= f64::EPSILON * IA.norm().max(f64::MIN_POSITIVE) {
-                        return Err(DynamicsError::SingularMassMatrix {
-                            detail: format!(
-                                "articulated inertia SᵀIᴬS = {D:e} at velocity coordinate {}",
-                                seg.vi
-                            ),
-                        });
-                    }
                     let u = tau[seg.vi] - sv.dot(&pA);
-                    s.U[i].set_column(0, &U);
-                    s.Dinv[i][(0, 0)] = 1.0 / D;
-                    s.u[i][0] = u;
-                    let Ia = IA - U * (U.transpose() / D);
-                    let pa = pA + Ia * s.c[i] + U * (u / D);
-                    (Ia, pa)
+                    let scale = if revolute { angular_scale } else { seg.sub_mass };
+                    if D.re() > pivot_tol::<T>() * scale {
+                        s.U[i].set_column(0, &U);
+                        s.Dinv[i][(0, 0)] = D.recip();
+                        s.u[i][0] = u;
+                        let Ia = IA - U * (U.transpose() / D);
+                        let pa = pA + Ia * s.c[i] + U * (u / D);
+                        (Ia, pa)
+                    } else {
+                        // singular: D = 0 means IᴬS = 0, the coordinate carries no inertia; its
+                        // force must vanish (else q̈ = ∞), and it gets q̈ = 0
+                        let tolerance = pivot_tol::<T>() * self.force_scale(i, tau, s);
+                        if u.re().abs() > tolerance {
+                            return Err(DynamicsError::InertJointForce {
+                                coordinate: seg.vi,
+                                force: u.re(),
+                                tolerance,
+                            });
+                        }
+                        s.U[i] = Matrix6x3::zeros();
+                        s.Dinv[i] = Matrix3::zeros();
+                        s.u[i] = Vector3::zeros();
+                        (IA, pA + IA * s.c[i])
+                    }
                 }
                 Elem::Spherical => {
-                    let U: Matrix6x3<f64> = IA.fixed_columns::<3>(0).into_owned();
-                    let D: Matrix3<f64> = U.fixed_rows::<3>(0).into_owned();
-                    let Dinv = D.cholesky().map(|c| c.inverse()).ok_or_else(|| {
-                        DynamicsError::SingularMassMatrix {
-                            detail: format!(
-                                "ball-joint articulated inertia not positive definite at {}",
-                                seg.vi
-                            ),
-                        }
-                    })?;
+                    let U: Matrix6x3<T> = IA.fixed_columns::<3>(0).into_owned();
+                    let D: Matrix3<T> = U.fixed_rows::<3>(0).into_owned();
                     let u =
                         Vector3::new(tau[seg.vi], tau[seg.vi + 1], tau[seg.vi + 2]) - pA.fixed_rows::<3>(0);
+                    // fast path: Cholesky with every pivot above the rounding level
+                    let fast = D.cholesky().filter(|c| {
+                        let l = c.l_dirty();
+                        (0..3).all(|k| (l[(k, k)] * l[(k, k)]).re() > pivot_tol::<T>() * angular_scale)
+                    });
+                    let Dinv = match fast {
+                        Some(c) => c.inverse(),
+                        None => {
+                            // slow path: rank-revealing pseudo-inverse; no force along the
+                            // inert directions (a particle cannot take a torque about its radius)
+                            let (pinv, null, _) = psd_pinv3(&D, pivot_tol::<T>() * angular_scale);
+                            let along = null_component(&null, &u);
+                            let tolerance = pivot_tol::<T>() * self.force_scale(i, tau, s);
+                            if along > tolerance {
+                                return Err(DynamicsError::InertJointForce {
+                                    coordinate: seg.vi,
+                                    force: along,
+                                    tolerance,
+                                });
+                            }
+                            pinv
+                        }
+                    };
                     s.U[i] = U;
                     s.Dinv[i] = Dinv;
                     s.u[i] = u;
@@ -180,6 +230,12 @@ impl Model {
                 let add = s.x[i].inertia_to_parent(&Ia);
                 s.IA[p] += add;
                 s.pA[p] += s.x[i].force6_to_parent(&pa);
+                if seg.sub_mass > 0.0 {
+                    // ρ_p ≥ ρ_i + |r_i| (‖·‖₁ ≥ ‖·‖₂)
+                    let r = &s.x[i].r;
+                    let reach = s.reach[i] + r.x.re().abs() + r.y.re().abs() + r.z.re().abs();
+                    s.reach[p] = s.reach[p].max(reach);
+                }
             }
         }
         // pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈
@@ -212,5 +268,33 @@ impl Model {
             s.a[i] = a;
         }
         Ok(())
+    }
+
+    /// The size of the forces that meet at segment i before the eliminations of pass 2 cancel
+    /// them (slow path only): over i and its subtree k, max of |τₖ| + ‖Iᴬₖ‖(‖cₖ‖ + |𝒱ₖ|²) +
+    /// ‖pᴬₖ‖ + ‖UₖDₖ⁺uₖ‖, times (1 + ρᵢ) for the lever arms. A generalized force along an inert
+    /// direction is rounding noise when it is below 64 ε times this.
+    fn force_scale(&self, i: usize, tau: &[T], s: &AbaScratch<T>) -> f64 {
+        let mut mag = 0.0f64;
+        for k in i..self.segs.len() {
+            // k in the subtree of i: its ancestors (which have smaller indices) reach i
+            let mut j = k;
+            while j > i {
+                match self.segs[j].parent {
+                    Some(p) => j = p,
+                    None => break,
+                }
+            }
+            if j != i {
+                continue;
+            }
+            let seg = &self.segs[k];
+            let t: f64 = (0..seg.elem.nv()).map(|a| tau[seg.vi + a].re().abs()).sum();
+            let v2 = (s.w[k].norm_squared() + s.v[k].norm_squared()).re();
+            let inertial = s.IA[k].norm().re() * (s.c[k].norm().re() + v2);
+            let udu = if k > i { (s.U[k] * (s.Dinv[k] * s.u[k])).norm().re() } else { 0.0 };
+            mag = mag.max(t + inertial + s.pA[k].norm().re() + udu);
+        }
+        mag * (1.0 + s.reach[i])
     }
 }

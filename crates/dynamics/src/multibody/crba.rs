@@ -1,73 +1,137 @@
-//! The joint-space mass matrix by the composite-rigid-body algorithm, and forward dynamics
-//! by CRBA + Cholesky (the cross-check of the articulated-body algorithm).
+//! The joint-space mass matrix by the composite-rigid-body algorithm (in ground coordinates,
+//! where composite inertias add without transforms), and forward dynamics by CRBA + Cholesky
+//! (the cross-check of the articulated-body algorithm).
+#![allow(non_snake_case)]
 
-use nalgebra::{DMatrix, DVector, Matrix6, Vector6};
+use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Vector3, Vector6};
+use vectrix_tensor::Scalar;
 
-use super::model::{Elem, Model};
+use super::joint::Elem;
+use super::model::{Model, Segment};
 use super::rnea::LinkWrenches;
-use super::spatial::{Xform, join};
+use super::spatial::{BodyInertia, Xform, join};
 use crate::DynamicsError;
 
-/// The columns of S for one elementary joint (6-vectors in (ω, v) ordering).
-fn subspace(elem: &Elem) -> Vec<Vector6<f64>> {
-    let z = nalgebra::Vector3::zeros();
-    match elem {
-        Elem::Revolute(a) => vec![join(a, &z)],
-        Elem::Prismatic(a) => vec![join(&z, a)],
-        Elem::Spherical => (0..3).map(|k| Vector6::ith(k, 1.0)).collect(),
-        Elem::Fixed => vec![],
+/// A Cholesky pivot below this multiple of n ε × max Mᵢᵢ (ε of the scalar) counts as
+/// singular (the rounding level of a mass matrix assembled by O(n) sums of products).
+pub(crate) const MASS_PIVOT_EPS: f64 = 64.0;
+
+/// Work space of [`Model::crba_into`].
+#[derive(Debug, Clone)]
+pub struct CrbaScratch<T: Scalar = f64> {
+    world: Vec<Xform<T>>,
+    /// One motion-subspace column per velocity coordinate, ground coordinates.
+    S: Vec<Vector6<T>>,
+    Ic: Vec<BodyInertia<T>>,
+}
+
+/// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
+/// segment whose ground-to-segment transform is `x` (E = 𝓞_{i/G}, origin p), written into
+/// `out` (one entry per column): a pin about the link axis a has S = (u, p × u) with u = Eᵀa;
+/// a slider (0, Eᵀa); a ball the three columns (uₖ, p × uₖ), uₖ = Eᵀeₖ.
+#[inline(always)]
+pub(crate) fn world_subspace<T: Scalar>(seg: &Segment<T>, x: &Xform<T>, out: &mut [Vector6<T>]) {
+    match &seg.elem {
+        Elem::Revolute(a) => {
+            // Eᵀa: ± a row of E for a coordinate axis
+            let u = match seg.coord_axis {
+                Some((k, false)) => x.E.row(k).transpose(),
+                Some((k, true)) => -x.E.row(k).transpose(),
+                None => x.E.tr_mul(a),
+            };
+            out[0] = join(&u, &x.r.cross(&u));
+        }
+        Elem::Prismatic(a) => out[0] = join(&Vector3::zeros(), &x.E.tr_mul(a)),
+        Elem::Spherical => {
+            for (k, o) in out.iter_mut().take(3).enumerate() {
+                let u: Vector3<T> = x.E.row(k).transpose();
+                *o = join(&u, &x.r.cross(&u));
+            }
+        }
+        Elem::Fixed => {}
     }
 }
 
-impl Model {
+impl<T: Scalar> Model<T> {
+    /// A work space for [`Model::crba_into`].
+    pub fn crba_scratch(&self) -> CrbaScratch<T> {
+        let n = self.segs.len();
+        CrbaScratch {
+            world: vec![Xform::identity(); n],
+            S: vec![Vector6::zeros(); self.nv],
+            Ic: vec![BodyInertia::zero(); n],
+        }
+    }
+
     /// The joint-space mass matrix H(q) (symmetric, nv × nv) by the composite-rigid-body
-    /// algorithm: composite inertias accumulated tip to base, H_ij = S_iᵀ Iᶜ_i X S_j.
+    /// algorithm: composite inertias Iᶜᵢ accumulated tip to base, Hᵢⱼ = Sᵢᵀ Iᶜⱼ Sⱼ for every
+    /// ancestor i of j (all in ground coordinates), zero between branches.
     ///
     /// Book: §7.11 (the mass matrix of the chain), §9.3 (M(q) of (9.3.11)); RBDA Table 6.2.
     ///
+    /// # Degenerate inputs
+    /// A model with an inert joint direction (see [`Model::aba`]: a particle on a ball joint,
+    /// a massless link between coaxial pins) has a singular H; it is returned as computed
+    /// (positive semidefinite), and solving with it is the caller's decision.
+    ///
     /// # Errors
-    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`].
-    pub fn crba(&self, q: &[f64]) -> Result<DMatrix<f64>, DynamicsError> {
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
+    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
+    pub fn crba(&self, q: &[T]) -> Result<DMatrix<T>, DynamicsError> {
         self.check_q(q)?;
         Ok(self.crba_unchecked(q))
     }
 
     /// [`Model::crba`] without input checks.
-    pub fn crba_unchecked(&self, q: &[f64]) -> DMatrix<f64> {
-        let n = self.segs.len();
-        let x: Vec<Xform> = self.segs.iter().map(|s| s.placement.then(&s.elem.xform(&q[s.qi..]))).collect();
-        let subspaces: Vec<Vec<Vector6<f64>>> = self.segs.iter().map(|s| subspace(&s.elem)).collect();
-        // composite inertias, tip to base: Iᶜ_p += Xᵀ Iᶜ_i X
-        let mut ic: Vec<Matrix6<f64>> = self.segs.iter().map(|s| s.inertia.matrix()).collect();
-        for i in (0..n).rev() {
-            if let Some(p) = self.segs[i].parent {
-                let add = x[i].inertia_to_parent(&ic[i]);
-                ic[p] += add;
-            }
-        }
+    pub fn crba_unchecked(&self, q: &[T]) -> DMatrix<T> {
         let mut h = DMatrix::zeros(self.nv, self.nv);
-        for i in 0..n {
-            for (ki, s) in subspaces[i].iter().enumerate() {
-                let row = self.segs[i].vi + ki;
-                // F = Iᶜ_i S_i, carried towards the base: H_ij = S_jᵀ F
-                let mut f = ic[i] * s;
-                for (kj, sj) in subspaces[i].iter().enumerate() {
-                    h[(row, self.segs[i].vi + kj)] = sj.dot(&f);
-                }
-                let mut j = i;
-                while let Some(p) = self.segs[j].parent {
-                    f = x[j].force6_to_parent(&f);
-                    j = p;
-                    for (kj, sj) in subspaces[j].iter().enumerate() {
-                        let col = self.segs[j].vi + kj;
-                        let hij = sj.dot(&f);
-                        h[(row, col)] = hij;
-                        h[(col, row)] = hij;
-                    }
+        let mut s = self.crba_scratch();
+        self.crba_into(q, &mut h, &mut s);
+        h
+    }
+
+    /// [`Model::crba`] without input checks, into a caller-provided nv × nv matrix with
+    /// caller-provided scratch (no allocation): the hot path.
+    ///
+    /// # Panics
+    /// If `h` is not nv × nv (a programming error, not user input).
+    pub fn crba_into(&self, q: &[T], h: &mut DMatrix<T>, s: &mut CrbaScratch<T>) {
+        assert_eq!(h.shape(), (self.nv, self.nv), "crba_into: h must be nv × nv");
+        // outward: ground placement of every segment, its S in ground coordinates, and its
+        // own inertia about the ground origin
+        for (i, seg) in self.segs.iter().enumerate() {
+            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]));
+            world_subspace(seg, &w, &mut s.S[seg.vi..]);
+            s.Ic[i] = if seg.massless {
+                BodyInertia::zero()
+            } else {
+                BodyInertia::from_centre_in_ground(seg.inertia.m, &seg.com, &seg.j_c, &w.E, &w.r)
+            };
+            s.world[i] = w;
+        }
+        h.fill(T::zero());
+        let n = self.nv;
+        let hs = h.as_mut_slice();
+        // inward: Iᶜ_i is complete when i is reached (descendants come later in the order);
+        // for each column b of joint i, F = Iᶜ_i S_b, then H_cb = H_bc = S_c·F for b and every
+        // coordinate c above it; Iᶜ_p += Iᶜ_i (same coordinates: a plain sum)
+        for i in (0..self.segs.len()).rev() {
+            let seg = &self.segs[i];
+            for b in seg.vi..seg.vi + seg.elem.nv() {
+                let F = s.Ic[i].apply6(&s.S[b]);
+                let mut c = Some(b);
+                while let Some(a) = c {
+                    let hab = s.S[a].dot(&F);
+                    hs[a + b * n] = hab;
+                    hs[b + a * n] = hab;
+                    c = self.parent_col[a];
                 }
             }
+            if let Some(p) = seg.parent {
+                let ic = s.Ic[i];
+                s.Ic[p].add(&ic);
+            }
         }
-        h
     }
 
     /// Forward dynamics by H(q) v̇ = τ − C(q, v), C from [`Model::rnea`] with v̇ = 0, solved
@@ -76,19 +140,49 @@ impl Model {
     /// Book: §7.11, §9.6 (M q̈ = Q − …).
     ///
     /// # Errors
-    /// As [`Model::rnea`]; [`DynamicsError::SingularMassMatrix`] when H is not positive definite.
+    /// As [`Model::rnea`]; [`DynamicsError::SingularMassMatrix`] when H is not positive
+    /// definite (a Cholesky pivot ≤ 64 n ε max Hᵢᵢ), e.g. a model with an inert joint
+    /// direction, which [`Model::aba`] solves exactly.
     pub fn forward_dynamics_crba(
         &self,
-        q: &[f64],
-        v: &[f64],
-        tau: &[f64],
-        f_ext: Option<&LinkWrenches>,
-    ) -> Result<Vec<f64>, DynamicsError> {
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<Vec<T>, DynamicsError> {
         self.check_v(tau, "τ")?;
-        let zero = vec![0.0; self.nv];
+        let zero = vec![T::zero(); self.nv];
         let bias = self.rnea(q, v, &zero, f_ext)?.tau;
         let h = self.crba_unchecked(q);
-        let rhs = DVector::from_iterator(self.nv, tau.iter().zip(&bias).map(|(t, c)| t - c));
-        crate::lagrange::cholesky_solve(h, rhs).map(|x| x.as_slice().to_vec())
+        let rhs = DVector::from_iterator(self.nv, tau.iter().zip(&bias).map(|(&t, &c)| t - c));
+        let x = mass_cholesky(h)?.solve(&rhs);
+        if !crate::error::all_finite(x.as_slice()) {
+            return Err(DynamicsError::Overflow { what: "forward dynamics v̇" });
+        }
+        Ok(x.as_slice().to_vec())
     }
+}
+
+/// Cholesky factor of a mass matrix, refusing pivots at the rounding level.
+///
+/// # Errors
+/// [`DynamicsError::SingularMassMatrix`] with the pivot and the bound.
+pub(crate) fn mass_cholesky<T: Scalar>(m: DMatrix<T>) -> Result<Cholesky<T, Dyn>, DynamicsError> {
+    let r = m.nrows();
+    let scale = (0..r).map(|i| m[(i, i)].re().abs()).fold(0.0, f64::max);
+    let chol = Cholesky::new(m).ok_or_else(|| DynamicsError::SingularMassMatrix {
+        detail: "Cholesky found a non-positive pivot".into(),
+    })?;
+    let l = chol.l_dirty();
+    let bound = MASS_PIVOT_EPS * T::eps() * r as f64 * scale;
+    for k in 0..r {
+        let pivot = (l[(k, k)] * l[(k, k)]).re();
+        // (a NaN pivot fails too)
+        if pivot.partial_cmp(&bound) != Some(std::cmp::Ordering::Greater) {
+            return Err(DynamicsError::SingularMassMatrix {
+                detail: format!("pivot {k} is {pivot:e}, at or below {bound:e} = 64 n ε max Mᵢᵢ"),
+            });
+        }
+    }
+    Ok(chol)
 }

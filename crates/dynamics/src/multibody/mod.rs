@@ -1,14 +1,25 @@
 //! Multibody trees in reduced coordinates: the book's joints, inverse dynamics (RNEA) with
-//! joint reaction wrenches, forward dynamics (ABA, O(n)) and the mass matrix (CRBA).
+//! joint reaction wrenches, forward dynamics (ABA, O(n)), the mass matrix (CRBA), forward
+//! kinematics and energies, and the exact derivatives of the dynamics, all generic over the
+//! scalar (f64 by default; num-dual's dual numbers through [`Model::cast`]).
 //!
 //! Book: §1.5 (joints), §7.11 (chains of rigid bodies).
 
 mod aba;
+mod configuration;
 mod crba;
+mod derivatives;
+mod joint;
+mod kinematics;
 mod model;
 mod rnea;
+mod singular;
 mod spatial;
 
 pub use aba::AbaScratch;
-pub use model::{Joint, Link, Model, Pose};
+pub use crba::CrbaScratch;
+pub use derivatives::{AbaDerivatives, DerivativeScratch, RneaDerivatives};
+pub use joint::{Joint, Link, Pose};
+pub use kinematics::LinkTwist;
+pub use model::{Model, PosesScratch};
 pub use rnea::{InverseDynamics, JointWrench, LinkWrenches, Scratch};

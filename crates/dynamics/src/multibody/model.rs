@@ -1,236 +1,66 @@
 //! Kinematic trees of rigid bodies connected by the book's joints (book §1.5, Table 1.3,
-//! §7.11), in reduced coordinates.
+//! §7.11), in reduced coordinates, generic over the scalar (f64 by default; dual numbers give
+//! exact derivatives of everything computed from a model).
 #![allow(non_snake_case)]
 
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Vector3};
 use vectrix_frames::Frame;
 use vectrix_statics::{INERTIA_REL_TOL, check_inertia};
+use vectrix_tensor::Scalar;
 
+use super::joint::{Elem, Joint, Link, Pose, coordinate_axis, elems};
 use super::spatial::{BodyInertia, Xform};
 use crate::DynamicsError;
 use crate::error::check_finite;
 
-/// A joint between a link and its parent (book Table 1.3 and §1.5: pin, sleeve, collar,
-/// slot, ball; plus weld and free). Axes and directions are components in the joint frame,
-/// which is placed in the parent link by [`Link::placement`].
-///
-/// Book: §1.5 (the five joint types), Table 1.3.
-///
-/// # Conventions
-/// Coordinates q (and velocities v) per joint:
-/// * `Pin` – rotation θ about `axis` (right-hand rule): q = [θ], v = [θ̇].
-/// * `Sleeve` – translation s along `axis`: q = [s].
-/// * `Collar` – translation s along `axis`, then rotation θ about the same axis: q = [s, θ].
-/// * `Slot` – translation s along `direction` (a groove in the parent), then rotation θ about
-///   `axis` ⊥ `direction` (the pin): q = [s, θ].
-/// * `Ball` – attitude as a unit quaternion (η, ε₁, ε₂, ε₃) of the link relative to the joint
-///   frame, scalar first: q has 4 entries, v = ω_{link/joint} resolved in the link (3).
-/// * `Weld` – no coordinates.
-/// * `Free` – translation (x, y, z) resolved in the joint frame, then a ball: q has 7 entries,
-///   v = (ẋ, ẏ, ż, ω in the link) has 6.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Joint {
-    /// Rotation about one axis, no translation.
-    Pin {
-        /// Rotation axis (nonzero; normalized).
-        axis: Vector3<f64>,
-    },
-    /// Translation along one direction, no rotation.
-    Sleeve {
-        /// Translation direction (nonzero; normalized).
-        axis: Vector3<f64>,
-    },
-    /// Translation along and rotation about the same axis.
-    Collar {
-        /// The common axis (nonzero; normalized).
-        axis: Vector3<f64>,
-    },
-    /// Translation along `direction`, rotation about `axis`, perpendicular.
-    Slot {
-        /// Rotation axis of the pin.
-        axis: Vector3<f64>,
-        /// Direction of the groove, perpendicular to `axis`.
-        direction: Vector3<f64>,
-    },
-    /// Rotation about three axes (spherical joint).
-    Ball,
-    /// Rigid attachment.
-    Weld,
-    /// Six degrees of freedom (a floating body).
-    Free,
-}
-
-/// One rigid link of a tree: its parent (`None` = the inertial ground), the joint into it,
-/// where the joint frame sits in the parent link, and the link's mass properties.
-///
-/// Book: §7.11 (chains), §6.1–6.2 (mass properties).
-///
-/// # Conventions
-/// Everything is resolved in link frames: `offset` = r_{joint/parent origin}|_{parent},
-/// `orientation` = 𝓞_{J/P} (passive: x|_J = 𝓞_{J/P} x|_P) of the joint frame relative to the
-/// parent link frame; at q = 0 the link frame coincides with the joint frame. `com` is the
-/// centre of mass and `inertia` is J_{B/c} resolved in the link frame (matrix entries, so
-/// products of inertia enter as −J_xy).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Link {
-    /// Parent link index, or `None` for the ground.
-    pub parent: Option<usize>,
-    /// The joint connecting this link to its parent.
-    pub joint: Joint,
-    /// r_{joint/parent origin} resolved in the parent link frame.
-    pub offset: Vector3<f64>,
-    /// 𝓞_{J/P}.
-    pub orientation: Matrix3<f64>,
-    /// m ≥ 0 (a massless link needs massive descendants for forward dynamics).
-    pub mass: f64,
-    /// r_{c/link origin} resolved in the link frame.
-    pub com: Vector3<f64>,
-    /// J_{B/c} resolved in the link frame.
-    pub inertia: Matrix3<f64>,
-}
-
-impl Link {
-    /// A link with the given parent and joint, at `offset` in the parent, no rotation of the
-    /// joint frame, with mass m, centre `com` and J_{B/c} = `inertia` (link frame).
-    pub fn new(
-        parent: Option<usize>,
-        joint: Joint,
-        offset: Vector3<f64>,
-        mass: f64,
-        com: Vector3<f64>,
-        inertia: Matrix3<f64>,
-    ) -> Self {
-        Self { parent, joint, offset, orientation: Matrix3::identity(), mass, com, inertia }
-    }
-}
-
-/// A link pose: 𝓞_{link/ground} and r_{link origin/ground origin} resolved in the ground frame.
-pub type Pose = (Matrix3<f64>, Vector3<f64>);
-
-/// Elementary joints the book's joints are made of.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Elem {
-    Revolute(Vector3<f64>),
-    Prismatic(Vector3<f64>),
-    Spherical,
-    Fixed,
-}
-
-impl Elem {
-    pub fn nq(&self) -> usize {
-        match self {
-            Elem::Revolute(_) | Elem::Prismatic(_) => 1,
-            Elem::Spherical => 4,
-            Elem::Fixed => 0,
-        }
-    }
-    pub fn nv(&self) -> usize {
-        match self {
-            Elem::Revolute(_) | Elem::Prismatic(_) => 1,
-            Elem::Spherical => 3,
-            Elem::Fixed => 0,
-        }
-    }
-
-    /// The joint transform for the coordinates `q` (length nq).
-    #[inline(always)]
-    pub fn xform(&self, q: &[f64]) -> Xform {
-        match self {
-            // passive rotation about a by θ: E = 𝓡(a, θ)ᵀ
-            Elem::Revolute(a) => {
-                // E = 𝓡(a, θ)ᵀ = c I − s a^× + (1 − c) a aᵀ (Rodrigues, transposed)
-                let (s, c) = q[0].sin_cos();
-                let k = 1.0 - c;
-                let (x, y, z) = (a.x, a.y, a.z);
-                let e = Matrix3::new(
-                    c + k * x * x,
-                    k * x * y + s * z,
-                    k * x * z - s * y,
-                    k * x * y - s * z,
-                    c + k * y * y,
-                    k * y * z + s * x,
-                    k * x * z + s * y,
-                    k * y * z - s * x,
-                    c + k * z * z,
-                );
-                Xform { E: e, r: Vector3::zeros() }
-            }
-            Elem::Prismatic(a) => Xform { E: Matrix3::identity(), r: a * q[0] },
-            Elem::Spherical => {
-                let uq = UnitQuaternion::new_normalize(Quaternion::new(q[0], q[1], q[2], q[3]));
-                Xform { E: uq.to_rotation_matrix().matrix().transpose(), r: Vector3::zeros() }
-            }
-            Elem::Fixed => Xform::identity(),
-        }
-    }
-}
-
 /// One elementary segment (a link, or a massless intermediate of a compound joint).
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Segment {
+pub(crate) struct Segment<T: Scalar> {
     pub parent: Option<usize>,
-    pub placement: Xform,
-    pub elem: Elem,
+    pub placement: Xform<T>,
+    pub elem: Elem<T>,
     pub qi: usize,
     pub vi: usize,
-    pub inertia: BodyInertia,
+    pub inertia: BodyInertia<T>,
+    /// The same body as mass m (in `inertia`), centre c and J_c, link components.
+    pub com: Vector3<T>,
+    pub j_c: Matrix3<T>,
+    /// Zero mass and zero inertia (intermediate segments of compound joints, massless links).
+    pub massless: bool,
+    /// Scales for ABA's singularity tests (real numbers, configuration-independent): the
+    /// total mass of the subtree, Σ tr J_c over its bodies, and |c| of the own body (0 when
+    /// massless).
+    pub sub_mass: f64,
+    pub sub_trace: f64,
+    pub own_reach: f64,
+    /// The placement has no rotation (𝓞_{J/P} = 1 exactly): composing with it is a shift.
+    pub placement_is_shift: bool,
+    /// A pin or slider along a coordinate axis: (axis index, negative direction).
+    pub coord_axis: Option<(usize, bool)>,
 }
 
-/// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA.
+/// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA, generic
+/// over the scalar: `Model` is `Model<f64>`; [`Model::cast`] gives the same tree over dual
+/// numbers (`Model<Dual64>`, `Model<HyperDual64>`, `Model<DualSVec64<N>>`), whose
+/// algorithms then return exact derivatives of their results with respect to whatever the
+/// caller seeded (states, or the model's own numbers).
 ///
-/// Book: §7.11.
+/// Book: §7.11; DESIGN §1.4 (generic scalar).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Model {
-    pub(crate) segs: Vec<Segment>,
+pub struct Model<T: Scalar = f64> {
+    pub(crate) segs: Vec<Segment<T>>,
     /// For each user link, the index of its (last) segment.
     pub(crate) link_seg: Vec<usize>,
     pub(crate) nq: usize,
     pub(crate) nv: usize,
     /// Gravitational acceleration g resolved in the ground frame.
-    pub gravity: Vector3<f64>,
-    pub(crate) q_neutral: Vec<f64>,
-}
-
-fn unit_axis(a: &Vector3<f64>, link: usize, what: &'static str) -> Result<Vector3<f64>, DynamicsError> {
-    check_finite(a.as_slice(), "joint axis")?;
-    let n = a.norm();
-    if n <= 1e3 * f64::EPSILON {
-        return Err(DynamicsError::ZeroAxis { link, what, length: n });
-    }
-    Ok(a / n)
-}
-
-fn elems(joint: &Joint, link: usize) -> Result<Vec<Elem>, DynamicsError> {
-    Ok(match joint {
-        Joint::Pin { axis } => vec![Elem::Revolute(unit_axis(axis, link, "pin axis")?)],
-        Joint::Sleeve { axis } => vec![Elem::Prismatic(unit_axis(axis, link, "sleeve axis")?)],
-        Joint::Collar { axis } => {
-            let a = unit_axis(axis, link, "collar axis")?;
-            vec![Elem::Prismatic(a), Elem::Revolute(a)]
-        }
-        Joint::Slot { axis, direction } => {
-            let a = unit_axis(axis, link, "slot pin axis")?;
-            let d = unit_axis(direction, link, "slot direction")?;
-            if a.dot(&d).abs() > 1e-9 {
-                return Err(DynamicsError::JointGeometry {
-                    link,
-                    detail: format!(
-                        "slot axis and direction have cosine {:e}; they must be perpendicular",
-                        a.dot(&d)
-                    ),
-                });
-            }
-            vec![Elem::Prismatic(d), Elem::Revolute(a)]
-        }
-        Joint::Ball => vec![Elem::Spherical],
-        Joint::Weld => vec![Elem::Fixed],
-        Joint::Free => vec![
-            Elem::Prismatic(Vector3::x()),
-            Elem::Prismatic(Vector3::y()),
-            Elem::Prismatic(Vector3::z()),
-            Elem::Spherical,
-        ],
-    })
+    pub gravity: Vector3<T>,
+    pub(crate) q_neutral: Vec<T>,
+    /// For each velocity coordinate, the nearest coordinate above it in the tree (the previous
+    /// column of the same joint, else the last column of the nearest ancestor that has one).
+    pub(crate) parent_col: Vec<Option<usize>>,
+    /// For each velocity coordinate, its segment.
+    pub(crate) col_seg: Vec<usize>,
 }
 
 /// Parents before children; errors for missing parents and cycles.
@@ -261,7 +91,7 @@ fn topological_order(links: &[Link]) -> Result<Vec<usize>, DynamicsError> {
     Ok(order)
 }
 
-impl Model {
+impl Model<f64> {
     /// Validates the links and builds the tree. Gravity defaults to zero; set
     /// [`Model::gravity`] (components in the ground frame).
     ///
@@ -302,7 +132,7 @@ impl Model {
             nv += e.iter().map(Elem::nv).sum::<usize>();
             expanded.push(e);
         }
-        let mut segs: Vec<Segment> = Vec::new();
+        let mut segs: Vec<Segment<f64>> = Vec::new();
         let mut link_seg = vec![0usize; links.len()];
         let mut q_neutral = vec![0.0; nq];
         for &i in &order {
@@ -316,12 +146,34 @@ impl Model {
                 let inertia = if last {
                     BodyInertia::from_centre(l.mass, &l.com, &l.inertia)
                 } else {
-                    BodyInertia { m: 0.0, h: Vector3::zeros(), I: Matrix3::zeros() }
+                    BodyInertia::zero()
                 };
                 if *elem == Elem::Spherical {
                     q_neutral[qi] = 1.0;
                 }
-                segs.push(Segment { parent, placement, elem: *elem, qi, vi, inertia });
+                let massless = inertia == BodyInertia::zero();
+                let (com, j_c) = if last { (l.com, l.inertia) } else { (Vector3::zeros(), Matrix3::zeros()) };
+                let (sub_mass, sub_trace, own_reach) = if last {
+                    (l.mass, l.inertia.trace(), if l.mass > 0.0 { l.com.norm() } else { 0.0 })
+                } else {
+                    (0.0, 0.0, 0.0)
+                };
+                segs.push(Segment {
+                    parent,
+                    placement,
+                    elem: *elem,
+                    qi,
+                    vi,
+                    inertia,
+                    com,
+                    j_c,
+                    massless,
+                    sub_mass,
+                    sub_trace,
+                    own_reach,
+                    placement_is_shift: placement.E == Matrix3::identity(),
+                    coord_axis: coordinate_axis(elem),
+                });
                 parent = Some(segs.len() - 1);
                 placement = Xform::identity();
                 qi += elem.nq();
@@ -329,7 +181,28 @@ impl Model {
             }
             link_seg[i] = segs.len() - 1;
         }
-        Ok(Self { segs, link_seg, nq, nv, gravity: Vector3::zeros(), q_neutral })
+        // subtree sums, tips to base (children come after their parents)
+        for i in (0..segs.len()).rev() {
+            if let Some(p) = segs[i].parent {
+                let (m, t) = (segs[i].sub_mass, segs[i].sub_trace);
+                segs[p].sub_mass += m;
+                segs[p].sub_trace += t;
+            }
+        }
+        // column tree: the nearest coordinate above each coordinate
+        let mut parent_col = vec![None; nv];
+        let mut col_seg = vec![0usize; nv];
+        let mut last_col: Vec<Option<usize>> = vec![None; segs.len()];
+        for (i, sg) in segs.iter().enumerate() {
+            let mut above = sg.parent.and_then(|p| last_col[p]);
+            for k in 0..sg.elem.nv() {
+                parent_col[sg.vi + k] = above;
+                col_seg[sg.vi + k] = i;
+                above = Some(sg.vi + k);
+            }
+            last_col[i] = above;
+        }
+        Ok(Self { segs, link_seg, nq, nv, gravity: Vector3::zeros(), q_neutral, parent_col, col_seg })
     }
 
     /// A chain of n pin joints about ẑ, each link a thin-ish rod of mass m and length l along
@@ -359,6 +232,67 @@ impl Model {
         Self::new(&links)
     }
 
+    /// The same tree over another scalar: every number (axes, placements, masses, inertias,
+    /// gravity) converted exactly from f64 (a dual number's derivative parts are zero).
+    /// `model.cast::<Dual64>()` is how dual numbers enter the tree algorithms; seed the
+    /// state (or the model's public `gravity`) to differentiate.
+    ///
+    /// Book: DESIGN §1.4; §7.11.
+    ///
+    /// # Examples
+    /// Time derivatives along the motion, exactly: seed the state (q ⊕ ε v, v + ε v̇) and read
+    /// the ε-parts. Here the angular acceleration of the first link of a chain is v̇₀ ẑ.
+    /// ```
+    /// use num_dual::Dual64;
+    /// use vectrix_dynamics::multibody::Model;
+    ///
+    /// let model = Model::revolute_chain(3, 1.0, 0.5).unwrap();
+    /// let (q, v) = (vec![0.1, 0.2, 0.3], vec![1.0, -0.5, 0.2]);
+    /// let vdot = model.aba(&q, &v, &[0.0; 3], None).unwrap();
+    /// let d = model.cast::<Dual64>();
+    /// let q0: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
+    /// let step: Vec<Dual64> = v.iter().map(|&x| Dual64::new(0.0, x)).collect();
+    /// let qe = d.integrate(&q0, &step, Dual64::from(1.0)).unwrap();
+    /// let ve: Vec<Dual64> = v.iter().zip(&vdot).map(|(&x, &a)| Dual64::new(x, a)).collect();
+    /// let twists = d.twists(&qe, &ve).unwrap();
+    /// let alpha = twists[0].omega.map(|x| x.eps);
+    /// assert!((alpha - nalgebra::Vector3::new(0.0, 0.0, vdot[0])).norm() < 1e-14);
+    /// ```
+    #[doc(alias = "to_dual")]
+    pub fn cast<U: Scalar>(&self) -> Model<U> {
+        Model {
+            segs: self
+                .segs
+                .iter()
+                .map(|s| Segment {
+                    parent: s.parent,
+                    placement: s.placement.cast(),
+                    elem: s.elem.cast(),
+                    qi: s.qi,
+                    vi: s.vi,
+                    inertia: s.inertia.cast(),
+                    com: s.com.map(U::lit),
+                    j_c: s.j_c.map(U::lit),
+                    massless: s.massless,
+                    sub_mass: s.sub_mass,
+                    sub_trace: s.sub_trace,
+                    own_reach: s.own_reach,
+                    placement_is_shift: s.placement_is_shift,
+                    coord_axis: s.coord_axis,
+                })
+                .collect(),
+            link_seg: self.link_seg.clone(),
+            nq: self.nq,
+            nv: self.nv,
+            gravity: self.gravity.map(U::lit),
+            q_neutral: self.q_neutral.iter().map(|&x| U::lit(x)).collect(),
+            parent_col: self.parent_col.clone(),
+            col_seg: self.col_seg.clone(),
+        }
+    }
+}
+
+impl<T: Scalar> Model<T> {
     /// Number of configuration coordinates (quaternions count 4).
     pub fn nq(&self) -> usize {
         self.nq
@@ -375,62 +309,50 @@ impl Model {
     }
 
     /// The neutral configuration: zero for every coordinate, identity quaternions.
-    pub fn neutral(&self) -> Vec<f64> {
+    pub fn neutral(&self) -> Vec<T> {
         self.q_neutral.clone()
     }
 
-    /// q ⊕ v dt: adds v dt to every coordinate, and for ball joints composes the quaternion
-    /// with exp(ω dt / 2) (ω in the link frame), keeping it unit.
-    ///
-    /// Book: §4.11 (exact quaternion step (4.11.17)).
-    ///
-    /// # Errors
-    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`].
-    pub fn integrate(&self, q: &[f64], v: &[f64], dt: f64) -> Result<Vec<f64>, DynamicsError> {
-        self.check_q(q)?;
-        self.check_v(v, "v")?;
-        let mut out = q.to_vec();
-        for s in &self.segs {
-            match s.elem {
-                Elem::Revolute(_) | Elem::Prismatic(_) => out[s.qi] += v[s.vi] * dt,
-                Elem::Spherical => {
-                    let q0 = UnitQuaternion::new_normalize(Quaternion::new(
-                        q[s.qi],
-                        q[s.qi + 1],
-                        q[s.qi + 2],
-                        q[s.qi + 3],
-                    ));
-                    let w = Vector3::new(v[s.vi], v[s.vi + 1], v[s.vi + 2]);
-                    let q1 = q0 * UnitQuaternion::from_scaled_axis(w * dt);
-                    out[s.qi..s.qi + 4].copy_from_slice(&[q1.w, q1.i, q1.j, q1.k]);
-                }
-                Elem::Fixed => {}
-            }
+    /// The joint-to-parent transform of every segment at q (placement ∘ joint).
+    #[inline(always)]
+    pub(crate) fn seg_xform(&self, i: usize, q: &[T]) -> Xform<T> {
+        let s = &self.segs[i];
+        let j = s.elem.xform(&q[s.qi..]);
+        if s.placement_is_shift {
+            // placement E = 1: placement ∘ joint = (E_joint, r_placement + r_joint)
+            Xform { E: j.E, r: s.placement.r + j.r }
+        } else {
+            s.placement.then(&j)
         }
-        Ok(out)
     }
 
-    pub(crate) fn check_q(&self, q: &[f64]) -> Result<(), DynamicsError> {
-        crate::error::check_len(q.len(), self.nq, "q")?;
-        check_finite(q, "q")?;
-        for s in &self.segs {
-            if s.elem == Elem::Spherical {
-                let n = q[s.qi..s.qi + 4].iter().map(|x| x * x).sum::<f64>().sqrt();
-                if n < 1e-6 {
-                    return Err(DynamicsError::InvalidParameter {
-                        what: "ball-joint quaternion norm",
-                        value: n,
-                        valid: "a nonzero quaternion (it is normalized)",
-                    });
-                }
+    /// Ground-to-segment transform of segment i from its parent's (`None` at the root):
+    /// parent ∘ placement ∘ joint. A pin about a coordinate axis behind a placement without
+    /// rotation mixes two rows of the parent's orientation (12 products instead of 27).
+    #[inline(always)]
+    pub(crate) fn world_xform(&self, i: usize, q: &[T], parent: Option<&Xform<T>>) -> Xform<T> {
+        let s = &self.segs[i];
+        if let (Some(p), true, Elem::Revolute(_), Some((axis, negative))) =
+            (parent, s.placement_is_shift, &s.elem, s.coord_axis)
+        {
+            let (sn, c) = q[s.qi].sin_cos();
+            let sn = if negative { -sn } else { sn };
+            let r = p.r + p.E.tr_mul(&s.placement.r);
+            // 𝓞_{i/G} = 𝓞_k(θ) 𝓞_{p/G}: rows (i1, i2) turn by θ, the axis row stays
+            let (i1, i2) = [(1, 2), (2, 0), (0, 1)][axis];
+            let mut e = p.E;
+            for col in 0..3 {
+                let (a1, a2) = (p.E[(i1, col)], p.E[(i2, col)]);
+                e[(i1, col)] = c * a1 + sn * a2;
+                e[(i2, col)] = c * a2 - sn * a1;
             }
+            return Xform { E: e, r };
         }
-        Ok(())
-    }
-
-    pub(crate) fn check_v(&self, v: &[f64], what: &'static str) -> Result<(), DynamicsError> {
-        crate::error::check_len(v.len(), self.nv, what)?;
-        check_finite(v, what)
+        let x = self.seg_xform(i, q);
+        match parent {
+            Some(p) => p.then(&x),
+            None => x,
+        }
     }
 
     /// Link poses: for each link, 𝓞_{link/ground} and r_{link origin/ground origin}|_ground.
@@ -438,27 +360,46 @@ impl Model {
     /// Book: §2.22 (chains), (2.10.46) composition.
     ///
     /// # Errors
-    /// As [`Model::integrate`].
-    pub fn poses(&self, q: &[f64]) -> Result<Vec<Pose>, DynamicsError> {
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
+    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
+    pub fn poses(&self, q: &[T]) -> Result<Vec<Pose<T>>, DynamicsError> {
         self.check_q(q)?;
-        let (mut world, mut out) = (Vec::new(), Vec::new());
+        let (mut world, mut out) = (PosesScratch::default(), Vec::new());
         self.poses_into(q, &mut world, &mut out);
         Ok(out)
     }
 
     /// [`Model::poses`] into caller-owned buffers (no allocation once they have grown), without
     /// input checks: the hot path of a right-hand side. `world` is work space.
-    pub fn poses_into(&self, q: &[f64], world: &mut Vec<Pose>, out: &mut Vec<Pose>) {
+    pub fn poses_into(&self, q: &[T], world: &mut PosesScratch<T>, out: &mut Vec<Pose<T>>) {
+        let world = &mut world.0;
         world.clear();
-        for s in &self.segs {
-            let x = s.placement.then(&s.elem.xform(&q[s.qi..]));
-            let w = match s.parent {
-                Some(p) => Xform { E: world[p].0, r: world[p].1 }.then(&x),
-                None => x,
-            };
-            world.push((w.E, w.r));
+        for (i, s) in self.segs.iter().enumerate() {
+            let w = self.world_xform(i, q, s.parent.map(|p| &world[p]));
+            world.push(w);
         }
         out.clear();
-        out.extend(self.link_seg.iter().map(|&k| world[k]));
+        out.extend(self.link_seg.iter().map(|&k| (world[k].E, world[k].r)));
+    }
+
+    /// Ground-to-segment transforms of every segment (parents first).
+    pub(crate) fn world_xforms(&self, q: &[T]) -> Vec<Xform<T>> {
+        let mut world: Vec<Xform<T>> = Vec::with_capacity(self.segs.len());
+        for (i, s) in self.segs.iter().enumerate() {
+            let w = self.world_xform(i, q, s.parent.map(|p| &world[p]));
+            world.push(w);
+        }
+        world
+    }
+}
+
+/// Work space of [`Model::poses_into`]: the ground-to-segment transforms of one evaluation,
+/// kept between calls so that a right-hand side allocates nothing once it has grown.
+#[derive(Debug, Clone)]
+pub struct PosesScratch<T: Scalar = f64>(Vec<Xform<T>>);
+
+impl<T: Scalar> Default for PosesScratch<T> {
+    fn default() -> Self {
+        Self(Vec::new())
     }
 }

@@ -1,38 +1,48 @@
 //! Inverse dynamics by the recursive Newton–Euler algorithm with joint reaction wrenches
-//! (book §7.11).
+//! (book §7.11), generic over the scalar.
 
 use nalgebra::Vector3;
+use vectrix_tensor::Scalar;
 
-use super::model::{Elem, Model};
+use super::joint::Elem;
+use super::model::Model;
 use super::spatial::{Xform, cross_force, cross_motion};
 use crate::DynamicsError;
 
 /// The wrench a joint transmits from the parent to the link: force and moment about the link
-/// frame origin (the joint point), components in the link frame.
+/// frame origin (the joint point), components in the link frame. Also the form of external
+/// wrenches on links ([`LinkWrenches`]).
 ///
 /// Book: §7.11, (7.11.20)–(7.11.22) (ℱ_int, the joint reaction wrenches).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct JointWrench {
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JointWrench<T: Scalar = f64> {
     /// Force on the link from its parent, resolved in the link frame.
-    pub force: Vector3<f64>,
+    pub force: Vector3<T>,
     /// Moment on the link from its parent about the joint point, resolved in the link frame.
-    pub moment: Vector3<f64>,
+    pub moment: Vector3<T>,
+}
+
+impl<T: Scalar> Default for JointWrench<T> {
+    /// The zero wrench.
+    fn default() -> Self {
+        Self { force: Vector3::zeros(), moment: Vector3::zeros() }
+    }
 }
 
 /// Result of inverse dynamics: generalized forces τ and the joint reaction wrenches.
 #[derive(Debug, Clone, PartialEq)]
-pub struct InverseDynamics {
+pub struct InverseDynamics<T: Scalar = f64> {
     /// τ: joint torques/forces, one per velocity coordinate.
-    pub tau: Vec<f64>,
+    pub tau: Vec<T>,
     /// For each link (user order), the wrench its joint transmits.
-    pub wrenches: Vec<JointWrench>,
+    pub wrenches: Vec<JointWrench<T>>,
 }
 
 /// External wrenches on links for the tree algorithms: force and moment about the link frame
 /// origin, both resolved in the link frame.
-pub type LinkWrenches = [JointWrench];
+pub type LinkWrenches<T = f64> = [JointWrench<T>];
 
-impl Model {
+impl<T: Scalar> Model<T> {
     /// Inverse dynamics τ = ID(q, v, v̇) by the recursive Newton–Euler algorithm: an outward
     /// pass for twists and accelerations, then an inward pass accumulating the per-body
     /// equations 𝒥𝒜 + 𝒱^×𝒥𝒱 = ℱ_ext + ℱ_in − ℱ_out (7.11.13–15) from the tips to the base.
@@ -42,52 +52,70 @@ impl Model {
     /// Book: §7.11, (7.11.13)–(7.11.22); RBDA Table 5.1.
     ///
     /// # Errors
-    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`].
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`] (an input),
+    /// [`DynamicsError::Overflow`] (finite inputs whose τ overflows, e.g. v ≈ 1e200),
+    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
     pub fn rnea(
         &self,
-        q: &[f64],
-        v: &[f64],
-        vdot: &[f64],
-        f_ext: Option<&LinkWrenches>,
-    ) -> Result<InverseDynamics, DynamicsError> {
+        q: &[T],
+        v: &[T],
+        vdot: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<InverseDynamics<T>, DynamicsError> {
         self.check_q(q)?;
         self.check_v(v, "v")?;
         self.check_v(vdot, "v̇")?;
-        if let Some(f) = f_ext {
-            crate::error::check_len(f.len(), self.links(), "external wrenches")?;
-        }
-        let mut tau = vec![0.0; self.nv];
+        self.check_wrenches(f_ext)?;
+        let mut tau = vec![T::zero(); self.nv];
         let mut scratch = Scratch::new(self.segs.len());
         self.rnea_into(q, v, vdot, f_ext, &mut tau, &mut scratch);
-        let wrenches = self
+        let wrenches: Vec<JointWrench<T>> = self
             .link_seg
             .iter()
             .map(|&k| JointWrench { force: scratch.f[k], moment: scratch.n[k] })
             .collect();
+        let wrench_finite = wrenches.iter().all(|w| {
+            crate::error::all_finite(w.force.as_slice()) && crate::error::all_finite(w.moment.as_slice())
+        });
+        if !(crate::error::all_finite(&tau) && wrench_finite) {
+            return Err(DynamicsError::Overflow { what: "inverse dynamics τ" });
+        }
         Ok(InverseDynamics { tau, wrenches })
     }
 
     /// τ only, with caller-provided scratch (no allocation): the hot path of the benches.
-    /// Inputs are not checked; use [`Model::rnea`] for user input.
+    /// Inputs are not checked, and an overflow (inputs near 1e200) shows as non-finite τ;
+    /// use [`Model::rnea`] for user input.
     ///
     /// Book: §7.11.
-    pub fn rnea_unchecked(&self, q: &[f64], v: &[f64], vdot: &[f64], tau: &mut [f64], scratch: &mut Scratch) {
+    pub fn rnea_unchecked(&self, q: &[T], v: &[T], vdot: &[T], tau: &mut [T], scratch: &mut Scratch<T>) {
         self.rnea_into(q, v, vdot, None, tau, scratch);
+    }
+
+    pub(crate) fn check_wrenches(&self, f_ext: Option<&LinkWrenches<T>>) -> Result<(), DynamicsError> {
+        if let Some(f) = f_ext {
+            crate::error::check_len(f.len(), self.links(), "external wrenches")?;
+            for w in f {
+                crate::error::check_finite_t(w.force.as_slice(), "external wrench force")?;
+                crate::error::check_finite_t(w.moment.as_slice(), "external wrench moment")?;
+            }
+        }
+        Ok(())
     }
 
     fn rnea_into(
         &self,
-        q: &[f64],
-        v: &[f64],
-        vdot: &[f64],
-        f_ext: Option<&LinkWrenches>,
-        tau: &mut [f64],
-        s: &mut Scratch,
+        q: &[T],
+        v: &[T],
+        vdot: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        tau: &mut [T],
+        s: &mut Scratch<T>,
     ) {
         let a0 = -self.gravity;
         // outward pass: 𝒱_i = X_i 𝒱_p + S q̇_i, 𝒜_i = X_i 𝒜_p + S q̈_i + 𝒱_i ×m S q̇_i
         for (i, seg) in self.segs.iter().enumerate() {
-            let x = seg.placement.then(&seg.elem.xform(&q[seg.qi..]));
+            let x = self.seg_xform(i, q);
             let ((wp, vp), (ap, lp)) = match seg.parent {
                 Some(p) => ((s.w[p], s.v[p]), (s.aw[p], s.av[p])),
                 None => ((Vector3::zeros(), Vector3::zeros()), (Vector3::zeros(), a0)),
@@ -131,7 +159,7 @@ impl Model {
 
 /// S q̇ for one elementary joint: (ω, v) in the child frame.
 #[inline(always)]
-pub(crate) fn joint_motion(elem: &Elem, qd: &[f64]) -> (Vector3<f64>, Vector3<f64>) {
+pub(crate) fn joint_motion<T: Scalar>(elem: &Elem<T>, qd: &[T]) -> (Vector3<T>, Vector3<T>) {
     match elem {
         Elem::Revolute(a) => (a * qd[0], Vector3::zeros()),
         Elem::Prismatic(a) => (Vector3::zeros(), a * qd[0]),
@@ -142,7 +170,7 @@ pub(crate) fn joint_motion(elem: &Elem, qd: &[f64]) -> (Vector3<f64>, Vector3<f6
 
 /// Sᵀ ℱ for one elementary joint, written into `out`.
 #[inline(always)]
-pub(crate) fn project_force(elem: &Elem, n: &Vector3<f64>, f: &Vector3<f64>, out: &mut [f64]) {
+pub(crate) fn project_force<T: Scalar>(elem: &Elem<T>, n: &Vector3<T>, f: &Vector3<T>, out: &mut [T]) {
     match elem {
         Elem::Revolute(a) => out[0] = a.dot(n),
         Elem::Prismatic(a) => out[0] = a.dot(f),
@@ -153,17 +181,17 @@ pub(crate) fn project_force(elem: &Elem, n: &Vector3<f64>, f: &Vector3<f64>, out
 
 /// Work space of the tree algorithms (one entry per elementary segment).
 #[derive(Debug, Clone)]
-pub struct Scratch {
-    pub(crate) x: Vec<Xform>,
-    pub(crate) w: Vec<Vector3<f64>>,
-    pub(crate) v: Vec<Vector3<f64>>,
-    pub(crate) aw: Vec<Vector3<f64>>,
-    pub(crate) av: Vec<Vector3<f64>>,
-    pub(crate) n: Vec<Vector3<f64>>,
-    pub(crate) f: Vec<Vector3<f64>>,
+pub struct Scratch<T: Scalar = f64> {
+    pub(crate) x: Vec<Xform<T>>,
+    pub(crate) w: Vec<Vector3<T>>,
+    pub(crate) v: Vec<Vector3<T>>,
+    pub(crate) aw: Vec<Vector3<T>>,
+    pub(crate) av: Vec<Vector3<T>>,
+    pub(crate) n: Vec<Vector3<T>>,
+    pub(crate) f: Vec<Vector3<T>>,
 }
 
-impl Scratch {
+impl<T: Scalar> Scratch<T> {
     /// Work space for `segments` segments (use [`Model::scratch`]).
     pub(crate) fn new(segments: usize) -> Self {
         let z = vec![Vector3::zeros(); segments];
@@ -179,9 +207,9 @@ impl Scratch {
     }
 }
 
-impl Model {
+impl<T: Scalar> Model<T> {
     /// A work space sized for this model, for the `_unchecked` hot paths.
-    pub fn scratch(&self) -> Scratch {
+    pub fn scratch(&self) -> Scratch<T> {
         Scratch::new(self.segs.len())
     }
 }

@@ -1,4 +1,4 @@
-//! Spatial-vector helpers for the tree algorithms, in body coordinates.
+//! Spatial-vector helpers for the tree algorithms, generic over the scalar.
 //!
 //! Internally motion vectors are (ω, v) and force vectors (n, f): the angular part first,
 //! as in Featherstone's *Rigid Body Dynamics Algorithms* (RBDA). The book's 6D form (§7.10)
@@ -7,23 +7,24 @@
 #![allow(non_snake_case)]
 
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
+use vectrix_tensor::Scalar;
 
 /// A placement or joint transform from a parent frame P to a child frame C: the passive
 /// orientation E = 𝓞_{C/P} and r = r_{C origin/P origin} resolved in P.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Xform {
-    pub E: Matrix3<f64>,
-    pub r: Vector3<f64>,
+pub(crate) struct Xform<T: Scalar> {
+    pub E: Matrix3<T>,
+    pub r: Vector3<T>,
 }
 
-impl Xform {
+impl<T: Scalar> Xform<T> {
     pub fn identity() -> Self {
         Self { E: Matrix3::identity(), r: Vector3::zeros() }
     }
 
     /// self ∘ inner: first `self` (P→J), then `inner` (J→C).
     #[inline(always)]
-    pub fn then(&self, inner: &Xform) -> Xform {
+    pub fn then(&self, inner: &Xform<T>) -> Xform<T> {
         Xform { E: inner.E * self.E, r: self.r + self.E.tr_mul(&inner.r) }
     }
 
@@ -31,7 +32,7 @@ impl Xform {
     /// (A, B, C) → (EᵀAE, EᵀBE, EᵀCE), then shift by r: B'' = B' + r^×C',
     /// A'' = A' + r^×B'ᵀ − B'r^× − r^×C'r^× (RBDA §2.12, transformed inertia).
     #[inline(always)]
-    pub fn inertia_to_parent(&self, ia: &Matrix6<f64>) -> Matrix6<f64> {
+    pub fn inertia_to_parent(&self, ia: &Matrix6<T>) -> Matrix6<T> {
         let a = ia.fixed_view::<3, 3>(0, 0).into_owned();
         let b = ia.fixed_view::<3, 3>(0, 3).into_owned();
         let c = ia.fixed_view::<3, 3>(3, 3).into_owned();
@@ -51,7 +52,7 @@ impl Xform {
 
     /// Xᵀ f for a force 6-vector (n, f).
     #[inline(always)]
-    pub fn force6_to_parent(&self, x: &Vector6<f64>) -> Vector6<f64> {
+    pub fn force6_to_parent(&self, x: &Vector6<T>) -> Vector6<T> {
         let (n, f) = split(x);
         let (np, fp) = self.force_to_parent(&n, &f);
         join(&np, &fp)
@@ -59,20 +60,20 @@ impl Xform {
 
     /// Motion vector from P to C: ω_C = Eω, v_C = E(v − r×ω).
     #[inline(always)]
-    pub fn motion(&self, w: &Vector3<f64>, v: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
+    pub fn motion(&self, w: &Vector3<T>, v: &Vector3<T>) -> (Vector3<T>, Vector3<T>) {
         (self.E * w, self.E * (v - self.r.cross(w)))
     }
 
     /// Force vector from C to P (Xᵀ): f_P = Eᵀf, n_P = Eᵀn + r×f_P.
     #[inline(always)]
-    pub fn force_to_parent(&self, n: &Vector3<f64>, f: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
+    pub fn force_to_parent(&self, n: &Vector3<T>, f: &Vector3<T>) -> (Vector3<T>, Vector3<T>) {
         let fp = self.E.tr_mul(f);
         (self.E.tr_mul(n) + self.r.cross(&fp), fp)
     }
 
     /// The 6×6 motion transform ^C X_P in (ω, v) ordering.
     #[cfg(test)]
-    pub fn matrix(&self) -> Matrix6<f64> {
+    pub fn matrix(&self) -> Matrix6<T> {
         let mut x = Matrix6::zeros();
         x.fixed_view_mut::<3, 3>(0, 0).copy_from(&self.E);
         x.fixed_view_mut::<3, 3>(3, 3).copy_from(&self.E);
@@ -81,30 +82,95 @@ impl Xform {
     }
 }
 
-/// The spatial inertia of a body about its frame origin, (ω, v) ordering:
-/// [[Ī, m c^×], [−m c^×, m 1]], Ī = J_c − m c^× c^×.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct BodyInertia {
-    pub m: f64,
-    /// m c (first moment about the frame origin).
-    pub h: Vector3<f64>,
-    /// Ī: rotational inertia about the frame origin.
-    pub I: Matrix3<f64>,
+impl Xform<f64> {
+    /// The same transform with every number converted from f64.
+    pub fn cast<U: Scalar>(&self) -> Xform<U> {
+        Xform { E: self.E.map(U::lit), r: self.r.map(U::lit) }
+    }
 }
 
-impl BodyInertia {
-    pub fn from_centre(m: f64, c: &Vector3<f64>, j_c: &Matrix3<f64>) -> Self {
+/// The spatial inertia of a body about a point, (ω, v) ordering:
+/// [[Ī, h^×], [−h^×, m 1]], with h = m c (first moment) and Ī the rotational inertia about
+/// the point. Sums of such inertias about the same point are inertias (composite bodies).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct BodyInertia<T: Scalar> {
+    pub m: T,
+    /// m c (first moment about the reference point).
+    pub h: Vector3<T>,
+    /// Ī: rotational inertia about the reference point.
+    pub I: Matrix3<T>,
+}
+
+impl<T: Scalar> BodyInertia<T> {
+    pub fn zero() -> Self {
+        Self { m: T::zero(), h: Vector3::zeros(), I: Matrix3::zeros() }
+    }
+
+    /// From m, the centre c and J_c (parallel-axis theorem, book (6.4.x)):
+    /// Ī = J_c − m c^× c^×.
+    pub fn from_centre(m: T, c: &Vector3<T>, j_c: &Matrix3<T>) -> Self {
         let cx = c.cross_matrix();
         Self { m, h: c * m, I: j_c - cx * cx * m }
     }
 
     /// I·(ω, v) = (Īω + h×v, m v − h×ω).
     #[inline(always)]
-    pub fn apply(&self, w: &Vector3<f64>, v: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
+    pub fn apply(&self, w: &Vector3<T>, v: &Vector3<T>) -> (Vector3<T>, Vector3<T>) {
         (self.I * w + self.h.cross(v), v * self.m - self.h.cross(w))
     }
 
-    pub fn matrix(&self) -> Matrix6<f64> {
+    /// I·m for a motion 6-vector.
+    #[inline(always)]
+    pub fn apply6(&self, m: &Vector6<T>) -> Vector6<T> {
+        let (w, v) = split(m);
+        let (n, f) = self.apply(&w, &v);
+        join(&n, &f)
+    }
+
+    #[inline(always)]
+    pub fn add(&mut self, o: &BodyInertia<T>) {
+        self.m += o.m;
+        self.h += o.h;
+        self.I += o.I;
+    }
+
+    /// The inertia about the ground origin, components in the ground frame, of a body of mass
+    /// m with centre c and J_c (link components) whose frame has orientation E = 𝓞_{B/G}
+    /// (passive; R = Eᵀ has the body axes as columns) and origin p: with c' = p + Rc,
+    /// Ī' = R J_c Rᵀ + m(|c'|² 1 − c'c'ᵀ) (parallel axes, book (6.4.x)), h' = m c'.
+    #[inline(always)]
+    pub fn from_centre_in_ground(
+        m: T,
+        c: &Vector3<T>,
+        j_c: &Matrix3<T>,
+        E: &Matrix3<T>,
+        p: &Vector3<T>,
+    ) -> Self {
+        let cw = p + E.tr_mul(c);
+        // R J_c Rᵀ = Eᵀ(J_c E), symmetric: six entries (column i of E · column k of J_c E);
+        // a diagonal J_c (principal link axes) scales the rows of E
+        let je = if j_c[(0, 1)] == T::zero() && j_c[(0, 2)] == T::zero() && j_c[(1, 2)] == T::zero() {
+            let mut je = *E;
+            for r in 0..3 {
+                let l = j_c[(r, r)];
+                for k in 0..3 {
+                    je[(r, k)] *= l;
+                }
+            }
+            je
+        } else {
+            j_c * E
+        };
+        let d = |i: usize, k: usize| E[(0, i)] * je[(0, k)] + E[(1, i)] * je[(1, k)] + E[(2, i)] * je[(2, k)];
+        let mc = cw * m;
+        let s = mc.dot(&cw);
+        let (a01, a02, a12) = (d(0, 1) - mc.x * cw.y, d(0, 2) - mc.x * cw.z, d(1, 2) - mc.y * cw.z);
+        let (a00, a11, a22) =
+            (d(0, 0) + s - mc.x * cw.x, d(1, 1) + s - mc.y * cw.y, d(2, 2) + s - mc.z * cw.z);
+        Self { m, h: mc, I: Matrix3::new(a00, a01, a02, a01, a11, a12, a02, a12, a22) }
+    }
+
+    pub fn matrix(&self) -> Matrix6<T> {
         let hx = self.h.cross_matrix();
         let mut out = Matrix6::zeros();
         out.fixed_view_mut::<3, 3>(0, 0).copy_from(&self.I);
@@ -115,35 +181,60 @@ impl BodyInertia {
     }
 }
 
+impl BodyInertia<f64> {
+    /// The same inertia with every number converted from f64.
+    pub fn cast<U: Scalar>(&self) -> BodyInertia<U> {
+        BodyInertia { m: U::lit(self.m), h: self.h.map(U::lit), I: self.I.map(U::lit) }
+    }
+}
+
 /// Motion cross product (ω, v) ×m (ω₂, v₂) = (ω×ω₂, ω×v₂ + v×ω₂).
 #[inline(always)]
-pub(crate) fn cross_motion(
-    w: &Vector3<f64>,
-    v: &Vector3<f64>,
-    w2: &Vector3<f64>,
-    v2: &Vector3<f64>,
-) -> (Vector3<f64>, Vector3<f64>) {
+pub(crate) fn cross_motion<T: Scalar>(
+    w: &Vector3<T>,
+    v: &Vector3<T>,
+    w2: &Vector3<T>,
+    v2: &Vector3<T>,
+) -> (Vector3<T>, Vector3<T>) {
     (w.cross(w2), w.cross(v2) + v.cross(w2))
 }
 
 /// Force cross product (ω, v) ×f (n, f) = (ω×n + v×f, ω×f).
 #[inline(always)]
-pub(crate) fn cross_force(
-    w: &Vector3<f64>,
-    v: &Vector3<f64>,
-    n: &Vector3<f64>,
-    f: &Vector3<f64>,
-) -> (Vector3<f64>, Vector3<f64>) {
+pub(crate) fn cross_force<T: Scalar>(
+    w: &Vector3<T>,
+    v: &Vector3<T>,
+    n: &Vector3<T>,
+    f: &Vector3<T>,
+) -> (Vector3<T>, Vector3<T>) {
     (w.cross(n) + v.cross(f), w.cross(f))
 }
 
+/// Motion cross product of 6-vectors, m₁ ×m m₂.
 #[inline(always)]
-pub(crate) fn join(a: &Vector3<f64>, b: &Vector3<f64>) -> Vector6<f64> {
+pub(crate) fn cross_motion6<T: Scalar>(m1: &Vector6<T>, m2: &Vector6<T>) -> Vector6<T> {
+    let (w, v) = split(m1);
+    let (w2, v2) = split(m2);
+    let (a, b) = cross_motion(&w, &v, &w2, &v2);
+    join(&a, &b)
+}
+
+/// Force cross product of 6-vectors, m ×f f.
+#[inline(always)]
+pub(crate) fn cross_force6<T: Scalar>(m: &Vector6<T>, f: &Vector6<T>) -> Vector6<T> {
+    let (w, v) = split(m);
+    let (n, ff) = split(f);
+    let (a, b) = cross_force(&w, &v, &n, &ff);
+    join(&a, &b)
+}
+
+#[inline(always)]
+pub(crate) fn join<T: Scalar>(a: &Vector3<T>, b: &Vector3<T>) -> Vector6<T> {
     Vector6::new(a.x, a.y, a.z, b.x, b.y, b.z)
 }
 
 #[inline(always)]
-pub(crate) fn split(x: &Vector6<f64>) -> (Vector3<f64>, Vector3<f64>) {
+pub(crate) fn split<T: Scalar>(x: &Vector6<T>) -> (Vector3<T>, Vector3<T>) {
     (Vector3::new(x[0], x[1], x[2]), Vector3::new(x[3], x[4], x[5]))
 }
 
@@ -168,5 +259,19 @@ mod tests {
         assert!((x.inertia_to_parent(&i) - want).norm() < 1e-13 * want.norm());
         let f = Vector6::new(0.1, 0.2, 0.3, -0.4, 0.5, -0.6);
         assert!((x.force6_to_parent(&f) - x.matrix().transpose() * f).norm() < 1e-14);
+    }
+
+    /// The world inertia of a placed body equals Xᵀ I X with X the ground-to-body transform.
+    #[test]
+    fn to_world_matches_transformed_inertia() {
+        let e = nalgebra::Rotation3::from_scaled_axis(Vector3::new(-0.4, 0.9, 0.2)).into_inner();
+        let p = Vector3::new(0.7, -1.1, 0.35);
+        let (c, j) =
+            (Vector3::new(-0.2, 0.3, 0.15), Matrix3::new(1.0, 0.05, -0.1, 0.05, 1.5, 0.02, -0.1, 0.02, 0.8));
+        let body = BodyInertia::from_centre(2.1, &c, &j);
+        let x = Xform { E: e, r: p };
+        let want = x.inertia_to_parent(&body.matrix());
+        let got = BodyInertia::from_centre_in_ground(2.1, &c, &j, &e, &p).matrix();
+        assert!((got - want).norm() < 1e-14 * want.norm(), "{}", (got - want).norm());
     }
 }

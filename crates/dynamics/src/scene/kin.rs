@@ -8,7 +8,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::build::{At, Body};
 use super::spec::JointSpec;
-use crate::multibody::{Model, Pose};
+use crate::multibody::{Model, Pose, PosesScratch};
 
 /// Poses and twists: for each link 𝓞_{link/ground}, r_{origin}, ω and v_{origin} (ground).
 #[derive(Debug, Clone)]
@@ -130,7 +130,7 @@ pub(crate) fn kinematics_into(
     q: &[f64],
     v: &[f64],
     kin: &mut Kin,
-    world: &mut Vec<Pose>,
+    world: &mut PosesScratch,
 ) {
     model.poses_into(q, world, &mut kin.poses);
     let n = bodies.len();

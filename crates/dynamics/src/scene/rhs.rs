@@ -10,7 +10,7 @@ use nalgebra::DMatrix;
 use super::forces::{Loads, apply};
 use super::kin::{Kin, kinematics_into, qdot};
 use super::{Scene, SceneError};
-use crate::multibody::{AbaScratch, JointWrench, Pose};
+use crate::multibody::{AbaScratch, JointWrench, PosesScratch};
 
 /// Work space of the right-hand side: everything an evaluation needs, allocated once per run.
 pub(crate) struct RhsScratch {
@@ -18,7 +18,7 @@ pub(crate) struct RhsScratch {
     tau: Vec<f64>,
     wrenches: Vec<JointWrench>,
     kin: Kin,
-    world: Vec<Pose>,
+    world: PosesScratch,
     /// The independent constraint rows found last (see `loops::solve_dropping`).
     keep: Option<Vec<usize>>,
 }
@@ -31,7 +31,7 @@ impl RhsScratch {
             tau: vec![0.0; m.nv()],
             wrenches: vec![JointWrench::default(); scene.built.bodies.len()],
             kin: Kin::empty(),
-            world: Vec::new(),
+            world: PosesScratch::default(),
             keep: None,
         }
     }

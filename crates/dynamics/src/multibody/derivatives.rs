@@ -1,0 +1,484 @@
+//! Exact (analytical) derivatives of inverse and forward dynamics: ∂τ/∂(q, v, v̇) of RNEA and
+//! ∂v̇/∂(q, v, τ) of ABA, by one outward and one inward pass in ground coordinates
+//! (Carpentier & Mansard, *Analytical derivatives of rigid body dynamics algorithms*, RSS 2018).
+//!
+//! Book: §7.11; §12–§15 (linearization about a state).
+#![allow(non_snake_case)]
+
+use nalgebra::{DMatrix, Matrix3, Vector3, Vector6};
+use vectrix_tensor::Scalar;
+
+use super::crba::{mass_cholesky, world_subspace};
+use super::model::Model;
+use super::rnea::LinkWrenches;
+use super::spatial::{BodyInertia, Xform, cross_force6, cross_motion6, join, split};
+use crate::DynamicsError;
+
+/// Derivatives of inverse dynamics τ = RNEA(q, v, v̇), computed by
+/// [`Model::rnea_derivatives`] (and inside [`Model::aba_derivatives`]).
+///
+/// # Derivation (all spatial vectors in ground coordinates about the ground origin)
+/// Moving joint coordinate j by δ moves the subtree of j rigidly by the screw Jⱼδ, where Jⱼ
+/// is the joint's motion subspace in the ground. Every quantity attached to a body i of that
+/// subtree then changes by Jⱼ × (·) (motions) or Jⱼ ×* (·) (forces, inertias), plus what
+/// changes in the body's own motion:
+/// * ∂vᵢ/∂qⱼ = Jⱼ × vᵢ + vλ × Jⱼ, with λ the parent of j (so dVdqⱼ = vλ × Jⱼ);
+/// * ∂aᵢ/∂qⱼ = Jⱼ × aᵢ + dAdqⱼ + dVdqⱼ × vᵢ, dAdqⱼ = aλ × Jⱼ + vλ × dVdqⱼ (a with −g);
+/// * ∂vᵢ/∂q̇ⱼ = Jⱼ and ∂aᵢ/∂q̇ⱼ = Jⱼ × vᵢ + dAdvⱼ, dAdvⱼ = vⱼ × Jⱼ + vλ × Jⱼ.
+///
+/// The body force fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ then has ∂fᵢ/∂qⱼ = Jⱼ ×* fᵢ + Iᵢ dAdqⱼ + Bᵢ dVdqⱼ
+/// with Bᵢ = İᵢ + (· ×* Iᵢvᵢ) = [[Ī̇ − n^×, 0], [−2 f^×, 0]] ((n, f) = Iᵢvᵢ, the momentum).
+/// All of it is linear in (Iᵢ, Bᵢ, fᵢ), so subtree sums (composites Iᶜ, Bᶜ, Fᶜ) give
+/// τᵢ = JᵢᵀFᶜᵢ and
+/// * ∂τᵢ/∂qⱼ = (IᶜᵢJᵢ)·dAdqⱼ + (BᶜᵢᵀJᵢ)·dVdqⱼ for j an ancestor of i (or i itself; the
+///   Jⱼ × Jᵢ and Jⱼ ×* Fᶜᵢ terms cancel in the pairing),
+/// * ∂τᵢ/∂qⱼ = Jᵢ·(Jⱼ ×* Fᶜⱼ + Iᶜⱼ dAdqⱼ + Bᶜⱼ dVdqⱼ) for j a descendant of i,
+///
+/// and the same with (dAdvⱼ, Jⱼ) for q̇ⱼ; ∂τ/∂v̇ = M. ABA's derivatives follow from
+/// RNEA(q, v, ABA(q, v, τ)) = τ: ∂v̇/∂(q, v) = −M⁻¹ ∂τ/∂(q, v), ∂v̇/∂τ = M⁻¹.
+///
+/// # Tangent space
+/// ∂/∂q is taken in the tangent space of the configuration, one column per velocity
+/// coordinate: column k is d/dε f(q ⊕ ε eₖ) at ε = 0 with ⊕ = [`Model::integrate`]. For
+/// scalar joints that is the ordinary partial derivative; for a ball joint (and the rotation
+/// of a free joint) it is a rotation of the link about its own k-th axis (q ⊗ exp(ε eₖ/2)),
+/// as Pinocchio does; the free joint's translation is ordinary (x, y, z are coordinates in
+/// the joint frame, vectrix's free joint is ℝ³ × SO(3), not SE(3)).
+///
+///
+/// Book: §7.11.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RneaDerivatives<T: Scalar = f64> {
+    /// τ at the point.
+    pub tau: Vec<T>,
+    /// ∂τ/∂q (nv × nv; column k along the tangent direction k).
+    pub dtau_dq: DMatrix<T>,
+    /// ∂τ/∂v (nv × nv).
+    pub dtau_dv: DMatrix<T>,
+    /// ∂τ/∂v̇ = M(q), the joint-space mass matrix.
+    pub mass_matrix: DMatrix<T>,
+}
+
+impl<T: Scalar> RneaDerivatives<T> {
+    /// Zero matrices sized for `model` (the output buffer of the `_into` hot path).
+    pub fn zeros(model: &Model<T>) -> Self {
+        let n = model.nv();
+        Self {
+            tau: vec![T::zero(); n],
+            dtau_dq: DMatrix::zeros(n, n),
+            dtau_dv: DMatrix::zeros(n, n),
+            mass_matrix: DMatrix::zeros(n, n),
+        }
+    }
+}
+
+/// Derivatives of forward dynamics v̇ = ABA(q, v, τ) (tangent-space q-derivatives).
+///
+/// Book: §7.11.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AbaDerivatives<T: Scalar = f64> {
+    /// v̇ at the point.
+    pub vdot: Vec<T>,
+    /// ∂v̇/∂q (nv × nv; column k along the tangent direction k).
+    pub dvdot_dq: DMatrix<T>,
+    /// ∂v̇/∂v (nv × nv).
+    pub dvdot_dv: DMatrix<T>,
+    /// ∂v̇/∂τ = M(q)⁻¹.
+    pub dvdot_dtau: DMatrix<T>,
+}
+
+impl<T: Scalar> AbaDerivatives<T> {
+    /// Zero matrices sized for `model` (the output buffer of the `_into` hot path).
+    pub fn zeros(model: &Model<T>) -> Self {
+        let n = model.nv();
+        Self {
+            vdot: vec![T::zero(); n],
+            dvdot_dq: DMatrix::zeros(n, n),
+            dvdot_dv: DMatrix::zeros(n, n),
+            dvdot_dtau: DMatrix::zeros(n, n),
+        }
+    }
+}
+
+/// The composite "velocity variation" Bᶜ = [[P, 0], [−2 f^×, 0]] of a subtree (see
+/// [`RneaDerivatives`]).
+#[derive(Debug, Clone, Copy)]
+struct Variation<T: Scalar> {
+    P: Matrix3<T>,
+    f: Vector3<T>,
+}
+
+impl<T: Scalar> Variation<T> {
+    fn zero() -> Self {
+        Self { P: Matrix3::zeros(), f: Vector3::zeros() }
+    }
+
+    /// B of one body of ground inertia `y` moving with twist (ω, v):
+    /// P = Ī̇ − n^× with Ī̇ = ω^×Ī − Īω^× − h vᵀ − v hᵀ + 2(v·h)1, (n, f) = I(ω, v).
+    fn of_body(y: &BodyInertia<T>, w: &Vector3<T>, v: &Vector3<T>) -> Self {
+        let (n, f) = y.apply(w, v);
+        let wx = w.cross_matrix();
+        let hv = y.h * v.transpose();
+        let two_vh = (v.dot(&y.h)) * T::lit(2.0);
+        let mut P = wx * y.I - y.I * wx - hv - hv.transpose() - n.cross_matrix();
+        P[(0, 0)] += two_vh;
+        P[(1, 1)] += two_vh;
+        P[(2, 2)] += two_vh;
+        Self { P, f }
+    }
+
+    fn add(&mut self, o: &Self) {
+        self.P += o.P;
+        self.f += o.f;
+    }
+
+    /// B·(ω, v) = (P ω, −2 f × ω).
+    #[inline(always)]
+    fn apply(&self, m: &Vector6<T>) -> Vector6<T> {
+        let (w, _) = split(m);
+        join(&(self.P * w), &(self.f.cross(&w) * T::lit(-2.0)))
+    }
+
+    /// The angular half of Bᵀ·(ω, v) = (Pᵀω + 2 f × v, 0).
+    #[inline(always)]
+    fn apply_transpose_angular(&self, m: &Vector6<T>) -> Vector3<T> {
+        let (w, v) = split(m);
+        self.P.tr_mul(&w) + self.f.cross(&v) * T::lit(2.0)
+    }
+}
+
+/// Work space of the derivative algorithms (per segment, and per velocity coordinate).
+#[derive(Debug, Clone)]
+pub struct DerivativeScratch<T: Scalar = f64> {
+    world: Vec<Xform<T>>,
+    ov: Vec<Vector6<T>>,
+    oa: Vec<Vector6<T>>,
+    Yc: Vec<BodyInertia<T>>,
+    Bc: Vec<Variation<T>>,
+    Fc: Vec<Vector6<T>>,
+    /// Per velocity coordinate: J, dVdq, dAdq, dAdv (ground coordinates).
+    J: Vec<Vector6<T>>,
+    dVdq: Vec<Vector6<T>>,
+    dAdq: Vec<Vector6<T>>,
+    dAdv: Vec<Vector6<T>>,
+    /// L⁻¹ and its transpose while forming M⁻¹.
+    work: DMatrix<T>,
+    work_t: DMatrix<T>,
+    rnea: Option<Box<RneaDerivatives<T>>>,
+    aba: Option<super::aba::AbaScratch<T>>,
+}
+
+impl<T: Scalar> Model<T> {
+    /// A work space for the `_into` derivative hot paths.
+    pub fn derivative_scratch(&self) -> DerivativeScratch<T> {
+        let n = self.segs.len();
+        let nv = self.nv;
+        DerivativeScratch {
+            world: vec![Xform::identity(); n],
+            ov: vec![Vector6::zeros(); n],
+            oa: vec![Vector6::zeros(); n],
+            Yc: vec![BodyInertia::zero(); n],
+            Bc: vec![Variation::zero(); n],
+            Fc: vec![Vector6::zeros(); n],
+            J: vec![Vector6::zeros(); nv],
+            dVdq: vec![Vector6::zeros(); nv],
+            dAdq: vec![Vector6::zeros(); nv],
+            dAdv: vec![Vector6::zeros(); nv],
+            work: DMatrix::zeros(nv, nv),
+            work_t: DMatrix::zeros(nv, nv),
+            rnea: None,
+            aba: None,
+        }
+    }
+
+    /// Exact derivatives of inverse dynamics at (q, v, v̇): τ, ∂τ/∂q, ∂τ/∂v and ∂τ/∂v̇ = M,
+    /// analytically in O(n·depth) ([`RneaDerivatives`] has the derivation and the
+    /// tangent-space convention for ball and free joints). External wrenches `f_ext` are
+    /// fixed in their links (they turn with them).
+    ///
+    /// Book: §7.11 (RNEA), §12.x (linearization).
+    ///
+    /// # Errors
+    /// As [`Model::rnea`].
+    pub fn rnea_derivatives(
+        &self,
+        q: &[T],
+        v: &[T],
+        vdot: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<RneaDerivatives<T>, DynamicsError> {
+        self.check_q(q)?;
+        self.check_v(v, "v")?;
+        self.check_v(vdot, "v̇")?;
+        self.check_wrenches(f_ext)?;
+        let mut out = RneaDerivatives::zeros(self);
+        let mut s = self.derivative_scratch();
+        self.rnea_derivatives_into(q, v, vdot, f_ext, &mut out, &mut s);
+        let all = [&out.tau[..], out.dtau_dq.as_slice(), out.dtau_dv.as_slice(), out.mass_matrix.as_slice()];
+        if !all.iter().all(|x| crate::error::all_finite(x)) {
+            return Err(DynamicsError::Overflow { what: "derivatives of inverse dynamics" });
+        }
+        Ok(out)
+    }
+
+    /// Exact derivatives of forward dynamics at (q, v, τ): v̇, ∂v̇/∂q, ∂v̇/∂v and ∂v̇/∂τ = M⁻¹,
+    /// from ∂v̇/∂(q, v) = −M⁻¹ ∂τ/∂(q, v) at v̇ = ABA(q, v, τ) (tangent-space convention as
+    /// in [`RneaDerivatives`]).
+    ///
+    /// Book: §7.11 (ABA), §12.x (linearization).
+    ///
+    /// # Errors
+    /// As [`Model::aba`]; [`DynamicsError::SingularMassMatrix`] when M is singular (a model
+    /// with an inert joint direction: the derivative along it is infinite).
+    pub fn aba_derivatives(
+        &self,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+    ) -> Result<AbaDerivatives<T>, DynamicsError> {
+        self.check_q(q)?;
+        self.check_v(v, "v")?;
+        self.check_v(tau, "τ")?;
+        self.check_wrenches(f_ext)?;
+        let mut out = AbaDerivatives::zeros(self);
+        let mut s = self.derivative_scratch();
+        self.aba_derivatives_into(q, v, tau, f_ext, &mut out, &mut s)?;
+        let all =
+            [&out.vdot[..], out.dvdot_dq.as_slice(), out.dvdot_dv.as_slice(), out.dvdot_dtau.as_slice()];
+        if !all.iter().all(|x| crate::error::all_finite(x)) {
+            return Err(DynamicsError::Overflow { what: "derivatives of forward dynamics" });
+        }
+        Ok(out)
+    }
+
+    /// [`Model::aba_derivatives`] without input checks, into caller-provided output and
+    /// scratch: the hot path.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InertJointForce`] (from ABA), [`DynamicsError::SingularMassMatrix`].
+    ///
+    /// # Panics
+    /// If `out` was not made by [`AbaDerivatives::zeros`] for this model.
+    pub fn aba_derivatives_into(
+        &self,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        out: &mut AbaDerivatives<T>,
+        s: &mut DerivativeScratch<T>,
+    ) -> Result<(), DynamicsError> {
+        let mut aba = s.aba.take().unwrap_or_else(|| self.aba_scratch());
+        let r = self.aba_into(q, v, tau, f_ext, &mut out.vdot, &mut aba);
+        s.aba = Some(aba);
+        r?;
+        let mut rd = s.rnea.take().unwrap_or_else(|| Box::new(RneaDerivatives::zeros(self)));
+        self.rnea_derivatives_into(q, v, &out.vdot, f_ext, &mut rd, s);
+        // M⁻¹ = L⁻ᵀL⁻¹ from one Cholesky factorization (M's buffer is lent to it), then
+        // ∂v̇/∂q = −M⁻¹ ∂τ/∂q and ∂v̇/∂v = −M⁻¹ ∂τ/∂v by matrix products
+        let m = std::mem::replace(&mut rd.mass_matrix, DMatrix::zeros(0, 0));
+        let result = match mass_cholesky(m) {
+            Ok(chol) => {
+                let l = chol.unpack();
+                inverse_from_cholesky(&l, &mut out.dvdot_dtau, &mut s.work, &mut s.work_t);
+                out.dvdot_dq.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dq, T::zero());
+                out.dvdot_dv.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dv, T::zero());
+                rd.mass_matrix = l;
+                Ok(())
+            }
+            Err(e) => {
+                rd.mass_matrix = DMatrix::zeros(self.nv, self.nv);
+                Err(e)
+            }
+        };
+        s.rnea = Some(rd);
+        result
+    }
+
+    /// [`Model::rnea_derivatives`] without input checks, into caller-provided output and
+    /// scratch: the hot path.
+    ///
+    /// # Panics
+    /// If `out` was not made by [`RneaDerivatives::zeros`] for this model.
+    pub fn rnea_derivatives_into(
+        &self,
+        q: &[T],
+        v: &[T],
+        vdot: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        out: &mut RneaDerivatives<T>,
+        s: &mut DerivativeScratch<T>,
+    ) {
+        let minus_g = join(&Vector3::zeros(), &(-self.gravity));
+        // outward pass, ground coordinates: placement, J, v, a (with −g), composite seeds
+        for (i, seg) in self.segs.iter().enumerate() {
+            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]));
+            let (ov_p, oa_p) = match seg.parent {
+                Some(p) => (s.ov[p], s.oa[p]),
+                None => (Vector6::zeros(), minus_g),
+            };
+            world_subspace(seg, &w, &mut s.J[seg.vi..]);
+            let cols = seg.vi..seg.vi + seg.elem.nv();
+            let (mut jv, mut ja) = (Vector6::zeros(), Vector6::zeros());
+            for c in cols.clone() {
+                jv += s.J[c] * v[c];
+                ja += s.J[c] * vdot[c];
+            }
+            // vᵢ = vλ + J q̇, aᵢ = aλ + J q̈ + vᵢ × J q̇
+            let ov = ov_p + jv;
+            let oa = oa_p + ja + cross_motion6(&ov, &jv);
+            // dVdq = vλ × J, dAdq = aλ × J + vλ × dVdq, dAdv = vᵢ × J + dVdq
+            for c in cols {
+                let Jc = s.J[c];
+                let dV = cross_motion6(&ov_p, &Jc);
+                s.dAdq[c] = cross_motion6(&oa_p, &Jc) + cross_motion6(&ov_p, &dV);
+                s.dAdv[c] = cross_motion6(&ov, &Jc) + dV;
+                s.dVdq[c] = dV;
+            }
+            // fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ − f_ext, and Bᵢ
+            if seg.massless {
+                s.Yc[i] = BodyInertia::zero();
+                s.Bc[i] = Variation::zero();
+                s.Fc[i] = Vector6::zeros();
+            } else {
+                let Y = BodyInertia::from_centre_in_ground(seg.inertia.m, &seg.com, &seg.j_c, &w.E, &w.r);
+                let (ow, ovl) = split(&ov);
+                let h = Y.apply6(&ov);
+                s.Fc[i] = Y.apply6(&oa) + cross_force6(&ov, &h);
+                s.Bc[i] = Variation::of_body(&Y, &ow, &ovl);
+                s.Yc[i] = Y;
+            }
+            s.world[i] = w;
+            s.ov[i] = ov;
+            s.oa[i] = oa;
+        }
+        if let Some(fe) = f_ext {
+            // a wrench (n, f) about the link origin in link components, to ground about the
+            // ground origin: f_G = Eᵀf, n_G = Eᵀn + p × f_G
+            for (l, &k) in self.link_seg.iter().enumerate() {
+                let w = &s.world[k];
+                let f = w.E.tr_mul(&fe[l].force);
+                let n = w.E.tr_mul(&fe[l].moment) + w.r.cross(&f);
+                s.Fc[k] -= join(&n, &f);
+            }
+        }
+        let n = self.nv;
+        out.dtau_dq.fill(T::zero());
+        out.dtau_dv.fill(T::zero());
+        out.mass_matrix.fill(T::zero());
+        let (dq, dv, mm) =
+            (out.dtau_dq.as_mut_slice(), out.dtau_dv.as_mut_slice(), out.mass_matrix.as_mut_slice());
+        // inward pass
+        for i in (0..self.segs.len()).rev() {
+            let seg = &self.segs[i];
+            let nvi = seg.elem.nv();
+            let (Yc, Bc, Fc) = (s.Yc[i], s.Bc[i], s.Fc[i]);
+            for b in seg.vi..seg.vi + nvi {
+                let Jb = s.J[b];
+                let YJ = Yc.apply6(&Jb);
+                let BtJ = Bc.apply_transpose_angular(&Jb);
+                let mut dFdq = Bc.apply(&s.dVdq[b]) + Yc.apply6(&s.dAdq[b]);
+                let dFdv = Bc.apply(&Jb) + Yc.apply6(&s.dAdv[b]);
+                out.tau[b] = Jb.dot(&Fc);
+                // the joint's own columns a (a ball's three): ∂τₐ/∂q_b, ∂τₐ/∂q̇_b, Mₐb
+                for a in seg.vi..seg.vi + nvi {
+                    let Ja = &s.J[a];
+                    mm[a + b * n] = Ja.dot(&YJ);
+                    dq[a + b * n] = Ja.dot(&dFdq);
+                    dv[a + b * n] = Ja.dot(&dFdv);
+                }
+                // for the ancestors' rows, ∂Fᶜ/∂q_b gains the rigid-motion term J_b ×* Fᶜᵢ
+                dFdq += cross_force6(&Jb, &Fc);
+                let (BtJw, dFdq, dFdv) = (BtJ, dFdq, dFdv);
+                let mut c = self.parent_col[seg.vi];
+                while let Some(a) = c {
+                    let (Ja, dV, dAq, dAv) = (&s.J[a], &s.dVdq[a], &s.dAdq[a], &s.dAdv[a]);
+                    // ancestor row a, descendant column b
+                    dq[a + b * n] = dot6(Ja, &dFdq);
+                    dv[a + b * n] = dot6(Ja, &dFdv);
+                    let m = dot6(Ja, &YJ);
+                    mm[a + b * n] = m;
+                    mm[b + a * n] = m;
+                    // descendant row b, ancestor column a (Bᵀ J has no linear half)
+                    dq[b + a * n] = dot6(&YJ, dAq) + BtJw.x * dV[0] + BtJw.y * dV[1] + BtJw.z * dV[2];
+                    dv[b + a * n] = dot6(&YJ, dAv) + BtJw.x * Ja[0] + BtJw.y * Ja[1] + BtJw.z * Ja[2];
+                    c = self.parent_col[a];
+                }
+            }
+            if let Some(p) = seg.parent {
+                s.Yc[p].add(&Yc);
+                s.Bc[p].add(&Bc);
+                s.Fc[p] += Fc;
+            }
+        }
+    }
+}
+
+/// a·b of two 6-vectors, written out (the hot loop of the inward pass).
+#[inline(always)]
+fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
+}
+
+/// M⁻¹ = L⁻ᵀ L⁻¹ from the Cholesky factor L (lower; its strict upper part is ignored), into
+/// `out`, with `w` (n × n) holding L⁻¹ and `wt` its transpose: forward substitution of each
+/// unit vector from its own row on (L⁻¹ is lower triangular), then M⁻¹ = (L⁻¹)ᵀL⁻¹.
+fn inverse_from_cholesky<T: Scalar>(
+    l: &DMatrix<T>,
+    out: &mut DMatrix<T>,
+    w: &mut DMatrix<T>,
+    wt: &mut DMatrix<T>,
+) {
+    let n = l.nrows();
+    let ls = l.as_slice();
+    let ws = w.as_mut_slice();
+    ws.fill(T::zero());
+    for j in 0..n {
+        let col = &mut ws[j * n..(j + 1) * n];
+        col[j] = T::one();
+        for p in j..n {
+            let xp = col[p] / ls[p + p * n];
+            col[p] = xp;
+            for (x, &lv) in col[p + 1..].iter_mut().zip(&ls[p * n + p + 1..(p + 1) * n]) {
+                *x -= lv * xp;
+            }
+        }
+    }
+    // M⁻¹ = WᵀW with W = L⁻¹ (a matrix product, through matrixmultiply for f64)
+    w.transpose_to(wt);
+    out.gemm(T::one(), wt, w, T::zero());
+}
+
+impl Model<f64> {
+    /// ∂M/∂q: the derivative of the mass matrix along each tangent direction k (k-th entry,
+    /// nv × nv), exact by dual numbers through the generic CRBA (one `Dual64` pass per
+    /// direction, q ⊕ ε eₖ by [`Model::integrate`]).
+    ///
+    /// Book: §7.11, §9.3 (the Christoffel terms of (9.3.11) are built from these).
+    ///
+    /// # Errors
+    /// As [`Model::crba`].
+    pub fn mass_matrix_derivatives(&self, q: &[f64]) -> Result<Vec<DMatrix<f64>>, DynamicsError> {
+        use num_dual::Dual64;
+        self.check_q(q)?;
+        let dual = self.cast::<Dual64>();
+        let qd: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
+        let mut h = DMatrix::zeros(self.nv, self.nv);
+        let mut s = dual.crba_scratch();
+        (0..self.nv)
+            .map(|k| {
+                let e: Vec<Dual64> = (0..self.nv)
+                    .map(|i| if i == k { Dual64::from(0.0).derivative() } else { Dual64::from(0.0) })
+                    .collect();
+                let qk = dual.integrate(&qd, &e, Dual64::from(1.0))?;
+                dual.crba_into(&qk, &mut h, &mut s);
+                Ok(h.map(|x| x.eps))
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+#[path = "derivatives_tests.rs"]
+mod tests;
