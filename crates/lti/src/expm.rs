@@ -89,8 +89,63 @@ fn combine(dst: &mut Mat<f64>, terms: [(f64, &Mat<f64>); 3], d: f64) {
     }
 }
 
-/// e^A for a faer matrix (internal: no checks).
-pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
+/// ‖A‖₁ without overflow: the norm of A/2^E and E (‖A‖₁ = 2^E·returned norm).
+fn norm1_scaled(a: &Mat<f64>) -> (f64, i32) {
+    let big = (0..a.ncols()).flat_map(|j| a.col_as_slice(j).iter()).fold(0.0f64, |m, x| m.max(x.abs()));
+    if big == 0.0 || !big.is_finite() {
+        return (big, 0);
+    }
+    let e = big.log2().floor() as i32;
+    let nrm = (0..a.ncols())
+        .map(|j| a.col_as_slice(j).iter().map(|x| crate::poly::mul_pow2(x.abs(), -e)).sum::<f64>())
+        .fold(0.0, f64::max);
+    (nrm, e)
+}
+
+/// e^A for a finite faer matrix.
+///
+/// # Errors
+/// [`LtiError::Overflow`] when an entry of the result (or of a squaring on the way to it)
+/// exceeds the f64 range; a NaN can only come from such an overflow.
+pub(crate) fn expm_faer(a: &Mat<f64>) -> Result<Mat<f64>, LtiError> {
+    let (ns, e) = norm1_scaled(a);
+    let r = if e > 0 && ns * crate::axis::pow2(e.min(1023)) > THETA13 {
+        // a norm that may overflow ‖A‖₁ itself: choose s from the exponents, A/2ˢ in two steps
+        let s = (ns.log2() + e as f64 - THETA13.log2()).ceil().max(0.0) as i32;
+        let mut a1 = a.clone();
+        for j in 0..a1.ncols() {
+            for x in a1.col_as_slice_mut(j) {
+                *x = crate::poly::mul_pow2(*x, -s);
+            }
+        }
+        let mut r = expm_small(&a1);
+        let n = r.nrows();
+        let mut tmp = Mat::<f64>::zeros(n, n);
+        for _ in 0..s {
+            mul_into(&mut tmp, Accum::Replace, &r, &r);
+            std::mem::swap(&mut r, &mut tmp);
+            if !all_finite(&r) {
+                return Err(LtiError::Overflow { what: "matrix exponential" });
+            }
+        }
+        r
+    } else {
+        expm_core(a)
+    };
+    if all_finite(&r) { Ok(r) } else { Err(LtiError::Overflow { what: "matrix exponential" }) }
+}
+
+fn all_finite(m: &Mat<f64>) -> bool {
+    (0..m.ncols()).all(|j| m.col_as_slice(j).iter().all(|x| x.is_finite()))
+}
+
+/// r₁₃(A) for ‖A‖₁ ≤ θ₁₃ (no squaring).
+fn expm_small(a: &Mat<f64>) -> Mat<f64> {
+    expm_core(a)
+}
+
+/// e^A by Higham's algorithm for a matrix whose 1-norm is finite.
+fn expm_core(a: &Mat<f64>) -> Mat<f64> {
     let n = a.nrows();
     let id = Mat::<f64>::identity(n, n);
     let nrm = norm1(a);
@@ -166,7 +221,8 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
 /// Book: §15.5, (15.5.3); Ex 15.5.1–15.5.2; 15.20.27, 15.20.59.
 ///
 /// # Errors
-/// [`LtiError::NotSquare`] or [`LtiError::NonFinite`].
+/// [`LtiError::NotSquare`] or [`LtiError::NonFinite`]; [`LtiError::Overflow`] when the result
+/// exceeds the f64 range (e^{[[1000]]}), instead of ∞ or NaN entries.
 pub fn expm(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
     if a.nrows() != a.ncols() {
         return Err(LtiError::NotSquare { what: "expm argument", rows: a.nrows(), cols: a.ncols() });
@@ -175,5 +231,5 @@ pub fn expm(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
     if a.nrows() == 0 {
         return Ok(a.clone());
     }
-    Ok(from_faer(expm_faer(&to_faer(a)).as_ref()))
+    Ok(from_faer(expm_faer(&to_faer(a))?.as_ref()))
 }
