@@ -463,6 +463,19 @@ fn reference_time_responses_within_1e_12_kappa() {
             }
         }
     }
+    // print every summary before the first assertion fails
+    let failed: Vec<&str> = reps.iter().filter(|r| !r.failures.is_empty()).map(|r| r.what).collect();
+    for rep in &reps {
+        println!(
+            "{}: {} checks, {} beyond the bound, worst error/tolerance {:.3e} at {}",
+            rep.what,
+            rep.checks,
+            rep.failures.len(),
+            rep.worst,
+            rep.worst_at
+        );
+    }
+    assert!(failed.is_empty(), "failures in {failed:?}");
     for rep in reps {
         rep.finish();
     }
