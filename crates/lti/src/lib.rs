@@ -17,6 +17,7 @@ pub mod linalg;
 mod margins;
 mod placement;
 mod poly;
+mod realroots;
 mod rlocus;
 mod routh;
 mod sdof;

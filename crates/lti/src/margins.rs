@@ -177,10 +177,15 @@ fn abs_squared(e: &Polynomial, o: &Polynomial) -> Polynomial {
     e.times(e).plus(&Polynomial::s().times(&o.times(o)))
 }
 
-/// Roots x > 0 of p that are real to 10⁻⁶ relative (the candidates, refined later on L).
+/// Roots x > 0 of p (the candidates, refined later on L): by certified Descartes subdivision
+/// ([`crate::realroots`]), or, when that cannot decide (a double root, a root at a split
+/// point), the eigenvalues of the companion matrix that are real to 10⁻⁶ relative.
 fn positive_roots(p: &Polynomial) -> Result<Vec<f64>, LtiError> {
     if p.degree() == 0 {
         return Ok(Vec::new());
+    }
+    if let Some(r) = crate::realroots::positive_roots(p.coeffs()) {
+        return Ok(r);
     }
     Ok(p.roots()?.into_iter().filter(|x| x.re > 0.0 && x.im.abs() <= 1e-6 * x.re).map(|x| x.re).collect())
 }
