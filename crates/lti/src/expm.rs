@@ -63,7 +63,11 @@ fn mul_into(dst: &mut Mat<f64>, acc: Accum, a: &Mat<f64>, b: &Mat<f64>) {
         a.as_ref(),
         b.as_ref(),
         1.0,
-        faer::get_global_parallelism(),
+        if a.nrows() * a.ncols() * b.ncols() < 1 << 24 {
+            faer::Par::Seq
+        } else {
+            faer::get_global_parallelism()
+        },
     );
 }
 
@@ -89,15 +93,19 @@ fn combine(dst: &mut Mat<f64>, terms: [(f64, &Mat<f64>); 3], d: f64) {
     }
 }
 
-/// ‖A‖₁ without overflow: the norm of A/2^E and E (‖A‖₁ = 2^E·returned norm).
+/// ‖A‖₁ without overflow: the norm of A/2^E and E (‖A‖₁ = 2^E·returned norm); E = 0 unless
+/// the plain column sums overflow.
 fn norm1_scaled(a: &Mat<f64>) -> (f64, i32) {
-    let big = (0..a.ncols()).flat_map(|j| a.col_as_slice(j).iter()).fold(0.0f64, |m, x| m.max(x.abs()));
-    if big == 0.0 || !big.is_finite() {
-        return (big, 0);
+    let plain = norm1(a);
+    if plain.is_finite() {
+        return (plain, 0);
     }
+    let big = (0..a.ncols()).flat_map(|j| a.col_as_slice(j).iter()).fold(0.0f64, |m, x| m.max(x.abs()));
     let e = big.log2().floor() as i32;
+    // 2^−E is a normal number here (E ≤ 1023)
+    let f = crate::axis::pow2(-e);
     let nrm = (0..a.ncols())
-        .map(|j| a.col_as_slice(j).iter().map(|x| crate::poly::mul_pow2(x.abs(), -e)).sum::<f64>())
+        .map(|j| a.col_as_slice(j).iter().map(|x| x.abs() * f).sum::<f64>())
         .fold(0.0, f64::max);
     (nrm, e)
 }
@@ -149,7 +157,8 @@ fn expm_core(a: &Mat<f64>) -> Mat<f64> {
     let n = a.nrows();
     let id = Mat::<f64>::identity(n, n);
     let nrm = norm1(a);
-    let a2 = a * a;
+    let mut a2 = Mat::<f64>::zeros(n, n);
+    mul_into(&mut a2, Accum::Replace, a, a);
     let (u, v, s) = if let Some(&(m, _)) = THETA.iter().find(|(_, t)| nrm <= *t) {
         // r_m = (V − U)⁻¹(V + U) with U = A Σ b_{2k+1} A^{2k}, V = Σ b_{2k} A^{2k}.
         let b: &[f64] = match m {
@@ -176,7 +185,6 @@ fn expm_core(a: &Mat<f64>) -> Mat<f64> {
         let f = 0.5f64.powi(s);
         let mut a1 = a.clone();
         scale_in_place(&mut a1, f);
-        let mut a2 = a2;
         scale_in_place(&mut a2, f * f);
         let mut a4 = Mat::<f64>::zeros(n, n);
         mul_into(&mut a4, Accum::Replace, &a2, &a2);

@@ -2,7 +2,7 @@
 //!
 //! Book: §16.2–16.6, (16.2.1)–(16.2.5), (16.6.2); 16.8.6, 16.8.14 (Z = N + P); notes §3.4–3.5.
 
-use crate::axis::{AxisRational, AxisValue, Scaled, cdiv, infinity_towards, pow2, rotate};
+use crate::axis::{AxisRational, AxisValue, Scaled, infinity_towards, pow2, rotate};
 use crate::error::LtiError;
 use crate::routh::routh;
 use crate::ss::StateSpace;
@@ -85,39 +85,109 @@ impl Zpk {
     }
 }
 
-/// Horner's rule across a grid, one coefficient at a time (structure of arrays, so the inner
-/// loop vectorises): out[i] = Σ c_k x[i]^k for coefficients `c` given highest power first.
-fn horner_grid(c: impl Iterator<Item = f64> + Clone, x: &[f64], out: &mut [f64]) {
-    out.fill(0.0);
-    for ck in c {
-        for (o, &xi) in out.iter_mut().zip(x) {
-            *o = *o * xi + ck;
-        }
-    }
+/// Points per block of the vectorised evaluation.
+const CHUNK: usize = 32;
+
+/// a·b + c, fused when the caller was compiled for FMA.
+#[inline(always)]
+fn madd<const FMA: bool>(a: f64, b: f64, c: f64) -> f64 {
+    if FMA { a.mul_add(b, c) } else { a * b + c }
 }
 
-/// E and O (even and odd parts) of p(jω) = E + jω·O over a grid of x = −ω² (`reversed`:
-/// of r(z) = Σ c_i z^i over y = −1/ω², see [`crate::axis::at_jw`]).
-fn even_odd_grid(c: &[f64], x: &[f64], reversed: bool, e: &mut [f64], o: &mut [f64]) {
-    let n = c.len() - 1;
-    if reversed {
-        // highest power of z first: i = n, n−1, …, 0
-        horner_grid((0..=n).rev().filter(|i| i.is_multiple_of(2)).map(|i| c[i]), x, e);
-        horner_grid((0..=n).rev().filter(|i| i % 2 == 1).map(|i| c[i]), x, o);
-    } else {
-        horner_grid((0..=n).filter(|i| (n - i).is_multiple_of(2)).map(|i| c[i]), x, e);
-        horner_grid((0..=n).filter(|i| (n - i) % 2 == 1).map(|i| c[i]), x, o);
+/// G(jω)·2^{−e}… for one block of frequencies (≤ [`CHUNK`]), all at most `w_max` so that the
+/// direct Horner sums cannot overflow: N(jω) = E_N(−ω²) + jω·O_N(−ω²) and D likewise, one
+/// coefficient at a time across the block (the inner loops vectorise), then N·conj(D)/|D|²
+/// times `gain`. A point where |D|² is not a normal number (an axis pole, or under- or
+/// overflow) is left as NaN for the caller's exact path; returns whether there was one.
+#[inline(always)]
+fn block<const FMA: bool>(num: &[f64], den: &[f64], w: &[f64], gain: f64, out: &mut [Complex64]) -> bool {
+    let m = w.len();
+    let mut x = [0.0f64; CHUNK];
+    for (xi, wi) in x.iter_mut().zip(w) {
+        *xi = -wi * wi;
     }
+    // E and O of N and D: a coefficient of sᵏ joins E when k is even, O when odd
+    let eo = |c: &[f64], e: &mut [f64; CHUNK], o: &mut [f64; CHUNK]| {
+        let n = c.len() - 1;
+        for (i, &ci) in c.iter().enumerate() {
+            let v = if (n - i).is_multiple_of(2) { &mut *e } else { &mut *o };
+            for (vl, xl) in v[..m].iter_mut().zip(&x[..m]) {
+                *vl = madd::<FMA>(*vl, *xl, ci);
+            }
+        }
+    };
+    let (mut en, mut on, mut ed, mut od) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
+    eo(num, &mut en, &mut on);
+    eo(den, &mut ed, &mut od);
+    let mut bad = false;
+    for l in 0..m {
+        let (nr, ni) = (en[l], w[l] * on[l]);
+        let (dr, di) = (ed[l], w[l] * od[l]);
+        let d2 = madd::<FMA>(dr, dr, di * di);
+        let inv = gain / d2;
+        let re = madd::<FMA>(nr, dr, ni * di) * inv;
+        let im = madd::<FMA>(ni, dr, -(nr * di)) * inv;
+        let ok = d2.is_normal() && re.is_finite() && im.is_finite();
+        bad |= !ok;
+        out[l] = if ok { Complex64::new(re, im) } else { Complex64::new(f64::NAN, f64::NAN) };
+    }
+    bad
+}
+
+/// [`block`] over a whole grid, compiled for AVX2 + FMA when the CPU has them (detected when
+/// the program runs) and portable otherwise; points above `w_max` are left as NaN. Returns
+/// whether any point was left.
+fn blocks(num: &[f64], den: &[f64], omega: &[f64], w_max: f64, gain: f64, out: &mut [Complex64]) -> bool {
+    #[inline(always)]
+    fn all<const FMA: bool>(
+        num: &[f64],
+        den: &[f64],
+        omega: &[f64],
+        w_max: f64,
+        gain: f64,
+        out: &mut [Complex64],
+    ) -> bool {
+        let mut bad = false;
+        for (w, o) in omega.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
+            if w.iter().all(|&wi| wi <= w_max) {
+                bad |= block::<FMA>(num, den, w, gain, o);
+            } else {
+                o.fill(Complex64::new(f64::NAN, f64::NAN));
+                bad = true;
+            }
+        }
+        bad
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx2,fma")]
+        fn avx2_fma(
+            num: &[f64],
+            den: &[f64],
+            omega: &[f64],
+            w_max: f64,
+            gain: f64,
+            out: &mut [Complex64],
+        ) -> bool {
+            all::<true>(num, den, omega, w_max, gain, out)
+        }
+        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+            // SAFETY: AVX2 and FMA were detected on this CPU just above.
+            return unsafe { avx2_fma(num, den, omega, w_max, gain, out) };
+        }
+    }
+    all::<false>(num, den, omega, w_max, gain, out)
 }
 
 impl TransferFunction {
     /// G(jω) on `omega`, evaluated from the coefficients: N(jω) and D(jω) by Horner's rule on
-    /// their even and odd parts, p(jω) = E(−ω²) + jω·O(−ω²) (and on the reversed polynomials in
-    /// 1/(jω) for ω > 1, so that nothing overflows), vectorised across the grid. The result is
-    /// the exact response of coefficients perturbed by at most (n + 2)ε relative each (Higham,
-    /// *Accuracy and Stability of Numerical Algorithms*, §5.1): its relative error is at most a
-    /// small multiple of ε times the condition number Σ|cₖωᵏ|/|N| + Σ|dₖωᵏ|/|D|, whatever the
-    /// conditioning of the roots. No root finding.
+    /// their even and odd parts, p(jω) = E(−ω²) + jω·O(−ω²), vectorised across blocks of the grid
+    /// (AVX2 + FMA when the CPU has them); frequencies so high that the powers could overflow
+    /// use the reversed polynomials in 1/(jω). The result is the exact response of coefficients
+    /// perturbed by at most (n + 2)ε relative each (Higham, *Accuracy and Stability of Numerical
+    /// Algorithms*, §5.1): its relative error is at most a small multiple of ε times the
+    /// condition number Σ|cₖωᵏ|/|N| + Σ|dₖωᵏ|/|D|, whatever the conditioning of the roots. No
+    /// root finding.
     ///
     /// # Degenerate inputs
     /// At an imaginary-axis pole the value is the point at infinity in the direction of the
@@ -134,57 +204,23 @@ impl TransferFunction {
         check_omega(omega)?;
         let num = Scaled::new(self.num().coeffs());
         let den = Scaled::new(self.den().coeffs());
-        let (m, n) = (num.degree() as i32, den.degree() as i32);
         let gain = pow2(num.e - den.e);
-        let num_zero = self.num().is_zero();
-        let tau = self.delay();
+        // |E|, |O| ≤ (n + 1)·2·ω^n with max|c| < 2, and |D|² squares that: the direct sums and
+        // |D|² stay finite while ω^n ≤ 2^450
+        let n = num.degree().max(den.degree()).max(1);
+        let w_max = 2f64.powf(450.0 / n as f64);
         let mut out = vec![Complex64::new(0.0, 0.0); omega.len()];
-        // the grid in two parts: ω ≤ 1 (direct) and ω > 1 (reversed)
-        let (lo, hi): (Vec<usize>, Vec<usize>) = (0..omega.len()).partition(|&i| omega[i] <= 1.0);
-        let len = lo.len().max(hi.len());
-        let (mut x, mut en, mut on, mut ed, mut od) =
-            (vec![0.0; len], vec![0.0; len], vec![0.0; len], vec![0.0; len], vec![0.0; len]);
-        let mut slow = Vec::new();
-        for (idx, reversed) in [(&lo, false), (&hi, true)] {
-            let k = idx.len();
-            if k == 0 {
-                continue;
-            }
-            for (xi, &i) in x.iter_mut().zip(idx.iter()) {
-                let w = omega[i];
-                *xi = if reversed { -1.0 / (w * w) } else { -w * w };
-            }
-            even_odd_grid(&num.c, &x[..k], reversed, &mut en[..k], &mut on[..k]);
-            even_odd_grid(&den.c, &x[..k], reversed, &mut ed[..k], &mut od[..k]);
-            // G = q·(jω)^{m−n}·2^e for ω > 1 (q·2^e below), q = N̂/D̂
-            let shift = if reversed { m - n } else { 0 };
-            for (j, &i) in idx.iter().enumerate() {
-                let w = omega[i];
-                // p = E + jωO directly, E − j(1/ω)O reversed (z = −j/ω)
-                let t = if reversed { -1.0 / w } else { w };
-                let nv = Complex64::new(en[j], t * on[j]);
-                let dv = Complex64::new(ed[j], t * od[j]);
-                if (dv.re == 0.0 && dv.im == 0.0) || (nv.re == 0.0 && nv.im == 0.0 && !num_zero) {
-                    slow.push(i);
-                    continue;
-                }
-                let q = rotate(cdiv(nv, dv), shift);
-                let scale = if shift == 0 { gain } else { w.powi(shift) * gain };
-                let mut g = q * scale;
-                if g.re.is_nan() || g.im.is_nan() {
-                    g = infinity_towards(q);
-                }
-                out[i] = if tau == 0.0 { g } else { delayed(g, q, -w * tau) };
-            }
-        }
-        if !slow.is_empty() {
-            // an axis pole or zero at a grid point: the one-sided limit
-            let ax = AxisRational::new(self.num().coeffs(), self.den().coeffs());
-            for i in slow {
-                let w = omega[i];
-                let v = ax.at(w);
-                let g = v.value(w);
-                out[i] = if tau == 0.0 { g } else { delayed(g, direction(&v), -w * tau) };
+        let tau = self.delay();
+        let slow = blocks(&num.c, &den.c, omega, w_max, gain, &mut out);
+        let ax = slow.then(|| AxisRational::new(self.num().coeffs(), self.den().coeffs()));
+        for (g, &w) in out.iter_mut().zip(omega) {
+            if g.re.is_nan() {
+                // an axis pole or zero, or a frequency beyond the direct range: the exact path
+                let v = ax.as_ref().expect("slow points imply the exact path").at(w);
+                let value = v.value(w);
+                *g = if tau == 0.0 { value } else { delayed(value, direction(&v), -w * tau) };
+            } else if tau != 0.0 {
+                *g *= Complex64::from_polar(1.0, -w * tau);
             }
         }
         Ok(out)
