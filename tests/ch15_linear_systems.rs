@@ -10,6 +10,10 @@
 use nalgebra::DMatrix;
 use vectrix::lti::*;
 
+#[path = "lti_asserts/mod.rs"]
+mod lti_asserts;
+use lti_asserts::*;
+
 #[path = "ch15/algebra.rs"]
 mod algebra;
 #[path = "ch15/errors.rs"]
@@ -28,34 +32,6 @@ mod realisation;
 mod responses;
 #[path = "ch15/routh.rs"]
 mod routh;
-
-/// Machine epsilon.
-const EPS: f64 = f64::EPSILON;
-
-/// |got − printed| ≤ ½·10^(−decimals): the printed value is `got` rounded (plus a hair, 10⁻⁹
-/// relative, for the binary representation of the printed decimal).
-#[track_caller]
-fn assert_printed(got: f64, printed: f64, decimals: i32) {
-    let tol = 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9);
-    assert!((got - printed).abs() <= tol, "got {got}, printed {printed} (±{tol:e})");
-}
-
-/// |got − want| ≤ tol (absolute).
-#[track_caller]
-fn assert_abs(got: f64, want: f64, tol: f64) {
-    let err = (got - want).abs();
-    assert!(err <= tol, "got {got:e}, want {want:e}, |error| = {err:e} > {tol:e} (absolute)");
-}
-
-/// |got − want| ≤ tol·|want| (relative).
-#[track_caller]
-fn assert_rel(got: f64, want: f64, tol: f64) {
-    let err = (got - want).abs();
-    assert!(
-        err <= tol * want.abs(),
-        "got {got:e}, want {want:e}, |error| = {err:e} > {tol:e}·|want| (relative)"
-    );
-}
 
 fn tf(n: &[f64], d: &[f64]) -> TransferFunction {
     TransferFunction::new(n, d).unwrap()

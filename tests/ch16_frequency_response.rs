@@ -8,6 +8,10 @@
 
 use vectrix::lti::*;
 
+#[path = "lti_asserts/mod.rs"]
+mod lti_asserts;
+use lti_asserts::*;
+
 #[path = "ch16/locus.rs"]
 mod locus;
 #[path = "ch16/margins.rs"]
@@ -18,33 +22,6 @@ mod prop;
 mod response;
 #[path = "ch16/sensitivity.rs"]
 mod sensitivity;
-
-/// Machine epsilon.
-const EPS: f64 = f64::EPSILON;
-
-/// |got − printed| ≤ ½·10^(−decimals), plus 10⁻⁹ relative for the binary representation.
-#[track_caller]
-fn assert_printed(got: f64, printed: f64, decimals: i32) {
-    let tol = 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9);
-    assert!((got - printed).abs() <= tol, "got {got}, printed {printed} (±{tol:e})");
-}
-
-/// |got − want| ≤ tol (absolute).
-#[track_caller]
-fn assert_abs(got: f64, want: f64, tol: f64) {
-    let err = (got - want).abs();
-    assert!(err <= tol, "got {got:e}, want {want:e}, |error| = {err:e} > {tol:e} (absolute)");
-}
-
-/// |got − want| ≤ tol·|want| (relative).
-#[track_caller]
-fn assert_rel(got: f64, want: f64, tol: f64) {
-    let err = (got - want).abs();
-    assert!(
-        err <= tol * want.abs(),
-        "got {got:e}, want {want:e}, |error| = {err:e} > {tol:e}·|want| (relative)"
-    );
-}
 
 fn tf(n: &[f64], d: &[f64]) -> TransferFunction {
     TransferFunction::new(n, d).unwrap()

@@ -134,23 +134,26 @@ fn block<const FMA: bool>(num: &[f64], den: &[f64], w: &[f64], gain: f64, out: &
     bad
 }
 
+/// The data of one grid evaluation: scaled coefficients, frequencies, the largest frequency
+/// for the direct sums, and the power of two between the scalings of N and D.
+struct Grid<'a> {
+    num: &'a [f64],
+    den: &'a [f64],
+    omega: &'a [f64],
+    w_max: f64,
+    gain: f64,
+}
+
 /// [`block`] over a whole grid, compiled for AVX2 + FMA when the CPU has them (detected when
 /// the program runs) and portable otherwise; points above `w_max` are left as NaN. Returns
 /// whether any point was left.
-fn blocks(num: &[f64], den: &[f64], omega: &[f64], w_max: f64, gain: f64, out: &mut [Complex64]) -> bool {
+fn blocks(grid: &Grid<'_>, out: &mut [Complex64]) -> bool {
     #[inline(always)]
-    fn all<const FMA: bool>(
-        num: &[f64],
-        den: &[f64],
-        omega: &[f64],
-        w_max: f64,
-        gain: f64,
-        out: &mut [Complex64],
-    ) -> bool {
+    fn all<const FMA: bool>(g: &Grid<'_>, out: &mut [Complex64]) -> bool {
         let mut bad = false;
-        for (w, o) in omega.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
-            if w.iter().all(|&wi| wi <= w_max) {
-                bad |= block::<FMA>(num, den, w, gain, o);
+        for (w, o) in g.omega.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
+            if w.iter().all(|&wi| wi <= g.w_max) {
+                bad |= block::<FMA>(g.num, g.den, w, g.gain, o);
             } else {
                 o.fill(Complex64::new(f64::NAN, f64::NAN));
                 bad = true;
@@ -161,22 +164,15 @@ fn blocks(num: &[f64], den: &[f64], omega: &[f64], w_max: f64, gain: f64, out: &
     #[cfg(target_arch = "x86_64")]
     {
         #[target_feature(enable = "avx2,fma")]
-        fn avx2_fma(
-            num: &[f64],
-            den: &[f64],
-            omega: &[f64],
-            w_max: f64,
-            gain: f64,
-            out: &mut [Complex64],
-        ) -> bool {
-            all::<true>(num, den, omega, w_max, gain, out)
+        fn avx2_fma(g: &Grid<'_>, out: &mut [Complex64]) -> bool {
+            all::<true>(g, out)
         }
         if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
             // SAFETY: AVX2 and FMA were detected on this CPU just above.
-            return unsafe { avx2_fma(num, den, omega, w_max, gain, out) };
+            return unsafe { avx2_fma(grid, out) };
         }
     }
-    all::<false>(num, den, omega, w_max, gain, out)
+    all::<false>(grid, out)
 }
 
 impl TransferFunction {
@@ -211,7 +207,8 @@ impl TransferFunction {
         let w_max = 2f64.powf(450.0 / n as f64);
         let mut out = vec![Complex64::new(0.0, 0.0); omega.len()];
         let tau = self.delay();
-        let slow = blocks(&num.c, &den.c, omega, w_max, gain, &mut out);
+        let grid = Grid { num: &num.c, den: &den.c, omega, w_max, gain };
+        let slow = blocks(&grid, &mut out);
         let ax = slow.then(|| AxisRational::new(self.num().coeffs(), self.den().coeffs()));
         for (g, &w) in out.iter_mut().zip(omega) {
             if g.re.is_nan() {
