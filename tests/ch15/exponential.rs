@@ -111,3 +111,38 @@ fn problem_15_20_10_eigensolutions_spiral_in_circle_or_spiral_out() {
         assert_rel(ratio, (period * sigma).exp(), 1e3 * EPS);
     }
 }
+
+#[test]
+fn fact_15_6_1_eigensolutions_of_a_third_order_system() {
+    // Fact 15.6.1: for an eigenpair (λ, v), x(t) = Re(e^{λt}v) solves ẋ = Ax, x(0) = Re v.
+    // A = T·blockdiag([[σ, ω], [−ω, σ]], μ)·T⁻¹ with T unimodular has λ = σ + jω,
+    // v = T e₁ + jT e₂ (so y = T e₁, z = T e₂) and the real pair (μ, T e₃). The free response
+    // from Re v is then e^{σt}(y cos ωt − z sin ωt) (15.6.2), and from T e₃ it is e^{μt}T e₃.
+    let (sigma, omega, mu) = (-0.3, 2.0, -1.5);
+    let t_mat = dmatrix![1.0, 2.0, 0.0; 0.0, 1.0, 1.0; 1.0, 0.0, 3.0];
+    assert_eq!(t_mat.determinant(), 5.0);
+    let t_inv = t_mat.clone().try_inverse().unwrap();
+    let core = dmatrix![sigma, omega, 0.0; -omega, sigma, 0.0; 0.0, 0.0, mu];
+    let a = &t_mat * core * &t_inv;
+    let (y, z, w) =
+        (t_mat.column(0).into_owned(), t_mat.column(1).into_owned(), t_mat.column(2).into_owned());
+    // A v = λ v for v = y + jz: A y = σy − ωz and A z = ωy + σz.
+    let (ay, az) = (&a * &y, &a * &z);
+    for i in 0..3 {
+        assert_abs(ay[i], sigma * y[i] - omega * z[i], 64.0 * EPS * 10.0);
+        assert_abs(az[i], omega * y[i] + sigma * z[i], 64.0 * EPS * 10.0);
+    }
+    let sys =
+        StateSpace::new(a, DMatrix::zeros(3, 1), DMatrix::identity(3, 3), DMatrix::zeros(3, 1)).unwrap();
+    let t = time_grid(5.0, 51).unwrap();
+    let osc = initial(&sys, y.as_slice(), &t).unwrap();
+    let real = initial(&sys, w.as_slice(), &t).unwrap();
+    for (k, &tk) in t.iter().enumerate() {
+        let want = ((&y * (omega * tk).cos()) - (&z * (omega * tk).sin())) * (sigma * tk).exp();
+        for i in 0..3 {
+            // absolute: states are O(‖T‖) = O(3), amplified by the eigenvector condition ‖T‖‖T⁻¹‖
+            assert_abs(osc.y[i][k], want[i], 1e3 * EPS);
+            assert_abs(real.y[i][k], (mu * tk).exp() * w[i], 1e3 * EPS);
+        }
+    }
+}

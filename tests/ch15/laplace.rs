@@ -226,3 +226,23 @@ fn problem_15_20_15_16_initial_values() {
     // 15.20.28: y = 2e^{−6t}: ÿ(0⁺) = 72.
     assert_eq!(tf(&[2.0], &[1.0, 6.0]).initial_values(3).unwrap(), vec![2.0, -12.0, 72.0]);
 }
+
+#[test]
+fn example_15_12_3_4_initial_value_and_slope() {
+    // Ex 15.12.3: y = 1(t) and y = cos ωt have y(0⁺) = 1; Ex 15.12.4: the ramp has ẏ(0⁺) = 1.
+    let omega = 3.0;
+    assert_eq!(tf(&[1.0], &[1.0, 0.0]).initial_values(1).unwrap(), vec![1.0]);
+    assert_eq!(tf(&[1.0, 0.0], &[1.0, 0.0, omega * omega]).initial_values(1).unwrap(), vec![1.0]);
+    assert_eq!(tf(&[1.0], &[1.0, 0.0, 0.0]).initial_values(2).unwrap(), vec![0.0, 1.0]);
+    // Facts 15.12.1–2 against an independent computation: the impulse response of G is
+    // Ce^{At}B, so y(0⁺) = CB, ẏ(0⁺) = CAB, ÿ(0⁺) = CA²B of any realisation.
+    let g = tf(&[3.0, -1.0, 2.0], &[2.0, 5.0, 1.0, 4.0]);
+    let ss = StateSpace::from_tf(&g).unwrap();
+    let (a, b, c) = (ss.a(), ss.b(), ss.c());
+    let markov = [(c * b)[(0, 0)], (c * a * b)[(0, 0)], (c * a * a * b)[(0, 0)]];
+    let iv = g.initial_values(3).unwrap();
+    for (got, want) in iv.iter().zip(markov) {
+        assert_abs(*got, want, 64.0 * EPS * want.abs().max(1.0));
+    }
+    assert_eq!(iv, vec![1.5, -4.25, 10.875]);
+}

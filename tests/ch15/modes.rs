@@ -6,7 +6,7 @@ use nalgebra::dmatrix;
 use std::f64::consts::LN_2;
 
 #[test]
-fn section_15_4_sdof_kinds_and_stability_classes() {
+fn sec_15_4_sdof_kinds_and_stability_classes() {
     // §15.4 and §15.16: URB is unstable, UO Lyapunov stable, DRB semistable, DO AS.
     let cases = [
         (0.0, 0.0, SdofKind::UndampedRigidBody, StabilityClass::Unstable),

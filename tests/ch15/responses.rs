@@ -132,3 +132,46 @@ fn problem_15_20_22_heavier_body_falls_faster_with_drag() {
         assert_rel(r.y[0][100], g * 10.0, 64.0 * EPS);
     }
 }
+
+#[test]
+fn eq_15_8_4_free_plus_forced_response_with_a_ramp() {
+    // (15.8.3)–(15.8.4): y = Ce^{At}x₀ + ∫₀ᵗ Ce^{A(t−τ)}Bu(τ)dτ. For ẋ = −ax + bu, u(t) = t:
+    // free x₀e^{−at}, forced b[t/a − (1 − e^{−at})/a²]. A first-order hold is exact for the
+    // ramp, so lsim agrees to rounding, and it equals the sum of the separately computed
+    // free (`initial`) and forced (`response`, Ramp) parts.
+    let (a, b, x0) = (2.0, 8.0, 5.0);
+    let sys = StateSpace::from_rows(&[&[-a]], &[&[b]], &[&[1.0]], &[&[0.0]]).unwrap();
+    let t = time_grid(4.0, 41).unwrap();
+    let l = lsim(&sys, 0, &t, &t, &[x0], Hold::Foh, 0.0).unwrap();
+    let free = initial(&sys, &[x0], &t).unwrap();
+    let forced = response(&sys, InputKind::Ramp, 0, 1.0, 0.0, &t).unwrap();
+    for (k, &tk) in t.iter().enumerate() {
+        let e = (-a * tk).exp();
+        let want = x0 * e + b * (tk / a - (1.0 - e) / (a * a));
+        // relative to the largest term, b·t/a ≤ 16 (the parts cancel only partly)
+        let scale = x0 + b * tk / a;
+        assert_abs(l.y[0][k], want, 64.0 * EPS * scale);
+        assert_abs(free.y[0][k] + forced.y[0][k], want, 64.0 * EPS * scale);
+    }
+}
+
+#[test]
+fn sec_15_9_impulse_is_a_free_response_with_changed_velocity() {
+    // §15.9: "An impulse at t = 0 imparts a nonzero initial velocity but zero change in
+    // position": the response of mq̈ + cq̇ + kq = f₀δ(t) equals the free response from
+    // q(0) = 0, q̇(0) = f₀/m. Definition 15.9.3: the ramp response of 1/s is t²/2.
+    let (m, f0) = (2.0, 3.0);
+    let sys = Sdof::new(m, 0.8, 5.0).unwrap().to_state_space(SdofOutput::Position).unwrap();
+    let t = time_grid(6.0, 61).unwrap();
+    let imp = response(&sys, InputKind::Impulse, 0, f0, 0.0, &t).unwrap();
+    assert_eq!(imp.impulse_weight, vec![0.0]);
+    let free = initial(&sys, &[0.0, f0 / m], &t).unwrap();
+    for k in 0..t.len() {
+        assert_abs(imp.y[0][k], free.y[0][k], 64.0 * EPS * f0 / m);
+    }
+    let integrator = StateSpace::from_rows(&[&[0.0]], &[&[1.0]], &[&[1.0]], &[&[0.0]]).unwrap();
+    let ramp = response(&integrator, InputKind::Ramp, 0, 1.0, 0.0, &t).unwrap();
+    for (k, &tk) in t.iter().enumerate() {
+        assert_rel(ramp.y[0][k], tk * tk / 2.0, 16.0 * EPS);
+    }
+}

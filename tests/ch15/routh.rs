@@ -22,7 +22,7 @@ fn eq_15_17_1_and_15_17_2_low_order_conditions() {
 }
 
 #[test]
-fn section_15_17_routh_special_case_zero_in_first_column() {
+fn sec_15_17_routh_special_case_zero_in_first_column() {
     // s⁴ + s³ + 2s² + 2s + 3: the s² row starts with 0 (ε-substitution); 2 roots in the ORHP.
     let ra = routh(&poly(&[1.0, 1.0, 2.0, 2.0, 3.0])).unwrap();
     assert!(ra.epsilon_used);
@@ -30,7 +30,7 @@ fn section_15_17_routh_special_case_zero_in_first_column() {
 }
 
 #[test]
-fn section_15_17_routh_special_case_row_of_zeros() {
+fn sec_15_17_routh_special_case_row_of_zeros() {
     // s⁵ + 2s⁴ + 24s³ + 48s² − 25s − 50 = (s+2)(s²−1)(s²+25): the s³ row vanishes; the auxiliary
     // polynomial 2s⁴ + 48s² − 50 has roots ±1, ±5j: one ORHP root, two on the axis.
     let ra = routh(&poly(&[1.0, 2.0, 24.0, 48.0, -25.0, -50.0])).unwrap();

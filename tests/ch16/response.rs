@@ -5,7 +5,7 @@ use super::*;
 use std::f64::consts::PI;
 
 #[test]
-fn section_16_1_phase_shift_is_a_time_shift() {
+fn sec_16_1_phase_shift_is_a_time_shift() {
     // (16.1.1)–(16.1.5): g(t) = sin(ωt + φ) = f(t − Δt) with Δt = −φ/ω; φ > 0 advances g,
     // φ < 0 delays it. After (16.1.7): g leads f when 0 < φ̂ − φ ≤ 180° (mod 360°).
     let w = 2.5;
@@ -55,7 +55,7 @@ fn eq_16_2_4_harmonic_steady_state_of_a_lag() {
 }
 
 #[test]
-fn section_16_4_pole_at_zero_is_infinite_not_nan() {
+fn sec_16_4_pole_at_zero_is_infinite_not_nan() {
     // §16.4: 1/(ms) has −20 dB/decade and −90° for every ω > 0, and at ω = 0 the magnitude is
     // +∞ (16.4.1–4). Issue 19, item 2: at a pole on the imaginary axis freqresp, bode and eval
     // give |G| = +∞ (dB +∞) and the phase of the limit ω → ω₀⁺ — never NaN. At a zero on the
@@ -114,7 +114,7 @@ fn eq_16_5_7_real_pole_minus_3_db() {
 }
 
 #[test]
-fn section_16_7_rc_low_pass_filter() {
+fn sec_16_7_rc_low_pass_filter() {
     // §16.7, Ex 16.7.1: V_out = 1/(RCs + 1)·V_in (−3 dB and −45° at ω = 1/RC) and
     // I = Cs/(RCs + 1)·V_in → V_in/R at high frequency (|I/V_in| → 1/R, phase → 0).
     let (r, c) = (1.0e3, 2.0e-6); // 1 kΩ, 2 µF: 1/RC = 500 rad/s
