@@ -250,7 +250,7 @@ fn expm_core(a: &Mat<f64>) -> Mat<f64> {
 ///
 /// # Errors
 /// [`LtiError::NotSquare`] or [`LtiError::NonFinite`]; [`LtiError::Overflow`] when the result
-/// exceeds the f64 range (e^{[[1000]]}), instead of ∞ or NaN entries.
+/// exceeds the f64 range (`e^{[[1000]]}`), instead of ∞ or NaN entries.
 pub fn expm(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
     if a.nrows() != a.ncols() {
         return Err(LtiError::NotSquare { what: "expm argument", rows: a.nrows(), cols: a.ncols() });

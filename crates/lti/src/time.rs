@@ -50,9 +50,9 @@ pub enum InputKind {
 pub struct TimeResponse {
     /// Sample times.
     pub t: Vec<f64>,
-    /// `y[i][k]`: output i at time t[k].
+    /// `y[i][k]`: output i at time `t[k]`.
     pub y: Vec<Vec<f64>>,
-    /// `x[i][k]`: state i at time t[k].
+    /// `x[i][k]`: state i at time `t[k]`.
     pub x: Vec<Vec<f64>>,
     /// For an impulse input, the weights D·f₀ of the Dirac term Dδ(t − t₀) per output, which
     /// cannot be sampled (15.8.5, notes §3.10); zero otherwise.
