@@ -124,8 +124,8 @@ fn problem_15_20_24_same_form_different_dimensions() {
     let g_velocity = TransferFunction::new(&[1.0], &[m, 0.0]).unwrap(); // 1/(m s)
     let impulse = TransferFunction::new(&[1.0], &[1.0]).unwrap(); // 𝓛{δ} = 1
     let step = TransferFunction::new(&[1.0], &[1.0, 0.0]).unwrap(); // 𝓛{1(t)} = 1/s
-    let q_hat = g_position.series(&impulse);
-    let v_hat = g_velocity.series(&step);
+    let q_hat = g_position.series(&impulse).unwrap();
+    let v_hat = g_velocity.series(&step).unwrap();
     assert_eq!(q_hat.num().coeffs(), v_hat.num().coeffs());
     assert_eq!(q_hat.den().coeffs(), v_hat.den().coeffs());
     // both are the ramp f₀t/m (per unit f₀): 𝓛⁻¹{1/(m s²)} = t/m

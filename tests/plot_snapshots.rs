@@ -30,7 +30,7 @@ fn tf(n: &[f64], d: &[f64]) -> TransferFunction {
 fn snapshot_bode_16_8_11() {
     // 16.8.11 ii (Fig. 18.0.12): L = 1/(s(s+1)) and with the lead (s+2)/(s+20); PM markers.
     let l = tf(&[1.0], &[1.0, 1.0, 0.0]);
-    let led = l.series(&tf(&[1.0, 2.0], &[1.0, 20.0]));
+    let led = l.series(&tf(&[1.0, 2.0], &[1.0, 20.0])).unwrap();
     let w = logspace(-2.0, 2.0, 200).unwrap();
     let (a, b) = (l.bode(&w).unwrap(), led.bode(&w).unwrap());
     let fig = control::bode(

@@ -89,7 +89,7 @@ fn problem_14_9_3_rudder_impulse_leaves_a_new_heading() {
     let psi = sys.to_tf(4, 1).unwrap();
     assert_eq!(psi.den().zero_roots(), 1, "ψ/δr has exactly one pole at s = 0");
     // the quartic: den = s·p(s)
-    let c = psi.den().monic().coeffs().to_vec();
+    let c = psi.den().monic().unwrap().coeffs().to_vec();
     let (e, f, g, h) = (c[1], c[2], c[3], c[4]);
     assert!(e > 0.0 && f > 0.0 && g > 0.0 && h > 0.0);
     assert!(h * e * e + g * g < e * f * g, "Routh n = 4 (15.17.2)");

@@ -550,15 +550,16 @@ fn notebook_09_linear_systems() {
     // cell 3
     let l = TransferFunction::new(&[1.0], &[1.0, 1.0, 0.0]).expect("proper");
     let lead = TransferFunction::new(&[1.0, 2.0], &[1.0, 20.0]).expect("proper");
-    let led = l.series(&lead);
+    let led = l.series(&lead).expect("finite coefficients");
     println!("poles of L: {:?}", l.poles().expect("roots"));
     for (name, g) in [("L", &l), ("L·lead", &led)] {
         let m = g.margins().expect("margins");
         println!(
-            "{name}: GM = {} dB, PM = {:.2}° at ω = {:?}",
+            "{name}: GM = {:?} dB, PM = {:.2?}° at ω = {:?}, stability margin {:.4?}",
             m.gain_margin_db(),
             m.phase_margin_deg(),
-            m.gain_crossover_omega()
+            m.gain_crossover_omega(),
+            m.stability_margin_distance()
         );
     }
     // cell 4
@@ -578,7 +579,7 @@ fn notebook_09_linear_systems() {
     let (mut y_plain, mut y_lead) = (Vec::new(), Vec::new());
     for (g, out) in [(&l, &mut y_plain), (&led, &mut y_lead)] {
         let t_cl = g.feedback(&one).expect("closed loop");
-        let y = t_cl.series(&integrator).inverse_laplace(CLUSTER_RTOL).expect("partial fractions");
+        let y = t_cl.series(&integrator).expect("finite").inverse_laplace(CLUSTER_RTOL).expect("partial fractions");
         for k in 0..=120 {
             let t = 0.1 * f64::from(k);
             out.push((t, y.eval(t)));

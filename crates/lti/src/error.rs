@@ -81,6 +81,40 @@ pub enum LtiError {
         /// The kernel.
         what: &'static str,
     },
+    /// The true result (or a quantity it needs) exceeds the floating-point range.
+    #[error("overflow in {what}: the result exceeds the largest finite f64 (about 1.8e308)")]
+    Overflow {
+        /// The computation.
+        what: &'static str,
+    },
+    /// A complex root without its conjugate where a real polynomial is to be formed.
+    #[error(
+        "unpaired complex root {re} + {im}j in {what}: a real polynomial needs every complex root together with its conjugate"
+    )]
+    UnpairedComplexRoot {
+        /// Which input.
+        what: &'static str,
+        /// Real part of the root.
+        re: f64,
+        /// Imaginary part of the root.
+        im: f64,
+    },
+    /// The zero polynomial where a nonzero one is needed (its roots are every number).
+    #[error("the zero polynomial in {what}: every number is a root; give a nonzero polynomial")]
+    ZeroPolynomial {
+        /// The operation.
+        what: &'static str,
+    },
+    /// A grid or simulation larger than the allowed number of values.
+    #[error("{what} would hold {requested} values; at most {limit} are allowed (memory)")]
+    TooLarge {
+        /// Which buffer.
+        what: &'static str,
+        /// Values requested.
+        requested: u128,
+        /// The limit.
+        limit: usize,
+    },
 }
 
 /// Checks that every value is finite.

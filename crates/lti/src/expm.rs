@@ -6,7 +6,6 @@
 
 use crate::error::{LtiError, check_finite};
 use crate::linalg::{from_faer, to_faer};
-use faer::linalg::solvers::Solve;
 use faer::{Accum, Mat};
 use nalgebra::DMatrix;
 
@@ -63,7 +62,7 @@ fn mul_into(dst: &mut Mat<f64>, acc: Accum, a: &Mat<f64>, b: &Mat<f64>) {
         a.as_ref(),
         b.as_ref(),
         1.0,
-        faer::get_global_parallelism(),
+        par_for(a.nrows().max(a.ncols()).max(b.ncols())),
     );
 }
 
@@ -76,25 +75,112 @@ fn scale_in_place(m: &mut Mat<f64>, c: f64) {
     }
 }
 
-/// dst ← Σ cₖMₖ + d·I (column slices of an owned faer matrix are contiguous).
-fn combine(dst: &mut Mat<f64>, terms: [(f64, &Mat<f64>); 3], d: f64) {
-    let [(c0, m0), (c1, m1), (c2, m2)] = terms;
-    for j in 0..dst.ncols() {
-        let (x0, x1, x2) = (m0.col_as_slice(j), m1.col_as_slice(j), m2.col_as_slice(j));
-        let out = dst.col_as_slice_mut(j);
-        for (((o, a), b), c) in out.iter_mut().zip(x0).zip(x1).zip(x2) {
-            *o = c0 * a + c1 * b + c2 * c;
+/// Two linear combinations of the same three matrices in one pass (each matrix read once;
+/// column slices of an owned faer matrix are contiguous): d₁ ← Σ cₖMₖ + e₁I,
+/// d₂ ← Σ c'ₖMₖ + e₂I.
+fn combine2(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) {
+    for j in 0..d1.ncols() {
+        let (x0, x1, x2) = (m[0].col_as_slice(j), m[1].col_as_slice(j), m[2].col_as_slice(j));
+        let (o1, o2) = (d1.col_as_slice_mut(j), d2.col_as_slice_mut(j));
+        for ((((p, q), a), b), cc) in o1.iter_mut().zip(o2.iter_mut()).zip(x0).zip(x1).zip(x2) {
+            *p = c[0][0] * a + c[0][1] * b + c[0][2] * cc;
+            *q = c[1][0] * a + c[1][1] * b + c[1][2] * cc;
         }
-        out[j] += d;
+        o1[j] += e[0];
+        o2[j] += e[1];
     }
 }
 
-/// e^A for a faer matrix (internal: no checks).
-pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
+/// ‖A‖₁ without overflow: the norm of A/2^E and E (‖A‖₁ = 2^E·returned norm); E = 0 unless
+/// the plain column sums overflow.
+fn norm1_scaled(a: &Mat<f64>) -> (f64, i32) {
+    let plain = norm1(a);
+    if plain.is_finite() {
+        return (plain, 0);
+    }
+    let big = (0..a.ncols()).flat_map(|j| a.col_as_slice(j).iter()).fold(0.0f64, |m, x| m.max(x.abs()));
+    let e = big.log2().floor() as i32;
+    // 2^−E is a normal number here (E ≤ 1023)
+    let f = crate::axis::pow2(-e);
+    let nrm = (0..a.ncols())
+        .map(|j| a.col_as_slice(j).iter().map(|x| x.abs() * f).sum::<f64>())
+        .fold(0.0, f64::max);
+    (nrm, e)
+}
+
+/// The parallelism of the products and factorisations: sequential below 2²⁴ multiply-adds,
+/// where handing blocks to a thread pool costs more than it saves (faer's default hands every
+/// block of a 100×100 solve to the pool: 143 µs instead of 76 µs with one pool thread).
+fn par_for(n: usize) -> faer::Par {
+    if n * n * n < 1 << 24 { faer::Par::Seq } else { faer::get_global_parallelism() }
+}
+
+/// Q⁻¹P by LU with partial pivoting, in place in Q and P.
+fn lu_solve(mut q: Mat<f64>, mut p: Mat<f64>) -> Mat<f64> {
+    use faer::dyn_stack::{MemBuffer, MemStack};
+    use faer::linalg::lu::partial_pivoting::{factor, solve};
+    let n = q.nrows();
+    let par = par_for(n);
+    let (mut fwd, mut bwd) = (vec![0usize; n], vec![0usize; n]);
+    let req = factor::lu_in_place_scratch::<usize, f64>(n, n, par, Default::default())
+        .or(solve::solve_in_place_scratch::<usize, f64>(n, p.ncols(), par));
+    let mut mem = MemBuffer::new(req);
+    let (_, perm) =
+        factor::lu_in_place(q.as_mut(), &mut fwd, &mut bwd, par, MemStack::new(&mut mem), Default::default());
+    // the packed factors: L below the diagonal (unit diagonal implied), U on and above it
+    solve::solve_in_place(q.as_ref(), q.as_ref(), perm, p.as_mut(), par, MemStack::new(&mut mem));
+    p
+}
+
+/// e^A for a finite faer matrix.
+///
+/// # Errors
+/// [`LtiError::Overflow`] when an entry of the result (or of a squaring on the way to it)
+/// exceeds the f64 range; a NaN can only come from such an overflow.
+pub(crate) fn expm_faer(a: &Mat<f64>) -> Result<Mat<f64>, LtiError> {
+    let (ns, e) = norm1_scaled(a);
+    let r = if e > 0 && ns * crate::axis::pow2(e.min(1023)) > THETA13 {
+        // a norm that may overflow ‖A‖₁ itself: choose s from the exponents, A/2ˢ in two steps
+        let s = (ns.log2() + e as f64 - THETA13.log2()).ceil().max(0.0) as i32;
+        let mut a1 = a.clone();
+        for j in 0..a1.ncols() {
+            for x in a1.col_as_slice_mut(j) {
+                *x = crate::poly::mul_pow2(*x, -s);
+            }
+        }
+        let mut r = expm_small(&a1);
+        let n = r.nrows();
+        let mut tmp = Mat::<f64>::zeros(n, n);
+        for _ in 0..s {
+            mul_into(&mut tmp, Accum::Replace, &r, &r);
+            std::mem::swap(&mut r, &mut tmp);
+            if !all_finite(&r) {
+                return Err(LtiError::Overflow { what: "matrix exponential" });
+            }
+        }
+        r
+    } else {
+        expm_core(a)
+    };
+    if all_finite(&r) { Ok(r) } else { Err(LtiError::Overflow { what: "matrix exponential" }) }
+}
+
+fn all_finite(m: &Mat<f64>) -> bool {
+    (0..m.ncols()).all(|j| m.col_as_slice(j).iter().all(|x| x.is_finite()))
+}
+
+/// r₁₃(A) for ‖A‖₁ ≤ θ₁₃ (no squaring).
+fn expm_small(a: &Mat<f64>) -> Mat<f64> {
+    expm_core(a)
+}
+
+/// e^A by Higham's algorithm for a matrix whose 1-norm is finite.
+fn expm_core(a: &Mat<f64>) -> Mat<f64> {
     let n = a.nrows();
     let id = Mat::<f64>::identity(n, n);
     let nrm = norm1(a);
-    let a2 = a * a;
+    let mut a2 = Mat::<f64>::zeros(n, n);
+    mul_into(&mut a2, Accum::Replace, a, a);
     let (u, v, s) = if let Some(&(m, _)) = THETA.iter().find(|(_, t)| nrm <= *t) {
         // r_m = (V − U)⁻¹(V + U) with U = A Σ b_{2k+1} A^{2k}, V = Σ b_{2k} A^{2k}.
         let b: &[f64] = match m {
@@ -121,7 +207,6 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
         let f = 0.5f64.powi(s);
         let mut a1 = a.clone();
         scale_in_place(&mut a1, f);
-        let mut a2 = a2;
         scale_in_place(&mut a2, f * f);
         let mut a4 = Mat::<f64>::zeros(n, n);
         mul_into(&mut a4, Accum::Replace, &a2, &a2);
@@ -130,16 +215,14 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
         let b = &B13;
         // U = A[A6(b13A6 + b11A4 + b9A2) + b7A6 + b5A4 + b3A2 + b1I]
         let mut w = Mat::<f64>::zeros(n, n);
-        combine(&mut w, [(b[13], &a6), (b[11], &a4), (b[9], &a2)], 0.0);
         let mut t = Mat::<f64>::zeros(n, n);
-        combine(&mut t, [(b[7], &a6), (b[5], &a4), (b[3], &a2)], b[1]);
+        combine2(&mut w, &mut t, [&a6, &a4, &a2], [[b[13], b[11], b[9]], [b[7], b[5], b[3]]], [0.0, b[1]]);
         mul_into(&mut t, Accum::Add, &a6, &w);
         let mut u = Mat::<f64>::zeros(n, n);
         mul_into(&mut u, Accum::Replace, &a1, &t);
         // V = A6(b12A6 + b10A4 + b8A2) + b6A6 + b4A4 + b2A2 + b0I
-        combine(&mut w, [(b[12], &a6), (b[10], &a4), (b[8], &a2)], 0.0);
         let mut v = t;
-        combine(&mut v, [(b[6], &a6), (b[4], &a4), (b[2], &a2)], b[0]);
+        combine2(&mut w, &mut v, [&a6, &a4, &a2], [[b[12], b[10], b[8]], [b[6], b[4], b[2]]], [0.0, b[0]]);
         mul_into(&mut v, Accum::Add, &a6, &w);
         (u, v, s)
     };
@@ -150,7 +233,7 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
             (*pij, *qij) = (*pij + *qij, *pij - *qij);
         }
     }
-    let mut r = q.partial_piv_lu().solve(&p);
+    let mut r = lu_solve(q, p);
     // s squarings between two buffers
     let mut tmp = Mat::<f64>::zeros(n, n);
     for _ in 0..s {
@@ -166,7 +249,8 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Mat<f64> {
 /// Book: §15.5, (15.5.3); Ex 15.5.1–15.5.2; 15.20.27, 15.20.59.
 ///
 /// # Errors
-/// [`LtiError::NotSquare`] or [`LtiError::NonFinite`].
+/// [`LtiError::NotSquare`] or [`LtiError::NonFinite`]; [`LtiError::Overflow`] when the result
+/// exceeds the f64 range (`e^{[[1000]]}`), instead of ∞ or NaN entries.
 pub fn expm(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
     if a.nrows() != a.ncols() {
         return Err(LtiError::NotSquare { what: "expm argument", rows: a.nrows(), cols: a.ncols() });
@@ -175,5 +259,5 @@ pub fn expm(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
     if a.nrows() == 0 {
         return Ok(a.clone());
     }
-    Ok(from_faer(expm_faer(&to_faer(a)).as_ref()))
+    Ok(from_faer(expm_faer(&to_faer(a))?.as_ref()))
 }

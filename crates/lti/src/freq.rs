@@ -2,23 +2,29 @@
 //!
 //! Book: §16.2–16.6, (16.2.1)–(16.2.5), (16.6.2); 16.8.6, 16.8.14 (Z = N + P); notes §3.4–3.5.
 
+use crate::axis::{AxisRational, AxisValue, Scaled, infinity_towards, pow2, rotate};
 use crate::error::LtiError;
 use crate::routh::routh;
 use crate::ss::StateSpace;
 use crate::tf::TransferFunction;
 use crate::zpk::Zpk;
 use num_complex::Complex64;
+use std::f64::consts::TAU;
 
 /// `n` logarithmically spaced frequencies from 10^a to 10^b (Matlab `logspace`).
 ///
 /// # Errors
-/// [`LtiError::InvalidArgument`] unless a < b are finite and n ≥ 2.
+/// [`LtiError::InvalidArgument`] unless a < b are finite and n ≥ 2; [`LtiError::TooLarge`]
+/// for n > [`crate::MAX_VALUES`].
 pub fn logspace(a: f64, b: f64, n: usize) -> Result<Vec<f64>, LtiError> {
     if !(a.is_finite() && b.is_finite() && a < b && n >= 2) {
         return Err(LtiError::InvalidArgument {
             what: "logspace",
             reason: format!("10^{a} … 10^{b} with {n} points; need finite a < b and n ≥ 2"),
         });
+    }
+    if n > crate::MAX_VALUES {
+        return Err(LtiError::TooLarge { what: "logspace", requested: n as u128, limit: crate::MAX_VALUES });
     }
     Ok((0..n).map(|k| 10f64.powf(a + (b - a) * k as f64 / (n - 1) as f64)).collect())
 }
@@ -79,91 +85,192 @@ impl Zpk {
     }
 }
 
-/// Relative error bound (guaranteed, from Horner's a-priori bound) up to which
-/// [`TransferFunction::freqresp`] accepts the evaluation from the coefficients; points beyond
-/// it are evaluated from the zero–pole–gain factors.
-pub const FREQRESP_RTOL: f64 = 1e-11;
+/// Points per block of the vectorised evaluation.
+const CHUNK: usize = 32;
 
-/// p(jω) on a grid for real coefficients `c` (highest power first), as E(−ω²) + jω·O(−ω²)
-/// by Horner's rule over the even and odd powers, one pass per coefficient across the whole
-/// grid (vectorisable), with the bounds Σ|c_k|ω^k.
-fn horner_jw(c: &[f64], omega: &[f64]) -> (Vec<Complex64>, Vec<f64>) {
-    let m = omega.len();
-    let n = c.len() - 1;
-    let sq: Vec<f64> = omega.iter().map(|w| w * w).collect();
-    let (mut e, mut o, mut eb, mut ob) = (vec![0.0; m], vec![0.0; m], vec![0.0; m], vec![0.0; m]);
-    for (k, &ck) in c.iter().enumerate() {
-        let (v, b) = if (n - k).is_multiple_of(2) { (&mut e, &mut eb) } else { (&mut o, &mut ob) };
-        let ak = ck.abs();
-        for ((vi, bi), s) in v.iter_mut().zip(b.iter_mut()).zip(&sq) {
-            *vi = ck - *vi * s;
-            *bi = ak + *bi * s;
+/// a·b + c, fused when the caller was compiled for FMA.
+#[inline(always)]
+fn madd<const FMA: bool>(a: f64, b: f64, c: f64) -> f64 {
+    if FMA { a.mul_add(b, c) } else { a * b + c }
+}
+
+/// G(jω)·2^{−e}… for one block of frequencies (≤ [`CHUNK`]), all at most `w_max` so that the
+/// direct Horner sums cannot overflow: N(jω) = E_N(−ω²) + jω·O_N(−ω²) and D likewise, one
+/// coefficient at a time across the block (the inner loops vectorise), then N·conj(D)/|D|²
+/// times `gain`. A point where |D|² is not a normal number (an axis pole, or under- or
+/// overflow) is left as NaN for the caller's exact path; returns whether there was one.
+#[inline(always)]
+fn block<const FMA: bool>(num: &[f64], den: &[f64], w: &[f64], gain: f64, out: &mut [Complex64]) -> bool {
+    let m = w.len();
+    let mut x = [0.0f64; CHUNK];
+    for (xi, wi) in x.iter_mut().zip(w) {
+        *xi = -wi * wi;
+    }
+    // E and O of N and D: a coefficient of sᵏ joins E when k is even, O when odd
+    let eo = |c: &[f64], e: &mut [f64; CHUNK], o: &mut [f64; CHUNK]| {
+        let n = c.len() - 1;
+        for (i, &ci) in c.iter().enumerate() {
+            let v = if (n - i).is_multiple_of(2) { &mut *e } else { &mut *o };
+            for (vl, xl) in v[..m].iter_mut().zip(&x[..m]) {
+                *vl = madd::<FMA>(*vl, *xl, ci);
+            }
+        }
+    };
+    let (mut en, mut on, mut ed, mut od) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
+    eo(num, &mut en, &mut on);
+    eo(den, &mut ed, &mut od);
+    let mut bad = false;
+    for l in 0..m {
+        let (nr, ni) = (en[l], w[l] * on[l]);
+        let (dr, di) = (ed[l], w[l] * od[l]);
+        let d2 = madd::<FMA>(dr, dr, di * di);
+        let inv = gain / d2;
+        let re = madd::<FMA>(nr, dr, ni * di) * inv;
+        let im = madd::<FMA>(ni, dr, -(nr * di)) * inv;
+        let ok = d2.is_normal() && re.is_finite() && im.is_finite();
+        bad |= !ok;
+        out[l] = if ok { Complex64::new(re, im) } else { Complex64::new(f64::NAN, f64::NAN) };
+    }
+    bad
+}
+
+/// The data of one grid evaluation: scaled coefficients, frequencies, the largest frequency
+/// for the direct sums, and the power of two between the scalings of N and D.
+struct Grid<'a> {
+    num: &'a [f64],
+    den: &'a [f64],
+    omega: &'a [f64],
+    w_max: f64,
+    gain: f64,
+}
+
+/// [`block`] over a whole grid, compiled for AVX2 + FMA when the CPU has them (detected when
+/// the program runs) and portable otherwise; points above `w_max` are left as NaN. Returns
+/// whether any point was left.
+fn blocks(grid: &Grid<'_>, out: &mut [Complex64]) -> bool {
+    #[inline(always)]
+    fn all<const FMA: bool>(g: &Grid<'_>, out: &mut [Complex64]) -> bool {
+        let mut bad = false;
+        for (w, o) in g.omega.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
+            if w.iter().all(|&wi| wi <= g.w_max) {
+                bad |= block::<FMA>(g.num, g.den, w, g.gain, o);
+            } else {
+                o.fill(Complex64::new(f64::NAN, f64::NAN));
+                bad = true;
+            }
+        }
+        bad
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx2,fma")]
+        fn avx2_fma(g: &Grid<'_>, out: &mut [Complex64]) -> bool {
+            all::<true>(g, out)
+        }
+        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+            // SAFETY: AVX2 and FMA were detected on this CPU just above.
+            return unsafe { avx2_fma(grid, out) };
         }
     }
-    let values = e.iter().zip(&o).zip(omega).map(|((e, o), w)| Complex64::new(*e, w * o)).collect();
-    let bounds = eb.iter().zip(&ob).zip(omega).map(|((e, o), w)| e + w * o).collect();
-    (values, bounds)
+    all::<false>(grid, out)
 }
 
 impl TransferFunction {
-    /// G(jω) on `omega`. Numerator and denominator are evaluated as real polynomials in −ω²
-    /// (even and odd powers: p(jω) = E(−ω²) + jω·O(−ω²)), by Horner's rule vectorised across
-    /// the grid, with the a-priori bound |p̂ − p| ≤ (n + 2)ε·Σ|c_k|ω^k at every point (Higham,
-    /// *Accuracy and Stability of Numerical Algorithms*, §5.1). A value whose bound exceeds
-    /// [`FREQRESP_RTOL`] relative (near a zero or a lightly damped pole, or at ω so large that
-    /// the powers overflow) is recomputed from the zero–pole–gain factors (roots found once
-    /// per transfer function and cached). No root finding at all when every point passes,
-    /// which is the common case.
+    /// G(jω) on `omega`, evaluated from the coefficients: N(jω) and D(jω) by Horner's rule on
+    /// their even and odd parts, p(jω) = E(−ω²) + jω·O(−ω²), vectorised across blocks of the grid
+    /// (AVX2 + FMA when the CPU has them); frequencies so high that the powers could overflow
+    /// use the reversed polynomials in 1/(jω). The result is the exact response of coefficients
+    /// perturbed by at most (n + 2)ε relative each (Higham, *Accuracy and Stability of Numerical
+    /// Algorithms*, §5.1): its relative error is at most a small multiple of ε times the
+    /// condition number Σ|cₖωᵏ|/|N| + Σ|dₖωᵏ|/|D|, whatever the conditioning of the roots. No
+    /// root finding.
+    ///
+    /// # Degenerate inputs
+    /// At an imaginary-axis pole the value is the point at infinity in the direction of the
+    /// limit ω → ω₀⁺ (components ±∞, or 0 where the direction has none; never NaN), at an
+    /// imaginary-axis zero it is 0, and a common factor of N and D at jω₀ gives the limit
+    /// (16.6.2 takes the same one-sided limit at ω = 0). [`TransferFunction::bode`] gives the
+    /// exact limiting phase.
     ///
     /// Book: §16.2 (frequency response G(jω)), (16.2.4).
     ///
     /// # Errors
-    /// [`LtiError::InvalidArgument`] for a negative or non-finite ω; root-finding errors when
-    /// some point needs the factored form.
+    /// [`LtiError::InvalidArgument`] for a negative or non-finite ω.
     pub fn freqresp(&self, omega: &[f64]) -> Result<Vec<Complex64>, LtiError> {
         check_omega(omega)?;
-        let (num, den) = (self.num().coeffs(), self.den().coeffs());
-        let (vn, bn) = horner_jw(num, omega);
-        let (vd, bd) = horner_jw(den, omega);
-        let (kn, kd) = ((num.len() + 1) as f64 * f64::EPSILON, (den.len() + 1) as f64 * f64::EPSILON);
+        let num = Scaled::new(self.num().coeffs());
+        let den = Scaled::new(self.den().coeffs());
+        let gain = pow2(num.e - den.e);
+        // |E|, |O| ≤ (n + 1)·2·ω^n with max|c| < 2, and |D|² squares that: the direct sums and
+        // |D|² stay finite while ω^n ≤ 2^450
+        let n = num.degree().max(den.degree()).max(1);
+        let w_max = 2f64.powf(450.0 / n as f64);
+        let mut out = vec![Complex64::new(0.0, 0.0); omega.len()];
         let tau = self.delay();
-        let mut out = Vec::with_capacity(omega.len());
-        let mut redo = Vec::new();
-        // a point passes when each of N, D is guaranteed to ½·FREQRESP_RTOL relative:
-        // (k·bound)² ≤ (tol/2)²·|p̂|², no square root or division; a square that under- or
-        // overflows only sends the point to the factored form
-        let t2 = 0.25 * FREQRESP_RTOL * FREQRESP_RTOL;
-        for i in 0..omega.len() {
-            let (n2, d2) = (vn[i].norm_sqr(), vd[i].norm_sqr());
-            let (en, ed) = (kn * bn[i], kd * bd[i]);
-            let g = vn[i] * vd[i].conj() * (1.0 / d2);
-            if en * en <= t2 * n2 && ed * ed <= t2 * d2 && g.re.is_finite() && g.im.is_finite() {
-                out.push(if tau == 0.0 { g } else { g * Complex64::from_polar(1.0, -omega[i] * tau) });
-            } else {
-                out.push(Complex64::new(f64::NAN, f64::NAN));
-                redo.push(i);
-            }
-        }
-        if !redo.is_empty() {
-            let w: Vec<f64> = redo.iter().map(|&i| omega[i]).collect();
-            let exact = self.to_zpk()?.freqresp(&w)?;
-            for (&i, g) in redo.iter().zip(exact) {
-                out[i] = g;
+        let grid = Grid { num: &num.c, den: &den.c, omega, w_max, gain };
+        let slow = blocks(&grid, &mut out);
+        let ax = slow.then(|| AxisRational::new(self.num().coeffs(), self.den().coeffs()));
+        for (g, &w) in out.iter_mut().zip(omega) {
+            if g.re.is_nan() {
+                // an axis pole or zero, or a frequency beyond the direct range: the exact path
+                let v = ax.as_ref().expect("slow points imply the exact path").at(w);
+                let value = v.value(w);
+                *g = if tau == 0.0 { value } else { delayed(value, direction(&v), -w * tau) };
+            } else if tau != 0.0 {
+                *g *= Complex64::from_polar(1.0, -w * tau);
             }
         }
         Ok(out)
     }
 
-    /// Bode data on `omega`, evaluated from the zero–pole–gain factors (no overflow at large
-    /// ω, notes §3.4).
+    /// Bode data on `omega`: G(jω) and its magnitude from the coefficients as in
+    /// [`TransferFunction::freqresp`] (20 log₁₀|G| in logarithms, exact in range), the phase as the
+    /// principal argument from the coefficients moved by the multiple of 360° that puts it on the
+    /// continuous branch of the zero–pole–gain factors ([`Zpk::phase_deg`], the book's branch
+    /// (16.6.2)). So magnitude and phase carry the coefficient conditioning only; the roots
+    /// decide the branch alone.
     ///
-    /// Book: §16.3, 16.8.3–16.8.7.
+    /// # Degenerate inputs
+    /// At an imaginary-axis pole the magnitude is +∞ dB and the phase the limit ω → ω₀⁺; at a
+    /// zero −∞ dB with the same rule.
+    ///
+    /// Book: §16.3, (16.6.2), 16.8.3–16.8.7.
     ///
     /// # Errors
     /// Root-finding errors; [`LtiError::InvalidArgument`] for a bad grid.
     pub fn bode(&self, omega: &[f64]) -> Result<FrequencyResponse, LtiError> {
-        self.to_zpk()?.bode(omega)
+        check_omega(omega)?;
+        let ax = AxisRational::new(self.num().coeffs(), self.den().coeffs());
+        let (_, branch) = crate::sweep::sweep(&self.to_zpk()?, omega, true);
+        let tau = self.delay();
+        let mut response = Vec::with_capacity(omega.len());
+        let mut magnitude_db = Vec::with_capacity(omega.len());
+        let mut phase_deg = Vec::with_capacity(omega.len());
+        for (&w, &b) in omega.iter().zip(&branch) {
+            let v = ax.at(w);
+            let g = v.value(w);
+            response.push(if tau == 0.0 { g } else { delayed(g, direction(&v), -w * tau) });
+            magnitude_db.push(v.ln_abs(w) * (20.0 / std::f64::consts::LN_10));
+            // principal argument from the coefficients, on the branch of the factors
+            let a = v.arg() - w * tau;
+            phase_deg.push((a + TAU * ((b - a) / TAU).round()).to_degrees());
+        }
+        Ok(FrequencyResponse { omega: omega.to_vec(), response, magnitude_db, phase_deg })
     }
+}
+
+/// A finite nonzero complex number with the direction of G(jω) (for a delayed infinity).
+fn direction(v: &AxisValue) -> Complex64 {
+    match *v {
+        AxisValue::Regular { q, k, .. } => rotate(q, k),
+        AxisValue::Limit { c, order, k, .. } => rotate(rotate(c, k), order),
+    }
+}
+
+/// g·e^{jφ} for the delay factor, keeping an infinite g infinite in the rotated direction.
+fn delayed(g: Complex64, dir: Complex64, phi: f64) -> Complex64 {
+    let r = Complex64::from_polar(1.0, phi);
+    if g.re.is_finite() && g.im.is_finite() { g * r } else { infinity_towards(dir * r) }
 }
 
 impl StateSpace {
@@ -207,7 +314,7 @@ impl TransferFunction {
         self.require_proper("Nyquist plot")?;
         let zpk = self.to_zpk()?;
         let poles = zpk.poles().to_vec();
-        let cl = self.den().add(self.num());
+        let cl = self.den().plus(self.num());
         let ra = routh(&cl)?;
         if ra.imaginary > 0 {
             return Err(LtiError::InvalidArgument {

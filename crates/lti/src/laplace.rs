@@ -218,7 +218,7 @@ fn taylor(p: &Polynomial, x: Complex64, count: usize) -> Vec<Complex64> {
             fact *= k as f64;
         }
         out.push(d.eval_c(x) / fact);
-        d = d.derivative();
+        d = d.deriv();
     }
     out
 }

@@ -6,6 +6,8 @@
 //! ch. 17–18), with the errata listed in the chapter notes corrected.
 #![warn(missing_docs)]
 
+mod axis;
+mod equilibria;
 mod error;
 mod expm;
 mod freq;
@@ -13,10 +15,13 @@ mod hqr;
 mod laplace;
 pub mod linalg;
 mod margins;
+mod placement;
 mod poly;
+mod realroots;
 mod rlocus;
 mod routh;
 mod sdof;
+mod shift;
 mod ss;
 mod stability;
 mod sweep;
@@ -24,23 +29,25 @@ mod tf;
 mod time;
 mod zpk;
 
+pub use equilibria::{AffineEquilibria, affine_equilibria};
 pub use error::LtiError;
 pub use expm::expm;
-pub use freq::{FREQRESP_RTOL, FrequencyResponse, Nyquist, logspace};
+pub use freq::{FrequencyResponse, Nyquist, logspace};
 pub use laplace::{
     CLUSTER_RTOL, FinalValue, Illegal, PartialFractions, PfTerm, RealTerm, TimeFunction, cluster_roots,
     final_value,
 };
-pub use margins::{GainCrossover, Margins, PhaseCrossover, sensitivity_integral, wrap_deg};
+pub use margins::{GainCrossover, Margins, PhaseCrossover, StabilityPoint, sensitivity_integral, wrap_deg};
 pub use num_complex::Complex64;
 pub use poly::{Polynomial, TRIM_RTOL};
 pub use rlocus::{RootLocus, departure_angles, root_locus};
 pub use routh::{RouthArray, routh, stable_gain_intervals};
 pub use sdof::{Mode, Sdof, SdofKind, SdofOutput, modes};
+pub use shift::{leads, time_shift};
 pub use ss::StateSpace;
 pub use stability::{AXIS_RTOL, StabilityClass, stability_of_matrix, stability_of_polynomial};
 pub use tf::TransferFunction;
-pub use time::{Hold, InputKind, TimeResponse, initial, lsim, response, time_grid};
+pub use time::{Hold, InputKind, MAX_VALUES, TimeResponse, initial, lsim, response, time_grid};
 pub use zpk::Zpk;
 
 /// `use vectrix_lti::prelude::*;`

@@ -17,62 +17,92 @@ pub(crate) fn from_faer(a: faer::MatRef<'_, f64>) -> DMatrix<f64> {
     DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| a[(i, j)])
 }
 
-/// Parlett–Reinsch balancing by powers of 2: returns D⁻¹AD with rows and columns of
-/// comparable norm (eigenvalues unchanged, exactly, since the scaling is by powers of 2).
-pub fn balance(a: &DMatrix<f64>) -> DMatrix<f64> {
+/// Exponents kᵢ of the Parlett–Reinsch balancing D = diag(2^{kᵢ}) of a finite square matrix:
+/// D⁻¹AD has rows and columns of comparable 1-norm (off the diagonal), and its eigenvalues are
+/// those of A exactly (a power-of-two similarity rounds nothing).
+///
+/// The sums are formed on A/2^E with 2^E ≈ max|aᵢⱼ| (so a matrix of entries near 10³⁰⁸ cannot
+/// overflow them), each scaling is computed from the exponents of the row and column sums
+/// instead of by repeated doubling, the cumulative scaling keeps every entry in
+/// [2⁻⁹⁰⁰, 2⁹⁰⁰] of the largest, and at most 100 sweeps are made: the loop is bounded (an
+/// earlier version looped forever on entries of 10³⁰⁸, whose sums were infinite).
+pub(crate) fn balance_exponents(a: &DMatrix<f64>) -> Vec<i32> {
     let n = a.nrows();
-    let mut b = a.clone();
-    let radix = 2.0f64;
-    let mut done = false;
-    let mut sweeps = 0;
-    while !done && sweeps < 100 {
-        done = true;
-        sweeps += 1;
+    let mut k = vec![0i32; n];
+    let big = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if n < 2 || big == 0.0 || !big.is_finite() {
+        return k;
+    }
+    let e = big.log2().floor() as i32;
+    let mut b = a.map(|x| crate::poly::mul_pow2(x, -e));
+    const LIMIT: i32 = 900;
+    for _sweep in 0..100 {
+        let mut changed = false;
         for i in 0..n {
-            let (mut c, mut r) = (0.0, 0.0);
+            let (mut c, mut r, mut cmax, mut rmax) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
             for j in 0..n {
                 if j != i {
                     c += b[(j, i)].abs();
                     r += b[(i, j)].abs();
+                    cmax = cmax.max(b[(j, i)].abs());
+                    rmax = rmax.max(b[(i, j)].abs());
                 }
             }
-            if c == 0.0 || r == 0.0 {
+            if c == 0.0 || r == 0.0 || !(c.is_finite() && r.is_finite()) {
                 continue;
             }
-            let s = c + r;
-            let mut f = 1.0;
-            let (mut c2, r2) = (c, r);
-            while c2 < r2 / radix {
-                c2 *= radix * radix;
-                f *= radix;
+            // f = 2^s with c·f ≈ r/f: s = round(½ log₂(r/c))
+            let mut s = (0.5 * (r.log2() - c.log2())).round() as i32;
+            // keep the scaled row and column inside [2^−LIMIT, 2^LIMIT]
+            s = s.min(LIMIT - cmax.log2().ceil() as i32).max(rmax.log2().floor() as i32 - LIMIT);
+            if s == 0 {
+                continue;
             }
-            while c2 >= r2 * radix {
-                c2 /= radix * radix;
-                f /= radix;
-            }
-            let c_new = c * f;
-            let r_new = r / f;
-            if (c_new + r_new) < 0.95 * s {
-                done = false;
+            let f = crate::axis::pow2(s);
+            if c * f + r / f < 0.95 * (c + r) {
+                changed = true;
+                k[i] += s;
                 for j in 0..n {
-                    b[(i, j)] /= f;
-                }
-                for j in 0..n {
-                    b[(j, i)] *= f;
+                    b[(i, j)] = crate::poly::mul_pow2(b[(i, j)], -s);
+                    b[(j, i)] = crate::poly::mul_pow2(b[(j, i)], s);
                 }
             }
         }
+        if !changed {
+            break;
+        }
     }
-    b
+    k
+}
+
+/// Parlett–Reinsch balancing by powers of 2: D⁻¹AD with rows and columns of comparable norm
+/// (eigenvalues unchanged, exactly, since the scaling is by powers of 2).
+///
+/// # Errors
+/// [`LtiError::NotSquare`], [`LtiError::NonFinite`]; [`LtiError::Overflow`] when an entry of
+/// D⁻¹AD exceeds the f64 range.
+pub fn balance(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
+    if a.nrows() != a.ncols() {
+        return Err(LtiError::NotSquare { what: "balance argument", rows: a.nrows(), cols: a.ncols() });
+    }
+    crate::error::check_finite("balance argument", a.iter())?;
+    let k = balance_exponents(a);
+    let b = DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| crate::poly::mul_pow2(a[(i, j)], k[j] - k[i]));
+    if b.iter().all(|x| x.is_finite()) { Ok(b) } else { Err(LtiError::Overflow { what: "balanced matrix" }) }
 }
 
 /// Eigenvalues of a real square matrix (balanced first), as complex numbers; real eigenvalues
 /// have an exactly zero imaginary part and complex ones come in exact conjugate pairs.
 ///
+/// The matrix is divided by a power of two near its largest entry first (exact; the
+/// eigenvalues scale with it), so entries anywhere in the f64 range are handled.
+///
 /// Book: §15.3, (15.3.5); Matlab `eig` in 15.20.2.
 ///
 /// # Errors
-/// [`LtiError::NotSquare`], [`LtiError::NonFinite`], or [`LtiError::NoConvergence`].
+/// [`LtiError::NotSquare`], [`LtiError::NonFinite`], [`LtiError::NoConvergence`], or
+/// [`LtiError::Overflow`] when an eigenvalue exceeds the f64 range ([[1e308, 1e308],
+/// [1e308, 1e308]] has the eigenvalue 2e308).
 pub fn eigenvalues(a: &DMatrix<f64>) -> Result<Vec<Complex64>, LtiError> {
     if a.nrows() != a.ncols() {
         return Err(LtiError::NotSquare { what: "A", rows: a.nrows(), cols: a.ncols() });
@@ -95,9 +125,16 @@ pub(crate) fn eigenvalues_hessenberg(a: &DMatrix<f64>) -> Result<Vec<Complex64>,
 }
 
 fn eigenvalues_balanced(a: &DMatrix<f64>, hessenberg: bool) -> Result<Vec<Complex64>, LtiError> {
-    // balancing is a diagonal similarity: it keeps the Hessenberg shape
-    let b = balance(a);
-    let n = b.nrows();
+    // A/2^E (exact), then the balancing similarity (exact; it keeps the Hessenberg shape)
+    let big = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if big == 0.0 {
+        return Ok(vec![Complex64::new(0.0, 0.0); a.nrows()]);
+    }
+    let e = big.log2().floor() as i32;
+    let scaled = a.map(|x| crate::poly::mul_pow2(x, -e));
+    let k = balance_exponents(&scaled);
+    let n = scaled.nrows();
+    let b = DMatrix::from_fn(n, n, |i, j| crate::poly::mul_pow2(scaled[(i, j)], k[j] - k[i]));
     let small = (n <= SMALL)
         .then(|| {
             let mut w = crate::hqr::Work::from_fn(n, |i, j| b[(i, j)]);
@@ -113,8 +150,19 @@ fn eigenvalues_balanced(a: &DMatrix<f64>, hessenberg: bool) -> Result<Vec<Comple
         // larger, or the 30-iteration limit was hit: faer's blocked multishift QR
         None => to_faer(&b).eigenvalues().map_err(|_| LtiError::NoConvergence { what: "eigenvalues" })?,
     };
-    let scale = a.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
-    Ok(tidy_conjugates(ev, scale))
+    if ev.iter().any(|z| !(z.re.is_finite() && z.im.is_finite())) {
+        return Err(LtiError::NoConvergence { what: "eigenvalues" });
+    }
+    let scale = scaled.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
+    let ev: Vec<Complex64> = tidy_conjugates(ev, scale)
+        .into_iter()
+        .map(|z| Complex64::new(crate::poly::mul_pow2(z.re, e), crate::poly::mul_pow2(z.im, e)))
+        .collect();
+    if ev.iter().all(|z| z.re.is_finite() && z.im.is_finite()) {
+        Ok(ev)
+    } else {
+        Err(LtiError::Overflow { what: "eigenvalues" })
+    }
 }
 
 /// Makes real roots exactly real and complex roots exact conjugate pairs; sorts them by
@@ -160,12 +208,27 @@ pub(crate) fn tidy_conjugates(mut v: Vec<Complex64>, scale: f64) -> Vec<Complex6
 /// Singular values of a real matrix, largest first.
 ///
 /// # Errors
-/// [`LtiError::NoConvergence`] if the SVD fails.
+/// [`LtiError::NonFinite`] for a NaN or infinite entry; [`LtiError::NoConvergence`] if the SVD
+/// fails; [`LtiError::Overflow`] when the largest singular value exceeds the f64 range.
 pub fn singular_values(a: &DMatrix<f64>) -> Result<Vec<f64>, LtiError> {
     if a.nrows() == 0 || a.ncols() == 0 {
         return Ok(Vec::new());
     }
-    let mut s = to_faer(a).singular_values().map_err(|_| LtiError::NoConvergence { what: "SVD" })?;
+    crate::error::check_finite("SVD argument", a.iter())?;
+    // A/2^E (exact): the singular values scale with it, and nothing overflows inside
+    let big = a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if big == 0.0 {
+        return Ok(vec![0.0; a.nrows().min(a.ncols())]);
+    }
+    let e = big.log2().floor() as i32;
+    let scaled = to_faer(&a.map(|x| crate::poly::mul_pow2(x, -e)));
+    let mut s = scaled.singular_values().map_err(|_| LtiError::NoConvergence { what: "SVD" })?;
+    for x in s.iter_mut() {
+        *x = crate::poly::mul_pow2(*x, e);
+    }
+    if s.iter().any(|x| !x.is_finite()) {
+        return Err(LtiError::Overflow { what: "singular values" });
+    }
     s.sort_by(|x, y| y.total_cmp(x));
     Ok(s)
 }

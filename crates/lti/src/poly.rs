@@ -52,25 +52,46 @@ impl Polynomial {
         Self { coeffs: vec![1.0, 0.0] }
     }
 
-    /// The monic polynomial ∏(s − rᵢ) with real coefficients (Matlab `poly`); complex roots
-    /// must come in conjugate pairs, and the imaginary round-off of the product is dropped.
+    /// The monic polynomial ∏(s − rᵢ) with real coefficients (Matlab `poly`). Every complex
+    /// root must come with its exact conjugate (as the root finders of this crate return them);
+    /// each pair is multiplied in as the real quadratic s² − 2 Re r·s + |r|².
     ///
     /// # Errors
-    /// [`LtiError::NonFinite`] for a non-finite root.
+    /// [`LtiError::NonFinite`] for a non-finite root; [`LtiError::UnpairedComplexRoot`] for a
+    /// complex root whose conjugate is missing (a real polynomial cannot have it: `[1 + 1j]`
+    /// alone used to give s − 1); [`LtiError::Overflow`] when a coefficient overflows.
     pub fn from_roots(roots: &[Complex64]) -> Result<Self, LtiError> {
         if roots.iter().any(|r| !(r.re.is_finite() && r.im.is_finite())) {
             return Err(LtiError::NonFinite { what: "roots" });
         }
-        let mut c = vec![Complex64::new(1.0, 0.0)];
-        for r in roots {
-            let mut next = vec![Complex64::new(0.0, 0.0); c.len() + 1];
-            for (k, ck) in c.iter().enumerate() {
-                next[k] += ck;
-                next[k + 1] -= ck * r;
+        // pair every root of positive imaginary part with an unused exact conjugate
+        let mut used = vec![false; roots.len()];
+        let mut c = vec![1.0];
+        for i in 0..roots.len() {
+            if used[i] {
+                continue;
             }
-            c = next;
+            let r = roots[i];
+            used[i] = true;
+            if r.im == 0.0 {
+                c = Self::from_vec(c).times(&Self { coeffs: vec![1.0, -r.re] }).coeffs;
+                continue;
+            }
+            let Some(j) = (0..roots.len()).find(|&j| !used[j] && roots[j] == r.conj()) else {
+                return Err(LtiError::UnpairedComplexRoot { what: "roots", re: r.re, im: r.im });
+            };
+            used[j] = true;
+            // (s − r)(s − r̄) = s² − 2 Re r·s + |r|²
+            let quad = Self { coeffs: vec![1.0, -2.0 * r.re, r.re * r.re + r.im * r.im] };
+            c = Self::from_vec(c).times(&quad).coeffs;
         }
-        Ok(Self::from_vec(c.iter().map(|z| z.re).collect()))
+        let p = Self::from_vec(c);
+        p.checked("polynomial from roots")
+    }
+
+    /// Self, or [`LtiError::Overflow`] when a coefficient is not finite.
+    pub(crate) fn checked(self, what: &'static str) -> Result<Self, LtiError> {
+        if self.coeffs.iter().all(|c| c.is_finite()) { Ok(self) } else { Err(LtiError::Overflow { what }) }
     }
 
     /// Coefficients in descending powers.
@@ -111,25 +132,67 @@ impl Polynomial {
         Self::from_vec(self.coeffs[first..].to_vec())
     }
 
-    /// The same polynomial divided by its leading coefficient (unchanged if zero).
-    pub fn monic(&self) -> Self {
+    /// The same polynomial divided by its leading coefficient.
+    ///
+    /// # Errors
+    /// [`LtiError::ZeroPolynomial`] for the zero polynomial; [`LtiError::Overflow`] when a
+    /// quotient overflows.
+    pub fn monic(&self) -> Result<Self, LtiError> {
+        if self.is_zero() {
+            return Err(LtiError::ZeroPolynomial { what: "monic" });
+        }
         let l = self.leading();
-        if l == 0.0 { self.clone() } else { self.scale(1.0 / l) }
+        Self::from_vec(self.coeffs.iter().map(|x| x / l).collect()).checked("monic polynomial")
     }
 
     /// c·p(s).
-    pub fn scale(&self, c: f64) -> Self {
+    ///
+    /// # Errors
+    /// [`LtiError::NonFinite`] for a non-finite c; [`LtiError::Overflow`].
+    pub fn scale(&self, c: f64) -> Result<Self, LtiError> {
+        check_finite("scale factor", [&c])?;
+        self.scaled(c).checked("scaled polynomial")
+    }
+
+    /// c·p(s) (internal: the caller checks the result where it can overflow).
+    pub(crate) fn scaled(&self, c: f64) -> Self {
         Self::from_vec(self.coeffs.iter().map(|x| x * c).collect())
     }
 
-    /// p(x) at a real point (Horner).
+    /// p(x) at a real point: Horner's rule, on the reversed polynomial in 1/x for |x| > 1 so
+    /// that intermediate powers never overflow (±∞ only when the value itself does).
     pub fn eval(&self, x: f64) -> f64 {
-        self.coeffs.iter().fold(0.0, |acc, &c| acc * x + c)
+        if x.abs() <= 1.0 {
+            return self.coeffs.iter().fold(0.0, |acc, &c| acc * x + c);
+        }
+        let y = 1.0 / x;
+        let r = self.coeffs.iter().rev().fold(0.0, |acc, &c| acc * y + c);
+        if r == 0.0 {
+            return 0.0;
+        }
+        // p(x) = xⁿ·r(1/x)
+        let v = r * x.powi(self.degree() as i32);
+        if v.is_nan() { f64::INFINITY.copysign(r) } else { v }
     }
 
-    /// p(s) at a complex point (Horner).
+    /// p(s) at a complex point (Horner; on the reversed polynomial at 1/s for |s| > 1). A value
+    /// beyond the f64 range is the point at infinity in its direction (never NaN).
     pub fn eval_c(&self, s: Complex64) -> Complex64 {
-        self.coeffs.iter().fold(Complex64::new(0.0, 0.0), |acc, &c| acc * s + c)
+        if s.norm_sqr() <= 1.0 {
+            return self.coeffs.iter().fold(Complex64::new(0.0, 0.0), |acc, &c| acc * s + c);
+        }
+        let z = crate::axis::cdiv(Complex64::new(1.0, 0.0), s);
+        let r = self.coeffs.iter().rev().fold(Complex64::new(0.0, 0.0), |acc, &c| acc * z + c);
+        if r.re == 0.0 && r.im == 0.0 {
+            return r;
+        }
+        let v = r * s.powi(self.degree() as i32);
+        if v.re.is_finite() && v.im.is_finite() {
+            v
+        } else {
+            let dir = r / r.norm() * (s / s.norm()).powi(self.degree() as i32);
+            crate::axis::infinity_towards(dir)
+        }
     }
 
     /// p(s) and p′(s) together at a complex point.
@@ -144,7 +207,15 @@ impl Polynomial {
     }
 
     /// The derivative p′(s).
-    pub fn derivative(&self) -> Self {
+    ///
+    /// # Errors
+    /// [`LtiError::Overflow`] when a coefficient k·cₖ overflows.
+    pub fn derivative(&self) -> Result<Self, LtiError> {
+        self.deriv().checked("derivative")
+    }
+
+    /// p′(s) (internal).
+    pub(crate) fn deriv(&self) -> Self {
         let n = self.degree();
         if n == 0 {
             return Self::constant(0.0);
@@ -153,7 +224,31 @@ impl Polynomial {
     }
 
     /// p(s) + q(s).
-    pub fn add(&self, q: &Self) -> Self {
+    ///
+    /// # Errors
+    /// [`LtiError::Overflow`] when a sum overflows.
+    pub fn add(&self, q: &Self) -> Result<Self, LtiError> {
+        self.plus(q).checked("polynomial sum")
+    }
+
+    /// p(s) − q(s).
+    ///
+    /// # Errors
+    /// [`LtiError::Overflow`] when a difference overflows.
+    pub fn sub(&self, q: &Self) -> Result<Self, LtiError> {
+        self.minus(q).checked("polynomial difference")
+    }
+
+    /// p(s)·q(s).
+    ///
+    /// # Errors
+    /// [`LtiError::Overflow`] when a coefficient of the product overflows.
+    pub fn mul(&self, q: &Self) -> Result<Self, LtiError> {
+        self.times(q).checked("polynomial product")
+    }
+
+    /// p + q (internal).
+    pub(crate) fn plus(&self, q: &Self) -> Self {
         let n = self.coeffs.len().max(q.coeffs.len());
         let get = |p: &Self, i: usize| {
             let off = n - p.coeffs.len();
@@ -162,13 +257,13 @@ impl Polynomial {
         Self::from_vec((0..n).map(|i| get(self, i) + get(q, i)).collect())
     }
 
-    /// p(s) − q(s).
-    pub fn sub(&self, q: &Self) -> Self {
-        self.add(&q.scale(-1.0))
+    /// p − q (internal).
+    pub(crate) fn minus(&self, q: &Self) -> Self {
+        self.plus(&q.scaled(-1.0))
     }
 
-    /// p(s)·q(s).
-    pub fn mul(&self, q: &Self) -> Self {
+    /// p·q (internal).
+    pub(crate) fn times(&self, q: &Self) -> Self {
         let mut c = vec![0.0; self.coeffs.len() + q.coeffs.len() - 1];
         for (i, a) in self.coeffs.iter().enumerate() {
             for (j, b) in q.coeffs.iter().enumerate() {
@@ -179,7 +274,16 @@ impl Polynomial {
     }
 
     /// p(a·s): scales the variable (time scaling of a transfer function).
-    pub fn scale_variable(&self, a: f64) -> Self {
+    ///
+    /// # Errors
+    /// [`LtiError::NonFinite`] for a non-finite a; [`LtiError::Overflow`].
+    pub fn scale_variable(&self, a: f64) -> Result<Self, LtiError> {
+        check_finite("variable scale", [&a])?;
+        self.scaled_variable(a).checked("polynomial in a scaled variable")
+    }
+
+    /// p(a·s) (internal).
+    pub(crate) fn scaled_variable(&self, a: f64) -> Self {
         let n = self.degree();
         Self::from_vec(self.coeffs.iter().enumerate().map(|(i, c)| c * a.powi((n - i) as i32)).collect())
     }
@@ -192,9 +296,13 @@ impl Polynomial {
         self.coeffs.iter().rev().take_while(|&&c| c == 0.0).count()
     }
 
-    /// The roots, from the eigenvalues of the balanced companion matrix (faer) followed by
-    /// Newton polishing on p itself; exact roots at 0 are returned exactly, real roots have
-    /// zero imaginary part and complex roots come in exact conjugate pairs.
+    /// The roots, from the eigenvalues of the balanced companion matrix followed by Newton
+    /// polishing; exact roots at 0 are returned exactly, real roots have zero imaginary part and
+    /// complex roots come in exact conjugate pairs.
+    ///
+    /// The variable is scaled first, s = 2ᵏt with 2ᵏ ≈ |cₙ/c₀|^{1/n} (exact), so that
+    /// coefficients spanning the whole floating-point range (1e300 s² + s + 1, roots
+    /// ≈ ±1e-150j) neither underflow nor overflow in the companion matrix.
     ///
     /// # Conventions
     /// Repeated roots are found to about ε^{1/q} relative accuracy for multiplicity q (a
@@ -203,24 +311,39 @@ impl Polynomial {
     /// Book: 15.20.5 (`roots(p)` equals `eig` of the companion matrix).
     ///
     /// # Errors
-    /// [`LtiError::NoConvergence`] if the eigenvalue iteration fails.
+    /// [`LtiError::ZeroPolynomial`] for the zero polynomial (every number is a root);
+    /// [`LtiError::NoConvergence`] if the eigenvalue iteration fails; [`LtiError::Overflow`]
+    /// when a root exceeds the f64 range.
     pub fn roots(&self) -> Result<Vec<Complex64>, LtiError> {
+        if self.is_zero() {
+            return Err(LtiError::ZeroPolynomial { what: "roots" });
+        }
         let z = self.zero_roots();
-        let core = Self::from_vec(self.coeffs[..self.coeffs.len() - z].to_vec());
-        let n = core.degree();
+        let core = &self.coeffs[..self.coeffs.len() - z];
+        let n = core.len() - 1;
         let mut roots = vec![Complex64::new(0.0, 0.0); z];
         if n == 0 {
             return Ok(roots);
         }
+        // s = σt, σ = 2ᵏ: q(t) = Σ cᵢσ^{n−i}t^{n−i} has |q₀| ≈ |qₙ|
+        let k = ((core[n].abs().log2() - core[0].abs().log2()) / n as f64).round() as i32;
+        let scaled: Vec<f64> =
+            core.iter().enumerate().map(|(i, &c)| mul_pow2(c, k * (n - i) as i32)).collect();
+        let (q, k) = if scaled.iter().all(|c| c.is_finite()) && scaled[0] != 0.0 && scaled[n] != 0.0 {
+            (Self { coeffs: scaled }, k)
+        } else {
+            (Self { coeffs: core.to_vec() }, 0)
+        };
+        let sigma = |t: Complex64| Complex64::new(mul_pow2(t.re, k), mul_pow2(t.im, k));
+        let c0 = q.coeffs[0];
         if n == 1 {
-            roots.push(Complex64::new(-core.coeffs[1] / core.coeffs[0], 0.0));
-            return Ok(linalg::tidy_conjugates(roots, 1.0));
+            roots.push(sigma(Complex64::new(-q.coeffs[1] / c0, 0.0)));
+            return finite_roots(linalg::tidy_conjugates(roots, 0.0));
         }
         // Companion matrix (15.7.3) of the monic polynomial: top row −c₁/c₀ … −cₙ/c₀.
-        let c0 = core.coeffs[0];
         let comp = DMatrix::from_fn(n, n, |i, j| {
             if i == 0 {
-                -core.coeffs[j + 1] / c0
+                -q.coeffs[j + 1] / c0
             } else if i == j + 1 {
                 1.0
             } else {
@@ -231,14 +354,18 @@ impl Polynomial {
         // Newton polishing helps simple roots; inside a cluster (a multiple root split by
         // roundoff into ~ε^{1/k}) it moves the members unevenly and spoils their mean, which
         // the QR iteration gets right to O(ε) (the trace), so clusters are left as computed.
+        let mut ts = Vec::with_capacity(n);
         for (i, &r) in raw.iter().enumerate() {
             let near = raw
                 .iter()
                 .enumerate()
                 .any(|(j, &o)| j != i && (o - r).norm_sqr() <= 1e-6 * r.norm_sqr().max(1.0));
-            roots.push(if near { r } else { core.polish(r) });
+            ts.push(if near { r } else { q.polish(r) });
         }
-        Ok(linalg::tidy_conjugates(roots, core.norm_inf() / c0.abs()))
+        let ts = linalg::tidy_conjugates(ts, q.norm_inf() / c0.abs());
+        roots.extend(ts.into_iter().map(sigma));
+        // relative tidying only: the scaled roots are already paired, σ = 2ᵏ keeps them so
+        finite_roots(linalg::tidy_conjugates(roots, 0.0))
     }
 
     /// A few Newton steps on p from `r`, kept only while |p| decreases.
@@ -259,6 +386,23 @@ impl Polynomial {
             }
         }
         best
+    }
+}
+
+/// x·2ᵏ exactly (0 or ±∞ beyond the range), in two steps so that 2ᵏ itself never overflows
+/// before the product is formed.
+pub(crate) fn mul_pow2(x: f64, k: i32) -> f64 {
+    use crate::axis::pow2;
+    let h = k / 2;
+    x * pow2(h) * pow2(k - h)
+}
+
+/// The roots, or [`LtiError::Overflow`] when one left the f64 range.
+fn finite_roots(r: Vec<Complex64>) -> Result<Vec<Complex64>, LtiError> {
+    if r.iter().all(|z| z.re.is_finite() && z.im.is_finite()) {
+        Ok(r)
+    } else {
+        Err(LtiError::Overflow { what: "polynomial roots" })
     }
 }
 

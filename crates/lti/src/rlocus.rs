@@ -53,7 +53,7 @@ pub fn root_locus(g: &TransferFunction, k_max: f64, max_step: f64) -> Result<Roo
     let poles = d0.roots()?;
     let zeros = if n0.is_zero() { Vec::new() } else { n0.roots()? };
     let scale = poles.iter().chain(&zeros).map(|z| z.norm()).fold(1.0, f64::max);
-    let roots_at = |k: f64| d0.add(&n0.scale(k)).roots();
+    let roots_at = |k: f64| d0.plus(&n0.scaled(k)).roots();
     let mut gains = vec![0.0];
     let mut current = poles.clone();
     let n = current.len();
@@ -94,7 +94,7 @@ pub fn root_locus(g: &TransferFunction, k_max: f64, max_step: f64) -> Result<Roo
         (None, Vec::new())
     };
     // Breakaway points: d/ds(D₀/N₀) = 0 ⇔ N₀D₀′ − D₀N₀′ = 0 with k = −D₀/N₀ real ≥ 0.
-    let dd = n0.mul(&d0.derivative()).sub(&d0.mul(&n0.derivative()));
+    let dd = n0.times(&d0.deriv()).minus(&d0.times(&n0.deriv()));
     let mut breakaway = Vec::new();
     if !dd.is_zero() && dd.degree() > 0 {
         for s in dd.roots()? {
@@ -107,7 +107,7 @@ pub fn root_locus(g: &TransferFunction, k_max: f64, max_step: f64) -> Result<Roo
     // Imaginary-axis crossings: Im(D₀ conj N₀)(ω) = 0 with k = −D₀/N₀ > 0.
     let (dr, di) = jw_parts(&d0);
     let (nr, ni) = jw_parts(&n0);
-    let im = di.mul(&nr).sub(&dr.mul(&ni));
+    let im = di.times(&nr).minus(&dr.times(&ni));
     let mut jw_crossings = Vec::new();
     if !im.is_zero() {
         for w in im.roots()? {
@@ -187,7 +187,7 @@ impl RootLocus {
         // Signed distance to the ray at angle 90° + θ from the positive real axis.
         let dir = Complex64::from_polar(1.0, std::f64::consts::FRAC_PI_2 + th);
         let side = |s: Complex64| (dir.conj() * s).im;
-        let char_roots = |k: f64| g.den().add(&g.num().scale(k)).roots().ok();
+        let char_roots = |k: f64| g.den().plus(&g.num().scaled(k)).roots().ok();
         let mut out: Vec<(f64, Complex64)> = Vec::new();
         for b in &self.branches {
             for j in 1..b.len() {

@@ -46,8 +46,8 @@ impl RouthArray {
 /// Book: §15.17; notes §3.7.
 ///
 /// # Errors
-/// [`LtiError::InvalidArgument`] for the zero polynomial; root-finding errors for the
-/// auxiliary polynomial.
+/// [`LtiError::InvalidArgument`] for the zero polynomial; [`LtiError::Overflow`] when an
+/// entry of the array overflows; root-finding errors for the auxiliary polynomial.
 pub fn routh(p: &Polynomial) -> Result<RouthArray, LtiError> {
     if p.is_zero() {
         return Err(LtiError::InvalidArgument {
@@ -55,7 +55,7 @@ pub fn routh(p: &Polynomial) -> Result<RouthArray, LtiError> {
             reason: "the zero polynomial has no Routh array".into(),
         });
     }
-    let p = if p.leading() < 0.0 { p.scale(-1.0) } else { p.clone() };
+    let p = if p.leading() < 0.0 { p.scaled(-1.0) } else { p.clone() };
     let n = p.degree();
     let c = p.coeffs();
     let width = n / 2 + 1;
@@ -92,7 +92,7 @@ pub fn routh(p: &Polynomial) -> Result<RouthArray, LtiError> {
                 }
             }
             let aux = Polynomial::from_vec(coeffs);
-            let d = aux.derivative();
+            let d = aux.deriv();
             let dc = d.coeffs();
             next = (0..width).map(|j| dc.get(2 * j).copied().unwrap_or(0.0)).collect();
             if auxiliary.is_none() {
@@ -110,6 +110,9 @@ pub fn routh(p: &Polynomial) -> Result<RouthArray, LtiError> {
             }
         }
         rows.push(next);
+    }
+    if rows.iter().any(|r| r.iter().any(|x| !x.is_finite())) {
+        return Err(LtiError::Overflow { what: "Routh array" });
     }
     let first: Vec<f64> = rows.iter().map(|r| r[0]).collect();
     let rhp_changes = first.windows(2).filter(|w| (w[0] > 0.0) != (w[1] > 0.0)).count();
@@ -141,7 +144,7 @@ pub fn stable_gain_intervals(num: &Polynomial, den: &Polynomial) -> Result<Vec<(
     let (dr, di) = jw_parts(den);
     let (nr, ni) = jw_parts(num);
     // Im(D conj N) = Di Nr − Dr Ni (a polynomial in ω).
-    let im = di.mul(&nr).sub(&dr.mul(&ni));
+    let im = di.times(&nr).minus(&dr.times(&ni));
     let mut ks: Vec<f64> = Vec::new();
     let mut omegas: Vec<f64> = vec![0.0];
     if !im.is_zero() {
@@ -166,7 +169,7 @@ pub fn stable_gain_intervals(num: &Polynomial, den: &Polynomial) -> Result<Vec<(
     ks.sort_by(f64::total_cmp);
     ks.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * a.abs().max(1.0));
     let hurwitz = |k: f64| -> Result<bool, LtiError> {
-        let p = den.add(&num.scale(k));
+        let p = den.plus(&num.scaled(k));
         Ok(p.degree() == den.degree().max(num.degree()) && routh(&p)?.is_hurwitz())
     };
     let mut edges = vec![f64::NEG_INFINITY];

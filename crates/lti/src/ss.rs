@@ -148,7 +148,7 @@ impl StateSpace {
         let bc = &ch.b * &ch.c;
         let closed = Polynomial::from_roots(&linalg::eigenvalues(&(&ch.a - bc))?)?;
         let d = ch.d[(0, 0)];
-        let num = closed.sub(&den).add(&den.scale(d));
+        let num = closed.minus(&den).plus(&den.scaled(d));
         // Round-off of the subtraction is about ε·n·max(|closed|, |den|) per coefficient.
         let scale = closed.norm_inf().max(den.norm_inf()) * (1.0 + d.abs());
         let tol = 64.0 * f64::EPSILON * (self.n_states().max(1) as f64) * scale;

@@ -96,8 +96,12 @@ pub fn stability_of_matrix(a: &DMatrix<f64>, tol: f64) -> Result<StabilityClass,
 /// Book: §15.16 (the lists for poles), 15.20.29–31.
 ///
 /// # Errors
-/// Root-finding errors.
+/// [`LtiError::ZeroPolynomial`] for the zero polynomial (every number is a root; it used to
+/// come out asymptotically stable); root-finding errors.
 pub fn stability_of_polynomial(p: &Polynomial, tol: f64) -> Result<StabilityClass, LtiError> {
+    if p.is_zero() {
+        return Err(LtiError::ZeroPolynomial { what: "stability of a polynomial" });
+    }
     let groups = cluster_roots(&p.roots()?, crate::laplace::CLUSTER_RTOL);
     classify(&groups, tol, |_, q| Ok(q == 1))
 }

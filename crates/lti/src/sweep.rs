@@ -5,31 +5,45 @@
 //!
 //! Book: §16.2–16.3; notes §3.4–3.5.
 
+use crate::axis::infinity_towards;
 use crate::zpk::Zpk;
 use num_complex::Complex64;
 
 /// G(jω) and the continuous phase in radians (the branch of [`Zpk::phase_deg`]).
+///
+/// A factor jω − r that is exactly zero (ω on an imaginary-axis root) contributes its limit
+/// direction j(ω − ω₀)/|ω − ω₀| = j as ω → ω₀⁺ and counts in the order of the pole or zero, so
+/// that the value is the point at infinity (or 0) in the limiting direction and the phase the
+/// limit from above, never NaN.
 pub(crate) fn sweep(zpk: &Zpk, omega: &[f64], with_phase: bool) -> (Vec<Complex64>, Vec<f64>) {
     let n = omega.len();
     let mut re = vec![1.0; n];
     let mut im = vec![0.0; n];
     let mut turns = vec![0i32; n];
+    let mut order = vec![0i32; n];
     // Interleave zeros and poles so that the running product stays moderate (no overflow).
     let (z, p) = (zpk.zeros(), zpk.poles());
     for i in 0..z.len().max(p.len()) {
         if let Some(r) = z.get(i) {
-            mul_factor(&mut re, &mut im, &mut turns, omega, r, false, with_phase);
+            mul_factor(&mut re, &mut im, &mut turns, &mut order, omega, r, false, with_phase);
         }
         if let Some(r) = p.get(i) {
-            mul_factor(&mut re, &mut im, &mut turns, omega, r, true, with_phase);
+            mul_factor(&mut re, &mut im, &mut turns, &mut order, omega, r, true, with_phase);
         }
     }
     let k = zpk.gain();
     let tau = zpk.delay();
     let response = (0..n)
         .map(|i| {
-            let g = Complex64::new(k * re[i], k * im[i]);
-            if tau == 0.0 { g } else { g * Complex64::from_polar(1.0, -omega[i] * tau) }
+            let mut g = Complex64::new(k * re[i], k * im[i]);
+            if tau != 0.0 {
+                g *= Complex64::from_polar(1.0, -omega[i] * tau);
+            }
+            match order[i].cmp(&0) {
+                std::cmp::Ordering::Less => infinity_towards(g),
+                std::cmp::Ordering::Greater => Complex64::new(0.0, 0.0),
+                std::cmp::Ordering::Equal => g,
+            }
         })
         .collect();
     let phase = if with_phase {
@@ -50,6 +64,7 @@ fn mul_factor(
     re: &mut [f64],
     im: &mut [f64],
     turns: &mut [i32],
+    order: &mut [i32],
     omega: &[f64],
     r: &Complex64,
     pole: bool,
@@ -60,7 +75,11 @@ fn mul_factor(
         // f = jω − r = a + jb, or its reciprocal conj(f)/|f|² for a pole.
         let a = -r.re;
         let b = omega[i] - r.im;
-        let (fa, fb) = if pole {
+        let (fa, fb) = if a == 0.0 && b == 0.0 {
+            // ω on an axis root: the direction j of jω − r as ω → ω₀⁺ (−j for 1/(jω − r))
+            order[i] += if pole { -1 } else { 1 };
+            (0.0, if pole { -1.0 } else { 1.0 })
+        } else if pole {
             // 1/(a + jb) = (a − jb)/(a² + b²), one division; Smith's algorithm only where
             // a² + b² over- or underflows (huge ω or roots)
             let d = a * a + b * b;
@@ -166,6 +185,10 @@ pub(crate) fn response(zpk: &Zpk, omega: &[f64]) -> Vec<Complex64> {
     for i in 0..n {
         let (num, den) = (Complex64::new(nr[i], ni[i]), Complex64::new(dr[i], di[i]));
         let (an, ad) = (num.norm_sqr(), den.norm_sqr());
+        // an exact zero of a factor (an axis root at this ω): the one-sided limit of `sweep`
+        if (ad == 0.0 && den.re == 0.0 && den.im == 0.0) || (num.re == 0.0 && num.im == 0.0) {
+            return sweep(zpk, omega, false).0;
+        }
         // a product left the range where |·|² is representable: redo everything interleaved
         let safe = |x: f64| x == 0.0 || (x.is_finite() && x > 1e-280 && x < 1e280);
         if !(safe(an) && ad.is_finite() && ad > 1e-280 && ad < 1e280) {

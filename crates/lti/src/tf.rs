@@ -48,12 +48,21 @@ impl TransferFunction {
     /// G = N/D from polynomials.
     ///
     /// # Errors
-    /// [`LtiError::ZeroDenominator`] when D = 0.
+    /// [`LtiError::ZeroDenominator`] when D = 0; [`LtiError::Overflow`] when a coefficient is
+    /// not finite (an interconnection whose coefficients overflowed).
     pub fn from_polynomials(num: Polynomial, den: Polynomial) -> Result<Self, LtiError> {
+        let num = num.checked("transfer-function numerator")?;
+        let den = den.checked("transfer-function denominator")?;
         if den.is_zero() {
             return Err(LtiError::ZeroDenominator);
         }
         Ok(Self { num, den, delay: 0.0, roots: RootCache::default() })
+    }
+
+    /// The same N/D with another delay (internal: τ already valid).
+    fn with_delay_unchecked(mut self, tau: f64) -> Self {
+        self.delay = tau;
+        self
     }
 
     /// The same transfer function times e^{−τs}.
@@ -152,10 +161,51 @@ impl TransferFunction {
         Ok(self.roots()?.0.clone())
     }
 
-    /// G(s) at a complex point (Horner on N and D, times e^{−τs}). For frequency responses
-    /// prefer [`Zpk::eval`], which does not overflow at large |s| (notes §3.4).
+    /// G(s) at a complex point from the coefficients: Horner's rule on N and D (on the reversed
+    /// polynomials at 1/s when |s| > 1, so nothing overflows), times e^{−τs}.
+    ///
+    /// # Degenerate inputs
+    /// At a pole (D(s) = 0 exactly in floating point) the value is the point at infinity in
+    /// the direction of the limit G(s + h), h → 0⁺ real (components ±∞, or 0 where the direction
+    /// has none; never NaN); where N and D vanish together the limit is taken (a removable
+    /// singularity gives its finite value). A value beyond the f64 range is the point at
+    /// infinity in its direction. For G(jω) see [`TransferFunction::freqresp`].
     pub fn eval(&self, s: Complex64) -> Complex64 {
-        self.num.eval_c(s) / self.den.eval_c(s) * (-self.delay * s).exp()
+        use crate::axis::{cdiv, infinity_towards, taylor_leading};
+        let (nc, dc) = (self.num.coeffs(), self.den.coeffs());
+        let big = s.norm() > 1.0;
+        // z = s (|s| ≤ 1) or z = 1/s with p(s) = s^deg·Σ cᵢzⁱ
+        let z = if big { cdiv(Complex64::new(1.0, 0.0), s) } else { s };
+        let poly =
+            |c: &[f64]| -> Vec<f64> { if big { c.iter().rev().copied().collect() } else { c.to_vec() } };
+        let (pn, pd) = (poly(nc), poly(dc));
+        let horner = |c: &[f64]| c.iter().fold(Complex64::new(0.0, 0.0), |acc, &x| acc * z + x);
+        let k = if big { self.num.degree() as i32 - self.den.degree() as i32 } else { 0 };
+        let unit = |v: Complex64| v / v.norm();
+        let (nv, dv) = (horner(&pn), horner(&pd));
+        let zero = Complex64::new(0.0, 0.0);
+        // (q, order, direction of the approach in the variable z)
+        let (q, order) = if dv != zero || self.num.is_zero() {
+            (if self.num.is_zero() { zero } else { cdiv(nv, dv) }, 0)
+        } else {
+            // D(s) = 0: orders and leading Taylor coefficients at z
+            let (a, ta) = taylor_leading(&pn, z).unwrap_or((0, zero));
+            let (b, tb) = taylor_leading(&pd, z).unwrap_or((0, Complex64::new(1.0, 0.0)));
+            (cdiv(ta, tb), a as i32 - b as i32)
+        };
+        // s + h ↦ z: z − z₀ ≈ −h/s² for the reversed variable
+        let approach = if big { unit(-(z * z)) } else { Complex64::new(1.0, 0.0) };
+        let delay = if self.delay == 0.0 { Complex64::new(1.0, 0.0) } else { (-self.delay * s).exp() };
+        if order > 0 || q == zero {
+            return zero;
+        }
+        let dir =
+            || unit(q) * approach.powi(order) * unit(s).powi(k) * Complex64::from_polar(1.0, delay.arg());
+        if order < 0 {
+            return infinity_towards(dir());
+        }
+        let v = q * s.powi(k) * delay;
+        if v.re.is_finite() && v.im.is_finite() { v } else { infinity_towards(dir()) }
     }
 
     /// The DC gain G(0), `None` when G has a pole at 0 (and N(0) ≠ 0).
@@ -180,7 +230,7 @@ impl TransferFunction {
     /// −G.
     pub fn neg(&self) -> Self {
         Self {
-            num: self.num.scale(-1.0),
+            num: self.num.scaled(-1.0),
             den: self.den.clone(),
             delay: self.delay,
             roots: RootCache::default(),
@@ -188,30 +238,34 @@ impl TransferFunction {
     }
 
     /// c·G.
-    pub fn scale(&self, c: f64) -> Self {
-        Self { num: self.num.scale(c), den: self.den.clone(), delay: self.delay, roots: RootCache::default() }
+    ///
+    /// # Errors
+    /// [`LtiError::NonFinite`] for a NaN or infinite c; [`LtiError::Overflow`] when a
+    /// coefficient of c·N overflows.
+    pub fn scale(&self, c: f64) -> Result<Self, LtiError> {
+        Ok(Self::from_polynomials(self.num.scale(c)?, self.den.clone())?.with_delay_unchecked(self.delay))
     }
 
     /// Series connection G₂G₁ (delays add).
-    pub fn series(&self, g2: &Self) -> Self {
-        Self {
-            num: self.num.mul(&g2.num),
-            den: self.den.mul(&g2.den),
-            delay: self.delay + g2.delay,
-            roots: RootCache::default(),
-        }
+    ///
+    /// # Errors
+    /// [`LtiError::Overflow`] when a coefficient of N₁N₂ or D₁D₂ overflows.
+    pub fn series(&self, g2: &Self) -> Result<Self, LtiError> {
+        let g = Self::from_polynomials(self.num.times(&g2.num), self.den.times(&g2.den))?;
+        Ok(g.with_delay_unchecked(self.delay + g2.delay))
     }
 
     /// Parallel connection G₁ + G₂.
     ///
     /// # Errors
-    /// [`LtiError::Delay`] when the delays differ (the sum is not rational times one delay).
+    /// [`LtiError::Delay`] when the delays differ (the sum is not rational times one delay);
+    /// [`LtiError::Overflow`] when a coefficient overflows.
     pub fn parallel(&self, g2: &Self) -> Result<Self, LtiError> {
         if self.delay != g2.delay {
             return Err(LtiError::Delay { what: "parallel connection", delay: self.delay.max(g2.delay) });
         }
-        let num = self.num.mul(&g2.den).add(&g2.num.mul(&self.den));
-        Ok(Self { num, den: self.den.mul(&g2.den), delay: self.delay, roots: RootCache::default() })
+        let num = self.num.times(&g2.den).plus(&g2.num.times(&self.den));
+        Ok(Self::from_polynomials(num, self.den.times(&g2.den))?.with_delay_unchecked(self.delay))
     }
 
     /// Negative feedback G/(1 + GH) (H in the return path); with H = 1 this is the closed
@@ -221,13 +275,13 @@ impl TransferFunction {
     ///
     /// # Errors
     /// [`LtiError::Delay`] with a delay in the loop; [`LtiError::ZeroDenominator`] when
-    /// 1 + GH ≡ 0.
+    /// 1 + GH ≡ 0; [`LtiError::Overflow`] when a coefficient overflows.
     pub fn feedback(&self, h: &Self) -> Result<Self, LtiError> {
         self.require_rational("feedback")?;
         h.require_rational("feedback")?;
         // G/(1+GH) = N_g D_h / (D_g D_h + N_g N_h)
-        let num = self.num.mul(&h.den);
-        let den = self.den.mul(&h.den).add(&self.num.mul(&h.num));
+        let num = self.num.times(&h.den);
+        let den = self.den.times(&h.den).plus(&self.num.times(&h.num));
         Self::from_polynomials(num, den)
     }
 
@@ -245,7 +299,8 @@ impl TransferFunction {
     /// (ω ↦ aω in the frequency response).
     ///
     /// # Errors
-    /// [`LtiError::InvalidArgument`] unless a is finite and > 0.
+    /// [`LtiError::InvalidArgument`] unless a is finite and > 0; [`LtiError::Overflow`] when a
+    /// coefficient of N(s/a) or D(s/a) overflows.
     pub fn time_scaled(&self, a: f64) -> Result<Self, LtiError> {
         if !(a.is_finite() && a > 0.0) {
             return Err(LtiError::InvalidArgument {
@@ -253,9 +308,9 @@ impl TransferFunction {
                 reason: format!("a = {a}; need a > 0"),
             });
         }
-        let num = self.num.scale_variable(1.0 / a);
-        let den = self.den.scale_variable(1.0 / a);
-        Ok(Self { num, den, delay: self.delay * a, roots: RootCache::default() })
+        let num = self.num.scaled_variable(1.0 / a);
+        let den = self.den.scaled_variable(1.0 / a);
+        Ok(Self::from_polynomials(num, den)?.with_delay_unchecked(self.delay * a))
     }
 
     /// Cancels zero–pole pairs closer than `tol·max(1, |p|)` (Matlab `minreal`); the result is

@@ -7,12 +7,30 @@
 //! z = (x, u) with M = [[A, B], [0, 0]]; for a ramp, z = (x, u, u̇) with
 //! M = [[A, B, 0], [0, 0, 1], [0, 0, 0]] (van Loan). Then z(t + h) = e^{Mh}z(t) exactly,
 //! so the samples carry no discretisation error at all.
+//!
+//! # Accuracy: a balanced generator
+//! The generator is balanced first, M_b = D⁻¹MD with D = diag(2^{kᵢ}) (Parlett–Reinsch, exact),
+//! and the state is propagated in the balanced coordinates w = D⁻¹z with Φ_b = e^{M_b h}
+//! (Higham's scaling and squaring). A companion realisation (15.7.3) of a transfer function
+//! whose coefficients span many orders of magnitude has ‖A‖ far above its eigenvalues; the
+//! exponential's backward error ε‖M‖ then swamps the small entries, and the squarings that a
+//! large ‖Mh‖ needs amplify it (relative errors up to 8e-7 at order 7–10 before). Balancing
+//! brings ‖M_b‖ down to the size of the eigenvalues, so few or no squarings are needed and the
+//! backward error is spread like the entries themselves: on the reference set of
+//! `tests/lti_reference.rs` the responses agree with 60-digit references to ≤ 1e-12 times their
+//! condition number (docs/accuracy.md).
 
 use crate::error::LtiError;
 use crate::expm::expm_faer;
+use crate::linalg::balance_exponents;
 use crate::ss::StateSpace;
 use crate::tf::TransferFunction;
-use faer::Mat;
+use nalgebra::DMatrix;
+
+/// The most values (time samples, or samples × signals of a simulation) a grid or a response
+/// may hold: 2²⁶ ≈ 6.7·10⁷ f64, 512 MiB. Larger requests are a typed error
+/// ([`LtiError::TooLarge`]) rather than an aborted allocation.
+pub const MAX_VALUES: usize = 1 << 26;
 
 /// A standard test input of §15.9, applied at t₀ = `delay` with amplitude f₀.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -32,9 +50,9 @@ pub enum InputKind {
 pub struct TimeResponse {
     /// Sample times.
     pub t: Vec<f64>,
-    /// `y[i][k]`: output i at time t[k].
+    /// `y[i][k]`: output i at time `t[k]`.
     pub y: Vec<Vec<f64>>,
-    /// `x[i][k]`: state i at time t[k].
+    /// `x[i][k]`: state i at time `t[k]`.
     pub x: Vec<Vec<f64>>,
     /// For an impulse input, the weights D·f₀ of the Dirac term Dδ(t − t₀) per output, which
     /// cannot be sampled (15.8.5, notes §3.10); zero otherwise.
@@ -69,10 +87,21 @@ fn check_grid(t: &[f64]) -> Result<f64, LtiError> {
     Ok(h)
 }
 
+/// Errors with [`LtiError::TooLarge`] when `signals × samples` exceeds [`MAX_VALUES`].
+fn check_size(what: &'static str, signals: usize, samples: usize) -> Result<(), LtiError> {
+    let requested = signals as u128 * samples as u128;
+    if requested > MAX_VALUES as u128 {
+        return Err(LtiError::TooLarge { what, requested, limit: MAX_VALUES });
+    }
+    Ok(())
+}
+
 /// `n` equally spaced times from 0 to `t_end` (Matlab `linspace(0, t_end, n)`).
 ///
 /// # Errors
-/// [`LtiError::InvalidArgument`] unless t_end > 0 is finite and n ≥ 2.
+/// [`LtiError::InvalidArgument`] unless t_end > 0 is finite and n ≥ 2;
+/// [`LtiError::TooLarge`] for n > [`MAX_VALUES`] (`time_grid(1.0, 1e12)` used to abort on
+/// allocation).
 pub fn time_grid(t_end: f64, n: usize) -> Result<Vec<f64>, LtiError> {
     if !(t_end.is_finite() && t_end > 0.0 && n >= 2) {
         return Err(LtiError::InvalidArgument {
@@ -80,17 +109,92 @@ pub fn time_grid(t_end: f64, n: usize) -> Result<Vec<f64>, LtiError> {
             reason: format!("t_end = {t_end}, n = {n}; need finite t_end > 0 and n ≥ 2"),
         });
     }
+    check_size("time grid", 1, n)?;
     Ok((0..n).map(|k| t_end * k as f64 / (n - 1) as f64).collect())
 }
 
+/// ż = Mz in balanced coordinates w = D⁻¹z, D = diag(2^{kᵢ}) (exact).
+struct Generator {
+    /// M_b = D⁻¹MD.
+    m: faer::Mat<f64>,
+    /// 2^{kᵢ}: z = d ⊙ w.
+    d: Vec<f64>,
+}
+
+impl Generator {
+    fn new(m: &DMatrix<f64>) -> Self {
+        let k = balance_exponents(m);
+        let n = m.nrows();
+        let mb = faer::Mat::from_fn(n, n, |i, j| crate::poly::mul_pow2(m[(i, j)], k[j] - k[i]));
+        Self { m: mb, d: k.iter().map(|&ki| crate::axis::pow2(ki)).collect() }
+    }
+
+    /// e^{M_b h} row-major.
+    fn transition(&self, h: f64) -> Result<Vec<f64>, LtiError> {
+        let n = self.m.nrows();
+        let e = expm_faer(&(faer::Scale(h) * &self.m))?;
+        Ok((0..n * n).map(|q| e[(q / n, q % n)]).collect())
+    }
+
+    /// w = D⁻¹z.
+    fn balanced(&self, z: &[f64]) -> Vec<f64> {
+        z.iter().zip(&self.d).map(|(zi, di)| zi / di).collect()
+    }
+}
+
+/// out = Φw for a row-major square Φ.
+#[inline]
+fn matvec(phi: &[f64], w: &[f64], out: &mut [f64]) {
+    let n = w.len();
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = phi[i * n..(i + 1) * n].iter().zip(w).map(|(a, b)| a * b).sum();
+    }
+}
+
+/// Outputs y = Cx + D·u from the balanced state: C·diag(d) precomputed row-major.
+struct Readout {
+    /// C scaled by the balancing, p × n row-major.
+    c: Vec<f64>,
+    /// D column of the input.
+    d: Vec<f64>,
+    n: usize,
+}
+
+impl Readout {
+    fn new(sys: &StateSpace, input: usize, scale: &[f64]) -> Self {
+        let (p, n) = (sys.n_outputs(), sys.n_states());
+        let c = (0..p * n).map(|q| sys.c()[(q / n, q % n)] * scale[q % n]).collect();
+        let d = (0..p).map(|o| if sys.n_inputs() > 0 { sys.d()[(o, input)] } else { 0.0 }).collect();
+        Self { c, d, n }
+    }
+
+    fn write(&self, w: &[f64], u: f64, k: usize, y: &mut [Vec<f64>]) {
+        let n = self.n;
+        for (o, yo) in y.iter_mut().enumerate() {
+            yo[k] = self.d[o] * u
+                + self.c[o * n..(o + 1) * n].iter().zip(&w[..n]).map(|(a, b)| a * b).sum::<f64>();
+        }
+    }
+}
+
+/// Errors with [`LtiError::Overflow`] when a sample left the f64 range (an unstable response
+/// whose true value overflows).
+fn finite_response(r: TimeResponse) -> Result<TimeResponse, LtiError> {
+    let ok = r.y.iter().chain(&r.x).all(|v| v.iter().all(|x| x.is_finite()));
+    if ok { Ok(r) } else { Err(LtiError::Overflow { what: "time response" }) }
+}
+
 /// Response of `sys` from rest to `amplitude`·input into input channel `input`, delayed by
-/// `delay`, sampled at the uniform grid `t` (exact: no discretisation error).
+/// `delay`, sampled at the uniform grid `t` (exact: no discretisation error; the generator is
+/// balanced, see the module documentation).
 ///
 /// Book: (15.8.3)–(15.8.5); §15.9 (impulse, step, ramp); (15.10.2) delay.
 ///
 /// # Errors
 /// [`LtiError::IndexOutOfRange`] for a bad input; [`LtiError::InvalidArgument`] for a
-/// non-uniform or negative time grid or a negative delay; [`LtiError::NonFinite`].
+/// non-uniform or negative time grid or a negative delay; [`LtiError::NonFinite`];
+/// [`LtiError::TooLarge`] when (states + outputs) × samples exceeds [`MAX_VALUES`];
+/// [`LtiError::Overflow`] when the response exceeds the f64 range.
 pub fn response(
     sys: &StateSpace,
     kind: InputKind,
@@ -110,6 +214,8 @@ pub fn response(
     }
     let h = check_grid(t)?;
     let n = sys.n_states();
+    let (p, nt) = (sys.n_outputs(), t.len());
+    check_size("time response", n + p, nt)?;
     // Augmented generator M and initial state z(t₀⁺).
     let extra = match kind {
         InputKind::Impulse => 0,
@@ -117,66 +223,58 @@ pub fn response(
         InputKind::Ramp => 2,
     };
     let nz = n + extra;
-    let mut m = Mat::<f64>::zeros(nz, nz);
-    for i in 0..n {
-        for j in 0..n {
-            m[(i, j)] = sys.a()[(i, j)];
-        }
-        if extra > 0 {
+    let mut m = DMatrix::<f64>::zeros(nz, nz);
+    m.view_mut((0, 0), (n, n)).copy_from(sys.a());
+    if extra > 0 {
+        for i in 0..n {
             m[(i, n)] = sys.b()[(i, input)];
         }
     }
     if extra == 2 {
         m[(n, n + 1)] = 1.0;
     }
-    let mut z0 = Mat::<f64>::zeros(nz, 1);
+    let mut z0 = vec![0.0; nz];
     match kind {
         // Impulse at t₀: x(t₀⁺) = Bf₀ (an impulse equals a free response, §15.9).
-        InputKind::Impulse => (0..n).for_each(|i| z0[(i, 0)] = sys.b()[(i, input)] * amplitude),
-        InputKind::Step => z0[(n, 0)] = amplitude,
-        InputKind::Ramp => z0[(n + 1, 0)] = amplitude,
+        InputKind::Impulse => (0..n).for_each(|i| z0[i] = sys.b()[(i, input)] * amplitude),
+        InputKind::Step => z0[n] = amplitude,
+        InputKind::Ramp => z0[n + 1] = amplitude,
     }
-    // First sample at or after t₀ gets z(τ) = e^{Mτ}z₀; later ones step by e^{Mh}.
-    let first = t.iter().position(|&tk| tk >= delay).unwrap_or(t.len());
-    let step = if h > 0.0 { expm_faer(&(faer::Scale(h) * &m)) } else { Mat::identity(nz, nz) };
-    let (p, nt) = (sys.n_outputs(), t.len());
+    let generator = Generator::new(&m);
+    let readout = Readout::new(sys, input, &generator.d);
+    // First sample at or after t₀ gets w(τ) = e^{M_b τ}w₀; later ones step by e^{M_b h}.
+    let first = t.iter().position(|&tk| tk >= delay).unwrap_or(nt);
+    let phi = if h > 0.0 && first + 1 < nt { generator.transition(h)? } else { Vec::new() };
     let mut y = vec![vec![0.0; nt]; p];
     let mut x = vec![vec![0.0; nt]; n];
-    // Dense row-major copies for the hot loop: one small matrix–vector product per sample.
-    let phi: Vec<f64> = (0..nz * nz).map(|q| step[(q / nz, q % nz)]).collect();
-    let c: Vec<f64> = (0..p * n).map(|q| sys.c()[(q / n, q % n)]).collect();
-    let d: Vec<f64> = (0..p).map(|o| sys.d()[(o, input)]).collect();
-    let mut z = vec![0.0; nz];
-    let mut zn = vec![0.0; nz];
+    let mut w = generator.balanced(&z0);
+    let mut wn = vec![0.0; nz];
     for k in first..nt {
         if k == first {
-            let z1 = expm_faer(&(faer::Scale(t[k] - delay) * &m)) * &z0;
-            z.iter_mut().enumerate().for_each(|(i, zi)| *zi = z1[(i, 0)]);
+            let e = generator.transition(t[k] - delay)?;
+            matvec(&e, &w, &mut wn);
         } else {
-            for (i, zi) in zn.iter_mut().enumerate() {
-                *zi = phi[i * nz..(i + 1) * nz].iter().zip(&z).map(|(a, b)| a * b).sum();
-            }
-            std::mem::swap(&mut z, &mut zn);
+            matvec(&phi, &w, &mut wn);
         }
+        std::mem::swap(&mut w, &mut wn);
         for i in 0..n {
-            x[i][k] = z[i];
+            x[i][k] = w[i] * generator.d[i];
         }
         // y = Cx + Du, with u the input value (the impulse's Dδ is reported separately).
-        let u = if extra >= 1 { z[n] } else { 0.0 };
-        for (o, yo) in y.iter_mut().enumerate() {
-            yo[k] = d[o] * u + c[o * n..(o + 1) * n].iter().zip(&z[..n]).map(|(a, b)| a * b).sum::<f64>();
-        }
+        let u = if extra >= 1 { w[n] * generator.d[n] } else { 0.0 };
+        readout.write(&w, u, k, &mut y);
     }
     let impulse_weight = (0..p)
         .map(|o| if kind == InputKind::Impulse { sys.d()[(o, input)] * amplitude } else { 0.0 })
         .collect();
-    Ok(TimeResponse { t: t.to_vec(), y, x, impulse_weight })
+    finite_response(TimeResponse { t: t.to_vec(), y, x, impulse_weight })
 }
 
 /// Free response y = Ce^{At}x₀ (15.5.3, (15.8.4) with u = 0).
 ///
 /// # Errors
-/// [`LtiError::DimensionMismatch`] when x₀ has the wrong length; grid errors as [`response`].
+/// [`LtiError::DimensionMismatch`] when x₀ has the wrong length; grid, size and overflow
+/// errors as [`response`].
 pub fn initial(sys: &StateSpace, x0: &[f64], t: &[f64]) -> Result<TimeResponse, LtiError> {
     if x0.len() != sys.n_states() {
         return Err(LtiError::DimensionMismatch {
@@ -187,8 +285,8 @@ pub fn initial(sys: &StateSpace, x0: &[f64], t: &[f64]) -> Result<TimeResponse, 
     }
     crate::error::check_finite("x0", x0)?;
     // The free response from x₀ equals the impulse response of (A, x₀, C, 0) (§15.9).
-    let b = nalgebra::DMatrix::from_column_slice(x0.len(), 1, x0);
-    let d = nalgebra::DMatrix::zeros(sys.n_outputs(), 1);
+    let b = DMatrix::from_column_slice(x0.len(), 1, x0);
+    let d = DMatrix::zeros(sys.n_outputs(), 1);
     let free = StateSpace::new(sys.a().clone(), b, sys.c().clone(), d)?;
     response(&free, InputKind::Impulse, 0, 1.0, 0.0, t)
 }
@@ -205,14 +303,15 @@ pub enum Hold {
 /// Response to sampled inputs `u[k]` (one value per time, single input channel `input`)
 /// held by `hold`, delayed by `delay`, from initial state `x0` (Matlab `lsim`).
 ///
-/// A delay that is not a multiple of h splits every step at the same fraction, so the
-/// result stays exact for the held input.
+/// Over each step the held input is a line v(τ) = v₀ + v̇τ, generated exactly by the augmented
+/// state (x, v, v̇) with the balanced generator of [`response`]. A delay that is not a multiple
+/// of h splits every step at the same fraction, so the result stays exact for the held input.
 ///
 /// Book: (15.8.3)–(15.8.4); 15.20.30, 15.20.39–45.
 ///
 /// # Errors
-/// Grid, index and dimension errors as [`response`] and [`initial`]; u must have one sample
-/// per time.
+/// Grid, index, dimension, size and overflow errors as [`response`] and [`initial`]; u must
+/// have one sample per time.
 pub fn lsim(
     sys: &StateSpace,
     input: usize,
@@ -246,6 +345,8 @@ pub fn lsim(
     }
     let h = check_grid(t)?;
     let n = sys.n_states();
+    let (p, nt) = (sys.n_outputs(), t.len());
+    check_size("time response", n + p, nt)?;
     // Delayed, held input as a function of time: v(t) = u_held(t − delay), zero before t₀.
     let held = |tau: f64| -> f64 {
         let s = tau - delay - t[0];
@@ -265,64 +366,72 @@ pub fn lsim(
         }
     };
     // Augmented generator z = (x, v, v̇) over a piece on which v is linear.
-    let gen_m = |len: f64| {
-        let mut m = Mat::<f64>::zeros(n + 2, n + 2);
-        for i in 0..n {
-            for j in 0..n {
-                m[(i, j)] = sys.a()[(i, j)];
-            }
-            m[(i, n)] = sys.b()[(i, input)];
-        }
-        m[(n, n + 1)] = 1.0;
-        expm_faer(&(faer::Scale(len) * &m))
-    };
-    // Breakpoints of v inside each step: at fraction f of the step (f = 0: none).
-    let f = if h > 0.0 { ((delay / h) - (delay / h).floor()).clamp(0.0, 1.0) } else { 0.0 };
-    let pieces: Vec<(f64, Mat<f64>)> = if f > 1e-12 && f < 1.0 - 1e-12 {
-        vec![(f * h, gen_m(f * h)), ((1.0 - f) * h, gen_m((1.0 - f) * h))]
+    let mut m = DMatrix::<f64>::zeros(n + 2, n + 2);
+    m.view_mut((0, 0), (n, n)).copy_from(sys.a());
+    for i in 0..n {
+        m[(i, n)] = sys.b()[(i, input)];
+    }
+    m[(n, n + 1)] = 1.0;
+    let generator = Generator::new(&m);
+    let readout = Readout::new(sys, input, &generator.d);
+    // The input on step k: a whole number of steps of delay (the common case, exact sample
+    // values) or a breakpoint at fraction f of every step.
+    let steps = if h > 0.0 { delay / h } else { 0.0 };
+    let shift = steps.round();
+    let whole = h == 0.0 || (steps - shift).abs() <= 1e-12 * steps.max(1.0);
+    let pieces: Vec<(f64, Vec<f64>)> = if h == 0.0 || nt < 2 {
+        Vec::new()
+    } else if whole {
+        vec![(h, generator.transition(h)?)]
     } else {
-        vec![(h, gen_m(h))]
+        let f = steps - steps.floor();
+        vec![(f * h, generator.transition(f * h)?), ((1.0 - f) * h, generator.transition((1.0 - f) * h)?)]
     };
-    let (p, nt) = (sys.n_outputs(), t.len());
+    let shift = shift as usize;
+    // v(t_k⁺) and v̇ on [t_k, t_{k+1}) for a whole-step delay
+    let line = |k: usize| -> (f64, f64) {
+        if k < shift {
+            return (0.0, 0.0);
+        }
+        let i = k - shift;
+        let slope = match hold {
+            Hold::Foh if i + 1 < nt => (u[i + 1] - u[i]) / h,
+            _ => 0.0,
+        };
+        (u[i], slope)
+    };
     let mut y = vec![vec![0.0; nt]; p];
     let mut x = vec![vec![0.0; nt]; n];
-    let mut xs: Vec<f64> = x0.to_vec();
+    let mut w = generator.balanced(&[x0, &[0.0, 0.0]].concat());
+    let mut wn = vec![0.0; n + 2];
     for k in 0..nt {
-        let vk = held(t[k]);
+        let vk = if whole { line(k).0 } else { held(t[k]) };
         for i in 0..n {
-            x[i][k] = xs[i];
+            x[i][k] = w[i] * generator.d[i];
         }
-        for (o, yo) in y.iter_mut().enumerate() {
-            yo[k] = sys.d()[(o, input)] * vk + (0..n).map(|i| sys.c()[(o, i)] * xs[i]).sum::<f64>();
-        }
+        readout.write(&w, vk, k, &mut y);
         if k + 1 == nt {
             break;
         }
         let mut tau = t[k];
-        for (len, e) in &pieces {
-            // On [τ, τ+len): v linear from v(τ⁺) with slope (v(τ+len⁻) − v(τ⁺))/len.
-            let eps = 1e-9 * len;
-            let v0 = held(tau + eps);
-            let v1 = held(tau + len - eps);
-            let slope = match hold {
-                Hold::Zoh => 0.0,
-                Hold::Foh => (v1 - v0) / (len - 2.0 * eps),
+        for (len, phi) in &pieces {
+            // on [τ, τ + len): v linear from v(τ⁺) with slope v̇
+            let (v0, slope) = if whole {
+                line(k)
+            } else {
+                let eps = 1e-9 * len;
+                let (a, b) = (held(tau + eps), held(tau + len - eps));
+                let slope = if hold == Hold::Foh { (b - a) / (len - 2.0 * eps) } else { 0.0 };
+                (a - slope * eps, slope)
             };
-            let v_start = v0 - slope * eps;
-            let mut z = Mat::<f64>::zeros(n + 2, 1);
-            for i in 0..n {
-                z[(i, 0)] = xs[i];
-            }
-            z[(n, 0)] = v_start;
-            z[(n + 1, 0)] = slope;
-            let zn = e * &z;
-            for (i, xi) in xs.iter_mut().enumerate() {
-                *xi = zn[(i, 0)];
-            }
+            w[n] = v0 / generator.d[n];
+            w[n + 1] = slope / generator.d[n + 1];
+            matvec(phi, &w, &mut wn);
+            std::mem::swap(&mut w, &mut wn);
             tau += len;
         }
     }
-    Ok(TimeResponse { t: t.to_vec(), y, x, impulse_weight: vec![0.0; p] })
+    finite_response(TimeResponse { t: t.to_vec(), y, x, impulse_weight: vec![0.0; p] })
 }
 
 impl TransferFunction {
@@ -331,7 +440,8 @@ impl TransferFunction {
     /// Book: §15.9, (15.8.3).
     ///
     /// # Errors
-    /// [`LtiError::Improper`] for an improper G; grid errors as [`response`].
+    /// [`LtiError::Improper`] for an improper G; grid, size and overflow errors as
+    /// [`response`].
     pub fn step(&self, t: &[f64]) -> Result<TimeResponse, LtiError> {
         self.simulate(InputKind::Step, t)
     }

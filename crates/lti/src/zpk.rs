@@ -23,14 +23,38 @@ fn finite(z: &[Complex64]) -> bool {
     z.iter().all(|c| c.re.is_finite() && c.im.is_finite())
 }
 
+/// The first complex root without an exact conjugate partner, if any.
+fn unpaired(z: &[Complex64]) -> Option<Complex64> {
+    let mut used = vec![false; z.len()];
+    for i in 0..z.len() {
+        if used[i] || z[i].im == 0.0 {
+            continue;
+        }
+        used[i] = true;
+        match (0..z.len()).find(|&j| !used[j] && z[j] == z[i].conj()) {
+            Some(j) => used[j] = true,
+            None => return Some(z[i]),
+        }
+    }
+    None
+}
+
 impl Zpk {
-    /// A zero–pole–gain system (no delay).
+    /// A zero–pole–gain system (no delay) with real coefficients: every complex zero or pole
+    /// must come with its exact conjugate.
     ///
     /// # Errors
-    /// [`LtiError::NonFinite`] for a non-finite zero, pole or gain.
+    /// [`LtiError::NonFinite`] for a non-finite zero, pole or gain;
+    /// [`LtiError::UnpairedComplexRoot`] for a complex zero or pole without its conjugate
+    /// (`[−1 + 1j]` alone used to become 1/(s + 1)).
     pub fn new(zeros: Vec<Complex64>, poles: Vec<Complex64>, gain: f64) -> Result<Self, LtiError> {
         if !(finite(&zeros) && finite(&poles)) {
             return Err(LtiError::NonFinite { what: "zeros or poles" });
+        }
+        for (what, v) in [("zeros", &zeros), ("poles", &poles)] {
+            if let Some(r) = unpaired(v) {
+                return Err(LtiError::UnpairedComplexRoot { what, re: r.re, im: r.im });
+            }
         }
         if !gain.is_finite() {
             return Err(LtiError::NonFinite { what: "gain" });
@@ -74,18 +98,41 @@ impl Zpk {
     }
 
     /// G(s) = k∏(s − zᵢ)/∏(s − pᵢ)·e^{−τs}, products interleaved to avoid overflow.
+    ///
+    /// # Degenerate inputs
+    /// At a pole (a factor s − pᵢ exactly zero) the value is the point at infinity in the
+    /// direction of the limit s₀ + h, h → 0⁺ real (components ±∞ or 0, never NaN); at a zero it
+    /// is 0; where zeros and poles coincide they cancel.
     pub fn eval(&self, s: Complex64) -> Complex64 {
-        let mut g = Complex64::new(self.gain, 0.0) * (-self.delay * s).exp();
+        let mut g = Complex64::new(self.gain, 0.0);
+        let mut order = 0i32;
         let n = self.zeros.len().max(self.poles.len());
         for i in 0..n {
             if let Some(z) = self.zeros.get(i) {
-                g *= s - z;
+                let f = s - z;
+                // an exact root: direction 1 of s − z = h, counted in the order
+                if f.re == 0.0 && f.im == 0.0 { order += 1 } else { g *= f }
             }
             if let Some(p) = self.poles.get(i) {
-                g /= s - p;
+                let f = s - p;
+                if f.re == 0.0 && f.im == 0.0 { order -= 1 } else { g = crate::axis::cdiv(g, f) }
             }
         }
-        g
+        let d = if self.delay == 0.0 { Complex64::new(1.0, 0.0) } else { (-self.delay * s).exp() };
+        match order.cmp(&0) {
+            std::cmp::Ordering::Less => {
+                crate::axis::infinity_towards(g * Complex64::from_polar(1.0, d.arg()))
+            }
+            std::cmp::Ordering::Greater => Complex64::new(0.0, 0.0),
+            std::cmp::Ordering::Equal => {
+                let v = g * d;
+                if v.re.is_nan() || v.im.is_nan() {
+                    crate::axis::infinity_towards(g * Complex64::from_polar(1.0, d.arg()))
+                } else {
+                    v
+                }
+            }
+        }
     }
 
     /// |G(jω)| for ω ≥ 0 (∞ at an imaginary-axis pole, 0 at an imaginary-axis zero).
@@ -128,20 +175,38 @@ impl Zpk {
         gain_angle + ((book0 - raw0 - gain_angle) / TAU).round() * TAU
     }
 
-    /// Cancels zero–pole pairs closer than `tol·max(1, |p|)`, nearest first.
+    /// Cancels zero–pole pairs closer than `tol·max(1, |p|)`, nearest first. A complex pole
+    /// cancels only against a complex zero on the same side of the real axis, and its conjugate
+    /// against that zero's conjugate, so the result keeps real coefficients.
     pub fn minreal(&self, tol: f64) -> Self {
         let mut zeros = self.zeros.clone();
         let mut poles = Vec::new();
-        for p in &self.poles {
+        let mut skip = vec![false; self.poles.len()];
+        for (pi, p) in self.poles.iter().enumerate() {
+            if skip[pi] {
+                continue;
+            }
             let best = zeros
                 .iter()
                 .enumerate()
+                .filter(|(_, z)| (z.im == 0.0) == (p.im == 0.0) && z.im.signum() == p.im.signum())
                 .map(|(i, z)| (i, (z - p).norm()))
                 .min_by(|a, b| a.1.total_cmp(&b.1))
                 .filter(|&(_, d)| d <= tol * p.norm().max(1.0));
             match best {
                 Some((i, _)) => {
-                    zeros.remove(i);
+                    let z = zeros.remove(i);
+                    if p.im != 0.0 {
+                        // the conjugate pole cancels the conjugate zero
+                        if let Some(j) = zeros.iter().position(|x| *x == z.conj()) {
+                            zeros.remove(j);
+                        }
+                        if let Some(q) =
+                            (0..self.poles.len()).find(|&q| !skip[q] && q != pi && self.poles[q] == p.conj())
+                        {
+                            skip[q] = true;
+                        }
+                    }
                 }
                 None => poles.push(*p),
             }
@@ -154,7 +219,7 @@ impl Zpk {
     /// # Errors
     /// [`LtiError::NonFinite`] (cannot happen for a validated Zpk).
     pub fn to_tf(&self) -> Result<TransferFunction, LtiError> {
-        let num = Polynomial::from_roots(&self.zeros)?.scale(self.gain);
+        let num = Polynomial::from_roots(&self.zeros)?.scaled(self.gain);
         let den = Polynomial::from_roots(&self.poles)?;
         TransferFunction::from_polynomials(num, den)?.with_delay(self.delay)
     }
@@ -163,6 +228,10 @@ impl Zpk {
 /// arg(jω − r) = atan2(ω − Im r, −Re r), continuous in ω: for Re r > 0 the branch [0, 2π) so
 /// that the angle does not jump when ω passes Im r.
 pub(crate) fn branch_arg(r: &Complex64, w: f64) -> f64 {
+    if r.re == 0.0 && w == r.im {
+        // ω on an axis root: the limit ω → ω₀⁺ of arg(j(ω − ω₀)) (16.6.2's rule at ω = 0)
+        return std::f64::consts::FRAC_PI_2;
+    }
     let a = (w - r.im).atan2(-r.re);
     if r.re > 0.0 && a < 0.0 { a + std::f64::consts::TAU } else { a }
 }

@@ -58,13 +58,14 @@ pub fn bode(
         let mid = systems[0].1.phase_deg.iter().copied().filter(|p| p.is_finite()).fold(0.0, f64::min);
         let line = -180.0 + 360.0 * ((mid + 180.0) / 360.0).ceil().min(0.0);
         phase.hlines.push(RefLine { value: line, label: Some(format!("{line:.0}°")) });
-        let pm = m.phase_margin_deg();
-        if let Some(w) = m.gain_crossover_omega() {
-            let label = format!("PM = {}° at {} rad/s", fmt_num(pm), fmt_num(w));
+        if let Some(c) = m.phase_margin() {
+            let w = c.omega;
+            let label = format!("PM = {}° at {} rad/s", fmt_num(c.phase_margin_deg), fmt_num(w));
             mag.vlines.push(RefLine { value: w, label: None });
             phase.vlines.push(RefLine { value: w, label: Some(label) });
         }
-        let gm = m.gain_margin_db();
+        // no finite gain margin: GM = ∞ (16.8.10, 16.8.11i)
+        let gm = m.gain_margin_db().unwrap_or(f64::INFINITY);
         match m.phase_crossover_omega() {
             Some(w) if w > 0.0 => {
                 mag.vlines.push(RefLine {
