@@ -17,6 +17,8 @@ mod poly;
 mod rlocus;
 mod routh;
 mod sdof;
+#[cfg(feature = "serde")]
+mod serde_impl;
 mod ss;
 mod stability;
 mod sweep;
