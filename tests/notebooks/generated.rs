@@ -589,3 +589,894 @@ fn notebook_06_statics() {
     let g = UniformGravity::new(a.vector([0.0, 0.0, -9.81])).expect("finite");
     println!("weight of the box: {} N", Rounded(&g.force(bx.mass()).resolve(&a)));
 }
+
+/// `docs/notebooks/07-dynamics.ipynb`
+#[test]
+fn notebook_07_dynamics() {
+    // cell 1
+    // cell 2
+    use std::f64::consts::PI;
+    use vectrix::dynamics::multibody::{Joint, Link, Model};
+    use vectrix::dynamics::scene::Scene;
+    use vectrix::dynamics::{ImpactEnd, ZenoGuard, centre_of_percussion, collision_energy_loss, restitution_1d, simulate_with_impacts};
+    use vectrix::nalgebra::{Matrix3, SVector, Vector3};
+    use vectrix::ode::Adaptive;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+
+    /// `x`, with round-off below 64ε of `scale` shown as 0.
+    fn tidy(x: f64, scale: f64) -> f64 {
+        if x.abs() <= 64.0 * f64::EPSILON * scale { 0.0 } else { x }
+    }
+    let a = Frame::new();
+    // cell 3
+    let props = MassProperties::new(
+        2.0,
+        Point::at(a.vector([0.3, -0.2, 0.5])),
+        a.dyadic(&Matrix3::new(3.0, 0.1, -0.4, 0.1, 5.0, 0.2, -0.4, 0.2, 6.0)),
+    )
+    .expect("valid mass properties");
+    let body = RigidBody::new(props, a.vector([0.1, 0.2, -0.3]), a.vector([0.4, -1.1, 0.8]));
+    let wrench = Wrench { force: a.vector([1.0, 2.0, -0.5]), moment: a.vector([0.3, -0.2, 0.7]), about: Point::origin() };
+    let (a_c, alpha) = body.accelerations(&wrench).expect("positive-definite inertia");
+    println!("a_c|_A = {}", Rounded(&a_c.resolve(&a)));
+    println!("α|_A = {}", Rounded(&alpha.resolve(&a)));
+    println!("gyroscopic moment ω × Jω |_A = {}", Rounded(&body.gyroscopic_moment().resolve(&a)));
+    println!("T = {} J, p|_A = {}", Rounded(body.kinetic_energy()), Rounded(&body.momentum().resolve(&a)));
+    // cell 4
+    const G: f64 = 9.81;
+    /// A pendulum on a pin about ẑ: mass m, centre at ℓ along −ŷ of the link, inertia j0 about it.
+    fn pendulum(m: f64, l: f64, j0: f64) -> Model {
+        let link = Link::new(None, Joint::Pin { axis: Vector3::z() }, Vector3::zeros(), m, Vector3::new(0.0, -l, 0.0), Matrix3::from_diagonal(&Vector3::new(j0, j0, j0)));
+        let mut model = Model::new(&[link]).expect("a valid tree");
+        model.gravity = Vector3::new(0.0, -G, 0.0);
+        model
+    }
+    let (m, l, th, thd) = (0.8, 1.3, 0.7, 1.4);
+    let simple = pendulum(m, l, 0.0);
+    let thdd = simple.aba(&[th], &[thd], &[0.0], None).expect("finite")[0];
+    let reaction = simple.rnea(&[th], &[thd], &[thdd], None).expect("finite").wrenches[0];
+    println!("θ̈ = {} (−g sin θ/ℓ = {})", Rounded(thdd), Rounded(-G * th.sin() / l));
+    println!("rod force in the link frame = {} (tension m(ℓθ̇² + g cos θ) = {})", Rounded(&reaction.force), Rounded(m * (l * thd * thd + G * th.cos())));
+    let bar = pendulum(1.2, 0.5, 1.2 / 12.0);
+    let bar_thdd = bar.aba(&[0.01], &[0.0], &[0.0], None).expect("finite")[0];
+    println!("thin bar ℓ₀ = 1 m: small-swing period = {} s", Rounded(2.0 * PI / (-bar_thdd / 0.01f64.sin()).sqrt()));
+    // cell 5
+    let wire = {
+        let rod = Link::new(None, Joint::Pin { axis: Vector3::z() }, Vector3::zeros(), 0.0, Vector3::zeros(), Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0)));
+        let bead = Link::new(Some(0), Joint::Sleeve { axis: Vector3::x() }, Vector3::zeros(), 1.0, Vector3::zeros(), Matrix3::zeros());
+        Model::new(&[rod, bead]).expect("a valid tree")
+    };
+    let sol = Adaptive::dop853()
+        .rtol(1e-12)
+        .atol(1e-13)
+        .solve(
+            |_t: f64, y: &SVector<f64, 4>| {
+                let acc = wire.aba(&[y[0], y[1]], &[y[2], y[3]], &[0.0, 0.0], None).expect("finite");
+                SVector::<f64, 4>::new(y[2], y[3], acc[0], acc[1])
+            },
+            0.0,
+            &SVector::<f64, 4>::new(0.0, 1.0, 1.0, 0.0),
+            30.0,
+        )
+        .expect("smooth motion");
+    let y_end = sol.last();
+    let u = 1.0 / y_end[1];
+    let tail = 2f64.sqrt() * (u + u.powi(5) / 10.0 + u.powi(9) / 24.0 + 5.0 * u.powi(13) / 208.0);
+    println!("θ(30) = {}, x(30) = {}, θ∞ = θ(30) + tail = {}", Rounded(y_end[0]), Rounded(y_end[1]), Rounded(y_end[0] + tail));
+    let worst = sol.y.iter().map(|y| ((1.0 + y[1] * y[1]) * y[2] - 2.0).abs()).fold(0.0, f64::max);
+    println!("largest drift of the angular momentum (J + mx²)θ̇ = 2: {worst:.1e}");
+    show(
+        LineChart::new("Example 7.15.3: bead on a free wire", "t [s]", "θ [rad], θ̇ [rad/s]")
+            .with_series("θ", sol.t.iter().zip(&sol.y).map(|(t, y)| (*t, y[0])).collect())
+            .with_series("θ̇", sol.t.iter().zip(&sol.y).map(|(t, y)| (*t, y[2])).collect())
+            .with_series("θ∞ = K(½)", vec![(0.0, 1.8540747), (30.0, 1.8540747)])
+            .to_svg()
+            .expect("finite data"),
+    );
+    // cell 6
+    let racket_toml = r#"
+    name = "tennis_racket"
+    duration = 20.0
+    samples = 400
+    accuracy = 1e-8
+    outputs = ["omega_body:racket", "energy", "angular_momentum"]
+    checks = ["energy", "angular_momentum"]
+
+    [[bodies]]
+    name = "racket"
+    joint = { type = "free" }
+    mass = { shape = "value", mass = 1.0, principal = [1.0, 2.0, 3.0] }
+    v = [0.0, 0.0, 0.0, 0.01, 1.0, 0.01]
+    "#;
+    let racket = Scene::from_toml(racket_toml, "tennis_racket.toml").unwrap_or_else(|e| panic!("{e}"));
+    let run = racket.run(&mut |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    for d in &run.drift {
+        println!("{}: largest relative drift {:.1e}", d.invariant.name(), d.max_rel);
+    }
+    println!("{} f-evaluations", run.work.fevals);
+    let mut chart = LineChart::new("Tennis-racket flip (§7.8): ω in the body frame", "t [s]", "ω_(B/A)|_B [rad/s]");
+    for axis in ["x", "y", "z"] {
+        let w = run.column(&format!("omega_body:racket.{axis}")).expect("declared output");
+        chart = chart.with_series(format!("ω_{axis}"), run.t.iter().copied().zip(w).collect());
+    }
+    show(chart.to_svg().expect("finite data"));
+    // cell 7
+    let (u1p, u2p) = restitution_1d(2.0, 3.0, 5.0, -1.0, 0.6).expect("approaching");
+    println!("after the impact: u₁ = {}, u₂ = {}", Rounded(u1p), Rounded(u2p));
+    println!("energy lost = {}", Rounded(collision_energy_loss(2.0, 3.0, 5.0, -1.0, 0.6)));
+    println!("{}", restitution_1d(2.0, 3.0, -1.0, 5.0, 0.6).expect_err("separating"));
+    // cell 8
+    let lb = 1.8;
+    let rod = MassProperties::thin_rod_between(2.5, &Point::origin(), &Point::at(a.vector([lb, 0.0, 0.0]))).expect("valid rod");
+    for lp in [0.3, 2.0 * lb / 3.0, 1.7] {
+        let r = centre_of_percussion(&rod, &Point::at(a.vector([lp, 0.0, 0.0])), &a.j()).expect("blow off the centre");
+        println!("struck at ℓ_P = {}: centre of percussion at x = {} (formula: {})", Rounded(lp), Rounded(tidy(r.position().resolve(&a).x, lb)), Rounded(tidy(lb / 2.0 + lb * lb / (12.0 * (lb / 2.0 - lp)), lb)));
+    }
+    // cell 9
+    let (h0, e) = (1.0, 0.5);
+    let bounces = simulate_with_impacts(
+        &Adaptive::dop853().rtol(1e-12).atol(1e-12),
+        |_t: f64, y: &SVector<f64, 2>| SVector::<f64, 2>::new(y[1], -G),
+        |_t: f64, y: &SVector<f64, 2>| y[0],
+        |_t: f64, y: &SVector<f64, 2>| SVector::<f64, 2>::new(0.0, -e * y[1]),
+        0.0,
+        &SVector::<f64, 2>::new(h0, 0.0),
+        10.0,
+        ZenoGuard { min_interval: 1e-4, max_impacts: 1000 },
+    )
+    .expect("valid run");
+    let t1 = (2.0 * h0 / G).sqrt();
+    if let ImpactEnd::Zeno { t } = bounces.end {
+        println!("{} impacts; stopped at t = {} s; t∞ = {} s", bounces.impacts.len(), Rounded(t), Rounded(t1 * (1.0 + e) / (1.0 - e)));
+    }
+    let mut height = vec![];
+    let mut start = (0.0, h0, 0.0);
+    for (t_hit, y_hit) in bounces.impacts.iter().take(12) {
+        let (t0, x0, v0) = start;
+        for k in 0..=40 {
+            let t = t0 + (t_hit - t0) * f64::from(k) / 40.0;
+            height.push((t, x0 + v0 * (t - t0) - 0.5 * G * (t - t0).powi(2)));
+        }
+        start = (*t_hit, 0.0, -e * y_hit[1]);
+    }
+    show(
+        LineChart::new("§7.13: a ball bouncing with e = 0.5 (impacts located as events)", "t [s]", "height [m]")
+            .with_series("height", height)
+            .with_series("t∞", vec![(t1 * 3.0, 0.0), (t1 * 3.0, h0)])
+            .to_svg()
+            .expect("finite data"),
+    );
+}
+
+/// `docs/notebooks/08-energy.ipynb`
+#[test]
+fn notebook_08_energy() {
+    // cell 1
+    // cell 2
+    use vectrix::dynamics::scene::Scene;
+    use vectrix::dynamics::{Element, Network, kinetic_energy_about_centre_pairwise, particles_kinetic_energy, work_along_path};
+    use vectrix::nalgebra::SVector;
+    use vectrix::num_dual::Dual64;
+    use vectrix::ode::Adaptive;
+    use vectrix::prelude::*;
+    use vectrix::statics::{Point, Spring, UniformGravity};
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    let a = Frame::new();
+    // cell 3
+    let parts = [(1.0, a.vector([1.0, 0.0, 2.0])), (2.0, a.vector([-1.0, 3.0, 0.5])), (0.5, a.vector([0.0, -2.0, 1.0]))];
+    let m_b: f64 = parts.iter().map(|p| p.0).sum();
+    let v_c = parts.iter().fold(Vector::zero(), |s, (m, v)| s + *v * *m) / m_b;
+    println!("T = {}", Rounded(particles_kinetic_energy(&parts)));
+    println!("T_/c (pairwise) + ½ m |v_c|² = {} + {} = {}", Rounded(kinetic_energy_about_centre_pairwise(&parts)), Rounded(0.5 * m_b * v_c.norm_squared()), Rounded(kinetic_energy_about_centre_pairwise(&parts) + 0.5 * m_b * v_c.norm_squared()));
+    // cell 4
+    let (mass, force, v0) = (2.0, a.vector([1.0, -0.5, 0.25]), a.vector([0.3, 0.2, -0.1]));
+    let path: Vec<(Vector, Point)> = (0..=20).map(|k| f64::from(k) * 0.1).map(|t| (force, Point::at(v0 * t + force * (0.5 * t * t / mass)))).collect();
+    let v1 = v0 + force * (2.0 / mass);
+    println!("work along the path = {}, ΔT = {}", Rounded(work_along_path(&path)), Rounded(0.5 * mass * (v1.norm_squared() - v0.norm_squared())));
+    // cell 5
+    let ad = Frame::<Dual64>::identity();
+    let gravity = UniformGravity::new(ad.vector([Dual64::from(0.0), Dual64::from(0.0), Dual64::from(-9.81)])).expect("finite");
+    let grad: Vec<f64> = (0..3)
+        .map(|k| {
+            let mut r = [Dual64::from(0.3), Dual64::from(-1.0), Dual64::from(2.0)];
+            r[k].eps = 1.0;
+            gravity.potential(Dual64::from(2.5), &ad.vector(r)).eps
+        })
+        .collect();
+    println!("−∂U/∂r |_A = {} = m g for m = 2.5", Rounded(&[-grad[0], -grad[1], -grad[2]][..]));
+    // cell 6
+    let (k, d) = (3.0, 0.5);
+    let spring = Spring::new(k, d).expect("k > 0");
+    let r = a.vector([0.6, -0.8, 1.2]);
+    let n = r.norm();
+    println!("U = {}, ½k(|r|² − 2d|r| + d²) = {}", Rounded(spring.potential(&r)), Rounded(0.5 * k * (n * n - 2.0 * d * n + d * d)));
+    let spring_d = Spring::new(Dual64::from(k), Dual64::from(d)).expect("k > 0");
+    let minus_grad: Vec<f64> = (0..3)
+        .map(|i| {
+            let mut c = [Dual64::from(0.6), Dual64::from(-0.8), Dual64::from(1.2)];
+            c[i].eps = 1.0;
+            -spring_d.potential(&ad.vector(c)).eps
+        })
+        .collect();
+    println!("−∇U = {}, spring force = {}", Rounded(&minus_grad[..]), Rounded(&spring.force(&r).expect("r ≠ 0").resolve(&a)));
+    // cell 7
+    let net = Network {
+        masses: vec![1.0, 2.0, 0.5],
+        springs: vec![],
+        dashpots: vec![Element { i: 0, j: Some(1), value: 3.0 }, Element { i: 1, j: Some(2), value: 2.0 }],
+        inerters: vec![],
+    };
+    let v_start = [2.0, -1.0, 4.0];
+    let vc = (1.0 * v_start[0] + 2.0 * v_start[1] + 0.5 * v_start[2]) / 3.5;
+    let settle = Adaptive::dop853()
+        .rtol(1e-11)
+        .atol(1e-13)
+        .solve(
+            |_t: f64, y: &SVector<f64, 6>| {
+                let acc = net.accelerations(&y.as_slice()[..3], &y.as_slice()[3..], &[0.0; 3]).expect("valid network");
+                SVector::<f64, 6>::from_column_slice(&[y[3], y[4], y[5], acc[0], acc[1], acc[2]])
+            },
+            0.0,
+            &SVector::<f64, 6>::from_column_slice(&[0.0, 0.0, 0.0, v_start[0], v_start[1], v_start[2]]),
+            10.0,
+        )
+        .expect("smooth motion");
+    let kinetic: Vec<(f64, f64)> = settle.t.iter().zip(&settle.y).map(|(t, y)| (*t, 0.5 * (y[3] * y[3] + 2.0 * y[4] * y[4] + 0.5 * y[5] * y[5]))).collect();
+    println!("v_c = {}; final velocities {}; T → {} (½ m_B v_c² = {})", Rounded(vc), Rounded(&settle.last().as_slice()[3..]), Rounded(kinetic[kinetic.len() - 1].1), Rounded(0.5 * 3.5 * vc * vc));
+    let mut chart = LineChart::new("Problem 8.5.1: particles joined by dashpots", "t [s]", "velocity [m/s], T [J]");
+    for i in 0..3 {
+        chart = chart.with_series(format!("v{}", i + 1), settle.t.iter().zip(&settle.y).map(|(t, y)| (*t, y[3 + i])).collect());
+    }
+    show(chart.with_series("T", kinetic).to_svg().expect("finite data"));
+    // cell 8
+    let kepler_toml = r#"
+    name = "kepler_orbit"
+    duration = 6.283185307179586
+    samples = 400
+    accuracy = 1e-10
+    outputs = ["position:planet", "energy", "angular_momentum"]
+    checks = ["energy", "angular_momentum"]
+
+    [[bodies]]
+    name = "planet"
+    joint = { type = "free" }
+    mass = { shape = "sphere", mass = 1.0, radius = 0.01 }
+    q = [0.5, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]
+    v = [0.0, 1.7320508075688772, 0.0, 0.0, 0.0, 0.0]
+
+    [[effects]]
+    type = "central_gravity"
+    mu = 1.0
+    "#;
+    let orbit = Scene::from_toml(kepler_toml, "kepler_orbit.toml").unwrap_or_else(|e| panic!("{e}")).run(&mut |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    for drift in &orbit.drift {
+        println!("{}: initial {}, largest relative drift {:.1e}", drift.invariant.name(), Rounded(drift.initial), drift.max_rel);
+    }
+    let (xs, ys) = (orbit.column("position:planet.x").expect("declared"), orbit.column("position:planet.y").expect("declared"));
+    println!("after one period the planet is back at {}", Rounded(&[xs[xs.len() - 1], ys[ys.len() - 1]][..]));
+    let mut fig = Chart { title: "Fact 8.4.1: a Kepler orbit (μ = 1, a = 1, e = 0.5)".into(), x_label: "x".into(), y_label: "y".into(), equal_aspect: true, ..Chart::default() };
+    fig.curves.push(Curve::new("orbit over one period", xs.iter().copied().zip(ys.iter().copied()).collect(), 0));
+    fig.markers.push(Marker { at: (0.0, 0.0), shape: Shape::Plus, color: 6, label: Some("attracting centre".into()) });
+    fig.markers.push(Marker { at: (0.5, 0.0), shape: Shape::Dot, color: 1, label: Some("periapsis".into()) });
+    show(fig.to_svg().expect("finite drawing"));
+}
+
+/// `docs/notebooks/09-lagrange.ipynb`
+#[test]
+fn notebook_09_lagrange() {
+    // cell 1
+    // cell 2
+    use vectrix::dynamics::lagrange::{accelerations, energy, generalized_momentum, hamiltonian, mass_matrix};
+    use vectrix::nalgebra::DVector;
+    use vectrix::ode::GaussLegendre;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    // cell 3
+    struct Pendulum {
+        m: f64,
+        l: f64,
+        g: f64,
+        c: f64,
+    }
+    impl Lagrangian for Pendulum {
+        fn dof(&self) -> usize {
+            1
+        }
+        fn kinetic<T: Scalar>(&self, _q: &[T], qd: &[T], _t: T) -> T {
+            T::lit(0.5 * self.m * self.l * self.l) * qd[0] * qd[0]
+        }
+        fn potential<T: Scalar>(&self, q: &[T], _t: T) -> T {
+            -T::lit(self.m * self.g * self.l) * q[0].cos()
+        }
+        fn rayleigh<T: Scalar>(&self, _q: &[T], qd: &[T]) -> T {
+            T::lit(0.5 * self.c) * qd[0] * qd[0]
+        }
+    }
+    let free = Pendulum { m: 1.0, l: 1.0, g: 9.81, c: 0.0 };
+    let damped = Pendulum { m: 1.0, l: 1.0, g: 9.81, c: 0.4 };
+    let qdd = accelerations(&free, &[1.0], &[0.0], 0.0).expect("regular mass matrix");
+    println!("θ̈(θ = 1, θ̇ = 0) = {} (−g/ℓ sin θ = {})", Rounded(qdd[0]), Rounded(-9.81 * 1f64.sin()));
+    println!("M(q) = {}", Rounded(&mass_matrix(&free, &[1.0], &[0.0], 0.0).expect("finite")));
+    // cell 4
+    /// Samples (t, value) of one signal.
+    type Samples = Vec<(f64, f64)>;
+    /// θ(t) and E(t) from θ = 1, θ̇ = 0, by the 4th-order Gauss–Legendre method (symplectic).
+    fn simulate(sys: &Pendulum, t1: f64, n: usize) -> (Samples, Samples) {
+        let rhs = |t: f64, y: &DVector<f64>| {
+            let qdd = accelerations(sys, &[y[0]], &[y[1]], t).map(|a| a[0]).unwrap_or(f64::NAN);
+            DVector::from_vec(vec![y[1], qdd])
+        };
+        let (mut theta, mut e) = (Vec::new(), Vec::new());
+        GaussLegendre::Gauss4
+            .integrate(rhs, 0.0, &DVector::from_vec(vec![1.0, 0.0]), t1, n, |t, y: &DVector<f64>| {
+                theta.push((t, y[0]));
+                e.push((t, energy(sys, &[y[0]], &[y[1]], t).unwrap_or(f64::NAN)));
+            })
+            .expect("integration succeeds");
+        (theta, e)
+    }
+    let (theta_free, e_free) = simulate(&free, 10.0, 500);
+    let (theta_damped, e_damped) = simulate(&damped, 10.0, 500);
+    let drift = e_free.iter().map(|(_, e)| (e - e_free[0].1).abs()).fold(0.0, f64::max);
+    println!("undamped energy drift over 10 s (500 steps): {drift:.1e} J");
+    println!("damped energy: {} J → {} J", Rounded(e_damped[0].1), Rounded(e_damped[e_damped.len() - 1].1));
+    show(
+        LineChart::new("Pendulum from its Lagrangian (§9.8–9.9)", "t [s]", "θ [rad], E [J]")
+            .with_series("θ, c = 0", theta_free)
+            .with_series("θ, c = 0.4", theta_damped)
+            .with_series("E, c = 0", e_free)
+            .with_series("E, c = 0.4", e_damped)
+            .to_svg()
+            .expect("finite data"),
+    );
+    // cell 5
+    struct CartPendulum {
+        m1: f64,
+        m2: f64,
+        l: f64,
+        k1: f64,
+        k2: f64,
+    }
+    impl Lagrangian for CartPendulum {
+        fn dof(&self) -> usize {
+            2
+        }
+        fn kinetic<T: Scalar>(&self, q: &[T], qd: &[T], _t: T) -> T {
+            let (m1, m2, l) = (T::lit(self.m1), T::lit(self.m2), T::lit(self.l));
+            T::lit(0.5) * (m1 + m2) * qd[0] * qd[0] + m2 * l * qd[0] * qd[1] * q[1].cos() + T::lit(0.5) * m2 * l * l * qd[1] * qd[1]
+        }
+        fn potential<T: Scalar>(&self, q: &[T], _t: T) -> T {
+            T::lit(0.5 * self.k1) * q[0] * q[0] + T::lit(0.5 * self.k2) * q[1] * q[1]
+        }
+    }
+    let cart = CartPendulum { m1: 2.0, m2: 1.0, l: 0.5, k1: 10.0, k2: 3.0 };
+    let q = [0.1, 0.7];
+    let qd = [0.3, -0.4];
+    println!("q̈ = {:.10?}", accelerations(&cart, &q, &qd, 0.0).expect("regular").as_slice());
+    println!("M(q) =\n{}", Rounded(&mass_matrix(&cart, &q, &qd, 0.0).expect("finite")));
+    let p = generalized_momentum(&cart, &q, &qd, 0.0).expect("finite");
+    println!("generalized momentum p = ∂T/∂q̇ = {}", Rounded(p.as_slice()));
+    println!("Hamiltonian H(q, p) = {}, energy T + U = {}", Rounded(hamiltonian(&cart, &q, p.as_slice(), 0.0).expect("regular")), Rounded(energy(&cart, &q, &qd, 0.0).expect("finite")));
+    // cell 6
+    struct DoublePendulum;
+    impl Lagrangian for DoublePendulum {
+        fn dof(&self) -> usize {
+            2
+        }
+        fn kinetic<T: Scalar>(&self, q: &[T], qd: &[T], _t: T) -> T {
+            let a = Frame::<T>::identity();
+            // velocities of the two masses: v₁ = θ̇₁ e′(θ₁), v₂ = v₁ + θ̇₂ e′(θ₂), e′(φ) = (cos φ, sin φ)
+            let v1 = a.vector([q[0].cos(), q[0].sin(), T::zero()]) * qd[0];
+            let v2 = v1 + a.vector([q[1].cos(), q[1].sin(), T::zero()]) * qd[1];
+            T::lit(0.5) * (v1.norm_squared() + v2.norm_squared())
+        }
+        fn potential<T: Scalar>(&self, q: &[T], _t: T) -> T {
+            // heights −cos θ₁ and −cos θ₁ − cos θ₂, g = 9.81
+            -T::lit(9.81) * (T::lit(2.0) * q[0].cos() + q[1].cos())
+        }
+    }
+    let mut tip = Vec::new();
+    let mut e_double = Vec::new();
+    GaussLegendre::Gauss4
+        .integrate(
+            |t: f64, y: &DVector<f64>| {
+                let acc = accelerations(&DoublePendulum, &[y[0], y[1]], &[y[2], y[3]], t).expect("regular");
+                DVector::from_vec(vec![y[2], y[3], acc[0], acc[1]])
+            },
+            0.0,
+            &DVector::from_vec(vec![2.0, 2.5, 0.0, 0.0]),
+            20.0,
+            8000,
+            |t, y: &DVector<f64>| {
+                tip.push((y[0].sin() + y[1].sin(), -y[0].cos() - y[1].cos()));
+                e_double.push((t, energy(&DoublePendulum, &[y[0], y[1]], &[y[2], y[3]], t).unwrap_or(f64::NAN)));
+            },
+        )
+        .expect("integration succeeds");
+    let e0 = e_double[0].1;
+    println!("relative energy drift over 20 s: {:.1e}", e_double.iter().map(|(_, e)| ((e - e0) / e0).abs()).fold(0.0, f64::max));
+    let mut fig = Chart { title: "Double pendulum released from (2, 2.5): path of the lower mass over 20 s".into(), x_label: "x [m]".into(), y_label: "y [m]".into(), equal_aspect: true, ..Chart::default() };
+    fig.curves.push(Curve::new("lower mass", tip, 0));
+    fig.markers.push(Marker { at: (0.0, 0.0), shape: Shape::Plus, color: 6, label: Some("pivot".into()) });
+    show(fig.to_svg().expect("finite drawing"));
+}
+
+/// `docs/notebooks/10-aircraft-kinematics.ipynb`
+#[test]
+fn notebook_10_aircraft_kinematics() {
+    // cell 1
+    // cell 2
+    use vectrix::flight::*;
+    use vectrix::nalgebra::Vector3;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    fn deg(x: f64) -> f64 {
+        x.to_radians()
+    }
+    /// Components in F_E seen from behind and below the aircraft, so that k̂_E points down the page:
+    /// the isometric view of the frame turned by π about î_E (a proper rotation, handedness kept).
+    fn view(p: Vector3<f64>) -> (f64, f64) {
+        let c = 30f64.to_radians().cos();
+        let (x, y, z) = (p.x, -p.y, -p.z);
+        ((y - x) * c, z - 0.5 * (x + y))
+    }
+    // cell 3
+    let aero: AeroAngles = AeroAngles::from_body_velocity([72.0, -6.3, -43.0]);
+    println!("V = {} m/s, α = {}°, β = {}°", Rounded(aero.airspeed), Rounded(aero.alpha.to_degrees()), Rounded(aero.beta.to_degrees()));
+    let v_ac = Vector3::new(72.0, -6.3, -43.0);
+    println!("V|_S = {}", Rounded(&(o_s_ac(aero.alpha) * v_ac)));
+    println!("V|_W = {}", Rounded(&(o_w_ac(aero.alpha, aero.beta) * v_ac)));
+    // (10.6.18): with no velocity at all the angles are defined (0), never NaN.
+    let still: AeroAngles = AeroAngles::from_body_velocity([0.0, 0.0, 0.0]);
+    println!("at rest: α = {}, β = {}", still.alpha, still.beta);
+    // cell 4
+    let att = Euler321::new(deg(22.0), deg(5.0), deg(-24.0));
+    let g_ac = att.o_ac_e() * Vector3::new(0.0, 0.0, 9.8);
+    println!("𝓞_(AC/E) =\n{}", Rounded(&att.o_ac_e()));
+    println!("g|_AC = {}", Rounded(&g_ac));
+    println!("g|_S = {}", Rounded(&(o_s_ac(deg(-17.0)) * g_ac)));
+    // cell 5
+    let before = AeroAngles { airspeed: 85.0, alpha: deg(-13.0), beta: deg(24.0) };
+    let v0 = Vector3::from(before.body_velocity());
+    let v1 = o1(deg(23.0)) * v0;
+    let after: AeroAngles = AeroAngles::from_body_velocity([v1.x, v1.y, v1.z]);
+    println!("V|_AC before {} → after {}", Rounded(&v0), Rounded(&v1));
+    println!("α = {}°, β = {}°", Rounded(after.alpha.to_degrees()), Rounded(after.beta.to_degrees()));
+    // cell 6
+    let e7 = Euler321::new(deg(14.0), deg(-29.0), deg(-52.0));
+    let pqr = body_rates(&e7, [deg(16.0), deg(-7.0), deg(19.0)]);
+    println!("(P, Q, R) = {} °/s", Rounded(&pqr.map(f64::to_degrees)[..]));
+    let back = euler_rates(&e7, pqr).expect("cos Θ ≠ 0");
+    println!("back to Euler rates: {} °/s", Rounded(&back.map(f64::to_degrees)[..]));
+    let vertical = Euler321::new(0.3, std::f64::consts::FRAC_PI_2, 0.2);
+    println!("at Θ = 90°: {}", euler_rates(&vertical, [0.1, 0.2, 0.3]).expect_err("gimbal lock"));
+    let q = quaternion_from_euler321(&vertical);
+    println!("quaternion rates there: {}", Rounded(&quaternion_rates(q, [0.1, 0.2, 0.3])[..]));
+    // cell 7
+    let cruise = Euler321::new(deg(30.0), deg(10.0), 0.0);
+    let path = FlightPathAngles::from_attitude(&cruise, deg(4.0), 0.0);
+    println!("η = {}°, γ = {}°, μ = {}°", Rounded(path.eta.to_degrees()), Rounded(path.gamma.to_degrees()), Rounded(path.mu.to_degrees()));
+    let banked = FlightPathAngles::from_attitude(&Euler321::new(deg(30.0), deg(10.0), deg(35.0)), deg(4.0), deg(2.0));
+    println!("banked 35° with β = 2°: η = {}°, γ = {}°, μ = {}°", Rounded(banked.eta.to_degrees()), Rounded(banked.gamma.to_degrees()), Rounded(banked.mu.to_degrees()));
+    // cell 8
+    let attitude = Euler321::new(deg(30.0), deg(15.0), deg(25.0));
+    let o_e_ac = attitude.o_ac_e().transpose();
+    let (alpha, beta) = (deg(10.0), deg(8.0));
+    let v_body = Vector3::from(AeroAngles { airspeed: 1.0, alpha, beta }.body_velocity());
+    let mut fig = Chart { title: "§10.3–10.6: earth frame, aircraft frame and the velocity".into(), x_label: "view from behind and below: k̂_E points down".into(), equal_aspect: true, ..Chart::default() };
+    let styles = [Stroke::Solid, Stroke::Dashed, Stroke::Dotted];
+    for (k, (axis, name)) in [(Vector3::x(), "î"), (Vector3::y(), "ĵ"), (Vector3::z(), "k̂")].into_iter().enumerate() {
+        fig.curves.push(Curve { name: (k == 0).then(|| "F_E (î solid, ĵ dashed, k̂ dotted)".to_string()), points: vec![view(Vector3::zeros()), view(axis * 1.2)], color: 6, stroke: styles[k], markers: false });
+        fig.markers.push(Marker { at: view(axis * 1.2), shape: Shape::Dot, color: 6, label: Some(format!("{name}_E")) });
+        let body_axis = o_e_ac * axis;
+        fig.curves.push(Curve { name: (k == 0).then(|| "F_AC".to_string()), points: vec![view(Vector3::zeros()), view(body_axis)], color: 0, stroke: styles[k], markers: false });
+        fig.markers.push(Marker { at: view(body_axis), shape: Shape::Dot, color: 0, label: Some(format!("{name}_AC")) });
+    }
+    let v_e = o_e_ac * v_body * 1.4;
+    fig.curves.push(Curve { name: Some("velocity, along î_W (α = 10°, β = 8°)".into()), points: vec![view(Vector3::zeros()), view(v_e)], color: 1, stroke: Stroke::Solid, markers: false });
+    fig.arrows.push(Arrow { from: view(v_e * 0.9), to: view(v_e), color: 1 });
+    show(fig.to_svg().expect("finite drawing"));
+}
+
+/// `docs/notebooks/11-aircraft-dynamics.ipynb`
+#[test]
+fn notebook_11_aircraft_dynamics() {
+    // cell 1
+    // cell 2
+    use vectrix::flight::*;
+    use vectrix::nalgebra::SVector;
+    use vectrix::ode::Adaptive;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    // cell 3
+    let frame = Airframe::new(5000.0, 9000.0, 25000.0, 30000.0, 1200.0).expect("valid mass properties");
+    println!("mass = {}, inertia matrix =\n{}", Rounded(frame.mass()), Rounded(&frame.inertia_matrix()));
+    let glide = AircraftState { position: [0.0; 3], velocity: [200.0, 0.0, 10.0], attitude: Euler321::new(0.3, 0.2, -0.1), omega: [0.0; 3] };
+    let falling = state_derivative(&frame, 32.174, &glide, &ForcesMoments::default()).expect("finite");
+    let g_ac = glide.attitude.o_ac_e() * vectrix::nalgebra::Vector3::new(0.0, 0.0, 32.174);
+    println!("(U̇, V̇, Ẇ) = {}, 𝓞_(AC/E) g|_E = {}", Rounded(&falling.velocity[..]), Rounded(&g_ac));
+    // An impossible airframe is refused, not simulated: J_xx > J_yy + J_zz.
+    println!("{}", Airframe::new(5000.0, 90000.0, 25000.0, 30000.0, 0.0).expect_err("triangle inequality"));
+    // cell 4
+    let jet = business_jet();
+    let level = trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.0 }, TrimLimits::default()).expect("the jet trims");
+    let at_trim = jet.dynamics(&level.state, &level.controls).expect("finite").to_array();
+    println!("at trim: ẋ = {}", Rounded(&at_trim[..]));
+    println!("(the position rate is the airspeed {} ft/s; everything else is zero)", Rounded(BUSINESS_JET_U0));
+    let mut pulled = level.controls;
+    pulled.elevator -= 0.01;
+    let flight = Adaptive::dop853()
+        .rtol(1e-9)
+        .atol(1e-9)
+        .solve(
+            |_t: f64, y: &SVector<f64, 12>| {
+                let x = AircraftState::from_array((*y).into());
+                SVector::<f64, 12>::from(jet.dynamics(&x, &pulled).expect("airspeed > 0").to_array())
+            },
+            0.0,
+            &SVector::<f64, 12>::from(level.state.to_array()),
+            120.0,
+        )
+        .expect("a smooth flight");
+    let speed: Vec<(f64, f64)> = flight.t.iter().zip(&flight.y).map(|(t, y)| (*t, AircraftState::from_array((*y).into()).aero_angles().airspeed)).collect();
+    let path: Vec<(f64, f64)> = flight.y.iter().map(|y| (y[0] / 1000.0, -y[2])).collect();
+    let top = path.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+    println!("highest point {} ft above the start; airspeed between {} and {} ft/s", Rounded(top), Rounded(speed.iter().map(|p| p.1).fold(f64::INFINITY, f64::min)), Rounded(speed.iter().map(|p| p.1).fold(0.0, f64::max)));
+    let mut fig = Chart { title: "Business jet after a held elevator step: flight path (phugoid)".into(), x_label: "range x [1000 ft]".into(), y_label: "height −z [ft]".into(), ..Chart::default() };
+    fig.curves.push(Curve::new("nonlinear 12-state model", path, 0));
+    show(fig.to_svg().expect("finite drawing"));
+    show(LineChart::new("Airspeed after the elevator step", "t [s]", "V [ft/s]").with_series("V", speed).to_svg().expect("finite"));
+}
+
+/// `docs/notebooks/12-steady-flight.ipynb`
+#[test]
+fn notebook_12_steady_flight() {
+    // cell 1
+    // cell 2
+    use std::f64::consts::PI;
+    use vectrix::flight::*;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    let jet = business_jet();
+    // cell 3
+    let level = trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.0 }, TrimLimits::default()).expect("the jet trims");
+    let qs = jet.dynamic_pressure(BUSINESS_JET_U0) * jet.geometry.area;
+    println!("α₀ = {}, δe₀ = {}, thrust = {} lb (p_d S C_D0 = {}), residual {:.1e}", Rounded(level.state.aero_angles().alpha), Rounded(level.controls.elevator), Rounded(level.controls.thrust), Rounded(qs * 0.03), level.residual);
+    // cell 4
+    for gamma in [-0.03, 0.0, 0.04, 0.08] {
+        let t = trim(&jet, TrimSpec::Straight { airspeed: 650.0, gamma }, TrimLimits::default()).expect("trims");
+        let a = t.state.aero_angles();
+        println!("γ = {gamma:5}: α = {}°, Θ = {}°, δe = {}°, thrust = {} lb", Rounded(a.alpha.to_degrees()), Rounded(t.state.attitude.theta.to_degrees()), Rounded(t.controls.elevator.to_degrees()), Rounded(t.controls.thrust));
+    }
+    let turn = trim(&jet, TrimSpec::LevelTurn { airspeed: BUSINESS_JET_U0, turn_rate: 0.02 }, TrimLimits::default()).expect("trims");
+    println!("level turn at 0.02 rad/s: bank Φ = {}° (tan⁻¹(VΨ̇/g) = {}°), β = {}", Rounded(turn.state.attitude.phi.to_degrees()), Rounded((BUSINESS_JET_U0 * 0.02 / jet.g).atan().to_degrees()), Rounded(turn.state.aero_angles().beta));
+    // cell 5
+    println!("{}", trim(&jet, TrimSpec::Straight { airspeed: 150.0, gamma: 0.0 }, TrimLimits::default()).expect_err("too slow"));
+    let weak = TrimLimits { thrust: 1000.0, ..TrimLimits::default() };
+    println!("{}", trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.3 }, weak).expect_err("too steep"));
+    // cell 6
+    let (mut alpha_deg, mut elevator_deg, mut thrust_klb) = (vec![], vec![], vec![]);
+    for k in 0..=30 {
+        let v = 350.0 + 15.0 * f64::from(k);
+        if let Ok(t) = trim(&jet, TrimSpec::Straight { airspeed: v, gamma: 0.0 }, TrimLimits::default()) {
+            alpha_deg.push((v, t.state.aero_angles().alpha.to_degrees()));
+            elevator_deg.push((v, t.controls.elevator.to_degrees()));
+            thrust_klb.push((v, t.controls.thrust / 1000.0));
+        }
+    }
+    show(
+        LineChart::new("Business jet, level trim across airspeed (§12.1–12.3)", "V [ft/s]", "α, δe [deg]; thrust [1000 lb]")
+            .with_series("α", alpha_deg)
+            .with_series("δe", elevator_deg)
+            .with_series("thrust", thrust_klb)
+            .to_svg()
+            .expect("finite data"),
+    );
+    // cell 7
+    let lin = linearize(&jet, &level).expect("finite derivatives");
+    println!("largest coupling entry between the blocks: {:.1e}", lin.coupling());
+    let lon = lin.longitudinal().expect("decoupled");
+    let table = business_jet_longitudinal().state_space().expect("valid derivatives");
+    println!("longitudinal A from the nonlinear model =\n{}", Rounded(lon.a()));
+    println!("max |A − A(Table 14.1)| = {:.1e}", (lon.a() - table.a()).amax());
+    // cell 8
+    let (period, radius) = (83.0, 4100.0);
+    let ac = Frame::new();
+    let v = ac.i() * (2.0 * PI * radius / period);
+    let r = ac.k() * (-radius);
+    let omega = r.cross(&v) / r.norm_squared();
+    println!("V = {} ft/s, ω|_AC = {} rad/s", Rounded(v.norm()), Rounded(&omega.resolve(&ac)));
+    let mu = 9.8 * 6.3e6 * 6.3e6;
+    let w_moon = 2.0 * PI / (28.0 * 86400.0);
+    println!("μ_E = {} m³/s², distance to the Moon = {} m", Rounded(mu), Rounded((mu / (w_moon * w_moon)).cbrt()));
+}
+
+/// `docs/notebooks/13-stability-derivatives.ipynb`
+#[test]
+fn notebook_13_stability_derivatives() {
+    // cell 1
+    // cell 2
+    use vectrix::flight::*;
+    use vectrix::lti::Complex64;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    let jet = business_jet();
+    // cell 3
+    let geo = jet.geometry;
+    println!("S = {} ft², b = {} ft, c̄ = {} ft, AR = b²/S = {}", Rounded(geo.area), Rounded(geo.span), Rounded(geo.chord), Rounded(geo.aspect_ratio()));
+    println!("K = 1/(π e AR) for e = 0.8: {}", Rounded(induced_drag_factor(0.8, geo.aspect_ratio())));
+    let c = jet.coefficients;
+    println!("C_L0 = {}, C_Lα = {}, C_Lδe = {}", Rounded(c.cl0), Rounded(c.cl_alpha), Rounded(c.cl_de));
+    println!("C_mα = {}, C_mq = {}, C_mα̇ = {}, C_mδe = {}", Rounded(c.cm_alpha), Rounded(c.cm_q), Rounded(c.cm_alpha_dot), Rounded(c.cm_de));
+    println!("C_nβ = {}, C_lβ = {}, C_lp = {}, C_nr = {}", Rounded(c.cn_beta), Rounded(c.croll_beta), Rounded(c.croll_p), Rounded(c.cn_r));
+    println!("dynamic pressure at U₀: p_d = ½ρU₀² = {} lb/ft²", Rounded(jet.dynamic_pressure(BUSINESS_JET_U0)));
+    // cell 4
+    let sm = static_margin(c.cm_alpha, c.cl_alpha);
+    println!("static margin of the jet = {} (positive: statically stable)", Rounded(sm));
+    println!("C_mα with the centre of mass 5% of c̄ behind the aerodynamic centre: {}", Rounded(cm_alpha_from_static_margin(0.05, 0.0, 1.0, c.cl_alpha)));
+    // cell 5
+    let level = trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.0 }, TrimLimits::default()).expect("the jet trims");
+    let lon = LongitudinalDerivatives::from_aircraft(&jet, &level).expect("a trimmed condition");
+    let book = business_jet_longitudinal();
+    for (name, got, want) in [("X_u", lon.x_u, book.x_u), ("Z_α", lon.z_alpha, book.z_alpha), ("M_α", lon.m_alpha, book.m_alpha), ("M_q", lon.m_q, book.m_q), ("M_δe", lon.m_de, book.m_de)] {
+        println!("{name:5} from the coefficients {:>12}   Table 14.1 {:>12}", Rounded(got).to_string(), Rounded(want).to_string());
+    }
+    let lat = LateralDerivatives::from_aircraft(&jet, &level).expect("a trimmed condition");
+    println!("N_β = {}, L_p = {}, N_r = {}", Rounded(lat.n_beta), Rounded(lat.l_p), Rounded(lat.n_r));
+    // cell 6
+    let margins = [0.40, 0.30, 0.20, 0.12, 0.06, 0.02, -0.02, -0.05];
+    let mut chart = Chart { title: "Longitudinal eigenvalues as the static margin shrinks (13.5.30)".into(), x_label: "Re λ [1/s]".into(), y_label: "Im λ [rad/s]".into(), ..Chart::default() };
+    for (k, sm) in margins.iter().enumerate() {
+        let mut moved = business_jet();
+        moved.coefficients.cm_alpha = -sm * moved.coefficients.cl_alpha;
+        let Ok(t) = trim(&moved, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.0 }, TrimLimits::default()) else {
+            println!("static margin {sm}: no level trim");
+            continue;
+        };
+        let poles: Vec<Complex64> = LongitudinalDerivatives::from_aircraft(&moved, &t)
+            .and_then(|d| d.state_space())
+            .map(|s| s.poles().expect("eigenvalues"))
+            .expect("a linear model");
+        println!("static margin {:>5}: λ = {}", sm, poles.iter().map(|p| format!("{p:.3}")).collect::<Vec<_>>().join(", "));
+        for p in poles {
+            chart.markers.push(Marker { at: (p.re, p.im), shape: Shape::Cross, color: k, label: None });
+        }
+        chart.curves.push(Curve { name: Some(format!("static margin {sm}")), points: vec![], color: k, stroke: Stroke::Solid, markers: false });
+    }
+    chart.vlines.push(RefLine { value: 0.0, label: Some("stability boundary".into()) });
+    show(chart.to_svg().expect("finite drawing"));
+}
+
+/// `docs/notebooks/14-flight-modes.ipynb`
+#[test]
+fn notebook_14_flight_modes() {
+    // cell 1
+    // cell 2
+    use std::f64::consts::PI;
+    use vectrix::flight::scene::FlightScene;
+    use vectrix::flight::*;
+    use vectrix::lti::{Complex64, logspace};
+    use vectrix::plot::control;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    // cell 3
+    let long = business_jet_longitudinal().state_space().expect("valid derivatives");
+    let lat = business_jet_lateral().state_space().expect("valid derivatives");
+    let lm = longitudinal_modes(long.a()).expect("two oscillatory pairs");
+    let sm = lateral_modes(lat.a()).expect("one pair, two real roots");
+    for (name, m) in [("short period", lm.short_period), ("phugoid", lm.phugoid), ("Dutch roll", sm.dutch_roll)] {
+        println!("{name:12}: λ = {:.4}, ω_n = {} rad/s, ζ = {}, period {} s, time to half {} s", m.eigenvalue(), Rounded(m.natural_frequency()), Rounded(m.damping_ratio()), Rounded(m.period().expect("oscillatory")), Rounded(m.time_to_half().expect("stable")));
+    }
+    println!("roll: λ = {}, time constant {} s; spiral: λ = {}, time to half {} s", Rounded(sm.roll.eigenvalue().re), Rounded(sm.roll.time_constant().expect("real")), Rounded(sm.spiral.eigenvalue().re), Rounded(sm.spiral.time_to_half().expect("stable")));
+    println!("characteristic polynomial of the longitudinal model: {}", Rounded(characteristic_polynomial(&long).expect("roots").coeffs()));
+    // cell 4
+    let theta = long.to_tf(3, 0).expect("SISO channel");
+    let poles = theta.poles().expect("roots");
+    let zeros = theta.zeros().expect("roots");
+    show(control::pole_zero_map("Business jet θ/δe (§14.2)", &poles, &zeros).expect("nonempty").to_svg().expect("finite"));
+    let w = logspace(-3.0, 2.0, 300).expect("valid range");
+    show(control::bode("θ/δe of the business jet", &[("θ/δe", &theta.bode(&w).expect("finite"))], None).expect("nonempty").to_svg().expect("finite"));
+    // cell 5
+    let a747 = boeing_747_longitudinal_a();
+    let m747 = longitudinal_modes(&a747).expect("two oscillatory pairs");
+    for (name, m) in [("phugoid", m747.phugoid), ("short period", m747.short_period)] {
+        println!("747 {name}: λ = {:.4}, ω_n = {}, ζ = {}, period {} s, time to half {} s", m.eigenvalue(), Rounded(m.natural_frequency()), Rounded(m.damping_ratio()), Rounded(m.period().expect("oscillatory")), Rounded(m.time_to_half().expect("stable")));
+    }
+    let lam = m747.phugoid.eigenvalue();
+    let v = eigenvector(&a747, lam, 0).expect("u component nonzero");
+    println!("phugoid eigenvector [u, δα, q, θ]: |v| = {}, ∠v = {}°", Rounded(&v.iter().map(|z| z.norm()).collect::<Vec<_>>()[..]), Rounded(&v.iter().map(|z| z.arg().to_degrees()).collect::<Vec<_>>()[..]));
+    let scale = Complex64::new(0.5f64.to_radians(), 0.0) / v[3];
+    let scaled: Vec<Complex64> = v.iter().map(|z| scale * z).collect();
+    let period = 2.0 * PI / lam.im;
+    let samples: Vec<(f64, Vec<f64>)> = (0..=300).map(|k| 3.0 * period * f64::from(k) / 300.0).map(|t| (t, eigenflight(lam, &scaled, t))).collect();
+    show(
+        LineChart::new("747 phugoid eigenflight (14.6.7), θ(0) = 0.5°", "t [s]", "u [ft/s]; θ, δα [deg × 10]")
+            .with_series("u", samples.iter().map(|(t, x)| (*t, x[0])).collect())
+            .with_series("θ × 10", samples.iter().map(|(t, x)| (*t, 10.0 * x[3].to_degrees())).collect())
+            .with_series("δα × 10", samples.iter().map(|(t, x)| (*t, 10.0 * x[1].to_degrees())).collect())
+            .to_svg()
+            .expect("finite data"),
+    );
+    // cell 6
+    let text = r#"
+    name = "doublet"
+    duration = 10.0
+    samples = 201
+    outputs = ["alpha", "q"]
+    [aircraft]
+    model = "business_jet"
+    [trim]
+    airspeed = 675.124
+    [[inputs]]
+    control = "elevator"
+    shape = "doublet"
+    start = 1.0
+    width = 1.0
+    amplitude = 0.01
+    "#;
+    let scene = FlightScene::from_toml(text, "doublet.toml").expect("valid scene");
+    let run = scene.run().expect("finite flight");
+    for m in &run.modes {
+        println!("{:<13} λ = {:+.4} ± {:.4}j", m.name, m.re, m.im);
+    }
+    println!("α: excursion {:.2e} rad, linear model off by ≤ {:.1e}", run.max_excursion(0), run.max_linear_error(0).expect("defined"));
+    show(run.response_svg(1).expect("drawable"));
+}
+
+/// `docs/notebooks/15-linear-systems.ipynb`
+#[test]
+fn notebook_15_linear_systems() {
+    // cell 1
+    // cell 2
+    use vectrix::lti::*;
+    use vectrix::nalgebra::dmatrix;
+    use vectrix::plot::control;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    fn tf(n: &[f64], d: &[f64]) -> TransferFunction {
+        TransferFunction::new(n, d).expect("nonzero denominator")
+    }
+    fn poly(c: &[f64]) -> Polynomial {
+        Polynomial::new(c).expect("finite coefficients")
+    }
+    // cell 3
+    let rot_gen = dmatrix![0.0, -1.0; 1.0, 0.0];
+    println!("eigenvalues: {}", linalg::eigenvalues(&rot_gen).expect("converges").iter().map(|z| format!("{z:.4}")).collect::<Vec<_>>().join(", "));
+    println!("e^(A·π/3) =\n{}", Rounded(&expm(&(&rot_gen * (std::f64::consts::PI / 3.0))).expect("finite")));
+    let lat747 = dmatrix![-0.0558, -0.9968, 0.0802, 0.0415; 0.598, -0.115, -0.0318, 0.0; -3.05, 0.388, -0.4650, 0.0; 0.0, 0.0805, 1.0, 0.0];
+    for ev in linalg::eigenvalues(&lat747).expect("converges") {
+        let m = Mode::of(ev);
+        println!("λ = {:.4}: ω_n = {}, ζ = {}", ev, Rounded(m.natural_frequency), Rounded(m.damping_ratio.expect("stable mode")));
+    }
+    println!("stability: {:?}", stability_of_matrix(&lat747, AXIS_RTOL).expect("finite"));
+    // cell 4
+    let osc = Sdof::new(1.0, 2.0 * 0.2 * 3.0, 9.0).expect("m > 0");
+    println!("ω_n = {}, ζ = {}", Rounded(osc.natural_frequency()), Rounded(osc.damping_ratio().expect("k > 0")));
+    for m in modes(osc.to_state_space(SdofOutput::Position).expect("valid").a()).expect("eigenvalues") {
+        println!("mode: ω_n = {}, ω_d = {}, time to half = {} s", Rounded(m.natural_frequency), Rounded(m.damped_frequency), Rounded(m.time_to_half.expect("decaying")));
+    }
+    // cell 5
+    let g = tf(&[1.0, 6.0, 8.0], &[1.0, 4.0, 3.0, 0.0]);
+    for term in g.partial_fractions(CLUSTER_RTOL).expect("proper").terms {
+        println!("pole {:+.4}: residue {:+.6}", term.pole, term.residue);
+    }
+    let y = g.inverse_laplace(CLUSTER_RTOL).expect("proper");
+    for t in [0.0, 0.4, 2.0] {
+        println!("g({t}) = {} (closed form {})", Rounded(y.eval(t)), Rounded(8.0 / 3.0 - 1.5 * f64::exp(-t) - f64::exp(-3.0 * t) / 6.0));
+    }
+    // cell 6
+    for (name, g) in [("1/s", tf(&[1.0], &[1.0, 0.0])), ("−1/s²", tf(&[-1.0], &[1.0, 0.0, 0.0])), ("1/(s − 1)", tf(&[1.0], &[1.0, -1.0])), ("1/(s² + 1)", tf(&[1.0], &[1.0, 0.0, 1.0]))] {
+        println!("{name:12} final value: {:?}", final_value(&g, AXIS_RTOL).expect("computable"));
+    }
+    let nmp = tf(&[4.0, -3.0], &[1.0, 0.8, 4.0]);
+    let step_y = nmp.series(&tf(&[1.0], &[1.0, 0.0]));
+    println!("y(0⁺), ẏ(0⁺) = {:?}; y∞ = {:?}", step_y.initial_values(2).expect("proper"), step_y.final_value(AXIS_RTOL).expect("computable"));
+    let t = time_grid(8.0, 801).expect("valid grid");
+    let r = nmp.step(&t).expect("finite");
+    show(control::response("Problem 15.20.32: step response of (4s − 3)/(s² + 0.8s + 4)", &r, 0, Some(-0.75)).expect("nonempty").to_svg().expect("finite"));
+    // cell 7
+    for (name, num, den) in [
+        ("15.20.43", poly(&[1.0]), poly(&[1.0, 2.0, 1.0]).mul(&poly(&[1.0, 2.0, 0.0]))),
+        ("15.20.48", poly(&[1.0, 3.0, 2.0]), poly(&[1.0, -6.0, 11.0, -6.0])),
+    ] {
+        for (lo, hi) in stable_gain_intervals(&num, &den).expect("valid") {
+            println!("{name}: closed loop stable for {} < k < {}", Rounded(lo), Rounded(hi));
+        }
+    }
+    let arr = routh(&poly(&[1.0, 4.0, 5.0, 2.0, 3.0])).expect("nonzero polynomial");
+    println!("s⁴ + 4s³ + 5s² + 2s + 3: {} roots in the right half plane, {} on the imaginary axis (Routh)", arr.rhp, arr.imaginary);
+    // cell 8
+    let loop_tf = tf(&[1.0, 2.0], &[1.0, 21.0, 20.0, 0.0]);
+    let rl = root_locus(&loop_tf, 300.0, 0.02).expect("proper loop");
+    for (k, s) in rl.zeta_crossings(&loop_tf, std::f64::consts::FRAC_1_SQRT_2) {
+        println!("ζ = 0.707 reached at k = {} with closed-loop pole {:.4}", Rounded(k), s);
+    }
+    show(control::root_locus("Problem 16.8.11: root locus of k(s + 2)/(s(s + 1)(s + 20))", &rl, &[std::f64::consts::FRAC_1_SQRT_2]).expect("branches").to_svg().expect("finite"));
+}
+
+/// `docs/notebooks/16-frequency-response.ipynb`
+#[test]
+fn notebook_16_frequency_response() {
+    // cell 1
+    // cell 2
+    use std::f64::consts::PI;
+    use vectrix::lti::*;
+    use vectrix::plot::control;
+    use vectrix::prelude::*;
+
+    fn show(svg: String) {
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    }
+    fn tf(n: &[f64], d: &[f64]) -> TransferFunction {
+        TransferFunction::new(n, d).expect("nonzero denominator")
+    }
+    // cell 3
+    let sensor = tf(&[9.2], &[0.031, 1.0]);
+    println!("DC: 4.6 V reads {}", Rounded(sensor.dc_gain().expect("no pole at 0") * 4.6));
+    let r60 = sensor.bode(&[120.0 * PI]).expect("finite");
+    let gain = 10f64.powf(r60.magnitude_db[0] / 20.0);
+    println!("at 60 Hz: |G| = {}, ripple out {} V, phase {}°", Rounded(gain), Rounded(gain * 3.3e-3), Rounded(r60.phase_deg[0]));
+    let lead = tf(&[10.0 / 3.0, 20.0], &[1.0, 2.0]);
+    let r4 = lead.bode(&[4.0]).expect("finite");
+    println!("lead at ω = 4: {} dB, {}°", Rounded(r4.magnitude_db[0]), Rounded(r4.phase_deg[0]));
+    // cell 4
+    let w = logspace(-1.0, 1.0, 400).expect("valid range");
+    let zetas = [0.1, 0.3, 0.5, 0.7, 1.0];
+    let family: Vec<(String, FrequencyResponse)> = zetas.iter().map(|z| (format!("ζ = {z}"), tf(&[1.0], &[1.0, 2.0 * z, 1.0]).bode(&w).expect("finite"))).collect();
+    for (name, r) in &family {
+        let peak = r.magnitude_db.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        println!("{name}: peak {} dB (|G| = {})", Rounded(peak), Rounded(10f64.powf(peak / 20.0)));
+    }
+    let named: Vec<(&str, &FrequencyResponse)> = family.iter().map(|(n, r)| (n.as_str(), r)).collect();
+    show(control::bode("Problem 16.8.4: 1/(s² + 2ζs + 1)", &named, None).expect("nonempty").to_svg().expect("finite"));
+    // cell 5
+    let l = tf(&[1.0], &[1.0, 1.0, 0.0]);
+    let led = l.series(&tf(&[1.0, 2.0], &[1.0, 20.0]));
+    for (name, g) in [("L", l.clone()), ("L·lead", led.clone()), ("L·e^(−0.2s)", l.clone().with_delay(0.2).expect("τ ≥ 0"))] {
+        let m = g.margins().expect("margins");
+        println!("{name:12}: GM = {} dB, PM = {}° at ω = {} rad/s", Rounded(m.gain_margin_db()), Rounded(m.phase_margin_deg()), Rounded(m.gain_crossover_omega().expect("a crossover")));
+    }
+    let w2 = logspace(-2.0, 2.0, 300).expect("valid range");
+    let (b1, b2) = (l.bode(&w2).expect("finite"), led.bode(&w2).expect("finite"));
+    show(control::bode("Problem 16.8.11: lead compensation", &[("L", &b1), ("L·lead", &b2)], Some(&l.margins().expect("margins"))).expect("nonempty").to_svg().expect("finite"));
+    // cell 6
+    let unstable = tf(&[4.0, 40.0], &[1.0, -3.0, 2.0]);
+    let ny = unstable.nyquist(400).expect("proper");
+    println!("N = {}, P = {}, Z = {}", ny.encirclements, ny.open_loop_rhp, ny.closed_loop_rhp);
+    let closed = unstable.feedback(&TransferFunction::gain(1.0).expect("finite")).expect("well posed");
+    println!("closed-loop poles: {}", closed.poles().expect("roots").iter().map(|p| format!("{p:.4}")).collect::<Vec<_>>().join(", "));
+    let m = unstable.margins().expect("margins");
+    println!("GM = {} dB, PM = {}°", Rounded(m.gain_margin_db()), Rounded(m.phase_margin_deg()));
+    show(control::nyquist("Problem 16.8.14: L = 4(s + 10)/((s − 1)(s − 2))", &ny, 30.0).expect("points").to_svg().expect("finite"));
+    // cell 7
+    println!("L = −1/(s² + 2s + 3): {:.1e}", sensitivity_integral(&tf(&[-1.0], &[1.0, 2.0, 3.0])).expect("relative degree 2"));
+    println!("L = 4/((s − 1)(s + 2)): {} (π = {})", Rounded(sensitivity_integral(&tf(&[4.0], &[1.0, 1.0, -2.0])).expect("relative degree 2")), Rounded(PI));
+}
