@@ -198,3 +198,16 @@ fn run_and_check_flight_scene() {
     assert!(e.contains("jet.toml:") && e.contains("valid: elevator, aileron, rudder, thrust"), "{e}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 23: the tour prints numbers rounded for reading. 𝓞_{B/A} of a quarter turn about k̂
+/// is [[0, 1, 0], [−1, 0, 0], [0, 0, 1]] (2.12.16 with θ = π/2); its cos(π/2) = 6.1e-17 and
+/// the round-off of the rotor sandwich print as 0, not as 17-digit noise.
+#[test]
+fn tour_prints_numbers_rounded_for_reading() {
+    let text = cli(&["tour"]).unwrap();
+    assert!(text.contains("x|_B = [0, -1, 0]"), "{text}");
+    assert!(text.contains("𝓞_{B/A} =\n[  0  1  0 ]\n[ -1  0  0 ]\n[  0  0  1 ]"), "{text}");
+    assert!(text.contains("R x R̄ |_A = [0, 1, 0]"), "{text}");
+    assert!(text.contains("angle(x, y) = 1.5708 rad"), "{text}");
+    assert!(!text.contains("e-1"), "no round-off noise in scientific form: {text}");
+}

@@ -1,4 +1,4 @@
-//! The notebooks in `docs/notebooks/` as tests (issue 11, item 2).
+//! The notebooks in `docs/notebooks/` as tests (issue 11, item 2; issue 23, item 3).
 //!
 //! `tests/notebooks/generated.rs` holds one `#[test] fn notebook_<name>()` per notebook whose
 //! body is that notebook's code cells in order, minus evcxr's `:dep` lines; `cargo test` thus
@@ -6,8 +6,12 @@
 //! the cells from each `.ipynb` and fails when the checked-in extraction is stale; regenerate
 //! it with `VECTRIX_BLESS=1 cargo test --test notebooks`.
 //!
-//! The `.ipynb` files are read with a small JSON reader below (the root package has no JSON
-//! dependency): only the `cells`, `cell_type` and `source` fields are used.
+//! [`stored_outputs_are_present`] fails when a notebook's outputs are missing, so that readers of
+//! the repository see results and figures without running anything (store them with
+//! `scripts/notebooks.sh`).
+//!
+//! The `.ipynb` files are read with a small JSON reader below: only the `cells`, `cell_type`,
+//! `source` and `outputs` (`output_type`, `data`) fields are used.
 
 use std::collections::BTreeMap;
 use std::fs;
@@ -187,8 +191,37 @@ fn field<'a>(j: &'a Json, k: &str) -> Option<&'a Json> {
     }
 }
 
-/// A notebook's code cells (each `source` joined), after checking the nbformat 4 header.
-fn code_cells(path: &Path) -> Vec<String> {
+/// One stored output of a code cell: its `output_type` and, for `display_data` and
+/// `execute_result`, the MIME types of its `data`.
+#[derive(Debug)]
+struct Output {
+    kind: String,
+    mimes: Vec<String>,
+}
+
+/// A code cell: its `source` joined, and its stored outputs.
+struct CodeCell {
+    source: String,
+    outputs: Vec<Output>,
+}
+
+/// The text of a `source` field (a string or an array of lines).
+fn joined(j: Option<&Json>, what: &str) -> String {
+    match j {
+        Some(Json::Str(s)) => s.clone(),
+        Some(Json::Array(lines)) => lines
+            .iter()
+            .map(|l| match l {
+                Json::Str(s) => s.as_str(),
+                _ => panic!("{what}: non-string source line"),
+            })
+            .collect(),
+        _ => panic!("{what}: cell without source"),
+    }
+}
+
+/// A notebook's code cells with their outputs, after checking the nbformat 4 header.
+fn code_cells_with_outputs(path: &Path) -> Vec<CodeCell> {
     let text = fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let nb = parse(&text).unwrap_or_else(|e| panic!("{}: invalid JSON: {e}", path.display()));
     assert!(matches!(field(&nb, "nbformat"), Some(Json::Number)), "{}: nbformat", path.display());
@@ -199,24 +232,79 @@ fn code_cells(path: &Path) -> Vec<String> {
         path.display()
     );
     let Some(Json::Array(cells)) = field(&nb, "cells") else { panic!("{}: no cells", path.display()) };
+    let what = path.display().to_string();
     let mut code = Vec::new();
     for cell in cells {
-        let src = match field(cell, "source") {
-            Some(Json::Str(s)) => s.clone(),
-            Some(Json::Array(lines)) => lines
+        let source = joined(field(cell, "source"), &what);
+        if !matches!(field(cell, "cell_type"), Some(Json::Str(t)) if t == "code") {
+            continue;
+        }
+        let outputs = match field(cell, "outputs") {
+            Some(Json::Array(outs)) => outs
                 .iter()
-                .map(|l| match l {
-                    Json::Str(s) => s.as_str(),
-                    _ => panic!("{}: non-string source line", path.display()),
+                .map(|o| Output {
+                    kind: match field(o, "output_type") {
+                        Some(Json::Str(k)) => k.clone(),
+                        _ => panic!("{what}: output without output_type"),
+                    },
+                    mimes: match field(o, "data") {
+                        Some(Json::Object(m)) => m.keys().cloned().collect(),
+                        _ => Vec::new(),
+                    },
                 })
                 .collect(),
-            _ => panic!("{}: cell without source", path.display()),
+            _ => Vec::new(),
         };
-        if matches!(field(cell, "cell_type"), Some(Json::Str(t)) if t == "code") {
-            code.push(src);
-        }
+        code.push(CodeCell { source, outputs });
     }
     code
+}
+
+/// A notebook's code cells (each `source` joined).
+fn code_cells(path: &Path) -> Vec<String> {
+    code_cells_with_outputs(path).into_iter().map(|c| c.source).collect()
+}
+
+/// What a cell must have stored, by the rule of [`stored_outputs_are_present`]: `(prints, draws,
+/// returns)`.
+///
+/// - *prints*: outside item definitions (a line at column 0 starting `fn`, `struct`, `impl`,
+///   `enum` or `trait` opens one, the next line at column 0 starting with `}` closes it), a line
+///   calls `println!`, `print!`, `eprintln!` or the notebooks' `show(` helper;
+/// - *draws*: such a line calls `show(` or prints `EVCXR_BEGIN_CONTENT` (an SVG figure);
+/// - *returns*: the cell's last line that is neither blank nor a `//` comment ends in neither
+///   `;` nor `}` — evcxr displays the value of that trailing expression.
+fn expectations(source: &str) -> (bool, bool, bool) {
+    let (mut in_item, mut prints, mut draws) = (false, false, false);
+    for line in source.lines() {
+        let top = !line.starts_with([' ', '\t']);
+        let word = line.trim_start_matches("pub ");
+        if top && ["fn ", "struct ", "impl ", "impl<", "enum ", "trait "].iter().any(|k| word.starts_with(k))
+        {
+            in_item = !line.trim_end().ends_with('}') && !line.trim_end().ends_with(';');
+            continue;
+        }
+        if in_item {
+            if top && line.starts_with('}') {
+                in_item = false;
+            }
+            continue;
+        }
+        let code = line.split("//").next().unwrap_or("");
+        if ["println!", "print!", "eprintln!", "show("].iter().any(|m| code.contains(m)) {
+            prints = true;
+        }
+        if code.contains("show(") || code.contains("EVCXR_BEGIN_CONTENT") {
+            draws = true;
+        }
+    }
+    let last = source
+        .lines()
+        .map(str::trim)
+        .rfind(|l| !l.is_empty() && !l.starts_with("//") && !l.starts_with(':'))
+        .unwrap_or("");
+    let returns = !last.is_empty() && !last.ends_with(';') && !last.ends_with('}');
+    (prints, draws, returns)
 }
 
 fn notebooks() -> Vec<PathBuf> {
@@ -281,23 +369,83 @@ fn generated_code_is_current() {
     );
 }
 
-/// Every notebook opens with the `:dep` cell the README promises and has markdown citing the book.
+/// At least one notebook per chapter 2–16 (`02-…` to `16-…`, a chapter may have a second one
+/// such as `15-units`), and no other; each opening with the lean `:dep` cell the
+/// README promises, with markdown citing the book's sections and at least one SVG figure.
 #[test]
 fn notebooks_are_guided_tours() {
     let list = notebooks();
-    assert!(list.len() >= 9, "expected one notebook per topic, found {}", list.len());
+    let chapters: Vec<String> = list
+        .iter()
+        .map(|p| p.file_name().and_then(|s| s.to_str()).unwrap_or("").chars().take(3).collect())
+        .collect();
+    let mut chapters = chapters;
+    chapters.dedup();
+    let want: Vec<String> = (2..=16).map(|c| format!("{c:02}-")).collect();
+    assert_eq!(chapters, want, "at least one notebook per chapter 2–16, named NN-topic.ipynb, and no other");
     for nb in list {
         let cells = code_cells(&nb);
         let first = cells.first().map(String::as_str).unwrap_or("");
         assert!(
-            first.contains(":dep vectrix = { path = \"../..\" }"),
-            "{}: first code cell must be the :dep",
+            first.contains(":dep vectrix = { path = \"../..\", default-features = false }"),
+            "{}: first code cell must be the lean :dep",
             nb.display()
         );
         let text = fs::read_to_string(&nb).unwrap_or_default();
         assert!(text.contains('§'), "{}: markdown must cite the book's sections", nb.display());
-        assert!(text.contains("EVCXR_BEGIN_CONTENT image/svg+xml"), "{}: no inline SVG figure", nb.display());
+        assert!(cells.iter().any(|c| expectations(c).1), "{}: no SVG figure", nb.display());
     }
+}
+
+/// The outputs are stored, so that a reader sees them without running anything
+/// (`scripts/notebooks.sh` executes the notebooks with the evcxr kernel and stores them). The
+/// rule, per code cell (see [`expectations`]): a cell that prints has at least one `stream` or
+/// `display_data` output; a cell that draws has a `display_data` output with `image/svg+xml`; a
+/// cell that ends in an expression has an `execute_result` or a `display_data`; no cell has an
+/// `error` output. A stored output that no longer matches an edited cell is not detected here:
+/// re-run `scripts/notebooks.sh` after editing a notebook.
+#[test]
+fn stored_outputs_are_present() {
+    let mut missing = Vec::new();
+    for nb in notebooks() {
+        for (k, cell) in code_cells_with_outputs(&nb).iter().enumerate() {
+            let (prints, draws, returns) = expectations(&cell.source);
+            let has = |kinds: &[&str]| cell.outputs.iter().any(|o| kinds.contains(&o.kind.as_str()));
+            let svg = cell
+                .outputs
+                .iter()
+                .any(|o| o.kind == "display_data" && o.mimes.iter().any(|m| m == "image/svg+xml"));
+            let name = format!("{} code cell {}", nb.display(), k + 1);
+            if cell.outputs.iter().any(|o| o.kind == "error") {
+                missing.push(format!("{name}: stored error output"));
+            }
+            if prints && !has(&["stream", "display_data"]) {
+                missing.push(format!("{name}: prints but has no stored output"));
+            }
+            if draws && !svg {
+                missing.push(format!("{name}: draws but has no stored image/svg+xml"));
+            }
+            if returns && !has(&["execute_result", "display_data"]) {
+                missing.push(format!("{name}: ends in an expression but has no stored result"));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "run scripts/notebooks.sh:\n{}", missing.join("\n"));
+}
+
+/// The rule of [`stored_outputs_are_present`] on small cells.
+#[test]
+fn output_expectations_rule() {
+    assert_eq!(expectations("let x = 1;\nprintln!(\"{x}\");"), (true, false, false));
+    assert_eq!(
+        expectations("fn show(svg: String) {\n    println!(\"EVCXR_BEGIN_CONTENT {svg}\");\n}"),
+        (false, false, false)
+    );
+    assert_eq!(expectations("fn f() {}\nshow(svg);"), (true, true, false));
+    assert_eq!(expectations("for k in 0..3 {\n    println!(\"{k}\");\n}"), (true, false, false));
+    assert_eq!(expectations("let x = 2;\nx + 1"), (false, false, true));
+    assert_eq!(expectations("use a::b;\n// println!(\"no\")"), (false, false, false));
+    assert_eq!(expectations(":dep vectrix = { path = \"../..\" }"), (false, false, false));
 }
 
 /// The JSON reader itself, on the escapes nbformat writers emit.

@@ -180,3 +180,44 @@ fn line_chart_is_deterministic_and_rejects_bad_points() {
     assert!(matches!(nan.to_svg(), Err(PlotError::NonFinite { index: 2, .. })));
     assert!(matches!(LineChart::new("e", "x", "y").to_svg(), Err(PlotError::Empty { .. })));
 }
+
+/// The (stroke, stroke-dasharray) of every legend line of a chart, in legend order. Legend
+/// lines are the `<line …/>` elements 22 px long right of the plot area.
+fn legend_styles(svg: &str) -> Vec<(String, String)> {
+    let attr = |el: &str, name: &str| {
+        el.split(&format!(r#" {name}=""#)).nth(1).and_then(|r| r.split('"').next()).unwrap_or("").to_string()
+    };
+    svg.lines()
+        .filter(|l| l.starts_with("<line") && {
+            let x1: f64 = attr(l, "x1").parse().unwrap_or(0.0);
+            let x2: f64 = attr(l, "x2").parse().unwrap_or(0.0);
+            x1 > 468.0 && (x2 - x1 - 22.0).abs() < 1e-9
+        })
+        .map(|l| (attr(l, "stroke"), attr(l, "stroke-dasharray")))
+        .collect()
+}
+
+#[test]
+fn work_precision_eleven_methods_differ_in_colour_or_style() {
+    // Issue 23: the rigid-body work–precision figure has 11 methods; two of them shared a
+    // colour. Every series must now differ from every other in colour or line style, and the
+    // colours must come from Okabe and Ito's colour-universal-design palette (the published
+    // hex codes, yellow excluded as too faint on white).
+    let okabe_ito = ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000"];
+    let methods: Vec<(String, Vec<(f64, f64)>)> = (0..11)
+        .map(|i| (format!("method {i}"), vec![(1e-3, 1e-4 * f64::from(i + 1)), (1e-9, 1e-2 * f64::from(i + 1))]))
+        .collect();
+    let named: Vec<(&str, Vec<(f64, f64)>)> = methods.iter().map(|(n, p)| (n.as_str(), p.clone())).collect();
+    let svg = control::work_precision("11 methods", &named).to_svg().unwrap();
+    let styles = legend_styles(&svg);
+    assert_eq!(styles.len(), 11, "one legend line per method: {styles:?}");
+    for (i, a) in styles.iter().enumerate() {
+        assert!(okabe_ito.contains(&a.0.as_str()), "series {i}: colour {} is not Okabe–Ito", a.0);
+        for b in &styles[i + 1..] {
+            assert_ne!(a, b, "two series share colour and style");
+        }
+    }
+    // The first seven are solid in seven colours; the next ones repeat a colour dashed.
+    assert!(styles[..7].iter().all(|s| s.1.is_empty()));
+    assert_eq!(styles[7], (okabe_ito[0].to_string(), "8 5".to_string()));
+}

@@ -38,6 +38,8 @@ mod frame;
 mod gradient;
 mod nonstandard;
 mod resolve;
+#[cfg(feature = "serde")]
+mod serde_impl;
 mod tensor_resolve;
 
 pub use error::FrameError;

@@ -22,6 +22,8 @@ mod rlocus;
 mod routh;
 mod sdof;
 mod shift;
+#[cfg(feature = "serde")]
+mod serde_impl;
 mod ss;
 mod stability;
 mod sweep;

@@ -3,7 +3,7 @@
 
 use crate::axis::{Axis, half_span};
 use crate::error::PlotError;
-use crate::svg::{PALETTE, Svg, escape, num};
+use crate::svg::{DASHES, PALETTE, Svg, escape, num};
 
 /// Width of a figure in pixels.
 pub(crate) const WIDTH: f64 = 720.0;
@@ -39,7 +39,8 @@ pub struct Curve {
     pub name: Option<String>,
     /// Data points in order.
     pub points: Vec<(f64, f64)>,
-    /// Palette index (colours cycle through ten).
+    /// Palette index: colours cycle through seven, then the line style changes
+    /// (see `Curve::style`).
     pub color: usize,
     /// Solid, dashed or dotted.
     pub stroke: Stroke,
@@ -51,6 +52,20 @@ impl Curve {
     /// A solid, named curve in palette colour `color`.
     pub fn new(name: impl Into<String>, points: Vec<(f64, f64)>, color: usize) -> Self {
         Self { name: Some(name.into()), points, color, stroke: Stroke::Solid, markers: false }
+    }
+
+    /// Colour and dash pattern: palette colour `color mod 7`; each time the colours wrap
+    /// around, the line style moves one step along solid → dashed → dotted → dash-dot, so
+    /// curves 0 and 7 (same colour) differ in style. An explicitly dashed curve (Nyquist's
+    /// ω < 0 branch) keeps its difference from the solid curve of the same colour.
+    pub(crate) fn style(&self) -> (&'static str, Option<&'static str>) {
+        let own = match self.stroke {
+            Stroke::Solid => 0,
+            Stroke::Dashed => 1,
+            Stroke::Dotted => 2,
+        };
+        let round = self.color / PALETTE.len();
+        (PALETTE[self.color % PALETTE.len()], DASHES[(own + round) % DASHES.len()])
     }
 }
 
@@ -247,12 +262,7 @@ impl Chart {
         }
         // Curves, split at unusable points.
         for c in &self.curves {
-            let color = PALETTE[c.color % PALETTE.len()];
-            let dash = match c.stroke {
-                Stroke::Solid => None,
-                Stroke::Dashed => Some("8 5"),
-                Stroke::Dotted => Some("2 4"),
-            };
+            let (color, dash) = c.style();
             // Thinning: a point within THIN_PX of the last one kept is dropped (the last point of
             // every piece is kept). The dropped points and the path through them lie in that
             // disk, so the drawn line stays within THIN_PX of the full polyline everywhere:
@@ -331,13 +341,8 @@ impl Chart {
         // Legend, right of the plot area, in curve order.
         let mut ly = py + 8.0;
         for c in self.curves.iter().filter(|c| c.name.is_some()) {
-            let color = PALETTE[c.color % PALETTE.len()];
+            let (color, dash) = c.style();
             let lx = px + pw + 12.0;
-            let dash = match c.stroke {
-                Stroke::Solid => None,
-                Stroke::Dashed => Some("8 5"),
-                Stroke::Dotted => Some("2 4"),
-            };
             svg.line(lx, ly, lx + 22.0, ly, color, 2.0, dash);
             if c.markers {
                 svg.circle(lx + 11.0, ly, 3.0, color, color);

@@ -122,7 +122,7 @@ pub fn nyquist(title: &str, ny: &Nyquist, clip: f64) -> Result<Figure, PlotError
     chart.curves.push(Curve {
         name: Some("unit circle".into()),
         points: circle,
-        color: 9,
+        color: 6, // black: a reference curve, not a system
         stroke: Stroke::Dotted,
         markers: false,
     });
@@ -218,7 +218,7 @@ pub fn root_locus(title: &str, rl: &RootLocus, zetas: &[f64]) -> Result<Figure, 
             chart.curves.push(Curve {
                 name: (i == 0).then(|| format!("asymptotes (α = {alpha:.4})")),
                 points: vec![(alpha, 0.0), (alpha + 2.0 * extent * c, 2.0 * extent * s)],
-                color: 9,
+                color: 6, // black: reference lines, not a system
                 stroke: Stroke::Dotted,
                 markers: false,
             });

@@ -7,7 +7,9 @@
 //!   time series);
 //! - [`Chart`] and [`Figure`]: the general panel (curves, markers, reference lines, arrows)
 //!   and vertical stacks of panels, used by the control figures of the book's ch. 15–16
-//!   (Bode, Nyquist, step responses, root loci, pole–zero maps, phase portraits).
+//!   (Bode, Nyquist, step responses, root loci, pole–zero maps, phase portraits);
+//! - [`Rounded`]: resolved numbers printed for reading (six significant digits, round-off
+//!   shown as 0).
 //!
 //! Bad input: every public function returns a correct value or a typed error (never a panic,
 //! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
@@ -20,14 +22,16 @@ pub mod control;
 mod error;
 mod line;
 mod svg;
+mod text;
 
 pub use chart::{Arrow, Chart, Curve, Figure, Marker, RefLine, Shape, Stroke};
 pub use error::PlotError;
 pub use line::{LineChart, Series};
+pub use text::{ROUND_OFF, Rounded, SIGNIFICANT};
 
 /// `use vectrix_plot::prelude::*;`
 pub mod prelude {
     pub use crate::{
-        Arrow, Chart, Curve, Figure, LineChart, Marker, PlotError, RefLine, Series, Shape, Stroke,
+        Arrow, Chart, Curve, Figure, LineChart, Marker, PlotError, RefLine, Rounded, Series, Shape, Stroke,
     };
 }

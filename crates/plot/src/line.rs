@@ -22,7 +22,8 @@ impl Series {
 
 /// A line chart with a legend, drawn as deterministic SVG.
 ///
-/// Series get colours from a fixed ten-colour palette in order; a series with at most
+/// Series get colours from a fixed colour-blind-safe palette in order (Okabe–Ito, seven
+/// colours; when they repeat the line style changes: dashed, dotted, dash-dot); a series with at most
 /// [`LineChart::MARKER_LIMIT`] points also gets a circle at each point, which is what a
 /// work–precision diagram wants (one marker per tolerance).
 ///

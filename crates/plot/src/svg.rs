@@ -20,11 +20,16 @@ pub(crate) struct Svg {
     height: f64,
 }
 
-/// Colours of successive series (colour-blind-safe Tableau 10).
-pub(crate) const PALETTE: [&str; 10] = [
-    "#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948", "#b07aa1", "#ff9da7", "#9c755f",
-    "#bab0ac",
-];
+/// Colours of successive series: Okabe and Ito's colour-universal-design palette (2008),
+/// distinguishable under the common colour-vision deficiencies, without its yellow (#f0e442,
+/// too faint on white). When the colours run out the line style changes instead
+/// ([`DASHES`]), so that every series of a figure differs in colour or in style.
+pub(crate) const PALETTE: [&str; 7] =
+    ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000"];
+
+/// Line styles (SVG `stroke-dasharray`) in the order they are cycled: solid, dashed, dotted,
+/// dash-dot.
+pub(crate) const DASHES: [Option<&str>; 4] = [None, Some("8 5"), Some("2 4"), Some("8 4 2 4")];
 
 impl Svg {
     pub(crate) fn new(width: f64, height: f64) -> Self {

@@ -66,6 +66,8 @@ mod quaternion;
 mod resolved;
 mod rigid;
 mod rotation;
+#[cfg(feature = "serde")]
+mod serde_impl;
 mod series;
 mod vmath;
 

@@ -47,6 +47,8 @@ mod inertia;
 mod mass;
 mod point;
 mod principal;
+#[cfg(feature = "serde")]
+mod serde_impl;
 mod shapes;
 mod spatial;
 mod spring;

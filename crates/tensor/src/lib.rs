@@ -24,6 +24,8 @@ mod multivector;
 mod pauli;
 mod rotor;
 mod scalar;
+#[cfg(feature = "serde")]
+mod serde_impl;
 mod tensor;
 mod trivector;
 mod vector;

@@ -112,6 +112,16 @@ pub enum InvariantValue {
     Vector([f64; 3]),
 }
 
+impl InvariantValue {
+    /// The components: one for a scalar, three (ground) for a vector.
+    pub fn as_slice(&self) -> &[f64] {
+        match self {
+            Self::Scalar(x) => std::slice::from_ref(x),
+            Self::Vector(v) => v,
+        }
+    }
+}
+
 /// Drift of one checked invariant over the run (at the output samples).
 ///
 /// Book: §8.3, §7.4, §7.6.
