@@ -146,7 +146,8 @@ impl<T: Scalar> EulerAngles<T> {
         if !(n.re() > 1e-290 && n.re() < 1e290) {
             // a quaternion far from unit length, whose squares would underflow or overflow:
             // extract from its direction (every formula here is scale-free)
-            let m = [w, q.b, q.c, q.d].into_iter().fold(T::zero(), |m, x| if x.abs() > m { x.abs() } else { m });
+            let m =
+                [w, q.b, q.c, q.d].into_iter().fold(T::zero(), |m, x| if x.abs() > m { x.abs() } else { m });
             if m == T::zero() {
                 // the zero quaternion is no rotation: every pair is 0, read as a lock at β = 0
                 return assemble(sequence, reversed, [T::zero(); 3], Some((T::zero(), 1)));
