@@ -115,6 +115,7 @@ impl EulerSequence {
     }
 
     /// The axes in the order applied.
+    #[inline]
     pub fn axes(&self) -> [Axis; 3] {
         self.axes
     }
@@ -125,12 +126,14 @@ impl EulerSequence {
     }
 
     /// `true` for i = k (3-1-3 type), `false` for Tait–Bryan (3-2-1 type).
+    #[inline]
     pub fn is_symmetric(&self) -> bool {
         self.axes[0] == self.axes[2]
     }
 
     /// The intrinsic sequence whose 𝓡-product equals this one with the angles reversed:
     /// extrinsic i-j-k (α, β, γ) = intrinsic k-j-i (γ, β, α).
+    #[inline]
     pub(crate) fn as_intrinsic_reversed(&self) -> (Self, bool) {
         match self.kind {
             EulerKind::Intrinsic => (*self, false),

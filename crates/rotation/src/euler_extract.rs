@@ -17,7 +17,7 @@
 use nalgebra::Matrix3;
 use vectrix_tensor::Scalar;
 
-use crate::series::wrap_near as wrap_angle;
+use crate::series::{angle_0_pi, angle_half_pi, wrap_near as wrap_angle};
 
 use crate::{EulerAngles, EulerSequence, Quaternion, RotationError, check_rotation_matrix, rotation_about};
 
@@ -121,6 +121,7 @@ impl<T: Scalar> EulerAngles<T> {
     ///
     /// Book: §2.13 (Facts 2.13.3–8), §2.15; Bernardes & Viollet, "Quaternion to Euler angles
     /// conversion: a direct, general and computationally efficient method", PLoS ONE 17 (2022).
+    #[inline]
     pub fn from_quaternion(q: &Quaternion<T>, sequence: EulerSequence) -> EulerSolution<T> {
         let (seq, reversed) = sequence.as_intrinsic_reversed();
         let [ai, aj, ak] = seq.axes();
@@ -128,33 +129,61 @@ impl<T: Scalar> EulerAngles<T> {
         let comp = [q.b, q.c, q.d];
         let w = q.a;
         let two = T::lit(2.0);
-        let (alpha, beta, gamma, lock_measure, sign, plus_determined);
-        if i != k {
+        // The pairs A = a + ib and C = c + id (below) of either case, and from them everything:
+        // |A|² = |q|²(1 + sin β), |C|² = |q|²(1 − sin β) (Tait–Bryan) or 2|q|²cos²(β/2),
+        // 2|q|²sin²(β/2) (symmetric); arg(A·C) = α and arg(A·C̄) = ±γ in both cases. So one
+        // square root and two atan2 (not three atan2 and two hypot); the lock only needs arg A
+        // or arg C alone.
+        let (a, b, c, d, e) = if i != k {
             let e = T::lit(parity(i, j));
             let (qi, qj, qk) = (comp[i], comp[j], comp[k]);
-            let (a, b, c, d) = (w + qj, qi + e * qk, w - qj, qi - e * qk);
-            let cos_beta = a.hypot(b) * c.hypot(d);
-            beta = (two * (w * qj + e * qi * qk)).atan2(cos_beta);
-            let (phi_p, phi_m) = (b.atan2(a), d.atan2(c));
-            alpha = phi_p + phi_m;
-            gamma = e * (phi_p - phi_m);
-            lock_measure = cos_beta.re();
-            sign = if (e * beta).re() >= 0.0 { 1 } else { -1 };
-            plus_determined = if beta.re() >= 0.0 { two * phi_p } else { two * phi_m };
+            (w + qj, qi + e * qk, w - qj, qi - e * qk, e)
         } else {
-            let m = 3 - i - j;
             let e = T::lit(parity(i, j));
-            let (a, b, c, d) = (w, comp[i], comp[j], e * comp[m]);
-            let (h_ab, h_cd) = (a.hypot(b), c.hypot(d));
-            beta = two * h_cd.atan2(h_ab);
-            let (th_p, th_m) = (b.atan2(a), d.atan2(c));
-            alpha = th_p + th_m;
-            gamma = th_p - th_m;
-            lock_measure = (two * h_ab * h_cd).re();
-            sign = if h_ab.re() >= h_cd.re() { 1 } else { -1 };
-            plus_determined = if sign > 0 { two * th_p } else { two * th_m };
+            (w, comp[i], comp[j], e * comp[3 - i - j], e)
+        };
+        let (aa, cc) = (a * a + b * b, c * c + d * d);
+        let n = aa + cc;
+        if !(n.re() > 1e-290 && n.re() < 1e290) {
+            // a quaternion far from unit length, whose squares would underflow or overflow:
+            // extract from its direction (every formula here is scale-free)
+            let m =
+                [w, q.b, q.c, q.d].into_iter().fold(T::zero(), |m, x| if x.abs() > m { x.abs() } else { m });
+            if m == T::zero() {
+                // the zero quaternion is no rotation: every pair is 0, read as a lock at β = 0
+                return assemble(sequence, reversed, [T::zero(); 3], Some((T::zero(), 1)));
+            }
+            if m.re().is_finite() {
+                return Self::from_quaternion(&(*q * (T::one() / m)), sequence);
+            }
         }
-        let lock = (lock_measure <= GIMBAL_LOCK_TOL).then_some((plus_determined, sign));
+        // (sin β, cos β) Tait–Bryan, (sin β, cos β) symmetric, each over |A|² + |C|² = 2|q|²
+        let (p, r) = ((aa - cc) / n, two * (aa * cc).sqrt() / n);
+        let (alpha, beta, gamma, lock_measure, sign, use_a);
+        // α = φ₊ + φ₋ = arg(A·C), and the difference φ₊ − φ₋ = arg(A·C̄)
+        let sum = (b * c + a * d).atan2(a * c - b * d);
+        let diff = (b * c - a * d).atan2(a * c + b * d);
+        if i != k {
+            // A = (c + s) e^{iφ₊}, C = (c − s) e^{iφ₋}, (c, s) = (cos β/2, sin β/2),
+            // φ± = (α ± εγ)/2: sin β = (|A|² − |C|²)/(|A|² + |C|²), cos β = 2|A||C|/(…)
+            beta = angle_half_pi(p, r);
+            alpha = sum;
+            gamma = e * diff;
+            lock_measure = r.re();
+            sign = if (e * beta).re() >= 0.0 { 1 } else { -1 };
+            use_a = beta.re() >= 0.0;
+        } else {
+            // A = cos(β/2) e^{iθ₊}, C = sin(β/2) e^{iθ₋}, θ± = (α ± γ)/2: cos β = p, sin β = r
+            beta = angle_0_pi(r, p);
+            alpha = sum;
+            gamma = diff;
+            lock_measure = r.re();
+            sign = if aa.re() >= cc.re() { 1 } else { -1 };
+            use_a = sign > 0;
+        }
+        // At the lock the determined combination is 2 arg A or 2 arg C (the other pair ≈ 0).
+        let lock = (lock_measure <= GIMBAL_LOCK_TOL)
+            .then(|| (if use_a { two * b.atan2(a) } else { two * d.atan2(c) }, sign));
         assemble(sequence, reversed, [alpha, beta, gamma], lock)
     }
 
@@ -162,6 +191,7 @@ impl<T: Scalar> EulerAngles<T> {
     /// `lock_tol` on cos β (Tait–Bryan) or sin β (symmetric).
     ///
     /// Book: §2.13; notes ch2b §3.7 (atan2/hypot, never asin/acos).
+    #[inline]
     pub fn from_rotation_matrix_unchecked(
         r: &Matrix3<T>,
         sequence: EulerSequence,
@@ -174,8 +204,11 @@ impl<T: Scalar> EulerAngles<T> {
         if i != k {
             // Tait–Bryan: 𝓡_ik = ε sin β, 𝓡_ii = cos β cos γ, 𝓡_ij = −ε cos β sin γ, …
             let e = T::lit(parity(i, j));
-            let cb = r[(i, i)].hypot(r[(i, j)]);
-            beta = (e * r[(i, k)]).atan2(cb);
+            let cb = hypot(r[(i, i)], r[(i, j)]);
+            // β = atan2(ε𝓡_ik, cos β) as asin of the better conditioned of the normalised pair
+            let sb = e * r[(i, k)];
+            let row = hypot(sb, cb);
+            beta = angle_half_pi(sb / row, cb / row);
             alpha = (-e * r[(j, k)]).atan2(r[(k, k)]);
             gamma = (-e * r[(i, j)]).atan2(r[(i, i)]);
             lock_measure = cb.re();
@@ -185,8 +218,9 @@ impl<T: Scalar> EulerAngles<T> {
             // Symmetric: 𝓡_ii = cos β, 𝓡_ij = sin β sin γ, 𝓡_im = ε sin β cos γ, …
             let m = 3 - i - j;
             let e = T::lit(parity(i, j));
-            let sb = r[(i, j)].hypot(r[(i, m)]);
-            beta = sb.atan2(r[(i, i)]);
+            let sb = hypot(r[(i, j)], r[(i, m)]);
+            let row = hypot(sb, r[(i, i)]);
+            beta = angle_0_pi(sb / row, r[(i, i)] / row);
             alpha = r[(j, i)].atan2(-e * r[(m, i)]);
             gamma = r[(i, j)].atan2(e * r[(i, m)]);
             lock_measure = sb.re();
@@ -203,6 +237,14 @@ impl<T: Scalar> EulerAngles<T> {
     }
 }
 
+/// √(x² + y²) for the entries of a rotation (|x|, |y| ≤ 1 + rounding), by a plain square root
+/// unless the sum of squares underflows (near a lock), where `hypot` keeps the digits.
+#[inline]
+fn hypot<T: Scalar>(x: T, y: T) -> T {
+    let s = x * x + y * y;
+    if s.re() > 1e-290 { s.sqrt() } else { x.hypot(y) }
+}
+
 /// The common end of both extractions: from the intrinsic angles (α, β, γ) of
 /// `sequence.as_intrinsic_reversed()` (`reversed` for an extrinsic sequence), the solution in
 /// the order applied. `lock` is `Some((α + sign·γ, sign))` at gimbal lock, unwrapped.
@@ -210,6 +252,7 @@ impl<T: Scalar> EulerAngles<T> {
 /// Book: Facts 2.13.3–8: the alternate solution is (α+π, π−β, γ+π) for Tait–Bryan sequences
 /// and (α+π, −β, γ+π) for symmetric ones; at the lock (F2.13.5, F2.13.8 corrected) the
 /// representative is (combination, β, 0).
+#[inline]
 pub(crate) fn assemble<T: Scalar>(
     sequence: EulerSequence,
     reversed: bool,

@@ -8,7 +8,7 @@
 use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
-use crate::series::{canonical_sign, norm3, sinc};
+use crate::series::{angle_0_pi, canonical_sign, norm3, sinc};
 use crate::{AxisAngle, Quaternion, RotationError, check_rotation_matrix};
 
 impl<T: Scalar> Quaternion<T> {
@@ -39,37 +39,27 @@ impl<T: Scalar> Quaternion<T> {
         (q * (T::one() / q.norm())).canonical()
     }
 
-    /// The angle vector (log map) of a rotation matrix 𝓡. For tr 𝓡 > −0.9 (θ < 162°) directly
-    /// from sin θ = ½|vee(𝓡 − 𝓡ᵀ)| or cos θ = ½(tr 𝓡 − 1), whichever is well conditioned
-    /// (asin of the sine below 45.6° and above 134.4°, of the cosine between); nearer
-    /// the half turn through the unnormalised Shepperd quaternion, θ = 2 atan2(|ε|, η) (scale
-    /// free, so the normalisation is skipped). Unchecked (the matrix must be a rotation).
+    /// The angle vector (log map) of a rotation matrix 𝓡. The angle θ from sin θ = ½|vee(𝓡 − 𝓡ᵀ)|
+    /// or cos θ = ½(tr 𝓡 − 1), whichever is well conditioned (asin of the sine below 45.6° and
+    /// above 134.4°, of the cosine between); the axis for tr 𝓡 > −0.9 (θ < 162°) from
+    /// vee(𝓡 − 𝓡ᵀ) itself, nearer the half turn from the largest pivot of the unnormalised
+    /// Shepperd quaternion (whose vector part keeps its digits there). Unchecked (the matrix
+    /// must be a rotation).
     ///
     /// Book: §2.14 (log map), §2.15; notes ch2b §3.5.
     #[doc(alias = "as_rotvec")]
     #[inline]
     pub fn angle_vector_of_rotation_matrix(r: &Matrix3<T>) -> Vector3<T> {
+        // From Rodrigues (2.11.1): vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and tr 𝓡 − 1 = 2 cos θ, so θ follows
+        // from sin θ or cos θ, whichever is well conditioned (`angle_0_pi`).
         let tr = r[(0, 0)] + r[(1, 1)] + r[(2, 2)];
+        let v = Vector3::new(r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)]);
+        let s = norm3(&v);
+        let c = (tr - T::one()) * T::lit(0.5);
+        let theta = angle_0_pi(s * T::lit(0.5), c);
         if tr.re() > -0.9 {
-            // cos θ > −0.95 (θ < 162°), away from the half turn: no quaternion needed; |v| =
-            // 2 sin θ > 0.62 keeps the axis to a few ulps. From Rodrigues (2.11.1),
-            // vee(𝓡 − 𝓡ᵀ) = 2 sin θ n̂ and tr 𝓡 − 1 = 2 cos θ, so θ follows from sin θ or
-            // cos θ, whichever is well conditioned, and Θ = (θ / 2 sin θ) v.
-            let v = Vector3::new(r[(2, 1)] - r[(1, 2)], r[(0, 2)] - r[(2, 0)], r[(1, 0)] - r[(0, 1)]);
-            let s = norm3(&v);
-            // θ from whichever of sin θ = s/2 and cos θ = c is well conditioned (libm's asin
-            // is about twice as fast as atan2): asin(s/2) below 45.6° (c > 0.7), π/2 − asin(c)
-            // for |c| ≤ 0.7, π − asin(s/2) above 134.4°; the derivative of asin is ≤ 1.41
-            // on |x| ≤ 0.72, so each branch is accurate to a few ulps, like atan2(s, c).
-            let c = (tr - T::one()) * T::lit(0.5);
-            let cr = c.re();
-            let theta = if cr > 0.7 {
-                (s * T::lit(0.5)).asin()
-            } else if cr >= -0.7 {
-                T::lit(core::f64::consts::FRAC_PI_2) - c.asin()
-            } else {
-                T::lit(core::f64::consts::PI) - (s * T::lit(0.5)).asin()
-            };
+            // cos θ > −0.95 (θ < 162°), away from the half turn: |v| = 2 sin θ > 0.62 keeps the
+            // axis to a few ulps, and Θ = (θ / 2 sin θ) v.
             // θ / (2 sin θ) = ½(1 + θ²/6 + 7θ⁴/360 + …); the θ⁴ term is below ε for θ < 1e-4.
             let k = if theta.re() < 1e-4 {
                 T::lit(0.5) * (T::one() + theta * theta / T::lit(6.0))
@@ -78,8 +68,21 @@ impl<T: Scalar> Quaternion<T> {
             };
             return v * k;
         }
-        // Near the half turn the antisymmetric part vanishes: take the largest Shepperd pivot.
-        Self::shepperd_unnormalized(r).angle_vector()
+        // Near the half turn the antisymmetric part vanishes: the axis from the largest Shepperd
+        // pivot, 4p·q (p the pivot component), whose ε is ∥ n̂ with the sign of η·p; θ (from
+        // sin θ = |v|/2 above, π − asin) is exact to an ulp there, as 2 atan2(|ε|, η) would be.
+        let q = Self::shepperd_unnormalized(r);
+        let e = q.epsilon();
+        let n = norm3(&e);
+        let axis = if q.a > T::zero() {
+            e / n
+        } else if q.a < T::zero() {
+            -e / n
+        } else {
+            // θ = π exactly: ±n̂ describe the same half-turn; the canonical sign (DESIGN §4)
+            canonical_sign(e / n)
+        };
+        axis * theta
     }
 
     /// 4·(pivot component)·q for the largest pivot (Markley's columns).
@@ -256,15 +259,19 @@ impl<T: Scalar> Quaternion<T> {
     #[doc(alias = "from_scaled_axis")]
     #[inline]
     pub fn from_angle_vector(theta: &Vector3<T>) -> Self {
-        let mut h = norm3(theta) * T::lit(0.5);
-        if h.re().is_infinite() {
-            // |Θ| beyond f64::MAX (components near it): h = |Θ/2| is still finite.
-            h = norm3(&(theta * T::lit(0.5)));
-        }
+        // |Θ| = √(Θ·Θ) unless that overflows; an underflow (|Θ| < 1e-154) leaves h = 0 and
+        // the series below gives the exact limit q = (1, Θ/2) anyway. Beyond 1e145 the scaled
+        // norm of Θ/2 (components near f64::MAX: |Θ| overflows, |Θ/2| need not).
+        let n2 = theta.norm_squared();
+        let h = if n2.re() < 1e290 { n2.sqrt() * T::lit(0.5) } else { norm3(&(theta * T::lit(0.5))) };
         let (s, c) = h.sin_cos();
-        // ½ sin(h)/h, by series near h = 0 (sinc).
-        let k = if h.re().abs() < 1e-3 { T::lit(0.5) * sinc(h) } else { T::lit(0.5) * s / h };
-        Self::from_parts(c, theta * k).canonical()
+        // ½ sin(h)/h, by series near h = 0 (sinc). The `0·s` keeps sin(h) on both paths: LLVM
+        // otherwise sinks the sine into the branch that uses it, and sin and cos stay two libm
+        // calls instead of one sincos (a quarter of the cost of the whole conversion).
+        let k = if h.re() < 1e-3 { T::lit(0.5) * sinc(h) + T::zero() * s } else { T::lit(0.5) * s / h };
+        let q = Self::from_parts(c, theta * k);
+        // |Θ| ≤ π (the usual case) gives η = cos(h) > 0: already canonical
+        if c > T::zero() { q } else { q.canonical() }
     }
 
     /// log: the angle vector Θ = θn̂ with θ ∈ [0, π], from θ = 2 atan2(|ε|, η); the series

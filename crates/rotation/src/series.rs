@@ -19,6 +19,40 @@ pub(crate) fn sinc<T: Scalar>(x: T) -> T {
     }
 }
 
+/// The angle θ ∈ [0, π] with (sin θ, cos θ) = (s, c), s ≥ 0 and s² + c² = 1, by asin of
+/// whichever of s and c is well conditioned (asin is about half the cost of atan2): asin(s)
+/// for c > 0.7 (θ < 45.6°), π/2 − asin(c) for |c| ≤ 0.7, π − asin(s) for c < −0.7. The
+/// derivative of asin is at most 1.41 on |x| ≤ 0.72, so each branch is accurate to a few ulps,
+/// like atan2(s, c). Not for unnormalised pairs (atan2 is scale-free, this is not).
+///
+/// Book: §2.14 (θ ∈ [0, π]); notes ch2b §3.5 (never acos of a rounded cosine).
+#[inline]
+pub(crate) fn angle_0_pi<T: Scalar>(s: T, c: T) -> T {
+    let cr = c.re();
+    if cr > 0.7 {
+        s.asin()
+    } else if cr >= -0.7 {
+        T::lit(core::f64::consts::FRAC_PI_2) - c.asin()
+    } else {
+        T::pi() - s.asin()
+    }
+}
+
+/// The angle β ∈ [−π/2, π/2] with (sin β, cos β) = (s, c), c ≥ 0 and s² + c² = 1: asin(s)
+/// for |s| ≤ 0.7, ±(π/2 − asin(c)) beyond, as in [`angle_0_pi`].
+///
+/// Book: §2.13 (the middle angle of a Tait–Bryan sequence); notes ch2b §3.7.
+#[inline]
+pub(crate) fn angle_half_pi<T: Scalar>(s: T, c: T) -> T {
+    let sr = s.re();
+    if sr.abs() <= 0.7 {
+        s.asin()
+    } else {
+        let b = T::lit(core::f64::consts::FRAC_PI_2) - c.asin();
+        if sr > 0.0 { b } else { -b }
+    }
+}
+
 /// Euclidean norm without underflow or overflow: components of 1e-300 keep their length.
 #[inline]
 pub(crate) fn norm3<T: Scalar>(v: &Vector3<T>) -> T {
@@ -37,16 +71,15 @@ pub(crate) fn norm3<T: Scalar>(v: &Vector3<T>) -> T {
 
 /// Wraps an angle in (−3π, 3π] into (−π, π] with at most one shift of 2π; π stays π (DESIGN
 /// §4). Unlike a floor-based wrap it is smooth for dual numbers (num-dual has no `floor`).
+/// Branch-free: the shift is a multiple k ∈ {−1, 0, 1} of 2π from two comparisons, since the
+/// alternate Euler solutions (α + π, γ + π) need a shift half of the time, at random.
 #[inline]
 pub(crate) fn wrap_near<T: Scalar>(a: T) -> T {
-    let (pi, two_pi) = (T::pi(), T::two_pi());
-    if a > pi {
-        a - two_pi
-    } else if a <= -pi {
-        a + two_pi
-    } else {
-        a
-    }
+    let r = a.re();
+    let pi = core::f64::consts::PI;
+    // k = 1 above π, −1 at or below −π; a − 0 keeps a (and the sign of a zero) exactly
+    let k = f64::from(u8::from(r > pi)) - f64::from(u8::from(r <= -pi));
+    a - T::lit(k * core::f64::consts::TAU)
 }
 
 /// The first nonzero component positive (DESIGN §4, canonical axis at θ = π).

@@ -54,7 +54,8 @@ pub struct Stepper<S: State, F: FnMut(f64, &S) -> S> {
     prev: Option<(f64, S)>,
     dense: Option<DenseStep<S>>,
     work: Work,
-    fac_old: f64,
+    /// ln of the previous accepted step's error (at least 1e-4): the PI controller's memory.
+    ln_fac_old: f64,
     last_rejected: bool,
 }
 
@@ -115,7 +116,7 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
             prev: None,
             dense: None,
             work,
-            fac_old: 1e-4,
+            ln_fac_old: 1e-4f64.ln(),
             last_rejected: false,
         })
     }
@@ -187,16 +188,18 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
                 Pair::Dopri5 => dopri5::step(&mut self.f, t, &self.y, h, &mut self.k, tol, &mut self.work)?,
                 Pair::Dop853 => dop853::step(&mut self.f, t, &self.y, h, &mut self.k, tol, &mut self.work)?,
             };
-            // step-size factor: fac = err^{expo1} / fac_old^β / safe, clamped
-            let fac11 = err.powf(expo1);
+            // step-size factor: fac = err^{expo1} / fac_old^β / safe, clamped; as one exp of
+            // logarithms (one ln and one exp a step instead of two powf, the controller's whole
+            // cost on a cheap right-hand side), ln(fac_old) kept from the last accepted step
+            let ln_err = err.ln();
             if err <= 1.0 {
-                let stab = if beta == 0.0 { 1.0 } else { self.fac_old.powf(beta) };
-                let fac = (fac11 / stab / safe).clamp(1.0 / fac_max, 1.0 / fac_min);
+                let fac = ((expo1 * ln_err - beta * self.ln_fac_old).exp() / safe)
+                    .clamp(1.0 / fac_max, 1.0 / fac_min);
                 let mut h_new = (h / fac).min(self.h_max);
                 if self.last_rejected {
                     h_new = h_new.min(h);
                 }
-                self.fac_old = err.max(1e-4);
+                self.ln_fac_old = ln_err.max(1e-4f64.ln());
                 self.work.accepted += 1;
                 self.last_rejected = false;
                 let t_new = if last { t1 } else { t + h };
@@ -214,7 +217,7 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
                 self.h = if last { h_new.max(self.h) } else { h_new };
                 return Ok(());
             }
-            h /= (fac11 / safe).min(1.0 / fac_min);
+            h /= ((expo1 * ln_err).exp() / safe).min(1.0 / fac_min);
             self.work.rejected += 1;
             self.last_rejected = true;
         }

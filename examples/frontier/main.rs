@@ -1,0 +1,444 @@
+//! The work–precision frontier against every peer (issue 24): what a given accuracy costs in
+//! wall time on each problem, for vectrix (library and scenes) and for MuJoCo, scipy's
+//! `solve_ivp`, Pinocchio + scipy and the sympy.physics.mechanics pipeline (the Python side is
+//! `scripts/peers/frontier_*.py`; everything is run by `scripts/peers/frontier.sh`).
+//!
+//! ```sh
+//! cargo run --release --example frontier -- run  [--quick] [--out DIR] [--only a,b] [--cap S]
+//! cargo run --release --example frontier -- plot [--data DIR] [--svg DIR] [--doc docs/performance.md]
+//! ```
+//!
+//! `run` writes `DIR/reference.json` (the chains' reference end states, with their checks)
+//! and `DIR/vectrix.json` (the points); `plot` reads every `DIR/*.json` tool file, draws
+//! `peers-<problem>.svg` and writes the time-to-error table between the markers
+//! `<!-- frontier-table:begin -->` and `<!-- frontier-table:end -->` of the document. The
+//! default DIR is `docs/accuracy/peers-data`, the default SVG folder `docs/accuracy`.
+//! A timing harness, not a test: medians of repeated whole runs (see `timing.rs`).
+
+mod problems;
+mod report;
+mod routes;
+mod timing;
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use nalgebra::SVector;
+use serde_json::{Value, json};
+use vectrix::ode::explicit::Adaptive;
+use vectrix::ode::harness::{Pendulum, Reference};
+
+use problems::{
+    CHAIN_NS, CHAIN_T, GRAVITY, LINK, MASS, RADIUS, capsule_inertia, chain_model, chain_q0, chain_y0,
+};
+use report::{Pt, family_time, figure, fmt_time};
+use routes::{Ctx, chain_rhs};
+
+const DATA: &str = "docs/accuracy/peers-data";
+const SVG: &str = "docs/accuracy";
+const BEGIN: &str = "<!-- frontier-table:begin -->";
+const END: &str = "<!-- frontier-table:end -->";
+
+/// The problems in table order: id, figure title, x label.
+const PROBLEMS: [(&str, &str, &str); 9] = [
+    (
+        "rigid-body",
+        "Torque-free asymmetric body, I = (1, 2, 3), t ≤ 20",
+        "max |ω − ω_exact| at t = 20 (exact: Jacobi elliptic)",
+    ),
+    (
+        "kepler-e0.9",
+        "Kepler, e = 0.9, t ≤ 20",
+        "max-norm error of (r, ṙ) at t = 20 (exact: Kepler's equation)",
+    ),
+    (
+        "pendulum",
+        "Pendulum released at θ₀ = 3 rad, t ≤ 10",
+        "max-norm error of (θ, θ̇) at t = 10 (exact: Jacobi elliptic)",
+    ),
+    (
+        "chain-1",
+        "1-link hinge chain (MuJoCo's capsule), t ≤ 1 s",
+        "max-norm error of (q, v) at t = 1 s (reference run)",
+    ),
+    (
+        "chain-2",
+        "Double pendulum (2-link chain), t ≤ 1 s",
+        "max-norm error of (q, v) at t = 1 s (reference run)",
+    ),
+    ("chain-6", "6-link hinge chain, t ≤ 1 s", "max-norm error of (q, v) at t = 1 s (reference run)"),
+    ("chain-12", "12-link hinge chain, t ≤ 1 s", "max-norm error of (q, v) at t = 1 s (reference run)"),
+    ("chain-30", "30-link hinge chain, t ≤ 1 s", "max-norm error of (q, v) at t = 1 s (reference run)"),
+    (
+        "energy-pendulum",
+        "Pendulum θ₀ = 1 rad over 10⁴ periods: energy",
+        "max |E − E₀|/E₀ at every 10th period",
+    ),
+];
+
+/// Target errors of the table.
+const LEVELS: [f64; 4] = [1e-3, 1e-6, 1e-9, 1e-12];
+
+/// Families in table order, with their names in the table.
+const FAMILIES: [(&str, &str); 6] = [
+    ("vectrix library", "vectrix (library)"),
+    ("vectrix scene", "vectrix (scene file)"),
+    ("mujoco", "MuJoCo"),
+    ("scipy", "scipy solve_ivp (numpy RHS)"),
+    ("pinocchio", "Pinocchio ABA + solve_ivp"),
+    ("sympy", "sympy.physics.mechanics + solve_ivp"),
+];
+
+fn arg(args: &[String], key: &str) -> Option<String> {
+    args.iter().position(|a| a == key).and_then(|i| args.get(i + 1).cloned())
+}
+
+fn shell(cmd: &str, args: &[&str]) -> String {
+    std::process::Command::new(cmd)
+        .args(args)
+        .output()
+        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+        .unwrap_or_default()
+}
+
+fn loadavg() -> Vec<f64> {
+    std::fs::read_to_string("/proc/loadavg")
+        .unwrap_or_default()
+        .split_whitespace()
+        .take(3)
+        .filter_map(|x| x.parse().ok())
+        .collect()
+}
+
+fn cpu_model() -> String {
+    shell("lscpu", &[])
+        .lines()
+        .find_map(|l| l.strip_prefix("Model name:").map(|m| m.trim().to_string()))
+        .unwrap_or_default()
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("run") => run(&args),
+        Some("plot") => plot(&args),
+        _ => {
+            eprintln!(
+                "usage: frontier run [--quick] [--out DIR] [--only a,b] [--cap S]\n       frontier plot [--data DIR] [--svg DIR] [--doc FILE]"
+            );
+            std::process::exit(2);
+        }
+    }
+}
+
+/// The chains' reference: DOP853 at rtol = atol = 1e-13 through `Model::aba_into`; for the
+/// one link also the exact physical-pendulum solution beside it. `check_reference.py` adds
+/// the independent checks (scipy's DOP853 on a numpy Lagrangian and on Pinocchio's ABA).
+fn chain_reference<const N: usize>() -> Value {
+    let n = N / 2;
+    let model = chain_model(n);
+    let tau = vec![0.0; n];
+    let y0 = chain_y0::<N>();
+    let mut scratch = model.aba_scratch();
+    let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+    let y = *Adaptive::dop853()
+        .rtol(1e-13)
+        .atol(1e-13)
+        .solve(f, 0.0, &y0, CHAIN_T)
+        .expect("the reference run")
+        .last();
+    let mut v = json!({
+        "t_end": CHAIN_T, "q0": chain_q0(n), "v0": vec![0.0; n],
+        "state": y.as_slice(),
+        "method": "vectrix DOP853, rtol = atol = 1e-13, Model::aba_into (ABA)",
+    });
+    if n == 1 {
+        // a physical pendulum: θ̈ = −ω₀² sin θ, ω₀² = m g c / (I_c + m c²)
+        let (perp, _) = capsule_inertia(RADIUS, LINK, MASS);
+        let c = LINK / 2.0;
+        let w0 = (MASS * GRAVITY * c / (perp + MASS * c * c)).sqrt();
+        let p = Pendulum { theta0: chain_q0(1)[0] };
+        let e = p.exact(w0 * CHAIN_T);
+        let exact = [e[0], w0 * e[1]];
+        v["exact"] = json!(exact);
+        v["diff_to_exact"] = json!((y[0] - exact[0]).abs().max((y[1] - exact[1]).abs()));
+    }
+    v
+}
+
+fn reference_for(n: usize) -> Value {
+    match n {
+        1 => chain_reference::<2>(),
+        2 => chain_reference::<4>(),
+        6 => chain_reference::<12>(),
+        12 => chain_reference::<24>(),
+        30 => chain_reference::<60>(),
+        _ => unreachable!("CHAIN_NS"),
+    }
+}
+
+fn run(args: &[String]) {
+    let out = PathBuf::from(arg(args, "--out").unwrap_or_else(|| DATA.into()));
+    std::fs::create_dir_all(&out).expect("output folder");
+    let only: Option<Vec<String>> = arg(args, "--only").map(|s| s.split(',').map(str::to_string).collect());
+    let want = |p: &str| only.as_ref().is_none_or(|o| o.iter().any(|x| x == p));
+    let cap = arg(args, "--cap").and_then(|c| c.parse().ok()).unwrap_or(2.0);
+    let load_start = loadavg();
+    let date = shell("date", &["-u", "+%Y-%m-%dT%H:%M:%SZ"]);
+
+    // the chains' reference end states (deterministic: computed once per run)
+    let ref_path = out.join("reference.json");
+    let mut reference: BTreeMap<String, Value> = std::fs::read_to_string(&ref_path)
+        .ok()
+        .and_then(|s| serde_json::from_str(&s).ok())
+        .unwrap_or_default();
+    for n in CHAIN_NS {
+        let id = format!("chain-{n}");
+        if want(&id) {
+            eprintln!("reference {id}");
+            reference.insert(id, reference_for(n));
+        }
+    }
+    std::fs::write(&ref_path, serde_json::to_string_pretty(&reference).expect("json"))
+        .expect("write reference");
+
+    let mut ctx = Ctx { points: Vec::new(), quick: args.iter().any(|a| a == "--quick"), cap };
+    if want("rigid-body") {
+        ctx.rigid_body();
+    }
+    if want("kepler-e0.9") {
+        ctx.kepler();
+    }
+    if want("pendulum") {
+        ctx.pendulum();
+    }
+    for n in CHAIN_NS {
+        let id = format!("chain-{n}");
+        if !want(&id) {
+            continue;
+        }
+        let state: Vec<f64> = reference[&id]["state"]
+            .as_array()
+            .expect("state")
+            .iter()
+            .map(|x| x.as_f64().expect("number"))
+            .collect();
+        match n {
+            1 => ctx.chain::<2>(&state),
+            2 => ctx.chain::<4>(&state),
+            6 => ctx.chain::<12>(&state),
+            12 => ctx.chain::<24>(&state),
+            30 => ctx.chain::<60>(&state),
+            _ => unreachable!("CHAIN_NS"),
+        }
+    }
+    if want("energy-pendulum") {
+        ctx.energy();
+    }
+    let doc = json!({
+        "tool": "vectrix",
+        "versions": { "vectrix": env!("CARGO_PKG_VERSION"), "rustc": shell("rustc", &["--version"]) },
+        "machine": format!("{}, {} CPUs, {}", cpu_model(), std::thread::available_parallelism().map_or(0, |n| n.get()), shell("uname", &["-sr"])),
+        "date": date,
+        "load_start": load_start,
+        "load_end": loadavg(),
+        "threads": { "RAYON_NUM_THREADS": std::env::var("RAYON_NUM_THREADS").ok() },
+        "points": ctx.points.iter().map(routes::Point::to_json).collect::<Vec<_>>(),
+    });
+    let path = out.join("vectrix.json");
+    // a partial run (--only) merges into the points of the other problems
+    let merged = merge(&path, doc, only.is_some());
+    std::fs::write(&path, serde_json::to_string_pretty(&merged).expect("json")).expect("write points");
+    eprintln!("wrote {} and {}", path.display(), ref_path.display());
+}
+
+/// With `partial`, keeps the existing file's points of the problems this run did not do.
+fn merge(path: &Path, mut doc: Value, partial: bool) -> Value {
+    if !partial {
+        return doc;
+    }
+    let Some(old) = std::fs::read_to_string(path).ok().and_then(|s| serde_json::from_str::<Value>(&s).ok())
+    else {
+        return doc;
+    };
+    let new_problems: Vec<String> = doc["points"]
+        .as_array()
+        .map(|a| a.iter().filter_map(|p| p["problem"].as_str().map(str::to_string)).collect())
+        .unwrap_or_default();
+    let mut points: Vec<Value> = old["points"]
+        .as_array()
+        .map(|a| {
+            a.iter().filter(|p| !new_problems.iter().any(|n| p["problem"] == n.as_str())).cloned().collect()
+        })
+        .unwrap_or_default();
+    points.extend(doc["points"].as_array().cloned().unwrap_or_default());
+    doc["points"] = Value::Array(points);
+    doc
+}
+
+/// Every tool file of `data` (not the reference files).
+fn read_tools(data: &Path) -> Vec<Value> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(data)
+        .expect("data folder")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .filter(|p| !p.file_stem().is_some_and(|s| s.to_string_lossy().starts_with("reference")))
+        .collect();
+    files.sort();
+    files.iter().filter_map(|p| serde_json::from_str(&std::fs::read_to_string(p).ok()?).ok()).collect()
+}
+
+fn plot(args: &[String]) {
+    let data = PathBuf::from(arg(args, "--data").unwrap_or_else(|| DATA.into()));
+    let svg_dir = PathBuf::from(arg(args, "--svg").unwrap_or_else(|| SVG.into()));
+    let tools = read_tools(&data);
+    let mut pts: Vec<Pt> = Vec::new();
+    // vectrix first, then the peers in FAMILIES order: the figures' legends follow it
+    for fam in FAMILIES.map(|f| f.0) {
+        for t in &tools {
+            for p in t["points"].as_array().into_iter().flatten().filter_map(Pt::from_json) {
+                if p.family() == fam {
+                    pts.push(p);
+                }
+            }
+        }
+    }
+    for (id, title, x_label) in PROBLEMS {
+        if !pts.iter().any(|p| p.problem == id) {
+            continue;
+        }
+        let svg = figure(&pts, id, title, x_label).to_svg().expect("figure");
+        let path = svg_dir.join(format!("peers-{id}.svg"));
+        std::fs::write(&path, svg).expect("write svg");
+        eprintln!("wrote {}", path.display());
+    }
+    let floors = reference_floors(&data);
+    let table = table(&pts, &tools, &floors);
+    println!("{table}");
+    if let Some(doc) = arg(args, "--doc") {
+        let text = std::fs::read_to_string(&doc).expect("document");
+        let (Some(a), Some(b)) = (text.find(BEGIN), text.find(END)) else {
+            panic!("{doc} has no {BEGIN} … {END} markers");
+        };
+        let new = format!("{}{BEGIN}\n{table}\n{}", &text[..a], &text[b..]);
+        std::fs::write(&doc, new).expect("write document");
+        eprintln!("updated {doc}");
+    }
+}
+
+/// The series name without its tool prefix.
+fn short(series: &str) -> &str {
+    ["vectrix scene ", "vectrix ", "mujoco ", "MuJoCo ", "scipy ", "pinocchio+", "sympy+"]
+        .iter()
+        .find_map(|p| series.strip_prefix(p))
+        .unwrap_or(series)
+}
+
+/// How far each chain's reference can be trusted: the largest difference to the independent
+/// recomputations of `check_reference.py` (and, for one link, to the exact solution).
+fn reference_floors(data: &Path) -> BTreeMap<String, f64> {
+    let read = |name: &str| -> Value {
+        std::fs::read_to_string(data.join(name))
+            .ok()
+            .and_then(|s| serde_json::from_str(&s).ok())
+            .unwrap_or(Value::Null)
+    };
+    let (check, reference) = (read("reference_check.json"), read("reference.json"));
+    let mut out = BTreeMap::new();
+    for n in CHAIN_NS {
+        let id = format!("chain-{n}");
+        let mut u: Vec<f64> = check[&id]
+            .as_object()
+            .map(|o| o.values().filter_map(Value::as_f64).collect())
+            .unwrap_or_default();
+        u.extend(reference[&id]["diff_to_exact"].as_f64());
+        if let Some(m) = u.into_iter().reduce(f64::max) {
+            out.insert(id, m);
+        }
+    }
+    out
+}
+
+fn table(pts: &[Pt], tools: &[Value], floors: &BTreeMap<String, f64>) -> String {
+    let mut s = String::new();
+    s += "Machine, date and load of each tool's sitting (1-minute load average at its start and end):\n\n";
+    s += "| tool | machine | date (UTC) | load start → end |\n|---|---|---|---|\n";
+    for t in tools {
+        let load = |k: &str| {
+            t[k].as_array()
+                .and_then(|a| a.first())
+                .and_then(Value::as_f64)
+                .map_or("?".into(), |x| format!("{x:.1}"))
+        };
+        s += &format!(
+            "| {} | {} | {} | {} → {} |\n",
+            t["tool"].as_str().unwrap_or("?"),
+            t["machine"].as_str().unwrap_or("?"),
+            t["date"].as_str().unwrap_or("?"),
+            load("load_start"),
+            load("load_end")
+        );
+    }
+    s += "\nTime to reach a given error (the fastest method of each tool; ≤: even its cheapest run is that \
+          accurate, so the time is an upper bound; blank: no run reached it). The speed-up rows divide the \
+          fastest peer's time by vectrix's.\n";
+    for (id, title, _) in PROBLEMS {
+        if !pts.iter().any(|p| p.problem == id) {
+            continue;
+        }
+        s += &format!("\n**{title}** (`peers-{id}.svg`)");
+        if let Some(u) = floors.get(id) {
+            s += &format!("; reference checked to {u:.1e}");
+        }
+        s += "\n\n| tool | 1e-3 | 1e-6 | 1e-9 | 1e-12 |\n|---|---|---|---|---|\n";
+        let mut best: BTreeMap<&str, [Option<f64>; 4]> = BTreeMap::new();
+        for (fam, label) in FAMILIES {
+            if !pts.iter().any(|p| p.problem == id && p.family() == fam) {
+                continue;
+            }
+            let mut row = format!("| {label} |");
+            let mut times = [None; 4];
+            for (k, &lvl) in LEVELS.iter().enumerate() {
+                // an error level within 10× of the reference's own uncertainty is not measured
+                if floors.get(id).is_some_and(|u| *u > 0.1 * lvl) {
+                    row += " (below the reference's accuracy) |";
+                    continue;
+                }
+                match family_time(pts, id, fam, lvl) {
+                    Some((t, ub, series)) => {
+                        times[k] = Some(t);
+                        row +=
+                            &format!(" {}{} {} |", if ub { "≤ " } else { "" }, fmt_time(t), short(&series));
+                    }
+                    None => row += " |",
+                }
+            }
+            best.insert(fam, times);
+            s += &row;
+            s += "\n";
+        }
+        let peers: Vec<[Option<f64>; 4]> =
+            best.iter().filter(|(f, _)| !f.starts_with("vectrix")).map(|(_, t)| *t).collect();
+        for (fam, label) in [("vectrix library", "speed-up, library"), ("vectrix scene", "speed-up, scene")] {
+            let Some(ours) = best.get(fam) else { continue };
+            let mut row = format!("| *{label}* |");
+            for k in 0..4 {
+                let fastest = peers.iter().filter_map(|p| p[k]).min_by(f64::total_cmp);
+                row += &match (ours[k], fastest) {
+                    (Some(o), Some(p)) => format!(" {} |", ratio(p / o)),
+                    (Some(_), None) if !peers.is_empty() => " no peer reaches it |".into(),
+                    (None, Some(_)) => " **peer only** |".into(),
+                    _ => " |".into(),
+                };
+            }
+            s += &row;
+            s += "\n";
+        }
+    }
+    s
+}
+
+/// A speed-up with two significant digits.
+fn ratio(r: f64) -> String {
+    if r >= 10.0 { format!("{r:.0}×") } else { format!("{r:.2}×") }
+}

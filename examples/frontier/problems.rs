@@ -1,0 +1,186 @@
+//! The problems of the peer frontier, their error measures and their scene files; the same
+//! definitions as `scripts/peers/frontier_common.py` (see its docstring).
+
+use std::f64::consts::PI;
+
+use nalgebra::{Matrix3, SVector, Vector3};
+use vectrix::dynamics::multibody::{Joint, Link, Model};
+use vectrix::ode::harness::elliptic::elliptic_k;
+use vectrix::ode::harness::{Kepler, Pendulum, Reference, RigidBody};
+
+/// Link length, capsule radius, link mass and gravity of the chain of
+/// `../shared/peers/bench_mujoco.py`.
+pub const LINK: f64 = 0.3;
+/// Capsule radius [m].
+pub const RADIUS: f64 = 0.02;
+/// Link mass [kg].
+pub const MASS: f64 = 1.0;
+/// Gravity [m/s²] along −z.
+pub const GRAVITY: f64 = 9.81;
+/// The chains' end time [s].
+pub const CHAIN_T: f64 = 1.0;
+/// The chain lengths.
+pub const CHAIN_NS: [usize; 5] = [1, 2, 6, 12, 30];
+
+/// The torque-free body of the harness: I = (1, 2, 3), ω(0) = (1, 0, 0.5), t ∈ [0, 20].
+pub fn rigid_body() -> RigidBody {
+    RigidBody { inertia: [1.0, 2.0, 3.0], omega13: [1.0, 0.5], t_end: 20.0 }
+}
+
+/// Kepler from periapsis, e = 0.9, t ∈ [0, 20].
+pub const KEPLER: Kepler = Kepler { e: 0.9 };
+
+/// θ̈ = −sin θ from rest at θ₀ = 3 rad, t ∈ [0, 10].
+pub const PENDULUM: Pendulum = Pendulum { theta0: 3.0 };
+
+/// Principal moments (about the centre; perpendicular, axial) of a solid capsule of mass m,
+/// radius r and cylinder length h, uniform density: a cylinder and two hemispherical caps
+/// (each cap's centre of mass 3r/8 from its flat face, so its parallel-axis shift is
+/// h²/4 + 3hr/8 beyond its own 2r²/5 … as MuJoCo computes it for `type="capsule"`).
+pub fn capsule_inertia(r: f64, h: f64, m: f64) -> (f64, f64) {
+    let vol = PI * r * r * h + 4.0 / 3.0 * PI * r.powi(3);
+    let mc = m * PI * r * r * h / vol;
+    let ms = m - mc;
+    let axial = mc * r * r / 2.0 + ms * 2.0 * r * r / 5.0;
+    let perp = mc * (h * h / 12.0 + r * r / 4.0) + ms * (2.0 * r * r / 5.0 + h * h / 4.0 + 3.0 * h * r / 8.0);
+    (perp, axial)
+}
+
+/// q(0) of the n-link chain: (0.7, 0.1, …, 0.1) rad (relative hinge angles), v(0) = 0.
+pub fn chain_q0(n: usize) -> Vec<f64> {
+    (0..n).map(|i| if i == 0 { 0.7 } else { 0.1 }).collect()
+}
+
+/// The chain of bench_mujoco.py as a multibody model: link i hangs from hinge i about ŷ,
+/// its centre at −(l/2)ẑ and the next hinge at −lẑ (link frame), gravity −9.81ẑ.
+pub fn chain_model(n: usize) -> Model {
+    let (perp, axial) = capsule_inertia(RADIUS, LINK, MASS);
+    let inertia = Matrix3::from_diagonal(&Vector3::new(perp, perp, axial));
+    let links: Vec<Link> = (0..n)
+        .map(|i| {
+            let offset = if i == 0 { Vector3::zeros() } else { Vector3::new(0.0, 0.0, -LINK) };
+            Link::new(
+                i.checked_sub(1),
+                Joint::Pin { axis: Vector3::y() },
+                offset,
+                MASS,
+                Vector3::new(0.0, 0.0, -LINK / 2.0),
+                inertia,
+            )
+        })
+        .collect();
+    let mut m = Model::new(&links).expect("the chain is a valid tree");
+    m.gravity = Vector3::new(0.0, 0.0, -GRAVITY);
+    m
+}
+
+/// The chain as a scene file (pins about ŷ, `value` masses with the capsule's moments).
+pub fn chain_scene(n: usize, method: &str, rtol: f64) -> String {
+    let (perp, axial) = capsule_inertia(RADIUS, LINK, MASS);
+    let mut s = header("chain", CHAIN_T, 1, method, rtol);
+    s += &format!("\n[[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, 0.0, {:?}]\n", -GRAVITY);
+    for (i, q) in chain_q0(n).iter().enumerate() {
+        let parent = if i == 0 {
+            String::new()
+        } else {
+            format!("parent = \"l{}\"\noffset = [0.0, 0.0, {:?}]\n", i - 1, -LINK)
+        };
+        s += &format!(
+            "\n[[bodies]]\nname = \"l{i}\"\n{parent}joint = {{ type = \"pin\", axis = [0.0, 1.0, 0.0] }}\n\
+             mass = {{ shape = \"value\", mass = {MASS:?}, principal = [{perp:?}, {perp:?}, {axial:?}] }}\n\
+             com = [0.0, 0.0, {:?}]\nq = [{q:?}]\n",
+            -LINK / 2.0
+        );
+    }
+    s
+}
+
+fn header(name: &str, duration: f64, samples: usize, method: &str, rtol: f64) -> String {
+    format!(
+        "name = \"{name}\"\nduration = {duration:?}\nsamples = {samples}\nmethod = {{ name = \"{method}\", rtol = {rtol:?} }}\n"
+    )
+}
+
+/// The torque-free body as a scene: a ball joint on the ground (v = ω in link components).
+pub fn rigid_scene(method: &str, rtol: f64) -> String {
+    let rb = rigid_body();
+    let w = rb.exact_omega(0.0);
+    header("rigid_body", rb.t_end, 1, method, rtol)
+        + &format!(
+            "\n[[bodies]]\nname = \"b\"\njoint = {{ type = \"ball\" }}\n\
+             mass = {{ shape = \"value\", mass = 1.0, principal = [{:?}, {:?}, {:?}] }}\nv = [{:?}, {:?}, {:?}]\n",
+            rb.inertia[0], rb.inertia[1], rb.inertia[2], w[0], w[1], w[2]
+        )
+}
+
+/// Kepler as a scene: a free particle (a small sphere) around a central field μ = 1.
+pub fn kepler_scene(method: &str, rtol: f64) -> String {
+    let y0 = KEPLER.y0();
+    header("kepler", KEPLER.t_end(), 1, method, rtol)
+        + &format!(
+            "\n[[bodies]]\nname = \"p\"\njoint = {{ type = \"free\" }}\n\
+             mass = {{ shape = \"sphere\", mass = 1.0, radius = 0.01 }}\n\
+             q = [{:?}, {:?}, 0.0, 1.0, 0.0, 0.0, 0.0]\nv = [{:?}, {:?}, 0.0, 0.0, 0.0, 0.0]\n\n\
+             [[effects]]\ntype = \"central_gravity\"\nmu = 1.0\ncentre = [0.0, 0.0, 0.0]\n",
+            y0[0], y0[1], y0[2], y0[3]
+        )
+}
+
+/// The unit pendulum as a scene: a particle at distance 1 on a pin about ẑ, g = 1 along −ŷ.
+pub fn pendulum_scene(theta0: f64, duration: f64, samples: usize, method: &str, rtol: f64) -> String {
+    let checks = if samples > 1 { "checks = [\"energy\"]\n" } else { "" };
+    header("pendulum", duration, samples, method, rtol)
+        + checks
+        + &format!(
+            "\n[[bodies]]\nname = \"bob\"\njoint = {{ type = \"pin\", axis = [0.0, 0.0, 1.0] }}\n\
+             mass = {{ shape = \"particle\", mass = 1.0 }}\ncom = [0.0, -1.0, 0.0]\nq = [{theta0:?}]\n\n\
+             [[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, -1.0, 0.0]\n"
+        )
+}
+
+/// The energy problem: θ̈ = −sin θ from rest at θ₀ = 1 rad over 10⁴ periods, energy checked
+/// every 10 periods.
+pub struct EnergyPendulum;
+
+impl EnergyPendulum {
+    /// Amplitude [rad].
+    pub const THETA0: f64 = 1.0;
+    /// Number of periods.
+    pub const PERIODS: usize = 10_000;
+    /// Periods between checkpoints.
+    pub const EVERY: usize = 10;
+
+    /// The period 4K(sin²(θ₀/2)).
+    pub fn period() -> f64 {
+        4.0 * elliptic_k((0.5 * Self::THETA0).sin().powi(2)).expect("m < 1")
+    }
+    /// End time.
+    pub fn t_end() -> f64 {
+        Self::PERIODS as f64 * Self::period()
+    }
+    /// Number of checkpoints after t = 0.
+    pub fn checkpoints() -> usize {
+        Self::PERIODS / Self::EVERY
+    }
+    /// E₀ = 1 − cos θ₀, the energy above the bottom.
+    pub fn e0() -> f64 {
+        1.0 - Self::THETA0.cos()
+    }
+    /// |E − E₀|/E₀ with E = θ̇²/2 + 1 − cos θ.
+    pub fn rel(theta: f64, omega: f64) -> f64 {
+        (0.5 * omega * omega + 1.0 - theta.cos() - Self::e0()).abs() / Self::e0()
+    }
+}
+
+/// max-norm distance of two states, ∞ if either is not finite.
+pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
+    let e = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    if e.is_finite() && a.len() == b.len() { e } else { f64::INFINITY }
+}
+
+/// The chain's state y = (q, v) as a fixed-size vector.
+pub fn chain_y0<const N: usize>() -> SVector<f64, N> {
+    let n = N / 2;
+    let q = chain_q0(n);
+    SVector::from_fn(|i, _| if i < n { q[i] } else { 0.0 })
+}

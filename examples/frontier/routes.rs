@@ -1,0 +1,415 @@
+//! The vectrix side of the frontier: every problem through the library (every integrator that
+//! applies: the adaptive pairs at a ladder of tolerances, the fixed-step methods at a ladder
+//! of step counts) and through scenes (both pairs at the same ladder of tolerances).
+
+use nalgebra::SVector;
+use serde_json::{Value, json};
+use vectrix::dynamics::scene::Scene;
+use vectrix::frames::Frame;
+use vectrix::ode::explicit::{Adaptive, Stepper, integrate_fixed};
+use vectrix::ode::harness::{Reference, Separable};
+use vectrix::ode::{GaussLegendre, LieMethod, RK4, integrate_lie, stormer_verlet};
+
+use crate::problems::{
+    CHAIN_T, EnergyPendulum, KEPLER, PENDULUM, chain_model, chain_scene, chain_y0, kepler_scene,
+    max_abs_diff, pendulum_scene, rigid_body, rigid_scene,
+};
+use crate::timing::median_time;
+
+/// Errors below this are round-off: a line stops there.
+pub const FLOOR: f64 = 1e-13;
+
+/// One point of a frontier (the JSON schema of `scripts/peers/frontier_common.py`).
+#[derive(Debug, Clone)]
+pub struct Point {
+    pub problem: String,
+    pub series: String,
+    pub route: &'static str,
+    pub method: String,
+    pub param_name: &'static str,
+    pub param: f64,
+    pub error: f64,
+    pub seconds: f64,
+    pub repeats: usize,
+    pub fevals: usize,
+}
+
+impl Point {
+    pub fn to_json(&self) -> Value {
+        json!({
+            "problem": self.problem, "series": self.series, "tool": "vectrix", "route": self.route,
+            "method": self.method, "param_name": self.param_name, "param": self.param,
+            "error": if self.error.is_finite() { Some(self.error) } else { None },
+            "seconds": self.seconds, "setup_seconds": 0.0, "repeats": self.repeats, "fevals": self.fevals,
+        })
+    }
+}
+
+/// The collected points and the ladders' limits.
+pub struct Ctx {
+    pub points: Vec<Point>,
+    /// Fewer ladder rungs (a smoke run).
+    pub quick: bool,
+    /// A line stops once a run takes longer than this [s].
+    pub cap: f64,
+}
+
+/// What one run returns: the final state (or the measured error) and the f-evals.
+type Outcome = Result<(Vec<f64>, usize), String>;
+
+impl Ctx {
+    fn tolerances(&self) -> Vec<f64> {
+        if self.quick { vec![1e-3, 1e-6, 1e-9] } else { (3..=13).map(|k| 10f64.powi(-k)).collect() }
+    }
+
+    /// Runs `run(param)` along `params`, timing each and measuring `error(final state)`;
+    /// stops a line at the round-off floor or once a run exceeds the cap.
+    #[allow(clippy::too_many_arguments)]
+    fn ladder(
+        &mut self,
+        problem: &str,
+        route: &'static str,
+        method: &str,
+        param_name: &'static str,
+        params: &[f64],
+        mut run: impl FnMut(f64) -> Outcome,
+        error: impl Fn(&[f64]) -> f64,
+    ) {
+        let series = match route {
+            "scene" => format!("vectrix scene {method}"),
+            _ => format!("vectrix {method}"),
+        };
+        for &param in params {
+            let (seconds, repeats, out) = median_time(|| run(param));
+            let (error, fevals) = match out {
+                Ok((y, fevals)) => (error(&y), fevals),
+                Err(_) => (f64::INFINITY, 0),
+            };
+            eprintln!(
+                "  {problem:16} {series:28} {param_name}={param:<10.3e} error {error:9.2e}  {seconds:.3e} s  x{repeats}"
+            );
+            self.points.push(Point {
+                problem: problem.into(),
+                series: series.clone(),
+                route,
+                method: method.into(),
+                param_name,
+                param,
+                error,
+                seconds,
+                repeats,
+                fevals,
+            });
+            if error < FLOOR || seconds > self.cap {
+                break;
+            }
+        }
+    }
+
+    /// Step counts ⌈t_end·2ᵏ⌉, k = 0, 1, … (quick: every third).
+    fn steps(&self, t_end: f64, kmax: i32) -> Vec<f64> {
+        let stride = if self.quick { 3 } else { 1 };
+        (0..=kmax).step_by(stride).map(|k| (t_end * 2f64.powi(k)).ceil()).collect()
+    }
+
+    /// A reference problem through the library: DP5 and DOP853 at every tolerance, RK4,
+    /// Gauss4 and Gauss6 at every step count.
+    pub fn library<const N: usize, R: Reference<N>>(&mut self, id: &str, p: &R) {
+        let (y0, t_end) = (p.y0(), p.t_end());
+        let err = |y: &[f64]| p.error(&SVector::<f64, N>::from_column_slice(y));
+        let tols = self.tolerances();
+        for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
+            let run = |tol: f64| -> Outcome {
+                let s = a
+                    .rtol(tol)
+                    .atol(tol)
+                    .solve(|t, y| p.rhs(t, y), 0.0, &y0, t_end)
+                    .map_err(|e| e.to_string())?;
+                Ok((s.last().as_slice().to_vec(), s.work.fevals))
+            };
+            self.ladder(id, "library", name, "rtol", &tols, run, err);
+        }
+        let steps = self.steps(t_end, 22);
+        self.ladder(
+            id,
+            "library",
+            "RK4",
+            "steps",
+            &steps,
+            |n| {
+                let (y, w) =
+                    integrate_fixed(&RK4, |t, y| p.rhs(t, y), 0.0, &y0, t_end, n as usize, |_, _| {})
+                        .map_err(|e| e.to_string())?;
+                Ok((y.as_slice().to_vec(), w.fevals))
+            },
+            err,
+        );
+        for g in [GaussLegendre::Gauss4, GaussLegendre::Gauss6] {
+            let run = |n: f64| -> Outcome {
+                let (y, w) = g
+                    .integrate(|t, y| p.rhs(t, y), 0.0, &y0, t_end, n as usize, |_, _| {})
+                    .map_err(|e| e.to_string())?;
+                Ok((y.as_slice().to_vec(), w.fevals))
+            };
+            self.ladder(id, "library", g.name(), "steps", &steps, run, err);
+        }
+    }
+
+    /// Störmer–Verlet on a separable problem y = (q, v).
+    pub fn verlet<const N: usize, const M: usize, R: Reference<N> + Separable<M>>(
+        &mut self,
+        id: &str,
+        p: &R,
+    ) {
+        let (y0, t_end) = (p.y0(), p.t_end());
+        let q0 = SVector::<f64, M>::from_fn(|i, _| y0[i]);
+        let v0 = SVector::<f64, M>::from_fn(|i, _| y0[M + i]);
+        let steps = self.steps(t_end, 24);
+        let run = |n: f64| -> Outcome {
+            let ((q, v), w) =
+                stormer_verlet(|_, q| p.accel(q), 0.0, &q0, &v0, t_end, n as usize, |_, _, _| {})
+                    .map_err(|e| e.to_string())?;
+            Ok(([q.as_slice(), v.as_slice()].concat(), w.fevals))
+        };
+        let err = |y: &[f64]| p.error(&SVector::<f64, N>::from_column_slice(y));
+        self.ladder(id, "library", "Verlet", "steps", &steps, run, err);
+    }
+
+    /// The rigid body on Rotor × ℝ³ by the Lie-group methods (the error on ω as elsewhere).
+    pub fn lie(&mut self, id: &str) {
+        let rb = rigid_body();
+        let a = Frame::new();
+        let f = rb.lie_rhs(&a);
+        let y0 = rb.lie_y0(&a);
+        let steps = self.steps(rb.t_end, 22);
+        for m in [LieMethod::Rkmk4, LieMethod::CrouchGrossman3] {
+            let run = |n: f64| -> Outcome {
+                let (y, w) = integrate_lie(m, &f, 0.0, &y0, rb.t_end, n as usize, |_, _| {})
+                    .map_err(|e| e.to_string())?;
+                Ok((vec![rb.lie_error(&a, &y).0], w.fevals))
+            };
+            self.ladder(id, "library", m.name(), "steps", &steps, run, |e| e[0]);
+        }
+    }
+
+    /// A scene at every tolerance with both pairs; `error` reads the run's final state. The
+    /// scene files are parsed and validated before the timed runs.
+    pub fn scene(&mut self, id: &str, toml: impl Fn(&str, f64) -> String, error: impl Fn(&[f64]) -> f64) {
+        let tols = self.tolerances();
+        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853")] {
+            let scenes: Vec<(f64, Scene)> = tols
+                .iter()
+                .map(|&tol| match Scene::from_toml(&toml(key, tol), "frontier") {
+                    Ok(s) => (tol, s),
+                    Err(e) => panic!("{id}: the frontier's scene is invalid: {e}"),
+                })
+                .collect();
+            let run = |tol: f64| -> Outcome {
+                let scene = &scenes.iter().find(|(t, _)| *t == tol).expect("built above").1;
+                let run = scene.run(&mut |_| {}).map_err(|e| e.to_string())?;
+                if !run.is_complete() {
+                    return Err("stopped early".into());
+                }
+                Ok((run.final_state, run.work.fevals))
+            };
+            self.ladder(id, "scene", name, "rtol", &tols, run, &error);
+        }
+    }
+
+    /// The rigid body: library, Lie-group methods and the ball-joint scene.
+    pub fn rigid_body(&mut self) {
+        let id = "rigid-body";
+        let rb = rigid_body();
+        self.library(id, &rb);
+        self.lie(id);
+        let exact = rb.exact_omega(rb.t_end);
+        // the scene's state is (quaternion, ω in link components)
+        self.scene(id, rigid_scene, |y| max_abs_diff(&y[4..7], exact.as_slice()));
+    }
+
+    /// Kepler e = 0.9: library, Verlet and the free-particle scene.
+    pub fn kepler(&mut self) {
+        let id = "kepler-e0.9";
+        self.library(id, &KEPLER);
+        self.verlet(id, &KEPLER);
+        let exact = KEPLER.exact(KEPLER.t_end());
+        // the scene's state is (x, y, z, quaternion, ẋ, ẏ, ż, ω)
+        self.scene(id, kepler_scene, |y| max_abs_diff(&[y[0], y[1], y[7], y[8]], exact.as_slice()));
+    }
+
+    /// The pendulum at θ₀ = 3: library, Verlet and the particle-on-a-pin scene.
+    pub fn pendulum(&mut self) {
+        let id = "pendulum";
+        self.library(id, &PENDULUM);
+        self.verlet(id, &PENDULUM);
+        let exact = PENDULUM.exact(PENDULUM.t_end());
+        self.scene(
+            id,
+            |m, tol| pendulum_scene(PENDULUM.theta0, PENDULUM.t_end(), 1, m, tol),
+            |y| max_abs_diff(y, exact.as_slice()),
+        );
+    }
+
+    /// The n-link chain (N = 2n states) through `Model::aba_into` and through its scene.
+    pub fn chain<const N: usize>(&mut self, reference: &[f64]) {
+        let n = N / 2;
+        let id = format!("chain-{n}");
+        let model = chain_model(n);
+        let y0 = chain_y0::<N>();
+        let tau = vec![0.0; n];
+        let err = |y: &[f64]| max_abs_diff(y, reference);
+        let tols = self.tolerances();
+        for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
+            let run = |tol: f64| -> Outcome {
+                let mut scratch = model.aba_scratch();
+                let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+                let s = a.rtol(tol).atol(tol).solve(f, 0.0, &y0, CHAIN_T).map_err(|e| e.to_string())?;
+                Ok((s.last().as_slice().to_vec(), s.work.fevals))
+            };
+            self.ladder(&id, "library", name, "rtol", &tols, run, err);
+        }
+        let steps = self.steps(CHAIN_T, 20);
+        let run = |k: f64| -> Outcome {
+            let mut scratch = model.aba_scratch();
+            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+            let (y, w) = integrate_fixed(&RK4, f, 0.0, &y0, CHAIN_T, k as usize, |_, _| {})
+                .map_err(|e| e.to_string())?;
+            Ok((y.as_slice().to_vec(), w.fevals))
+        };
+        self.ladder(&id, "library", "RK4", "steps", &steps, run, err);
+        let run = |k: f64| -> Outcome {
+            let mut scratch = model.aba_scratch();
+            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+            let (y, w) = GaussLegendre::Gauss6
+                .integrate(f, 0.0, &y0, CHAIN_T, k as usize, |_, _| {})
+                .map_err(|e| e.to_string())?;
+            Ok((y.as_slice().to_vec(), w.fevals))
+        };
+        self.ladder(&id, "library", "Gauss6", "steps", &steps, run, err);
+        self.scene(&id, |m, tol| chain_scene(n, m, tol), err);
+    }
+
+    /// The energy problem: max relative energy error at the checkpoints over 10⁴ periods.
+    pub fn energy(&mut self) {
+        let id = "energy-pendulum";
+        let t_end = EnergyPendulum::t_end();
+        let cps = EnergyPendulum::checkpoints();
+        let cp_time = |k: usize| t_end * (k as f64 / cps as f64);
+        let y0 = SVector::<f64, 2>::new(EnergyPendulum::THETA0, 0.0);
+        let f = |_: f64, y: &SVector<f64, 2>| SVector::<f64, 2>::new(y[1], -y[0].sin());
+        let tols = self.tolerances();
+        for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
+            // one integration, the checkpoints read off the dense output (as a scene does)
+            let run = |tol: f64| -> Outcome {
+                let e = |x: vectrix::ode::OdeError| x.to_string();
+                let mut st = Stepper::new(&a.rtol(tol).atol(tol), f, 0.0, y0, t_end).map_err(e)?;
+                let (mut worst, mut next) = (0.0f64, 1);
+                while !st.done() {
+                    st.step().map_err(e)?;
+                    while next <= cps && cp_time(next) <= st.t() {
+                        let y =
+                            if next == cps { *st.y() } else { st.dense().map_err(e)?.eval(cp_time(next)) };
+                        worst = worst.max(EnergyPendulum::rel(y[0], y[1]));
+                        next += 1;
+                    }
+                }
+                Ok((vec![worst], st.work().fevals))
+            };
+            self.ladder(id, "library", name, "rtol", &tols, run, |e| e[0]);
+        }
+        // fixed steps: s steps a period, a checkpoint every EVERY·s steps
+        let per_period: Vec<f64> =
+            if self.quick { vec![8.0, 64.0] } else { (2..=12).map(|k| 2f64.powi(k)).collect() };
+        let every = |s: f64| EnergyPendulum::EVERY * s as usize;
+        let total = |s: f64| EnergyPendulum::PERIODS * s as usize;
+        let run = |s: f64| -> Outcome {
+            let (mut worst, mut k) = (0.0f64, 0usize);
+            let (_, w) = integrate_fixed(&RK4, f, 0.0, &y0, t_end, total(s), |_, y| {
+                k += 1;
+                if k % every(s) == 0 {
+                    worst = worst.max(EnergyPendulum::rel(y[0], y[1]));
+                }
+            })
+            .map_err(|e| e.to_string())?;
+            Ok((vec![worst], w.fevals))
+        };
+        self.ladder(id, "library", "RK4", "steps/period", &per_period, run, |e| e[0]);
+        let q0 = SVector::<f64, 1>::new(EnergyPendulum::THETA0);
+        let v0 = SVector::<f64, 1>::zeros();
+        let run = |s: f64| -> Outcome {
+            let (mut worst, mut k) = (0.0f64, 0usize);
+            let (_, w) = stormer_verlet(
+                |_, q| q.map(|x| -x.sin()),
+                0.0,
+                &q0,
+                &v0,
+                t_end,
+                total(s),
+                |_, q, v| {
+                    k += 1;
+                    if k % every(s) == 0 {
+                        worst = worst.max(EnergyPendulum::rel(q[0], v[0]));
+                    }
+                },
+            )
+            .map_err(|e| e.to_string())?;
+            Ok((vec![worst], w.fevals))
+        };
+        self.ladder(id, "library", "Verlet", "steps/period", &per_period, run, |e| e[0]);
+        for g in [GaussLegendre::Gauss4, GaussLegendre::Gauss6] {
+            let run = |s: f64| -> Outcome {
+                let (mut worst, mut k) = (0.0f64, 0usize);
+                let (_, w) = g
+                    .integrate(f, 0.0, &y0, t_end, total(s), |_, y| {
+                        k += 1;
+                        if k % every(s) == 0 {
+                            worst = worst.max(EnergyPendulum::rel(y[0], y[1]));
+                        }
+                    })
+                    .map_err(|e| e.to_string())?;
+                Ok((vec![worst], w.fevals))
+            };
+            self.ladder(id, "library", g.name(), "steps/period", &per_period, run, |e| e[0]);
+        }
+        // the scene checks the energy at its 1000 samples (every 10 periods) itself
+        let tols = self.tolerances();
+        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853")] {
+            let scenes: Vec<(f64, Scene)> = tols
+                .iter()
+                .map(|&tol| {
+                    let text = pendulum_scene(EnergyPendulum::THETA0, t_end, cps, key, tol);
+                    (tol, Scene::from_toml(&text, "frontier").expect("valid scene"))
+                })
+                .collect();
+            let run = |tol: f64| -> Outcome {
+                let scene = &scenes.iter().find(|(t, _)| *t == tol).expect("built above").1;
+                let run = scene.run(&mut |_| {}).map_err(|e| e.to_string())?;
+                if !run.is_complete() {
+                    return Err("stopped early".into());
+                }
+                // drift.max_abs = max |E − E(0)| over the samples
+                Ok((vec![run.drift[0].max_abs / EnergyPendulum::e0()], run.work.fevals))
+            };
+            self.ladder(id, "scene", name, "rtol", &tols, run, |e| e[0]);
+        }
+    }
+}
+
+/// y′ = (v, FD(q, v, 0)) of a chain through the articulated-body algorithm.
+#[inline]
+pub fn chain_rhs<const N: usize>(
+    model: &vectrix::dynamics::multibody::Model,
+    tau: &[f64],
+    scratch: &mut vectrix::dynamics::multibody::AbaScratch,
+    y: &SVector<f64, N>,
+) -> SVector<f64, N> {
+    let n = N / 2;
+    let mut out = SVector::<f64, N>::zeros();
+    let (q, v) = y.as_slice().split_at(n);
+    let (qd, vd) = out.as_mut_slice().split_at_mut(n);
+    qd.copy_from_slice(v);
+    if model.aba_into(q, v, tau, None, vd, scratch).is_err() {
+        vd.fill(f64::NAN);
+    }
+    out
+}

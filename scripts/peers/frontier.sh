@@ -1,0 +1,33 @@
+#!/bin/sh
+# The work–precision frontier against every peer (issue 24), in one command:
+#
+#   sh scripts/peers/frontier.sh            # everything (~1 h on 2 cores)
+#   sh scripts/peers/frontier.sh --quick    # a smoke run of the vectrix side only
+#
+# vectrix first (it also writes the chains' reference), then the peers one after the other,
+# every tool single-threaded; then the cross-check of the reference, the figures
+# docs/accuracy/peers-*.svg and the table in docs/performance.md. Points go to
+# docs/accuracy/peers-data/*.json (override with FRONTIER_RESULTS). Needs the venv of
+# ../shared/peers/README.md (PEERS_VENV, default ~/.venv-peers).
+set -e
+cd "$(dirname "$0")/../.."
+export RAYON_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1
+DATA=${FRONTIER_RESULTS:-docs/accuracy/peers-data}
+export FRONTIER_RESULTS="$(pwd)/$DATA"
+PY=${PEERS_VENV:-$HOME/.venv-peers}/bin/python
+echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) CPUs; $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"
+cargo build --release --example frontier
+if [ "$1" = "--quick" ]; then
+  ./target/release/examples/frontier run --quick --out "$DATA"
+  exit 0
+fi
+./target/release/examples/frontier run --out "$DATA"
+cd scripts/peers
+for tool in mujoco scipy pinocchio sympy; do
+  echo "== $tool (load: $(cut -d' ' -f1-3 /proc/loadavg))"
+  $PY frontier_$tool.py
+done
+$PY check_reference.py
+cd ../..
+./target/release/examples/frontier plot --data "$DATA" --svg docs/accuracy --doc docs/performance.md
+echo "done: $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"

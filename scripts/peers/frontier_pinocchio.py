@@ -1,0 +1,56 @@
+"""Pinocchio's ABA (C++, called from Python) as the right-hand side of scipy's solve_ivp on the
+hinge chains: what a Pinocchio user who integrates with scipy pays. DOP853 and LSODA at rtol =
+atol = 1e-3 … 1e-13."""
+import numpy as np
+import pinocchio as pin
+
+import frontier_common as fc
+from frontier_scipy import ladder
+
+
+def chain_model(n):
+    """The chain of bench_mujoco.py: revolute joints about y, link i's centre at −(l/2)z and
+    the next joint at −l z, capsule moments, gravity −9.81 z (Pinocchio's default)."""
+    model = pin.Model()
+    perp, axial = fc.capsule_inertia()
+    inertia = pin.Inertia(fc.MASS, np.array([0.0, 0.0, -fc.LINK / 2]), np.diag([perp, perp, axial]))
+    parent = 0
+    for i in range(n):
+        place = pin.SE3(np.eye(3), np.array([0.0, 0.0, 0.0 if i == 0 else -fc.LINK]))
+        parent = model.addJoint(parent, pin.JointModelRY(), place, f"j{i}")
+        model.appendBodyToJoint(parent, inertia, pin.SE3.Identity())
+    model.gravity.linear = np.array([0.0, 0.0, -fc.GRAVITY])
+    return model
+
+
+class PinRhs:
+    def __init__(self, n):
+        self.n = n
+        self.model = chain_model(n)
+        self.data = self.model.createData()
+        self.tau = np.zeros(n)
+
+    def __call__(self, t, y):
+        q, v = y[:self.n], y[self.n:]
+        return np.concatenate([v, pin.aba(self.model, self.data, q, v, self.tau)])
+
+
+def main():
+    res = fc.Results("pinocchio", {"pin": pin.__version__, "numpy": np.__version__})
+    ref = fc.load_reference()
+    for n in fc.CHAIN_NS:
+        problem = f"chain-{n}"
+        if not fc.only(problem):
+            continue
+        rhs = PinRhs(n)
+        y0 = fc.chain_y0(n)
+        diff = np.max(np.abs(rhs(0, y0) - fc.ChainRhs(n)(0, y0)))
+        assert diff < 1e-9, f"{problem}: Pinocchio and numpy accelerations differ by {diff:e}"
+        state = ref[problem]["state"]
+        ladder(res, problem, rhs, y0, fc.CHAIN_T, lambda s, st=state: fc.chain_error(s.y[:, -1], st),
+               tool="pinocchio", series="pinocchio+{}", methods=("DOP853", "LSODA"))
+    res.save()
+
+
+if __name__ == "__main__":
+    main()
