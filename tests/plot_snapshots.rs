@@ -188,10 +188,12 @@ fn legend_styles(svg: &str) -> Vec<(String, String)> {
         el.split(&format!(r#" {name}=""#)).nth(1).and_then(|r| r.split('"').next()).unwrap_or("").to_string()
     };
     svg.lines()
-        .filter(|l| l.starts_with("<line") && {
-            let x1: f64 = attr(l, "x1").parse().unwrap_or(0.0);
-            let x2: f64 = attr(l, "x2").parse().unwrap_or(0.0);
-            x1 > 468.0 && (x2 - x1 - 22.0).abs() < 1e-9
+        .filter(|l| {
+            l.starts_with("<line") && {
+                let x1: f64 = attr(l, "x1").parse().unwrap_or(0.0);
+                let x2: f64 = attr(l, "x2").parse().unwrap_or(0.0);
+                x1 > 468.0 && (x2 - x1 - 22.0).abs() < 1e-9
+            }
         })
         .map(|l| (attr(l, "stroke"), attr(l, "stroke-dasharray")))
         .collect()
@@ -205,7 +207,9 @@ fn work_precision_eleven_methods_differ_in_colour_or_style() {
     // hex codes, yellow excluded as too faint on white).
     let okabe_ito = ["#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000"];
     let methods: Vec<(String, Vec<(f64, f64)>)> = (0..11)
-        .map(|i| (format!("method {i}"), vec![(1e-3, 1e-4 * f64::from(i + 1)), (1e-9, 1e-2 * f64::from(i + 1))]))
+        .map(|i| {
+            (format!("method {i}"), vec![(1e-3, 1e-4 * f64::from(i + 1)), (1e-9, 1e-2 * f64::from(i + 1))])
+        })
         .collect();
     let named: Vec<(&str, Vec<(f64, f64)>)> = methods.iter().map(|(n, p)| (n.as_str(), p.clone())).collect();
     let svg = control::work_precision("11 methods", &named).to_svg().unwrap();

@@ -548,6 +548,15 @@ fn issue_16_scene_reference_documents_every_key_and_variant() {
         );
     }
     need("effect type", effects);
+    let with_loop = |l: &str| format!("{}\n[[loops]]\n{l}\n", body(free, sphere, ""));
+    let loops = expected_names(&message_of(&with_loop("type = \"zzz\"")));
+    for l in &loops {
+        need(
+            &format!("loop {l} key"),
+            expected_names(&message_of(&with_loop(&format!("type = \"{l}\"\nzzz = 1")))),
+        );
+    }
+    need("loop type", loops);
     let force = |profile: &str| {
         scene(&format!("type = \"torque\"\nbody = \"b\"\ndirection = [0.0, 0.0, 1.0]\nprofile = {profile}"))
     };

@@ -9,7 +9,7 @@
 use std::path::Path;
 
 use serde::Serialize;
-use vectrix_dynamics::scene::{Drift, Invariant, Run, RunWork, Scene, Stop};
+use vectrix_dynamics::scene::{ConstraintViolation, Drift, Invariant, Run, RunWork, Scene, Stop};
 use vectrix_flight::scene::FlightRun;
 use vectrix_plot::{Chart, Curve, LineChart};
 
@@ -44,6 +44,12 @@ struct Summary<'a> {
     units: &'static str,
     invariants: &'a [Invariant],
     drift: &'a [Drift],
+    /// Scenes with loops or rolling contacts: the largest |φ|∞ and |G v|∞ of the written rows
+    /// after projection (§9.11), and the largest drift projected away at a step end.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    max_constraint_violation: Option<ConstraintViolation>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    max_constraint_drift: Option<ConstraintViolation>,
     work: RunWork,
 }
 
@@ -83,6 +89,7 @@ pub(crate) fn y_label(run: &Run, o: &str) -> String {
         "omega_body" => "ω (body axes)".to_string(),
         "coordinates" => "q".to_string(),
         "speeds" => "q̇".to_string(),
+        "reaction" => "F (and couple M) on the first body".to_string(),
         k => k.to_string(),
     };
     let mut units: Vec<String> = Vec::new();
@@ -131,6 +138,8 @@ pub(crate) fn summary_json(scene: &Scene, run: &Run) -> Result<String, BoxError>
         units: run.unit_system,
         invariants: &run.invariants,
         drift: &run.drift,
+        max_constraint_violation: run.max_constraint_violation,
+        max_constraint_drift: run.max_constraint_drift,
         work: run.work,
     };
     Ok(serde_json::to_string_pretty(&summary)?)

@@ -125,6 +125,14 @@ pub(crate) fn print_summary(out: &mut impl Write, scene: &Scene, run: &Run) -> s
     if let Some(s) = &run.stop {
         writeln!(out, "INCOMPLETE (requested t = 0 … {} s): {}", scene.spec().duration, s.message)?;
     }
+    if let (Some(v), Some(d)) = (run.max_constraint_violation, run.max_constraint_drift) {
+        writeln!(
+            out,
+            "  constraints        max violation |φ| {:.2e}, |G v| {:.2e} after projection ({} projections; \
+             largest drift corrected |φ| {:.2e}, |G v| {:.2e})",
+            v.position, v.velocity, w.projections, d.position, d.velocity
+        )?;
+    }
     if run.invariants.is_empty() {
         writeln!(out, "no invariants follow from the declared effects")?;
     }

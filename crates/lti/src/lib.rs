@@ -21,9 +21,9 @@ mod realroots;
 mod rlocus;
 mod routh;
 mod sdof;
-mod shift;
 #[cfg(feature = "serde")]
 mod serde_impl;
+mod shift;
 mod ss;
 mod stability;
 mod sweep;

@@ -72,6 +72,16 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
             }
         }
     }
+    // loop joints: between two bodies their forces are internal (and, ideal, do no work); to
+    // the ground a ball's force passes through its fixed point, the others' do not
+    for l in &b.loops {
+        let ground = [l.a, l.b].into_iter().find(|x| x.0.is_none());
+        match (ground, &l.kind) {
+            (None, _) => {}
+            (Some(g), super::loops::LoopKind::Ball) => points.push(g.1),
+            (Some(_), _) => external_force = true,
+        }
+    }
     for e in &b.effects {
         match e {
             Effect::Uniform { g } => uniform = Some(uniform.unwrap_or_default() + g),

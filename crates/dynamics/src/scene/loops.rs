@@ -213,41 +213,68 @@ impl Scene {
         Ok((u * r, ud * r))
     }
 
-    /// All constraint rows at (q, v): loops, rolling contacts, inerters.
-    pub(crate) fn constraint_rows(&self, kin: &Kin, q: &[f64]) -> Result<Rows, String> {
+    /// The twists of the unit velocities at the poses of `kin`: entry k is the motion of
+    /// every link for v = e_k, so that a velocity constraint's row is read column by column.
+    fn unit_twists(&self, kin: &Kin) -> Vec<Kin> {
         let b = &self.built;
         let nv = b.model.nv();
-        let _ = q;
-        // twists of the unit velocities: column k of every G
-        let unit: Vec<Kin> = (0..nv)
+        (0..nv)
             .map(|k| {
                 let mut e = vec![0.0; nv];
                 e[k] = 1.0;
                 let (omega, vel) = twists(&b.bodies, &self.order, &kin.poses, &e);
                 Kin { poses: kin.poses.clone(), omega, vel }
             })
-            .collect();
-        let (alpha, acc) = bias_accelerations(&b.bodies, &self.order, kin);
+            .collect()
+    }
+
+    /// G (m × nv) at the poses of `kin`: the loop rows in loop order, then (with `rolling`) three
+    /// rows per rolling contact (the velocity of the material contact point).
+    fn jacobian_from(&self, kin: &Kin, unit: &[Kin], rolling: bool) -> Result<DMatrix<f64>, String> {
+        let b = &self.built;
+        let nv = b.model.nv();
         let mut cols: Vec<Vec<f64>> = vec![Vec::new(); nv];
-        let mut bias = Vec::new();
         for (k, u) in unit.iter().enumerate() {
             self.loop_rates(u, &mut cols[k]);
         }
+        if rolling {
+            for e in &b.effects {
+                if let Effect::Rolling { body, disk, r, n, .. } = e {
+                    let (pc, _) = self.contact_offset(kin, *body, *disk, *r, n)?;
+                    let el = kin.poses[*body].0;
+                    // the material point at the contact, in link components
+                    let p_link = el * (el.tr_mul(&b.bodies[*body].com) + pc);
+                    for (k, u) in unit.iter().enumerate() {
+                        cols[k].extend(u.point(&(Some(*body), p_link)).1.iter());
+                    }
+                }
+            }
+        }
+        let m = cols.first().map_or(0, Vec::len);
+        Ok(DMatrix::from_fn(m, nv, |r, c| cols[c][r]))
+    }
+
+    /// G of the loops and rolling contacts at the poses of `kin` (v does not enter).
+    pub(crate) fn velocity_jacobian(&self, kin: &Kin, rolling: bool) -> Result<DMatrix<f64>, String> {
+        self.jacobian_from(kin, &self.unit_twists(kin), rolling)
+    }
+
+    /// All constraint rows at (q, v): loops, rolling contacts, inerters.
+    pub(crate) fn constraint_rows(&self, kin: &Kin) -> Result<Rows, String> {
+        let b = &self.built;
+        let nv = b.model.nv();
+        let unit = self.unit_twists(kin);
+        let g = self.jacobian_from(kin, &unit, true)?;
+        let (alpha, acc) = bias_accelerations(&b.bodies, &self.order, kin);
+        let mut bias = Vec::with_capacity(g.nrows());
         self.loop_bias(kin, &alpha, &acc, &mut bias);
         let mut inerters = Vec::new();
         for e in &b.effects {
             match e {
                 Effect::Rolling { body, disk, r, n, .. } => {
                     let (pc, pc_dot) = self.contact_offset(kin, *body, *disk, *r, n)?;
-                    let com = b.bodies[*body].com;
-                    let el = kin.poses[*body].0;
-                    // the material point at the contact, in link components
-                    let p_link = el * (el.tr_mul(&com) + pc);
-                    for (k, u) in unit.iter().enumerate() {
-                        cols[k].extend(u.point(&(Some(*body), p_link)).1.iter());
-                    }
                     // d/dt v_P = a_c + α × (P − c) + ω × d/dt(P − c) at v̇ = 0
-                    let ac = kin.point_bias(&(Some(*body), com), &alpha, &acc);
+                    let ac = kin.point_bias(&(Some(*body), b.bodies[*body].com), &alpha, &acc);
                     let g = ac + alpha[*body].cross(&pc) + kin.omega[*body].cross(&pc_dot);
                     bias.extend(g.iter());
                 }
@@ -271,8 +298,6 @@ impl Scene {
                 _ => {}
             }
         }
-        let m = bias.len();
-        let g = DMatrix::from_fn(m, nv, |r, c| cols[c][r]);
         Ok(Rows { g, bias: DVector::from_vec(bias), inerters })
     }
 
@@ -296,7 +321,7 @@ impl Scene {
                 m_tot[(*dof, *dof)] += beta;
             }
         }
-        let rows = self.constraint_rows(kin, q)?;
+        let rows = self.constraint_rows(kin)?;
         for (g, gdot_v, b_in) in &rows.inerters {
             m_tot += g * g.transpose() * *b_in;
             forcing -= g * (b_in * gdot_v);
@@ -338,11 +363,19 @@ pub(crate) fn solve_dropping(
     {
         return Ok(out);
     }
-    // rebuild the independent set, row by row
+    let rows = independent_rows(m, g)?;
+    let out = attempt(&rows)?;
+    *keep = Some(rows);
+    Ok(out)
+}
+
+/// The rows of G kept, in order, when each row that depends on those before it (in the metric
+/// of `m`) is dropped.
+pub(crate) fn independent_rows(m: &DMatrix<f64>, g: &DMatrix<f64>) -> Result<Vec<usize>, DynamicsError> {
     let mut rows: Vec<usize> = Vec::new();
-    for r in 0..all {
+    for r in 0..g.nrows() {
         rows.push(r);
-        let (gs, _) = select(&rows);
+        let gs = DMatrix::from_fn(rows.len(), g.ncols(), |i, c| g[(rows[i], c)]);
         match KktFactor::new(m, &gs, DEPENDENT_ROW_REL_TOL) {
             Ok(_) => {}
             Err(DynamicsError::DependentConstraint { .. })
@@ -352,7 +385,5 @@ pub(crate) fn solve_dropping(
             Err(e) => return Err(e),
         }
     }
-    let out = attempt(&rows)?;
-    *keep = Some(rows);
-    Ok(out)
+    Ok(rows)
 }

@@ -18,6 +18,7 @@ mod invariants;
 mod kin;
 mod loops;
 mod outputs;
+mod project;
 mod quantities;
 mod query;
 mod rhs;
@@ -27,6 +28,7 @@ pub mod spec;
 
 pub use error::SceneError;
 pub use invariants::Invariant;
+pub use project::{ASSEMBLY_TOL, CONSTRAINT_TOL, ConstraintViolation};
 pub use quantities::{
     Expect, Schema, Step, body_schema, convert as convert_quantities, key_of, render as render_path, tag,
 };
@@ -112,6 +114,8 @@ pub struct Scene {
     pub(crate) solver: Adaptive,
     pub(crate) outputs: Vec<Output>,
     invariants: Vec<Invariant>,
+    /// The length scale of the constraint tolerances (see [`CONSTRAINT_TOL`]).
+    pub(crate) loop_scale: f64,
 }
 
 impl std::fmt::Debug for Scene {
@@ -193,7 +197,19 @@ impl Scene {
                 ));
             }
         }
-        let scene = Self { spec, built, order, ground: Ground::new(), needs, solver, outputs, invariants };
+        let mut scene = Self {
+            spec,
+            built,
+            order,
+            ground: Ground::new(),
+            needs,
+            solver,
+            outputs,
+            invariants,
+            loop_scale: 1.0,
+        };
+        scene.loop_scale = scene.constraint_scale();
+        scene.assemble(src)?;
         scene.check_start(src)?;
         Ok(scene)
     }

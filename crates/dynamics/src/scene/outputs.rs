@@ -3,13 +3,14 @@
 //!
 //! Book: §7.4, §7.6, §8.1 (momentum, angular momentum, energy).
 
-use nalgebra::Vector3;
+use nalgebra::{DVector, Vector3};
 
 use super::Scene;
 use super::SceneError;
 use super::build::{Built, Src, dims};
 use super::forces::centre;
 use super::kin::Kin;
+use super::loops::{Loop, LoopKind};
 use super::spec::{JointSpec, SceneSpec};
 use vectrix_units::Dimension;
 
@@ -27,10 +28,16 @@ pub(crate) enum Output {
     OmegaBody(usize),
     Coordinates(usize),
     Speeds(usize),
+    /// The force (and for a pin the couple) a loop joint exerts on its body `a`: the loop's
+    /// index and its first row among the constraint rows.
+    Reaction {
+        index: usize,
+        row: usize,
+    },
 }
 
 const VALID: &str = "q, v, energy, momentum, angular_momentum, position:BODY, velocity:BODY, omega:BODY, \
-omega_body:BODY, coordinates:BODY, speeds:BODY";
+omega_body:BODY, coordinates:BODY, speeds:BODY, reaction:LOOP";
 
 /// Parses the `outputs` list.
 pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output>, SceneError> {
@@ -40,6 +47,27 @@ pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output
         .map(|(k, o)| {
             let path = format!("outputs[{k}]");
             let bad = || src.invalid(&path, format!("unknown output `{o}`; valid: {VALID}"));
+            if let Some(name) = o.strip_prefix("reaction:") {
+                let mut row = 0;
+                for (index, l) in b.loops.iter().enumerate() {
+                    if l.name == name {
+                        return Ok(Output::Reaction { index, row });
+                    }
+                    row += l.rows();
+                }
+                let names: Vec<&str> = b.loops.iter().map(|l| l.name.as_str()).collect();
+                return Err(src.invalid(
+                    &path,
+                    format!(
+                        "unknown loop `{name}` in output `{o}`; valid: {}",
+                        if names.is_empty() {
+                            "none (the scene has no loops)".to_string()
+                        } else {
+                            names.join(", ")
+                        }
+                    ),
+                ));
+            }
             let (kind, body) = match o.split_once(':') {
                 Some((kd, name)) => {
                     let i = b.bodies.iter().position(|x| x.name == name).ok_or_else(|| {
@@ -81,9 +109,14 @@ pub(crate) fn count_columns(outputs: &[Output], b: &Built) -> usize {
             Output::Energy => 1,
             Output::Coordinates(i) => dims(&b.bodies[*i].joint).0,
             Output::Speeds(i) => dims(&b.bodies[*i].joint).1,
+            Output::Reaction { index, .. } if is_pin(b, *index) => 6,
             _ => 3,
         })
         .sum()
+}
+
+fn is_pin(b: &Built, index: usize) -> bool {
+    matches!(b.loops[index].kind, LoopKind::Pin { .. })
 }
 
 fn xyz(prefix: &str) -> Vec<String> {
@@ -112,6 +145,13 @@ impl Scene {
                 ),
                 Output::Speeds(i) => {
                     cols.extend((0..dims(&b.bodies[*i].joint).1).map(|k| format!("speeds:{}.{k}", name(*i))))
+                }
+                Output::Reaction { index, .. } => {
+                    let p = format!("reaction:{}", b.loops[*index].name);
+                    cols.extend(xyz(&p));
+                    if is_pin(b, *index) {
+                        cols.extend(["mx", "my", "mz"].iter().map(|c| format!("{p}.{c}")));
+                    }
                 }
             }
         }
@@ -155,6 +195,12 @@ impl Scene {
                 Output::Omega(_) | Output::OmegaBody(_) => dims.extend([Dimension::ANGULAR_VELOCITY; 3]),
                 Output::Coordinates(i) => dims.extend(joint_dims(*i, false)),
                 Output::Speeds(i) => dims.extend(joint_dims(*i, true)),
+                Output::Reaction { index, .. } => {
+                    dims.extend([Dimension::FORCE; 3]);
+                    if is_pin(b, *index) {
+                        dims.extend([Dimension::MOMENT; 3]);
+                    }
+                }
             }
         }
         dims
@@ -172,8 +218,21 @@ impl Scene {
             .unwrap_or_default()
     }
 
-    /// Values of the requested outputs at (q, v).
-    pub(crate) fn row(&self, kin: &Kin, q: &[f64], v: &[f64], out: &mut Vec<f64>) {
+    /// Whether an output needs the constraint multipliers (a loop's reaction).
+    pub(crate) fn needs_multipliers(&self) -> bool {
+        self.outputs.iter().any(|o| matches!(o, Output::Reaction { .. }))
+    }
+
+    /// Values of the requested outputs at (q, v); `lambda` holds the constraint multipliers
+    /// when [`Scene::needs_multipliers`].
+    pub(crate) fn row(
+        &self,
+        kin: &Kin,
+        q: &[f64],
+        v: &[f64],
+        lambda: Option<&DVector<f64>>,
+        out: &mut Vec<f64>,
+    ) {
         let b = &self.built;
         for o in &self.outputs {
             match o {
@@ -194,7 +253,35 @@ impl Scene {
                     let bd = &b.bodies[*i];
                     out.extend_from_slice(&v[bd.vi..bd.vi + dims(&bd.joint).1]);
                 }
+                Output::Reaction { index, row } => {
+                    let lam = |k: usize| lambda.and_then(|l| l.get(row + k).copied()).unwrap_or(0.0);
+                    let (force, couple) = reaction(kin, &b.loops[*index], lam);
+                    out.extend(force.iter());
+                    if let Some(m) = couple {
+                        out.extend(m.iter());
+                    }
+                }
             }
         }
+    }
+}
+
+/// The force (ground components) and, for a pin, the couple that a loop joint exerts on its
+/// body `a`, from the multipliers of its rows: the generalized constraint force is −Gᵀλ, so a
+/// row λ·(v_a − v_b)·n gives −λn on `a`, and a pin's axis row λ·(ω_b − ω_a)·(k × e) gives the
+/// couple λ(k × e) on `a` (§6.10: `b` receives the opposite).
+fn reaction(kin: &Kin, l: &Loop, lam: impl Fn(usize) -> f64) -> (Vector3<f64>, Option<Vector3<f64>>) {
+    let orient = |body: Option<usize>| body.map_or_else(nalgebra::Matrix3::identity, |i| kin.poses[i].0);
+    let (ea, eb) = (orient(l.a.0), orient(l.b.0));
+    let three = -Vector3::new(lam(0), lam(1), lam(2));
+    match &l.kind {
+        LoopKind::Ball => (three, None),
+        LoopKind::Pin { e1_a, e2_a, axis_b } => {
+            let k = eb.tr_mul(axis_b);
+            let couple = k.cross(&ea.tr_mul(e1_a)) * lam(3) + k.cross(&ea.tr_mul(e2_a)) * lam(4);
+            (three, Some(couple))
+        }
+        LoopKind::Line { n1_b, n2_b } => (-(eb.tr_mul(n1_b) * lam(0) + eb.tr_mul(n2_b) * lam(1)), None),
+        LoopKind::Plane { n_b } => (-(eb.tr_mul(n_b) * lam(0)), None),
     }
 }

@@ -68,7 +68,7 @@ impl Scene {
             }
         }
         if self.needs.inerters {
-            m = self.mass_with_inerters(&kin, q, m).map_err(fail)?;
+            m = self.mass_with_inerters(&kin, m).map_err(fail)?;
         }
         // Q = τ_applied − RNEA(q, v, 0; loads): the joint forces that produce v̇ = 0, negated
         let mut tau = vec![0.0; nv];

@@ -5,7 +5,7 @@
 //!
 //! Book: §7.11 (ABA, CRBA), §6.8 (inerters), §4.18 and §9.12 (rolling), §9.11 (loops).
 
-use nalgebra::DMatrix;
+use nalgebra::{DMatrix, DVector};
 
 use super::forces::{Loads, apply};
 use super::kin::{Kin, kinematics_into, qdot};
@@ -91,6 +91,26 @@ impl Scene {
         out: &mut [f64],
         w: &mut RhsScratch,
     ) -> Result<(), String> {
+        self.deriv_lambda(t, y, out, w).map(|_| ())
+    }
+
+    /// The multipliers λ of the constraint rows (loops in loop order, then rolling contacts)
+    /// at (t, y): −Gᵀλ is the generalized constraint force (§9.11).
+    pub(crate) fn multipliers(&self, t: f64, y: &[f64]) -> Result<DVector<f64>, String> {
+        let mut out = vec![0.0; y.len()];
+        Ok(self
+            .deriv_lambda(t, y, &mut out, &mut RhsScratch::new(self))?
+            .unwrap_or_else(|| DVector::zeros(0)))
+    }
+
+    /// [`Scene::deriv_into`], returning the multipliers when the scene has constraint rows.
+    fn deriv_lambda(
+        &self,
+        t: f64,
+        y: &[f64],
+        out: &mut [f64],
+        w: &mut RhsScratch,
+    ) -> Result<Option<DVector<f64>>, String> {
         let b = &self.built;
         let nq = b.model.nq();
         let (q, v) = y.split_at(nq);
@@ -112,21 +132,17 @@ impl Scene {
             if !self.needs.loads {
                 kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
             }
-            let (a, _) = self.constrained_solve(&w.kin, q, vd, &mut w.keep)?;
+            let (a, lambda) = self.constrained_solve(&w.kin, q, vd, &mut w.keep)?;
             vd.copy_from_slice(a.as_slice());
+            return Ok(Some(lambda));
         }
-        Ok(())
+        Ok(None)
     }
 
     /// M + Σ b g gᵀ (+ rotational inerters): the mass matrix with the inerters, for
     /// [`Scene::query`].
-    pub(crate) fn mass_with_inerters(
-        &self,
-        kin: &Kin,
-        q: &[f64],
-        mut m: DMatrix<f64>,
-    ) -> Result<DMatrix<f64>, String> {
-        for (g, _, b_in) in &self.constraint_rows(kin, q)?.inerters {
+    pub(crate) fn mass_with_inerters(&self, kin: &Kin, mut m: DMatrix<f64>) -> Result<DMatrix<f64>, String> {
+        for (g, _, b_in) in &self.constraint_rows(kin)?.inerters {
             m += g * g.transpose() * *b_in;
         }
         Ok(m)

@@ -18,6 +18,7 @@ use vectrix_units::{Dimension, UnitSystem};
 
 use super::build::Src;
 use super::kin::{Kin, kinematics, normalize};
+use super::project::{ConstraintViolation, ProjectScratch};
 use super::rhs::RhsScratch;
 use super::spec::{Profile, SceneSpec};
 use super::{Invariant, Scene, SceneError};
@@ -159,6 +160,9 @@ pub struct RunWork {
     pub impacts: usize,
     /// Restarts of the integrator: impacts and discontinuities of load profiles.
     pub restarts: usize,
+    /// Steps after which the state was projected back onto the loop and rolling constraints
+    /// (each restarts the integrator: one more f-eval).
+    pub projections: usize,
     /// Wall time [s].
     pub wall_seconds: f64,
 }
@@ -222,6 +226,12 @@ pub struct Run {
     /// `Some` when the run ended before its duration (budget or cancellation): the rows hold
     /// what was computed.
     pub stop: Option<Stop>,
+    /// For scenes with loops or rolling contacts: the largest constraint violation of the
+    /// written rows and of the step ends, after projection (§9.11).
+    pub max_constraint_violation: Option<ConstraintViolation>,
+    /// For scenes with loops or rolling contacts: the largest violation the integrator left at
+    /// a step end before it was projected away (the drift that projection corrects).
+    pub max_constraint_drift: Option<ConstraintViolation>,
 }
 
 impl Run {
@@ -421,7 +431,12 @@ impl Scene {
             work: RunWork::default(),
             final_state: Vec::new(),
             stop: None,
+            max_constraint_violation: None,
+            max_constraint_drift: None,
         };
+        let constrained = self.has_constraints();
+        let mut sample_projection = ProjectScratch::default();
+        let mut step_projection = ProjectScratch::default();
         let sample_time = |k: usize| duration * (k as f64 / spec.samples as f64);
         let fail = |t: f64, e: String| SceneError::Run { t, message: e };
 
@@ -429,10 +444,21 @@ impl Scene {
         let mut record = |run: &mut Run, t: f64, y: &[f64]| -> Result<(), SceneError> {
             let mut y = y.to_vec();
             normalize(&b.bodies, &mut y[..nq]);
+            if constrained {
+                // a sample between step ends comes from the interpolant: project it too
+                let (_, after) = self.project(&mut y, &mut sample_projection).map_err(|e| fail(t, e))?;
+                run.max_constraint_violation =
+                    Some(run.max_constraint_violation.unwrap_or_default().max(after));
+            }
+            let lambda = if self.needs_multipliers() {
+                Some(self.multipliers(t, &y).map_err(|e| fail(t, e))?)
+            } else {
+                None
+            };
             let (q, v) = y.split_at(nq);
             let kin = kinematics(&b.model, &b.bodies, &self.order, q, v).map_err(|e| fail(t, e))?;
             let mut row = Vec::with_capacity(run.columns.len());
-            self.row(&kin, q, v, &mut row);
+            self.row(&kin, q, v, lambda.as_ref(), &mut row);
             run.t.push(t);
             run.rows.push(row);
             for tr in &mut trackers {
@@ -450,6 +476,11 @@ impl Scene {
         let mut y0 = self.initial_state();
         if self.needs.impacts {
             run.work.impacts += self.resolve_contacts(&mut y0).map_err(|e| fail(0.0, e))?;
+        }
+        if constrained {
+            let (before, after) = self.project(&mut y0, &mut step_projection).map_err(|e| fail(0.0, e))?;
+            run.max_constraint_drift = Some(before);
+            run.max_constraint_violation = Some(after);
         }
         record(&mut run, 0.0, &y0)?;
         let mut next_sample = 1;
@@ -584,8 +615,26 @@ impl Scene {
                 }
                 run.work.impacts += k;
                 run.work.restarts += 1;
+                if constrained {
+                    let (before, after) =
+                        self.project(&mut y, &mut step_projection).map_err(|e| fail(te, e))?;
+                    run.max_constraint_drift = Some(run.max_constraint_drift.unwrap_or_default().max(before));
+                    run.max_constraint_violation =
+                        Some(run.max_constraint_violation.unwrap_or_default().max(after));
+                }
                 geo = self.geometry(&y).map_err(|e| fail(te, e))?;
                 st.restart(te, y).map_err(ode_err)?;
+            } else if constrained {
+                // drift control: back onto φ(q) = 0 and G v = 0, and restart from there
+                let mut y = st.y().clone();
+                let (before, after) = self.project(&mut y, &mut step_projection).map_err(|e| fail(t1, e))?;
+                run.max_constraint_drift = Some(run.max_constraint_drift.unwrap_or_default().max(before));
+                run.max_constraint_violation =
+                    Some(run.max_constraint_violation.unwrap_or_default().max(after));
+                if before != after {
+                    st.restart(t1, y).map_err(ode_err)?;
+                    run.work.projections += 1;
+                }
             }
             (ctl.progress)(st.t() / duration);
             // budgets: cancellation every step, wall time and the pace every 64 steps
