@@ -196,5 +196,82 @@ fn scene_overhead(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, scenes, scene_overhead);
+/// θ₂(2 s) of the four-bar from scripts/peers/bench_mujoco_four_bar.py (scipy DOP853 on the
+/// index-1 equations in absolute angles, rtol = atol = 1e-12; independent of vectrix).
+const FOUR_BAR_TH2_REF: f64 = 12.118579864419;
+
+/// The peer script's initial state: assembled at θ₂ = 0.3 by Newton from (1.2, 1.9), crank rate
+/// 6 rad/s, Φ_q q̇ = 0. Returns absolute angles and rates (θ₂, θ₃, θ₄).
+fn four_bar_start() -> ([f64; 3], [f64; 3]) {
+    let (a, b, c, d) = (1.0, 3.5, 3.0, 4.0);
+    let (t2, mut t3, mut t4) = (0.3_f64, 1.2_f64, 1.9_f64);
+    for _ in 0..50 {
+        let r = [a * t2.cos() + b * t3.cos() - c * t4.cos() - d, a * t2.sin() + b * t3.sin() - c * t4.sin()];
+        if r[0].abs().max(r[1].abs()) < 1e-15 {
+            break;
+        }
+        // ∂r/∂(θ₃, θ₄)
+        let j = [[-b * t3.sin(), c * t4.sin()], [b * t3.cos(), -c * t4.cos()]];
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        t3 -= (j[1][1] * r[0] - j[0][1] * r[1]) / det;
+        t4 -= (-j[1][0] * r[0] + j[0][0] * r[1]) / det;
+    }
+    let w2 = 6.0;
+    let j = [[-b * t3.sin(), c * t4.sin()], [b * t3.cos(), -c * t4.cos()]];
+    let rhs = [a * t2.sin() * w2, -a * t2.cos() * w2];
+    let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    let w3 = (j[1][1] * rhs[0] - j[0][1] * rhs[1]) / det;
+    let w4 = (-j[1][0] * rhs[0] + j[0][0] * rhs[1]) / det;
+    ([t2, t3, t4], [w2, w3, w4])
+}
+
+/// The peer's four-bar as a scene (bars of unit density: masses 1, 3.5, 3; gravity 9.81 in the
+/// plane), DOPRI5 at `rtol`, over 2 s.
+fn four_bar_scene(rtol: f64) -> Scene {
+    let ([t2, t3, t4], [w2, w3, w4]) = four_bar_start();
+    let text = format!(
+        "name = \"four_bar\"\nduration = 2.0\nsamples = 2\nmethod = {{ name = \"dopri5\", rtol = {rtol:e} }}\n\
+         outputs = [\"coordinates:crank\"]\n\
+         [[bodies]]\nname = \"crank\"\njoint = {{ type = \"pin\", axis = [0.0, 0.0, 1.0] }}\n\
+         mass = {{ shape = \"rod\", mass = 1.0, length = 1.0 }}\ncom = [0.5, 0.0, 0.0]\nq = [{t2:e}]\nv = [{w2:e}]\n\
+         [[bodies]]\nname = \"coupler\"\nparent = \"crank\"\njoint = {{ type = \"pin\", axis = [0.0, 0.0, 1.0] }}\n\
+         offset = [1.0, 0.0, 0.0]\nmass = {{ shape = \"rod\", mass = 3.5, length = 3.5 }}\ncom = [1.75, 0.0, 0.0]\n\
+         q = [{:e}]\nv = [{:e}]\n\
+         [[bodies]]\nname = \"rocker\"\njoint = {{ type = \"pin\", axis = [0.0, 0.0, 1.0] }}\noffset = [4.0, 0.0, 0.0]\n\
+         mass = {{ shape = \"rod\", mass = 3.0, length = 3.0 }}\ncom = [1.5, 0.0, 0.0]\nq = [{t4:e}]\nv = [{w4:e}]\n\
+         [[loops]]\ntype = \"pin\"\nname = \"tip\"\na = {{ body = \"coupler\", point = [3.5, 0.0, 0.0] }}\n\
+         b = {{ body = \"rocker\", point = [3.0, 0.0, 0.0] }}\naxis = [0.0, 0.0, 1.0]\n\
+         [[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, -9.81, 0.0]\n",
+        t3 - t2,
+        w3 - w2
+    );
+    Scene::from_toml(&text, "four_bar").expect("the peer's four-bar as a scene")
+}
+
+/// The four-bar scene beside MuJoCo (scripts/peers/bench_mujoco_four_bar.py, same sitting):
+/// prints the error of θ₂(2 s) and the largest violation of each setting, then times them.
+fn four_bar_vs_mujoco(c: &mut Criterion) {
+    let mut g = c.benchmark_group("four_bar_scene_2s");
+    g.sample_size(10);
+    for rtol in [1e-6, 1e-8, 1e-10] {
+        let scene = four_bar_scene(rtol);
+        let run = scene.run(&mut |_| {}).expect("runs");
+        let th2 = run.column("coordinates:crank.0").expect("crank angle");
+        let v = run.max_constraint_violation.unwrap_or_default();
+        println!(
+            "four-bar scene rtol {rtol:e}: |θ₂(2) − ref| = {:.1e}, max |φ| {:.1e}, |G v| {:.1e}, {} f-evals, {} projections",
+            (th2[th2.len() - 1] - FOUR_BAR_TH2_REF).abs(),
+            v.position,
+            v.velocity,
+            run.work.fevals,
+            run.work.projections
+        );
+        g.bench_function(BenchmarkId::from_parameter(format!("rtol_{rtol:e}")), |b| {
+            b.iter(|| black_box(scene.run(&mut |_| {}).expect("runs")))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, scenes, scene_overhead, four_bar_vs_mujoco);
 criterion_main!(benches);

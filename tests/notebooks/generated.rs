@@ -663,7 +663,7 @@ fn notebook_07_dynamics() {
             30.0,
         )
         .expect("smooth motion");
-    let y_end = sol.last();
+    let y_end = *sol.last();
     let u = 1.0 / y_end[1];
     let tail = 2f64.sqrt() * (u + u.powi(5) / 10.0 + u.powi(9) / 24.0 + 5.0 * u.powi(13) / 208.0);
     println!("θ(30) = {}, x(30) = {}, θ∞ = θ(30) + tail = {}", Rounded(y_end[0]), Rounded(y_end[1]), Rounded(y_end[0] + tail));
@@ -1031,11 +1031,11 @@ fn notebook_09_lagrange() {
             out[1] = a * q[0].sin() + b * q[1].sin() - c * q[2].sin();
         }
     }
-    let linkage = Linkage { a: 1.0, b: 3.5, c: 3.0, d: 4.0 };
-    // assemble at crank angle θ₂* from a guess: the loop rows plus θ₂ − θ₂* = 0, metric M = I
-    let assemble = |th2: f64, guess: &[f64]| {
+    /// Assembles the linkage at crank angle θ₂* from a guess: the loop rows plus θ₂ − θ₂* = 0,
+    /// metric M = I.
+    fn assemble(linkage: &Linkage, th2: f64, guess: &[f64]) -> Result<Vec<f64>, vectrix::dynamics::DynamicsError> {
         let rows = |q: &[f64]| {
-            let t = constraint_terms(&linkage, q, &[0.0; 3], 0.0)?;
+            let t = constraint_terms(linkage, q, &[0.0; 3], 0.0)?;
             let mut jac = DMatrix::zeros(3, 3);
             jac.rows_mut(0, 2).copy_from(&t.jacobian);
             jac[(2, 0)] = 1.0;
@@ -1043,26 +1043,27 @@ fn notebook_09_lagrange() {
         };
         let plus = |q: &[f64], dq: &DVector<f64>| Ok(q.iter().zip(dq.iter()).map(|(x, dx)| x + dx).collect());
         project_positions(guess, &DMatrix::identity(3, 3), rows, plus, &ProjectionOptions::default()).map(|p| p.q)
-    };
-    // the coupler point 1.2 along the coupler from the crank pin and 0.8 to its left
-    let (u, v) = (1.2, 0.8);
-    let coupler_point = |q: &[f64]| {
+    }
+    /// The coupler point 1.2 along the coupler from the crank pin and 0.8 to its left.
+    fn coupler_point(linkage: &Linkage, q: &[f64]) -> (f64, f64) {
+        let (u, v) = (1.2, 0.8);
         let pin = (linkage.a * q[0].cos(), linkage.a * q[0].sin());
         (pin.0 + u * q[1].cos() - v * q[1].sin(), pin.1 + u * q[1].sin() + v * q[1].cos())
-    };
+    }
+    let linkage = Linkage { a: 1.0, b: 3.5, c: 3.0, d: 4.0 };
     let k3 = (linkage.a.powi(2) - linkage.b.powi(2) + linkage.c.powi(2) + linkage.d.powi(2)) / (2.0 * linkage.a * linkage.c);
     let (mut q, mut curve, mut worst) = (vec![0.0, 1.2, 1.9], Vec::new(), 0.0_f64);
     for k in 0..=180 {
         let th2 = std::f64::consts::TAU * f64::from(k) / 180.0;
-        q = assemble(th2, &q).expect("a Grashof crank-rocker assembles at every crank angle");
+        q = assemble(&linkage, th2, &q).expect("a Grashof crank-rocker assembles at every crank angle");
         let freudenstein = linkage.d / linkage.a * q[2].cos() - linkage.d / linkage.c * q[0].cos() + k3 - (q[0] - q[2]).cos();
         worst = worst.max(freudenstein.abs());
-        curve.push(coupler_point(&q));
+        curve.push(coupler_point(&linkage, &q));
     }
     println!("largest Freudenstein residual over a full turn of the crank: {worst:.1e}");
     assert!(worst < 1e-11);
     // cell 8
-    let q60 = assemble(std::f64::consts::FRAC_PI_3, &[1.0, 1.2, 1.9]).expect("assembles");
+    let q60 = assemble(&linkage, std::f64::consts::FRAC_PI_3, &[1.0, 1.2, 1.9]).expect("assembles");
     let pin = (linkage.a * q60[0].cos(), linkage.a * q60[0].sin());
     let tip = (linkage.d + linkage.c * q60[2].cos(), linkage.c * q60[2].sin());
     let chart = Chart {
@@ -1073,7 +1074,7 @@ fn notebook_09_lagrange() {
         curves: vec![
             Curve::new("coupler point", curve, 0),
             Curve::new("linkage at θ₂ = 60°", vec![(0.0, 0.0), pin, tip, (linkage.d, 0.0)], 1),
-            Curve::new("coupler plate", vec![pin, coupler_point(&q60), tip], 2),
+            Curve::new("coupler plate", vec![pin, coupler_point(&linkage, &q60), tip], 2),
         ],
         ..Chart::default()
     };
@@ -1424,7 +1425,8 @@ fn notebook_15_linear_systems() {
     // cell 1
     // cell 2
     use vectrix::lti::*;
-    use vectrix::nalgebra::dmatrix;
+    // dmatrix! expands to paths under `nalgebra`: bring vectrix's re-export in under that name
+    use vectrix::nalgebra::{self, dmatrix};
     use vectrix::plot::control;
     use vectrix::prelude::*;
 
@@ -1599,8 +1601,11 @@ fn notebook_16_frequency_response() {
         let peak = r.magnitude_db.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         println!("{name}: peak {} dB (|G| = {})", Rounded(peak), Rounded(10f64.powf(peak / 20.0)));
     }
-    let named: Vec<(&str, &FrequencyResponse)> = family.iter().map(|(n, r)| (n.as_str(), r)).collect();
-    show(control::bode("Problem 16.8.4: 1/(s² + 2ζs + 1)", &named, None).expect("nonempty").to_svg().expect("finite"));
+    {
+        // a borrow of `family` lives only inside this block (evcxr keeps top-level values)
+        let named: Vec<(&str, &FrequencyResponse)> = family.iter().map(|(n, r)| (n.as_str(), r)).collect();
+        show(control::bode("Problem 16.8.4: 1/(s² + 2ζs + 1)", &named, None).expect("nonempty").to_svg().expect("finite"));
+    }
     // cell 5
     let l = tf(&[1.0], &[1.0, 1.0, 0.0]);
     let led = l.series(&tf(&[1.0, 2.0], &[1.0, 20.0])).expect("finite product");
