@@ -399,8 +399,9 @@ fn notebooks_are_guided_tours() {
 
 /// The outputs are stored, so that a reader sees them without running anything
 /// (`scripts/notebooks.sh` executes the notebooks with the evcxr kernel and stores them). The
-/// rule, per code cell (see [`expectations`]): a cell that prints has at least one `stream` or
-/// `display_data` output; a cell that draws has a `display_data` output with `image/svg+xml`; a
+/// rule, per code cell (see [`expectations`]): a cell that prints has at least one `stream`,
+/// `display_data` or `execute_result` output; a cell that draws has a `display_data` or
+/// `execute_result` output with `image/svg+xml` (evcxr's form for printed content); a
 /// cell that ends in an expression has an `execute_result` or a `display_data`; no cell has an
 /// `error` output. A stored output that no longer matches an edited cell is not detected here:
 /// re-run `scripts/notebooks.sh` after editing a notebook.
@@ -411,15 +412,17 @@ fn stored_outputs_are_present() {
         for (k, cell) in code_cells_with_outputs(&nb).iter().enumerate() {
             let (prints, draws, returns) = expectations(&cell.source);
             let has = |kinds: &[&str]| cell.outputs.iter().any(|o| kinds.contains(&o.kind.as_str()));
-            let svg = cell
-                .outputs
-                .iter()
-                .any(|o| o.kind == "display_data" && o.mimes.iter().any(|m| m == "image/svg+xml"));
+            // evcxr turns printed EVCXR_BEGIN_CONTENT blocks into an `execute_result` (or a
+            // `display_data`) carrying the SVG
+            let svg = cell.outputs.iter().any(|o| {
+                matches!(o.kind.as_str(), "display_data" | "execute_result")
+                    && o.mimes.iter().any(|m| m == "image/svg+xml")
+            });
             let name = format!("{} code cell {}", nb.display(), k + 1);
             if cell.outputs.iter().any(|o| o.kind == "error") {
                 missing.push(format!("{name}: stored error output"));
             }
-            if prints && !has(&["stream", "display_data"]) {
+            if prints && !has(&["stream", "display_data", "execute_result"]) {
                 missing.push(format!("{name}: prints but has no stored output"));
             }
             if draws && !svg {

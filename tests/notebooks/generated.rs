@@ -1537,18 +1537,21 @@ fn notebook_15_units() {
     println!("ω × r = {:?} ft/s", v.resolve_in(&a, "ft/s").expect("a velocity"));
     assert!((v.magnitude().value_in("ft/s").expect("ft/s") - 2.0 * std::f64::consts::TAU).abs() < 1e-12);
     // cell 6
-    let j = |t: &str| Measure::<MomentOfInertia>::parse(t).expect("an inertia");
-    let mp = principal_mass_properties(
-        &a,
-        Measure::<Mass>::new(13_000.0 / 32.2, "slug").expect("a mass"),
-        Physical::zero(),
-        [j("27915 slug*ft^2"), j("25000 slug*ft^2"), j("47085 slug*ft^2")],
-    )
-    .expect("physical inertia");
-    let jj = mp.inertia_resolved(&a);
-    for (k, row) in jj.iter().enumerate() {
-        let jkk = row[k];
-        println!("J[{k}{k}] = {:.6} kg·m² = {:.6} slug·ft²", jkk.si(), jkk.value_in("slug*ft^2").expect("unit"));
+    {
+        // in a block: evcxr does not keep closures between cells
+        let j = |t: &str| Measure::<MomentOfInertia>::parse(t).expect("an inertia");
+        let mp = principal_mass_properties(
+            &a,
+            Measure::<Mass>::new(13_000.0 / 32.2, "slug").expect("a mass"),
+            Physical::zero(),
+            [j("27915 slug*ft^2"), j("25000 slug*ft^2"), j("47085 slug*ft^2")],
+        )
+        .expect("physical inertia");
+        let jj = mp.inertia_resolved(&a);
+        for (k, row) in jj.iter().enumerate() {
+            let jkk = row[k];
+            println!("J[{k}{k}] = {:.6} kg·m² = {:.6} slug·ft²", jkk.si(), jkk.value_in("slug*ft^2").expect("unit"));
+        }
     }
     // cell 7
     let g0 = Quantity::parse("1 g0").and_then(|q| q.to_si(Dimension::ACCELERATION)).expect("an acceleration");

@@ -180,6 +180,7 @@ fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), (&'static str, String
     };
     let (mass, j) = match m {
         MassSpec::Particle { mass } => (pos(*mass, "mass")?, Matrix3::zeros()),
+        MassSpec::Massless {} => (0.0, Matrix3::zeros()),
         MassSpec::Sphere { mass, radius } => {
             let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
             (m, Matrix3::identity() * (0.4 * m * r * r))
@@ -328,6 +329,16 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
         };
         let (mass, inertia) =
             mass_props(&b.mass).map_err(|(k, m)| src.invalid(format!("{path}.mass.{k}"), m))?;
+        if matches!(b.mass, MassSpec::Massless {}) && !spec.bodies.iter().any(|c| c.parent == b.name) {
+            return Err(src.invalid(
+                format!("{path}.mass"),
+                format!(
+                    "`{}` is massless and carries no body: its motion is undetermined; valid: a massless link \
+                     only between its parent and another body (a gimbal ring, an arm), else give it a mass",
+                    b.name
+                ),
+            ));
+        }
         let (jq, jv) = dims(&b.joint);
         let u = |a: &[f64; 3]| v3(*a).try_normalize(0.0).unwrap_or_default();
         let (axis, direction) = match &b.joint {

@@ -137,9 +137,9 @@ pub struct Drift {
     pub last: InvariantValue,
     /// max |x(t) − x(0)| (vector norm for vectors).
     pub max_abs: f64,
-    /// The scale of the relative drift: max(|x(0)|, the sum of the magnitudes of its terms at
-    /// t = 0) (T for energy, Σ m|v_c| for momentum, Σ |r × m v| + |J ω| for H), so that an
-    /// invariant whose value is zero still gets a meaningful relative drift.
+    /// The scale of the relative drift: max(|x(0)|, the largest sum over the samples of the
+    /// magnitudes of its terms) (T for energy, Σ m|v_c| for momentum, Σ |r||m v| + |J ω| for
+    /// H), so that an invariant whose value is zero still gets a meaningful relative drift.
     pub scale: f64,
     /// max_abs / scale.
     pub max_rel: f64,
@@ -463,9 +463,9 @@ impl Scene {
             run.rows.push(row);
             for tr in &mut trackers {
                 let x = self.invariant_value(&tr.inv, &kin, q, v);
-                if tr.x0.is_none() {
-                    tr.scale = self.invariant_scale(&tr.inv, &kin, v);
-                }
+                // the size of the invariant's terms over the run (at t = 0 alone a pendulum
+                // released from rest has no kinetic term to measure a drift against)
+                tr.scale = tr.scale.max(self.invariant_scale(&tr.inv, &kin, v));
                 let x0 = *tr.x0.get_or_insert(x);
                 tr.last = x;
                 tr.max = tr.max.max((x - x0).norm());

@@ -183,6 +183,9 @@ pub enum MassSpec {
         /// Mass [kg].
         mass: f64,
     },
+    /// No mass and no inertia: an ideal intermediate link (a gimbal ring, a massless arm) that
+    /// carries other bodies; a massless body with nothing attached is refused.
+    Massless {},
     /// Solid sphere: J = (2/5) m r² I.
     Sphere {
         /// Mass [kg].
