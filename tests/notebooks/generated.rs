@@ -1554,21 +1554,24 @@ fn notebook_15_units() {
         }
     }
     // cell 7
-    let g0 = Quantity::parse("1 g0").and_then(|q| q.to_si(Dimension::ACCELERATION)).expect("an acceleration");
-    let (mut v_si, mut v_imp) = (Vec::new(), Vec::new());
-    for step in 0..=30 {
-        let t = 0.1 * f64::from(step);
-        let v = g0 * t; // kernel: SI
-        v_si.push((t, v));
-        v_imp.push((t, UnitSystem::Imperial.value_from_si(Dimension::VELOCITY, v).expect("finite")));
+    {
+        // in a block: evcxr does not keep closures between cells
+        let g0 = Quantity::parse("1 g0").and_then(|q| q.to_si(Dimension::ACCELERATION)).expect("an acceleration");
+        let (mut v_si, mut v_imp) = (Vec::new(), Vec::new());
+        for step in 0..=30 {
+            let t = 0.1 * f64::from(step);
+            let v = g0 * t; // kernel: SI
+            v_si.push((t, v));
+            v_imp.push((t, UnitSystem::Imperial.value_from_si(Dimension::VELOCITY, v).expect("finite")));
+        }
+        let label = |s: UnitSystem| format!("v [{}]", s.label(Dimension::VELOCITY));
+        let svg = LineChart::new("v = g₀ t in SI and English units (§15.19)", "t [s]", "v")
+            .with_series(label(UnitSystem::Si), v_si)
+            .with_series(label(UnitSystem::Imperial), v_imp)
+            .to_svg()
+            .expect("finite data");
+        println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
     }
-    let label = |s: UnitSystem| format!("v [{}]", s.label(Dimension::VELOCITY));
-    let svg = LineChart::new("v = g₀ t in SI and English units (§15.19)", "t [s]", "v")
-        .with_series(label(UnitSystem::Si), v_si)
-        .with_series(label(UnitSystem::Imperial), v_imp)
-        .to_svg()
-        .expect("finite data");
-    println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
 }
 
 /// `docs/notebooks/16-frequency-response.ipynb`
