@@ -1279,6 +1279,47 @@ fn notebook_12_steady_flight() {
     let mu = 9.8 * 6.3e6 * 6.3e6;
     let w_moon = 2.0 * PI / (28.0 * 86400.0);
     println!("μ_E = {} m³/s², distance to the Moon = {} m", Rounded(mu), Rounded((mu / (w_moon * w_moon)).cbrt()));
+    // cell 9
+    {
+        let text = r#"
+    name = "cartpole"
+    duration = 1.0
+    outputs = ["coordinates:cart"]
+
+    [[bodies]]
+    name = "cart"
+    joint = { type = "sleeve", axis = [1.0, 0.0, 0.0] }
+    mass = { shape = "box", mass = 2.0, sides = [0.4, 0.2, 0.2] }
+
+    [[bodies]]
+    name = "pole"
+    parent = "cart"
+    joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+    mass = { shape = "particle", mass = 0.5 }
+    com = [0.0, 0.8, 0.0]
+
+    [[effects]]
+    type = "uniform_gravity"
+    g = [0.0, -9.81, 0.0]
+
+    [[effects]]
+    type = "force"
+    at = { body = "cart" }
+    direction = [1.0, 0.0, 0.0]
+    profile = { kind = "constant", value = 0.0 }
+    "#;
+        let scene = vectrix::dynamics::scene::Scene::from_toml(text, "cartpole.toml").expect("a valid scene");
+        let lin = scene.linearize().expect("differentiable at the start");
+        for m in &lin.modes {
+            println!("λ = {} ± {}j  ωn = {} rad/s  ({})", Rounded(m.eigenvalue[0]), Rounded(m.eigenvalue[1]), Rounded(m.natural_frequency), m.dominant_state);
+        }
+        println!("√((M + m)g/(Ml)) = {}", Rounded((2.5_f64 * 9.81 / (2.0 * 0.8)).sqrt()));
+        let sys = vectrix::lti::StateSpace::new(lin.a.clone(), lin.b.clone(), lin.c.clone(), lin.d.clone()).expect("sizes agree");
+        let g = sys.to_tf(0, 0).expect("one input, one output");
+        let w = vectrix::lti::logspace(-1.0, 2.0, 300).expect("a valid range");
+        let r = g.bode(&w).expect("finite");
+        show(vectrix::plot::control::bode("Cart position from the push on the cart (linearized scene)", &[("x ← F", &r)], None).expect("one system").to_svg().expect("finite"));
+    }
 }
 
 /// `docs/notebooks/13-stability-derivatives.ipynb`

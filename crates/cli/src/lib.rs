@@ -23,6 +23,7 @@ use vectrix_units::UnitSystem;
 
 mod accuracy;
 mod check;
+mod linearize;
 mod output;
 mod report;
 mod run;
@@ -81,6 +82,17 @@ pub enum Command {
         #[arg(long, default_value = "si")]
         units: String,
     },
+    /// Linearizes a scene about its initial state (an equilibrium, or a steady motion when the
+    /// scene says `linearize = { steady = true }`; a flight scene about its trim) and writes
+    /// out/<scene>/linearization.json (state, A, B, C, D, eigenvalues, modes), poles.svg and,
+    /// with inputs and outputs, bode.svg.
+    Linearize {
+        /// The scene file (TOML).
+        scene: PathBuf,
+        /// Parent directory of the output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
     /// A short tour: frames, resolution, a rotor, a contraction.
     Tour,
     /// Work–precision harness of the integrators: writes the SVG diagrams into out/accuracy/
@@ -124,6 +136,7 @@ where
         Some(Command::Sweep { scene, param, out: dir, quiet, units }) => {
             sweep::sweep(out, &scene, &param, &dir, quiet, units.parse::<UnitSystem>()?)
         }
+        Some(Command::Linearize { scene, out: dir }) => done(linearize::linearize(out, &scene, &dir)),
         Some(Command::Tour) => done(tour::run(out).map_err(|e| e.to_string().into())),
         Some(Command::Accuracy { out: dir, quick, all }) => {
             done(accuracy::run(out, &dir, quick, all).map_err(|e| e.to_string().into()))

@@ -16,6 +16,7 @@ mod forces;
 mod impacts;
 mod invariants;
 mod kin;
+mod linearize;
 mod loops;
 mod outputs;
 mod project;
@@ -28,6 +29,7 @@ pub mod spec;
 
 pub use error::SceneError;
 pub use invariants::Invariant;
+pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
 pub use project::{ASSEMBLY_TOL, CONSTRAINT_TOL, ConstraintViolation};
 pub use quantities::{
     Expect, Schema, Step, body_schema, convert as convert_quantities, key_of, render as render_path, tag,

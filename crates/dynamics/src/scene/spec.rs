@@ -47,6 +47,9 @@ pub struct SceneSpec {
     /// away after every step.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub loops: Vec<LoopSpec>,
+    /// How `vectrix linearize` treats the initial state (an equilibrium unless `steady`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub linearize: Option<LinearizeSpec>,
     /// Project the initial state onto the loop constraints (assemble the mechanism) instead of
     /// refusing a start that violates them.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
@@ -293,6 +296,38 @@ pub enum Profile {
         /// Values.
         value: Vec<f64>,
     },
+}
+
+impl Profile {
+    /// The profile plus a constant `du` at every t (an input perturbation for linearization).
+    pub fn shifted(&self, du: f64) -> Profile {
+        match self.clone() {
+            Profile::Constant { value } => Profile::Constant { value: value + du },
+            Profile::Step { at, before, after } => {
+                Profile::Step { at, before: before + du, after: after + du }
+            }
+            Profile::Ramp { t0, t1, from, to } => Profile::Ramp { t0, t1, from: from + du, to: to + du },
+            Profile::Sine { amplitude, omega, phase, offset } => {
+                Profile::Sine { amplitude, omega, phase, offset: offset + du }
+            }
+            Profile::Table { t, value } => {
+                Profile::Table { t, value: value.into_iter().map(|v| v + du).collect() }
+            }
+        }
+    }
+}
+
+/// How `vectrix linearize` treats the initial state.
+///
+/// Book: §12.6 (linearization about a reference motion).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinearizeSpec {
+    /// The initial state is a steady motion (the speeds are constant, the coordinates that
+    /// change are cyclic: a spinning top in precession) rather than an equilibrium: only
+    /// v̇ = 0 is checked, and A is taken at the initial state.
+    #[serde(default)]
+    pub steady: bool,
 }
 
 /// One effect. Only declared effects are assembled.
