@@ -184,6 +184,29 @@ fn section_6_10_pendulum_ball_loop_reaction_by_euler_about_the_pivot() {
     assert!(worst <= 1e-9 * m * 9.81, "reaction off the Euler balance by {worst:e} N");
 }
 
+#[test]
+fn section_9_11_loop_points_take_quantity_strings() {
+    // issue 21: every number of a scene may carry its unit, the loops' points too
+    let (text, _) = example("four_bar.toml");
+    let si = Scene::from_toml(&text, "si.toml").unwrap_or_else(|e| panic!("{e}"));
+    let cm = text.replace(
+        "a = { body = \"coupler\", point = [3.5, 0.0, 0.0] }",
+        "a = { body = \"coupler\", point = [\"350 cm\", \"0 m\", \"0 ft\"] }",
+    );
+    assert_ne!(cm, text);
+    let cm = Scene::from_toml(&cm, "cm.toml").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(cm.initial_state(), si.initial_state(), "350 cm is 3.5 m exactly");
+    // a length where a direction is expected is an error naming both dimensions
+    let bad = text.replace(
+        "axis = [0.0, 0.0, 1.0]\n\n[[effects]]",
+        "axis = [\"0 m\", \"0 m\", \"1 m\"]\n\n[[effects]]",
+    );
+    match Scene::from_toml(&bad, "bad.toml") {
+        Err(SceneError::Invalid { path, .. }) => assert!(path.starts_with("loops[0].axis"), "{path}"),
+        other => panic!("expected a dimension error, got {other:?}"),
+    }
+}
+
 fn invalid(text: &str) -> (String, String) {
     match Scene::from_toml(text, "t.toml") {
         Err(SceneError::Invalid { path, message, .. }) => (path, message),

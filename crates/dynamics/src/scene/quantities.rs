@@ -197,6 +197,8 @@ pub fn body_schema(path: &[Step], root: &Value) -> Option<Expect> {
             };
             si(d)
         }
+        [Some("loops"), None, Some("a" | "b"), Some("point"), None] => si(LENGTH),
+        [Some("loops"), None, Some("axis" | "direction" | "normal"), None] => si(ONE),
         [Some("effects"), None, rest @ ..] => {
             let I(e) = &path[1] else { return None };
             let kind = tag(root, &[K("effects".into()), I(*e)], "type")?;
