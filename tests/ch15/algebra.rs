@@ -1,5 +1,5 @@
 //! §15.1–15.3: matrices, complex numbers, eigenvalues and polynomial roots; problems
-//! 15.20.1–15.20.7.
+//! 15.20.1–15.20.7; atan2 (Ex 15.18.1).
 
 use super::*;
 use nalgebra::{dmatrix, dvector};
@@ -237,4 +237,62 @@ fn eq_15_18_7_roots_across_the_float_range() {
     let r = sorted(poly(&[1.0, 1.0, 1e300]).roots().unwrap());
     assert_rel(r[1].im, 1e150, 8.0 * EPS);
     assert_rel(r[1].re, -0.5, 8.0 * EPS);
+}
+
+#[test]
+fn problem_15_20_4_cayley_hamilton_for_companion_matrices() {
+    // 15.20.4: A = [[0, 1], [−a₀, −a₁]] has p(s) = s² + a₁s + a₀ and p(A) = A² + a₁A + a₀I = 0,
+    // with A² = [[−a₀, −a₁], [a₀a₁, −a₀ + a₁²]] as printed; the 3 × 3 companion matrix has
+    // p(s) = s³ + a₂s² + a₁s + a₀ and p(A) = 0 with the printed A² and A³. Integer coefficients
+    // keep every product exact, so the identities hold exactly in floating point.
+    for (a0, a1, a2) in [(-2.0, 5.0, 3.0), (6.0, 11.0, 6.0), (1.0, -4.0, 7.0), (0.0, 0.0, 0.0)] {
+        let a = dmatrix![0.0, 1.0; -a0, -a1];
+        let a_sq = &a * &a;
+        assert_eq!(a_sq, dmatrix![-a0, -a1; a0 * a1, -a0 + a1 * a1]);
+        let p = &a_sq + a1 * &a + a0 * DMatrix::identity(2, 2);
+        assert_eq!(p, DMatrix::zeros(2, 2));
+        let a = dmatrix![0.0, 1.0, 0.0; 0.0, 0.0, 1.0; -a0, -a1, -a2];
+        let (a_sq, a_cu) = (&a * &a, &a * &a * &a);
+        assert_eq!(a_sq, dmatrix![0.0, 0.0, 1.0; -a0, -a1, -a2; a0 * a2, -a0 + a1 * a2, -a1 + a2 * a2]);
+        let printed_a_cu = dmatrix![
+            -a0, -a1, -a2;
+            a0 * a2, -a0 + a1 * a2, -a1 + a2 * a2;
+            a0 * a1 - a0 * a2 * a2, a1 * a1 - a2 * (-a0 + a1 * a2), -a0 + a1 * a2 - a2 * (-a1 + a2 * a2)
+        ];
+        assert_eq!(a_cu, printed_a_cu);
+        let p = &a_cu + a2 * &a_sq + a1 * &a + a0 * DMatrix::identity(3, 3);
+        assert_eq!(p, DMatrix::zeros(3, 3));
+        // p(s) = det(sI − A): the characteristic polynomial rebuilt from the eigenvalues
+        let p_of_ev = Polynomial::from_roots(&linalg::eigenvalues(&a).unwrap()).unwrap();
+        for (got, want) in p_of_ev.coeffs().iter().zip([1.0, a2, a1, a0]) {
+            // the roots are good to ~1e-15 relative to the largest coefficient (up to 11 here)
+            assert_abs(*got, want, 1e3 * EPS * 11.0);
+        }
+    }
+    // at non-integer coefficients p(A) vanishes to rounding, relative to the size of A³
+    let (a0, a1, a2) = (0.37f64, -1.9f64, 2.6f64);
+    let a = dmatrix![0.0, 1.0, 0.0; 0.0, 0.0, 1.0; -a0, -a1, -a2];
+    let a_cu = &a * &a * &a;
+    let p: DMatrix<f64> = &a_cu + a2 * (&a * &a) + a1 * &a + a0 * DMatrix::<f64>::identity(3, 3);
+    assert!(p.amax() <= 64.0 * EPS * a_cu.amax());
+}
+
+#[test]
+fn example_15_18_1_atan2_quadrants() {
+    // Ex 15.18.1: atan2(1, 1) = π/4 and atan2(−1, −1) = −3π/4, the angle in (−π, π] of x + jy.
+    // As phases of a frequency response: G(s) = 2/(1 − s) has G(j) = 1 + j and −G has
+    // G(j) = −1 − j; the wrapped Bode phases are 45° and −135°.
+    use std::f64::consts::PI;
+    let g = tf(&[-2.0], &[1.0, -1.0]);
+    let z = g.freqresp(&[1.0]).unwrap()[0];
+    assert_abs(z.re, 1.0, 4.0 * EPS);
+    assert_abs(z.im, 1.0, 4.0 * EPS);
+    assert_rel(z.arg(), PI / 4.0, 4.0 * EPS);
+    let zn = g.neg().freqresp(&[1.0]).unwrap()[0];
+    assert_rel(zn.arg(), -3.0 * PI / 4.0, 4.0 * EPS);
+    assert_rel(wrap_deg(g.bode(&[1.0]).unwrap().phase_deg[0]), 45.0, 16.0 * EPS);
+    assert_rel(wrap_deg(g.neg().bode(&[1.0]).unwrap().phase_deg[0]), -135.0, 16.0 * EPS);
+    // the interval is half-open: the negative real axis is +π, not −π
+    assert_eq!(wrap_deg(-180.0), 180.0);
+    assert_eq!(Complex64::new(-1.0, 0.0).arg(), PI);
 }

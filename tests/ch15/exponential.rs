@@ -1,4 +1,4 @@
-//! §15.5–15.6: the matrix exponential and eigensolutions; problems 15.20.10 and 15.20.27.
+//! §15.5–15.6: the matrix exponential and eigensolutions; problems 15.20.10, 15.20.27 and 15.20.59.
 
 use super::*;
 use nalgebra::{dmatrix, dvector};
@@ -145,4 +145,50 @@ fn fact_15_6_1_eigensolutions_of_a_third_order_system() {
             assert_abs(real.y[i][k], (mu * tk).exp() * w[i], 1e3 * EPS);
         }
     }
+}
+
+#[test]
+fn problem_15_20_59_unstable_cancellation_by_exact_analysis() {
+    // 15.20.59: G₁ = 1/(s − 1), G₂ = (s − 1)/(s + 1)², zero external inputs. The hint
+    // e^{[[0,1],[−1,−2]]t} = e^{−t}[[1 + t, t], [−t, 1 − t]] is checked as the problem asks:
+    // e^{A·0} = I and d/dt e^{At} = Ae^{At} (here against the closed-form derivative), and against
+    // the library's expm.
+    let a = dmatrix![0.0, 1.0; -1.0, -2.0];
+    let phi = |t: f64| (-t).exp() * dmatrix![1.0 + t, t; -t, 1.0 - t];
+    let dphi = |t: f64| (-t).exp() * dmatrix![-t, 1.0 - t; t - 1.0, t - 2.0];
+    assert_eq!(phi(0.0), DMatrix::identity(2, 2));
+    for t in [0.0f64, 0.5, 2.0, 7.0] {
+        assert!((dphi(t) - &a * phi(t)).amax() <= 16.0 * EPS * (1.0 + t), "t = {t}");
+        assert!((expm(&(&a * t)).unwrap() - phi(t)).amax() <= 64.0 * EPS * (1.0 + t), "t = {t}");
+    }
+    // G₂ in companion form (A as above, B₂ = [0, 1]ᵀ, C₂ = [−1, 1]) has the free response
+    // F₂(s) = C₂(sI − A)⁻¹x₂(0), with (sI − A)⁻¹ = [[s + 2, 1], [−1, s]]/(s + 1)², so
+    // C₂(sI − A)⁻¹ = [−s − 3, s − 1]/(s + 1)².
+    let (x10, x2) = (0.5f64, [0.3f64, -0.2f64]);
+    let f2 = |s: f64| ((-s - 3.0) * x2[0] + (s - 1.0) * x2[1]) / ((s + 1.0) * (s + 1.0));
+    // G₁ precedes G₂: ŷ₂ = F₂ + G₂·x₁₀/(s − 1) = F₂ + x₁₀/(s + 1)²: the e^{t} of G₁ cancels
+    // exactly and y₂ → 0, although y₁ = x₁₀eᵗ grows.
+    let y2_hat = tf(&[x2[1] - x2[0], -3.0 * x2[0] - x2[1] + x10], &[1.0, 2.0, 1.0]);
+    assert_eq!(y2_hat.final_value(AXIS_RTOL).unwrap(), FinalValue::Finite(0.0));
+    for s in [0.5, 2.0, 9.0] {
+        assert_rel(y2_hat.eval(Complex64::new(s, 0.0)).re, f2(s) + x10 / ((s + 1.0) * (s + 1.0)), 16.0 * EPS);
+    }
+    // G₂ precedes G₁: ŷ₁ = (x₁₀ + F₂)/(s − 1) keeps the pole at 1 with residue x₁₀ + F₂(1)
+    // = x₁₀ − x₂ₐ, so y₁ grows like (x₁₀ − x₂ₐ)eᵗ unless the initial states are tuned.
+    let num = poly(&[1.0, 2.0, 1.0])
+        .scale(x10)
+        .unwrap()
+        .add(&poly(&[x2[1] - x2[0], -3.0 * x2[0] - x2[1]]))
+        .unwrap();
+    let y1_hat =
+        TransferFunction::from_polynomials(num, poly(&[1.0, -1.0]).mul(&poly(&[1.0, 2.0, 1.0])).unwrap())
+            .unwrap();
+    let pf = y1_hat.partial_fractions(CLUSTER_RTOL).unwrap();
+    let at_one = pf.terms.iter().find(|t| (t.pole.re - 1.0).abs() < 1e-9).unwrap();
+    assert_rel(at_one.residue.re, x10 + f2(1.0), 64.0 * EPS);
+    assert_rel(at_one.residue.re, x10 - x2[0], 64.0 * EPS);
+    assert!(matches!(
+        y1_hat.final_value(AXIS_RTOL).unwrap(),
+        FinalValue::Illegal(Illegal::RightHalfPlanePole(_))
+    ));
 }

@@ -246,3 +246,93 @@ fn example_15_12_3_4_initial_value_and_slope() {
     }
     assert_eq!(iv, vec![1.5, -4.25, 10.875]);
 }
+
+#[test]
+fn example_15_10_2_damped_sine_by_the_s_shift() {
+    // Ex 15.10.2: L{e^{−at} sin ωt} = ω/((s + a)² + ω²), the s-shift (15.10.3) of
+    // L{sin ωt} = ω/(s² + ω²). Inverted by partial fractions and, independently, as the impulse
+    // response of the same transfer function (exact discretisation of e^{At}).
+    for (a, w) in [(0.5, 2.0), (3.0, 0.25), (-0.2, 5.0)] {
+        let y_hat = tf(&[w], &[1.0, 2.0 * a, a * a + w * w]);
+        let y = y_hat.inverse_laplace(CLUSTER_RTOL).unwrap();
+        let t = time_grid(6.0, 61).unwrap();
+        let r = y_hat.impulse(&t).unwrap();
+        for (k, &tk) in t.iter().enumerate() {
+            let want = (-a * tk).exp() * (w * tk).sin();
+            // absolute, at the scale of the envelope e^{−at} (which grows for a < 0)
+            let scale = (-a * tk).exp().max(1.0);
+            assert_abs(y.eval(tk), want, 256.0 * EPS * scale);
+            assert_abs(r.y[0][k], want, 1e3 * EPS * scale);
+        }
+    }
+}
+
+#[test]
+fn example_15_11_1_damped_oscillator_free_and_forced() {
+    // Ex 15.11.1: mq̈ + cq̇ + kq = f gives q̂ = (mq(0)s + cq(0) + mq̇(0))/(ms² + cs + k) (free)
+    // + f̂/(ms² + cs + k) (forced). Checked against the state-space model of §15.7: the free part
+    // is the initial-condition response, the forced part (f = f₀·1(t)) the step response.
+    let (m, c, k) = (2.0, 0.6, 5.0);
+    let (q0, v0, f0) = (0.3, -1.2, 4.0);
+    let free = tf(&[m * q0, c * q0 + m * v0], &[m, c, k]).inverse_laplace(CLUSTER_RTOL).unwrap();
+    let forced = tf(&[f0], &[m, c, k, 0.0]).inverse_laplace(CLUSTER_RTOL).unwrap();
+    let sys = Sdof::new(m, c, k).unwrap().to_state_space(SdofOutput::Position).unwrap();
+    let t = time_grid(10.0, 101).unwrap();
+    let r_free = initial(&sys, &[q0, v0], &t).unwrap();
+    let r_forced = response(&sys, InputKind::Step, 0, f0, 0.0, &t).unwrap();
+    let r_both = lsim(&sys, 0, &vec![f0; t.len()], &t, &[q0, v0], Hold::Zoh, 0.0).unwrap();
+    for (i, &ti) in t.iter().enumerate() {
+        // absolute: responses of size ≤ 2f₀/k + |q0| + |v0|, a few hundred roundings
+        let scale = 2.0 * f0 / k + q0.abs() + v0.abs();
+        assert_abs(r_free.y[0][i], free.eval(ti), 1e3 * EPS * scale);
+        assert_abs(r_forced.y[0][i], forced.eval(ti), 1e3 * EPS * scale);
+        assert_abs(r_both.y[0][i], free.eval(ti) + forced.eval(ti), 1e3 * EPS * scale);
+    }
+    // q(0⁺) = q(0) and q̇(0⁺) = q̇(0) for the free part (Facts 15.12.1–2)
+    let iv = tf(&[m * q0, c * q0 + m * v0], &[m, c, k]).initial_values(2).unwrap();
+    assert_rel(iv[0], q0, 4.0 * EPS);
+    assert_rel(iv[1], v0, 4.0 * EPS);
+}
+
+#[test]
+fn example_15_11_3_position_impulse_equals_velocity_step() {
+    // Ex 15.11.3: the damped rigid body q̈ + 2q̇ = u. Position under u = δ: q̂ = 1/(s² + 2s);
+    // velocity v = q̇ obeys v̇ + 2v = u (ERR: printed "v̈ + 2v = u"), so under u = 1(t)
+    // v̂ = 1/(s(s + 2)): the same transform, both (1 − e^{−2t})/2.
+    let t = time_grid(5.0, 51).unwrap();
+    let position_impulse = tf(&[1.0], &[1.0, 2.0, 0.0]).impulse(&t).unwrap();
+    let velocity_step = tf(&[1.0], &[1.0, 2.0]).step(&t).unwrap();
+    // and from the DRB state-space model (m = 1, c = 2) with each output
+    let drb = Sdof::new(1.0, 2.0, 0.0).unwrap();
+    let pos = drb.to_state_space(SdofOutput::Position).unwrap();
+    let vel = drb.to_state_space(SdofOutput::Velocity).unwrap();
+    let ss_impulse = response(&pos, InputKind::Impulse, 0, 1.0, 0.0, &t).unwrap();
+    let ss_step = response(&vel, InputKind::Step, 0, 1.0, 0.0, &t).unwrap();
+    for (k, &tk) in t.iter().enumerate() {
+        let want = 0.5 * (1.0 - (-2.0 * tk).exp());
+        for got in [position_impulse.y[0][k], velocity_step.y[0][k], ss_impulse.y[0][k], ss_step.y[0][k]] {
+            assert_abs(got, want, 64.0 * EPS); // values ≤ 1/2
+        }
+    }
+}
+
+#[test]
+fn problem_15_20_28_second_derivative_by_the_initial_value_theorem() {
+    // 15.20.28: y = 2e^{−6t}, ŷ = 2/(s + 6). (17.0.21): ÿ(0⁺) = lim_{s→∞} s(s²ŷ − sy(0) − ẏ(0))
+    // = lim 72s/(s + 6) = 72, the value of ÿ = 72e^{−6t} at t = 0.
+    let y_hat = tf(&[2.0], &[1.0, 6.0]);
+    let iv = y_hat.initial_values(3).unwrap();
+    assert_eq!(iv, vec![2.0, -12.0, 72.0]);
+    // the limit by hand: s(s²ŷ − sy(0) − ẏ(0)) = s(2s² − (2s − 12)(s + 6))/(s + 6) = 72s/(s + 6)
+    let z_hat = tf(&[72.0, 0.0], &[1.0, 6.0]);
+    assert_eq!(z_hat.relative_degree(), 0);
+    assert_eq!(z_hat.num().leading() / z_hat.den().leading(), 72.0);
+    for s in [10.0f64, 1e2, 1e3] {
+        let direct = s * (s * s * 2.0 / (s + 6.0) - s * iv[0] - iv[1]);
+        // cancellation of terms of size 2s³/(s + 6) ~ 2s², so the error grows like ε·2s²
+        assert_abs(direct, 72.0 * s / (s + 6.0), 64.0 * EPS * 2.0 * s * s);
+    }
+    // the time-domain check: ÿ(t) = 72e^{−6t}, the inverse transform of s²ŷ − sy(0) − ẏ(0)
+    let ydd = tf(&[72.0], &[1.0, 6.0]).inverse_laplace(CLUSTER_RTOL).unwrap();
+    assert_rel(ydd.eval(0.0), 72.0, 4.0 * EPS);
+}

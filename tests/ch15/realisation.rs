@@ -1,6 +1,6 @@
 //! §15.7, §15.14: state-space form, transfer functions of state-space models, minimal
 //! realisations, interconnections, pole placement and equilibria; problems 15.20.8, 15.20.14,
-//! 15.20.37–38, 15.20.42, 15.20.52, 15.20.54–56.
+//! 15.20.37–38, 15.20.42, 15.20.52, 15.20.54–56, 15.20.58.
 
 use super::*;
 use nalgebra::dmatrix;
@@ -255,4 +255,135 @@ fn problem_15_20_8_affine_equilibria() {
     assert_abs(particular[0] + particular[1], 2.0, 16.0 * EPS);
     assert_eq!(directions.ncols(), 1);
     assert_abs(directions[(0, 0)] + directions[(1, 0)], 0.0, 16.0 * EPS);
+}
+
+#[test]
+fn example_15_7_1_damped_oscillator_state_space() {
+    // Ex 15.7.1, (15.7.6): q̈ = −(c/m)q̇ − (k/m)q + f/m with x = (q, q̇) and position output:
+    // A = [[0, 1], [−k/m, −c/m]], B = [0, 1/m]ᵀ, C = [1, 0], D = 0; its transfer function is
+    // 1/(ms² + cs + k).
+    let (m, c, k) = (7.0, 1.5, 2.5);
+    let sys = Sdof::new(m, c, k).unwrap().to_state_space(SdofOutput::Position).unwrap();
+    assert_eq!(sys.a(), &dmatrix![0.0, 1.0; -k / m, -c / m]);
+    assert_eq!(sys.b(), &dmatrix![0.0; 1.0 / m]);
+    assert_eq!(sys.c(), &dmatrix![1.0, 0.0]);
+    assert_eq!(sys.d(), &dmatrix![0.0]);
+    let g = sys.to_tf(0, 0).unwrap();
+    let want = tf(&[1.0], &[m, c, k]);
+    for w in [0.0, 0.2, 0.6, 5.0] {
+        let s = Complex64::new(0.0, w);
+        // relative to |G(jω)| ≤ 1/(c ωn) ~ 1: a 2 × 2 resolvent, tens of roundings
+        assert!((g.eval(s) - want.eval(s)).norm() <= 64.0 * EPS * want.eval(s).norm(), "ω = {w}");
+    }
+}
+
+#[test]
+fn example_15_14_1_velocity_output_transfer_function() {
+    // Ex 15.14.1: the damped oscillator with velocity output, C = [0, 1]:
+    // G = C(sI − A)⁻¹B = s/(ms² + cs + k); every pole of G is an eigenvalue of A.
+    let (m, c, k) = (2.0, 0.6, 5.0);
+    let sys = Sdof::new(m, c, k).unwrap().to_state_space(SdofOutput::Velocity).unwrap();
+    assert_eq!(sys.c(), &dmatrix![0.0, 1.0]);
+    let g = sys.to_tf(0, 0).unwrap();
+    // normalise by the leading denominator coefficient: want (s/m)/(s² + (c/m)s + k/m)
+    let (n, d) = (g.num().coeffs(), g.den().coeffs());
+    let lead = d[0];
+    assert_eq!(g.num().degree(), 1);
+    assert_rel(n[0] / lead, 1.0 / m, 16.0 * EPS);
+    assert_abs(n[1] / lead, 0.0, 16.0 * EPS / m); // the zero at s = 0, exactly or to rounding
+    assert_rel(d[1] / lead, c / m, 16.0 * EPS);
+    assert_rel(d[2] / lead, k / m, 16.0 * EPS);
+    let ev = sorted(linalg::eigenvalues(sys.a()).unwrap());
+    for (p, e) in sorted(g.poles().unwrap()).iter().zip(&ev) {
+        assert!((p - e).norm() <= 64.0 * EPS * e.norm(), "pole {p} vs eigenvalue {e}");
+    }
+}
+
+#[test]
+fn problem_15_20_56_controllability_and_observability_of_sdof_models() {
+    // 15.20.56, state (q, q̇): [B AB] = [[0, 1/m], [1/m, −c/m²]] has rank 2 for URB, DRB, UO, DO
+    // (i); position output, [C; CA] = [[1, 0], [0, 1]]: always observable (ii); velocity output,
+    // [C; CA] = [[0, 1], [−k/m, −c/m]]: observable iff k ≠ 0, so not for URB and DRB (iii).
+    let m = 2.0;
+    for (name, c, k) in [("URB", 0.0, 0.0), ("DRB", 3.0, 0.0), ("UO", 0.0, 5.0), ("DO", 3.0, 5.0)] {
+        let s = Sdof::new(m, c, k).unwrap();
+        let pos = s.to_state_space(SdofOutput::Position).unwrap();
+        let vel = s.to_state_space(SdofOutput::Velocity).unwrap();
+        assert_eq!(pos.ctrb(), dmatrix![0.0, 1.0 / m; 1.0 / m, -c / (m * m)], "{name}");
+        assert!(pos.is_controllable(1e-10).unwrap(), "{name} controllable");
+        assert_eq!(pos.obsv(), dmatrix![1.0, 0.0; 0.0, 1.0], "{name}");
+        assert!(pos.is_observable(1e-10).unwrap(), "{name} position-observable");
+        assert_eq!(vel.obsv(), dmatrix![0.0, 1.0; -k / m, -c / m], "{name}");
+        assert_eq!(vel.is_observable(1e-10).unwrap(), k != 0.0, "{name} velocity-observable");
+    }
+}
+
+/// The cascade of 15.20.58 in state space, x = (x₁ of G₁ = 1/(s + p); x₂ of G₂ = (s + p)/(s + 2)²
+/// in companion form). `g1_first`: G₁ forced by a·u, G₂ forced by y₁ + d·u; otherwise G₂ forced
+/// by a·u and G₁ by y₂ + d·u. Outputs (y₁, y₂); u is a unit step.
+fn cascade_15_20_58(p: f64, a: f64, d: f64, g1_first: bool) -> StateSpace {
+    let (c2a, c2b) = (p, 1.0); // C₂ = [p, 1]: numerator s + p
+    let (am, b) = if g1_first {
+        (dmatrix![-p, 0.0, 0.0; 0.0, 0.0, 1.0; 1.0, -4.0, -4.0], dmatrix![a; 0.0; d])
+    } else {
+        (dmatrix![-p, c2a, c2b; 0.0, 0.0, 1.0; 0.0, -4.0, -4.0], dmatrix![d; 0.0; a])
+    };
+    let c = dmatrix![1.0, 0.0, 0.0; 0.0, c2a, c2b];
+    StateSpace::new(am, b, c, DMatrix::zeros(2, 1)).unwrap()
+}
+
+#[test]
+fn problem_15_20_58_pole_zero_cancellation_in_a_cascade() {
+    // 15.20.58: G₁ = 1/(s + p) then G₂ = (s + p)/(s + 2)², p = 1, 0, −1 (stable, zero, unstable
+    // cancellation), nonzero initial states, constant input a into G₁ and constant disturbance d
+    // on y₁. By Laplace, with the free response of G₂ written F₂(s) = ((p(s + 4) − 4)x₂ₐ +
+    // (s + p)x₂ᵦ)/(s + 2)²:
+    //   ŷ₁ = (x₁₀ + a/s)/(s + p),
+    //   ŷ₂ = F₂ + (x₁₀ + a/s)/(s + 2)² + d(s + p)/(s(s + 2)²),
+    // so the mode e^{−pt} of G₁ never reaches y₂, and y₂ → (a + pd)/4 in every case, while y₁
+    // diverges for p ≤ 0. Reversed (G₂ first, input a; d on y₂):
+    //   ŷ₁ = (x₁₀ + F₂ + d/s)/(s + p) + a/(s(s + 2)²),
+    // which diverges for p = −1 unless the residue x₁₀ + F₂(1) + d vanishes.
+    let (a, d) = (1.5, -0.5);
+    let (x10, x2a, x2b) = (0.4, -0.3, 0.8);
+    let t = time_grid(10.0, 101).unwrap();
+    for p in [1.0, 0.0, -1.0] {
+        // G₁ first: the simulated y₂ against the inverse transform.
+        let sys = cascade_15_20_58(p, a, d, true);
+        let r = lsim(&sys, 0, &vec![1.0; t.len()], &t, &[x10, x2a, x2b], Hold::Zoh, 0.0).unwrap();
+        let num = [p * x2a + x2b, (4.0 * p - 4.0) * x2a + p * x2b + x10 + d, a + d * p];
+        let y2_hat = tf(&num, &[1.0, 4.0, 4.0, 0.0]);
+        let y2 = y2_hat.inverse_laplace(CLUSTER_RTOL).unwrap();
+        assert_eq!(y2_hat.final_value(AXIS_RTOL).unwrap(), FinalValue::Finite((a + p * d) / 4.0));
+        for (k, &tk) in t.iter().enumerate() {
+            // The simulated cancellation is exact only to rounding: for p = −1 the state carries
+            // e^{t} and y₂ = C₂x₂ cancels it, leaving an error ~ε·e^{t} (the point of 15.20.59).
+            let growth = (-p * tk).exp().max(1.0);
+            assert_abs(r.y[1][k], y2.eval(tk), 1e3 * EPS * growth);
+        }
+        let y1_end = r.y[0][t.len() - 1];
+        // y₁ by hand: (x₁₀ − a)e^{−t} + a, x₁₀ + at, (x₁₀ + a)eᵗ − a
+        if p == 1.0 {
+            assert_abs(y1_end, a + (x10 - a) * (-10.0f64).exp(), 1e3 * EPS);
+        } else if p == 0.0 {
+            assert_rel(y1_end, x10 + a * 10.0, 1e3 * EPS);
+        } else {
+            assert_rel(y1_end, (x10 + a) * 10f64.exp() - a, 1e3 * EPS);
+        }
+        // Reversed: the residue of ŷ₁ at the cancelled pole −p is x₁₀ + F₂(−p) + d/(−p) (p ≠ 0).
+        let sys = cascade_15_20_58(p, a, d, false);
+        let r = lsim(&sys, 0, &vec![1.0; t.len()], &t, &[x10, x2a, x2b], Hold::Zoh, 0.0).unwrap();
+        if p == -1.0 {
+            let f2 = ((p * (1.0 + 4.0) - 4.0) * x2a + (1.0 + p) * x2b) / 9.0;
+            let residue = x10 + f2 + d;
+            // y₁(t)e^{−t} → residue; at t = 10 the bounded rest of y₁ (size ~1) contributes
+            // O(e^{−10}) ≈ 5e-5
+            assert_abs(r.y[0][t.len() - 1] * (-10.0f64).exp(), residue, 1e-3);
+            assert!(residue.abs() > 0.1, "generic initial states excite the unstable mode");
+        }
+        if p == 1.0 {
+            // everything stable: y₁ → a/4 + d, up to transients O(t e^{−t}) ≈ 5e-4 at t = 10
+            assert_abs(r.y[0][t.len() - 1], a / 4.0 + d, 1e-3);
+        }
+    }
 }

@@ -4,7 +4,7 @@
 use super::*;
 
 #[test]
-fn example_15_13_3_nonminimum_phase_undershoot() {
+fn example_15_13_3_and_problem_15_20_32_nonminimum_phase_undershoot() {
     // Ex 15.13.3: step f₀ into (s − z)/(s² + 2ζωn s + ωn²): y∞ = −f₀z/ωn², y(0⁺) = 0,
     // ẏ(0⁺) = f₀; z > 0 gives an initial undershoot. 15.20.32: (4s − 3)/(s² + 0.8s + 4):
     // y(0⁺) = 0, ẏ(0⁺) = 4, y∞ = −0.75, poles −0.4 ± 1.96j; (C) max 1.0875 at 0.531 s,

@@ -1,5 +1,5 @@
 //! §15.16–15.18: the Routh test, stable gain intervals and servo loops; problems 15.20.39–41,
-//! 15.20.43, 15.20.46–49.
+//! 15.20.43–49, 15.20.57.
 
 use super::*;
 
@@ -184,4 +184,180 @@ fn problem_15_20_49_gain_interval() {
     assert_eq!(iv.len(), 1);
     assert_printed(iv[0].0, 4.2221, 4);
     assert_printed(iv[0].1, 417.77, 2);
+}
+
+/// Final value of a transform that the final-value theorem must accept.
+fn settles_to(y: &TransferFunction) -> f64 {
+    match y.final_value(AXIS_RTOL).unwrap() {
+        FinalValue::Finite(v) => v,
+        other => panic!("final value {other:?}"),
+    }
+}
+
+#[test]
+fn problem_15_20_44_measurement_bias() {
+    // 15.20.44 (no printed solution): servo loop u = G_c e + d, y₀ = Gu, y = y₀ + b, e = r − y,
+    // with steps r₀, d₀, b₀. Then ê = S(r̂ − b̂ − G d̂), S = 1/(1 + GG_c), and e_true = r − y₀ =
+    // e + b. By the final-value theorem (legal: every loop below is AS):
+    //   e∞ = S(0)(r₀ − b₀ − G(0)d₀),  e_true∞ = e∞ + b₀.
+    // Case 1: an integrator in G_c makes S(0) = 0 and SG(0) = 0: e∞ = 0, e_true∞ = b₀ ≠ 0.
+    // Case 2: G(0) = 0, r₀ = 0: e∞ = −b₀, so e_true∞ = 0 for every d₀.
+    // Case 3: L(0) = 0: e_true∞ = r₀ − G(0)d₀, zero iff r₀ = G(0)d₀; with d₀ = 0 and r₀ ≠ 0 it
+    // is r₀ ≠ 0. (v) So an unknown bias cannot be rejected together with a step command: either
+    // e_true∞ = b₀ (S(0) = 0) or it depends on r₀ (S(0) = 1).
+    let final_errors = |g: &TransferFunction, gc: &TransferFunction, r0: f64, d0: f64, b0: f64| {
+        let s = g.series(gc).unwrap().sensitivity().unwrap();
+        let sg = g.feedback(gc).unwrap(); // G/(1 + GG_c) = SG
+        let e_hat = s.series(&tf(&[r0 - b0], &[1.0, 0.0])).unwrap();
+        let e_hat = e_hat.parallel(&sg.series(&tf(&[-d0], &[1.0, 0.0])).unwrap()).unwrap();
+        let e = settles_to(&e_hat);
+        (e, e + b0)
+    };
+    let stable = |g: &TransferFunction, gc: &TransferFunction| {
+        routh(g.series(gc).unwrap().sensitivity().unwrap().den()).unwrap().is_hurwitz()
+    };
+    // Case 1 (iv): G = 1/(s² + 2s + 1), G_c = 1/(s² + 2s): s⁴ + 4s³ + 5s² + 2s + 1, AS.
+    let (g1, gc1) = (tf(&[1.0], &[1.0, 2.0, 1.0]), tf(&[1.0], &[1.0, 2.0, 0.0]));
+    assert!(stable(&g1, &gc1));
+    // Case 2 = Case 3 (iv): G = s/(s² + 2s + 1), G_c = 1/(s² + 2s + 2): s⁴ + 4s³ + 7s² + 7s + 2.
+    let (g2, gc2) = (tf(&[1.0, 0.0], &[1.0, 2.0, 1.0]), tf(&[1.0], &[1.0, 2.0, 2.0]));
+    assert!(stable(&g2, &gc2));
+    // Case 3 with the zero of L in the controller and G(0) = 1: G = 1/(s + 1), G_c = s/(s + 2).
+    let (g3, gc3) = (tf(&[1.0], &[1.0, 1.0]), tf(&[1.0, 0.0], &[1.0, 2.0]));
+    assert!(stable(&g3, &gc3));
+    for (r0, d0, b0) in [(1.0, 0.0, 0.3), (2.0, -1.5, 0.3), (0.0, 4.0, -0.7)] {
+        let (e, e_true) = final_errors(&g1, &gc1, r0, d0, b0);
+        assert_abs(e, 0.0, 16.0 * EPS);
+        assert_rel(e_true, b0, 16.0 * EPS);
+        let (_, e_true) = final_errors(&g2, &gc2, 0.0, d0, b0);
+        assert_abs(e_true, 0.0, 16.0 * EPS);
+        let (_, e_true) = final_errors(&g2, &gc2, r0, d0, b0);
+        assert_abs(e_true, r0, 16.0 * EPS); // G(0) = 0: e_true∞ = r₀
+        let (_, e_true) = final_errors(&g3, &gc3, r0, d0, b0);
+        assert_abs(e_true, r0 - d0, 16.0 * EPS * (1.0 + d0.abs())); // G(0) = 1
+    }
+    // the condition r₀ = G(0)d₀ is sufficient: with r₀ = d₀ the true error of case 3 vanishes
+    let (_, e_true) = final_errors(&g3, &gc3, 1.7, 1.7, 0.4);
+    assert_abs(e_true, 0.0, 16.0 * EPS);
+}
+
+#[test]
+fn problem_15_20_45_p_pi_and_internal_model_control() {
+    // 15.20.45 (no printed solution; the notes compute it, C): ÿ + ẏ − 3y = u.
+    // i) G = 1/(s² + s − 3), poles (−1 ± √13)/2 = 1.3028, −2.3028.
+    let g = tf(&[1.0], &[1.0, 1.0, -3.0]);
+    let p = sorted(g.poles().unwrap());
+    assert_printed(p[0].re, -2.3028, 4);
+    assert_printed(p[1].re, 1.3028, 4);
+    // ii) the open-loop step response diverges (the FVT does not apply)
+    let y_open = g.series(&tf(&[1.0], &[1.0, 0.0])).unwrap();
+    assert!(matches!(
+        y_open.final_value(AXIS_RTOL).unwrap(),
+        FinalValue::Illegal(Illegal::RightHalfPlanePole(_))
+    ));
+    // iii) P control: s² + s + Kp − 3 is AS iff Kp > 3; e∞ = 1 − Kp/(Kp − 3) = −3/(Kp − 3), so
+    // |e∞| < 0.2 iff Kp > 18. With Kp = 40 the delayed step r = 1(t − 1) meets the
+    // requirements: overshoot < 100% and |e| < 0.2 for t > 10 (Kp = 20 would too, but leaves
+    // no K_I for iv: its PI peaks above 2 for every K_I that settles to 0.01 by t = 50).
+    let iv = stable_gain_intervals(&poly(&[1.0]), g.den()).unwrap();
+    assert_eq!(iv.len(), 1);
+    assert_rel(iv[0].0, 3.0, 1e-10);
+    assert_eq!(iv[0].1, f64::INFINITY);
+    let kp = 40.0;
+    let e_p =
+        settles_to(&g.scale(kp).unwrap().sensitivity().unwrap().series(&tf(&[1.0], &[1.0, 0.0])).unwrap());
+    assert_rel(e_p, -3.0 / (kp - 3.0), 16.0 * EPS);
+    assert!(e_p.abs() < 0.2);
+    assert_rel(3.0 / (18.0 - 3.0), 0.2, 4.0 * EPS); // the boundary Kp = 18
+    let t = time_grid(20.0, 2001).unwrap();
+    let closed = |c: &TransferFunction| {
+        StateSpace::from_tf(&g.series(c).unwrap().feedback(&TransferFunction::gain(1.0).unwrap()).unwrap())
+            .unwrap()
+    };
+    let y = response(&closed(&tf(&[kp], &[1.0])), InputKind::Step, 0, 1.0, 1.0, &t).unwrap();
+    let y_inf = kp / (kp - 3.0);
+    let y_max = y.y[0].iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    assert!(y_max < 2.0 * y_inf, "overshoot {}%", 100.0 * (y_max / y_inf - 1.0));
+    for (k, &tk) in t.iter().enumerate() {
+        if tk > 10.0 {
+            assert!((1.0 - y.y[0][k]).abs() < 0.2, "|e({tk})| = {}", (1.0 - y.y[0][k]).abs());
+        }
+    }
+    // iv) PI: s³ + s² + (Kp − 3)s + K_I is AS iff 0 < K_I < Kp − 3 = 37 (a₀ < a₁a₂), and the
+    // step error tends to 0. K_I = 5 meets overshoot < 100%, |e| < 0.2 for t > 10 and
+    // |e| < 0.01 for t > 50; K_I = 40 destabilises the loop.
+    let ki_iv = stable_gain_intervals(&poly(&[1.0]), &poly(&[1.0, 1.0, kp - 3.0, 0.0])).unwrap();
+    assert_abs(ki_iv[0].0, 0.0, 1e-12);
+    assert_rel(ki_iv[0].1, kp - 3.0, 1e-10);
+    let ki = 5.0;
+    let pi = tf(&[kp, ki], &[1.0, 0.0]);
+    let t = time_grid(60.0, 6001).unwrap();
+    let y = response(&closed(&pi), InputKind::Step, 0, 1.0, 1.0, &t).unwrap();
+    let y_max = y.y[0].iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+    assert!(y_max < 2.0);
+    for (k, &tk) in t.iter().enumerate() {
+        let e = (1.0 - y.y[0][k]).abs();
+        assert!(tk <= 10.0 || e < 0.2, "|e({tk})| = {e}");
+        assert!(tk <= 50.0 || e < 0.01, "|e({tk})| = {e}");
+    }
+    let e_pi = g.series(&pi).unwrap().sensitivity().unwrap().series(&tf(&[1.0], &[1.0, 0.0])).unwrap();
+    assert_eq!(settles_to(&e_pi.minreal(1e-9).unwrap()), 0.0);
+    assert_eq!(routh(&poly(&[1.0, 1.0, kp - 3.0, 40.0])).unwrap().rhp, 2);
+    // v) r = sin 2t, r̂ = 2/(s² + 4): with PI the error keeps the poles ±2j (the FVT does not
+    // apply; |S(2j)| ≠ 0 is the amplitude of the persisting error).
+    let sine = tf(&[2.0], &[1.0, 0.0, 4.0]);
+    let s_pi = g.series(&pi).unwrap().sensitivity().unwrap();
+    assert!(matches!(
+        s_pi.series(&sine).unwrap().final_value(AXIS_RTOL).unwrap(),
+        FinalValue::Illegal(Illegal::ImaginaryAxisPole(_))
+    ));
+    assert!(s_pi.eval(Complex64::new(0.0, 2.0)).norm() > 0.1);
+    // vi) u = (20 + 5s/(s² + 4))e: closed loop s⁴ + s³ + 21s² + 9s + 68, AS (149 < 189); S has
+    // zeros ±2j, the poles of r̂, so e → 0 (internal model).
+    let im = tf(&[20.0, 5.0, 80.0], &[1.0, 0.0, 4.0]);
+    let s_im = g.series(&im).unwrap().sensitivity().unwrap();
+    let char_poly = s_im.den().monic().unwrap();
+    for (got, want) in char_poly.coeffs().iter().zip([1.0, 1.0, 21.0, 9.0, 68.0]) {
+        assert_rel(*got, want, 16.0 * EPS);
+    }
+    assert!(routh(&char_poly).unwrap().is_hurwitz());
+    assert_abs(s_im.eval(Complex64::new(0.0, 2.0)).norm(), 0.0, 1e3 * EPS);
+    assert_eq!(settles_to(&s_im.series(&sine).unwrap().minreal(1e-9).unwrap()), 0.0);
+    // vii) the pattern: each controller that removes the error carries the denominator of the
+    // command's transform (s for the step, s² + 4 for sin 2t).
+    assert_eq!(pi.den().coeffs(), tf(&[1.0], &[1.0, 0.0]).den().coeffs());
+    assert_eq!(im.den().coeffs(), sine.den().coeffs());
+}
+
+#[test]
+fn problem_15_20_57_initial_states_do_not_change_the_asymptotic_error() {
+    // 15.20.57: with plant and controller started from nonzero states, ê = S r̂ + (free
+    // response)/Δ_cl, where Δ_cl, the closed-loop characteristic polynomial, is Hurwitz: the
+    // free part decays and the asymptotic error does not depend on the initial states. (ii
+    // refers to a homework not in the book; the loop of 15.20.44 case 1 stands in:
+    // G = 1/(s² + 2s + 1), G_c = 1/(s² + 2s), step command.)
+    let g = StateSpace::from_tf(&tf(&[1.0], &[1.0, 2.0, 1.0])).unwrap();
+    let gc = StateSpace::from_tf(&tf(&[1.0], &[1.0, 2.0, 0.0])).unwrap();
+    let cl = gc.series(&g).unwrap().unity_feedback().unwrap();
+    assert_eq!(stability_of_matrix(cl.a(), AXIS_RTOL).unwrap(), StabilityClass::AsymptoticallyStable);
+    let t = time_grid(300.0, 3001).unwrap();
+    let u = vec![1.0; t.len()];
+    let from_rest = lsim(&cl, 0, &u, &t, &[0.0; 4], Hold::Zoh, 0.0).unwrap();
+    for x0 in [[1.0, -2.0, 0.5, 3.0], [-4.0, 0.0, 2.0, -1.0]] {
+        let r = lsim(&cl, 0, &u, &t, &x0, Hold::Zoh, 0.0).unwrap();
+        let free = initial(&cl, &x0, &t).unwrap();
+        for k in 0..t.len() {
+            // superposition: the difference of the errors is the free response (absolute, the
+            // signals are of size ≤ 10)
+            assert_abs(r.y[0][k] - from_rest.y[0][k], free.y[0][k], 1e3 * EPS * 10.0);
+        }
+        // the slowest closed-loop modes, −(2 − √3)/2 ± j/2, decay like e^{−0.134t}: at t = 300
+        // they are ~1e-17, so both errors agree to rounding (absolute, signals of size ≤ 10)
+        let sigma =
+            linalg::eigenvalues(cl.a()).unwrap().iter().map(|l| l.re).fold(f64::NEG_INFINITY, f64::max);
+        assert_abs(sigma, -(2.0 - 3f64.sqrt()) / 2.0, 1e3 * EPS);
+        let last = t.len() - 1;
+        assert_abs(1.0 - r.y[0][last], 1.0 - from_rest.y[0][last], 1e3 * EPS * 10.0);
+        assert_abs(1.0 - r.y[0][last], 0.0, 1e3 * EPS * 10.0); // integrator in G_c: e∞ = 0
+    }
 }

@@ -283,3 +283,104 @@ fn eq_16_2_4_paired_factor_response_matches_factor_by_factor() {
     assert!((wd - w1 * Complex64::from_polar(1.0, -0.3)).norm() <= 8.0 * EPS * wd.norm());
     assert!(g.freqresp(&[-1.0]).is_err());
 }
+
+#[test]
+fn example_16_7_1_rc_circuit_from_its_two_equations() {
+    // Ex 16.7.1: V_in − V_out = RI and V_out = I/(Cs), i.e. (16.7.1) V_out = (V_in − V_out)/(RCs):
+    // a unity-feedback loop around 1/(RCs), so V_out = V_in/(RCs + 1) = (1/RC)/(s + 1/RC)·V_in,
+    // and I = Cs·V_out = Cs/(RCs + 1)·V_in, which tends to V_in/R at high frequency.
+    let (r, c) = (4.7e3, 1.0e-6); // 4.7 kΩ, 1 µF
+    let integrator = tf(&[1.0], &[r * c, 0.0]);
+    let vout = integrator.feedback(&TransferFunction::gain(1.0).unwrap()).unwrap();
+    let current = vout.series(&tf(&[c, 0.0], &[1.0])).unwrap();
+    let want_vout = tf(&[1.0 / (r * c)], &[1.0, 1.0 / (r * c)]);
+    let want_current = tf(&[c, 0.0], &[r * c, 1.0]);
+    for w in [0.0, 10.0, 1.0 / (r * c), 1e4, 1e7] {
+        let s = Complex64::new(0.0, w);
+        let (g, h) = (vout.eval(s), want_vout.eval(s));
+        assert!((g - h).norm() <= 16.0 * EPS * h.norm().max(EPS), "V_out at ω = {w}");
+        let (g, h) = (current.eval(s), want_current.eval(s));
+        assert!((g - h).norm() <= 16.0 * EPS * h.norm(), "I at ω = {w}");
+    }
+    // at high frequency the capacitor is a short: |I/V_in| → 1/R with |I/V_in − 1/R| ≈ 1/(R·ωRC)
+    let w = 1e8;
+    let hi = current.eval(Complex64::new(0.0, w));
+    assert_abs(hi.norm() * r, 1.0, 1.0 / (w * r * c));
+}
+
+#[test]
+fn problem_16_8_5_resonance_frequency_and_peak() {
+    // 16.8.5: |G(jω)| = 1/√(ω⁴ + 2(2ζ² − 1)ωn²ω² + ωn⁴) for G = 1/(s² + 2ζωn s + ωn²). For
+    // ζ < 1/√2 it peaks at ωr = ωn√(1 − 2ζ²) with |G(jωr)| = 1/(2ζωn²√(1 − ζ²)); for ζ ≥ 1/√2 it
+    // never exceeds the DC gain 1/ωn² (resonance damping 1/√2). (ERR: the printed ωr range
+    // "0.9592–0.5292" for ζ = 0.1–0.7 should be 0.9899–0.1414, problem_16_8_4_resonance_peaks.)
+    let w = logspace(-2.0, 2.0, 801).unwrap();
+    for wn in [0.5f64, 2.0, 30.0] {
+        for zeta in [0.05f64, 0.2, 0.5, 0.7, 0.705, 0.72, 0.9] {
+            let g = tf(&[1.0], &[1.0, 2.0 * zeta * wn, wn * wn]);
+            let omega: Vec<f64> = w.iter().map(|x| x * wn).collect();
+            let mag: Vec<f64> = g.bode(&omega).unwrap().response.iter().map(|z| z.norm()).collect();
+            let formula = |x: f64| {
+                1.0 / (x.powi(4) + 2.0 * (2.0 * zeta * zeta - 1.0) * wn * wn * x * x + wn.powi(4)).sqrt()
+            };
+            for (k, &x) in omega.iter().enumerate() {
+                assert_rel(mag[k], formula(x), 64.0 * EPS);
+            }
+            let dc = 1.0 / (wn * wn);
+            if zeta < std::f64::consts::FRAC_1_SQRT_2 {
+                let wr = wn * (1.0 - 2.0 * zeta * zeta).sqrt();
+                let peak = 1.0 / (2.0 * zeta * wn * wn * (1.0 - zeta * zeta).sqrt());
+                assert_rel(at(&g, wr).response[0].norm(), peak, 64.0 * EPS);
+                // ωr is the maximum: no sample exceeds the peak, the neighbours are lower
+                assert!(mag.iter().all(|&m| m <= peak * (1.0 + 64.0 * EPS)));
+                assert!(
+                    at(&g, wr * 1.01).response[0].norm() < peak
+                        && at(&g, wr * 0.99).response[0].norm() < peak
+                );
+                assert!(peak > dc);
+            } else {
+                assert!(mag.iter().all(|&m| m <= dc * (1.0 + 64.0 * EPS)), "ζ = {zeta}: above DC gain");
+            }
+        }
+    }
+}
+
+#[test]
+fn problem_16_8_7_rooftop_and_integrator_bode_asymptotes() {
+    // 16.8.7 (plots only in the book): the hand-sketch rules, checked on the computed Bode data.
+    // i) rooftop s²/((s + 1)²(s + 10)²): +40 dB/dec below ω = 1, flat between the corners at the
+    // asymptote 20 log₁₀(1/100) = −40 dB, −40 dB/dec above ω = 10; phase 180° − 2 atan ω −
+    // 2 atan(ω/10), from +180° to −180°.
+    let den = poly(&[1.0, 2.0, 1.0]).mul(&poly(&[1.0, 20.0, 100.0])).unwrap();
+    let g = tf(&[1.0, 0.0, 0.0], den.coeffs());
+    let slope = |g: &TransferFunction, w: f64| {
+        let b = g.bode(&[w, 10.0 * w]).unwrap();
+        b.magnitude_db[1] - b.magnitude_db[0] // dB per decade
+    };
+    assert_abs(slope(&g, 1e-4), 40.0, 1e-3); // the corner's influence at 1e-4 is O(ω²) dB
+    assert_abs(slope(&g, 1e4), -40.0, 1e-3);
+    assert_abs(at(&g, 3.0).magnitude_db[0], -40.0, 3.0); // the flat top, within the ±3 dB corners
+    for w in [1e-3f64, 0.5, 1.0, 3.0, 10.0, 100.0, 1e4] {
+        let want = 180.0 - 2.0 * w.atan().to_degrees() - 2.0 * (w / 10.0).atan().to_degrees();
+        assert_abs(at(&g, w).phase_deg[0], want, 1e3 * EPS * 180.0);
+        // the exact magnitude, factor by factor
+        let mag = w * w / ((1.0 + w * w) * (100.0 + w * w));
+        assert_rel(at(&g, w).response[0].norm(), mag, 64.0 * EPS);
+    }
+    // ii) (s + 1)(s + 100)/(s(s + 5)(s + 10)): at low frequency 2/s (−20 dB/dec, −90°, 6.02 dB at
+    // ω = 1 on the asymptote), at high frequency 1/s (−20 dB/dec, −90°); in between the phase
+    // is −90° + atan ω + atan(ω/100) − atan(ω/5) − atan(ω/10).
+    let num = poly(&[1.0, 1.0]).mul(&poly(&[1.0, 100.0])).unwrap();
+    let den = poly(&[1.0, 0.0]).mul(&poly(&[1.0, 5.0])).unwrap().mul(&poly(&[1.0, 10.0])).unwrap();
+    let g = TransferFunction::from_polynomials(num, den).unwrap();
+    assert_abs(slope(&g, 1e-5), -20.0, 1e-3);
+    assert_abs(slope(&g, 1e6), -20.0, 1e-3);
+    assert_abs(at(&g, 1e-5).magnitude_db[0], 20.0 * (2.0f64 / 1e-5).log10(), 1e-3);
+    assert_abs(at(&g, 1e7).magnitude_db[0], 20.0 * (1.0f64 / 1e7).log10(), 1e-3);
+    for w in [1e-4f64, 1.0, 7.0, 30.0, 1e3, 1e6] {
+        let want = -90.0 + w.atan().to_degrees() + (w / 100.0).atan().to_degrees()
+            - (w / 5.0).atan().to_degrees()
+            - (w / 10.0).atan().to_degrees();
+        assert_abs(at(&g, w).phase_deg[0], want, 1e3 * EPS * 180.0);
+    }
+}
