@@ -237,7 +237,8 @@ ENERGY_E0 = 1 - np.cos(ENERGY_THETA0)
 
 
 def energy_checkpoints():
-    return ENERGY_PERIOD * ENERGY_EVERY * np.arange(ENERGY_PERIODS // ENERGY_EVERY + 1)
+    # the last checkpoint can round past ENERGY_T (solve_ivp refuses t_eval outside t_span)
+    return np.minimum(ENERGY_PERIOD * ENERGY_EVERY * np.arange(ENERGY_PERIODS // ENERGY_EVERY + 1), ENERGY_T)
 
 
 def energy_rel(theta, omega):
