@@ -146,7 +146,8 @@ pub fn nyquist(title: &str, ny: &Nyquist, clip: f64) -> Result<Figure, PlotError
 /// Book: §15.9, 15.20.32, 15.20.39.
 ///
 /// # Errors
-/// [`PlotError::Empty`] for a missing output or an empty response.
+/// [`PlotError::Empty`] for a missing output or an empty response; [`PlotError::NonFinite`]
+/// for a non-finite impulse weight.
 pub fn response(
     title: &str,
     r: &TimeResponse,
@@ -166,8 +167,9 @@ pub fn response(
     if let Some(v) = final_value {
         chart.hlines.push(RefLine { value: v, label: Some(format!("y∞ = {}", fmt_num(v))) });
     }
+    // samples of y beyond the last time have no abscissa (a y longer than t): not searched
     if let Some((k, &peak)) =
-        y.iter().enumerate().filter(|(_, v)| v.is_finite()).max_by(|a, b| a.1.total_cmp(b.1))
+        y.iter().take(r.t.len()).enumerate().filter(|(_, v)| v.is_finite()).max_by(|a, b| a.1.total_cmp(b.1))
     {
         chart.markers.push(Marker {
             at: (r.t[k], peak),
@@ -176,7 +178,16 @@ pub fn response(
             label: Some(format!("peak {peak:.4} at {:.3} s", r.t[k])),
         });
     }
-    if let Some(w) = r.impulse_weight.get(output).filter(|w| **w != 0.0) {
+    if let Some(&w) = r.impulse_weight.get(output).filter(|w| **w != 0.0) {
+        // a non-finite weight cannot be drawn, and "inf"/"NaN" never reach the SVG
+        if !w.is_finite() {
+            return Err(PlotError::NonFinite {
+                series: format!("y{} impulse weight", output + 1),
+                index: 0,
+                x: 0.0,
+                y: w,
+            });
+        }
         chart.title = format!("{title}  (+ {w:.4}·δ(t))");
     }
     Ok(Figure { title: String::new(), panels: vec![chart] })

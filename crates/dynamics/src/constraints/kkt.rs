@@ -92,7 +92,8 @@ impl KktFactor {
     /// Book: §9.11.
     ///
     /// # Errors
-    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`].
+    /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`];
+    /// [`DynamicsError::Overflow`] when finite f and γ give a non-finite x or λ (γ ≈ 1e308).
     pub fn solve(&self, forcing: &DVector<f64>, gamma: &DVector<f64>) -> Result<KktSolution, DynamicsError> {
         let (n, m) = self.y.shape();
         crate::error::check_len(forcing.len(), n, "forcing")?;
@@ -120,6 +121,9 @@ impl KktFactor {
         // x = L⁻ᵀ(z − Yλ)
         let mut x = z - &self.y * &lambda;
         low.tr_solve_lower_triangular_mut(&mut x);
+        if !(x.iter().chain(lambda.iter()).all(|v| v.is_finite())) {
+            return Err(DynamicsError::Overflow { what: "KKT solution (x, λ)" });
+        }
         Ok(KktSolution { x, lambda })
     }
 }

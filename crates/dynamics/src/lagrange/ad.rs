@@ -201,9 +201,14 @@ pub fn energy<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> Result<f
 /// Book: Fact 9.9.3, (9.13.16).
 ///
 /// # Errors
-/// As [`lagrange_terms`].
+/// As [`lagrange_terms`]; [`DynamicsError::Overflow`] when the power exceeds f64::MAX.
 pub fn energy_rate<L: Lagrangian>(sys: &L, q: &[f64], qd: &[f64], t: f64) -> Result<f64, DynamicsError> {
     let terms = lagrange_terms(sys, q, qd, t)?;
     let qd = DVector::from_column_slice(qd);
-    Ok((&terms.force - &terms.dr_dqd).dot(&qd))
+    let rate = (&terms.force - &terms.dr_dqd).dot(&qd);
+    // finite forces and speeds whose power exceeds f64::MAX
+    if !rate.is_finite() {
+        return Err(DynamicsError::Overflow { what: "energy rate" });
+    }
+    Ok(rate)
 }

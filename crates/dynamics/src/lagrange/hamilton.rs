@@ -41,11 +41,16 @@ pub fn velocities_from_momenta<L: Lagrangian>(
 /// Book: (9.13.7)–(9.13.9) (with the corrected sign of ½FM⁻¹Fᵀ, notes ch9-14).
 ///
 /// # Errors
-/// As [`velocities_from_momenta`].
+/// As [`velocities_from_momenta`]; [`DynamicsError::Overflow`] when H exceeds f64::MAX.
 pub fn hamiltonian<L: Lagrangian>(sys: &L, q: &[f64], p: &[f64], t: f64) -> Result<f64, DynamicsError> {
     let qd = velocities_from_momenta(sys, q, p, t)?;
     let l = sys.kinetic(q, qd.as_slice(), t) - sys.potential(q, t);
-    Ok(DVector::from_column_slice(p).dot(&qd) - l)
+    let h = DVector::from_column_slice(p).dot(&qd) - l;
+    // finite p and q whose pᵀq̇ or L exceeds f64::MAX (∞ − ∞ = NaN)
+    if !h.is_finite() {
+        return Err(DynamicsError::Overflow { what: "Hamiltonian" });
+    }
+    Ok(h)
 }
 
 /// Hamilton's equations q̇ = ∂H/∂pᵀ, ṗ = −∂H/∂qᵀ + Q_np (9.13.10–12), evaluated through the

@@ -144,6 +144,7 @@ fn assemble<K: KinematicMap>(sys: &K, q: &[f64], qd: &[f64], t: f64) -> Result<M
     rhs += qf;
     check_finite(m.as_slice(), "mass matrix")?;
     check_finite(rhs.as_slice(), "generalized forces")?;
+    check_finite(&[t_kin], "kinetic energy")?;
     Ok(MapState { m, rhs, t_kin })
 }
 

@@ -69,7 +69,12 @@ pub(crate) fn cholesky_solve(m: DMatrix<f64>, b: DVector<f64>) -> Result<DVector
     if !m.iter().chain(b.iter()).all(|x| x.is_finite()) {
         return Err(DynamicsError::NonFinite { what: "mass matrix or right-hand side" });
     }
-    Ok(checked_cholesky(m)?.solve(&b))
+    let x = checked_cholesky(m)?.solve(&b);
+    // finite M and b whose solution exceeds f64::MAX (b ≈ 1e308 over a small pivot)
+    if !x.iter().all(|v| v.is_finite()) {
+        return Err(DynamicsError::Overflow { what: "the solution of M x = b" });
+    }
+    Ok(x)
 }
 
 /// The Cholesky factor of M, `Err(SingularMassMatrix)` when M is not positive definite or a

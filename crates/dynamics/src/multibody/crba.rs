@@ -76,10 +76,16 @@ impl<T: Scalar> Model<T> {
     ///
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
-    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
+    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6);
+    /// [`DynamicsError::Overflow`] when finite q gives a non-finite entry (a prismatic
+    /// coordinate near 1e154 squares past f64::MAX in the composite inertias).
     pub fn crba(&self, q: &[T]) -> Result<DMatrix<T>, DynamicsError> {
         self.check_q(q)?;
-        Ok(self.crba_unchecked(q))
+        let h = self.crba_unchecked(q);
+        if !crate::error::all_finite(h.as_slice()) {
+            return Err(DynamicsError::Overflow { what: "mass matrix" });
+        }
+        Ok(h)
     }
 
     /// [`Model::crba`] without input checks.

@@ -197,11 +197,15 @@ pub(crate) fn unit_axis(
     what: &'static str,
 ) -> Result<Vector3<f64>, DynamicsError> {
     check_finite(a.as_slice(), "joint axis")?;
-    let n = a.norm();
+    // scaled by the largest component: |a|² of an axis (0, 1e300, 1e300) overflows, and a/∞
+    // would be the zero axis
+    let s = a.amax();
+    let w = if s > 0.0 { a / s } else { *a };
+    let n = s * w.norm();
     if n <= 1e3 * f64::EPSILON {
         return Err(DynamicsError::ZeroAxis { link, what, length: n });
     }
-    Ok(a / n)
+    Ok(w / w.norm())
 }
 
 pub(crate) fn elems(joint: &Joint, link: usize) -> Result<Vec<Elem<f64>>, DynamicsError> {

@@ -21,5 +21,5 @@ pub use crba::CrbaScratch;
 pub use derivatives::{AbaDerivatives, DerivativeScratch, RneaDerivatives};
 pub use joint::{Joint, Link, Pose};
 pub use kinematics::LinkTwist;
-pub use model::{Model, PosesScratch};
+pub use model::{MAX_CHAIN_LINKS, Model, PosesScratch};
 pub use rnea::{InverseDynamics, JointWrench, LinkWrenches, Scratch};

@@ -91,6 +91,10 @@ fn topological_order(links: &[Link]) -> Result<Vec<usize>, DynamicsError> {
     Ok(order)
 }
 
+/// Longest chain [`Model::revolute_chain`] builds (its benchmark chains have tens of links; a
+/// million keeps a hostile `n` from allocating without bound).
+pub const MAX_CHAIN_LINKS: usize = 1_000_000;
+
 impl Model<f64> {
     /// Validates the links and builds the tree. Gravity defaults to zero; set
     /// [`Model::gravity`] (components in the ground frame).
@@ -211,8 +215,17 @@ impl Model<f64> {
     /// Book: §7.11 (chains).
     ///
     /// # Errors
-    /// As [`Model::new`] (n = 0 gives an empty model, which is valid).
+    /// As [`Model::new`] (n = 0 gives an empty model, which is valid);
+    /// [`DynamicsError::InvalidParameter`] for n > [`MAX_CHAIN_LINKS`] (refused before
+    /// allocating, docs/robustness.md §4).
     pub fn revolute_chain(n: usize, m: f64, l: f64) -> Result<Self, DynamicsError> {
+        if n > MAX_CHAIN_LINKS {
+            return Err(DynamicsError::InvalidParameter {
+                what: "number of chain links",
+                value: n as f64,
+                valid: "0 ≤ n ≤ 1 000 000",
+            });
+        }
         let j = Matrix3::from_diagonal(&Vector3::new(m * l * l / 1200.0, m * l * l / 12.0, m * l * l / 12.0));
         let links: Vec<Link> = (0..n)
             .map(|i| {

@@ -320,7 +320,9 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
                     )
                 })?;
                 let fr = &spec.frames[k];
-                let axis = Unit::try_new(v3(fr.axis), 1e-12).ok_or_else(|| {
+                let axis =
+                    direction(fr.axis).filter(|(_, n)| *n > 1e-12).map(|(d, _)| Unit::new_unchecked(d));
+                let axis = axis.ok_or_else(|| {
                     src.invalid(format!("frames[{k}].axis"), "zero axis; valid: a nonzero vector")
                 })?;
                 // 𝓞_{J/G} = 𝓡ᵀ of the active rotation of the ground axes
@@ -340,7 +342,7 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             ));
         }
         let (jq, jv) = dims(&b.joint);
-        let u = |a: &[f64; 3]| v3(*a).try_normalize(0.0).unwrap_or_default();
+        let u = |a: &[f64; 3]| direction(*a).map(|(d, _)| d).unwrap_or_default();
         let (axis, direction) = match &b.joint {
             JointSpec::Pin { axis } | JointSpec::Sleeve { axis } | JointSpec::Collar { axis } => {
                 (u(axis), Vector3::zeros())
@@ -467,13 +469,25 @@ fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> 
 }
 
 fn unit(x: [f64; 3], what: &str, path: &str, src: &Src) -> Result<Vector3<f64>, SceneError> {
-    let v = v3(x);
-    let n = v.norm();
-    if n > 1e-12 {
-        Ok(v / n)
-    } else {
-        Err(src.invalid(format!("{path}.{what}"), format!("{what} is zero; valid: a nonzero vector")))
+    match direction(x) {
+        Some((d, n)) if n > 1e-12 => Ok(d),
+        _ => Err(src.invalid(format!("{path}.{what}"), format!("{what} is zero; valid: a nonzero vector"))),
     }
+}
+
+/// The unit vector along x and |x|, scaled by the largest component first so that the norm
+/// of a vector with components near 1e300 does not overflow (|x|² = ∞ made x/|x| = 0⃗, a
+/// zero axis that the model, which normalizes by itself, did not share); `None` for 0⃗.
+fn direction(x: [f64; 3]) -> Option<(Vector3<f64>, f64)> {
+    let v = v3(x);
+    let s = v.amax();
+    // 0⃗ (s = 0) and a NaN component (s = NaN: a comparison that fails) have no direction
+    if s.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return None;
+    }
+    let w = v / s;
+    let n = w.norm();
+    Some((w / n, s * n))
 }
 
 type Index<'a> = dyn Fn(&str, &str) -> Result<Option<usize>, SceneError> + 'a;

@@ -138,7 +138,9 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
     match uniform {
         None => out.push(Invariant::AngularMomentum { about: about.into() }),
         Some(g) if g.norm() > 0.0 => {
-            out.push(Invariant::AngularMomentumAlong { about: about.into(), axis: g.normalize().into() })
+            // scaled first: |g|² of components near 1e300 overflows and g/|g| would be 0⃗
+            let axis = (g / g.amax()).normalize();
+            out.push(Invariant::AngularMomentumAlong { about: about.into(), axis: axis.into() })
         }
         Some(_) => out.push(Invariant::AngularMomentum { about: about.into() }),
     }

@@ -119,7 +119,8 @@ impl LinearModel {
     /// Assembles the model and its modes from the matrices.
     ///
     /// # Errors
-    /// A message when the sizes disagree or an entry is not finite.
+    /// A message when the sizes disagree, an entry is not finite or an eigenvalue of A
+    /// overflows.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         scene: String,
@@ -147,7 +148,14 @@ impl LinearModel {
                 ));
             }
         }
-        let lambdas: Vec<Complex<f64>> = a.clone().complex_eigenvalues().iter().copied().collect();
+        // a model without states (every body welded) has no eigenvalues; nalgebra's Schur
+        // decomposition underflows a usize on a 0 × 0 matrix, so it is not called
+        let lambdas: Vec<Complex<f64>> =
+            if n == 0 { Vec::new() } else { a.clone().complex_eigenvalues().iter().copied().collect() };
+        // finite entries near f64::MAX overflow inside the eigenvalue iteration
+        if lambdas.iter().any(|l| !(l.re.is_finite() && l.im.is_finite())) {
+            return Err("the eigenvalues of A overflow (entries near f64::MAX); valid: A whose eigenvalues are finite".into());
+        }
         // a real part within the differences' resolution of A is reported as 0 (a conservative
         // system's modes are marginal, not damped by 1e-16)
         let marginal = MARGINAL_REL * a.amax().max(f64::MIN_POSITIVE);

@@ -274,7 +274,8 @@ impl Scene {
     /// The right-hand side y′ = f(t, y) with exactly the declared effects.
     ///
     /// # Errors
-    /// [`SceneError::Run`] when the dynamics fail (singular mass matrix, coincident points).
+    /// [`SceneError::Run`] for a state of the wrong length, a non-finite t or y, a
+    /// non-finite y′, or when the dynamics fail (singular mass matrix, coincident points).
     pub fn derivative(&self, t: f64, y: &[f64]) -> Result<Vec<f64>, SceneError> {
         if y.len() != self.built.model.nq() + self.built.model.nv() {
             return Err(SceneError::Run {
@@ -286,6 +287,9 @@ impl Scene {
                 ),
             });
         }
-        self.deriv(t, y).map_err(|message| SceneError::Run { t, message })
+        rhs::finite_state(t, y).map_err(|message| SceneError::Run { t, message })?;
+        let d = self.deriv(t, y).map_err(|message| SceneError::Run { t, message })?;
+        rhs::finite_derivative(&d).map_err(|message| SceneError::Run { t, message })?;
+        Ok(d)
     }
 }

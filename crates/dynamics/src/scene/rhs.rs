@@ -58,7 +58,8 @@ impl SceneRhs<'_> {
     /// y′ = f(t, y) into `out` (both of length nq + nv).
     ///
     /// # Errors
-    /// [`SceneError::Run`] for wrong lengths, or when the dynamics fail (a singular mass
+    /// [`SceneError::Run`] for wrong lengths, a non-finite t or y, a non-finite y′ (finite
+    /// input whose derivative overflows), or when the dynamics fail (a singular mass
     /// matrix, coincident points).
     pub fn eval(&mut self, t: f64, y: &[f64], out: &mut [f64]) -> Result<(), SceneError> {
         let n = self.scene.built.model.nq() + self.scene.built.model.nv();
@@ -72,7 +73,35 @@ impl SceneRhs<'_> {
                 ),
             });
         }
-        self.scene.deriv_into(t, y, out, &mut self.scratch).map_err(|message| SceneError::Run { t, message })
+        finite_state(t, y).map_err(|message| SceneError::Run { t, message })?;
+        self.scene
+            .deriv_into(t, y, out, &mut self.scratch)
+            .map_err(|message| SceneError::Run { t, message })?;
+        finite_derivative(out).map_err(|message| SceneError::Run { t, message })
+    }
+}
+
+/// The public evaluators take user states: a non-finite t or y is refused before the
+/// unchecked hot path (which would propagate it as NaN).
+pub(crate) fn finite_state(t: f64, y: &[f64]) -> Result<(), String> {
+    if !t.is_finite() {
+        return Err(format!("t = {t}; valid: a finite time"));
+    }
+    match y.iter().position(|x| !x.is_finite()) {
+        Some(k) => Err(format!("state entry {k} is {}; valid: finite numbers", y[k])),
+        None => Ok(()),
+    }
+}
+
+/// A finite state whose derivative is not finite (an angle of 1e300 rad, speeds that square
+/// past f64::MAX) is an error, never NaN or ∞ inside `Ok`.
+pub(crate) fn finite_derivative(d: &[f64]) -> Result<(), String> {
+    match d.iter().position(|x| !x.is_finite()) {
+        Some(k) => Err(format!(
+            "the right-hand side is not finite (component {k}: {}); valid: a state where the dynamics are finite",
+            d[k]
+        )),
+        None => Ok(()),
     }
 }
 

@@ -90,7 +90,7 @@ fn speed_rate<K: KaneSystem>(
 /// loads), [`DynamicsError::NonFinite`], [`DynamicsError::TooManyConstraints`] (k > p),
 /// [`DynamicsError::SpeedsNotDetermined`] (A_d singular), and
 /// [`DynamicsError::SingularMassMatrix`] when CᵀKC is not positive definite (speeds that
-/// do not move any mass).
+/// do not move any mass); [`DynamicsError::Overflow`] when finite inputs give a non-finite u̇.
 pub fn kane_accelerations<K: KaneSystem>(
     sys: &K,
     q: &[f64],
@@ -140,6 +140,10 @@ pub fn kane_accelerations<K: KaneSystem>(
     let forcing_red = c.transpose() * (&forcing - &mass * &w);
     let ud_i = cholesky_solve(mass_red.clone(), forcing_red.clone())?;
     let ud = &c * ud_i + w;
+    // finite inputs whose dependent accelerations exceed f64::MAX
+    if !ud.iter().all(|x| x.is_finite()) {
+        return Err(DynamicsError::Overflow { what: "Kane's equations u̇" });
+    }
     Ok(KaneSolution {
         u: DVector::from_vec(u),
         qd: DVector::from_vec(qd),

@@ -1,0 +1,63 @@
+//! vectrix-cli under hostile input (docs/robustness.md): hostile arguments (unknown flags,
+//! missing files, unit systems, sweep values `nan`, `inf`, 1e308, empty lists, paths with
+//! `..`) are refused with a message, or run and write finite output; the binary's exit
+//! code is 0 only for success.
+
+use std::process::Command;
+
+use vectrix_cli::run_with_args;
+
+fn cli(args: &[&str]) -> Result<String, String> {
+    let mut out = Vec::new();
+    let r = run_with_args(std::iter::once("vectrix").chain(args.iter().copied()), &mut out);
+    r.map(|_| String::from_utf8_lossy(&out).to_string()).map_err(|e| e.to_string())
+}
+
+cases! {
+    // `check`, `run` and `sweep` with hostile arguments: an error with a message, or output
+    // without NaN/∞ (a valid scene is checked; a sweep over non-finite values is refused per
+    // value or as a whole). The binary (`main`) exits 0 for `--help`, nonzero for nonsense.
+    cli_arguments ["run_with_args", "main"] {
+        let dir = tempfile::tempdir().unwrap();
+        let scene = dir.path().join("p.toml");
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/simple_pendulum.toml")).unwrap();
+        let short = text.lines().map(|l| if l.starts_with("duration") { "duration = 0.2" } else if l.starts_with("samples") { "samples = 5" } else { l }).collect::<Vec<_>>().join("\n");
+        std::fs::write(&scene, &short).unwrap();
+        let p = scene.to_str().unwrap();
+        let out = dir.path().join("out");
+        let o = out.to_str().unwrap();
+        assert!(cli(&["check", p]).is_ok());
+        for args in [
+            vec!["--bogus"],
+            vec!["check"],
+            vec!["check", ""],
+            vec!["check", "/nonexistent/scene.toml"],
+            vec!["check", dir.path().to_str().unwrap()],
+            vec!["run", p, "--units", "parsecs", "--out", o, "--quiet"],
+            vec!["run", p, "--units", "", "--out", o, "--quiet"],
+            vec!["sweep", p, "--param", "duration=nan,inf", "--out", o, "--quiet"],
+            vec!["sweep", p, "--param", "duration=", "--out", o, "--quiet"],
+            vec!["sweep", p, "--param", "=1", "--out", o, "--quiet"],
+            vec!["sweep", p, "--param", "bodies[99].mass.mass=1", "--out", o, "--quiet"],
+            vec!["sweep", p, "--param", "duration=1e308", "--out", o, "--quiet"],
+            vec!["sweep", p, "--param", "duration=-1,0,5e-324", "--out", o, "--quiet"],
+            vec!["linearize", "/nonexistent.toml", "--out", o],
+        ] {
+            match cli(&args) {
+                Ok(text) => assert!(!text.contains("NaN") && !text.contains(" inf"), "{args:?}: {text}"),
+                Err(e) => assert!(!e.is_empty(), "{args:?}: an empty message"),
+            }
+        }
+        let ok = cli(&["run", p, "--out", o, "--quiet"]).unwrap();
+        assert!(!ok.contains("NaN"));
+        let csv = std::fs::read_dir(&out).unwrap().flatten().find_map(|d| std::fs::read_to_string(d.path().join("trajectory.csv")).ok());
+        assert!(csv.is_some_and(|c| c.lines().count() == 7 && !c.contains("NaN") && !c.contains("inf")));
+        // the binary itself: main's exit codes
+        let bin = env!("CARGO_BIN_EXE_vectrix");
+        let run = |args: &[&str]| Command::new(bin).current_dir(dir.path()).args(args).output().unwrap().status;
+        assert!(run(&["--help"]).success());
+        assert!(!run(&["--bogus"]).success());
+        assert!(!run(&["check", "/nonexistent.toml"]).success());
+        assert!(run(&["check", p]).success());
+    }
+}
