@@ -67,7 +67,7 @@ pub(crate) fn normals(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
 }
 
 /// 𝓞_{link/ground} of a body, the identity for the ground.
-fn orient(kin: &Kin, body: Option<usize>) -> nalgebra::Matrix3<f64> {
+pub(crate) fn orient(kin: &Kin, body: Option<usize>) -> nalgebra::Matrix3<f64> {
     body.map_or_else(nalgebra::Matrix3::identity, |i| kin.poses[i].0)
 }
 
@@ -332,9 +332,37 @@ impl Scene {
     }
 }
 
-/// Solves the KKT system with the rows of `keep` (computed when `None` or when the kept set
-/// has become dependent): rows are added in order and a row that depends on those kept is
-/// dropped. Returns v̇ and λ for every row (0 for dropped ones).
+/// The rows `rows` of G.
+pub(crate) fn select(g: &DMatrix<f64>, rows: &[usize]) -> DMatrix<f64> {
+    DMatrix::from_fn(rows.len(), g.ncols(), |r, c| g[(rows[r], c)])
+}
+
+/// The entries `rows` of x.
+pub(crate) fn select_v(x: &DVector<f64>, rows: &[usize]) -> DVector<f64> {
+    DVector::from_fn(rows.len(), |r, _| x[rows[r]])
+}
+
+/// `keep`, or the independent rows of `g` (see [`independent_rows`]) when `keep` is empty or
+/// no longer independent; `keep` is updated.
+pub(crate) fn rows_of(
+    m: &DMatrix<f64>,
+    g: &DMatrix<f64>,
+    keep: &mut Option<Vec<usize>>,
+) -> Result<Vec<usize>, DynamicsError> {
+    if let Some(rows) = keep.as_ref()
+        && rows.iter().all(|&r| r < g.nrows())
+        && KktFactor::new(m, &select(g, rows), DEPENDENT_ROW_REL_TOL).is_ok()
+    {
+        return Ok(rows.clone());
+    }
+    let rows = independent_rows(m, g)?;
+    *keep = Some(rows.clone());
+    Ok(rows)
+}
+
+/// Solves the KKT system with the independent rows of G (cached in `keep`, see [`rows_of`]):
+/// a row that depends on those kept is dropped. Returns v̇ and λ for every row (0 for dropped
+/// ones).
 pub(crate) fn solve_dropping(
     m: &DMatrix<f64>,
     g: &DMatrix<f64>,
@@ -342,31 +370,13 @@ pub(crate) fn solve_dropping(
     gamma: &DVector<f64>,
     keep: &mut Option<Vec<usize>>,
 ) -> Result<(DVector<f64>, DVector<f64>), DynamicsError> {
-    let all = g.nrows();
-    let select = |rows: &[usize]| -> (DMatrix<f64>, DVector<f64>) {
-        (
-            DMatrix::from_fn(rows.len(), g.ncols(), |r, c| g[(rows[r], c)]),
-            DVector::from_fn(rows.len(), |r, _| gamma[rows[r]]),
-        )
-    };
-    let attempt = |rows: &[usize]| -> Result<(DVector<f64>, DVector<f64>), DynamicsError> {
-        let (gs, gam) = select(rows);
-        let s = KktFactor::new(m, &gs, DEPENDENT_ROW_REL_TOL)?.solve(f, &gam)?;
-        let mut lam = DVector::zeros(all);
-        for (k, &r) in rows.iter().enumerate() {
-            lam[r] = s.lambda[k];
-        }
-        Ok((s.x, lam))
-    };
-    if let Some(rows) = keep.as_ref()
-        && let Ok(out) = attempt(rows)
-    {
-        return Ok(out);
+    let rows = rows_of(m, g, keep)?;
+    let s = KktFactor::new(m, &select(g, &rows), DEPENDENT_ROW_REL_TOL)?.solve(f, &select_v(gamma, &rows))?;
+    let mut lam = DVector::zeros(g.nrows());
+    for (k, &r) in rows.iter().enumerate() {
+        lam[r] = s.lambda[k];
     }
-    let rows = independent_rows(m, g)?;
-    let out = attempt(&rows)?;
-    *keep = Some(rows);
-    Ok(out)
+    Ok((s.x, lam))
 }
 
 /// The rows of G kept, in order, when each row that depends on those before it (in the metric
@@ -375,8 +385,7 @@ pub(crate) fn independent_rows(m: &DMatrix<f64>, g: &DMatrix<f64>) -> Result<Vec
     let mut rows: Vec<usize> = Vec::new();
     for r in 0..g.nrows() {
         rows.push(r);
-        let gs = DMatrix::from_fn(rows.len(), g.ncols(), |i, c| g[(rows[i], c)]);
-        match KktFactor::new(m, &gs, DEPENDENT_ROW_REL_TOL) {
+        match KktFactor::new(m, &select(g, &rows), DEPENDENT_ROW_REL_TOL) {
             Ok(_) => {}
             Err(DynamicsError::DependentConstraint { .. })
             | Err(DynamicsError::SingularConstraint { .. }) => {

@@ -10,7 +10,7 @@ use super::SceneError;
 use super::build::{Built, Src, dims};
 use super::forces::centre;
 use super::kin::Kin;
-use super::loops::{Loop, LoopKind};
+use super::loops::{Loop, LoopKind, orient};
 use super::spec::{JointSpec, SceneSpec};
 use vectrix_units::Dimension;
 
@@ -271,8 +271,7 @@ impl Scene {
 /// row λ·(v_a − v_b)·n gives −λn on `a`, and a pin's axis row λ·(ω_b − ω_a)·(k × e) gives the
 /// couple λ(k × e) on `a` (§6.10: `b` receives the opposite).
 fn reaction(kin: &Kin, l: &Loop, lam: impl Fn(usize) -> f64) -> (Vector3<f64>, Option<Vector3<f64>>) {
-    let orient = |body: Option<usize>| body.map_or_else(nalgebra::Matrix3::identity, |i| kin.poses[i].0);
-    let (ea, eb) = (orient(l.a.0), orient(l.b.0));
+    let (ea, eb) = (orient(kin, l.a.0), orient(kin, l.b.0));
     let three = -Vector3::new(lam(0), lam(1), lam(2));
     match &l.kind {
         LoopKind::Ball => (three, None),

@@ -13,7 +13,7 @@ use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
 use super::kin::{Kin, kinematics, normalize};
-use super::loops::independent_rows;
+use super::loops::{rows_of, select, select_v};
 use super::{Scene, SceneError};
 use crate::DynamicsError;
 use crate::constraints::{DEPENDENT_ROW_REL_TOL, ProjectionOptions, project_positions, project_velocities};
@@ -53,31 +53,6 @@ impl ConstraintViolation {
 pub(crate) struct ProjectScratch {
     pos: Option<Vec<usize>>,
     vel: Option<Vec<usize>>,
-}
-
-fn select(g: &DMatrix<f64>, rows: &[usize]) -> DMatrix<f64> {
-    DMatrix::from_fn(rows.len(), g.ncols(), |r, c| g[(rows[r], c)])
-}
-
-fn select_v(x: &DVector<f64>, rows: &[usize]) -> DVector<f64> {
-    DVector::from_fn(rows.len(), |r, _| x[rows[r]])
-}
-
-/// `keep`, or the independent rows of `g` when `keep` is empty or no longer independent.
-fn rows_of(
-    m: &DMatrix<f64>,
-    g: &DMatrix<f64>,
-    keep: &mut Option<Vec<usize>>,
-) -> Result<Vec<usize>, DynamicsError> {
-    if let Some(rows) = keep.as_ref()
-        && rows.iter().all(|&r| r < g.nrows())
-        && crate::constraints::KktFactor::new(m, &select(g, rows), DEPENDENT_ROW_REL_TOL).is_ok()
-    {
-        return Ok(rows.clone());
-    }
-    let rows = independent_rows(m, g)?;
-    *keep = Some(rows.clone());
-    Ok(rows)
 }
 
 impl Scene {

@@ -235,6 +235,12 @@ pub struct Run {
 }
 
 impl Run {
+    /// Records one projection of a step end: the violation before it (the drift) and after it.
+    fn note_projection(&mut self, before: ConstraintViolation, after: ConstraintViolation) {
+        self.max_constraint_drift = Some(self.max_constraint_drift.unwrap_or_default().max(before));
+        self.max_constraint_violation = Some(self.max_constraint_violation.unwrap_or_default().max(after));
+    }
+
     /// The samples of one column.
     pub fn column(&self, name: &str) -> Option<Vec<f64>> {
         let k = self.columns.iter().position(|c| c == name)?;
@@ -479,8 +485,7 @@ impl Scene {
         }
         if constrained {
             let (before, after) = self.project(&mut y0, &mut step_projection).map_err(|e| fail(0.0, e))?;
-            run.max_constraint_drift = Some(before);
-            run.max_constraint_violation = Some(after);
+            run.note_projection(before, after);
         }
         record(&mut run, 0.0, &y0)?;
         let mut next_sample = 1;
@@ -618,9 +623,7 @@ impl Scene {
                 if constrained {
                     let (before, after) =
                         self.project(&mut y, &mut step_projection).map_err(|e| fail(te, e))?;
-                    run.max_constraint_drift = Some(run.max_constraint_drift.unwrap_or_default().max(before));
-                    run.max_constraint_violation =
-                        Some(run.max_constraint_violation.unwrap_or_default().max(after));
+                    run.note_projection(before, after);
                 }
                 geo = self.geometry(&y).map_err(|e| fail(te, e))?;
                 st.restart(te, y).map_err(ode_err)?;
@@ -628,9 +631,7 @@ impl Scene {
                 // drift control: back onto φ(q) = 0 and G v = 0, and restart from there
                 let mut y = st.y().clone();
                 let (before, after) = self.project(&mut y, &mut step_projection).map_err(|e| fail(t1, e))?;
-                run.max_constraint_drift = Some(run.max_constraint_drift.unwrap_or_default().max(before));
-                run.max_constraint_violation =
-                    Some(run.max_constraint_violation.unwrap_or_default().max(after));
+                run.note_projection(before, after);
                 if before != after {
                     st.restart(t1, y).map_err(ode_err)?;
                     run.work.projections += 1;
