@@ -257,3 +257,35 @@ fn section_12_6_vectrix_linearize_on_a_flight_scene_matches_the_trim_linearizati
     assert!(stdout.contains("ωn ="), "{stdout}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn section_12_6_vectrix_linearize_adds_to_a_run_folder_and_refuses_foreign_ones() {
+    let path = format!("{}/examples/scenes/simple_pendulum.toml", env!("CARGO_MANIFEST_DIR"));
+    let name = Scene::from_toml(&std::fs::read_to_string(&path).unwrap(), &path).unwrap().spec().name.clone();
+    let dir = temp_dir("into-run");
+    let vectrix = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_vectrix")).args(args).arg("--out").arg(&dir).output().expect("runs")
+    };
+    assert!(vectrix(&["run", &path, "--quiet"]).status.success());
+    assert!(vectrix(&["linearize", &path]).status.success());
+    // the run's files stay; the linear model joins them
+    for f in ["trajectory.csv", "summary.json", "linearization.json", "poles.svg"] {
+        assert!(dir.join(&name).join(f).is_file(), "{f} missing");
+    }
+    // a folder vectrix did not write is refused and left alone
+    let foreign = temp_dir("foreign");
+    std::fs::create_dir_all(foreign.join(&name)).unwrap();
+    std::fs::write(foreign.join(&name).join("mine.txt"), "keep").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_vectrix"))
+        .args(["linearize", &path, "--out"])
+        .arg(&foreign)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let left: Vec<_> =
+        std::fs::read_dir(foreign.join(&name)).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(left, ["mine.txt"]);
+    assert_eq!(std::fs::read_to_string(foreign.join(&name).join("mine.txt")).unwrap(), "keep");
+    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_dir_all(&foreign);
+}

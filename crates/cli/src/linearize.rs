@@ -91,8 +91,15 @@ fn write_files(
     if dest.is_dir() && is_ours(&dest) {
         for (file, text) in files {
             // each file by a rename from a fresh sibling: a reader sees the old or the new one
+            // (created new: never a file or link that was already there)
             let tmp = dest.join(format!(".{file}.partial-{}", std::process::id()));
-            std::fs::write(&tmp, text)?;
+            let mut f = std::fs::OpenOptions::new()
+                .write(true)
+                .create_new(true)
+                .open(&tmp)
+                .map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
+            std::io::Write::write_all(&mut f, text.as_bytes())?;
+            drop(f);
             std::fs::rename(&tmp, dest.join(file))?;
         }
         return Ok(dest);
