@@ -236,8 +236,10 @@ pub fn singular_values(a: &DMatrix<f64>) -> Result<Vec<f64>, LtiError> {
 /// Numerical rank: the number of singular values above `rtol·σ_max` (and above zero).
 ///
 /// # Errors
-/// [`LtiError::NoConvergence`] if the SVD fails.
+/// [`LtiError::InvalidArgument`] unless `rtol` is finite and ≥ 0; [`LtiError::NoConvergence`]
+/// if the SVD fails.
 pub fn rank(a: &DMatrix<f64>, rtol: f64) -> Result<usize, LtiError> {
+    crate::error::check_tolerance("rank tolerance", rtol)?;
     let s = singular_values(a)?;
     let top = s.first().copied().unwrap_or(0.0);
     Ok(s.iter().filter(|&&x| x > rtol * top && x > 0.0).count())

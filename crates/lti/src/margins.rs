@@ -70,7 +70,8 @@ pub struct GainCrossover {
 pub struct PhaseCrossover {
     /// ω_pc ≥ 0 in rad/s.
     pub omega: f64,
-    /// GM = 1/|L(jω_pc)| (python-control's `gm`), +∞ where L(jω_pc) = 0.
+    /// GM = 1/|L(jω_pc)| (python-control's `gm`), +∞ where L(jω_pc) = 0 or where 1/|L| exceeds
+    /// the f64 range (then `gain_margin_db` still holds the finite value in dB).
     pub gain_margin: f64,
     /// GM in dB, −20 log₁₀|L(jω_pc)|; negative when the loop gain must *shrink* to reach −1
     /// (16.8.14: an unstable open loop stable only above a gain), +∞ where L = 0.
