@@ -158,7 +158,10 @@ fn closed_form(kind: InputKind, t: f64) -> f64 {
 /// Output 0 of a response equals `f(t)` at every sample to 1e-12 of `scale` (responses come
 /// from an exact discretisation: the error is the matrix exponential's, a few ε per step).
 fn follows(r: &TimeResponse, scale: f64, f: impl Fn(f64) -> f64) -> bool {
-    r.y[0].iter().zip(&r.t).all(|(y, &t)| y.is_finite() && (y - f(t)).abs() <= 1e-12 * scale * (1.0 + t) + 1e-300)
+    r.y[0]
+        .iter()
+        .zip(&r.t)
+        .all(|(y, &t)| y.is_finite() && (y - f(t)).abs() <= 1e-12 * scale * (1.0 + t) + 1e-300)
 }
 
 cases! {
@@ -1072,6 +1075,10 @@ cases! {
                 "zeta_crossings({zeta}): {crossings:?}"
             );
         }
+        // a NaN ζ defines no damping line: no crossings (it used to report every sampled
+        // segment, since a NaN side never has the sign of the one before)
+        assert!(rl.zeta_crossings(&g, f64::NAN).is_empty(), "zeta_crossings(NaN)");
+        assert!(rl.zeta_crossings(&g, -f64::NAN).is_empty(), "zeta_crossings(−NaN)");
         // s² + 2s + k meets ζ = ½ where −1 = −½√k: k = 4
         assert!(rl.zeta_crossings(&g, 0.5).iter().any(|&(k, _)| (k - 4.0).abs() <= 1e-6));
         for x in hostile() {
@@ -1094,7 +1101,8 @@ cases! {
         for phi in hostile() {
             for w in hostile() {
                 if phi.is_finite() && w.is_finite() {
-                    let d = (phi.rem_euclid(360.0) - w.rem_euclid(360.0)).rem_euclid(360.0);
+                    // fmod is exact (rem_euclid of −5e-324 rounds to 360 and lost the sign)
+                    let d = (phi % 360.0 - w % 360.0).rem_euclid(360.0);
                     assert_eq!(leads(phi, w), Ok(d > 0.0 && d <= 180.0), "leads({phi}, {w})");
                 }
                 let r = time_shift(phi, w);

@@ -364,6 +364,14 @@ impl Polynomial {
                 .iter()
                 .enumerate()
                 .any(|(j, &o)| j != i && (o - r).norm_sqr() <= 1e-6 * r.norm_sqr().max(1.0));
+            // an eigenvalue of exactly 0 cannot be a root (the roots at 0 were split off, q(0) ≠ 0):
+            // it is a root below the QR iteration's resolution beside a huge one (4t² + 3·2⁵¹²t + 2);
+            // start Newton from the linear term's root −qₙ/qₙ₋₁ instead
+            let r = if r == Complex64::new(0.0, 0.0) && q.coeffs[n - 1] != 0.0 {
+                Complex64::new(-q.coeffs[n] / q.coeffs[n - 1], 0.0)
+            } else {
+                r
+            };
             ts.push(if near { r } else { q.polish(r) });
         }
         let ts = linalg::tidy_conjugates(ts, q.norm_inf() / c0.abs());

@@ -158,8 +158,12 @@ impl StateSpace {
         let dtol = 64.0 * f64::EPSILON * (self.n_states().max(1) as f64) * den.norm_inf();
         // never the leading coefficient: it is 1 (monic), and zeroing it under ‖A‖ = 1e300 dropped
         // the degree of D
-        let den: Vec<f64> =
-            den.coeffs().iter().enumerate().map(|(i, &c)| if i > 0 && c.abs() <= dtol { 0.0 } else { c }).collect();
+        let den: Vec<f64> = den
+            .coeffs()
+            .iter()
+            .enumerate()
+            .map(|(i, &c)| if i > 0 && c.abs() <= dtol { 0.0 } else { c })
+            .collect();
         TransferFunction::from_polynomials(Polynomial::from_vec(cleaned), Polynomial::from_vec(den))
     }
 

@@ -304,11 +304,15 @@ impl TransferFunction {
     /// The coefficients cₖa⁻ᵏ are formed as mantissa times a power of two and both N and D are
     /// multiplied by the one power of two that makes the largest coefficient of D about 1
     /// (the ratio is unchanged), so that a leading coefficient such as a⁻² = 10⁻⁶⁰⁰ for
-    /// a = 10³⁰⁰ does not underflow to zero and drop the degree.
+    /// a = 10³⁰⁰ does not underflow to zero and drop the degree. Where that power of two
+    /// overflows a coefficient of N or underflows one to 0, the largest coefficient of N and D
+    /// is put just below the overflow threshold instead.
     ///
     /// # Errors
-    /// [`LtiError::InvalidArgument`] unless a is finite and > 0; [`LtiError::Overflow`] when a
-    /// coefficient of N(s/a) relative to D(s/a), or the delay τ/a, exceeds the f64 range.
+    /// [`LtiError::InvalidArgument`] unless a is finite and > 0; [`LtiError::Overflow`] when the
+    /// coefficients cₖa⁻ᵏ of N and D together span more than the f64 exponent range (no common
+    /// power of two keeps every nonzero one finite and nonzero: the degree would change), or
+    /// the delay τ/a exceeds the f64 range.
     pub fn time_scaled(&self, a: f64) -> Result<Self, LtiError> {
         if !(a.is_finite() && a > 0.0) {
             return Err(LtiError::InvalidArgument {
@@ -317,32 +321,50 @@ impl TransferFunction {
             });
         }
         // a = m·2ᵉ with m ∈ [1, 2): cₖa⁻ᵏ = (cₖm⁻ᵏ)·2^{−ke}
-        let e = a.log2().floor() as i32;
+        let e = crate::axis::exponent(a);
         let m = crate::poly::mul_pow2(a, -e);
         let parts = |p: &Polynomial| -> Vec<(f64, i32)> {
             let n = p.degree();
             p.coeffs()
                 .iter()
                 .enumerate()
-                .map(|(i, &c)| (c * m.powi(-((n - i) as i32)), -((n - i) as i32) * e))
+                .map(|(i, &c)| {
+                    // c = c̃·2^{e_c} with |c̃| ∈ [1, 2) first, so that a subnormal c does not
+                    // underflow to 0 when multiplied by m⁻ᵏ
+                    let ec = if c == 0.0 { 0 } else { crate::axis::exponent(c) };
+                    let k = (n - i) as i32;
+                    (crate::poly::mul_pow2(c, -ec) * m.powi(-k), ec - k * e)
+                })
                 .collect()
         };
         let (pn, pd) = (parts(&self.num), parts(&self.den));
-        // the common power of two: the largest coefficient of D near 1
-        let shift = -pd
-            .iter()
-            .filter(|(c, _)| *c != 0.0)
-            .map(|(c, k)| c.abs().log2().floor() as i32 + k)
-            .max()
-            .unwrap_or(0);
-        let build = |v: &[(f64, i32)]| {
-            Polynomial::from_vec(v.iter().map(|&(c, k)| crate::poly::mul_pow2(c, k + shift)).collect())
+        // the binary exponent of each nonzero coefficient cₖa⁻ᵏ
+        let exps = |v: &[(f64, i32)]| -> Vec<i32> {
+            v.iter().filter(|(c, _)| *c != 0.0).map(|&(c, k)| crate::axis::exponent(c) + k).collect()
         };
+        let (en, ed) = (exps(&pn), exps(&pd));
+        // N and D multiplied by 2^shift; None where a nonzero coefficient would underflow to 0
+        // or overflow (the ratio N/D is kept, but not the polynomial)
+        let build = |v: &[(f64, i32)], shift: i32| -> Option<Polynomial> {
+            let c: Vec<f64> = v.iter().map(|&(c, k)| crate::poly::mul_pow2(c, k + shift)).collect();
+            let exact = c.iter().zip(v).all(|(x, (c0, _))| x.is_finite() && (*x != 0.0 || *c0 == 0.0));
+            exact.then(|| Polynomial::from_vec(c))
+        };
+        // first choice: the largest coefficient of D near 1; else the largest coefficient of
+        // N or D just below the overflow threshold, which keeps the most of the small ones
+        let shift_d = -ed.iter().copied().max().unwrap_or(0);
+        let shift_top = 1022 - en.iter().chain(&ed).copied().max().unwrap_or(0);
+        let (num, den) = [shift_d, shift_top]
+            .into_iter()
+            .find_map(|sh| Some((build(&pn, sh)?, build(&pd, sh)?)))
+            .ok_or(LtiError::Overflow {
+                what: "time-scaled coefficients (cₖa⁻ᵏ span more than the f64 exponent range)",
+            })?;
         let tau = self.delay / a;
         if !tau.is_finite() {
             return Err(LtiError::Overflow { what: "time-scaled delay" });
         }
-        Ok(Self::from_polynomials(build(&pn), build(&pd))?.with_delay_unchecked(tau))
+        Ok(Self::from_polynomials(num, den)?.with_delay_unchecked(tau))
     }
 
     /// Cancels zero–pole pairs closer than `tol·max(1, |p|)` (Matlab `minreal`); the result is
