@@ -61,7 +61,7 @@ impl Scaled {
 }
 
 /// ⌊log₂ m⌋ for a finite m > 0.
-fn exponent(m: f64) -> i32 {
+pub(crate) fn exponent(m: f64) -> i32 {
     let bits = m.to_bits();
     let raw = ((bits >> 52) & 0x7ff) as i32;
     if raw == 0 {

@@ -117,6 +117,19 @@ pub enum LtiError {
     },
 }
 
+/// Checks a tolerance (docs/robustness.md §3): finite and ≥ 0, else
+/// [`LtiError::InvalidArgument`]. A NaN tolerance used to make every comparison false, so that
+/// unstable poles were classified as stable and nothing counted toward a rank.
+pub(crate) fn check_tolerance(what: &'static str, tol: f64) -> Result<(), LtiError> {
+    if tol.is_finite() && tol >= 0.0 {
+        Ok(())
+    } else {
+        Err(LtiError::InvalidArgument {
+            what, reason: format!("{tol}; a tolerance must be finite and ≥ 0")
+        })
+    }
+}
+
 /// Checks that every value is finite.
 pub(crate) fn check_finite<'a>(
     what: &'static str,

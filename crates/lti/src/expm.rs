@@ -151,9 +151,14 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Result<Mat<f64>, LtiError> {
         let mut r = expm_small(&a1);
         let n = r.nrows();
         let mut tmp = Mat::<f64>::zeros(n, n);
-        for _ in 0..s {
+        let triangular = is_upper_triangular(a);
+        for j in 0..s {
             mul_into(&mut tmp, Accum::Replace, &r, &r);
             std::mem::swap(&mut r, &mut tmp);
+            if triangular {
+                // r = e^{A/2^{s−j−1}}
+                exact_triangular_band(&mut r, a, s - j - 1);
+            }
             if !all_finite(&r) {
                 return Err(LtiError::Overflow { what: "matrix exponential" });
             }
@@ -234,13 +239,52 @@ fn expm_core(a: &Mat<f64>) -> Mat<f64> {
         }
     }
     let mut r = lu_solve(q, p);
+    let triangular = is_upper_triangular(a);
+    if triangular {
+        // r = e^{A/2ˢ}
+        exact_triangular_band(&mut r, a, s);
+    }
     // s squarings between two buffers
     let mut tmp = Mat::<f64>::zeros(n, n);
-    for _ in 0..s {
+    for j in 0..s {
         mul_into(&mut tmp, Accum::Replace, &r, &r);
         std::mem::swap(&mut r, &mut tmp);
+        if triangular {
+            // r = e^{A/2^{s−j−1}}
+            exact_triangular_band(&mut r, a, s - j - 1);
+        }
     }
     r
+}
+
+/// True when every entry below the diagonal is 0.
+fn is_upper_triangular(a: &Mat<f64>) -> bool {
+    (0..a.ncols()).all(|j| a.col_as_slice(j)[j + 1..].iter().all(|x| *x == 0.0))
+}
+
+/// For upper-triangular A: the diagonal and first superdiagonal of r = e^{A/2ᵏ} set to their
+/// exact values (Al-Mohy & Higham 2009, Code Fragment 2.1): the squarings raise a diagonal
+/// entry of 1 − ε to the power 2ˢ, which for [[0, 10³⁰⁰], [0, 0]] (s = 995) underflowed
+/// e⁰ = 1 to 0.
+fn exact_triangular_band(r: &mut Mat<f64>, a: &Mat<f64>, k: i32) {
+    let n = a.nrows();
+    let scaled = |x: f64| crate::poly::mul_pow2(x, -k);
+    for i in 0..n {
+        // (e^T)ᵢᵢ = e^{tᵢᵢ}
+        r[(i, i)] = scaled(a[(i, i)]).exp();
+    }
+    for i in 0..n.saturating_sub(1) {
+        let t = scaled(a[(i, i + 1)]);
+        if t == 0.0 {
+            r[(i, i + 1)] = 0.0;
+            continue;
+        }
+        // (e^T)ᵢ,ᵢ₊₁ = tᵢ,ᵢ₊₁·e^{(λ₁+λ₂)/2}·sinh(z)/z with z = (λ₂ − λ₁)/2 (Higham 2008, (10.42))
+        let (l1, l2) = (scaled(a[(i, i)]), scaled(a[(i + 1, i + 1)]));
+        let z = 0.5 * (l2 - l1);
+        let sinch = if z.abs() < 1e-4 { 1.0 + z * z / 6.0 } else { z.sinh() / z };
+        r[(i, i + 1)] = t * (0.5 * l1 + 0.5 * l2).exp() * sinch;
+    }
 }
 
 /// The matrix exponential e^A = Σ Aᵏ/k! by scaling and squaring with a [m/m] Padé
@@ -260,4 +304,17 @@ pub fn expm(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
         return Ok(a.clone());
     }
     Ok(from_faer(expm_faer(&to_faer(a))?.as_ref()))
+}
+
+#[cfg(test)]
+mod tests {
+    /// e^{[[0, x], [0, 0]]} = [[1, x], [0, 1]] for a huge finite x: the scaling s ≈ 995 used to
+    /// square a diagonal of 1 − ε to 0.
+    #[test]
+    fn nilpotent_with_a_huge_entry() {
+        for x in [1e200, 1e300, -1e300, f64::MAX] {
+            let e = super::expm(&nalgebra::DMatrix::from_row_slice(2, 2, &[0.0, x, 0.0, 0.0])).unwrap();
+            assert_eq!(e.as_slice(), &[1.0, 0.0, x, 1.0], "x = {x:e}");
+        }
+    }
 }

@@ -45,7 +45,8 @@ pub fn cluster_roots(roots: &[Complex64], rtol: f64) -> Vec<(Complex64, usize)> 
             Some(i) => {
                 members[i].push(*r);
                 let m = &members[i];
-                groups[i] = (m.iter().sum::<Complex64>() / m.len() as f64, m.len());
+                // the mean as Σ(r/q): no overflow for members near f64::MAX
+                groups[i] = (m.iter().map(|z| z / m.len() as f64).sum::<Complex64>(), m.len());
             }
             None => {
                 groups.push((*r, 1));
@@ -80,9 +81,11 @@ impl TransferFunction {
     /// Book: §15.11, Ex 15.11.4.
     ///
     /// # Errors
-    /// [`LtiError::Delay`] for a delayed G; root-finding errors.
+    /// [`LtiError::Delay`] for a delayed G; [`LtiError::InvalidArgument`] unless `rtol` is
+    /// finite and ≥ 0; root-finding errors.
     pub fn partial_fractions(&self, rtol: f64) -> Result<PartialFractions, LtiError> {
         self.require_rational("partial fractions")?;
+        crate::error::check_tolerance("pole clustering tolerance", rtol)?;
         let (q, r) = divide(self.num(), self.den());
         let lead = self.den().leading();
         let groups = cluster_roots(&self.den().roots()?, rtol);
@@ -119,8 +122,17 @@ impl TransferFunction {
     /// Book: Fact 15.12.1–15.12.2, 15.20.15–16, 15.20.28.
     ///
     /// # Errors
-    /// [`LtiError::Improper`] unless strictly proper (y would contain δ at t = 0).
+    /// [`LtiError::Improper`] unless strictly proper (y would contain δ at t = 0);
+    /// [`LtiError::TooLarge`] for `count` > [`crate::MAX_VALUES`] (it used to abort on
+    /// allocation); [`LtiError::Overflow`] when a value exceeds the f64 range.
     pub fn initial_values(&self, count: usize) -> Result<Vec<f64>, LtiError> {
+        if count > crate::MAX_VALUES {
+            return Err(LtiError::TooLarge {
+                what: "initial values",
+                requested: count as u128,
+                limit: crate::MAX_VALUES,
+            });
+        }
         if !self.is_strictly_proper() {
             return Err(LtiError::Improper {
                 num_degree: self.num().degree(),
@@ -137,10 +149,15 @@ impl TransferFunction {
         let c = |j: usize| if j <= n { self.num().coeff(n - j) } else { 0.0 };
         let mut m = Vec::with_capacity(count);
         for j in 1..=count {
-            let acc = (1..j).fold(c(j), |acc, i| acc - m[i - 1] * d(j - i));
+            // only d(0) … d(n) are nonzero: i ≥ j − n (linear, not quadratic, in `count`)
+            let acc = (j.saturating_sub(n).max(1)..j).fold(c(j), |acc, i| acc - m[i - 1] * d(j - i));
             m.push(acc / d(0));
         }
-        Ok(m)
+        if m.iter().all(|v| v.is_finite()) {
+            Ok(m)
+        } else {
+            Err(LtiError::Overflow { what: "initial values" })
+        }
     }
 
     /// The final value lim_{t→∞} y(t) of the signal y whose Laplace transform is ŷ = self.
@@ -148,7 +165,7 @@ impl TransferFunction {
     /// Book: Fact 15.13.1, Ex 15.13.2, 15.20.29–31.
     ///
     /// # Errors
-    /// Root-finding errors only; illegal cases are [`FinalValue::Illegal`].
+    /// As [`final_value`]; illegal cases are [`FinalValue::Illegal`].
     pub fn final_value(&self, tol: f64) -> Result<FinalValue, LtiError> {
         final_value(self, tol)
     }
@@ -296,8 +313,11 @@ pub enum FinalValue {
 /// Book: Fact 15.13.1, Ex 15.13.2–15.13.3, 15.20.29–31.
 ///
 /// # Errors
-/// Root-finding errors only.
+/// [`LtiError::InvalidArgument`] unless `tol` is finite and ≥ 0 (a NaN tolerance used to let
+/// right-half-plane poles through); [`LtiError::Overflow`] when the finite limit exceeds the
+/// f64 range (1/(s(s + 5e-324)) → 1/5e-324); root-finding errors.
 pub fn final_value(y: &TransferFunction, tol: f64) -> Result<FinalValue, LtiError> {
+    crate::error::check_tolerance("imaginary-axis tolerance", tol)?;
     if y.num().is_zero() {
         return Ok(FinalValue::Finite(0.0));
     }
@@ -318,6 +338,7 @@ pub fn final_value(y: &TransferFunction, tol: f64) -> Result<FinalValue, LtiErro
     let ratio = n.eval(0.0) / d.eval(0.0);
     Ok(match power {
         p if p > 0 => FinalValue::Finite(0.0),
+        0 if !ratio.is_finite() => return Err(LtiError::Overflow { what: "final value" }),
         0 => FinalValue::Finite(ratio),
         _ => FinalValue::Infinite(ratio.signum()),
     })

@@ -220,6 +220,14 @@ pub fn singular_values(a: &DMatrix<f64>) -> Result<Vec<f64>, LtiError> {
     if big == 0.0 {
         return Ok(vec![0.0; a.nrows().min(a.ncols())]);
     }
+    // a diagonal matrix: σᵢ = |aᵢᵢ| exactly (scaled by 2^−E, an entry of 1 beside f64::MAX
+    // became subnormal and the SVD dropped it)
+    let is_diag = (0..a.nrows()).all(|i| (0..a.ncols()).all(|j| i == j || a[(i, j)] == 0.0));
+    if is_diag {
+        let mut s: Vec<f64> = (0..a.nrows().min(a.ncols())).map(|i| a[(i, i)].abs()).collect();
+        s.sort_by(|x, y| y.total_cmp(x));
+        return Ok(s);
+    }
     let e = big.log2().floor() as i32;
     let scaled = to_faer(&a.map(|x| crate::poly::mul_pow2(x, -e)));
     let mut s = scaled.singular_values().map_err(|_| LtiError::NoConvergence { what: "SVD" })?;
@@ -236,8 +244,10 @@ pub fn singular_values(a: &DMatrix<f64>) -> Result<Vec<f64>, LtiError> {
 /// Numerical rank: the number of singular values above `rtol·σ_max` (and above zero).
 ///
 /// # Errors
-/// [`LtiError::NoConvergence`] if the SVD fails.
+/// [`LtiError::InvalidArgument`] unless `rtol` is finite and ≥ 0; [`LtiError::NoConvergence`]
+/// if the SVD fails.
 pub fn rank(a: &DMatrix<f64>, rtol: f64) -> Result<usize, LtiError> {
+    crate::error::check_tolerance("rank tolerance", rtol)?;
     let s = singular_values(a)?;
     let top = s.first().copied().unwrap_or(0.0);
     Ok(s.iter().filter(|&&x| x > rtol * top && x > 0.0).count())

@@ -70,7 +70,8 @@ pub struct GainCrossover {
 pub struct PhaseCrossover {
     /// ω_pc ≥ 0 in rad/s.
     pub omega: f64,
-    /// GM = 1/|L(jω_pc)| (python-control's `gm`), +∞ where L(jω_pc) = 0.
+    /// GM = 1/|L(jω_pc)| (python-control's `gm`), +∞ where L(jω_pc) = 0 or where 1/|L| exceeds
+    /// the f64 range (then `gain_margin_db` still holds the finite value in dB).
     pub gain_margin: f64,
     /// GM in dB, −20 log₁₀|L(jω_pc)|; negative when the loop gain must *shrink* to reach −1
     /// (16.8.14: an unstable open loop stable only above a gain), +∞ where L = 0.
@@ -618,7 +619,9 @@ fn delayed_candidates(lp: &Loop, tau: f64) -> (Vec<f64>, Vec<f64>) {
 ///
 /// # Errors
 /// [`LtiError::InvalidArgument`] for relative degree < 2 (the integral diverges or the
-/// theorem has an extra term); [`LtiError::Delay`].
+/// theorem has an extra term); [`LtiError::Delay`]; [`LtiError::NoConvergence`] when the
+/// quadrature does not reach its tolerance within 10⁶ evaluations or the integrand is not
+/// finite (|L| beyond ~10¹⁵⁰ on the axis, or 1 + L(jω) = 0).
 pub fn sensitivity_integral(l: &TransferFunction) -> Result<f64, LtiError> {
     l.require_rational("the sensitivity integral")?;
     if l.relative_degree() < 2 {
@@ -639,14 +642,36 @@ pub fn sensitivity_integral(l: &TransferFunction) -> Result<f64, LtiError> {
         // ln|S| = −ln|1 + L|, dω = dθ/cos²θ
         -s.at(w).ln_abs(w) / (c * c)
     };
-    Ok(adaptive_simpson(&f, 0.0, std::f64::consts::FRAC_PI_2, 1e-11, 40))
+    let no_convergence = LtiError::NoConvergence {
+        what: "sensitivity integral (adaptive Simpson: 10⁶ evaluations without reaching 10⁻¹¹)",
+    };
+    let mut budget = SIMPSON_BUDGET;
+    let v = adaptive_simpson(&f, 0.0, std::f64::consts::FRAC_PI_2, 1e-11, 40, &mut budget)
+        .ok_or(no_convergence.clone())?;
+    // a NaN or ∞ integrand (|1 + L| = 0 or overflowing on the axis) has no finite integral
+    if v.is_finite() { Ok(v) } else { Err(no_convergence) }
 }
 
-fn adaptive_simpson(f: &impl Fn(f64) -> f64, a: f64, b: f64, tol: f64, depth: u32) -> f64 {
+/// At most this many integrand evaluations in [`sensitivity_integral`]: a loop whose
+/// integrand never meets the tolerance (|L| ≈ 10³⁰⁰, so ln|S| ≈ −690/cos²θ up to the cut-off;
+/// a NaN integrand, whose error estimate is never small) used to recurse to depth 40 on every
+/// branch, 2⁴⁰ evaluations: a hang.
+const SIMPSON_BUDGET: usize = 1_000_000;
+
+/// ∫ₐᵇ f by adaptive Simpson to `tol`, `None` when `budget` evaluations do not suffice.
+fn adaptive_simpson(
+    f: &impl Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+    tol: f64,
+    depth: u32,
+    budget: &mut usize,
+) -> Option<f64> {
     let m = 0.5 * (a + b);
     let (fa, fm, fb) = (f(a), f(m), f(b));
+    *budget = budget.checked_sub(3)?;
     let whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
-    simpson_rec(f, [a, b], [fa, fm, fb], whole, tol, depth)
+    simpson_rec(f, [a, b], [fa, fm, fb], whole, tol, depth, budget)
 }
 
 fn simpson_rec(
@@ -656,16 +681,24 @@ fn simpson_rec(
     whole: f64,
     tol: f64,
     depth: u32,
-) -> f64 {
+    budget: &mut usize,
+) -> Option<f64> {
     let m = 0.5 * (a + b);
     let (lm, rm) = (0.5 * (a + m), 0.5 * (m + b));
     let (flm, frm) = (f(lm), f(rm));
+    *budget = budget.checked_sub(2)?;
     let left = (m - a) / 6.0 * (fa + 4.0 * flm + fm);
     let right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
     let delta = left + right - whole;
-    if depth == 0 || delta.abs() <= 15.0 * tol {
-        return left + right + delta / 15.0;
+    if delta.is_nan() {
+        // a NaN integrand: no estimate will ever be small
+        return None;
     }
-    simpson_rec(f, [a, m], [fa, flm, fm], left, 0.5 * tol, depth - 1)
-        + simpson_rec(f, [m, b], [fm, frm, fb], right, 0.5 * tol, depth - 1)
+    if depth == 0 || delta.abs() <= 15.0 * tol {
+        return Some(left + right + delta / 15.0);
+    }
+    Some(
+        simpson_rec(f, [a, m], [fa, flm, fm], left, 0.5 * tol, depth - 1, budget)?
+            + simpson_rec(f, [m, b], [fm, frm, fb], right, 0.5 * tol, depth - 1, budget)?,
+    )
 }

@@ -128,7 +128,8 @@ impl Polynomial {
     /// §3.3: a leading 1.1e-16 gave a spurious zero at −1.04e16 in 15.20.42).
     pub fn trim(&self, rtol: f64) -> Self {
         let tol = rtol * self.norm_inf();
-        let first = self.coeffs.iter().position(|c| c.abs() > tol).unwrap_or(self.coeffs.len() - 1);
+        // `!(|c| ≤ tol)`: with a NaN rtol no comparison holds and nothing is dropped
+        let first = self.coeffs.iter().position(|c| !(c.abs() <= tol)).unwrap_or(self.coeffs.len() - 1);
         Self::from_vec(self.coeffs[first..].to_vec())
     }
 
@@ -160,7 +161,9 @@ impl Polynomial {
     }
 
     /// p(x) at a real point: Horner's rule, on the reversed polynomial in 1/x for |x| > 1 so
-    /// that intermediate powers never overflow (±∞ only when the value itself does).
+    /// that intermediate powers never overflow (±∞ only when the value itself does): xⁿ·r(1/x)
+    /// is formed by n multiplications of r by x, whose magnitudes only grow, so that a tiny
+    /// leading coefficient (5e-324 x² + x + 1 at 10³⁰⁰) does not meet an overflowed xⁿ.
     pub fn eval(&self, x: f64) -> f64 {
         if x.abs() <= 1.0 {
             return self.coeffs.iter().fold(0.0, |acc, &c| acc * x + c);
@@ -170,8 +173,8 @@ impl Polynomial {
         if r == 0.0 {
             return 0.0;
         }
-        // p(x) = xⁿ·r(1/x)
-        let v = r * x.powi(self.degree() as i32);
+        // p(x) = xⁿ·r(1/x), multiplied in one x at a time (|x| > 1: no premature overflow)
+        let v = (0..self.degree()).fold(r, |v, _| v * x);
         if v.is_nan() { f64::INFINITY.copysign(r) } else { v }
     }
 
@@ -186,7 +189,8 @@ impl Polynomial {
         if r.re == 0.0 && r.im == 0.0 {
             return r;
         }
-        let v = r * s.powi(self.degree() as i32);
+        // sⁿ·r(1/s), one factor s at a time (|s| > 1: the magnitudes only grow)
+        let v = (0..self.degree()).fold(r, |v, _| v * s);
         if v.re.is_finite() && v.im.is_finite() {
             v
         } else {
@@ -360,6 +364,14 @@ impl Polynomial {
                 .iter()
                 .enumerate()
                 .any(|(j, &o)| j != i && (o - r).norm_sqr() <= 1e-6 * r.norm_sqr().max(1.0));
+            // an eigenvalue of exactly 0 cannot be a root (the roots at 0 were split off, q(0) ≠ 0):
+            // it is a root below the QR iteration's resolution beside a huge one (4t² + 3·2⁵¹²t + 2);
+            // start Newton from the linear term's root −qₙ/qₙ₋₁ instead
+            let r = if r == Complex64::new(0.0, 0.0) && q.coeffs[n - 1] != 0.0 {
+                Complex64::new(-q.coeffs[n] / q.coeffs[n - 1], 0.0)
+            } else {
+                r
+            };
             ts.push(if near { r } else { q.polish(r) });
         }
         let ts = linalg::tidy_conjugates(ts, q.norm_inf() / c0.abs());

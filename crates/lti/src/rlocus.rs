@@ -39,7 +39,8 @@ pub struct RootLocus {
 ///
 /// # Errors
 /// [`LtiError::Delay`], [`LtiError::Improper`], [`LtiError::InvalidArgument`] for
-/// k_max ≤ 0; root-finding errors.
+/// k_max ≤ 0; [`LtiError::NoConvergence`] when `max_step` is so small that 20000 gain steps
+/// do not reach k_max (the locus used to end early without a word); root-finding errors.
 pub fn root_locus(g: &TransferFunction, k_max: f64, max_step: f64) -> Result<RootLocus, LtiError> {
     g.require_rational("root locus")?;
     g.require_proper("root locus")?;
@@ -59,7 +60,8 @@ pub fn root_locus(g: &TransferFunction, k_max: f64, max_step: f64) -> Result<Roo
     let n = current.len();
     let mut branches: Vec<Vec<Complex64>> = current.iter().map(|&p| vec![p]).collect();
     let mut k = 0.0;
-    let mut dk = k_max * 1e-6;
+    // a first step of k_max·10⁻⁶, or k_max itself where that underflows (k_max subnormal)
+    let mut dk = if k_max * 1e-6 > 0.0 { k_max * 1e-6 } else { k_max };
     let mut guard = 0;
     while k < k_max && guard < 20000 {
         guard += 1;
@@ -70,7 +72,7 @@ pub fn root_locus(g: &TransferFunction, k_max: f64, max_step: f64) -> Result<Roo
         }
         let matched = match_roots(&current, &next);
         let jump = current.iter().zip(&matched).map(|(a, b)| (a - b).norm()).fold(0.0, f64::max);
-        if jump > max_step * scale && dk > k_max * 1e-12 {
+        if jump > max_step * scale && dk > k_max * 1e-12 && k + 0.5 * dk > k {
             dk *= 0.5;
             continue;
         }
@@ -83,6 +85,10 @@ pub fn root_locus(g: &TransferFunction, k_max: f64, max_step: f64) -> Result<Roo
         if jump < 0.25 * max_step * scale {
             dk *= 2.0;
         }
+    }
+    if k < k_max {
+        // the step bound (max_step tiny against the pattern) did not let k reach k_max
+        return Err(LtiError::NoConvergence { what: "root locus (k_max not reached in 20000 gain steps)" });
     }
     // Rule 7 and (15.18.10): asymptotes.
     let r = poles.len() as isize - zeros.len() as isize;
@@ -182,7 +188,13 @@ impl RootLocus {
     /// then refined by bisection on k with fresh roots.
     ///
     /// Book: (15.15.6) ζ = sin θ; 15.20.50, 16.8.11(iv).
+    ///
+    /// # Degenerate inputs
+    /// A NaN ζ defines no line: no crossings (it used to report every sampled segment).
     pub fn zeta_crossings(&self, g: &TransferFunction, zeta: f64) -> Vec<(f64, Complex64)> {
+        if zeta.is_nan() {
+            return Vec::new();
+        }
         let th = zeta.clamp(-1.0, 1.0).asin();
         // Signed distance to the ray at angle 90° + θ from the positive real axis.
         let dir = Complex64::from_polar(1.0, std::f64::consts::FRAC_PI_2 + th);

@@ -71,13 +71,31 @@ impl Sdof {
     }
 
     /// Natural frequency ωn = √(k/m).
+    ///
+    /// # Degenerate inputs
+    /// Where k/m leaves the normal range (k = 1e300, m = 1e-300) the value is √k/√m, which
+    /// is finite whenever ωn is; +∞ only when ωn itself exceeds the f64 range.
     pub fn natural_frequency(&self) -> f64 {
-        (self.k / self.m).sqrt()
+        let r = self.k / self.m;
+        if r.is_normal() || r == 0.0 && self.k == 0.0 { r.sqrt() } else { self.k.sqrt() / self.m.sqrt() }
     }
 
     /// Damping ratio ζ = c/(2√(mk)); `None` for k = 0 (no oscillator).
+    ///
+    /// # Degenerate inputs
+    /// Where mk leaves the normal range (m = k = 5e-324 made it 0/0) the value is
+    /// c/(2√m√k); `None` also when ζ exceeds the f64 range.
     pub fn damping_ratio(&self) -> Option<f64> {
-        (self.k > 0.0).then(|| self.c / (2.0 * (self.m * self.k).sqrt()))
+        if self.k <= 0.0 {
+            return None;
+        }
+        let mk = self.m * self.k;
+        let z = if mk.is_normal() {
+            self.c / (2.0 * mk.sqrt())
+        } else {
+            self.c / (2.0 * self.m.sqrt() * self.k.sqrt())
+        };
+        z.is_finite().then_some(z)
     }
 
     /// State form with x = (q, q̇) and input f: A = [[0, 1], [−k/m, −c/m]], B = [0, 1/m]ᵀ.
@@ -113,9 +131,10 @@ pub struct Mode {
     pub damping_ratio: Option<f64>,
     /// ωd = |Im λ| (15.15.4).
     pub damped_frequency: f64,
-    /// Time constant 1/(−Re λ) for Re λ < 0.
+    /// Time constant 1/(−Re λ) for Re λ < 0 (`None` also where it exceeds the f64 range).
     pub time_constant: Option<f64>,
-    /// Time to half amplitude ln 2/(ζωn) = ln 2/(−Re λ) for Re λ < 0 (15.20.33).
+    /// Time to half amplitude ln 2/(ζωn) = ln 2/(−Re λ) for Re λ < 0 (15.20.33); `None` also
+    /// where it exceeds the f64 range.
     pub time_to_half: Option<f64>,
 }
 
@@ -129,8 +148,9 @@ impl Mode {
             natural_frequency: wn,
             damping_ratio: (wn > 0.0).then(|| -sigma / wn),
             damped_frequency: eigenvalue.im.abs(),
-            time_constant: (sigma < 0.0).then(|| -1.0 / sigma),
-            time_to_half: (sigma < 0.0).then(|| std::f64::consts::LN_2 / -sigma),
+            // `None` also where 1/(−σ) exceeds the f64 range (σ subnormal)
+            time_constant: (sigma < 0.0).then(|| -1.0 / sigma).filter(|t| t.is_finite()),
+            time_to_half: (sigma < 0.0).then(|| std::f64::consts::LN_2 / -sigma).filter(|t| t.is_finite()),
         }
     }
 }

@@ -156,7 +156,14 @@ impl StateSpace {
         // The same cleanup for the denominator: eigenvalues at 0 come out as ~ε‖A‖, which would
         // leave a trailing 1e-19 where an exact integrator belongs (15.20.42).
         let dtol = 64.0 * f64::EPSILON * (self.n_states().max(1) as f64) * den.norm_inf();
-        let den: Vec<f64> = den.coeffs().iter().map(|&c| if c.abs() <= dtol { 0.0 } else { c }).collect();
+        // never the leading coefficient: it is 1 (monic), and zeroing it under ‖A‖ = 1e300 dropped
+        // the degree of D
+        let den: Vec<f64> = den
+            .coeffs()
+            .iter()
+            .enumerate()
+            .map(|(i, &c)| if i > 0 && c.abs() <= dtol { 0.0 } else { c })
+            .collect();
         TransferFunction::from_polynomials(Polynomial::from_vec(cleaned), Polynomial::from_vec(den))
     }
 
@@ -241,6 +248,7 @@ impl StateSpace {
     /// True when rank [B AB … Aⁿ⁻¹B] = n, ranks by SVD with relative tolerance `rtol`.
     ///
     /// # Errors
+    /// [`LtiError::InvalidArgument`] for a NaN, infinite or negative `rtol`;
     /// [`LtiError::NoConvergence`] if the SVD fails.
     pub fn is_controllable(&self, rtol: f64) -> Result<bool, LtiError> {
         Ok(linalg::rank(&self.ctrb(), rtol)? == self.n_states())
@@ -249,6 +257,7 @@ impl StateSpace {
     /// True when rank [C; CA; …; CAⁿ⁻¹] = n.
     ///
     /// # Errors
+    /// [`LtiError::InvalidArgument`] for a NaN, infinite or negative `rtol`;
     /// [`LtiError::NoConvergence`] if the SVD fails.
     pub fn is_observable(&self, rtol: f64) -> Result<bool, LtiError> {
         Ok(linalg::rank(&self.obsv(), rtol)? == self.n_states())

@@ -65,8 +65,10 @@ fn classify(
 /// Book: §15.16, Fact 15.16.1; 15.20.51.
 ///
 /// # Errors
-/// [`LtiError::NotSquare`], [`LtiError::NonFinite`], [`LtiError::NoConvergence`].
+/// [`LtiError::NotSquare`], [`LtiError::NonFinite`], [`LtiError::NoConvergence`];
+/// [`LtiError::InvalidArgument`] unless `tol` is finite and ≥ 0.
 pub fn stability_of_matrix(a: &DMatrix<f64>, tol: f64) -> Result<StabilityClass, LtiError> {
+    crate::error::check_tolerance("imaginary-axis tolerance", tol)?;
     let ev = linalg::eigenvalues(a)?;
     let n = a.nrows();
     let groups = cluster_roots(&ev, crate::laplace::CLUSTER_RTOL);
@@ -97,8 +99,10 @@ pub fn stability_of_matrix(a: &DMatrix<f64>, tol: f64) -> Result<StabilityClass,
 ///
 /// # Errors
 /// [`LtiError::ZeroPolynomial`] for the zero polynomial (every number is a root; it used to
-/// come out asymptotically stable); root-finding errors.
+/// come out asymptotically stable); [`LtiError::InvalidArgument`] unless `tol` is finite and
+/// ≥ 0; root-finding errors.
 pub fn stability_of_polynomial(p: &Polynomial, tol: f64) -> Result<StabilityClass, LtiError> {
+    crate::error::check_tolerance("imaginary-axis tolerance", tol)?;
     if p.is_zero() {
         return Err(LtiError::ZeroPolynomial { what: "stability of a polynomial" });
     }

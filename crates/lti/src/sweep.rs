@@ -33,7 +33,7 @@ pub(crate) fn sweep(zpk: &Zpk, omega: &[f64], with_phase: bool) -> (Vec<Complex6
     }
     let k = zpk.gain();
     let tau = zpk.delay();
-    let response = (0..n)
+    let mut response: Vec<Complex64> = (0..n)
         .map(|i| {
             let mut g = Complex64::new(k * re[i], k * im[i]);
             if tau != 0.0 {
@@ -46,7 +46,7 @@ pub(crate) fn sweep(zpk: &Zpk, omega: &[f64], with_phase: bool) -> (Vec<Complex6
             }
         })
         .collect();
-    let phase = if with_phase {
+    let mut phase: Vec<f64> = if with_phase {
         let off = zpk.branch_offset();
         (0..n)
             .map(|i| im[i].atan2(re[i]) + std::f64::consts::TAU * turns[i] as f64 + off - omega[i] * tau)
@@ -54,6 +54,17 @@ pub(crate) fn sweep(zpk: &Zpk, omega: &[f64], with_phase: bool) -> (Vec<Complex6
     } else {
         Vec::new()
     };
+    // A running product that overflowed to ∞·0 = NaN (a double pole at 0 at ω = 5e-324): the
+    // point by the factor-wise evaluation, which returns the point at infinity and the phase of
+    // the factors, never NaN.
+    for i in 0..n {
+        if response[i].re.is_nan() || response[i].im.is_nan() {
+            response[i] = zpk.eval(Complex64::new(0.0, omega[i]));
+        }
+        if with_phase && phase[i].is_nan() {
+            phase[i] = zpk.phase_deg(omega[i]).to_radians();
+        }
+    }
     (response, phase)
 }
 

@@ -204,17 +204,20 @@ impl TransferFunction {
         if order < 0 {
             return infinity_towards(dir());
         }
-        let v = q * s.powi(k) * delay;
+        // q·sᵏ one factor at a time (s for k > 0, z = 1/s for k < 0), so that neither sᵏ
+        // overflows nor s⁻ᵏ underflows before the product is formed
+        let v = (0..k.unsigned_abs()).fold(q, |v, _| if k > 0 { v * s } else { v * z }) * delay;
         if v.re.is_finite() && v.im.is_finite() { v } else { infinity_towards(dir()) }
     }
 
-    /// The DC gain G(0), `None` when G has a pole at 0 (and N(0) ≠ 0).
+    /// The DC gain G(0), `None` when G has a pole at 0 (and N(0) ≠ 0), or when |N(0)/D(0)|
+    /// exceeds the f64 range ((s + 1e300)/(s + 1e-300) used to give `Some(∞)`).
     pub fn dc_gain(&self) -> Option<f64> {
         let (n0, d0) = (self.num.eval(0.0), self.den.eval(0.0));
         if d0 == 0.0 {
             if n0 == 0.0 { self.minreal(1e-9).ok()?.dc_gain() } else { None }
         } else {
-            Some(n0 / d0)
+            Some(n0 / d0).filter(|g| g.is_finite())
         }
     }
 
@@ -296,11 +299,20 @@ impl TransferFunction {
     }
 
     /// G(s/a) with numerator and denominator scaled so that time runs a times faster
-    /// (ω ↦ aω in the frequency response).
+    /// (ω ↦ aω in the frequency response; the delay τ becomes τ/a).
+    ///
+    /// The coefficients cₖa⁻ᵏ are formed as mantissa times a power of two and both N and D are
+    /// multiplied by the one power of two that makes the largest coefficient of D about 1
+    /// (the ratio is unchanged), so that a leading coefficient such as a⁻² = 10⁻⁶⁰⁰ for
+    /// a = 10³⁰⁰ does not underflow to zero and drop the degree. Where that power of two
+    /// overflows a coefficient of N or underflows one to 0, the largest coefficient of N and D
+    /// is put just below the overflow threshold instead.
     ///
     /// # Errors
-    /// [`LtiError::InvalidArgument`] unless a is finite and > 0; [`LtiError::Overflow`] when a
-    /// coefficient of N(s/a) or D(s/a) overflows.
+    /// [`LtiError::InvalidArgument`] unless a is finite and > 0; [`LtiError::Overflow`] when the
+    /// coefficients cₖa⁻ᵏ of N and D together span more than the f64 exponent range (no common
+    /// power of two keeps every nonzero one finite and nonzero: the degree would change), or
+    /// the delay τ/a exceeds the f64 range.
     pub fn time_scaled(&self, a: f64) -> Result<Self, LtiError> {
         if !(a.is_finite() && a > 0.0) {
             return Err(LtiError::InvalidArgument {
@@ -308,9 +320,51 @@ impl TransferFunction {
                 reason: format!("a = {a}; need a > 0"),
             });
         }
-        let num = self.num.scaled_variable(1.0 / a);
-        let den = self.den.scaled_variable(1.0 / a);
-        Ok(Self::from_polynomials(num, den)?.with_delay_unchecked(self.delay * a))
+        // a = m·2ᵉ with m ∈ [1, 2): cₖa⁻ᵏ = (cₖm⁻ᵏ)·2^{−ke}
+        let e = crate::axis::exponent(a);
+        let m = crate::poly::mul_pow2(a, -e);
+        let parts = |p: &Polynomial| -> Vec<(f64, i32)> {
+            let n = p.degree();
+            p.coeffs()
+                .iter()
+                .enumerate()
+                .map(|(i, &c)| {
+                    // c = c̃·2^{e_c} with |c̃| ∈ [1, 2) first, so that a subnormal c does not
+                    // underflow to 0 when multiplied by m⁻ᵏ
+                    let ec = if c == 0.0 { 0 } else { crate::axis::exponent(c) };
+                    let k = (n - i) as i32;
+                    (crate::poly::mul_pow2(c, -ec) * m.powi(-k), ec - k * e)
+                })
+                .collect()
+        };
+        let (pn, pd) = (parts(&self.num), parts(&self.den));
+        // the binary exponent of each nonzero coefficient cₖa⁻ᵏ
+        let exps = |v: &[(f64, i32)]| -> Vec<i32> {
+            v.iter().filter(|(c, _)| *c != 0.0).map(|&(c, k)| crate::axis::exponent(c) + k).collect()
+        };
+        let (en, ed) = (exps(&pn), exps(&pd));
+        // N and D multiplied by 2^shift; None where a nonzero coefficient would underflow to 0
+        // or overflow (the ratio N/D is kept, but not the polynomial)
+        let build = |v: &[(f64, i32)], shift: i32| -> Option<Polynomial> {
+            let c: Vec<f64> = v.iter().map(|&(c, k)| crate::poly::mul_pow2(c, k + shift)).collect();
+            let exact = c.iter().zip(v).all(|(x, (c0, _))| x.is_finite() && (*x != 0.0 || *c0 == 0.0));
+            exact.then(|| Polynomial::from_vec(c))
+        };
+        // first choice: the largest coefficient of D near 1; else the largest coefficient of
+        // N or D just below the overflow threshold, which keeps the most of the small ones
+        let shift_d = -ed.iter().copied().max().unwrap_or(0);
+        let shift_top = 1022 - en.iter().chain(&ed).copied().max().unwrap_or(0);
+        let (num, den) = [shift_d, shift_top]
+            .into_iter()
+            .find_map(|sh| Some((build(&pn, sh)?, build(&pd, sh)?)))
+            .ok_or(LtiError::Overflow {
+                what: "time-scaled coefficients (cₖa⁻ᵏ span more than the f64 exponent range)",
+            })?;
+        let tau = self.delay / a;
+        if !tau.is_finite() {
+            return Err(LtiError::Overflow { what: "time-scaled delay" });
+        }
+        Ok(Self::from_polynomials(num, den)?.with_delay_unchecked(tau))
     }
 
     /// Cancels zero–pole pairs closer than `tol·max(1, |p|)` (Matlab `minreal`); the result is

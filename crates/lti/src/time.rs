@@ -99,7 +99,8 @@ fn check_size(what: &'static str, signals: usize, samples: usize) -> Result<(), 
 /// `n` equally spaced times from 0 to `t_end` (Matlab `linspace(0, t_end, n)`).
 ///
 /// # Errors
-/// [`LtiError::InvalidArgument`] unless t_end > 0 is finite and n ≥ 2;
+/// [`LtiError::InvalidArgument`] unless t_end > 0 is finite and n ≥ 2, or when the n times
+/// cannot be distinct and uniform in f64 (t_end = 5e-324 with n = 3);
 /// [`LtiError::TooLarge`] for n > [`MAX_VALUES`] (`time_grid(1.0, 1e12)` used to abort on
 /// allocation).
 pub fn time_grid(t_end: f64, n: usize) -> Result<Vec<f64>, LtiError> {
@@ -110,7 +111,17 @@ pub fn time_grid(t_end: f64, n: usize) -> Result<Vec<f64>, LtiError> {
         });
     }
     check_size("time grid", 1, n)?;
-    Ok((0..n).map(|k| t_end * k as f64 / (n - 1) as f64).collect())
+    // t_end·k/(n − 1), or (t_end/(n − 1))·k where t_end·k overflows (t_end near f64::MAX)
+    let step = t_end / (n - 1) as f64;
+    let grid: Vec<f64> = (0..n)
+        .map(|k| {
+            let t = t_end * k as f64 / (n - 1) as f64;
+            if t.is_finite() { t } else { (step * k as f64).min(t_end) }
+        })
+        .collect();
+    // a subnormal t_end has no n distinct equally spaced times: refuse it as `response` would
+    check_grid(&grid)?;
+    Ok(grid)
 }
 
 /// ż = Mz in balanced coordinates w = D⁻¹z, D = diag(2^{kᵢ}) (exact).
