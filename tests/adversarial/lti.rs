@@ -289,6 +289,9 @@ cases! {
         // the whole f64 range in one polynomial: roots ≈ ±1e-150j
         let wide = Polynomial::new(&[1e300, 0.0, 1.0]).unwrap();
         err_or(wide.roots(), "roots(1e300 s² + 1)", |z| z.iter().all(|z| is_root(wide.coeffs(), *z, 64.0)) && paired(z));
+        // s² + 3s + f64::MAX: scaling by σⁿ would overflow the leading coefficient
+        let top = Polynomial::new(&[1.0, 3.0, f64::MAX]).unwrap();
+        err_or(top.roots(), "roots(s² + 3s + MAX)", |z| z.iter().all(|z| (z.im.abs() - f64::MAX.sqrt()).abs() <= 4.0 * EPS * f64::MAX.sqrt()) && paired(z));
     }
 
     // Transfer-function algebra: G(s) equals N(s)/D(s) by the test's Horner sums; poles and
@@ -734,6 +737,13 @@ cases! {
         refused(eigenvalues(&DMatrix::from_element(2, 2, 1e308)), "eigenvalue 2e308");
         refused(singular_values(&DMatrix::from_element(2, 2, f64::MAX)), "σ = 2·MAX");
         assert_eq!(eigenvalues(&DMatrix::zeros(0, 0)), Ok(vec![]));
+        // far from normal: [[−3, −c], [1, 0]] has λ² + 3λ + c = 0, λ = −1.5 ± j√(c − 2.25), far
+        // below the largest entry (the imaginary parts were once tidied away as round-off)
+        for c in [1e300, f64::MAX] {
+            let ev = eigenvalues(&DMatrix::from_row_slice(2, 2, &[-3.0, -c, 1.0, 0.0])).unwrap();
+            let im = c.sqrt();
+            assert!(ev.iter().all(|z| (z.im.abs() - im).abs() <= 4.0 * EPS * im && z.re.abs() <= 4.0 * EPS * im), "{ev:?}");
+        }
         assert_eq!(singular_values(&DMatrix::zeros(0, 3)), Ok(vec![]));
         assert_eq!(rank(&DMatrix::zeros(0, 3), 1e-12), Ok(0));
     }

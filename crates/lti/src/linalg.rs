@@ -153,7 +153,9 @@ fn eigenvalues_balanced(a: &DMatrix<f64>, hessenberg: bool) -> Result<Vec<Comple
     if ev.iter().any(|z| !(z.re.is_finite() && z.im.is_finite())) {
         return Err(LtiError::NoConvergence { what: "eigenvalues" });
     }
-    let scale = scaled.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
+    // the tidying threshold is relative to the balanced matrix: [[−3, −10³⁰⁰], [1, 0]] has
+    // eigenvalues −1.5 ± 10¹⁵⁰j, far below its largest entry but not below its balanced norm
+    let scale = b.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
     let ev: Vec<Complex64> = tidy_conjugates(ev, scale)
         .into_iter()
         .map(|z| Complex64::new(crate::poly::mul_pow2(z.re, e), crate::poly::mul_pow2(z.im, e)))

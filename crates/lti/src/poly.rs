@@ -331,10 +331,16 @@ impl Polynomial {
         }
         // s = σt, σ = 2ᵏ: q(t) = Σ cᵢσ^{n−i}t^{n−i} has |q₀| ≈ |qₙ|
         let k = ((core[n].abs().log2() - core[0].abs().log2()) / n as f64).round() as i32;
-        let scaled: Vec<f64> =
-            core.iter().enumerate().map(|(i, &c)| mul_pow2(c, k * (n - i) as i32)).collect();
-        let (q, k) = if scaled.iter().all(|c| c.is_finite()) && scaled[0] != 0.0 && scaled[n] != 0.0 {
-            (Self { coeffs: scaled }, k)
+        // or, divided by σⁿ, Σ cᵢσ^{−i}t^{n−i}: the same roots t, and one of the two forms keeps
+        // every coefficient in range when the other overflows (t² + 3t + f64::MAX)
+        let usable = |v: &[f64]| v.iter().all(|c| c.is_finite()) && v[0] != 0.0 && v[n] != 0.0;
+        let up: Vec<f64> = core.iter().enumerate().map(|(i, &c)| mul_pow2(c, k * (n - i) as i32)).collect();
+        let down =
+            || -> Vec<f64> { core.iter().enumerate().map(|(i, &c)| mul_pow2(c, -k * i as i32)).collect() };
+        let (q, k) = if usable(&up) {
+            (Self { coeffs: up }, k)
+        } else if let Some(d) = Some(down()).filter(|d| usable(d)) {
+            (Self { coeffs: d }, k)
         } else {
             (Self { coeffs: core.to_vec() }, 0)
         };
