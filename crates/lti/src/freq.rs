@@ -45,7 +45,8 @@ pub struct FrequencyResponse {
 }
 
 fn check_omega(omega: &[f64]) -> Result<(), LtiError> {
-    if omega.iter().any(|w| !(w.is_finite() && *w >= 0.0)) {
+    // 0 ≤ ω < ∞ (NaN fails both), folded without short-circuit so that it vectorises
+    if !omega.iter().fold(true, |ok, &w| ok & (w >= 0.0) & (w < f64::INFINITY)) {
         return Err(LtiError::InvalidArgument {
             what: "frequency grid",
             reason: "every ω must be finite and ≥ 0".into(),
@@ -119,19 +120,30 @@ fn block<const FMA: bool>(num: &[f64], den: &[f64], w: &[f64], gain: f64, out: &
     let (mut en, mut on, mut ed, mut od) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
     eo(num, &mut en, &mut on);
     eo(den, &mut ed, &mut od);
-    let mut bad = false;
+    // N·conj(D)/|D|² with branch-free checks (comparisons and selects, so the loop vectorises);
+    // the results are interleaved into `out` afterwards
+    let (mut re, mut im) = ([0.0f64; CHUNK], [0.0f64; CHUNK]);
+    let mut bad = 0u32;
     for l in 0..m {
         let (nr, ni) = (en[l], w[l] * on[l]);
         let (dr, di) = (ed[l], w[l] * od[l]);
         let d2 = madd::<FMA>(dr, dr, di * di);
         let inv = gain / d2;
-        let re = madd::<FMA>(nr, dr, ni * di) * inv;
-        let im = madd::<FMA>(ni, dr, -(nr * di)) * inv;
-        let ok = d2.is_normal() && re.is_finite() && im.is_finite();
-        bad |= !ok;
-        out[l] = if ok { Complex64::new(re, im) } else { Complex64::new(f64::NAN, f64::NAN) };
+        let r = madd::<FMA>(nr, dr, ni * di) * inv;
+        let i = madd::<FMA>(ni, dr, -(nr * di)) * inv;
+        // d2 normal (not 0, subnormal, ∞ or NaN) and both parts finite
+        let ok = (d2 >= f64::MIN_POSITIVE)
+            & (d2 < f64::INFINITY)
+            & (r.abs() < f64::INFINITY)
+            & (i.abs() < f64::INFINITY);
+        bad += u32::from(!ok);
+        re[l] = if ok { r } else { f64::NAN };
+        im[l] = if ok { i } else { f64::NAN };
     }
-    bad
+    for (o, (r, i)) in out[..m].iter_mut().zip(re.iter().zip(&im)) {
+        *o = Complex64::new(*r, *i);
+    }
+    bad > 0
 }
 
 /// The data of one grid evaluation: scaled coefficients, frequencies, the largest frequency
@@ -152,7 +164,7 @@ fn blocks(grid: &Grid<'_>, out: &mut [Complex64]) -> bool {
     fn all<const FMA: bool>(g: &Grid<'_>, out: &mut [Complex64]) -> bool {
         let mut bad = false;
         for (w, o) in g.omega.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
-            if w.iter().all(|&wi| wi <= g.w_max) {
+            if w.iter().fold(true, |ok, &wi| ok & (wi <= g.w_max)) {
                 bad |= block::<FMA>(g.num, g.den, w, g.gain, o);
             } else {
                 o.fill(Complex64::new(f64::NAN, f64::NAN));
@@ -209,6 +221,9 @@ impl TransferFunction {
         let tau = self.delay();
         let grid = Grid { num: &num.c, den: &den.c, omega, w_max, gain };
         let slow = blocks(&grid, &mut out);
+        if !slow && tau == 0.0 {
+            return Ok(out);
+        }
         let ax = slow.then(|| AxisRational::new(self.num().coeffs(), self.den().coeffs()));
         for (g, &w) in out.iter_mut().zip(omega) {
             if g.re.is_nan() {
