@@ -4,7 +4,7 @@ use nalgebra::Matrix3;
 use vectrix::prelude::*;
 
 use crate::common::*;
-use crate::support::{EPS, assert_abs, assert_printed, assert_printed_slice, assert_rel};
+use crate::support::{EPS, assert_abs, assert_abs_slice, assert_printed, assert_printed_slice, assert_rel};
 
 /// A symmetric strain (3.4.2) in frame `a`.
 fn strain(a: &Frame, e: [f64; 6]) -> Dyadic {
@@ -27,6 +27,49 @@ fn eq_3_4_12_isotropic_hooke_law_by_contraction() {
     assert_dyadic_abs(&(first * (2.0 * m.mu()) + second * m.lambda()), &by_contraction, &a, TOL);
     let map = HookeMap::new(&m.stiffness()).unwrap();
     assert_dyadic_abs(&map.apply(&eps), &by_contraction, &a, TOL);
+}
+
+#[test]
+fn eq_3_4_5_hooke_map_for_many_strains() {
+    // HookeMap::apply_many (f64: the fused kernel, AVX2 + FMA where the CPU has them) against
+    // σ_kn = Σ_lm c_klmn ε_ml written out from (3.4.5) with the components in frame a, for a
+    // stiffness with 81 distinct entries (no symmetry to hide an index slip) and 37 strains
+    // (not a multiple of any vector width). Each σ entry is a sum of 9 products of size ≤ 6
+    // with |ε| ≤ 1: 16ε relative to the sum of magnitudes, bounded here by 9·6 = 54.
+    let a = Frame::new();
+    let data: Vec<f64> = (0..81).map(|i| (((i * 37) % 81) as f64 - 40.0) / 7.0).collect();
+    let k = Tensor::from_hidden(2, 2, data).unwrap();
+    let kr = k.resolve(&a);
+    let c = |i: usize, j: usize, p: usize, q: usize| kr[(3 * i + j, 3 * p + q)];
+    let mut seed = 5u64;
+    let mut next = || {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+    };
+    let strains: Vec<Dyadic> = (0..37).map(|_| a.dyadic(&Matrix3::from_fn(|_, _| next()))).collect();
+    let map = HookeMap::new(&k).unwrap();
+    let mut out = vec![Dyadic::zero(); strains.len()];
+    map.apply_many(&strains, &mut out).unwrap();
+    for (e, got) in strains.iter().zip(&out) {
+        let er = e.resolve(&a);
+        let want = Matrix3::from_fn(|kk, n| {
+            (0..3).flat_map(|l| (0..3).map(move |m| (l, m))).map(|(l, m)| c(kk, l, m, n) * er[(m, l)]).sum::<f64>()
+        });
+        assert_abs_slice(got.resolve(&a).as_slice(), want.as_slice(), 16.0 * EPS * 54.0);
+    }
+    // other scalar types take the generic path: dual numbers carry the same values
+    use vectrix::num_dual::Dual64;
+    let ad = Frame::<Dual64>::identity();
+    let kd = Tensor::from_hidden(2, 2, k.hidden().iter().map(|&x| Dual64::from(x)).collect()).unwrap();
+    let mapd = HookeMap::new(&kd).unwrap();
+    let strains_d: Vec<Dyadic<Dual64>> =
+        strains.iter().map(|e| ad.dyadic(&e.resolve(&a).map(Dual64::from))).collect();
+    let mut out_d = vec![Dyadic::<Dual64>::zero(); strains.len()];
+    mapd.apply_many(&strains_d, &mut out_d).unwrap();
+    for (d, f) in out_d.iter().zip(&out) {
+        let re: Vec<f64> = d.resolve(&ad).iter().map(|x| x.re).collect();
+        assert_abs_slice(&re, f.resolve(&a).as_slice(), 16.0 * EPS * 54.0);
+    }
 }
 
 #[test]
