@@ -4,6 +4,8 @@
 //! With 𝒦 = Σ c_klmn ê_k⊗ê_l⊗ê′_m⊗ê′_n the law reads σ_kn = Σ_lm c_klmn ε_ml (3.4.5); the
 //! conventional C_ijkl of σ_ij = C_ijkl ε_kl is C_ijkl = c_ilkj (ch. 3 notes).
 
+use std::any::Any;
+
 use nalgebra::{SMatrix, SVector};
 
 use crate::{Dyadic, Scalar, Tensor, TensorError};
@@ -77,11 +79,78 @@ impl<T: Scalar> HookeMap<T> {
                 ),
             });
         }
-        for (s, e) in out.iter_mut().zip(eps) {
-            *s = self.apply(e);
+        // f64 (the common case): the 81 multiply-adds column by column with AVX2 + FMA when the
+        // CPU has them (detected at run time); other scalar types (dual numbers) use `apply`
+        if let Some(h) = (&self.h as &dyn Any).downcast_ref::<SMatrix<f64, 9, 9>>() {
+            let mut cols = [0.0f64; 81];
+            cols.copy_from_slice(h.as_slice());
+            apply_many_f64(&cols, eps, out, |s, e| *s = self.apply(e));
+        } else {
+            for (s, e) in out.iter_mut().zip(eps) {
+                *s = self.apply(e);
+            }
         }
         Ok(())
     }
+}
+
+/// a·b + c, fused when compiled for FMA.
+#[inline(always)]
+fn madd<const FMA: bool>(a: f64, b: f64, c: f64) -> f64 {
+    if FMA { a.mul_add(b, c) } else { a * b + c }
+}
+
+/// vec(σ) = H vec(ε) for each pair, H given column-major; `T` is f64 in every call (the
+/// downcasts fold away), `fallback` covers the type system's other case.
+#[inline(always)]
+fn apply_many_kernel<const FMA: bool, T: Scalar>(
+    h: &[f64; 81],
+    eps: &[Dyadic<T>],
+    out: &mut [Dyadic<T>],
+    fallback: &impl Fn(&mut Dyadic<T>, &Dyadic<T>),
+) {
+    for (s, e) in out.iter_mut().zip(eps) {
+        let Some(e64) = (e as &dyn Any).downcast_ref::<Dyadic<f64>>() else {
+            fallback(s, e);
+            continue;
+        };
+        let x = e64.m.as_slice();
+        let mut acc = [0.0f64; 9];
+        for (col, &xj) in h.chunks_exact(9).zip(x) {
+            for (a, &c) in acc.iter_mut().zip(col) {
+                *a = madd::<FMA>(c, xj, *a);
+            }
+        }
+        if let Some(s64) = (s as &mut dyn Any).downcast_mut::<Dyadic<f64>>() {
+            s64.m.as_mut_slice().copy_from_slice(&acc);
+        }
+    }
+}
+
+/// [`apply_many_kernel`] compiled for AVX2 + FMA when the CPU has them, portable otherwise.
+fn apply_many_f64<T: Scalar>(
+    h: &[f64; 81],
+    eps: &[Dyadic<T>],
+    out: &mut [Dyadic<T>],
+    fallback: impl Fn(&mut Dyadic<T>, &Dyadic<T>),
+) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx2,fma")]
+        fn avx2_fma<T: Scalar>(
+            h: &[f64; 81],
+            eps: &[Dyadic<T>],
+            out: &mut [Dyadic<T>],
+            fallback: &impl Fn(&mut Dyadic<T>, &Dyadic<T>),
+        ) {
+            apply_many_kernel::<true, T>(h, eps, out, fallback);
+        }
+        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+            // SAFETY: AVX2 and FMA were detected on this CPU just above.
+            return unsafe { avx2_fma(h, eps, out, &fallback) };
+        }
+    }
+    apply_many_kernel::<false, T>(h, eps, out, &fallback);
 }
 
 /// An isotropic linear elastic material given by its Lamé constants λ, μ (3.4.11).
