@@ -595,8 +595,6 @@ cases! {
                         && (x.abs() > 1e6 || ss_at(r, s0).is_some_and(|v| (v - g.eval(s0)).norm() <= 1e-12 * g.eval(s0).norm().max(1.0)))
                 });
             }
-            let mut z = vec![1.0; 4];
-            z[3] = x;
             err_or(affine_equilibria(&DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, x]), &[1.0, 1.0], 0.0), "affine_equilibria", |e| match e {
                 AffineEquilibria::Unique(v) => v.iter().all(|c| c.is_finite()) && (v[0] + 1.0).abs() <= 4.0 * EPS && (v[1] * x + 1.0).abs() <= 4.0 * EPS,
                 AffineEquilibria::Family { particular, directions } => particular.iter().chain(directions.iter()).all(|c| c.is_finite()) && x == 0.0,

@@ -53,7 +53,10 @@ fn eq_3_4_5_hooke_map_for_many_strains() {
     for (e, got) in strains.iter().zip(&out) {
         let er = e.resolve(&a);
         let want = Matrix3::from_fn(|kk, n| {
-            (0..3).flat_map(|l| (0..3).map(move |m| (l, m))).map(|(l, m)| c(kk, l, m, n) * er[(m, l)]).sum::<f64>()
+            (0..3)
+                .flat_map(|l| (0..3).map(move |m| (l, m)))
+                .map(|(l, m)| c(kk, l, m, n) * er[(m, l)])
+                .sum::<f64>()
         });
         assert_abs_slice(got.resolve(&a).as_slice(), want.as_slice(), 16.0 * EPS * 54.0);
     }

@@ -46,7 +46,7 @@ pub struct FrequencyResponse {
 
 fn check_omega(omega: &[f64]) -> Result<(), LtiError> {
     // 0 ≤ ω < ∞ (NaN fails both), folded without short-circuit so that it vectorises
-    if !omega.iter().fold(true, |ok, &w| ok & (w >= 0.0) & (w < f64::INFINITY)) {
+    if !omega.iter().fold(true, |ok, &w| ok & (0.0..f64::INFINITY).contains(&w)) {
         return Err(LtiError::InvalidArgument {
             what: "frequency grid",
             reason: "every ω must be finite and ≥ 0".into(),
@@ -132,8 +132,7 @@ fn block<const FMA: bool>(num: &[f64], den: &[f64], w: &[f64], gain: f64, out: &
         let r = madd::<FMA>(nr, dr, ni * di) * inv;
         let i = madd::<FMA>(ni, dr, -(nr * di)) * inv;
         // d2 normal (not 0, subnormal, ∞ or NaN) and both parts finite
-        let ok = (d2 >= f64::MIN_POSITIVE)
-            & (d2 < f64::INFINITY)
+        let ok = (f64::MIN_POSITIVE..f64::INFINITY).contains(&d2)
             & (r.abs() < f64::INFINITY)
             & (i.abs() < f64::INFINITY);
         bad += u32::from(!ok);

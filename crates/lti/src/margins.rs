@@ -648,7 +648,8 @@ pub fn sensitivity_integral(l: &TransferFunction) -> Result<f64, LtiError> {
     moduli.retain(|m| *m > 0.0);
     let (lo, hi) = moduli.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &m| (lo.min(m), hi.max(m)));
     let a = if moduli.is_empty() { 1.0 } else { lo.sqrt() * hi.sqrt() };
-    if !moduli.is_empty() && !(hi / lo <= 1e12 && a.is_normal()) {
+    let resolvable = moduli.is_empty() || (hi / lo <= 1e12 && a.is_normal());
+    if !resolvable {
         return Err(LtiError::NoConvergence {
             what: "sensitivity integral: the poles of L and of the closed loop span more than 12 decades (ω = a·tan θ cannot resolve them in f64)",
         });

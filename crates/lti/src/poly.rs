@@ -129,7 +129,8 @@ impl Polynomial {
     pub fn trim(&self, rtol: f64) -> Self {
         let tol = rtol * self.norm_inf();
         // `!(|c| ≤ tol)`: with a NaN rtol no comparison holds and nothing is dropped
-        let first = self.coeffs.iter().position(|c| !(c.abs() <= tol)).unwrap_or(self.coeffs.len() - 1);
+        let first =
+            self.coeffs.iter().position(|c| c.abs() > tol || c.is_nan()).unwrap_or(self.coeffs.len() - 1);
         Self::from_vec(self.coeffs[first..].to_vec())
     }
 

@@ -441,5 +441,6 @@ fn reversed_is_better(nc: &[f64], dc: &[f64], s: Complex64) -> bool {
         return false;
     }
     let (direct, reversed) = (kn_d + kd_d, 1.5 * (kn_r + kd_r));
-    !(direct < reversed)
+    // both are finite or +∞ (sums of non-negative terms), never NaN
+    direct >= reversed
 }
