@@ -128,9 +128,9 @@ impl Polynomial {
     /// §3.3: a leading 1.1e-16 gave a spurious zero at −1.04e16 in 15.20.42).
     pub fn trim(&self, rtol: f64) -> Self {
         let tol = rtol * self.norm_inf();
-        // `!(|c| ≤ tol)`: with a NaN rtol no comparison holds and nothing is dropped
-        let first =
-            self.coeffs.iter().position(|c| c.abs() > tol || c.is_nan()).unwrap_or(self.coeffs.len() - 1);
+        // kept unless |c| ≤ tol: with a NaN rtol nothing is dropped
+        let keep = |c: &f64| c.abs() > tol || tol.is_nan() || c.is_nan();
+        let first = self.coeffs.iter().position(keep).unwrap_or(self.coeffs.len() - 1);
         Self::from_vec(self.coeffs[first..].to_vec())
     }
 
