@@ -2,7 +2,7 @@
 
 use super::dense::{DenseStep, hermite_part, weighted};
 use super::tableau::{DOPRI5, DOPRI5_D, DOPRI5_E};
-use crate::state::{State, check_stages, combine, eval_unchecked};
+use crate::state::{State, check_stages, eval_unchecked};
 use crate::{OdeError, Work};
 
 /// Stages 2..=7 from k₁ = `k[0]` (stage 7 is f(t + h, y₁), first same as last); returns y₁
@@ -19,26 +19,36 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
     work: &mut Work,
 ) -> Result<(S, f64), OdeError> {
     k.truncate(1);
-    // unrolled so that every row of A is a constant
-    macro_rules! stages {
-        ($($i:literal)*) => {$(
-            let yi = combine(y, h, DOPRI5.a[$i], k);
-            k.push(eval_unchecked(f, t + DOPRI5.c[$i] * h, &yi, &mut work.fevals));
-        )*};
-    }
-    stages!(1 2 3 4 5);
+    // the stages as locals (registers for small fixed-size states), every row of A a constant;
+    // they move into `k` at the end for the dense output and the stage scan
+    let a = DOPRI5.a;
+    let k1 = &k[0];
+    let arg = |row: &[f64], ks: &[&S]| -> S {
+        let mut out = y.clone();
+        for (cj, kj) in row.iter().zip(ks) {
+            out.add_scaled(h * cj, kj);
+        }
+        out
+    };
+    let mut f_at = |i: usize, yi: &S| eval_unchecked(f, t + DOPRI5.c[i] * h, yi, &mut work.fevals);
+    let k2 = f_at(1, &arg(a[1], &[k1]));
+    let k3 = f_at(2, &arg(a[2], &[k1, &k2]));
+    let k4 = f_at(3, &arg(a[3], &[k1, &k2, &k3]));
+    let k5 = f_at(4, &arg(a[4], &[k1, &k2, &k3, &k4]));
+    let k6 = f_at(5, &arg(a[5], &[k1, &k2, &k3, &k4, &k5]));
     // row 7 of A is b: the stage-7 argument is y₁
-    let y1 = combine(y, h, DOPRI5.a[6], k);
-    k.push(eval_unchecked(f, t + DOPRI5.c[6] * h, &y1, &mut work.fevals));
-    let (rtol, atol) = tol;
+    let y1 = arg(a[6], &[k1, &k2, &k3, &k4, &k5, &k6]);
+    let k7 = f_at(6, &y1);
     // local error estimate h Σ eᵢ kᵢ (e₂ = 0: k₂ does not enter)
-    let mut e = k[0].clone();
+    let mut e = k1.clone();
     for x in e.as_mut_slice() {
         *x *= h * DOPRI5_E[0];
     }
-    for j in 2..7 {
-        e.add_scaled(h * DOPRI5_E[j], &k[j]);
+    for (ej, kj) in DOPRI5_E[2..].iter().zip([&k3, &k4, &k5, &k6, &k7]) {
+        e.add_scaled(h * ej, kj);
     }
+    k.extend([k2, k3, k4, k5, k6, k7]);
+    let (rtol, atol) = tol;
     let mut err = 0.0;
     for ((yi, y1i), ei) in y.as_slice().iter().zip(y1.as_slice()).zip(e.as_slice()) {
         let sk = atol + rtol * yi.abs().max(y1i.abs());
