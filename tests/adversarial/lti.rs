@@ -289,6 +289,9 @@ cases! {
         // the whole f64 range in one polynomial: roots ≈ ±1e-150j
         let wide = Polynomial::new(&[1e300, 0.0, 1.0]).unwrap();
         err_or(wide.roots(), "roots(1e300 s² + 1)", |z| z.iter().all(|z| is_root(wide.coeffs(), *z, 64.0)) && paired(z));
+        // s + 1e300 at −1e300 + j is j exactly: in 1/s the sum 1e300·(1/s) + 1 cancels to 0
+        let big_root = Polynomial::new(&[1.0, 1e300]).unwrap();
+        assert_eq!(big_root.eval_c(c(-1e300, 1.0)), c(0.0, 1.0));
         // s² + 3s + f64::MAX: scaling by σⁿ would overflow the leading coefficient
         let top = Polynomial::new(&[1.0, 3.0, f64::MAX]).unwrap();
         err_or(top.roots(), "roots(s² + 3s + MAX)", |z| z.iter().all(|z| (z.im.abs() - f64::MAX.sqrt()).abs() <= 4.0 * EPS * f64::MAX.sqrt()) && paired(z));

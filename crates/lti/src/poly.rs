@@ -186,6 +186,12 @@ impl Polynomial {
             return self.coeffs.iter().fold(Complex64::new(0.0, 0.0), |acc, &c| acc * s + c);
         }
         let z = crate::axis::cdiv(Complex64::new(1.0, 0.0), s);
+        // the form with the smaller condition number ([`Conditions`]): s + 1e300 at −1e300 + j
+        // is j in s, while 1e300·(1/s) + 1 cancels to 0
+        let (direct, reversed) = (Conditions::direct(&self.coeffs, s), Conditions::reversed(&self.coeffs, z));
+        if direct.better_than(&reversed) {
+            return direct.value;
+        }
         let r = self.coeffs.iter().rev().fold(Complex64::new(0.0, 0.0), |acc, &c| acc * z + c);
         if r.re == 0.0 && r.im == 0.0 {
             return r;
@@ -456,5 +462,47 @@ impl fmt::Display for Polynomial {
             first = false;
         }
         Ok(())
+    }
+}
+
+/// Horner's value of a polynomial at w and its condition number Σ|cᵢ||w|ⁱ/|p(w)| (Higham,
+/// *Accuracy and Stability of Numerical Algorithms*, §5.1: the relative error of the value is a
+/// small multiple of ε times it), for choosing between the polynomial in s and the reversed one
+/// in z = 1/s when |s| > 1.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Conditions {
+    /// The Horner value (of the reversed polynomial for the reversed form).
+    pub value: Complex64,
+    /// The condition number, +∞ when the value is 0 or a sum overflowed (never NaN).
+    pub cond: f64,
+}
+
+impl Conditions {
+    fn of<'a>(c: impl Iterator<Item = &'a f64>, w: Complex64, weight: f64) -> Self {
+        let aw = w.norm();
+        let (value, m) = c.fold((Complex64::new(0.0, 0.0), 0.0), |(v, m), &x| (v * w + x, m * aw + x.abs()));
+        let k = weight * m / value.norm();
+        Self { value, cond: if k.is_finite() { k } else { f64::INFINITY } }
+    }
+
+    /// The polynomial (descending `c`) in s.
+    pub(crate) fn direct(c: &[f64], s: Complex64) -> Self {
+        Self::of(c.iter(), s, 1.0)
+    }
+
+    /// The reversed polynomial in z = 1/s; the rounding of 1/s is counted as half the
+    /// condition number again.
+    pub(crate) fn reversed(c: &[f64], z: Complex64) -> Self {
+        Self::of(c.iter().rev(), z, 1.5)
+    }
+
+    /// Whether this (direct) form is to be used rather than `reversed`: the smaller condition
+    /// number, ties to the reversed form (where nothing overflows); and an exact zero of the
+    /// direct form is believed when the reversed form has no correct digit (condition number
+    /// ≥ 1/ε): direct sums of exact coefficients at an exact point cancel exactly (Sterbenz),
+    /// while 1/s is already rounded.
+    pub(crate) fn better_than(&self, reversed: &Self) -> bool {
+        let exact_zero = self.value == Complex64::new(0.0, 0.0);
+        (exact_zero && reversed.cond * f64::EPSILON >= 1.5) || self.cond < reversed.cond
     }
 }

@@ -4,7 +4,7 @@
 //! feedback (15.18.4).
 
 use crate::error::{LtiError, check_finite};
-use crate::poly::Polynomial;
+use crate::poly::{Conditions, Polynomial};
 use crate::zpk::Zpk;
 use num_complex::Complex64;
 use std::fmt;
@@ -408,39 +408,19 @@ impl fmt::Display for TransferFunction {
     }
 }
 
-/// Horner's value of Σ cᵢ w^{n−i} (descending `c`) and its running bound Σ|cᵢ||w|^{n−i}.
-fn horner_with_bound(c: &[f64], w: Complex64) -> (Complex64, f64) {
-    let aw = w.norm();
-    c.iter().fold((Complex64::new(0.0, 0.0), 0.0), |(v, m), &x| (v * w + x, m * aw + x.abs()))
-}
-
-/// For |s| > 1: whether N/D is better evaluated in z = 1/s (reversed coefficients) than in s.
-/// Each form's relative error is a small multiple of ε times its condition number
-/// Σ|cᵢ||w|ⁱ/|p(w)| summed over N and D (Higham, *Accuracy and Stability of Numerical
-/// Algorithms*, §5.1); the reversed form also carries the rounding of 1/s, counted as half its
-/// condition number again. A form whose sums overflow counts as infinitely ill-conditioned.
-/// When the direct form finds D exactly zero (a pole) and the reversed one has no correct digit
-/// in D (condition number ≥ 1/ε), the pole is believed: the direct sums of exact coefficients
-/// at an exact point cancel exactly (Sterbenz), while 1/s is already rounded. Large s near a root of large coefficients
-/// (1/(s + 1e300) at s = −1e300 + j) needs the direct form, large s far from the roots of small
-/// ones the reversed form.
+/// For |s| > 1: whether N/D is better evaluated in z = 1/s (reversed coefficients) than in s:
+/// the form with the smaller summed condition number of N and D ([`Conditions`]), the direct
+/// one when it finds D exactly zero (a pole) and the reversed one has no correct digit in D.
+/// Large s near a root of large coefficients (1/(s + 1e300) at s = −1e300 + j) needs the
+/// direct form, large s far from the roots of small ones the reversed form.
 fn reversed_is_better(nc: &[f64], dc: &[f64], s: Complex64) -> bool {
-    let zero = Complex64::new(0.0, 0.0);
-    let cond = |c: &[f64], w: Complex64| -> (f64, bool) {
-        let (v, m) = horner_with_bound(c, w);
-        let k = m / v.norm();
-        (if k.is_finite() { k } else { f64::INFINITY }, v == zero)
-    };
     let z = crate::axis::cdiv(Complex64::new(1.0, 0.0), s);
-    let rev = |c: &[f64]| c.iter().rev().copied().collect::<Vec<f64>>();
-    let num_zero = nc.iter().all(|&x| x == 0.0);
-    let (kn_d, kn_r) = if num_zero { (0.0, 0.0) } else { (cond(nc, s).0, cond(&rev(nc), z).0) };
-    let ((kd_d, pole_d), (kd_r, _)) = (cond(dc, s), cond(&rev(dc), z));
-    let hopeless = |k: f64| k * f64::EPSILON >= 1.0;
-    if pole_d && hopeless(kd_r) {
-        return false;
-    }
-    let (direct, reversed) = (kn_d + kd_d, 1.5 * (kn_r + kd_r));
-    // both are finite or +∞ (sums of non-negative terms), never NaN
-    direct >= reversed
+    let (dd, dr) = (Conditions::direct(dc, s), Conditions::reversed(dc, z));
+    let (nd, nr) = if nc.iter().all(|&x| x == 0.0) {
+        (0.0, 0.0)
+    } else {
+        (Conditions::direct(nc, s).cond, Conditions::reversed(nc, z).cond)
+    };
+    let pole = dd.value == Complex64::new(0.0, 0.0) && dd.better_than(&dr);
+    !pole && nd + dd.cond >= nr + dr.cond
 }
