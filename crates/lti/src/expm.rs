@@ -62,7 +62,8 @@ fn mul_into(dst: MatMut<'_, f64>, acc: Accum, a: MatRef<'_, f64>, b: MatRef<'_, 
 
 /// Two linear combinations of the same three matrices in one pass (each matrix read once;
 /// column slices of an owned faer matrix are contiguous): d₁ ← Σ cₖMₖ + e₁I,
-/// d₂ ← Σ c'ₖMₖ + e₂I. Compiled for AVX2 + FMA when the CPU has them (detected at run time).
+/// d₂ ← Σ c'ₖMₖ + e₂I. Compiled for AVX2 (four lanes) when the CPU has it and FMA, detected at
+/// run time; the sums are plain multiply–adds, so the results do not depend on the CPU.
 fn combine2(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) {
     #[inline(always)]
     fn body(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) {
@@ -175,7 +176,7 @@ pub(crate) fn expm_faer(a: &Mat<f64>) -> Result<Mat<f64>, LtiError> {
     let dense: Vec<f64> = (0..n).flat_map(|j| a.col_as_slice(j).iter().copied()).collect();
     let mut r = Mat::<f64>::zeros(n, n);
     expm_into(&dense, n, r.as_mut())?;
-    if all_finite(r.as_ref()) { Ok(r) } else { Err(LtiError::Overflow { what: "matrix exponential" }) }
+    if all_finite(&r) { Ok(r) } else { Err(LtiError::Overflow { what: "matrix exponential" }) }
 }
 
 /// out ← e^A for a finite n×n A given column-major (`out` n×n); the caller checks that `out`
@@ -200,7 +201,7 @@ fn expm_into(a: &[f64], n: usize, mut out: MatMut<'_, f64>) -> Result<(), LtiErr
                 // r = e^{A/2^{s−j−1}}
                 exact_triangular_band(r.as_mut(), a, n, s - j - 1);
             }
-            if !all_finite(r.as_ref()) {
+            if !all_finite(&r) {
                 return Err(LtiError::Overflow { what: "matrix exponential" });
             }
         }
@@ -216,8 +217,9 @@ fn finite(v: &[f64]) -> bool {
     v.iter().fold(true, |ok, x| ok & (x.abs() < f64::INFINITY))
 }
 
-fn all_finite(m: MatRef<'_, f64>) -> bool {
-    (0..m.ncols()).all(|j| (0..m.nrows()).all(|i| m[(i, j)].is_finite()))
+/// [`finite`] over the columns of an owned matrix.
+fn all_finite(m: &Mat<f64>) -> bool {
+    (0..m.ncols()).all(|j| finite(m.col_as_slice(j)))
 }
 
 /// out ← e^A by Higham's algorithm for a matrix whose 1-norm is finite. A is read through a
