@@ -66,13 +66,47 @@ pub fn orientation_about<T: Scalar>(axis: Axis, theta: T) -> Matrix3<T> {
 #[doc(alias = "R3")]
 #[inline]
 pub fn rotation_about<T: Scalar>(axis: Axis, theta: T) -> Matrix3<T> {
-    let (s, c) = theta.sin_cos();
+    let (s, c) = crate::series::sin_cos(theta);
+    rotation_about_sin_cos(axis, s, c)
+}
+
+/// 𝓡_i(θ) from (sin θ, cos θ).
+#[inline(always)]
+pub(crate) fn rotation_about_sin_cos<T: Scalar>(axis: Axis, s: T, c: T) -> Matrix3<T> {
     let (o, z) = (T::one(), T::zero());
     match axis {
         Axis::X => Matrix3::new(o, z, z, z, c, -s, z, s, c),
         Axis::Y => Matrix3::new(c, z, s, z, o, z, -s, z, c),
         Axis::Z => Matrix3::new(c, -s, z, s, c, z, z, z, o),
     }
+}
+
+/// 𝓜 𝓡_k(θ) from (sin θ, cos θ), using the sparsity of 𝓡_k: column k of 𝓜 is kept and, with
+/// (p, q) = (k + 1, k + 2) mod 3, the new columns are c·m_p + s·m_q and c·m_q − s·m_p. The
+/// same sums as the dense product without its exact terms 0·m and 1·m.
+///
+/// Book: (2.12.17–19), (2.12.33).
+#[inline(always)]
+pub(crate) fn times_rotation_about<T: Scalar>(m: &Matrix3<T>, axis: Axis, s: T, c: T) -> Matrix3<T> {
+    // One monomorphised body per axis: constant indices keep the matrix in registers.
+    match axis {
+        Axis::X => times_rotation_about_k::<T, 0>(m, s, c),
+        Axis::Y => times_rotation_about_k::<T, 1>(m, s, c),
+        Axis::Z => times_rotation_about_k::<T, 2>(m, s, c),
+    }
+}
+
+/// [`times_rotation_about`] for the axis of index `K`.
+#[inline(always)]
+fn times_rotation_about_k<T: Scalar, const K: usize>(m: &Matrix3<T>, s: T, c: T) -> Matrix3<T> {
+    let (p, q) = ((K + 1) % 3, (K + 2) % 3);
+    let mut out = *m;
+    for r in 0..3 {
+        let (mp, mq) = (m[(r, p)], m[(r, q)]);
+        out[(r, p)] = c * mp + s * mq;
+        out[(r, q)] = c * mq - s * mp;
+    }
+    out
 }
 
 impl<T: Scalar> Quaternion<T> {
@@ -82,7 +116,13 @@ impl<T: Scalar> Quaternion<T> {
     /// Book: (2.16.10) with v₁ = s e_i.
     #[inline]
     pub fn times_elementary(&self, axis: Axis, theta: T) -> Quaternion<T> {
-        let (s, c) = (theta * T::lit(0.5)).sin_cos();
+        let (s, c) = crate::series::sin_cos(theta * T::lit(0.5));
+        self.times_elementary_sin_cos(axis, s, c)
+    }
+
+    /// 𝐪 ⊗ (c, s e_i) with (s, c) = (sin θ/2, cos θ/2).
+    #[inline(always)]
+    pub(crate) fn times_elementary_sin_cos(&self, axis: Axis, s: T, c: T) -> Quaternion<T> {
         let (a, b, cc, d) = (self.a, self.b, self.c, self.d);
         // (a c − s v·e_i, c v + a s e_i + s v × e_i)
         match axis {
@@ -99,7 +139,13 @@ impl<T: Scalar> Quaternion<T> {
 /// Book: (2.15.20) for n̂ = e_i.
 #[inline]
 pub fn quaternion_about<T: Scalar>(axis: Axis, theta: T) -> Quaternion<T> {
-    let (s, c) = (theta * T::lit(0.5)).sin_cos();
+    let (s, c) = crate::series::sin_cos(theta * T::lit(0.5));
+    quaternion_about_sin_cos(axis, s, c)
+}
+
+/// (c, s e_i) with (s, c) = (sin θ/2, cos θ/2).
+#[inline(always)]
+pub(crate) fn quaternion_about_sin_cos<T: Scalar>(axis: Axis, s: T, c: T) -> Quaternion<T> {
     let z = T::zero();
     match axis {
         Axis::X => Quaternion::new(c, s, z, z),

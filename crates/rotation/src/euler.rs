@@ -20,7 +20,9 @@
 use nalgebra::Matrix3;
 use vectrix_tensor::Scalar;
 
-use crate::{Axis, Quaternion, RotationError, quaternion_about, rotation_about};
+use crate::axis::{quaternion_about_sin_cos, rotation_about_sin_cos, times_rotation_about};
+use crate::series::sin_cos3;
+use crate::{Axis, Quaternion, RotationError};
 
 /// Intrinsic (about the new, moving axes: the book's definition) or extrinsic (about the
 /// fixed axes of the first frame).
@@ -171,10 +173,16 @@ impl<T: Scalar> EulerAngles<T> {
         // entries that carry the factor cos β (or sin β) stay relatively accurate here, while
         // 𝓡(q) forms them by cancellation, which makes the extraction lose ε/cos β.
         let [i, j, k] = self.sequence.axes;
-        let [a, b, c] = self.angles;
+        let [(sa, ca), (sb, cb), (sc, cc)] = sin_cos3(self.angles);
         match self.sequence.kind {
-            EulerKind::Intrinsic => rotation_about(i, a) * rotation_about(j, b) * rotation_about(k, c),
-            EulerKind::Extrinsic => rotation_about(k, c) * rotation_about(j, b) * rotation_about(i, a),
+            EulerKind::Intrinsic => {
+                let m = times_rotation_about(&rotation_about_sin_cos(i, sa, ca), j, sb, cb);
+                times_rotation_about(&m, k, sc, cc)
+            }
+            EulerKind::Extrinsic => {
+                let m = times_rotation_about(&rotation_about_sin_cos(k, sc, cc), j, sb, cb);
+                times_rotation_about(&m, i, sa, ca)
+            }
         }
     }
 
@@ -200,10 +208,16 @@ impl<T: Scalar> EulerAngles<T> {
     #[inline]
     fn quaternion_raw(&self) -> Quaternion<T> {
         let [i, j, k] = self.sequence.axes;
+        let half = T::lit(0.5);
         let [a, b, c] = self.angles;
+        let [(sa, ca), (sb, cb), (sc, cc)] = sin_cos3([a * half, b * half, c * half]);
         match self.sequence.kind {
-            EulerKind::Intrinsic => quaternion_about(i, a).times_elementary(j, b).times_elementary(k, c),
-            EulerKind::Extrinsic => quaternion_about(k, c).times_elementary(j, b).times_elementary(i, a),
+            EulerKind::Intrinsic => quaternion_about_sin_cos(i, sa, ca)
+                .times_elementary_sin_cos(j, sb, cb)
+                .times_elementary_sin_cos(k, sc, cc),
+            EulerKind::Extrinsic => quaternion_about_sin_cos(k, sc, cc)
+                .times_elementary_sin_cos(j, sb, cb)
+                .times_elementary_sin_cos(i, sa, ca),
         }
     }
 }

@@ -17,7 +17,7 @@
 use nalgebra::Matrix3;
 use vectrix_tensor::Scalar;
 
-use crate::series::{angle_0_pi, angle_half_pi, wrap_near as wrap_angle};
+use crate::series::{angle_0_pi, angle_half_pi, atan2, wrap_near as wrap_angle};
 
 use crate::{EulerAngles, EulerSequence, Quaternion, RotationError, check_rotation_matrix, rotation_about};
 
@@ -161,8 +161,8 @@ impl<T: Scalar> EulerAngles<T> {
         let (p, r) = ((aa - cc) / n, two * (aa * cc).sqrt() / n);
         let (alpha, beta, gamma, lock_measure, sign, use_a);
         // α = φ₊ + φ₋ = arg(A·C), and the difference φ₊ − φ₋ = arg(A·C̄)
-        let sum = (b * c + a * d).atan2(a * c - b * d);
-        let diff = (b * c - a * d).atan2(a * c + b * d);
+        let sum = atan2(b * c + a * d, a * c - b * d);
+        let diff = atan2(b * c - a * d, a * c + b * d);
         if i != k {
             // A = (c + s) e^{iφ₊}, C = (c − s) e^{iφ₋}, (c, s) = (cos β/2, sin β/2),
             // φ± = (α ± εγ)/2: sin β = (|A|² − |C|²)/(|A|² + |C|²), cos β = 2|A||C|/(…)
@@ -183,7 +183,7 @@ impl<T: Scalar> EulerAngles<T> {
         }
         // At the lock the determined combination is 2 arg A or 2 arg C (the other pair ≈ 0).
         let lock = (lock_measure <= GIMBAL_LOCK_TOL)
-            .then(|| (if use_a { two * b.atan2(a) } else { two * d.atan2(c) }, sign));
+            .then(|| (if use_a { two * atan2(b, a) } else { two * atan2(d, c) }, sign));
         assemble(sequence, reversed, [alpha, beta, gamma], lock)
     }
 
@@ -209,8 +209,8 @@ impl<T: Scalar> EulerAngles<T> {
             let sb = e * r[(i, k)];
             let row = hypot(sb, cb);
             beta = angle_half_pi(sb / row, cb / row);
-            alpha = (-e * r[(j, k)]).atan2(r[(k, k)]);
-            gamma = (-e * r[(i, j)]).atan2(r[(i, i)]);
+            alpha = atan2(-e * r[(j, k)], r[(k, k)]);
+            gamma = atan2(-e * r[(i, j)], r[(i, i)]);
             lock_measure = cb.re();
             // F2.13.5 generalised: at β = ±π/2, α + ε·sign(sin β)·γ is determined.
             sign = if (e * beta).re() >= 0.0 { 1 } else { -1 };
@@ -221,8 +221,8 @@ impl<T: Scalar> EulerAngles<T> {
             let sb = hypot(r[(i, j)], r[(i, m)]);
             let row = hypot(sb, r[(i, i)]);
             beta = angle_0_pi(sb / row, r[(i, i)] / row);
-            alpha = r[(j, i)].atan2(-e * r[(m, i)]);
-            gamma = r[(i, j)].atan2(e * r[(i, m)]);
+            alpha = atan2(r[(j, i)], -e * r[(m, i)]);
+            gamma = atan2(r[(i, j)], e * r[(i, m)]);
             lock_measure = sb.re();
             // F2.13.8 (corrected): β = 0 fixes α + γ, β = π fixes α − γ.
             sign = if r[(i, i)].re() >= 0.0 { 1 } else { -1 };
@@ -231,7 +231,7 @@ impl<T: Scalar> EulerAngles<T> {
         let lock = (lock_measure <= lock_tol).then(|| {
             let m = r * rotation_about(aj, -beta);
             let (p, q) = ((i + 1) % 3, (i + 2) % 3);
-            (m[(q, p)].atan2(m[(p, p)]), sign)
+            (atan2(m[(q, p)], m[(p, p)]), sign)
         });
         assemble(sequence, reversed, [alpha, beta, gamma], lock)
     }

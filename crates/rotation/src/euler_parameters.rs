@@ -8,7 +8,7 @@
 use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
-use crate::series::{angle_0_pi, canonical_sign, norm3, sinc};
+use crate::series::{angle_0_pi, atan2, canonical_sign, cos_sinc_of_square, norm3, sin_cos, sinc};
 use crate::{AxisAngle, Quaternion, RotationError, check_rotation_matrix};
 
 impl<T: Scalar> Quaternion<T> {
@@ -36,7 +36,13 @@ impl<T: Scalar> Quaternion<T> {
     #[inline]
     pub fn from_rotation_matrix_unchecked(r: &Matrix3<T>) -> Self {
         let q = Self::shepperd_unnormalized(r);
-        (q * (T::one() / q.norm())).canonical()
+        if q.a == T::zero() {
+            // θ = π exactly: the canonical axis sign
+            return (q * (T::one() / q.norm())).canonical();
+        }
+        // η ≥ 0 by the sign of the scale (a bit operation): the sign of η is random for
+        // arbitrary rotations, so a branch on it would be mispredicted half of the time.
+        q * (T::one() / q.norm()).copysign(q.a)
     }
 
     /// The angle vector (log map) of a rotation matrix 𝓡. The angle θ from sin θ = ½|vee(𝓡 − 𝓡ᵀ)|
@@ -209,7 +215,7 @@ impl<T: Scalar> Quaternion<T> {
         // quaternion's norm is then 1 to rounding either way.
         let n2 = axis.norm_squared();
         if (n2.re() - 1.0).abs() <= 4.0 * f64::EPSILON && theta.re().is_finite() {
-            let (s, c) = (theta * T::lit(0.5)).sin_cos();
+            let (s, c) = sin_cos(theta * T::lit(0.5));
             let q = Self::from_parts(c, axis * s);
             return Ok(if c <= T::zero() { q.canonical() } else { q });
         }
@@ -220,7 +226,7 @@ impl<T: Scalar> Quaternion<T> {
         if m == T::zero() {
             return Err(RotationError::Zero { what: "rotation axis" });
         }
-        let (s, c) = (theta * T::lit(0.5)).sin_cos();
+        let (s, c) = sin_cos(theta * T::lit(0.5));
         // n̂ sin(θ/2) with n̂ = u/|u|, u = axis/max|axisᵢ|: exact for subnormal or huge axes
         // (|n| of a subnormal axis carries too few bits to divide by, |n| of 1e308 overflows)
         let u = axis / m;
@@ -248,7 +254,7 @@ impl<T: Scalar> Quaternion<T> {
             // Fact 2.11.5: θ = π, axis ±n̂, canonical sign already chosen by `canonical`.
             return AxisAngle::HalfTurn(n);
         }
-        AxisAngle::General { axis: n, angle: T::lit(2.0) * s.atan2(q.a) }
+        AxisAngle::General { axis: n, angle: T::lit(2.0) * atan2(s, q.a) }
     }
 
     /// exp: the Euler parameters of the angle vector Θ = θn̂ (2.14.5), q = (cos θ/2,
@@ -263,8 +269,13 @@ impl<T: Scalar> Quaternion<T> {
         // the series below gives the exact limit q = (1, Θ/2) anyway. Beyond 1e145 the scaled
         // norm of Θ/2 (components near f64::MAX: |Θ| overflows, |Θ/2| need not).
         let n2 = theta.norm_squared();
+        // |Θ| ≤ π in f64 (the usual case): the series of cos h and sin h / h in h² = |Θ|²/4,
+        // with no square root and no division; η = cos h ≥ 0 is canonical.
+        if let Some((c, sinc_h)) = cos_sinc_of_square(n2 * T::lit(0.25)) {
+            return Self::from_parts(c, theta * (T::lit(0.5) * sinc_h));
+        }
         let h = if n2.re() < 1e290 { n2.sqrt() * T::lit(0.5) } else { norm3(&(theta * T::lit(0.5))) };
-        let (s, c) = h.sin_cos();
+        let (s, c) = sin_cos(h);
         // ½ sin(h)/h, by series near h = 0 (sinc). The `0·s` keeps sin(h) on both paths: LLVM
         // otherwise sinks the sine into the branch that uses it, and sin and cos stay two libm
         // calls instead of one sincos (a quarter of the cost of the whole conversion).
@@ -292,7 +303,7 @@ impl<T: Scalar> Quaternion<T> {
             T::lit(2.0) / eta * (T::one() - s2 / (T::lit(3.0) * eta * eta))
         } else {
             let s = norm3(&e);
-            T::lit(2.0) * s.atan2(eta) / s
+            T::lit(2.0) * atan2(s, eta) / s
         };
         e * ratio
     }

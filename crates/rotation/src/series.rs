@@ -2,8 +2,86 @@
 //!
 //! Book: §2.14, (2.14.12–15); notes ch2b §3.4–3.5.
 
+use core::any::Any;
+
 use nalgebra::Vector3;
 use vectrix_tensor::Scalar;
+
+use crate::vmath;
+
+/// (sin x, cos x). For `f64` arguments with |x| ≤ 2·10⁵ this is the branch-free fdlibm kernel
+/// of [`vmath::sin_cos`] (one shared argument reduction, each result within 1 ulp, inlined),
+/// which costs about half of `libm`'s separate `sin` and `cos`; other scalars (dual numbers,
+/// `f32`) and larger or non-finite arguments take `T::sin_cos`. The type test is resolved at
+/// compile time (every [`Scalar`] is `'static`).
+///
+/// Book: (2.12.17–19), (2.15.20): the elementary rotations and quaternions.
+#[inline(always)]
+pub(crate) fn sin_cos<T: Scalar>(x: T) -> (T, T) {
+    if let Some(&v) = (&x as &dyn Any).downcast_ref::<f64>()
+        && v.abs() <= vmath::SIN_COS_MAX
+    {
+        let (s, c) = vmath::sin_cos::<false>(v);
+        return (T::lit(s), T::lit(c));
+    }
+    x.sin_cos()
+}
+
+/// [`sin_cos`] of three arguments. For `f64` with every |xᵢ| ≤ 2·10⁵ the three branch-free
+/// kernels run side by side in one loop over four lanes, which the compiler vectorises (two
+/// lanes per instruction with SSE2): the three angles of an Euler sequence cost little more
+/// than one.
+///
+/// Book: (2.12.33), F2.15.7: the three elementary factors of an Euler sequence.
+#[inline(always)]
+pub(crate) fn sin_cos3<T: Scalar>(x: [T; 3]) -> [(T, T); 3] {
+    if let Some(v) = (&x as &dyn Any).downcast_ref::<[f64; 3]>()
+        && v.iter().all(|a| a.abs() <= vmath::SIN_COS_MAX)
+    {
+        let lanes = [v[0], v[1], v[2], 0.0];
+        let mut s = [0.0; 4];
+        let mut c = [0.0; 4];
+        for k in 0..4 {
+            (s[k], c[k]) = vmath::sin_cos::<false>(lanes[k]);
+        }
+        return [0, 1, 2].map(|k| (T::lit(s[k]), T::lit(c[k])));
+    }
+    x.map(|a| a.sin_cos())
+}
+
+/// (cos h, sin h / h) from u = h² for `f64` with u ≤ (π/2)²: the Taylor series of
+/// [`vmath::cos_sinc_of_square`] (no square root, no range reduction, no division); `None`
+/// for other scalars or larger u.
+///
+/// Book: (2.14.5), Prob 2.26.22: q = (cos θ/2, ½ sinc(θ/2) Θ).
+#[inline(always)]
+pub(crate) fn cos_sinc_of_square<T: Scalar>(u: T) -> Option<(T, T)> {
+    if let Some(&v) = (&u as &dyn Any).downcast_ref::<f64>()
+        && v <= vmath::HALF_PI_SQUARED
+    {
+        let (c, s) = vmath::cos_sinc_of_square::<false>(v);
+        return Some((T::lit(c), T::lit(s)));
+    }
+    None
+}
+
+/// atan2(y, x) in (−π, π]. For finite `f64` arguments other than (0, 0) this is the fdlibm
+/// kernel of [`vmath::atan2`] (within 1 ulp, inlined); other scalars and the special
+/// arguments take `T::atan2` (the `libm` rules for zeros, infinities and NaN).
+///
+/// Book: §2.11 (θ = 2 atan2(|ε|, η)), §2.13 (Euler angles).
+#[inline(always)]
+pub(crate) fn atan2<T: Scalar>(y: T, x: T) -> T {
+    if let (Some(&a), Some(&b)) =
+        ((&y as &dyn Any).downcast_ref::<f64>(), (&x as &dyn Any).downcast_ref::<f64>())
+        && a.is_finite()
+        && b.is_finite()
+        && (a != 0.0 || b != 0.0)
+    {
+        return T::lit(vmath::atan2::<false>(a, b));
+    }
+    y.atan2(x)
+}
 
 /// sin x / x, with the Taylor series 1 − x²/6 + x⁴/120 below |x| = 1e-3 (the next term,
 /// x⁶/5040 ≈ 2·10⁻²², is far below ε), exact for dual numbers too.
@@ -26,9 +104,24 @@ pub(crate) fn sinc<T: Scalar>(x: T) -> T {
 /// like atan2(s, c). Not for unnormalised pairs (atan2 is scale-free, this is not).
 ///
 /// Book: §2.14 (θ ∈ [0, π]); notes ch2b §3.5 (never acos of a rounded cosine).
-#[inline]
+#[inline(always)]
 pub(crate) fn angle_0_pi<T: Scalar>(s: T, c: T) -> T {
     let cr = c.re();
+    if let (Some(&sf), Some(&cf)) =
+        ((&s as &dyn Any).downcast_ref::<f64>(), (&c as &dyn Any).downcast_ref::<f64>())
+        && sf.abs() <= vmath::ASIN_MAX
+        && cf.abs() <= vmath::ASIN_MAX
+    {
+        // f64: the same branches with the inline asin (no call, no register spills)
+        let theta = if cf > 0.7 {
+            vmath::asin(sf)
+        } else if cf >= -0.7 {
+            core::f64::consts::FRAC_PI_2 - vmath::asin(cf)
+        } else {
+            core::f64::consts::PI - vmath::asin(sf)
+        };
+        return T::lit(theta);
+    }
     if cr > 0.7 {
         s.asin()
     } else if cr >= -0.7 {
