@@ -4,6 +4,11 @@
 #   sh scripts/peers/frontier.sh            # everything (~1 h on 2 cores)
 #   sh scripts/peers/frontier.sh --quick    # a smoke run of the vectrix side only
 #
+# A partial sitting: FRONTIER_ONLY=kepler-e0.9,chain-30 restricts every tool to those problems
+# and FRONTIER_TOOLS="scipy pinocchio" to those peers; it needs its own FRONTIER_RESULTS folder
+# (a peer's file is rewritten with the problems it ran) and prints its table instead of writing
+# the docs' figures and table.
+#
 # vectrix first (it also writes the chains' reference), then the peers one after the other,
 # every tool single-threaded; then the cross-check of the reference, the figures
 # docs/accuracy/peers-*.svg and the table in docs/performance.md. Points go to
@@ -21,13 +26,26 @@ if [ "$1" = "--quick" ]; then
   ./target/release/examples/frontier run --quick --out "$DATA"
   exit 0
 fi
-./target/release/examples/frontier run --out "$DATA"
+if [ -n "$FRONTIER_ONLY" ]; then
+  if [ "$DATA" = "docs/accuracy/peers-data" ]; then
+    echo "FRONTIER_ONLY needs its own FRONTIER_RESULTS folder (the docs' data holds every problem)" >&2
+    exit 2
+  fi
+  ./target/release/examples/frontier run --out "$DATA" --only "$FRONTIER_ONLY"
+else
+  ./target/release/examples/frontier run --out "$DATA"
+fi
 cd scripts/peers
-for tool in mujoco scipy pinocchio sympy; do
+for tool in ${FRONTIER_TOOLS:-mujoco scipy pinocchio sympy}; do
   echo "== $tool (load: $(cut -d' ' -f1-3 /proc/loadavg))"
   $PY frontier_$tool.py
 done
 $PY check_reference.py
 cd ../..
-./target/release/examples/frontier plot --data "$DATA" --svg docs/accuracy --doc docs/performance.md
+if [ -n "$FRONTIER_ONLY" ]; then
+  mkdir -p "$DATA/svg"
+  ./target/release/examples/frontier plot --data "$DATA" --svg "$DATA/svg"
+else
+  ./target/release/examples/frontier plot --data "$DATA" --svg docs/accuracy --doc docs/performance.md
+fi
 echo "done: $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"

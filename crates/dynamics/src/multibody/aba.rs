@@ -28,6 +28,8 @@ pub struct AbaScratch<T: Scalar = f64> {
     v: Vec<Vector3<T>>,
     /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
     reach: Vec<f64>,
+    /// Segments of free leaf bodies, solved in closed form and skipped by the three passes.
+    free: Vec<bool>,
 }
 
 impl<T: Scalar> Model<T> {
@@ -46,6 +48,13 @@ impl<T: Scalar> Model<T> {
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
+            free: {
+                let mut free = vec![false; n];
+                for &f in &self.free_leaves {
+                    free[f..f + 4].fill(true);
+                }
+                free
+            },
         }
     }
 
@@ -122,8 +131,14 @@ impl<T: Scalar> Model<T> {
         s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
+        for &f in &self.free_leaves {
+            self.free_leaf_accelerations(f, q, v, tau, f_ext, vdot)?;
+        }
         // pass 1 (outward): twists, bias accelerations c = 𝒱 ×m S q̇, bias forces 𝒱 ×f 𝒥𝒱
         for (i, seg) in self.segs.iter().enumerate() {
+            if s.free[i] {
+                continue;
+            }
             let x = self.seg_xform(i, q);
             let (wp, vp) = match seg.parent {
                 Some(p) => (s.w[p], s.v[p]),
@@ -145,12 +160,17 @@ impl<T: Scalar> Model<T> {
         }
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
-                s.pA[k] -= join(&fe[l].moment, &fe[l].force);
+                if !s.free[k] {
+                    s.pA[k] -= join(&fe[l].moment, &fe[l].force);
+                }
             }
         }
         // pass 2 (inward): U = IᴬS, D = SᵀU, u = τ − SᵀpA; Iᵃ = Iᴬ − U D⁻¹Uᵀ,
         // pᵃ = pᴬ + Iᵃc + U D⁻¹u, accumulated into the parent through Xᵀ
         for i in (0..n).rev() {
+            if s.free[i] {
+                continue;
+            }
             let seg = &self.segs[i];
             let IA = s.IA[i];
             let pA = s.pA[i];
@@ -241,6 +261,9 @@ impl<T: Scalar> Model<T> {
         // pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈
         let a0 = join(&Vector3::zeros(), &(-self.gravity));
         for i in 0..n {
+            if s.free[i] {
+                continue;
+            }
             let seg = &self.segs[i];
             let ap = match seg.parent {
                 Some(p) => s.a[p],
@@ -270,6 +293,56 @@ impl<T: Scalar> Model<T> {
         Ok(())
     }
 
+    /// v̇ of a free leaf body (segments f..f+4, see `free_leaf_roots`) in closed form: with
+    /// every load resolved in the body frame B about its origin (force F, moment n_o) and c,
+    /// J_c the centre and central inertia, eliminating the origin's acceleration a_o from the
+    /// Newton–Euler equations m(a_o + α×c + ω×(ω×c)) = F and J_oα + ω×J_oω + m c×a_o = n_o
+    /// leaves Euler's equations about the centre, J_c α = n_o − c×F − ω×J_c ω, and then
+    /// a_o = F/m − ω×(ω×c) + c×α. The sliders' coordinates are components in the joint frame J,
+    /// fixed in the ground, so their second derivatives are a_o resolved in J; the ball's v̇ is
+    /// α in B. This is what the three passes give for these four segments (the three sliders
+    /// are massless), for 3×3 instead of 6×6 algebra.
+    ///
+    /// Book: §7.11 (7.11.13) for one free body; RBDA §2.14.
+    fn free_leaf_accelerations(
+        &self,
+        f: usize,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        vdot: &mut [T],
+    ) -> Result<(), DynamicsError> {
+        let (slide, body) = (&self.segs[f], &self.segs[f + 3]);
+        let (vi, m, c, j_c) = (slide.vi, body.inertia.m, body.com, body.j_c);
+        // 𝓞_{B/J} of the ball, and 𝓞_{B/G} = 𝓞_{B/J} 𝓞_{J/G} for the gravity
+        let e_bj = body.elem.xform(&q[body.qi..]).E;
+        let g_b = e_bj * (slide.placement.E * self.gravity);
+        let w = Vector3::new(v[vi + 3], v[vi + 4], v[vi + 5]);
+        let mut force = g_b * m + e_bj * Vector3::new(tau[vi], tau[vi + 1], tau[vi + 2]);
+        let mut moment = Vector3::new(tau[vi + 3], tau[vi + 4], tau[vi + 5]) + c.cross(&(g_b * m));
+        if let Some(fe) = f_ext
+            && let Some(l) = self.link_seg.iter().position(|&k| k == f + 3)
+        {
+            force += fe[l].force;
+            moment += fe[l].moment;
+        }
+        let rhs = moment - c.cross(&force) - w.cross(&(j_c * w));
+        // J_c was found definite when the model was built (`definite_body`); a dual-number
+        // model has the same real parts
+        let alpha = j_c
+            .cholesky()
+            .ok_or_else(|| DynamicsError::SingularMassMatrix {
+                detail: format!("central inertia of the free body on segment {}", f + 3),
+            })?
+            .solve(&rhs);
+        let a_o = force / m - w.cross(&w.cross(&c)) + c.cross(&alpha);
+        let a_j = e_bj.tr_mul(&a_o);
+        vdot[vi..vi + 3].copy_from_slice(a_j.as_slice());
+        vdot[vi + 3..vi + 6].copy_from_slice(alpha.as_slice());
+        Ok(())
+    }
+
     /// The size of the forces that meet at segment i before the eliminations of pass 2 cancel
     /// them (slow path only): over i and its subtree k, max of |τₖ| + ‖Iᴬₖ‖(‖cₖ‖ + |𝒱ₖ|²) +
     /// ‖pᴬₖ‖ + ‖UₖDₖ⁺uₖ‖, times (1 + ρᵢ) for the lever arms. A generalized force along an inert
@@ -296,5 +369,81 @@ impl<T: Scalar> Model<T> {
             mag = mag.max(t + inertial + s.pA[k].norm().re() + udu);
         }
         mag * (1.0 + s.reach[i])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::{Matrix3, Rotation3, Vector3};
+
+    use super::super::joint::{Joint, Link};
+    use super::super::model::Model;
+    use super::super::rnea::JointWrench;
+
+    /// A free body with its centre off the joint point, a tilted joint frame, gravity, joint
+    /// forces and an external wrench; and, for the generic three passes, the same body with a
+    /// massless welded child (which stops it being a free leaf).
+    fn models() -> (Model, Model, Vec<f64>, Vec<f64>, Vec<f64>, Vec<JointWrench>) {
+        let j_c = Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1);
+        let mut body = Link::new(
+            None,
+            Joint::Free,
+            Vector3::new(0.5, -1.0, 2.0),
+            3.0,
+            Vector3::new(0.2, -0.4, 0.7),
+            j_c,
+        );
+        body.orientation = *Rotation3::from_euler_angles(0.3, -0.7, 1.1).matrix();
+        let mut alone = Model::new(std::slice::from_ref(&body)).expect("valid");
+        let tip = Link::new(
+            Some(0),
+            Joint::Weld,
+            Vector3::new(1.0, 0.0, 0.0),
+            0.0,
+            Vector3::zeros(),
+            Matrix3::zeros(),
+        );
+        let mut with_child = Model::new(&[body, tip]).expect("valid");
+        let g = Vector3::new(0.3, -0.2, -9.81);
+        alone.gravity = g;
+        with_child.gravity = g;
+        let qn = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
+        let q = vec![0.3, -1.2, 0.8, qn.w, qn.i, qn.j, qn.k];
+        let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3];
+        let tau = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25];
+        let wrench =
+            JointWrench { force: Vector3::new(-0.6, 1.4, 2.2), moment: Vector3::new(0.9, 0.1, -0.5) };
+        (alone, with_child, q, v, tau, vec![wrench, JointWrench::default()])
+    }
+
+    /// The closed form of a free leaf body agrees with the three passes of ABA on the same
+    /// body (made generic by a massless welded child), and with the inverse dynamics: RNEA at
+    /// the returned v̇ gives back the applied joint forces.
+    #[test]
+    fn free_leaf_closed_form_matches_the_passes_and_rnea() {
+        let (alone, with_child, q, v, tau, wrenches) = models();
+        assert_eq!(alone.free_leaves, vec![0]);
+        assert!(with_child.free_leaves.is_empty());
+        let fast = alone.aba(&q, &v, &tau, Some(&wrenches[..1])).expect("definite");
+        let passes = with_child.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
+        for (a, b) in fast.iter().zip(&passes) {
+            assert!((a - b).abs() <= 1e-13 * (1.0 + b.abs()), "{fast:?} vs {passes:?}");
+        }
+        let id = alone.rnea(&q, &v, &fast, Some(&wrenches[..1])).expect("valid");
+        for (a, b) in id.tau.iter().zip(&tau) {
+            assert!((a - b).abs() <= 1e-12, "RNEA {:?} vs τ {tau:?}", id.tau);
+        }
+    }
+
+    /// A particle on a free joint (J_c = 0) is not a closed-form body: ABA's rank-revealing
+    /// path keeps the rotation inert (ω̇ = 0) and the translation free fall.
+    #[test]
+    fn free_particle_keeps_the_rank_revealing_path() {
+        let p = Link::new(None, Joint::Free, Vector3::zeros(), 2.0, Vector3::zeros(), Matrix3::zeros());
+        let mut m = Model::new(&[p]).expect("valid");
+        m.gravity = Vector3::new(0.0, 0.0, -9.81);
+        assert!(m.free_leaves.is_empty());
+        let vd = m.aba(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0], &[0.0; 6], &[0.0; 6], None).expect("inert");
+        assert_eq!(vd, vec![0.0, 0.0, -9.81, 0.0, 0.0, 0.0]);
     }
 }

@@ -61,6 +61,52 @@ pub struct Model<T: Scalar = f64> {
     pub(crate) parent_col: Vec<Option<usize>>,
     /// For each velocity coordinate, its segment.
     pub(crate) col_seg: Vec<usize>,
+    /// First segments of the free joints at the root whose link has no children (a floating
+    /// body on its own): ABA solves these in closed form ([`Model::aba_into`]).
+    pub(crate) free_leaves: Vec<usize>,
+}
+
+/// The first segment of every free joint at the root whose link is a leaf: segments i..i+4
+/// are the three sliders along x̂, ŷ, ẑ of the joint frame (massless, each placed on the
+/// previous without offset) and the ball carrying the body, and no segment hangs from the
+/// ball. Such a body couples to no other segment in the tree algorithms.
+fn free_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
+    let mut has_child = vec![false; segs.len()];
+    for s in segs {
+        if let Some(p) = s.parent {
+            has_child[p] = true;
+        }
+    }
+    let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
+    (0..segs.len().saturating_sub(3))
+        .filter(|&i| {
+            segs[i].parent.is_none()
+                && (0..3).all(|k| {
+                    let s = &segs[i + k];
+                    s.elem == Elem::Prismatic(axes[k])
+                        && s.massless
+                        && (k == 0 || s.parent == Some(i + k - 1))
+                })
+                && (1..4).all(|k| segs[i + k].placement == Xform::identity())
+                && segs[i + 3].elem == Elem::Spherical
+                && segs[i + 3].parent == Some(i + 2)
+                && !has_child[i + 3]
+                && definite_body(&segs[i + 3])
+        })
+        .collect()
+}
+
+/// m > 0 and J_c positive definite with every Cholesky pivot above ABA's rounding level
+/// (`pivot_tol` × tr J_c): the closed form of a free body divides by both. A particle (J_c = 0)
+/// or a body with an inert axis is left to ABA's rank-revealing path.
+fn definite_body(s: &Segment<f64>) -> bool {
+    let scale = s.j_c.trace();
+    s.inertia.m > 0.0
+        && scale > 0.0
+        && s.j_c.cholesky().is_some_and(|c| {
+            let l = c.l_dirty();
+            (0..3).all(|k| l[(k, k)] * l[(k, k)] > super::singular::pivot_tol::<f64>() * scale)
+        })
 }
 
 /// Parents before children; errors for missing parents and cycles.
@@ -206,7 +252,18 @@ impl Model<f64> {
             }
             last_col[i] = above;
         }
-        Ok(Self { segs, link_seg, nq, nv, gravity: Vector3::zeros(), q_neutral, parent_col, col_seg })
+        let free_leaves = free_leaf_roots(&segs);
+        Ok(Self {
+            segs,
+            link_seg,
+            nq,
+            nv,
+            gravity: Vector3::zeros(),
+            q_neutral,
+            parent_col,
+            col_seg,
+            free_leaves,
+        })
     }
 
     /// A chain of n pin joints about ẑ, each link a thin-ish rod of mass m and length l along
@@ -301,6 +358,7 @@ impl Model<f64> {
             q_neutral: self.q_neutral.iter().map(|&x| U::lit(x)).collect(),
             parent_col: self.parent_col.clone(),
             col_seg: self.col_seg.clone(),
+            free_leaves: self.free_leaves.clone(),
         }
     }
 }
