@@ -104,24 +104,9 @@ pub(crate) fn sinc<T: Scalar>(x: T) -> T {
 /// like atan2(s, c). Not for unnormalised pairs (atan2 is scale-free, this is not).
 ///
 /// Book: §2.14 (θ ∈ [0, π]); notes ch2b §3.5 (never acos of a rounded cosine).
-#[inline(always)]
+#[inline]
 pub(crate) fn angle_0_pi<T: Scalar>(s: T, c: T) -> T {
     let cr = c.re();
-    if let (Some(&sf), Some(&cf)) =
-        ((&s as &dyn Any).downcast_ref::<f64>(), (&c as &dyn Any).downcast_ref::<f64>())
-        && sf.abs() <= vmath::ASIN_MAX
-        && cf.abs() <= vmath::ASIN_MAX
-    {
-        // f64: the same branches with the inline asin (no call, no register spills)
-        let theta = if cf > 0.7 {
-            vmath::asin(sf)
-        } else if cf >= -0.7 {
-            core::f64::consts::FRAC_PI_2 - vmath::asin(cf)
-        } else {
-            core::f64::consts::PI - vmath::asin(sf)
-        };
-        return T::lit(theta);
-    }
     if cr > 0.7 {
         s.asin()
     } else if cr >= -0.7 {

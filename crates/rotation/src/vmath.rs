@@ -1,8 +1,8 @@
-//! Branch-free sin/cos and atan2 for the batched conversions ([`crate::batch`]), and an inline
-//! asin for the one-rotation log map ([`crate::series`]).
+//! Branch-free sin/cos and atan2 for the batched conversions ([`crate::batch`]), also inlined
+//! into the one-rotation conversions for `f64` ([`crate::series`]).
 //!
 //! These are fdlibm's kernels (the C library behind most `libm`s: `e_rem_pio2.c`, `k_sin.c`,
-//! `k_cos.c`, `s_atan.c`, `e_atan2.c`, `e_asin.c`, © Sun Microsystems, freely redistributable) rewritten
+//! `k_cos.c`, `s_atan.c`, `e_atan2.c`, © Sun Microsystems, freely redistributable) rewritten
 //! without branches: every case is computed and the answer is selected, so that LLVM turns a
 //! loop calling them into SIMD code (4 lanes with AVX2). Accuracy is fdlibm's, under 1 ulp on
 //! the ranges used here; `tests` below measure the error against the platform's `libm` over
@@ -134,51 +134,6 @@ fn horner<const F: bool, const N: usize>(u: f64, c: &[f64; N]) -> f64 {
 #[inline(always)]
 pub(crate) fn cos_sinc_of_square<const F: bool>(u: f64) -> (f64, f64) {
     (horner::<F, 12>(u, &COS_U), horner::<F, 11>(u, &SINC_U))
-}
-
-const PIO2_LO: f64 = 6.123_233_995_736_766_035_87e-17;
-const PIO4_HI: f64 = core::f64::consts::FRAC_PI_4; // fdlibm's pio4_hi, 0x3FE921FB54442D18
-const PS: [f64; 6] = [
-    1.666_666_666_666_666_574_15e-01,
-    -3.255_658_186_224_009_154_05e-01,
-    2.012_125_321_348_629_258_81e-01,
-    -4.005_553_450_067_941_140_27e-02,
-    7.915_349_942_898_145_321_76e-04,
-    3.479_331_075_960_211_675_70e-05,
-];
-const QS: [f64; 4] = [
-    -2.403_394_911_734_414_218_78e+00,
-    2.020_945_760_233_505_694_71e+00,
-    -6.882_839_716_054_532_930_30e-01,
-    7.703_815_055_590_193_527_91e-02,
-];
-
-/// The largest |x| [`asin`] takes.
-pub(crate) const ASIN_MAX: f64 = 0.975;
-
-/// asin x within 1 ulp for |x| ≤ [`ASIN_MAX`] (callers check): fdlibm's `e_asin.c`, its rational
-/// approximation R(t) = P(t)/Q(t) on t = x² below |x| = ½ and on t = (1 − |x|)/2 with the
-/// split square root above, inlined (a call to `libm`'s asin makes the caller save every live
-/// register, which costs as much as the function).
-#[inline(always)]
-pub(crate) fn asin(x: f64) -> f64 {
-    let r = |t: f64| {
-        let p = t * (PS[0] + t * (PS[1] + t * (PS[2] + t * (PS[3] + t * (PS[4] + t * PS[5])))));
-        let q = 1.0 + t * (QS[0] + t * (QS[1] + t * (QS[2] + t * QS[3])));
-        p / q
-    };
-    let a = x.abs();
-    if a < 0.5 {
-        return x + x * r(x * x);
-    }
-    // asin|x| = π/2 − 2 asin √t, t = (1 − |x|)/2, with √t = w + c split so that 2w is exact.
-    let t = (1.0 - a) * 0.5;
-    let s = t.sqrt();
-    let w = f64::from_bits(s.to_bits() & 0xFFFF_FFFF_0000_0000);
-    let c = (t - w * w) / (s + w);
-    let p = 2.0 * s * r(t) - (PIO2_LO - 2.0 * c);
-    let q = PIO4_HI - 2.0 * w;
-    (PIO4_HI - (p - q)).copysign(x)
 }
 
 const ATAN_HI: [f64; 4] = [
@@ -331,43 +286,6 @@ mod tests {
         for (fused, (s, c)) in [(false, worst_sin_cos::<false>()), (true, worst_sin_cos::<true>())] {
             assert!(s <= 2.0 && c <= 2.0, "fused = {fused}: worst sin {s} ulp, cos {c} ulp");
         }
-    }
-
-    /// Within 1 ulp of the true value, so within 2 ulps of libm (measured: 1), over ±0, tiny
-    /// arguments, both sides of ½ and of [`ASIN_MAX`], and random arguments.
-    #[test]
-    fn asin_matches_libm_within_two_ulps() {
-        let mut xs = vec![
-            0.0,
-            -0.0,
-            5e-324,
-            1e-300,
-            1e-17,
-            1e-8,
-            0.5,
-            ASIN_MAX,
-            0.7,
-            core::f64::consts::FRAC_1_SQRT_2,
-        ];
-        for m in [0.5, ASIN_MAX, 0.25, 0.7] {
-            let (mut up, mut down) = (m, m);
-            for _ in 0..8 {
-                up = up.next_up();
-                down = down.next_down();
-                xs.extend([up, down]);
-            }
-        }
-        let mut s = 0x0F0E_0D0C_0B0A_0908u64;
-        for _ in 0..40_000 {
-            xs.push((xorshift(&mut s) * 2.0 - 1.0) * ASIN_MAX);
-        }
-        let mut worst = 0.0f64;
-        for x in xs.iter().flat_map(|&x| [x, -x]) {
-            let (a, r) = (asin(x), x.asin());
-            assert_eq!(a.is_sign_negative(), r.is_sign_negative(), "sign at {x:e}");
-            worst = worst.max(ulps(a, r));
-        }
-        assert!(worst <= 2.0, "worst asin {worst} ulp");
     }
 
     /// Hard pairs for atan2: both axes, ±0, every interval boundary of p/q, every octant.
