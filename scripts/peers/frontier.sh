@@ -20,7 +20,7 @@ export RAYON_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THRE
 DATA=${FRONTIER_RESULTS:-docs/accuracy/peers-data}
 export FRONTIER_RESULTS="$(pwd)/$DATA"
 PY=${PEERS_VENV:-$HOME/.venv-peers}/bin/python
-echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) CPUs; $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"
+echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc --all) CPUs; $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"
 cargo build --release --example frontier
 if [ "$1" = "--quick" ]; then
   ./target/release/examples/frontier run --quick --out "$DATA"

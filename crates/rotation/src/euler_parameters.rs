@@ -36,13 +36,7 @@ impl<T: Scalar> Quaternion<T> {
     #[inline]
     pub fn from_rotation_matrix_unchecked(r: &Matrix3<T>) -> Self {
         let q = Self::shepperd_unnormalized(r);
-        if q.a == T::zero() {
-            // θ = π exactly: the canonical axis sign
-            return (q * (T::one() / q.norm())).canonical();
-        }
-        // η ≥ 0 by the sign of the scale (a bit operation): the sign of η is random for
-        // arbitrary rotations, so a branch on it would be mispredicted half of the time.
-        q * (T::one() / q.norm()).copysign(q.a)
+        (q * (T::one() / q.norm())).canonical()
     }
 
     /// The angle vector (log map) of a rotation matrix 𝓡. The angle θ from sin θ = ½|vee(𝓡 − 𝓡ᵀ)|
