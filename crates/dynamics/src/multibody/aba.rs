@@ -8,7 +8,7 @@ use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
 use super::model::Model;
-use super::rnea::{LinkWrenches, joint_motion};
+use super::rnea::{JointWrench, LinkWrenches, joint_motion};
 use super::singular::{null_component, pivot_tol, psd_pinv3};
 use super::spatial::{Xform, cross_force, cross_motion, join, split};
 use crate::DynamicsError;
@@ -28,8 +28,6 @@ pub struct AbaScratch<T: Scalar = f64> {
     v: Vec<Vector3<T>>,
     /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
     reach: Vec<f64>,
-    /// Segments of free leaf bodies, solved in closed form and skipped by the three passes.
-    free: Vec<bool>,
 }
 
 impl<T: Scalar> Model<T> {
@@ -48,13 +46,6 @@ impl<T: Scalar> Model<T> {
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
-            free: {
-                let mut free = vec![false; n];
-                for &f in &self.free_leaves {
-                    free[f..f + 4].fill(true);
-                }
-                free
-            },
         }
     }
 
@@ -131,12 +122,12 @@ impl<T: Scalar> Model<T> {
         s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
-        for &f in &self.free_leaves {
-            self.free_leaf_accelerations(f, q, v, tau, f_ext, vdot)?;
+        for (&f, &l) in self.free_leaves.iter().zip(&self.free_links) {
+            self.free_leaf_accelerations(f, q, v, tau, f_ext.map(|fe| &fe[l]), vdot)?;
         }
         // pass 1 (outward): twists, bias accelerations c = 𝒱 ×m S q̇, bias forces 𝒱 ×f 𝒥𝒱
         for (i, seg) in self.segs.iter().enumerate() {
-            if s.free[i] {
+            if self.free_seg[i] {
                 continue;
             }
             let x = self.seg_xform(i, q);
@@ -160,7 +151,7 @@ impl<T: Scalar> Model<T> {
         }
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
-                if !s.free[k] {
+                if !self.free_seg[k] {
                     s.pA[k] -= join(&fe[l].moment, &fe[l].force);
                 }
             }
@@ -168,7 +159,7 @@ impl<T: Scalar> Model<T> {
         // pass 2 (inward): U = IᴬS, D = SᵀU, u = τ − SᵀpA; Iᵃ = Iᴬ − U D⁻¹Uᵀ,
         // pᵃ = pᴬ + Iᵃc + U D⁻¹u, accumulated into the parent through Xᵀ
         for i in (0..n).rev() {
-            if s.free[i] {
+            if self.free_seg[i] {
                 continue;
             }
             let seg = &self.segs[i];
@@ -261,7 +252,7 @@ impl<T: Scalar> Model<T> {
         // pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈
         let a0 = join(&Vector3::zeros(), &(-self.gravity));
         for i in 0..n {
-            if s.free[i] {
+            if self.free_seg[i] {
                 continue;
             }
             let seg = &self.segs[i];
@@ -310,7 +301,7 @@ impl<T: Scalar> Model<T> {
         q: &[T],
         v: &[T],
         tau: &[T],
-        f_ext: Option<&LinkWrenches<T>>,
+        f_ext: Option<&JointWrench<T>>,
         vdot: &mut [T],
     ) -> Result<(), DynamicsError> {
         let (slide, body) = (&self.segs[f], &self.segs[f + 3]);
@@ -321,11 +312,9 @@ impl<T: Scalar> Model<T> {
         let w = Vector3::new(v[vi + 3], v[vi + 4], v[vi + 5]);
         let mut force = g_b * m + e_bj * Vector3::new(tau[vi], tau[vi + 1], tau[vi + 2]);
         let mut moment = Vector3::new(tau[vi + 3], tau[vi + 4], tau[vi + 5]) + c.cross(&(g_b * m));
-        if let Some(fe) = f_ext
-            && let Some(l) = self.link_seg.iter().position(|&k| k == f + 3)
-        {
-            force += fe[l].force;
-            moment += fe[l].moment;
+        if let Some(fe) = f_ext {
+            force += fe.force;
+            moment += fe.moment;
         }
         let rhs = moment - c.cross(&force) - w.cross(&(j_c * w));
         // J_c was found definite when the model was built (`definite_body`); a dual-number

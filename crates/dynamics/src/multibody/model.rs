@@ -64,6 +64,10 @@ pub struct Model<T: Scalar = f64> {
     /// First segments of the free joints at the root whose link has no children (a floating
     /// body on its own): ABA solves these in closed form ([`Model::aba_into`]).
     pub(crate) free_leaves: Vec<usize>,
+    /// For each entry of `free_leaves`, its user link (whose external wrench it takes).
+    pub(crate) free_links: Vec<usize>,
+    /// For each segment, whether it belongs to a free leaf (the three passes skip it).
+    pub(crate) free_seg: Vec<bool>,
 }
 
 /// The first segment of every free joint at the root whose link is a leaf: segments i..i+4
@@ -253,6 +257,14 @@ impl Model<f64> {
             last_col[i] = above;
         }
         let free_leaves = free_leaf_roots(&segs);
+        let free_links = free_leaves
+            .iter()
+            .map(|&f| link_seg.iter().position(|&k| k == f + 3).expect("the ball segment ends its link"))
+            .collect();
+        let mut free_seg = vec![false; segs.len()];
+        for &f in &free_leaves {
+            free_seg[f..f + 4].fill(true);
+        }
         Ok(Self {
             segs,
             link_seg,
@@ -263,6 +275,8 @@ impl Model<f64> {
             parent_col,
             col_seg,
             free_leaves,
+            free_links,
+            free_seg,
         })
     }
 
@@ -359,6 +373,8 @@ impl Model<f64> {
             parent_col: self.parent_col.clone(),
             col_seg: self.col_seg.clone(),
             free_leaves: self.free_leaves.clone(),
+            free_links: self.free_links.clone(),
+            free_seg: self.free_seg.clone(),
         }
     }
 }
