@@ -22,7 +22,8 @@ use vectrix::nalgebra::{Matrix3, Vector3};
 use vectrix::prelude::*;
 use vectrix::statics::{MassProperties, Point, Wrench};
 
-/// Pinocchio's benchmark chain: n revolute-Y joints, links of 0.3 along −z, unit masses.
+/// Pinocchio's benchmark chain: n revolute-Y joints, links of 0.3 along −z, unit masses
+/// (planar: vectrix's ABA reduces it, `Model::planar_axis`).
 fn pinocchio_chain(n: usize) -> Model {
     let (l, m) = (0.3, 1.0);
     let inertia = Matrix3::from_diagonal(&Vector3::new(m * l * l / 12.0, m * l * l / 12.0, 1e-4));
@@ -65,6 +66,8 @@ struct Chain {
     s: Vec<Vec<f64>>,
     scratch: vectrix::dynamics::multibody::Scratch,
     aba: vectrix::dynamics::multibody::AbaScratch,
+    /// The same chain with the planar reduction off (the spatial passes).
+    spatial: Model,
     crba: vectrix::dynamics::multibody::CrbaScratch,
     deriv: vectrix::dynamics::multibody::DerivativeScratch,
     h: vectrix::nalgebra::DMatrix<f64>,
@@ -77,7 +80,10 @@ struct Chain {
 impl Chain {
     fn new(n: usize) -> Self {
         let model = pinocchio_chain(n);
+        let mut spatial = model.clone();
+        spatial.disable_planar_reduction();
         Self {
+            spatial,
             s: states(n, 64),
             scratch: model.scratch(),
             aba: model.aba_scratch(),
@@ -105,6 +111,10 @@ impl Chain {
                 self.model.aba_unchecked(q, v, a, &mut self.out, &mut self.aba).unwrap();
                 self.out[0]
             }
+            "aba_spatial" => {
+                self.spatial.aba_unchecked(q, v, a, &mut self.out, &mut self.aba).unwrap();
+                self.out[0]
+            }
             "crba" => {
                 self.model.crba_into(q, &mut self.h, &mut self.crba);
                 self.h[(0, 0)]
@@ -122,7 +132,9 @@ impl Chain {
     }
 }
 
-const ALGORITHMS: [&str; 5] = ["rnea", "aba", "crba", "rnea_derivatives", "aba_derivatives"];
+/// `aba` takes the planar passes on this chain (every pin about ŷ, `Model::planar_axis`);
+/// `aba_spatial` is the same chain through the spatial passes, what a general tree costs.
+const ALGORITHMS: [&str; 6] = ["rnea", "aba", "aba_spatial", "crba", "rnea_derivatives", "aba_derivatives"];
 
 fn tree_algorithms(c: &mut Criterion) {
     let mut g = c.benchmark_group("dynamics");

@@ -90,6 +90,7 @@ pub use rigid::{
     ChainLink, RigidDisplacement, Screw, chain_backward, chain_forward, homogeneous, homogeneous_inverse,
 };
 pub use rotation::Rotation;
+pub use series::sin_cos;
 
 /// `use vectrix_rotation::prelude::*;`
 pub mod prelude {

@@ -15,9 +15,12 @@ use crate::vmath;
 /// `f32`) and larger or non-finite arguments take `T::sin_cos`. The type test is resolved at
 /// compile time (every [`Scalar`] is `'static`).
 ///
+/// Public as [`crate::sin_cos`] for the other layers' hot loops (the joint angles of
+/// `vectrix-dynamics`' ABA).
+///
 /// Book: (2.12.17–19), (2.15.20): the elementary rotations and quaternions.
 #[inline(always)]
-pub(crate) fn sin_cos<T: Scalar>(x: T) -> (T, T) {
+pub fn sin_cos<T: Scalar>(x: T) -> (T, T) {
     if let Some(&v) = (&x as &dyn Any).downcast_ref::<f64>()
         && v.abs() <= vmath::SIN_COS_MAX
     {

@@ -8,6 +8,7 @@ use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
 use super::model::Model;
+use super::planar::PlanarScratch;
 use super::rnea::{JointWrench, LinkWrenches, joint_motion};
 use super::singular::{null_component, pivot_tol, psd_pinv3};
 use super::spatial::{Xform, cross_force, cross_motion, join, split};
@@ -28,6 +29,8 @@ pub struct AbaScratch<T: Scalar = f64> {
     v: Vec<Vector3<T>>,
     /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
     reach: Vec<f64>,
+    /// The planar passes' work space (empty unless the model is planar).
+    pub(crate) pl: Vec<PlanarScratch<T>>,
 }
 
 impl<T: Scalar> Model<T> {
@@ -46,12 +49,18 @@ impl<T: Scalar> Model<T> {
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
+            pl: if self.planar.is_some() { vec![PlanarScratch::default(); n] } else { Vec::new() },
         }
     }
 
     /// Forward dynamics v̇ = FD(q, v, τ) in O(n) by the articulated-body algorithm
     /// (Featherstone): three passes over the tree; the book's per-body equations (7.11.13)
     /// with the joint reactions eliminated tip to base. `f_ext` as in [`Model::rnea`].
+    ///
+    /// A planar tree ([`Model::planar_axis`]) runs the same passes on planar spatial vectors
+    /// (3 numbers instead of 6, RBDA §2.16), and a free body alone on its joint is solved in
+    /// closed form (Euler's equations about its centre); both give the three passes' v̇ to
+    /// rounding.
     ///
     /// Book: §7.11; RBDA Table 7.1.
     ///
@@ -122,6 +131,9 @@ impl<T: Scalar> Model<T> {
         s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
+        if self.planar.is_some() && s.pl.len() == n && self.planar_aba(q, v, tau, f_ext, vdot, &mut s.pl) {
+            return Ok(());
+        }
         for (&f, &l) in self.free_leaves.iter().zip(&self.free_links) {
             self.free_leaf_accelerations(f, q, v, tau, f_ext.map(|fe| &fe[l]), vdot)?;
         }

@@ -12,6 +12,7 @@ mod derivatives;
 mod joint;
 mod kinematics;
 mod model;
+mod planar;
 mod rnea;
 mod singular;
 mod spatial;

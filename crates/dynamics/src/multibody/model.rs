@@ -9,6 +9,7 @@ use vectrix_statics::{INERTIA_REL_TOL, check_inertia};
 use vectrix_tensor::Scalar;
 
 use super::joint::{Elem, Joint, Link, Pose, coordinate_axis, elems};
+use super::planar::Planar;
 use super::spatial::{BodyInertia, Xform};
 use crate::DynamicsError;
 use crate::error::check_finite;
@@ -68,6 +69,9 @@ pub struct Model<T: Scalar = f64> {
     pub(crate) free_links: Vec<usize>,
     /// For each segment, whether it belongs to a free leaf (the three passes skip it).
     pub(crate) free_seg: Vec<bool>,
+    /// The planar reduction, when every pin turns about one axis of the ground and every
+    /// slider moves across it: ABA then runs on 3-vectors ([`Model::aba_into`]).
+    pub(crate) planar: Option<Planar<T>>,
 }
 
 /// The first segment of every free joint at the root whose link is a leaf: segments i..i+4
@@ -266,7 +270,6 @@ impl Model<f64> {
             free_seg[f..f + 4].fill(true);
         }
         Ok(Self {
-            segs,
             link_seg,
             nq,
             nv,
@@ -274,9 +277,11 @@ impl Model<f64> {
             q_neutral,
             parent_col,
             col_seg,
+            planar: Planar::detect(&segs),
             free_leaves,
             free_links,
             free_seg,
+            segs,
         })
     }
 
@@ -375,6 +380,7 @@ impl Model<f64> {
             free_leaves: self.free_leaves.clone(),
             free_links: self.free_links.clone(),
             free_seg: self.free_seg.clone(),
+            planar: self.planar.as_ref().map(Planar::cast),
         }
     }
 }
@@ -393,6 +399,27 @@ impl<T: Scalar> Model<T> {
     /// Number of links.
     pub fn links(&self) -> usize {
         self.link_seg.len()
+    }
+
+    /// The axis â (ground components) when the tree is planar: every pin turns about ±â, every
+    /// slider moves ⊥ â, and no placement rotates the joint frame (so every link frame differs
+    /// from the ground by a turn about â). Such a mechanism moves in planes ⊥ â from any state,
+    /// and [`Model::aba`] then works on planar spatial vectors (3 numbers instead of 6: the
+    /// in-plane parts of positions, centres, gravity and forces, the moment along â, and
+    /// âᵀĪâ of each body), with the same v̇ to rounding. The tests are exact: an axis off ±â
+    /// by rounding keeps the spatial algorithm. `None` for spatial trees.
+    ///
+    /// Book: §7.11 (chains); §6.3 (moment of inertia about an axis); RBDA §2.16.
+    pub fn planar_axis(&self) -> Option<Vector3<T>> {
+        self.planar.as_ref().map(|p| p.axis)
+    }
+
+    /// Turns the planar reduction of [`Model::planar_axis`] off, so that [`Model::aba`] runs the
+    /// spatial passes on a planar tree too: for measuring what the reduction saves and for
+    /// checking it (the answers agree to rounding). [`Model::planar_axis`] returns `None`
+    /// afterwards: it reports what the model uses.
+    pub fn disable_planar_reduction(&mut self) {
+        self.planar = None;
     }
 
     /// The neutral configuration: zero for every coordinate, identity quaternions.
