@@ -29,7 +29,8 @@ pub struct AbaScratch<T: Scalar = f64> {
     v: Vec<Vector3<T>>,
     /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
     reach: Vec<f64>,
-    /// The planar passes' work space (empty unless the model is planar).
+    /// The planar passes' work space, one entry per segment and one for the ground (empty
+    /// unless the model is planar).
     pub(crate) pl: Vec<PlanarScratch<T>>,
 }
 
@@ -49,7 +50,7 @@ impl<T: Scalar> Model<T> {
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
-            pl: if self.planar.is_some() { vec![PlanarScratch::default(); n] } else { Vec::new() },
+            pl: if self.planar.is_some() { vec![PlanarScratch::default(); n + 1] } else { Vec::new() },
         }
     }
 
@@ -131,7 +132,8 @@ impl<T: Scalar> Model<T> {
         s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
-        if self.planar.is_some() && s.pl.len() == n && self.planar_aba(q, v, tau, f_ext, vdot, &mut s.pl) {
+        if self.planar.is_some() && s.pl.len() == n + 1 && self.planar_aba(q, v, tau, f_ext, vdot, &mut s.pl)
+        {
             return Ok(());
         }
         for (&f, &l) in self.free_leaves.iter().zip(&self.free_links) {

@@ -20,8 +20,8 @@ use super::singular::pivot_tol;
 /// The kind of one segment of a planar tree.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum PlanarJoint {
-    /// A pin about +â (`false`) or −â (`true`).
-    Revolute(bool),
+    /// A pin about σâ, σ = ±1 ([`PlanarSeg::sigma`]).
+    Revolute,
     /// A slider along the in-plane direction `d` of [`PlanarSeg`].
     Prismatic,
     /// A weld.
@@ -33,6 +33,18 @@ pub(crate) enum PlanarJoint {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct PlanarSeg<T: Scalar> {
     pub joint: PlanarJoint,
+    /// The parent segment, or the number of segments for the ground (the passes keep the
+    /// ground's twist and acceleration in one more entry of their work space).
+    pub parent: usize,
+    pub qi: usize,
+    pub vi: usize,
+    /// σ = ±1: a pin about σâ (exact: multiplying by it only flips signs).
+    pub sigma: T,
+    /// The rounding scale of the singularity test of the joint's D when it does not depend on
+    /// the configuration (no slider in the tree): for a pin Σ tr J_c + 2Mρ² over its subtree
+    /// with ρ bounding the distance from its origin to every centre in the subtree; for a
+    /// slider its subtree's mass M.
+    pub scale: f64,
     /// The placement's offset r_{joint/parent origin} (parent link frame).
     pub r: [T; 2],
     /// A slider's direction (its frame is the parent's: the placement has no rotation).
@@ -49,6 +61,8 @@ pub(crate) struct PlanarSeg<T: Scalar> {
 /// and the segments.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Planar<T: Scalar> {
+    /// No slider: every [`PlanarSeg::scale`] holds for every configuration.
+    pub static_scale: bool,
     pub axis: Vector3<T>,
     pub u: Vector3<T>,
     pub w: Vector3<T>,
@@ -66,23 +80,29 @@ impl Planar<f64> {
             Elem::Revolute(a) => Some(a),
             _ => None,
         })?;
-        let mut out = Vec::with_capacity(segs.len());
+        let n = segs.len();
+        let mut out = Vec::with_capacity(n);
         let (u, w) = in_plane_basis(&axis);
         let plane = |x: &Vector3<f64>| [x.dot(&u), x.dot(&w)];
         for s in segs {
             if !s.placement_is_shift {
                 return None;
             }
-            let (joint, d) = match s.elem {
-                Elem::Revolute(a) if a == axis => (PlanarJoint::Revolute(false), [0.0; 2]),
-                Elem::Revolute(a) if a == -axis => (PlanarJoint::Revolute(true), [0.0; 2]),
-                Elem::Prismatic(d) if d.dot(&axis) == 0.0 => (PlanarJoint::Prismatic, plane(&d)),
-                Elem::Fixed => (PlanarJoint::Fixed, [0.0; 2]),
+            let (joint, d, sigma) = match s.elem {
+                Elem::Revolute(a) if a == axis => (PlanarJoint::Revolute, [0.0; 2], 1.0),
+                Elem::Revolute(a) if a == -axis => (PlanarJoint::Revolute, [0.0; 2], -1.0),
+                Elem::Prismatic(d) if d.dot(&axis) == 0.0 => (PlanarJoint::Prismatic, plane(&d), 1.0),
+                Elem::Fixed => (PlanarJoint::Fixed, [0.0; 2], 1.0),
                 _ => return None,
             };
             let b = &s.inertia;
             out.push(PlanarSeg {
                 joint,
+                parent: s.parent.unwrap_or(n),
+                qi: s.qi,
+                vi: s.vi,
+                sigma,
+                scale: 0.0,
                 r: plane(&s.placement.r),
                 d,
                 m: b.m,
@@ -90,13 +110,31 @@ impl Planar<f64> {
                 i_o: axis.dot(&(b.I * axis)),
             });
         }
-        Some(Planar { axis, u, w, segs: out })
+        // ρ of every pin's subtree, tips to base (children come after their parents):
+        // ρ_p ≥ |r_i| + ρ_i over the children i that carry mass, and ≥ |c| of its own body
+        let static_scale = out.iter().all(|p| p.joint != PlanarJoint::Prismatic);
+        let mut reach: Vec<f64> = segs.iter().map(|s| s.own_reach).collect();
+        for i in (0..n).rev() {
+            if let Some(p) = segs[i].parent
+                && segs[i].sub_mass > 0.0
+            {
+                reach[p] = reach[p].max(reach[i] + segs[i].placement.r.norm());
+            }
+        }
+        for (o, (s, rho)) in out.iter_mut().zip(segs.iter().zip(&reach)) {
+            o.scale = match o.joint {
+                PlanarJoint::Prismatic => s.sub_mass,
+                _ => s.sub_trace + 2.0 * s.sub_mass * rho * rho,
+            };
+        }
+        Some(Planar { static_scale, axis, u, w, segs: out })
     }
 
     /// The same reduction over another scalar (numbers converted exactly).
     pub fn cast<U: Scalar>(&self) -> Planar<U> {
         let c2 = |x: [f64; 2]| [U::lit(x[0]), U::lit(x[1])];
         Planar {
+            static_scale: self.static_scale,
             axis: self.axis.map(U::lit),
             u: self.u.map(U::lit),
             w: self.w.map(U::lit),
@@ -105,6 +143,11 @@ impl Planar<f64> {
                 .iter()
                 .map(|s| PlanarSeg {
                     joint: s.joint,
+                    parent: s.parent,
+                    qi: s.qi,
+                    vi: s.vi,
+                    sigma: U::lit(s.sigma),
+                    scale: s.scale,
                     r: c2(s.r),
                     d: c2(s.d),
                     m: U::lit(s.m),
@@ -133,14 +176,13 @@ fn in_plane_basis(a: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
 }
 
 /// Per-segment work space of the planar passes: the ground-plane components (û, ŵ) of the
-/// segment's orientation (cos φ, sin φ), its origin, its twist (ω, v of the body point at the
+/// segment's orientation (cos φ, sin φ), its twist (ω, v of the body point at the
 /// origin), the bias acceleration (its turning part is zero), the offset from the parent's
 /// origin, a slider's direction, the articulated inertia (6 entries of a symmetric 3×3,
 /// (ω, vx, vy) ordering) and bias force, U, D⁻¹, u, and the acceleration.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlanarScratch<T: Scalar> {
     cs: [T; 2],
-    p: [T; 2],
     w: T,
     v: [T; 2],
     c: [T; 2],
@@ -160,7 +202,6 @@ impl<T: Scalar> Default for PlanarScratch<T> {
         let z = T::zero();
         Self {
             cs: [z; 2],
-            p: [z; 2],
             w: z,
             v: [z; 2],
             c: [z; 2],
@@ -205,32 +246,35 @@ impl<T: Scalar> Model<T> {
         s: &mut [PlanarScratch<T>],
     ) -> bool {
         let Some(pl) = &self.planar else { return false };
+        let n = pl.segs.len();
         let z = T::zero();
+        // the ground, entry n: at rest, axes (û, ŵ), acceleration −g (its in-plane part) at
+        // the origin (gravity by the fictitious acceleration of the base)
+        s[n] = PlanarScratch::default();
+        s[n].cs = [T::one(), z];
+        s[n].a = [z, -self.gravity.dot(&pl.u), -self.gravity.dot(&pl.w)];
         // pass 1 (outward)
-        for (i, (seg, ps)) in self.segs.iter().zip(&pl.segs).enumerate() {
-            let (cp, pp, wp, vp) = match seg.parent {
-                Some(p) => (s[p].cs, s[p].p, s[p].w, s[p].v),
-                None => ([T::one(), z], [z; 2], z, [z; 2]),
-            };
+        for (i, ps) in pl.segs.iter().enumerate() {
+            let (cp, wp, vp) = (s[ps.parent].cs, s[ps.parent].w, s[ps.parent].v);
             let mut r = ps.r;
             if ps.joint == PlanarJoint::Prismatic {
-                let x = q[seg.qi];
+                let x = q[ps.qi];
                 r = [r[0] + ps.d[0] * x, r[1] + ps.d[1] * x];
             }
             let d = rot(&cp, &r);
             let mut vi = [vp[0] - wp * d[1], vp[1] + wp * d[0]];
             let e = &mut s[i];
             let (cs, wi) = match ps.joint {
-                PlanarJoint::Revolute(neg) => {
-                    let (sn, cn) = vectrix_rotation::sin_cos(q[seg.qi]);
-                    let (sn, qd) = if neg { (-sn, -v[seg.vi]) } else { (sn, v[seg.vi]) };
-                    // c = (ω, v) ×m (q̇ â, 0) = (0, −q̇ â×v)
+                PlanarJoint::Revolute => {
+                    let (sn, cn) = vectrix_rotation::sin_cos(q[ps.qi]);
+                    let (sn, qd) = (sn * ps.sigma, v[ps.vi] * ps.sigma);
+                    // c = (ω, v) ×m (q̇ σâ, 0) = (0, −σq̇ â×v)
                     e.c = [qd * vi[1], -(qd * vi[0])];
                     ([cp[0] * cn - cp[1] * sn, cp[1] * cn + cp[0] * sn], wp + qd)
                 }
                 PlanarJoint::Prismatic => {
                     let dir = rot(&cp, &ps.d);
-                    let sd = v[seg.vi];
+                    let sd = v[ps.vi];
                     vi = [vi[0] + dir[0] * sd, vi[1] + dir[1] * sd];
                     // c = (ω, v) ×m (0, ṡ d) = (0, ω ṡ â×d)
                     let k = wp * sd;
@@ -251,11 +295,9 @@ impl<T: Scalar> Model<T> {
             let f = [m * vi[0] - wi * h[1], m * vi[1] + wi * h[0]];
             e.pa = [vi[0] * f[1] - vi[1] * f[0], -(wi * f[1]), wi * f[0]];
             e.cs = cs;
-            e.p = [pp[0] + d[0], pp[1] + d[1]];
             e.d = d;
             e.w = wi;
             e.v = vi;
-            e.reach = seg.own_reach;
         }
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
@@ -266,26 +308,36 @@ impl<T: Scalar> Model<T> {
                 e.pa[2] -= f[1];
             }
         }
-        // pass 2 (inward)
+        if !pl.static_scale {
+            // a slider moves the centres: ρ from this configuration, as the spatial passes
+            for (e, seg) in s.iter_mut().zip(&self.segs) {
+                e.reach = seg.own_reach;
+            }
+        }
+        // pass 2 (inward); the root's contributions land in the ground's entry, unused
         let tol = pivot_tol::<T>();
-        for i in (0..self.segs.len()).rev() {
-            let (seg, ps) = (&self.segs[i], &pl.segs[i]);
+        for (i, ps) in pl.segs.iter().enumerate().rev() {
             let e = &mut s[i];
             let [a0, a1, a2, a3, a4, a5] = e.ia;
             let [p0, p1, p2] = e.pa;
             let [c1, c2] = e.c;
             let (ia, pa) = match ps.joint {
-                PlanarJoint::Revolute(neg) => {
-                    // S = (±1, 0, 0): U = ±(column 0), D = a0, and Iᵃ's row and column 0
+                PlanarJoint::Revolute => {
+                    // S = (σ, 0, 0): U = σ(column 0), D = a0, and Iᵃ's row and column 0
                     // vanish exactly
-                    let scale = seg.sub_trace + 2.0 * seg.sub_mass * e.reach * e.reach;
+                    let scale = if pl.static_scale {
+                        ps.scale
+                    } else {
+                        let seg = &self.segs[i];
+                        seg.sub_trace + 2.0 * seg.sub_mass * e.reach * e.reach
+                    };
                     if a0.re() <= tol * scale {
                         return false;
                     }
                     let dinv = a0.recip();
-                    // with σ = ±1 the joint's sign: u = τ − σp0; stored as σu = στ − p0, and
-                    // U = σ(column 0) stored unsigned, so that UD⁻¹u = (column 0) D⁻¹ σu
-                    let t = if neg { -tau[seg.vi] } else { tau[seg.vi] };
+                    // u = τ − σp0, stored as σu = στ − p0, and U stored unsigned, so that
+                    // UD⁻¹u = (column 0) D⁻¹ σu
+                    let t = tau[ps.vi] * ps.sigma;
                     let su = t - p0;
                     e.U = [a0, a1, a2];
                     e.dinv = dinv;
@@ -300,11 +352,11 @@ impl<T: Scalar> Model<T> {
                     let [dx, dy] = e.dir;
                     let U = [a1 * dx + a2 * dy, a3 * dx + a4 * dy, a4 * dx + a5 * dy];
                     let D = dx * U[1] + dy * U[2];
-                    if D.re() <= tol * seg.sub_mass {
+                    if D.re() <= tol * ps.scale {
                         return false;
                     }
                     let dinv = D.recip();
-                    let u = tau[seg.vi] - (dx * p1 + dy * p2);
+                    let u = tau[ps.vi] - (dx * p1 + dy * p2);
                     e.U = U;
                     e.dinv = dinv;
                     e.u = u;
@@ -326,58 +378,50 @@ impl<T: Scalar> Model<T> {
                 }
                 PlanarJoint::Fixed => (e.ia, e.pa),
             };
-            if let Some(p) = seg.parent {
-                // Xᵀ I X with X = [[1, 0], [ê, 1]], ê = â×d: [[A + 2ê·b + êᵀCê, (b + Cê)ᵀ],
-                // [b + Cê, C]]; forces n_p = n + ê·f. After a pin A = 0 and b = 0 exactly
-                // (the zeros are not added: x + 0 is not foldable for floats)
-                let dd = e.d;
-                let ex = [-dd[1], dd[0]];
-                let ce = [ia[3] * ex[0] + ia[4] * ex[1], ia[4] * ex[0] + ia[5] * ex[1]];
-                let (a, b) = if matches!(ps.joint, PlanarJoint::Revolute(_)) {
-                    (ex[0] * ce[0] + ex[1] * ce[1], ce)
-                } else {
-                    let b = [ia[1] + ce[0], ia[2] + ce[1]];
-                    (ia[0] + ex[0] * (ia[1] + b[0]) + ex[1] * (ia[2] + b[1]), b)
-                };
-                let n = pa[0] + ex[0] * pa[1] + ex[1] * pa[2];
-                let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
-                let sub = seg.sub_mass > 0.0;
-                let pe = &mut s[p];
-                pe.ia[0] += a;
-                pe.ia[1] += b[0];
-                pe.ia[2] += b[1];
-                pe.ia[3] += ia[3];
-                pe.ia[4] += ia[4];
-                pe.ia[5] += ia[5];
-                pe.pa[0] += n;
-                pe.pa[1] += pa[1];
-                pe.pa[2] += pa[2];
-                if sub {
-                    pe.reach = pe.reach.max(reach);
-                }
+            // to the parent: Xᵀ I X with X = [[1, 0], [ê, 1]], ê = â×d: [[A + 2ê·b + êᵀCê,
+            // (b + Cê)ᵀ], [b + Cê, C]]; forces n_p = n + ê·f. After a pin A = 0 and b = 0
+            // exactly (the zeros are not added: x + 0 is not foldable for floats)
+            let dd = e.d;
+            let ex = [-dd[1], dd[0]];
+            let ce = [ia[3] * ex[0] + ia[4] * ex[1], ia[4] * ex[0] + ia[5] * ex[1]];
+            let (a, b) = if ps.joint == PlanarJoint::Revolute {
+                (ex[0] * ce[0] + ex[1] * ce[1], ce)
+            } else {
+                let b = [ia[1] + ce[0], ia[2] + ce[1]];
+                (ia[0] + ex[0] * (ia[1] + b[0]) + ex[1] * (ia[2] + b[1]), b)
+            };
+            let nf = pa[0] + ex[0] * pa[1] + ex[1] * pa[2];
+            let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
+            let pe = &mut s[ps.parent];
+            pe.ia[0] += a;
+            pe.ia[1] += b[0];
+            pe.ia[2] += b[1];
+            pe.ia[3] += ia[3];
+            pe.ia[4] += ia[4];
+            pe.ia[5] += ia[5];
+            pe.pa[0] += nf;
+            pe.pa[1] += pa[1];
+            pe.pa[2] += pa[2];
+            if !pl.static_scale && self.segs[i].sub_mass > 0.0 {
+                pe.reach = pe.reach.max(reach);
             }
         }
-        // pass 3 (outward): the ground's acceleration −g (its in-plane part) at the origin
-        let g = [-self.gravity.dot(&pl.u), -self.gravity.dot(&pl.w)];
-        for i in 0..self.segs.len() {
-            let (seg, ps) = (&self.segs[i], &pl.segs[i]);
-            let ap = match seg.parent {
-                Some(p) => s[p].a,
-                None => [z, g[0], g[1]],
-            };
+        // pass 3 (outward)
+        for (i, ps) in pl.segs.iter().enumerate() {
+            let ap = s[ps.parent].a;
             let e = &mut s[i];
             // X𝒜_p + c: the angular part carries over, the linear part shifts by α â×d
             let a = [ap[0], ap[1] - ap[0] * e.d[1] + e.c[0], ap[2] + ap[0] * e.d[0] + e.c[1]];
             e.a = match ps.joint {
-                PlanarJoint::Revolute(neg) => {
+                PlanarJoint::Revolute => {
                     // σq̈ = D⁻¹(σu − (column 0)ᵀ𝒜'), and 𝒜 = 𝒜' + (σq̈, 0, 0)
                     let sq = e.dinv * (e.u - (e.U[0] * a[0] + e.U[1] * a[1] + e.U[2] * a[2]));
-                    vdot[seg.vi] = if neg { -sq } else { sq };
+                    vdot[ps.vi] = sq * ps.sigma;
                     [a[0] + sq, a[1], a[2]]
                 }
                 PlanarJoint::Prismatic => {
                     let qdd = e.dinv * (e.u - (e.U[0] * a[0] + e.U[1] * a[1] + e.U[2] * a[2]));
-                    vdot[seg.vi] = qdd;
+                    vdot[ps.vi] = qdd;
                     [a[0], a[1] + e.dir[0] * qdd, a[2] + e.dir[1] * qdd]
                 }
                 PlanarJoint::Fixed => a,
