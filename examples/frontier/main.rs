@@ -8,7 +8,9 @@
 //! cargo run --release --example frontier -- plot [--data DIR] [--svg DIR] [--doc docs/performance.md]
 //! ```
 //!
-//! `run` writes `DIR/reference.json` (the chains' reference end states, with their checks)
+//! `run` writes `DIR/reference.json` (the chains' reference end states: the
+//! extended-precision reference (scripts/peers/chain_reference_mp.py, committed as
+//! `tests/data/chain_reference_mp.json`), with vectrix's DOP853 at 1e-13 beside it as a check)
 //! and `DIR/vectrix.json` (the points); `plot` reads every `DIR/*.json` tool file, draws
 //! `peers-<problem>.svg` and writes the time-to-error table between the markers
 //! `<!-- frontier-table:begin -->` and `<!-- frontier-table:end -->` of the document. The
@@ -30,6 +32,7 @@ use vectrix::ode::harness::{Pendulum, Reference};
 
 use problems::{
     CHAIN_NS, CHAIN_T, GRAVITY, LINK, MASS, RADIUS, capsule_inertia, chain_model, chain_q0, chain_y0,
+    max_abs_diff,
 };
 use report::{Pt, family_time, figure, fmt_time};
 use routes::{Ctx, chain_rhs};
@@ -59,16 +62,28 @@ const PROBLEMS: [(&str, &str, &str); 9] = [
     (
         "chain-1",
         "1-link hinge chain (MuJoCo's capsule), t ≤ 1 s",
-        "max-norm error of (q, v) at t = 1 s (reference run)",
+        "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
     ),
     (
         "chain-2",
         "Double pendulum (2-link chain), t ≤ 1 s",
-        "max-norm error of (q, v) at t = 1 s (reference run)",
+        "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
     ),
-    ("chain-6", "6-link hinge chain, t ≤ 1 s", "max-norm error of (q, v) at t = 1 s (reference run)"),
-    ("chain-12", "12-link hinge chain, t ≤ 1 s", "max-norm error of (q, v) at t = 1 s (reference run)"),
-    ("chain-30", "30-link hinge chain, t ≤ 1 s", "max-norm error of (q, v) at t = 1 s (reference run)"),
+    (
+        "chain-6",
+        "6-link hinge chain, t ≤ 1 s",
+        "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
+    ),
+    (
+        "chain-12",
+        "12-link hinge chain, t ≤ 1 s",
+        "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
+    ),
+    (
+        "chain-30",
+        "30-link hinge chain, t ≤ 1 s",
+        "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
+    ),
     (
         "energy-pendulum",
         "Pendulum θ₀ = 1 rad over 10⁴ periods: energy",
@@ -131,11 +146,44 @@ fn main() {
     }
 }
 
-/// The chains' reference: DOP853 at rtol = atol = 1e-13 through `Model::aba_into`; for the
-/// one link also the exact physical-pendulum solution beside it. `check_reference.py` adds
-/// the independent checks (scipy's DOP853 on a numpy Lagrangian and on Pinocchio's ABA).
+/// The chains' extended-precision reference end states (scripts/peers/chain_reference_mp.py:
+/// Gragg–Bulirsch–Stoer extrapolation in mpmath at 34 digits on a Lagrangian that shares no
+/// code and no formula with vectrix's ABA), committed as this file.
+const MP_REFERENCE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/chain_reference_mp.json");
+
+/// The `chain-n` entry of `tests/data/chain_reference_mp.json`.
+fn mp_reference(id: &str) -> Value {
+    let text = std::fs::read_to_string(MP_REFERENCE).expect("tests/data/chain_reference_mp.json");
+    // serde_json's float_roundtrip feature (a dev-dependency of the workspace): the numbers
+    // are read exactly, each the nearest double of the extended-precision value
+    let doc: Value = serde_json::from_str(&text).expect("chain_reference_mp.json parses");
+    let entry = doc["chains"][id].clone();
+    assert!(entry.is_object(), "{MP_REFERENCE} has no {id}: run scripts/peers/chain_reference_mp.py");
+    json!({ "entry": entry, "method": doc["method"].clone() })
+}
+
+/// The chains' reference: the extended-precision end state of `chain_reference_mp.json` (its
+/// uncertainty: the convergence difference of its two runs or the rounding of the stored
+/// doubles, whichever is larger). Beside it, as checks: vectrix's DOP853 at rtol = atol =
+/// 1e-13 through `Model::aba_into` (the old reference, good to ~1e-12), and for the one link
+/// the exact physical-pendulum solution in f64. `check_reference.py` adds scipy's DOP853 on a
+/// numpy Lagrangian and on Pinocchio's ABA (checks of those tools).
 fn chain_reference<const N: usize>() -> Value {
     let n = N / 2;
+    let id = format!("chain-{n}");
+    let mp = mp_reference(&id);
+    let e = &mp["entry"];
+    let floats = |v: &Value| -> Vec<f64> {
+        v.as_array().expect("array").iter().map(|x| x.as_f64().expect("number")).collect()
+    };
+    let state = floats(&e["state"]);
+    assert_eq!(state.len(), N, "{id}: the reference state has 2n numbers");
+    assert_eq!(floats(&e["q0"]), chain_q0(n), "{id}: the reference starts from chain_q0");
+    assert_eq!(e["t_end"].as_f64(), Some(CHAIN_T), "{id}: the reference ends at CHAIN_T");
+    let convergence = e["convergence"].as_f64().expect("convergence");
+    // the stored doubles are within half an ulp of the extended-precision values
+    let rounding = state.iter().fold(0.0f64, |a, x| a.max(x.abs() * f64::EPSILON / 2.0));
+
     let model = chain_model(n);
     let tau = vec![0.0; n];
     let y0 = chain_y0::<N>();
@@ -145,12 +193,24 @@ fn chain_reference<const N: usize>() -> Value {
         .rtol(1e-13)
         .atol(1e-13)
         .solve(f, 0.0, &y0, CHAIN_T)
-        .expect("the reference run")
+        .expect("the DOP853 check run")
         .last();
     let mut v = json!({
         "t_end": CHAIN_T, "q0": chain_q0(n), "v0": vec![0.0; n],
-        "state": y.as_slice(),
-        "method": "vectrix DOP853, rtol = atol = 1e-13, Model::aba_into (ABA)",
+        "state": state,
+        "state_mp": e["state_mp"].clone(),
+        "method": format!(
+            "extended-precision reference (scripts/peers/chain_reference_mp.py): {}",
+            mp["method"].as_str().unwrap_or("?")
+        ),
+        "source": "tests/data/chain_reference_mp.json",
+        "convergence": convergence,
+        "uncertainty": convergence.max(rounding),
+        "check_dop853_1e-13": {
+            "method": "vectrix DOP853, rtol = atol = 1e-13, Model::aba_into (ABA)",
+            "state": y.as_slice(),
+            "diff": max_abs_diff(y.as_slice(), &state),
+        },
     });
     if n == 1 {
         // a physical pendulum: θ̈ = −ω₀² sin θ, ω₀² = m g c / (I_c + m c²)
@@ -161,7 +221,7 @@ fn chain_reference<const N: usize>() -> Value {
         let e = p.exact(w0 * CHAIN_T);
         let exact = [e[0], w0 * e[1]];
         v["exact"] = json!(exact);
-        v["diff_to_exact"] = json!((y[0] - exact[0]).abs().max((y[1] - exact[1]).abs()));
+        v["diff_to_exact"] = json!(max_abs_diff(&exact, &state));
     }
     v
 }
@@ -186,7 +246,8 @@ fn run(args: &[String]) {
     let load_start = loadavg();
     let date = shell("date", &["-u", "+%Y-%m-%dT%H:%M:%SZ"]);
 
-    // the chains' reference end states (deterministic: computed once per run)
+    // the chains' reference end states (read from tests/data/chain_reference_mp.json, with the
+    // DOP853 check run beside them)
     let ref_path = out.join("reference.json");
     let mut reference: BTreeMap<String, Value> = std::fs::read_to_string(&ref_path)
         .ok()
@@ -334,8 +395,13 @@ fn short(series: &str) -> &str {
         .unwrap_or(series)
 }
 
-/// How far each chain's reference can be trusted: the largest difference to the independent
-/// recomputations of `check_reference.py` (and, for one link, to the exact solution).
+/// How far each chain's reference can be trusted: the uncertainty `reference.json` states for
+/// it (the extended-precision reference: its convergence difference or the rounding of its
+/// doubles, ~1e-16). A reference without one (a data folder from before, whose reference was a
+/// DOP853 run at 1e-13) is trusted to its largest difference to the independent recomputations
+/// of `check_reference.py` (`reference_check.json`) and, for one link, to the exact solution.
+/// With the extended-precision reference, `reference_check.json` holds the errors of those
+/// recomputations (checks of the tools), not the reference's.
 fn reference_floors(data: &Path) -> BTreeMap<String, f64> {
     let read = |name: &str| -> Value {
         std::fs::read_to_string(data.join(name))
@@ -347,6 +413,10 @@ fn reference_floors(data: &Path) -> BTreeMap<String, f64> {
     let mut out = BTreeMap::new();
     for n in CHAIN_NS {
         let id = format!("chain-{n}");
+        if let Some(u) = reference[&id]["uncertainty"].as_f64() {
+            out.insert(id, u);
+            continue;
+        }
         let mut u: Vec<f64> = check[&id]
             .as_object()
             .map(|o| o.values().filter_map(Value::as_f64).collect())

@@ -24,7 +24,9 @@ that the frontier adds to `seconds` (sympy's derivation + lambdify). The problem
 * `chain-N`, N = 1, 2 (the double pendulum), 6, 12, 30: the hinge chain of bench_mujoco.py
   (capsules of mass 1, length 0.3, radius 0.02, hinges about y, g = 9.81 along −z) from
   q = (0.7, 0.1, …, 0.1), v = 0, t ∈ [0, 1]; error = max-norm of (q, v) − reference at t = 1
-  (reference: reference.json, a tight run, cross-checked by check_reference.py).
+  (reference: reference.json, copied from the extended-precision reference
+  tests/data/chain_reference_mp.json of chain_reference_mp.py (mpmath, 34 digits, Gragg–
+  Bulirsch–Stoer, converged to < 1e-20); check_reference.py compares tight runs with it).
 * `energy-pendulum`: θ̈ = −sin θ from rest at θ₀ = 1 rad over 10⁴ periods; error = max over
   1001 checkpoints (every 10 periods) of |E − E₀| / E₀, E = θ̇²/2 + 1 − cos θ.
 """
