@@ -1096,4 +1096,51 @@ cases! {
         Drifting(1.0).speed_constraints(&[0.0; 2], &[0.0; 2], 0.0, &mut out[..0]);
         assert_eq!(sys.particle_velocities(&q, &[1.0, 0.0, 2.0], 0.0).len(), 1);
     }
+    // Planar trees (§7.11, RBDA §2.16): a chain whose pins all turn about ŷ is reduced, the
+    // spatial tree is not; with the reduction on and off ABA gives the same v̇ (to round-off)
+    // for hostile states, forces and wrenches, and where either refuses or overflows, each
+    // answer is an error or finite.
+    planar_trees ["Model::planar_axis", "Model::disable_planar_reduction"] {
+        let j = Matrix3::from_diagonal(&Vector3::new(0.01, 0.01, 1e-4));
+        let links: Vec<Link> = (0..4usize)
+            .map(|i| {
+                let offset = if i == 0 { Vector3::zeros() } else { Vector3::new(0.0, 0.0, -0.3) };
+                Link::new(i.checked_sub(1), Joint::Pin { axis: Vector3::y() }, offset, 1.0, Vector3::new(0.0, 0.0, -0.15), j)
+            })
+            .collect();
+        let mut m = Model::new(&links).unwrap();
+        m.gravity = Vector3::new(0.3, 0.0, -9.81);
+        assert_eq!(m.planar_axis(), Some(Vector3::y()));
+        assert_eq!(tree().planar_axis(), None);
+        let mut s = m.clone();
+        s.disable_planar_reduction();
+        assert_eq!(s.planar_axis(), None);
+        let (q, v, tau) = ([0.7, 0.1, -0.2, 0.3], [0.5, -0.4, 0.3, 0.2], [0.1, 0.0, -0.2, 0.05]);
+        let agree = |a: Result<Vec<f64>, DynamicsError>, b: Result<Vec<f64>, DynamicsError>, what: &str| match (a, b) {
+            (Ok(x), Ok(y)) => {
+                let scale = y.iter().fold(1.0f64, |m, c| m.max(c.abs()));
+                assert!(x.iter().zip(&y).all(|(p, r)| (p - r).abs() <= REL * scale), "{what}: {x:?} vs {y:?}");
+            }
+            (a, b) => {
+                err_or(a, what, |vd| finite(vd));
+                err_or(b, what, |vd| finite(vd));
+            }
+        };
+        agree(m.aba(&q, &v, &tau, None), s.aba(&q, &v, &tau, None), "aba");
+        for x in hostile() {
+            for k in 0..4 {
+                let (qx, vx, tx) = (with(&q, k, x), with(&v, k, x), with(&tau, k, x));
+                agree(m.aba(&qx, &v, &tau, None), s.aba(&qx, &v, &tau, None), &format!("aba(q[{k}] = {x:e})"));
+                agree(m.aba(&q, &vx, &tau, None), s.aba(&q, &vx, &tau, None), &format!("aba(v[{k}] = {x:e})"));
+                agree(m.aba(&q, &v, &tx, None), s.aba(&q, &v, &tx, None), &format!("aba(τ[{k}] = {x:e})"));
+            }
+            for w in hostile3() {
+                let mut f = vec![JointWrench::default(); 4];
+                f[2].force = Vector3::from(w);
+                f[3].moment = Vector3::new(x, 1.0, -x);
+                agree(m.aba(&q, &v, &tau, Some(&f)), s.aba(&q, &v, &tau, Some(&f)), "aba(f_ext)");
+            }
+        }
+        refused(m.aba(&q, &v, &tau[1..], None), "planar aba(short τ)");
+    }
 }
