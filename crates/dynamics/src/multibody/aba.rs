@@ -136,8 +136,8 @@ impl<T: Scalar> Model<T> {
         {
             return Ok(());
         }
-        for (&f, &l) in self.free_leaves.iter().zip(&self.free_links) {
-            self.free_leaf_accelerations(f, q, v, tau, f_ext.map(|fe| &fe[l]), vdot)?;
+        for (k, &l) in self.free_links.iter().enumerate() {
+            self.free_leaf_accelerations(k, q, v, tau, f_ext.map(|fe| &fe[l]), vdot);
         }
         // pass 1 (outward): twists, bias accelerations c = 𝒱 ×m S q̇, bias forces 𝒱 ×f 𝒥𝒱
         for (i, seg) in self.segs.iter().enumerate() {
@@ -311,15 +311,17 @@ impl<T: Scalar> Model<T> {
     /// Book: §7.11 (7.11.13) for one free body; RBDA §2.14.
     fn free_leaf_accelerations(
         &self,
-        f: usize,
+        k: usize,
         q: &[T],
         v: &[T],
         tau: &[T],
         f_ext: Option<&JointWrench<T>>,
         vdot: &mut [T],
-    ) -> Result<(), DynamicsError> {
+    ) {
+        let f = self.free_leaves[k];
         let (slide, body) = (&self.segs[f], &self.segs[f + 3]);
         let (vi, m, c, j_c) = (slide.vi, body.inertia.m, body.com, body.j_c);
+        let j_c_inv = &self.free_jc_inv[k];
         // 𝓞_{B/J} of the ball, and 𝓞_{B/G} = 𝓞_{B/J} 𝓞_{J/G} for the gravity
         let e_bj = body.elem.xform(&q[body.qi..]).E;
         let g_b = e_bj * (slide.placement.E * self.gravity);
@@ -331,19 +333,13 @@ impl<T: Scalar> Model<T> {
             moment += fe.moment;
         }
         let rhs = moment - c.cross(&force) - w.cross(&(j_c * w));
-        // J_c was found definite when the model was built (`definite_body`); a dual-number
-        // model has the same real parts
-        let alpha = j_c
-            .cholesky()
-            .ok_or_else(|| DynamicsError::SingularMassMatrix {
-                detail: format!("central inertia of the free body on segment {}", f + 3),
-            })?
-            .solve(&rhs);
+        // J_c was found definite when the model was built (`definite_body`), and inverted
+        // there from its Cholesky factor
+        let alpha = j_c_inv * rhs;
         let a_o = force / m - w.cross(&w.cross(&c)) + c.cross(&alpha);
         let a_j = e_bj.tr_mul(&a_o);
         vdot[vi..vi + 3].copy_from_slice(a_j.as_slice());
         vdot[vi + 3..vi + 6].copy_from_slice(alpha.as_slice());
-        Ok(())
     }
 
     /// The size of the forces that meet at segment i before the eliminations of pass 2 cancel

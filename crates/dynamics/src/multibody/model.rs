@@ -67,6 +67,9 @@ pub struct Model<T: Scalar = f64> {
     pub(crate) free_leaves: Vec<usize>,
     /// For each entry of `free_leaves`, its user link (whose external wrench it takes).
     pub(crate) free_links: Vec<usize>,
+    /// For each entry of `free_leaves`, J_c⁻¹ of its body (from the Cholesky factor found
+    /// definite when the model was built): Euler's equations solved by one product.
+    pub(crate) free_jc_inv: Vec<Matrix3<T>>,
     /// For each segment, whether it belongs to a free leaf (the three passes skip it).
     pub(crate) free_seg: Vec<bool>,
     /// The planar reduction, when every pin turns about one axis of the ground and every
@@ -265,6 +268,10 @@ impl Model<f64> {
             .iter()
             .map(|&f| link_seg.iter().position(|&k| k == f + 3).expect("the ball segment ends its link"))
             .collect();
+        let free_jc_inv = free_leaves
+            .iter()
+            .map(|&f| segs[f + 3].j_c.cholesky().expect("definite: checked by free_leaf_roots").inverse())
+            .collect();
         let mut free_seg = vec![false; segs.len()];
         for &f in &free_leaves {
             free_seg[f..f + 4].fill(true);
@@ -280,6 +287,7 @@ impl Model<f64> {
             planar: Planar::detect(&segs),
             free_leaves,
             free_links,
+            free_jc_inv,
             free_seg,
             segs,
         })
@@ -379,6 +387,7 @@ impl Model<f64> {
             col_seg: self.col_seg.clone(),
             free_leaves: self.free_leaves.clone(),
             free_links: self.free_links.clone(),
+            free_jc_inv: self.free_jc_inv.iter().map(|m| m.map(U::lit)).collect(),
             free_seg: self.free_seg.clone(),
             planar: self.planar.as_ref().map(Planar::cast),
         }
@@ -461,6 +470,11 @@ impl<T: Scalar> Model<T> {
                 e[(i2, col)] = c * a2 - sn * a1;
             }
             return Xform { E: e, r };
+        }
+        // a slider behind a placement without rotation keeps the parent's orientation
+        // (1·𝓞 = 𝓞 exactly): only the origin moves
+        if let (Some(p), true, Elem::Prismatic(a)) = (parent, s.placement_is_shift, &s.elem) {
+            return Xform { E: p.E, r: p.r + p.E.tr_mul(&(s.placement.r + a * q[s.qi])) };
         }
         let x = self.seg_xform(i, q);
         match parent {
