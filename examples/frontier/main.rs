@@ -397,36 +397,18 @@ fn short(series: &str) -> &str {
 
 /// How far each chain's reference can be trusted: the uncertainty `reference.json` states for
 /// it (the extended-precision reference: its convergence difference or the rounding of its
-/// doubles, ~1e-16). A reference without one (a data folder from before, whose reference was a
-/// DOP853 run at 1e-13) is trusted to its largest difference to the independent recomputations
-/// of `check_reference.py` (`reference_check.json`) and, for one link, to the exact solution.
-/// With the extended-precision reference, `reference_check.json` holds the errors of those
-/// recomputations (checks of the tools), not the reference's.
+/// doubles, ~1e-16). `reference_check.json` (from `check_reference.py`) holds the errors of
+/// scipy's and Pinocchio's recomputations, i.e. checks of those tools, not of the reference.
 fn reference_floors(data: &Path) -> BTreeMap<String, f64> {
-    let read = |name: &str| -> Value {
-        std::fs::read_to_string(data.join(name))
-            .ok()
-            .and_then(|s| serde_json::from_str(&s).ok())
-            .unwrap_or(Value::Null)
-    };
-    let (check, reference) = (read("reference_check.json"), read("reference.json"));
-    let mut out = BTreeMap::new();
-    for n in CHAIN_NS {
-        let id = format!("chain-{n}");
-        if let Some(u) = reference[&id]["uncertainty"].as_f64() {
-            out.insert(id, u);
-            continue;
-        }
-        let mut u: Vec<f64> = check[&id]
-            .as_object()
-            .map(|o| o.values().filter_map(Value::as_f64).collect())
-            .unwrap_or_default();
-        u.extend(reference[&id]["diff_to_exact"].as_f64());
-        if let Some(m) = u.into_iter().reduce(f64::max) {
-            out.insert(id, m);
-        }
-    }
-    out
+    let reference: Value = std::fs::read_to_string(data.join("reference.json"))
+        .ok()
+        .and_then(|s| serde_json::from_str(&s).ok())
+        .unwrap_or(Value::Null);
+    CHAIN_NS
+        .iter()
+        .map(|n| format!("chain-{n}"))
+        .filter_map(|id| reference[&id]["uncertainty"].as_f64().map(|u| (id, u)))
+        .collect()
 }
 
 fn table(pts: &[Pt], tools: &[Value], floors: &BTreeMap<String, f64>) -> String {

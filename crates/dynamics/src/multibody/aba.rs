@@ -132,8 +132,7 @@ impl<T: Scalar> Model<T> {
         s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
-        if self.planar.is_some() && s.pl.len() == n + 1 && self.planar_aba(q, v, tau, f_ext, vdot, &mut s.pl)
-        {
+        if s.pl.len() == n + 1 && self.planar_aba(q, v, tau, f_ext, vdot, &mut s.pl) {
             return Ok(());
         }
         for (k, &l) in self.free_links.iter().enumerate() {
