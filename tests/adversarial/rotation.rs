@@ -7,10 +7,11 @@ use nalgebra::{Matrix3, Matrix4, Rotation3, UnitQuaternion, Vector3};
 use vectrix::frames::Frame;
 use vectrix::rotation::{
     Axis, AxisAngle, ChainLink, EulerAngles, EulerKind, EulerSequence, Quaternion, RigidDisplacement,
-    Rotation, Screw, canonical_half_turn_axis, chain_backward, chain_forward, check_rotation_matrix,
-    compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation,
-    compose_quaternion, compose_rotation_matrix, homogeneous, homogeneous_inverse, mrp_shadow,
-    nearest_rotation, orientation_about, quaternion_about, rotation_about, scaled_axis, sin_cos,
+    Rotation, RotationError, Screw, canonical_half_turn_axis, chain_backward, chain_forward,
+    check_rotation_matrix, compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs, compose_mrp,
+    compose_orientation, compose_quaternion, compose_rotation_matrix, homogeneous, homogeneous_inverse,
+    mrp_shadow, nearest_rotation, orientation_about, quaternion_about, rotation_about, scaled_axis, sin_cos,
+    sin_cos_slices,
 };
 use vectrix::tensor::{Rotor, Tensor};
 
@@ -428,5 +429,30 @@ cases! {
         }
         let (s, c) = sin_cos(0.5f32);
         assert_eq!((s, c), 0.5f32.sin_cos());
+    }
+    // sin_cos_slices (§2.12): many angles at once give sin_cos's bits element by element
+    // (hostile values, the reduction's boundary, NaN and ±∞ among ordinary ones, at every
+    // length from 0 to 9 so that every SIMD tail is taken); outputs of another length are a
+    // typed error and are left as they were.
+    sine_and_cosine_of_many ["sin_cos_slices"] {
+        let xs: Vec<f64> = hostile().chain([2.0e5, -2.0e5, 2.0e5 + 1.0, 1e-310, -0.0, 0.3, -7.0]).collect();
+        for len in 0..=9usize {
+            for start in 0..xs.len().saturating_sub(len) {
+                let x = &xs[start..start + len];
+                let (mut s, mut c) = (vec![0.0; len], vec![0.0; len]);
+                sin_cos_slices(x, &mut s, &mut c).expect("same lengths");
+                for k in 0..len {
+                    let (ws, wc) = sin_cos(x[k]);
+                    let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+                    assert!(same(s[k], ws) && same(c[k], wc), "sin_cos_slices at {:e}", x[k]);
+                }
+            }
+        }
+        let (mut s, mut c) = (vec![9.0; 3], vec![9.0; 2]);
+        assert!(matches!(
+            sin_cos_slices(&[1.0, 2.0, 3.0], &mut s, &mut c),
+            Err(RotationError::LengthMismatch { input: 3, output: 2 })
+        ));
+        assert_eq!((s, c), (vec![9.0; 3], vec![9.0; 2]));
     }
 }

@@ -55,6 +55,64 @@ macro_rules! simd_entry {
     };
 }
 
+/// sin xᵢ and cos xᵢ of many angles at once, in SIMD: for the other layers' loops over many
+/// angles (the joint angles of a planar chain, `vectrix-dynamics`), where one [`crate::sin_cos`]
+/// per element inside a longer loop would wait on that loop's chain. Each element is exactly
+/// what [`crate::sin_cos`] returns (fdlibm's kernels without fused multiply–add, within 1 ulp;
+/// `libm` beyond |x| = 2·10⁵ and for NaN or ±∞), with AVX2 when the CPU has it (detected when
+/// the program runs) and the portable build otherwise: the same bits either way.
+///
+/// Book: (2.12.17–19), the elementary rotations.
+///
+/// # Errors
+/// [`RotationError::LengthMismatch`] when `sin` or `cos` is not as long as `x` (nothing is
+/// written then).
+///
+/// ```
+/// let x = [0.0, 1.0, -2.5, 1e6];
+/// let (mut s, mut c) = ([0.0; 4], [0.0; 4]);
+/// vectrix_rotation::sin_cos_slices(&x, &mut s, &mut c).unwrap();
+/// for k in 0..4 {
+///     assert_eq!((s[k], c[k]), vectrix_rotation::sin_cos(x[k]));
+/// }
+/// ```
+pub fn sin_cos_slices(x: &[f64], sin: &mut [f64], cos: &mut [f64]) -> Result<(), RotationError> {
+    for out in [sin.len(), cos.len()] {
+        if out != x.len() {
+            return Err(RotationError::LengthMismatch { input: x.len(), output: out });
+        }
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        // AVX2 without FMA: the same operations, rounded the same, four lanes at a time
+        #[target_feature(enable = "avx2")]
+        fn avx2(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
+            sin_cos_all(x, sin, cos)
+        }
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: AVX2 was detected on this CPU just above.
+            unsafe { avx2(x, sin, cos) };
+            return Ok(());
+        }
+    }
+    sin_cos_all(x, sin, cos);
+    Ok(())
+}
+
+/// The body of [`sin_cos_slices`]: the branch-free kernel over every element, then `libm` for
+/// the elements beyond its range.
+#[inline(always)]
+fn sin_cos_all(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
+    for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
+        (*sk, *ck) = sin_cos::<false>(*xk);
+    }
+    for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
+        if xk.is_nan() || xk.abs() > SIN_COS_MAX {
+            (*sk, *ck) = xk.sin_cos();
+        }
+    }
+}
+
 simd_entry!(exp_simd => exp_all(thetas: &[Vector3<f64>], out: &mut [Quaternion<f64>]));
 simd_entry!(exp_vec_simd => exp_vec(thetas: &[Vector3<f64>], out: &mut Vec<Quaternion<f64>>));
 simd_entry!(euler_simd => euler_all(
@@ -454,5 +512,75 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The hard set of the joint angles: zeros of both signs, subnormals, tiny and huge,
+    /// multiples of π/2 and their neighbours (where the reduction cancels), the reduction's
+    /// boundary 2·10⁵ and beyond, and the non-finite values; plus a pseudo-random sweep.
+    fn joint_angles() -> Vec<f64> {
+        let mut x = vec![0.0, -0.0, 5e-324, -1e-310, 1e-20, 2e5, -2e5, 2e5 + 1e-10, 1e6, -3e8, 1e300];
+        x.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY]);
+        for k in -8i32..=8 {
+            let m = f64::from(k) * std::f64::consts::FRAC_PI_2;
+            x.extend([m, m.next_up(), m.next_down()]);
+        }
+        let mut seed = 0x2545_f491_4f6c_dd1d;
+        x.extend((0..257).map(|_| 80.0 * xorshift(&mut seed)));
+        x
+    }
+
+    /// Bit-identical to [`crate::sin_cos`] element by element, on the dispatched path (AVX2
+    /// here when the CPU has it) and the portable body alike, including NaN's bits' class.
+    #[test]
+    fn sin_cos_slices_is_sin_cos_element_by_element() {
+        let x = joint_angles();
+        let n = x.len();
+        let (mut s, mut c) = (vec![0.0; n], vec![0.0; n]);
+        sin_cos_slices(&x, &mut s, &mut c).unwrap();
+        let (mut s2, mut c2) = (vec![0.0; n], vec![0.0; n]);
+        sin_cos_all(&x, &mut s2, &mut c2);
+        for k in 0..n {
+            let (ws, wc) = crate::sin_cos(x[k]);
+            for (got, want) in [(s[k], ws), (c[k], wc), (s2[k], ws), (c2[k], wc)] {
+                assert!(
+                    got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                    "x = {:e}: got {got:e}, want {want:e}",
+                    x[k]
+                );
+            }
+        }
+        // and within an ulp or two of libm (the kernel's own accuracy, tested in `vmath`)
+        for k in (0..n).filter(|&k| x[k].is_finite() && x[k].abs() <= 1e6) {
+            let (ls, lc) = x[k].sin_cos();
+            assert!(
+                (s[k] - ls).abs() <= 2.0 * f64::EPSILON * ls.abs().max(f64::MIN_POSITIVE),
+                "sin {:e}",
+                x[k]
+            );
+            assert!(
+                (c[k] - lc).abs() <= 2.0 * f64::EPSILON * lc.abs().max(f64::MIN_POSITIVE),
+                "cos {:e}",
+                x[k]
+            );
+        }
+    }
+
+    /// Outputs of another length are a typed error, and nothing is written.
+    #[test]
+    fn sin_cos_slices_rejects_other_lengths() {
+        let x = [0.5; 5];
+        let (mut s, mut c) = ([7.0; 4], [7.0; 5]);
+        assert_eq!(
+            sin_cos_slices(&x, &mut s, &mut c),
+            Err(RotationError::LengthMismatch { input: 5, output: 4 })
+        );
+        assert_eq!((s, c), ([7.0; 4], [7.0; 5]));
+        let (mut s, mut c) = ([7.0; 5], [7.0; 6]);
+        assert_eq!(
+            sin_cos_slices(&x, &mut s, &mut c),
+            Err(RotationError::LengthMismatch { input: 5, output: 6 })
+        );
+        assert_eq!((s, c), ([7.0; 5], [7.0; 6]));
+        assert_eq!(sin_cos_slices(&[], &mut [], &mut []), Ok(()));
     }
 }

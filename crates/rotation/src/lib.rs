@@ -73,7 +73,7 @@ mod vmath;
 
 pub use axis::{Axis, orientation_about, quaternion_about, rotation_about};
 pub use axis_angle::AxisAngle;
-pub use batch::EulerBatch;
+pub use batch::{EulerBatch, sin_cos_slices};
 pub use compose::{
     compose_angle_vector, compose_coplanar, compose_euler, compose_gibbs, compose_mrp, compose_orientation,
     compose_quaternion, compose_rotation_matrix,

@@ -8,7 +8,7 @@ use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
 use super::model::Model;
-use super::planar::PlanarScratch;
+use super::planar::PlanarWork;
 use super::rnea::{JointWrench, LinkWrenches, joint_motion};
 use super::singular::{null_component, pivot_tol, psd_pinv3};
 use super::spatial::{Xform, cross_force, cross_motion, join, split};
@@ -29,9 +29,8 @@ pub struct AbaScratch<T: Scalar = f64> {
     v: Vec<Vector3<T>>,
     /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
     reach: Vec<f64>,
-    /// The planar passes' work space, one entry per segment and one for the ground (empty
-    /// unless the model is planar).
-    pub(crate) pl: Vec<PlanarScratch<T>>,
+    /// The planar passes' work space (`None` unless the model is planar).
+    pub(crate) pl: Option<PlanarWork<T>>,
 }
 
 impl<T: Scalar> Model<T> {
@@ -50,7 +49,7 @@ impl<T: Scalar> Model<T> {
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
-            pl: if self.planar.is_some() { vec![PlanarScratch::default(); n + 1] } else { Vec::new() },
+            pl: self.planar.as_ref().map(|_| PlanarWork::new(n)),
         }
     }
 
@@ -132,7 +131,10 @@ impl<T: Scalar> Model<T> {
         s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
-        if s.pl.len() == n + 1 && self.planar_aba(q, v, tau, f_ext, vdot, &mut s.pl) {
+        if let Some(pl) = &mut s.pl
+            && pl.seg.len() == n + 1
+            && self.planar_aba(q, v, tau, f_ext, vdot, pl)
+        {
             return Ok(());
         }
         for (k, &l) in self.free_links.iter().enumerate() {

@@ -9,6 +9,8 @@
 //! Book: §7.11 (chains), §6.3 (the moment of inertia about an axis); RBDA §2.16, Table 7.1.
 #![allow(non_snake_case)]
 
+use std::any::TypeId;
+
 use nalgebra::Vector3;
 use vectrix_tensor::Scalar;
 
@@ -187,6 +189,9 @@ pub(crate) struct PlanarScratch<T: Scalar> {
     v: [T; 2],
     c: [T; 2],
     d: [T; 2],
+    /// (d_y², −2d_x d_y, d_x²): êᵀCê = C₀₀d_y² − 2C₀₁d_xd_y + C₁₁d_x² for ê = â×d without
+    /// waiting on Cê.
+    ew: [T; 3],
     dir: [T; 2],
     ia: [T; 6],
     pa: [T; 3],
@@ -206,6 +211,7 @@ impl<T: Scalar> Default for PlanarScratch<T> {
             v: [z; 2],
             c: [z; 2],
             d: [z; 2],
+            ew: [z; 3],
             dir: [z; 2],
             ia: [z; 6],
             pa: [z; 3],
@@ -215,6 +221,22 @@ impl<T: Scalar> Default for PlanarScratch<T> {
             a: [z; 3],
             reach: 0.0,
         }
+    }
+}
+
+/// The planar passes' work space: one [`PlanarScratch`] per segment and one for the ground,
+/// and for `f64` the joint angles, their sines and their cosines (n each), computed together
+/// before the passes.
+#[derive(Debug, Clone)]
+pub(crate) struct PlanarWork<T: Scalar> {
+    pub seg: Vec<PlanarScratch<T>>,
+    pub trig: Vec<f64>,
+}
+
+impl<T: Scalar> PlanarWork<T> {
+    /// The work space of a planar model of `n` segments.
+    pub fn new(n: usize) -> Self {
+        Self { seg: vec![PlanarScratch::default(); n + 1], trig: vec![0.0; 3 * n] }
     }
 }
 
@@ -243,9 +265,10 @@ impl<T: Scalar> Model<T> {
         tau: &[T],
         f_ext: Option<&LinkWrenches<T>>,
         vdot: &mut [T],
-        s: &mut [PlanarScratch<T>],
+        work: &mut PlanarWork<T>,
     ) -> bool {
         let Some(pl) = &self.planar else { return false };
+        let (s, trig) = (&mut work.seg[..], &mut work.trig[..]);
         let n = pl.segs.len();
         let z = T::zero();
         // the ground, entry n: at rest, axes (û, ŵ), acceleration −g (its in-plane part) at
@@ -253,9 +276,40 @@ impl<T: Scalar> Model<T> {
         s[n] = PlanarScratch::default();
         s[n].cs = [T::one(), z];
         s[n].a = [z, -self.gravity.dot(&pl.u), -self.gravity.dot(&pl.w)];
-        // pass 1 (outward)
+        // pass 1 (outward). The parent's orientation and twist come from registers when it is
+        // the ground or the segment just done (a chain: no round trip through memory)
+        let ground = ([T::one(), z], z, [z; 2]);
+        let mut last = ground;
+        // the joint angles' (cos, sin) first, into `cs`: all at once in SIMD for f64 (inside
+        // the loop below each would wait on the loop's chain)
+        if TypeId::of::<T>() == TypeId::of::<f64>() && trig.len() == 3 * n {
+            let (x, rest) = trig.split_at_mut(n);
+            let (sn, cn) = rest.split_at_mut(n);
+            for (xk, ps) in x.iter_mut().zip(&pl.segs) {
+                *xk = if ps.joint == PlanarJoint::Revolute { q[ps.qi].re() } else { 0.0 };
+            }
+            if vectrix_rotation::sin_cos_slices(x, sn, cn).is_ok() {
+                for (e, (c, sv)) in s.iter_mut().zip(cn.iter().zip(sn.iter())) {
+                    e.cs = [T::lit(*c), T::lit(*sv)];
+                }
+            }
+        } else {
+            for (e, ps) in s.iter_mut().zip(&pl.segs) {
+                if ps.joint == PlanarJoint::Revolute {
+                    let (sv, c) = vectrix_rotation::sin_cos(q[ps.qi]);
+                    e.cs = [c, sv];
+                }
+            }
+        }
         for (i, ps) in pl.segs.iter().enumerate() {
-            let (cp, wp, vp) = (s[ps.parent].cs, s[ps.parent].w, s[ps.parent].v);
+            let (cp, wp, vp) = if ps.parent == n {
+                ground
+            } else if ps.parent + 1 == i {
+                last
+            } else {
+                let p = &s[ps.parent];
+                (p.cs, p.w, p.v)
+            };
             let mut r = ps.r;
             if ps.joint == PlanarJoint::Prismatic {
                 let x = q[ps.qi];
@@ -266,7 +320,7 @@ impl<T: Scalar> Model<T> {
             let e = &mut s[i];
             let (cs, wi) = match ps.joint {
                 PlanarJoint::Revolute => {
-                    let (sn, cn) = vectrix_rotation::sin_cos(q[ps.qi]);
+                    let [cn, sn] = e.cs;
                     let (sn, qd) = (sn * ps.sigma, v[ps.vi] * ps.sigma);
                     // c = (ω, v) ×m (q̇ σâ, 0) = (0, −σq̇ â×v)
                     e.c = [qd * vi[1], -(qd * vi[0])];
@@ -296,8 +350,10 @@ impl<T: Scalar> Model<T> {
             e.pa = [vi[0] * f[1] - vi[1] * f[0], -(wi * f[1]), wi * f[0]];
             e.cs = cs;
             e.d = d;
+            e.ew = [d[1] * d[1], -((d[0] + d[0]) * d[1]), d[0] * d[0]];
             e.w = wi;
             e.v = vi;
+            last = (cs, wi, vi);
         }
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
@@ -314,12 +370,27 @@ impl<T: Scalar> Model<T> {
                 e.reach = seg.own_reach;
             }
         }
-        // pass 2 (inward); the root's contributions land in the ground's entry, unused
+        // pass 2 (inward). A segment's contribution to its parent waits in registers and is
+        // added when the parent comes next (a chain), else stored before the next one is made;
+        // either way each parent sums its own part and its children's in the same order. The
+        // roots' contributions (to the ground) are dropped.
         let tol = pivot_tol::<T>();
+        let none = usize::MAX;
+        let (mut pend, mut pend_ia, mut pend_pa) = (none, [z; 6], [z; 3]);
         for (i, ps) in pl.segs.iter().enumerate().rev() {
             let e = &mut s[i];
-            let [a0, a1, a2, a3, a4, a5] = e.ia;
-            let [p0, p1, p2] = e.pa;
+            let (mut ia_i, mut pa_i) = (e.ia, e.pa);
+            if pend == i {
+                for (x, y) in ia_i.iter_mut().zip(pend_ia) {
+                    *x += y;
+                }
+                for (x, y) in pa_i.iter_mut().zip(pend_pa) {
+                    *x += y;
+                }
+                pend = none;
+            }
+            let [a0, a1, a2, a3, a4, a5] = ia_i;
+            let [p0, p1, p2] = pa_i;
             let [c1, c2] = e.c;
             let (ia, pa) = match ps.joint {
                 PlanarJoint::Revolute => {
@@ -339,11 +410,12 @@ impl<T: Scalar> Model<T> {
                     // UD⁻¹u = (column 0) D⁻¹ σu
                     let t = tau[ps.vi] * ps.sigma;
                     let su = t - p0;
-                    e.U = [a0, a1, a2];
-                    e.dinv = dinv;
-                    e.u = su;
                     let (b1, b2) = (a1 * dinv, a2 * dinv);
-                    let (i3, i4, i5) = (a3 - a1 * b1, a4 - a1 * b2, a5 - a2 * b2);
+                    // for pass 3: (column 0)/D = (1, b1, b2) and D⁻¹σu
+                    e.U = [T::one(), b1, b2];
+                    e.u = su * dinv;
+                    // the products first, then D⁻¹: the products do not wait for the reciprocal
+                    let (i3, i4, i5) = (a3 - a1 * a1 * dinv, a4 - a1 * a2 * dinv, a5 - a2 * a2 * dinv);
                     // pᵃ = pᴬ + Iᵃc + UD⁻¹u; its first entry is p0 + σu = στ
                     let pa = [t, p1 + i3 * c1 + i4 * c2 + b1 * su, p2 + i4 * c1 + i5 * c2 + b2 * su];
                     ([z, z, z, i3, i4, i5], pa)
@@ -376,7 +448,7 @@ impl<T: Scalar> Model<T> {
                     ];
                     (ia, pa)
                 }
-                PlanarJoint::Fixed => (e.ia, e.pa),
+                PlanarJoint::Fixed => (ia_i, pa_i),
             };
             // to the parent: Xᵀ I X with X = [[1, 0], [ê, 1]], ê = â×d: [[A + 2ê·b + êᵀCê,
             // (b + Cê)ᵀ], [b + Cê, C]]; forces n_p = n + ê·f. After a pin A = 0 and b = 0
@@ -385,39 +457,53 @@ impl<T: Scalar> Model<T> {
             let ex = [-dd[1], dd[0]];
             let ce = [ia[3] * ex[0] + ia[4] * ex[1], ia[4] * ex[0] + ia[5] * ex[1]];
             let (a, b) = if ps.joint == PlanarJoint::Revolute {
-                (ex[0] * ce[0] + ex[1] * ce[1], ce)
+                (e.ew[0] * ia[3] + e.ew[1] * ia[4] + e.ew[2] * ia[5], ce)
             } else {
                 let b = [ia[1] + ce[0], ia[2] + ce[1]];
                 (ia[0] + ex[0] * (ia[1] + b[0]) + ex[1] * (ia[2] + b[1]), b)
             };
             let nf = pa[0] + ex[0] * pa[1] + ex[1] * pa[2];
-            let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
-            let pe = &mut s[ps.parent];
-            pe.ia[0] += a;
-            pe.ia[1] += b[0];
-            pe.ia[2] += b[1];
-            pe.ia[3] += ia[3];
-            pe.ia[4] += ia[4];
-            pe.ia[5] += ia[5];
-            pe.pa[0] += nf;
-            pe.pa[1] += pa[1];
-            pe.pa[2] += pa[2];
-            if !pl.static_scale && self.segs[i].sub_mass > 0.0 {
+            if !pl.static_scale && self.segs[i].sub_mass > 0.0 && ps.parent < n {
+                let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
+                let pe = &mut s[ps.parent];
                 pe.reach = pe.reach.max(reach);
             }
+            if pend != none {
+                let pe = &mut s[pend];
+                for (x, y) in pe.ia.iter_mut().zip(pend_ia) {
+                    *x += y;
+                }
+                for (x, y) in pe.pa.iter_mut().zip(pend_pa) {
+                    *x += y;
+                }
+            }
+            (pend, pend_ia, pend_pa) = if ps.parent < n {
+                (ps.parent, [a, b[0], b[1], ia[3], ia[4], ia[5]], [nf, pa[1], pa[2]])
+            } else {
+                (none, [z; 6], [z; 3])
+            };
         }
-        // pass 3 (outward)
+        // pass 3 (outward), the parent's acceleration from registers as in pass 1
+        let ga = s[n].a;
+        let mut last = ga;
         for (i, ps) in pl.segs.iter().enumerate() {
-            let ap = s[ps.parent].a;
+            let ap = if ps.parent == n {
+                ga
+            } else if ps.parent + 1 == i {
+                last
+            } else {
+                s[ps.parent].a
+            };
             let e = &mut s[i];
             // X𝒜_p + c: the angular part carries over, the linear part shifts by α â×d
-            let a = [ap[0], ap[1] - ap[0] * e.d[1] + e.c[0], ap[2] + ap[0] * e.d[0] + e.c[1]];
+            let a = [ap[0], (ap[1] + e.c[0]) - ap[0] * e.d[1], (ap[2] + e.c[1]) + ap[0] * e.d[0]];
             e.a = match ps.joint {
                 PlanarJoint::Revolute => {
-                    // σq̈ = D⁻¹(σu − (column 0)ᵀ𝒜'), and 𝒜 = 𝒜' + (σq̈, 0, 0)
-                    let sq = e.dinv * (e.u - (e.U[0] * a[0] + e.U[1] * a[1] + e.U[2] * a[2]));
-                    vdot[ps.vi] = sq * ps.sigma;
-                    [a[0] + sq, a[1], a[2]]
+                    // σq̈ = D⁻¹(σu − (column 0)ᵀ𝒜') and 𝒜 = 𝒜' + (σq̈, 0, 0): the angular
+                    // part of 𝒜 is D⁻¹σu − b1𝒜'₁ − b2𝒜'₂ (𝒜'₀ cancels), and σq̈ = 𝒜₀ − 𝒜'₀
+                    let al = e.u - (e.U[1] * a[1] + e.U[2] * a[2]);
+                    vdot[ps.vi] = (al - a[0]) * ps.sigma;
+                    [al, a[1], a[2]]
                 }
                 PlanarJoint::Prismatic => {
                     let qdd = e.dinv * (e.u - (e.U[0] * a[0] + e.U[1] * a[1] + e.U[2] * a[2]));
@@ -426,6 +512,7 @@ impl<T: Scalar> Model<T> {
                 }
                 PlanarJoint::Fixed => a,
             };
+            last = e.a;
         }
         true
     }
@@ -548,7 +635,7 @@ mod tests {
             close(&fast, &slow, 1e-13);
             // the planar passes did the work (no fallback)
             let (mut out, mut s) = (vec![0.0; 5], planar.aba_scratch());
-            assert!(planar.planar_aba(&q, &v, &tau, Some(&w), &mut out, &mut s.pl));
+            assert!(planar.planar_aba(&q, &v, &tau, Some(&w), &mut out, s.pl.as_mut().unwrap()));
             assert_eq!(out, fast);
             let id = planar.rnea(&q, &v, &fast, Some(&w)).expect("valid");
             close(&id.tau, &tau, 1e-12);
@@ -582,6 +669,13 @@ mod tests {
             &a.iter().map(|x| x.re).collect::<Vec<_>>(),
             &b.iter().map(|x| x.re).collect::<Vec<_>>(),
             1e-13,
+        );
+        // the f64 passes take the joint angles' sines and cosines all at once (SIMD), the dual
+        // ones one by one from libm: the same passes, each sine within an ulp of the other
+        close(
+            &a.iter().map(|x| x.re).collect::<Vec<_>>(),
+            &m.aba(&q, &v, &tau, None).expect("definite"),
+            1e-14,
         );
         close(
             &a.iter().map(|x| x.eps).collect::<Vec<_>>(),
