@@ -65,6 +65,9 @@ pub(crate) struct Needs {
     pub rolling: bool,
     pub impacts: bool,
     pub loops: bool,
+    /// Every joint's coordinates are its velocities (pins, sleeves, collars, slots, welds: no
+    /// ball or free joint), numbered alike: q̇ = v is a copy.
+    pub qdot_is_v: bool,
 }
 
 impl Needs {
@@ -190,6 +193,10 @@ impl Scene {
             }
         }
         needs.loops = !built.loops.is_empty();
+        needs.qdot_is_v = built.model.nq() == built.model.nv()
+            && built.bodies.iter().all(|b| {
+                b.qi == b.vi && !matches!(b.joint, spec::JointSpec::Ball {} | spec::JointSpec::Free {})
+            });
         check_rolling_start(&built, src)?;
         for (k, c) in spec.checks.iter().enumerate() {
             if !["energy", "momentum", "angular_momentum"].contains(&c.as_str()) {

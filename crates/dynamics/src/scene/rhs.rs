@@ -144,7 +144,11 @@ impl Scene {
         let nq = b.model.nq();
         let (q, v) = y.split_at(nq);
         let (qd, vd) = out.split_at_mut(nq);
-        qdot(&b.bodies, q, v, qd);
+        if self.needs.qdot_is_v {
+            qd.copy_from_slice(v);
+        } else {
+            qdot(&b.bodies, q, v, qd);
+        }
         let ext = if self.needs.loads {
             kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
             w.tau.fill(0.0);

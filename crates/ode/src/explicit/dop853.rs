@@ -2,7 +2,7 @@
 
 use super::dense::{DenseStep, hermite_part, weighted};
 use super::dop853_coefficients::{A, B, BHH, C, D, E};
-use crate::state::{State, check_stages, combine, eval, eval_unchecked};
+use crate::state::{State, check_stages, combine, combine_into, eval, eval_unchecked};
 use crate::{OdeError, Work};
 
 /// Nodes of the 12 stages of the 8th-order solution (c₁₂ = 1).
@@ -25,10 +25,12 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
     work: &mut Work,
 ) -> Result<(S, f64), OdeError> {
     k.truncate(1);
-    // kᵢ = f(t + cᵢh, y + h Σ aᵢⱼ kⱼ), unrolled so that every row of A is a constant
+    // kᵢ = f(t + cᵢh, y + h Σ aᵢⱼ kⱼ), unrolled so that every row of A is a constant; the
+    // stages' arguments share one state
+    let mut yi = y.clone();
     macro_rules! stages {
         ($($i:literal)*) => {$(
-            let yi = combine(y, h, A12[$i], k);
+            combine_into(&mut yi, y, h, A12[$i], k);
             let ki = eval_unchecked(f, t + C12[$i] * h, &yi, &mut work.fevals);
             k.push(ki);
         )*};
