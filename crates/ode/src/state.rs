@@ -106,9 +106,26 @@ pub(crate) fn combine<S: State>(y: &S, h: f64, c: &[f64], k: &[S]) -> S {
 /// stage fewer).
 #[inline(always)]
 pub(crate) fn combine_into<S: State>(out: &mut S, y: &S, h: f64, c: &[f64], k: &[S]) {
-    out.as_mut_slice().copy_from_slice(y.as_slice());
-    for (cj, kj) in c.iter().zip(&k[..c.len()]) {
-        out.add_scaled(h * cj, kj);
+    let o = out.as_mut_slice();
+    let n = o.len();
+    let y = &y.as_slice()[..n];
+    let k = &k[..c.len()];
+    // element by element, the stages inner: each component is ((y + a₁k₁) + a₂k₂) + …, the
+    // sums of the stage-by-stage form in the same order (the same bits), without storing and
+    // reloading the partial sums between stages
+    if k.iter().all(|kj| kj.as_slice().len() == n) {
+        for e in 0..n {
+            let mut acc = y[e];
+            for (cj, kj) in c.iter().zip(k) {
+                acc += (h * cj) * kj.as_slice()[e];
+            }
+            o[e] = acc;
+        }
+    } else {
+        o.copy_from_slice(y);
+        for (cj, kj) in c.iter().zip(k) {
+            out.add_scaled(h * cj, kj);
+        }
     }
 }
 
@@ -187,11 +204,10 @@ pub(crate) fn check_stages<S: State>(
             expected: n,
         });
     }
-    let mut acc = k[first].clone();
-    for ki in &k[first + 1..] {
-        acc.add_scaled(1.0, ki);
-    }
-    if acc.as_slice().iter().sum::<f64>().is_finite() {
+    // one sum of every component of every stage: finite unless some component is not (or the
+    // sum overflows, which the scan below tells apart); no state allocated
+    let sum: f64 = k[first..].iter().map(|ki| ki.as_slice().iter().sum::<f64>()).sum();
+    if sum.is_finite() {
         return Ok(());
     }
     for (i, ki) in k.iter().enumerate().skip(first) {
