@@ -11,7 +11,7 @@ use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
 use crate::series::{angle_0_pi, atan2, canonical_sign, cos_sinc_of_square, norm3, sin_cos, sinc};
-use crate::vmath::madd;
+use crate::vmath::{SIN_COS_MAX, madd};
 use crate::{AxisAngle, Quaternion, RotationError, check_rotation_matrix};
 
 impl<T: Scalar> Quaternion<T> {
@@ -35,9 +35,19 @@ impl<T: Scalar> Quaternion<T> {
     /// Shepperd/Markley without the orthonormality check, for hot paths whose input is a
     /// rotation by construction. The result is normalised and canonical (η ≥ 0).
     ///
+    /// For `f64` (chosen at compile time by type) the same pivot and the same roundings (for a
+    /// rotation, bit for bit), with |4p·q| by a plain square root (for a rotation |4p·q|² = 4p² ≥ 1: the four
+    /// pivots 4η², 4εᵢ² sum to 4) and the canonical sign folded into the scale factor; inlined
+    /// always, so that it sits in the caller's loop.
+    ///
     /// Book: §2.15 (2.15.8–10), largest pivot among {tr 𝓡, 𝓡₁₁, 𝓡₂₂, 𝓡₃₃}.
-    #[inline]
+    #[inline(always)]
     pub fn from_rotation_matrix_unchecked(r: &Matrix3<T>) -> Self {
+        // The type test is resolved at compile time (every `Scalar` is `'static`).
+        if let Some(m) = (r as &dyn Any).downcast_ref::<Matrix3<f64>>() {
+            let q = shepperd_f64(m);
+            return Self::new(T::lit(q.a), T::lit(q.b), T::lit(q.c), T::lit(q.d));
+        }
         let q = Self::shepperd_unnormalized(r);
         (q * (T::one() / q.norm())).canonical()
     }
@@ -192,20 +202,23 @@ impl<T: Scalar> Quaternion<T> {
     #[doc(alias = "to_rotation_matrix")]
     pub fn rotation_matrix(&self) -> Matrix3<T> {
         let (a, b, c, d) = (self.a, self.b, self.c, self.d);
-        let two = T::lit(2.0);
-        let (bb, cc, dd) = (b * b, c * c, d * d);
-        let (ab, ac, ad, bc, bd, cd) = (a * b, a * c, a * d, b * c, b * d, c * d);
+        // The products with 2b, 2c, 2d: doubling is exact, so 2(bc − ad) = (2b)c − a(2d) to the
+        // bit (barring underflow), and the 9 doublings of the entries become 3 (24 flops, not 30).
+        let (b2, c2, d2) = (b + b, c + c, d + d);
+        let (bb, cc, dd) = (b * b2, c * c2, d * d2);
+        let (ab, ac, ad) = (a * b2, a * c2, a * d2);
+        let (bc, bd, cd) = (b * c2, b * d2, c * d2);
         let one = T::one();
         Matrix3::new(
-            one - two * (cc + dd),
-            two * (bc - ad),
-            two * (ac + bd),
-            two * (ad + bc),
-            one - two * (bb + dd),
-            two * (cd - ab),
-            two * (bd - ac),
-            two * (ab + cd),
-            one - two * (bb + cc),
+            one - (cc + dd),
+            bc - ad,
+            ac + bd,
+            ad + bc,
+            one - (bb + dd),
+            cd - ab,
+            bd - ac,
+            ab + cd,
+            one - (bb + cc),
         )
     }
 
@@ -229,10 +242,35 @@ impl<T: Scalar> Quaternion<T> {
     /// q = (cos θ/2, sin θ/2 n̂) (2.15.20) for any θ and nonzero axis (normalised here),
     /// returned canonical (η ≥ 0).
     ///
+    /// For `f64` (chosen at compile time by type) with a unit axis (|n̂|² within 4ε of 1) and
+    /// |θ/2| ≤ 2·10⁵, inlined always into the caller: vmath's branch-free fdlibm sine and cosine
+    /// of θ/2 (each within 1 ulp), with fused multiply–add where the CPU has it (detected when
+    /// the program runs), so the last bit may differ between machines.
+    ///
     /// # Errors
     /// [`RotationError::Zero`] for a zero axis, [`RotationError::NonFinite`].
-    #[inline]
+    #[inline(always)]
     pub fn from_axis_angle(axis: &Vector3<T>, theta: T) -> Result<Self, RotationError> {
+        // The type tests are resolved at compile time (every `Scalar` is `'static`).
+        if let (Some(n), Some(&t)) =
+            ((axis as &dyn Any).downcast_ref::<Vector3<f64>>(), (&theta as &dyn Any).downcast_ref::<f64>())
+        {
+            // A unit axis, as below; the comparisons are false for NaN (the checks below).
+            let h = t * 0.5;
+            if (n.norm_squared() - 1.0).abs() <= 4.0 * f64::EPSILON && h.abs() <= SIN_COS_MAX {
+                let q = axis_angle_f64(n, h);
+                return Ok(Self::new(T::lit(q.a), T::lit(q.b), T::lit(q.c), T::lit(q.d)));
+            }
+        }
+        Self::from_axis_angle_general(axis, theta)
+    }
+
+    /// [`Self::from_axis_angle`] for every other scalar, and for `f64` with an axis that is not
+    /// unit or a huge or non-finite angle: out of line, so that the `f64` fast path stays small.
+    ///
+    /// Book: (2.15.20).
+    #[inline(never)]
+    fn from_axis_angle_general(axis: &Vector3<T>, theta: T) -> Result<Self, RotationError> {
         // A unit axis (|n̂|² within 4ε of 1, so |n̂| within 2ε) needs no normalisation: the
         // quaternion's norm is then 1 to rounding either way.
         let n2 = axis.norm_squared();
@@ -572,6 +610,71 @@ fn near_half_turn_f64(r: &Matrix3<f64>, theta: f64) -> Vector3<f64> {
     }
 }
 
+/// [`Quaternion::from_rotation_matrix_unchecked`] for `f64`: the largest pivot's 4p·q
+/// ([`Quaternion::shepperd_unnormalized`]), divided by its norm √(4p·q · 4p·q) with the sign of
+/// its η, the same roundings as the generic code. The trace pivot's η = 1 + tr 𝓡 ≥ 1 > 0
+/// (tr 𝓡 ≥ 𝓡ᵢᵢ for every i gives tr 𝓡 ≥ 0); the others' η = 4εᵢη may have either sign.
+///
+/// Book: §2.15 (2.15.8–10); (2.15.20) (η ≥ 0).
+#[inline(always)]
+fn shepperd_f64(r: &Matrix3<f64>) -> Quaternion<f64> {
+    let q = Quaternion::shepperd_unnormalized(r);
+    // |4p·q|² = 4p² ∈ [1, 16] for a rotation: no overflow, no underflow (`Quaternion::norm`'s
+    // scaled branch never runs there).
+    let k = 1.0 / q.norm_squared().sqrt();
+    if q.a > 0.0 {
+        q * k
+    } else if q.a < 0.0 {
+        q * -k
+    } else {
+        // η = 0 (θ = π), or NaN input
+        half_turn_f64(q, k)
+    }
+}
+
+/// The end of [`shepperd_f64`] at η = 0 (a half-turn, or a NaN matrix), out of line: the
+/// canonical sign of ε (DESIGN §4), as [`Quaternion::canonical`].
+///
+/// Book: Fact 2.11.5 (the ± at π).
+#[cold]
+#[inline(never)]
+fn half_turn_f64(q: Quaternion<f64>, k: f64) -> Quaternion<f64> {
+    (q * k).canonical()
+}
+
+/// q = (cos h, sin h n̂) for a unit `f64` axis n̂ and h = θ/2 with |h| ≤ [`SIN_COS_MAX`]
+/// ([`Quaternion::from_axis_angle`]), the sine and cosine with fused multiply–add where the CPU
+/// has it (detected when the program runs, as [`matrix_log_f64`]; the fused build is called,
+/// and returns the pair in registers). The two builds may differ in the last bit; both are
+/// within 1 ulp of sin h and cos h.
+///
+/// Book: (2.15.20).
+#[inline(always)]
+fn axis_angle_f64(n: &Vector3<f64>, h: f64) -> Quaternion<f64> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "fma")]
+        fn with_fma(h: f64) -> (f64, f64) {
+            crate::vmath::sin_cos::<true>(h)
+        }
+        if !FMA_BUILTIN && std::is_x86_feature_detected!("fma") {
+            // SAFETY: FMA was detected on this CPU just above.
+            return axis_angle_of(n, unsafe { with_fma(h) });
+        }
+    }
+    axis_angle_of(n, crate::vmath::sin_cos::<FMA_BUILTIN>(h))
+}
+
+/// (cos h, sin h n̂) from (sin h, cos h), made canonical when cos h ≤ 0 (|θ| ≥ π).
+///
+/// Book: (2.15.20) (η = cos(θ/2) ≥ 0 for θ ∈ [0, π]).
+#[inline(always)]
+fn axis_angle_of(n: &Vector3<f64>, (s, c): (f64, f64)) -> Quaternion<f64> {
+    let q = Quaternion::from_parts(c, n * s);
+    // η = cos(θ/2) < 0 only for |θ| > π.
+    if c <= 0.0 { q.canonical() } else { q }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -606,6 +709,135 @@ mod tests {
                     assert!(err <= 4.0 * f64::EPSILON * scale, "θ = {th:e}, n = {n:?}: {got:?} vs {want:?}");
                 }
             }
+        }
+    }
+
+    /// Hard rotations for the `f64` paths below: tiny and half-turn angles about the hard
+    /// axes, and random unit quaternions with every component the largest.
+    fn hard_quaternions() -> Vec<Quaternion<f64>> {
+        let pi = core::f64::consts::PI;
+        let mut qs = Vec::new();
+        for n in [
+            Vector3::new(1.0, 0.0, 0.0),
+            Vector3::new(0.0, -1.0, 0.0),
+            Vector3::new(0.0, 0.0, 1.0),
+            Vector3::new(1.0, 2.0, 2.0) / 3.0,
+            Vector3::new(-0.3, 0.1, 0.95).normalize(),
+            Vector3::new(0.0, -1.0, 1e-9).normalize(),
+        ] {
+            for th in [0.0, 1e-300, 1e-16, 1e-8, 1e-4, 0.5, 1.5, 2.0, 3.0, pi - 1e-8, pi] {
+                qs.push(Quaternion::from_axis_angle_general(&n, th).unwrap());
+            }
+        }
+        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        for _ in 0..2000 {
+            let q = Quaternion::new(rng(), rng(), rng(), rng());
+            qs.push(q * (1.0 / q.norm()));
+        }
+        qs
+    }
+
+    /// The `f64` Shepperd path returns the generic code's bits: the same pivot, the same norm
+    /// (no scaling is needed for a rotation), the same canonical sign, also at η = 0.
+    #[test]
+    fn f64_shepperd_matches_the_generic_code_bitwise() {
+        let mut mats: Vec<Matrix3<f64>> = hard_quaternions().iter().map(|q| q.rotation_matrix()).collect();
+        // exact half-turns: η = 0 in every pivot, the canonical sign decides
+        mats.extend([
+            Matrix3::new(1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -1.0),
+            Matrix3::new(-1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0),
+            Matrix3::new(-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0),
+            Matrix3::new(
+                -1.0 / 9.0,
+                4.0 / 9.0,
+                -8.0 / 9.0,
+                4.0 / 9.0,
+                -7.0 / 9.0,
+                -4.0 / 9.0,
+                -8.0 / 9.0,
+                -4.0 / 9.0,
+                -1.0 / 9.0,
+            ),
+        ]);
+        for r in &mats {
+            let q = Quaternion::shepperd_unnormalized(r);
+            let want = (q * (1.0 / q.norm())).canonical();
+            let got = shepperd_f64(r);
+            let bits = |q: Quaternion<f64>| [q.a, q.b, q.c, q.d].map(f64::to_bits);
+            assert_eq!(bits(got), bits(want), "{r:?}");
+            assert!(got.a >= 0.0);
+        }
+        let nan = shepperd_f64(&Matrix3::from_element(f64::NAN));
+        assert!(nan.a.is_nan());
+    }
+
+    /// 𝓡(q) with the doubled factors returns the bits of the textbook 1 − 2(c² + d²), 2(bc − ad), …
+    #[test]
+    fn rotation_matrix_matches_the_doubled_entries_bitwise() {
+        for q in hard_quaternions() {
+            let (a, b, c, d) = (q.a, q.b, q.c, q.d);
+            let want = Matrix3::new(
+                1.0 - 2.0 * (c * c + d * d),
+                2.0 * (b * c - a * d),
+                2.0 * (a * c + b * d),
+                2.0 * (a * d + b * c),
+                1.0 - 2.0 * (b * b + d * d),
+                2.0 * (c * d - a * b),
+                2.0 * (b * d - a * c),
+                2.0 * (a * b + c * d),
+                1.0 - 2.0 * (b * b + c * c),
+            );
+            let got = q.rotation_matrix();
+            for (g, w) in got.iter().zip(want.iter()) {
+                assert_eq!(g.to_bits(), w.to_bits(), "{q:?}");
+            }
+        }
+    }
+
+    /// Both builds of the `f64` axis-angle kernel: without fused multiply–add the generic code's
+    /// bits; with it within 1 ulp of sin h, cos h (libm) per component, every θ in [−4π, 4π]
+    /// on a grid and at the hard angles, canonical (η ≥ 0); the public function takes the fast
+    /// path for a unit axis and still reports a zero or non-finite axis.
+    #[test]
+    fn f64_axis_angle_kernels_match_the_generic_code() {
+        let pi = core::f64::consts::PI;
+        let n = Vector3::new(1.0, 2.0, 2.0) / 3.0;
+        let mut angles: Vec<f64> = (-400..=400).map(|k| k as f64 * pi / 100.0 + 1e-3).collect();
+        angles.extend([0.0, -0.0, 1e-300, 1e-16, 1e-8, pi, -pi, pi - 1e-12, 2.0 * pi, 4e5, -4e5]);
+        for &th in &angles {
+            let want = Quaternion::from_axis_angle_general(&n, th).unwrap();
+            let plain = axis_angle_of(&n, crate::vmath::sin_cos::<false>(th * 0.5));
+            let bits = |q: Quaternion<f64>| [q.a, q.b, q.c, q.d].map(f64::to_bits);
+            assert_eq!(bits(plain), bits(want), "θ = {th:e}");
+            let fused = axis_angle_of(&n, crate::vmath::sin_cos::<true>(th * 0.5));
+            let (s, c) = (th * 0.5).sin_cos();
+            let sign = if c < 0.0 || (c == 0.0 && s < 0.0) { -1.0 } else { 1.0 };
+            for (g, w) in [fused.a, fused.b, fused.c, fused.d].iter().zip([c, n.x * s, n.y * s, n.z * s]) {
+                assert!((g - sign * w).abs() <= 2.0 * f64::EPSILON, "θ = {th:e}: {fused:?}");
+            }
+            assert!(fused.a >= 0.0 && plain.a >= 0.0);
+            assert_eq!(Quaternion::from_axis_angle(&n, th).unwrap(), if fma() { fused } else { plain });
+        }
+        assert!(Quaternion::from_axis_angle(&Vector3::zeros(), 1.0).is_err());
+        assert!(Quaternion::from_axis_angle(&n, f64::NAN).is_err());
+        assert!(Quaternion::from_axis_angle(&Vector3::new(f64::NAN, 0.0, 0.0), 1.0).is_err());
+    }
+
+    /// Whether this machine runs the fused build of the dispatched `f64` kernels.
+    fn fma() -> bool {
+        #[cfg(target_arch = "x86_64")]
+        {
+            FMA_BUILTIN || std::is_x86_feature_detected!("fma")
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            FMA_BUILTIN
         }
     }
 }
