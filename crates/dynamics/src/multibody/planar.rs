@@ -181,7 +181,8 @@ fn in_plane_basis(a: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
 /// segment's orientation (cos φ, sin φ), its twist (ω, v of the body point at the
 /// origin), the bias acceleration (its turning part is zero), the offset from the parent's
 /// origin, a slider's direction, the articulated inertia (6 entries of a symmetric 3×3,
-/// (ω, vx, vy) ordering) and bias force, U, D⁻¹, u, and the acceleration.
+/// (ω, vx, vy) ordering) and bias force, U, D⁻¹, u (for a pin U/D and D⁻¹σu, whose D⁻¹ is
+/// then folded in), and the acceleration.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlanarScratch<T: Scalar> {
     cs: [T; 2],
@@ -282,16 +283,18 @@ impl<T: Scalar> Model<T> {
         let mut last = ground;
         // the joint angles' (cos, sin) first, into `cs`: all at once in SIMD for f64 (inside
         // the loop below each would wait on the loop's chain)
-        if TypeId::of::<T>() == TypeId::of::<f64>() && trig.len() == 3 * n {
+        let simd = TypeId::of::<T>() == TypeId::of::<f64>() && trig.len() == 3 * n && {
             let (x, rest) = trig.split_at_mut(n);
             let (sn, cn) = rest.split_at_mut(n);
             for (xk, ps) in x.iter_mut().zip(&pl.segs) {
                 *xk = if ps.joint == PlanarJoint::Revolute { q[ps.qi].re() } else { 0.0 };
             }
-            if vectrix_rotation::sin_cos_slices(x, sn, cn).is_ok() {
-                for (e, (c, sv)) in s.iter_mut().zip(cn.iter().zip(sn.iter())) {
-                    e.cs = [T::lit(*c), T::lit(*sv)];
-                }
+            vectrix_rotation::sin_cos_slices(x, sn, cn).is_ok()
+        };
+        if simd {
+            let (sn, cn) = trig[n..].split_at(n);
+            for (e, (c, sv)) in s.iter_mut().zip(cn.iter().zip(sn)) {
+                e.cs = [T::lit(*c), T::lit(*sv)];
             }
         } else {
             for (e, ps) in s.iter_mut().zip(&pl.segs) {
