@@ -23,16 +23,12 @@ use nalgebra::Vector3;
 
 use crate::euler_extract::{GIMBAL_LOCK_TOL, assemble, parity};
 use crate::series::{all_finite, wrap_near};
-use crate::vmath::{HALF_PI_SQUARED, SIN_COS_MAX, atan2, cos_sinc_of_square, madd, sin_cos};
+use crate::vmath::{FMA_BUILTIN, HALF_PI_SQUARED, SIN_COS_MAX, atan2, cos_sinc_of_square, madd, sin_cos};
 use crate::{EulerAngles, EulerSequence, EulerSolution, Quaternion, ROTATION_TOL, RotationError};
 
 /// Elements per block: the unit of the fast-path choice (all |Θ| ≤ π) and of the rare-element
 /// fix-up.
 const BLOCK: usize = 64;
-
-/// `true` when the build target guarantees fused multiply–add (aarch64, or x86-64 compiled with
-/// `+fma`); otherwise `simd_entry!` detects AVX2 + FMA when the program runs.
-const FMA_BUILTIN: bool = cfg!(any(target_feature = "fma", target_arch = "aarch64"));
 
 /// Defines `$name(args)`, which runs `$body::<true>` compiled for AVX2 + FMA when the CPU has
 /// them (detected when the program runs) and the portable build `$body::<FMA_BUILTIN>` otherwise.

@@ -11,7 +11,7 @@ use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
 use crate::series::{angle_0_pi, atan2, canonical_sign, cos_sinc_of_square, norm3, sin_cos, sinc};
-use crate::vmath::{SIN_COS_MAX, madd};
+use crate::vmath::{FMA_BUILTIN, SIN_COS_MAX, madd};
 use crate::{AxisAngle, Quaternion, RotationError, check_rotation_matrix};
 
 impl<T: Scalar> Quaternion<T> {
@@ -510,10 +510,6 @@ fn phi_over_sin<const F: bool>(t: f64) -> f64 {
     let g = madd::<F>(q2, t8, madd::<F>(q1, t4, q0));
     madd::<F>(t, g, 1.0)
 }
-
-/// `true` when the build target guarantees fused multiply–add (aarch64, or x86-64 compiled with
-/// `+fma`); otherwise [`matrix_log_f64`] detects it when the program runs.
-const FMA_BUILTIN: bool = cfg!(any(target_feature = "fma", target_arch = "aarch64"));
 
 /// [`matrix_log_kernel`] with fused multiply–add where the CPU has it (detected when the program
 /// runs, as the batched conversions do): the polynomial's chain is half as long. The two builds

@@ -16,6 +16,11 @@
 // source); they round to the same doubles as the shorter forms clippy suggests.
 #![allow(clippy::excessive_precision)]
 
+/// `true` when the build target guarantees fused multiply–add (aarch64, or x86-64 compiled with
+/// `+fma`); otherwise the callers detect it when the program runs (`batch`'s SIMD entries, the
+/// f64 matrix log and axis-angle paths of `euler_parameters`).
+pub(crate) const FMA_BUILTIN: bool = cfg!(any(target_feature = "fma", target_arch = "aarch64"));
+
 /// a·b + c, fused when `F`.
 #[inline(always)]
 pub(crate) fn madd<const F: bool>(a: f64, b: f64, c: f64) -> f64 {
