@@ -93,17 +93,13 @@ impl State for f64 {
 #[inline(always)]
 pub(crate) fn combine<S: State>(y: &S, h: f64, c: &[f64], k: &[S]) -> S {
     let mut out = y.clone();
-    // k holds at least the c.len() stages already computed; slicing once gives the loop a
-    // trip count the compiler can see (constant for a constant tableau row: fully unrolled)
-    for (cj, kj) in c.iter().zip(&k[..c.len()]) {
-        out.add_scaled(h * cj, kj);
-    }
+    combine_into(&mut out, y, h, c, k);
     out
 }
 
-/// [`combine`] into `out` (a state of the same dimension, overwritten): the same sums in the
-/// same order, so the same bits, without a new state per stage (heap states: one allocation a
-/// stage fewer).
+/// [`combine`] into `out` (a state of the same dimension, overwritten), without a new state
+/// per stage (heap states: one allocation a stage fewer). k holds at least the c.len() stages
+/// already computed; slicing once gives the loops a trip count the compiler can see.
 #[inline(always)]
 pub(crate) fn combine_into<S: State>(out: &mut S, y: &S, h: f64, c: &[f64], k: &[S]) {
     let o = out.as_mut_slice();
