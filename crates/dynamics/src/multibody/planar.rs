@@ -182,7 +182,8 @@ fn in_plane_basis(a: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
 /// origin), the bias acceleration (its turning part is zero), the offset from the parent's
 /// origin, a slider's direction, the articulated inertia (6 entries of a symmetric 3×3,
 /// (ω, vx, vy) ordering) and bias force, U, D⁻¹, u (for a pin U/D and D⁻¹σu, whose D⁻¹ is
-/// then folded in), and the acceleration.
+/// then folded in), for a pin the two terms of its angular acceleration that do not depend on
+/// the parent's, and the acceleration.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlanarScratch<T: Scalar> {
     cs: [T; 2],
@@ -199,6 +200,10 @@ pub(crate) struct PlanarScratch<T: Scalar> {
     U: [T; 3],
     dinv: T,
     u: T,
+    /// A pin's D⁻¹σu − (U/D)ᵀc and (U/D)ᵀ(d_y, −d_x): pass 3 gives its angular acceleration
+    /// as u0 + ud·α_p − (U/D)₁₂ᵀ𝒜_p, one multiply-add on the parent's from the chain.
+    u0: T,
+    ud: T,
     a: [T; 3],
     reach: f64,
 }
@@ -219,6 +224,8 @@ impl<T: Scalar> Default for PlanarScratch<T> {
             U: [z; 3],
             dinv: z,
             u: z,
+            u0: z,
+            ud: z,
             a: [z; 3],
             reach: 0.0,
         }
@@ -245,6 +252,16 @@ impl<T: Scalar> PlanarWork<T> {
 #[inline(always)]
 fn rot<T: Scalar>(cs: &[T; 2], x: &[T; 2]) -> [T; 2] {
     [cs[0] * x[0] - cs[1] * x[1], cs[1] * x[0] + cs[0] * x[1]]
+}
+
+/// What a segment's articulated inertia I = [[A, bᵀ], [b, C]] (the 6 entries of a symmetric
+/// 3×3) carries to its parent through X = [[1, 0], [ê, 1]], ê = â×d: the first row (a, b) of
+/// XᵀIX = [[A + 2ê·b + êᵀCê, (b + Cê)ᵀ], [b + Cê, C]] (C is carried over as it is).
+#[inline(always)]
+fn to_parent<T: Scalar>(ia: &[T; 6], ex: [T; 2]) -> (T, [T; 2]) {
+    let ce = [ia[3] * ex[0] + ia[4] * ex[1], ia[4] * ex[0] + ia[5] * ex[1]];
+    let b = [ia[1] + ce[0], ia[2] + ce[1]];
+    (ia[0] + ex[0] * (ia[1] + b[0]) + ex[1] * (ia[2] + b[1]), b)
 }
 
 impl<T: Scalar> Model<T> {
@@ -395,7 +412,12 @@ impl<T: Scalar> Model<T> {
             let [a0, a1, a2, a3, a4, a5] = ia_i;
             let [p0, p1, p2] = pa_i;
             let [c1, c2] = e.c;
-            let (ia, pa) = match ps.joint {
+            let dd = e.d;
+            let ex = [-dd[1], dd[0]];
+            // (Iᵃ, pᵃ) and what goes to the parent through X = [[1, 0], [ê, 1]], ê = â×d:
+            // Xᵀ I X = [[A + 2ê·b + êᵀCê, (b + Cê)ᵀ], [b + Cê, C]]; it carries (a, b) =
+            // (A + 2ê·b + êᵀCê, b + Cê) in its first row
+            let (ia, pa, a, b) = match ps.joint {
                 PlanarJoint::Revolute => {
                     // S = (σ, 0, 0): U = σ(column 0), D = a0, and Iᵃ's row and column 0
                     // vanish exactly
@@ -408,6 +430,14 @@ impl<T: Scalar> Model<T> {
                     if a0.re() <= tol * scale {
                         return false;
                     }
+                    // the quantities of the products that do not need D⁻¹ first, so that the
+                    // chain from one pin's D to its parent's is D⁻¹, one product and two sums
+                    let (a11, a12, a22) = (a1 * a1, a1 * a2, a2 * a2);
+                    // with α = (a1, a2) and g = êᵀα: êᵀA₂₂ê, A₂₂ê, gα
+                    let g = ex[0] * a1 + ex[1] * a2;
+                    let ea = e.ew[0] * a3 + e.ew[1] * a4 + e.ew[2] * a5;
+                    let xa = [a3 * ex[0] + a4 * ex[1], a4 * ex[0] + a5 * ex[1]];
+                    let (gg, ga) = (g * g, [a1 * g, a2 * g]);
                     let dinv = a0.recip();
                     // u = τ − σp0, stored as σu = στ − p0, and U stored unsigned, so that
                     // UD⁻¹u = (column 0) D⁻¹ σu
@@ -417,11 +447,17 @@ impl<T: Scalar> Model<T> {
                     // for pass 3: (column 0)/D = (1, b1, b2) and D⁻¹σu
                     e.U = [T::one(), b1, b2];
                     e.u = su * dinv;
-                    // the products first, then D⁻¹: the products do not wait for the reciprocal
-                    let (i3, i4, i5) = (a3 - a1 * a1 * dinv, a4 - a1 * a2 * dinv, a5 - a2 * a2 * dinv);
+                    e.u0 = e.u - (b1 * c1 + b2 * c2);
+                    e.ud = b1 * dd[1] - b2 * dd[0];
+                    // C = A₂₂ − ααᵀD⁻¹ (row and column 0 of Iᵃ vanish exactly)
+                    let (i3, i4, i5) = (a3 - a11 * dinv, a4 - a12 * dinv, a5 - a22 * dinv);
                     // pᵃ = pᴬ + Iᵃc + UD⁻¹u; its first entry is p0 + σu = στ
                     let pa = [t, p1 + i3 * c1 + i4 * c2 + b1 * su, p2 + i4 * c1 + i5 * c2 + b2 * su];
-                    ([z, z, z, i3, i4, i5], pa)
+                    // A = 0 and b = 0 after a pin: a = êᵀCê = êᵀA₂₂ê − g²D⁻¹, b = Cê =
+                    // A₂₂ê − αgD⁻¹ (the zeros are not added: x + 0 is not foldable for floats)
+                    let a = ea - gg * dinv;
+                    let b = [xa[0] - ga[0] * dinv, xa[1] - ga[1] * dinv];
+                    ([z, z, z, i3, i4, i5], pa, a, b)
                 }
                 PlanarJoint::Prismatic => {
                     let [dx, dy] = e.dir;
@@ -449,22 +485,15 @@ impl<T: Scalar> Model<T> {
                         p1 + ia[3] * c1 + ia[4] * c2 + k[1] * u,
                         p2 + ia[4] * c1 + ia[5] * c2 + k[2] * u,
                     ];
-                    (ia, pa)
+                    let (a, b) = to_parent(&ia, ex);
+                    (ia, pa, a, b)
                 }
-                PlanarJoint::Fixed => (ia_i, pa_i),
+                PlanarJoint::Fixed => {
+                    let (a, b) = to_parent(&ia_i, ex);
+                    (ia_i, pa_i, a, b)
+                }
             };
-            // to the parent: Xᵀ I X with X = [[1, 0], [ê, 1]], ê = â×d: [[A + 2ê·b + êᵀCê,
-            // (b + Cê)ᵀ], [b + Cê, C]]; forces n_p = n + ê·f. After a pin A = 0 and b = 0
-            // exactly (the zeros are not added: x + 0 is not foldable for floats)
-            let dd = e.d;
-            let ex = [-dd[1], dd[0]];
-            let ce = [ia[3] * ex[0] + ia[4] * ex[1], ia[4] * ex[0] + ia[5] * ex[1]];
-            let (a, b) = if ps.joint == PlanarJoint::Revolute {
-                (e.ew[0] * ia[3] + e.ew[1] * ia[4] + e.ew[2] * ia[5], ce)
-            } else {
-                let b = [ia[1] + ce[0], ia[2] + ce[1]];
-                (ia[0] + ex[0] * (ia[1] + b[0]) + ex[1] * (ia[2] + b[1]), b)
-            };
+            // forces n_p = n + ê·f
             let nf = pa[0] + ex[0] * pa[1] + ex[1] * pa[2];
             if !pl.static_scale && self.segs[i].sub_mass > 0.0 && ps.parent < n {
                 let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
@@ -498,13 +527,15 @@ impl<T: Scalar> Model<T> {
                 s[ps.parent].a
             };
             let e = &mut s[i];
-            // X𝒜_p + c: the angular part carries over, the linear part shifts by α â×d
+            // 𝒜' = X𝒜_p + c: the angular part carries over, the linear part shifts by α â×d
             let a = [ap[0], (ap[1] + e.c[0]) - ap[0] * e.d[1], (ap[2] + e.c[1]) + ap[0] * e.d[0]];
             e.a = match ps.joint {
                 PlanarJoint::Revolute => {
                     // σq̈ = D⁻¹(σu − (column 0)ᵀ𝒜') and 𝒜 = 𝒜' + (σq̈, 0, 0): the angular
-                    // part of 𝒜 is D⁻¹σu − b1𝒜'₁ − b2𝒜'₂ (𝒜'₀ cancels), and σq̈ = 𝒜₀ − 𝒜'₀
-                    let al = e.u - (e.U[1] * a[1] + e.U[2] * a[2]);
+                    // part of 𝒜 is D⁻¹σu − b1𝒜'₁ − b2𝒜'₂ (𝒜'₀ cancels), and σq̈ = 𝒜₀ − 𝒜'₀.
+                    // With 𝒜' written out: u0 + ud·𝒜_p₀ − (b1𝒜_p₁ + b2𝒜_p₂), which waits on
+                    // the parent's acceleration for one product and two sums, not for 𝒜'
+                    let al = (e.u0 + e.ud * ap[0]) - (e.U[1] * ap[1] + e.U[2] * ap[2]);
                     vdot[ps.vi] = (al - a[0]) * ps.sigma;
                     [al, a[1], a[2]]
                 }
