@@ -112,6 +112,34 @@ fn kepler_scene_error_reads_position_and_velocity() {
     assert!(err < 1e-8, "{err:e}");
 }
 
+/// The frontier's tolerance ladder ends at 1e-15 (scipy's at 2.2e-14) because DOP853 on
+/// Kepler e = 0.9 is still truncation-bound there: against the exact solution (Kepler's
+/// equation) its end error falls below 1e-12 at rtol = atol = 1e-15, through the library and
+/// through the scene file (1e-14 leaves it at ≈ 1.7e-12 and 2.6e-12: without the last rung
+/// the scene route has no point at 1e-12 at all).
+#[test]
+fn kepler_reaches_1e_12_at_the_last_rung() {
+    use nalgebra::Vector4;
+    use vectrix::ode::explicit::Adaptive;
+    let exact = KEPLER.exact(KEPLER.t_end());
+    let library = |tol: f64| {
+        let s = Adaptive::dop853()
+            .rtol(tol)
+            .atol(tol)
+            .solve(|t, y: &Vector4<f64>| KEPLER.rhs(t, y), 0.0, &KEPLER.y0(), KEPLER.t_end())
+            .expect("runs");
+        KEPLER.error(s.last())
+    };
+    let scene = |tol: f64| {
+        let y = run_final_state(&kepler_scene("dop853", tol));
+        max_abs_diff(&[y[0], y[1], y[7], y[8]], exact.as_slice())
+    };
+    for (route, err) in [("library", &library as &dyn Fn(f64) -> f64), ("scene", &scene)] {
+        let e15 = err(1e-15);
+        assert!(e15 < 1e-12, "{route}: rtol = atol = 1e-15 gives {e15:e}");
+    }
+}
+
 /// The pendulum scene (a particle on a pin, g = l = 1) is θ̈ = −sin θ: its end state is the
 /// exact elliptic solution.
 #[test]
