@@ -38,6 +38,10 @@ pub(crate) struct Segment<T: Scalar> {
     pub placement_is_shift: bool,
     /// A pin or slider along a coordinate axis: (axis index, negative direction).
     pub coord_axis: Option<(usize, bool)>,
+    /// The parent's orientation is the ground's exactly, whatever q (every segment from the
+    /// ground to the parent is a slider or a weld behind a placement without rotation: the
+    /// sliders of a free joint): composing with the parent is then a shift.
+    pub parent_upright: bool,
 }
 
 /// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA, generic
@@ -234,6 +238,7 @@ impl Model<f64> {
                     own_reach,
                     placement_is_shift: placement.E == Matrix3::identity(),
                     coord_axis: coordinate_axis(elem),
+                    parent_upright: false,
                 });
                 parent = Some(segs.len() - 1);
                 placement = Xform::identity();
@@ -241,6 +246,18 @@ impl Model<f64> {
                 vi += elem.nv();
             }
             link_seg[i] = segs.len() - 1;
+        }
+        // parents first: a segment keeps the ground's orientation when its parent does (or it
+        // is a root) and it neither turns nor sits behind a turned placement
+        let mut upright = vec![false; segs.len()];
+        for i in 0..segs.len() {
+            let parent_upright = segs[i].parent.is_none_or(|p| upright[p]);
+            if let Some(p) = segs[i].parent {
+                segs[i].parent_upright = upright[p];
+            }
+            upright[i] = parent_upright
+                && segs[i].placement_is_shift
+                && matches!(segs[i].elem, Elem::Prismatic(_) | Elem::Fixed);
         }
         // subtree sums, tips to base (children come after their parents)
         for i in (0..segs.len()).rev() {
@@ -376,6 +393,7 @@ impl Model<f64> {
                     own_reach: s.own_reach,
                     placement_is_shift: s.placement_is_shift,
                     coord_axis: s.coord_axis,
+                    parent_upright: s.parent_upright,
                 })
                 .collect(),
             link_seg: self.link_seg.clone(),
@@ -474,10 +492,13 @@ impl<T: Scalar> Model<T> {
         // a slider behind a placement without rotation keeps the parent's orientation
         // (1·𝓞 = 𝓞 exactly): only the origin moves
         if let (Some(p), true, Elem::Prismatic(a)) = (parent, s.placement_is_shift, &s.elem) {
-            return Xform { E: p.E, r: p.r + p.E.tr_mul(&(s.placement.r + a * q[s.qi])) };
+            let shift = s.placement.r + a * q[s.qi];
+            return Xform { E: p.E, r: p.r + if s.parent_upright { shift } else { p.E.tr_mul(&shift) } };
         }
         let x = self.seg_xform(i, q);
         match parent {
+            // the parent's orientation is exactly the ground's (1 ∘ x: a shift)
+            Some(p) if s.parent_upright => Xform { E: x.E, r: p.r + x.r },
             Some(p) => p.then(&x),
             None => x,
         }
@@ -529,5 +550,54 @@ pub struct PosesScratch<T: Scalar = f64>(Vec<Xform<T>>);
 impl<T: Scalar> Default for PosesScratch<T> {
     fn default() -> Self {
         Self(Vec::new())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::{Matrix3, Vector3};
+
+    use super::super::joint::{Joint, Link};
+    use super::Model;
+
+    /// Behind a free joint's sliders the orientation is exactly the ground's, so composing with
+    /// them is a shift: the free body's pose is (𝓡(q)ᵀ, offset + (x, y, z)) with 𝓡 the rotation
+    /// of the normalized Euler parameters (η, ε), 𝓡 = (η² − εᵀε)1 + 2εεᵀ + 2ηε^× (2.15.x), and
+    /// a pin child about ẑ at d composes as 𝓞 = 𝓡_z(θ)ᵀ𝓞₀, r = r₀ + 𝓞₀ᵀd; matrices built here
+    /// by hand, not by the model's code.
+    #[test]
+    fn poses_behind_a_free_joint() {
+        let (offset, d) = (Vector3::new(0.5, -0.2, 0.1), Vector3::new(0.3, 0.7, -0.4));
+        let links = [
+            Link::new(None, Joint::Free, offset, 2.0, Vector3::new(0.1, 0.0, 0.2), Matrix3::identity()),
+            Link::new(
+                Some(0),
+                Joint::Pin { axis: Vector3::z() },
+                d,
+                1.0,
+                Vector3::zeros(),
+                Matrix3::identity(),
+            ),
+        ];
+        let m = Model::new(&links).expect("valid");
+        // an unnormalized quaternion (the joint normalizes it) and a pin angle
+        let (x, eta, eps, th): (Vector3<f64>, f64, Vector3<f64>, f64) =
+            (Vector3::new(1.5, -2.0, 0.75), 0.6, Vector3::new(-0.4, 1.1, 0.3), 0.9);
+        let n = (eta * eta + eps.norm_squared()).sqrt();
+        let (eta, eps) = (eta / n, eps / n);
+        let cross = Matrix3::new(0.0, -eps.z, eps.y, eps.z, 0.0, -eps.x, -eps.y, eps.x, 0.0);
+        let r = Matrix3::identity() * (eta * eta - eps.norm_squared())
+            + eps * eps.transpose() * 2.0
+            + cross * (2.0 * eta);
+        let e0 = r.transpose();
+        let r0 = offset + x;
+        let (s, c) = th.sin_cos();
+        let e1 = Matrix3::new(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0) * e0;
+        let r1 = r0 + e0.transpose() * d;
+        let q = [x.x, x.y, x.z, 0.6 * 2.0, -0.4 * 2.0, 1.1 * 2.0, 0.3 * 2.0, th];
+        let poses = m.poses(&q).expect("valid q");
+        let tol = 4.0 * f64::EPSILON;
+        assert!((poses[0].0 - e0).amax() <= tol && (poses[0].1 - r0).amax() <= tol, "{poses:?}");
+        assert!((poses[1].0 - e1).amax() <= tol && (poses[1].1 - r1).amax() <= 2.0 * tol, "{poses:?}");
     }
 }
