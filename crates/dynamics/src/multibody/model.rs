@@ -562,7 +562,8 @@ mod tests {
 
     /// Behind a free joint's sliders the orientation is exactly the ground's, so composing with
     /// them is a shift: the free body's pose is (𝓡(q)ᵀ, offset + (x, y, z)) with 𝓡 the rotation
-    /// of the normalized Euler parameters (η, ε), 𝓡 = (η² − εᵀε)1 + 2εεᵀ + 2ηε^× (2.15.x), and
+    /// of the normalized Euler parameters (η, ε), 𝓡 = (2η² − 1)1 + 2ηε^× + 2εεᵀ (Fact 2.15.5;
+    /// 2η² − 1 = η² − εᵀε for a unit quaternion), and
     /// a pin child about ẑ at d composes as 𝓞 = 𝓡_z(θ)ᵀ𝓞₀, r = r₀ + 𝓞₀ᵀd; matrices built here
     /// by hand, not by the model's code.
     #[test]
