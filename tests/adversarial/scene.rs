@@ -266,6 +266,34 @@ cases! {
         }
     }
 
+    // Contacts (§7.13): a ball dropped on a plane with hostile restitutions and heights
+    // never ends below the plane or with non-finite rows; contacts.csv has one line per event
+    // and no non-finite number; imperial speeds are the SI ones over 0.3048 exactly.
+    scene_contacts ["Run::contacts_csv"] {
+        let ball = |h: f64, e: f64| format!(
+            "name = \"b\"\nduration = 2.0\nsamples = 40\noutputs = [\"position:b\"]\n[[bodies]]\nname = \"b\"\n\
+             joint = {{ type = \"free\" }}\nmass = {{ shape = \"sphere\", mass = 1.0, radius = 0.1 }}\n\
+             q = [0.0, 0.0, {}, 1.0, 0.0, 0.0, 0.0]\n[[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, 0.0, -9.81]\n\
+             [[effects]]\ntype = \"contact_plane\"\nbody = \"b\"\nradius = 0.1\npoint = [0.0, 0.0, 0.0]\n\
+             normal = [0.0, 0.0, 1.0]\nrestitution = {e}\nfriction = 0.0\n", 0.1 + h);
+        for h in [0.0, 1e-300, 1e-12, 0.5, 1e3] {
+            for e in [0.0, 1e-300, 0.5, 1.0 - 1e-12, 1.0] {
+                let Ok(s) = Scene::from_toml(&ball(h, e), "b.toml") else { continue };
+                err_or(s.run(&mut |_| {}), "contact run", |r| {
+                    let z = r.column("position:b.z").unwrap();
+                    let csv = r.contacts_csv();
+                    z.iter().all(|z| z.is_finite() && *z >= 0.1 - 1e-9)
+                        && csv.lines().count() == 1 + r.contacts.len()
+                        && !csv.contains("NaN") && !csv.contains("inf")
+                });
+            }
+        }
+        let r = Scene::from_toml(&ball(1.0, 0.5), "b.toml").unwrap().run(&mut |_| {}).unwrap();
+        let imp = r.clone().in_units(UnitSystem::Imperial).unwrap();
+        assert!(imp.contacts_csv().starts_with("t [s],effect,event,closing_speed [ft/s]"));
+        assert!(imp.contacts.iter().zip(&r.contacts).all(|(a, b)| (a.closing_speed * 0.3048 - b.closing_speed).abs() <= 2.0 * f64::EPSILON * b.closing_speed));
+    }
+
     // Linearization (§12.6): the hanging double pendulum of unit masses and rods has
     // ω² = (g/l)(2 ± √2), purely imaginary poles; LinearModel::new refuses non-finite
     // entries and shapes that disagree, and its modes have ωn = |λ|.

@@ -107,7 +107,10 @@ pub(crate) fn y_label(run: &Run, o: &str) -> String {
 pub(crate) fn write_scene(dir: &Path, scene: &Scene, run: &Run) -> Result<(), BoxError> {
     std::fs::write(dir.join("trajectory.csv"), run.to_csv())?;
     std::fs::write(dir.join("summary.json"), summary_json(scene, run)?)?;
-    let mut taken = vec!["trajectory".to_string(), "summary".to_string()];
+    let mut taken = vec!["trajectory".to_string(), "summary".to_string(), "contacts".to_string()];
+    if !run.contacts.is_empty() {
+        std::fs::write(dir.join("contacts.csv"), run.contacts_csv())?;
+    }
     for o in &scene.spec().outputs {
         let mut chart = LineChart::new(format!("{}: {o}", run.scene), "t [s]", y_label(run, o));
         for (k, c) in columns_of(run, o) {

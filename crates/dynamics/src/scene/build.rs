@@ -576,6 +576,21 @@ fn effect(
         }
         Ok(i)
     };
+    // impacts and resting contact act on the sphere alone: it may carry no other body
+    let alone = |name: &str, k: &str| -> Result<usize, SceneError> {
+        let i = free(name, k)?;
+        if let Some(child) = bodies.iter().find(|c| c.parent == Some(i)) {
+            return Err(src.invalid(
+                key(k),
+                format!(
+                    "body `{name}` carries body `{}`; valid: a contact's sphere on a free joint that carries no \
+                     other body",
+                    child.name
+                ),
+            ));
+        }
+        Ok(i)
+    };
     let restitution = |x: f64| {
         if (0.0..=1.0).contains(&x) {
             Ok(x)
@@ -630,8 +645,8 @@ fn effect(
         },
         EffectSpec::ContactSpheres { a, b, radius_a, radius_b, restitution: e, friction } => {
             Effect::Spheres {
-                a: free(a, "a")?,
-                b: free(b, "b")?,
+                a: alone(a, "a")?,
+                b: alone(b, "b")?,
                 ra: nonneg(*radius_a, "radius_a", path, src)?,
                 rb: nonneg(*radius_b, "radius_b", path, src)?,
                 e: restitution(*e)?,
@@ -639,7 +654,7 @@ fn effect(
             }
         }
         EffectSpec::ContactPlane { body, radius, point, normal, restitution: e, friction } => Effect::Plane {
-            body: free(body, "body")?,
+            body: alone(body, "body")?,
             r: nonneg(*radius, "radius", path, src)?,
             point: v3(*point),
             n: unit(*normal, "normal", path, src)?,

@@ -55,32 +55,15 @@ impl Scene {
         }
     }
 
-    /// Every declared contact in declaration order: its gap (sphere–sphere:
-    /// |x_a − x_b| − r_a − r_b; sphere–plane: (x − p)·n − r; negative when penetrating), the
-    /// position that the gap follows (x_a − x_b, or x) and its size (r_a + r_b, or r).
-    pub(crate) fn contact_geometry(&self, kin: &Kin) -> Vec<(f64, Vector3<f64>, f64)> {
-        let c = |i: usize| kin.point(&(Some(i), self.built.bodies[i].com)).0;
-        self.built
-            .effects
-            .iter()
-            .filter_map(|e| match e {
-                Effect::Spheres { a, b, ra, rb, .. } => {
-                    let d = c(*a) - c(*b);
-                    Some((d.norm() - ra - rb, d, ra + rb))
-                }
-                Effect::Plane { body, r, point, n, .. } => {
-                    let x = c(*body);
-                    Some(((x - point).dot(n) - r, x, *r))
-                }
-                _ => None,
-            })
-            .collect()
-    }
-
-    /// Resolves every touching, approaching contact once; returns how many impacts occurred.
-    pub(crate) fn impacts(&self, kin: &Kin, v: &mut [f64]) -> usize {
-        let mut count = 0;
-        for e in &self.built.effects {
+    /// Resolves every touching, approaching contact that is not resting, once; returns the
+    /// impacts as (contact, closing speed, opening speed) along the normal.
+    pub(crate) fn impacts(&self, kin: &Kin, v: &mut [f64], resting: &[bool]) -> Vec<(usize, f64, f64)> {
+        let mut out = Vec::new();
+        for (c, &k) in self.contacts.iter().enumerate() {
+            if resting.get(c).copied().unwrap_or(false) {
+                continue;
+            }
+            let e = &self.built.effects[k];
             let (ra_, rb_, n, e_, mu) = match e {
                 Effect::Spheres { a, b, ra, rb, e, mu } => {
                     let (xa, xb) = (
@@ -122,8 +105,8 @@ impl Scene {
             if let Some(rb) = &rb_ {
                 self.kick(kin, rb, &(-j), v);
             }
-            count += 1;
+            out.push((c, -un, -un * e_));
         }
-        count
+        out
     }
 }

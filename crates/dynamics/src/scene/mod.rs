@@ -11,6 +11,7 @@
 //! Book: §7.11 (trees), ch. 6 (force elements), §7.13 (impacts), §8.3 (energy).
 
 mod build;
+mod contacts;
 mod error;
 mod forces;
 mod impacts;
@@ -22,11 +23,13 @@ mod outputs;
 mod project;
 mod quantities;
 mod query;
+mod resting;
 mod rhs;
 mod run;
 mod source;
 pub mod spec;
 
+pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME_REL};
 pub use error::SceneError;
 pub use invariants::Invariant;
 pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
@@ -121,6 +124,8 @@ pub struct Scene {
     invariants: Vec<Invariant>,
     /// The length scale of the constraint tolerances (see [`CONSTRAINT_TOL`]).
     pub(crate) loop_scale: f64,
+    /// The contact effects' indices in `built.effects`, in declaration order.
+    pub(crate) contacts: Vec<usize>,
 }
 
 impl std::fmt::Debug for Scene {
@@ -216,10 +221,13 @@ impl Scene {
             outputs,
             invariants,
             loop_scale: 1.0,
+            contacts: Vec::new(),
         };
+        scene.contacts = scene.contact_effects();
         scene.loop_scale = scene.constraint_scale();
         scene.assemble(src)?;
         scene.check_start(src)?;
+        scene.check_contacts_start(src)?;
         Ok(scene)
     }
 
@@ -242,6 +250,24 @@ impl Scene {
                 ),
             )
         })
+    }
+
+    /// No sphere may start inside its plane or another sphere (beyond a rounding of its size).
+    fn check_contacts_start(&self, src: &SceneSource) -> Result<(), SceneError> {
+        let gaps = self.gaps(&self.initial_state()).map_err(|m| src.invalid("bodies", m))?;
+        for (g, &k) in gaps.iter().zip(&self.contacts) {
+            if g.gap < -1e-9 * g.size {
+                return Err(src.invalid(
+                    format!("effects[{k}]"),
+                    format!(
+                        "the contact starts penetrating by {:e} m; valid: spheres that start apart or touching \
+                         (gap ≥ 0)",
+                        -g.gap
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// The scene as declared.

@@ -120,7 +120,20 @@ impl Scene {
         out: &mut [f64],
         w: &mut RhsScratch,
     ) -> Result<(), String> {
-        self.deriv_lambda(t, y, out, w).map(|_| ())
+        self.deriv_lambda(t, y, out, w, &[]).map(|_| ())
+    }
+
+    /// [`Scene::deriv_into`] with the resting contacts (`resting[c]`: contact c rests on its
+    /// plane and pushes with its normal force, see `resting`).
+    pub(crate) fn deriv_resting(
+        &self,
+        t: f64,
+        y: &[f64],
+        out: &mut [f64],
+        w: &mut RhsScratch,
+        resting: &[bool],
+    ) -> Result<(), String> {
+        self.deriv_lambda(t, y, out, w, resting).map(|_| ())
     }
 
     /// The multipliers λ of the constraint rows (loops in loop order, then rolling contacts)
@@ -128,7 +141,7 @@ impl Scene {
     pub(crate) fn multipliers(&self, t: f64, y: &[f64]) -> Result<DVector<f64>, String> {
         let mut out = vec![0.0; y.len()];
         Ok(self
-            .deriv_lambda(t, y, &mut out, &mut RhsScratch::new(self))?
+            .deriv_lambda(t, y, &mut out, &mut RhsScratch::new(self), &[])?
             .unwrap_or_else(|| DVector::zeros(0)))
     }
 
@@ -139,6 +152,7 @@ impl Scene {
         y: &[f64],
         out: &mut [f64],
         w: &mut RhsScratch,
+        resting: &[bool],
     ) -> Result<Option<DVector<f64>>, String> {
         let b = &self.built;
         let nq = b.model.nq();
@@ -168,6 +182,12 @@ impl Scene {
             let (a, lambda) = self.constrained_solve(&w.kin, q, vd, &mut w.keep)?;
             vd.copy_from_slice(a.as_slice());
             return Ok(Some(lambda));
+        }
+        if resting.contains(&true) {
+            if !self.needs.loads {
+                kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
+            }
+            self.rest_forces(&w.kin, resting, vd);
         }
         Ok(None)
     }

@@ -12,11 +12,12 @@ use std::time::Instant;
 
 use nalgebra::Vector3;
 use serde::Serialize;
-use vectrix_ode::explicit::{Adaptive, Stepper, bracket_zero};
+use vectrix_ode::explicit::{Adaptive, Stepper};
 use vectrix_ode::{Accuracy, OdeError};
 use vectrix_units::{Dimension, UnitSystem};
 
 use super::build::Src;
+use super::contacts::{ContactEvent, ContactEventKind, Contacts, NextContact};
 use super::kin::{Kin, kinematics, normalize};
 use super::project::{ConstraintViolation, ProjectScratch};
 use super::rhs::RhsScratch;
@@ -31,8 +32,6 @@ pub const DEFAULT_MAX_WALL_SECONDS: f64 = 600.0;
 pub const MAX_SAMPLES: usize = 1_000_000;
 /// Most output values of a scene (rows × columns), which bounds its memory (8 bytes each).
 pub const MAX_SAMPLE_VALUES: usize = 50_000_000;
-/// Most points at which one step's contact gaps are scanned.
-const MAX_CONTACT_SCAN: usize = 1024;
 /// A run whose pace predicts more than this multiple of a budget stops at once (fail fast).
 const FAIL_FAST_FACTOR: f64 = 10.0;
 
@@ -232,6 +231,9 @@ pub struct Run {
     /// For scenes with loops or rolling contacts: the largest violation the integrator left at
     /// a step end before it was projected away (the drift that projection corrects).
     pub max_constraint_drift: Option<ConstraintViolation>,
+    /// The contact events in time order (impacts, comes to rest, lift-off), at most
+    /// [`super::MAX_CONTACT_EVENTS`] (impacts beyond are counted in [`RunWork::impacts`]).
+    pub contacts: Vec<ContactEvent>,
 }
 
 impl Run {
@@ -286,8 +288,36 @@ impl Run {
             dr.max_abs = c.from_si(dr.max_abs).map_err(fail)?;
             dr.scale = c.from_si(dr.scale).map_err(fail)?;
         }
+        let c = system.converter(Dimension::VELOCITY).map_err(fail)?;
+        for e in &mut self.contacts {
+            e.closing_speed = c.from_si(e.closing_speed).map_err(fail)?;
+            e.opening_speed = c.from_si(e.opening_speed).map_err(fail)?;
+        }
         self.unit_system = system.name();
         Ok(self)
+    }
+
+    /// contacts.csv: one line per contact event (impact, rest, lift-off) with the normal
+    /// speeds before and after, in the run's units (see [`ContactEvent`]).
+    pub fn contacts_csv(&self) -> String {
+        let speed = if self.unit_system == UnitSystem::Si.name() {
+            "m/s".to_string()
+        } else {
+            UnitSystem::Imperial.label(Dimension::VELOCITY)
+        };
+        let mut s = format!("t [s],effect,event,closing_speed [{speed}],opening_speed [{speed}]\n");
+        for e in &self.contacts {
+            let kind = match e.kind {
+                ContactEventKind::Impact => "impact",
+                ContactEventKind::Rest => "rest",
+                ContactEventKind::LiftOff => "lift_off",
+            };
+            s.push_str(&format!(
+                "{:e},{},{kind},{:e},{:e}\n",
+                e.t, e.effect, e.closing_speed, e.opening_speed
+            ));
+        }
+        s
     }
 
     /// `true` when the run reached its duration.
@@ -439,6 +469,7 @@ impl Scene {
             stop: None,
             max_constraint_violation: None,
             max_constraint_drift: None,
+            contacts: Vec::new(),
         };
         let constrained = self.has_constraints();
         let mut sample_projection = ProjectScratch::default();
@@ -480,8 +511,19 @@ impl Scene {
         };
 
         let mut y0 = self.initial_state();
+        // contacts: which rest, and what happened (the right-hand side reads `resting`)
+        let contacts = std::cell::RefCell::new(Contacts {
+            resting: vec![false; self.contacts.len()],
+            effect: self.contacts.clone(),
+            events: Vec::new(),
+        });
+        // a rebound shorter than tau_min comes to rest; the contact scan splits no shorter piece
+        // than a quarter of it, so a flight of tau_min is always seen
+        let tau_min = super::REST_TIME_REL * duration;
         if self.needs.impacts {
-            run.work.impacts += self.resolve_contacts(&mut y0).map_err(|e| fail(0.0, e))?;
+            self.impact_at(0.0, &mut y0, &mut contacts.borrow_mut(), &mut run.work)
+                .map_err(|e| fail(0.0, e))?;
+            self.settle(0.0, &mut y0, &mut contacts.borrow_mut(), tau_min).map_err(|e| fail(0.0, e))?;
         }
         if constrained {
             let (before, after) = self.project(&mut y0, &mut step_projection).map_err(|e| fail(0.0, e))?;
@@ -504,7 +546,7 @@ impl Scene {
         let mut scratch = RhsScratch::new(self);
         let f = |t: f64, y: &Vec<f64>| {
             let mut out = vec![0.0; y.len()];
-            if let Err(e) = self.deriv_into(t, y, &mut out, &mut scratch) {
+            if let Err(e) = self.deriv_resting(t, y, &mut out, &mut scratch, &contacts.borrow().resting) {
                 failure.borrow_mut().get_or_insert(e);
                 out.fill(f64::NAN);
             }
@@ -523,7 +565,8 @@ impl Scene {
         stops.push(duration);
         let mut stop_at = 0;
         let mut st = Stepper::new(&self.solver, f, 0.0, y0, stops[0]).map_err(ode_err)?;
-        let mut geo = self.geometry(st.y()).map_err(|e| fail(0.0, e))?;
+        let mut geo =
+            if self.needs.impacts { self.gaps(st.y()).map_err(|e| fail(0.0, e))? } else { Vec::new() };
         let mut last_check = 0usize;
 
         loop {
@@ -554,44 +597,24 @@ impl Scene {
                 Err(e) => return Err(ode_err(e)),
             }
             let (t0, t1) = (st.step_start().unwrap_or(0.0), st.t());
-            // the first contact that closes during the step, located on the interpolant: the
-            // gap is scanned at ⌈4|Δr|/size⌉ points of the step (Δr: how far the gap's
-            // position moved), so that no contact is stepped over
-            let mut event: Option<f64> = None;
+            // the first contact event of the step: a touch located on the interpolant, or a
+            // resting contact's lift-off
+            let mut event = None;
             if self.needs.impacts {
-                let geo1 = self.geometry(st.y()).map_err(|e| fail(t1, e))?;
-                for c in 0..geo1.len() {
-                    if geo[c].0 <= 0.0 || geo[c].0.is_nan() {
-                        continue;
-                    }
-                    let moved = (geo1[c].1 - geo[c].1).norm() / geo[c].2.max(f64::MIN_POSITIVE);
-                    let n = (4.0 * moved).ceil().clamp(1.0, MAX_CONTACT_SCAN as f64) as usize;
-                    let mut a = (t0, geo[c].0);
-                    for k in 1..=n {
-                        let tk = if k == n { t1 } else { t0 + (t1 - t0) * (k as f64 / n as f64) };
-                        let gk = if k == n {
-                            geo1[c].0
-                        } else {
-                            let d = st.dense().map_err(ode_err)?.eval(tk);
-                            self.geometry(&d).map_err(|e| fail(tk, e))?[c].0
-                        };
-                        if gk <= 0.0 {
-                            // the first instant known to touch (g ≤ 0): the contact is resolved there
-                            let d = st.dense().map_err(ode_err)?.clone();
-                            let g = |t: f64| self.geometry(&d.eval(t)).map_or(-1.0, |g| g[c].0);
-                            let (_, tz) = bracket_zero(g, a, (tk, gk));
-                            event = Some(event.map_or(tz, |e: f64| e.min(tz)));
-                            break;
-                        }
-                        if event.is_some_and(|e| tk >= e) {
-                            break;
-                        }
-                        a = (tk, gk);
-                    }
-                }
-                geo = geo1;
+                let g1 = self.gaps(st.y()).map_err(|e| fail(t1, e))?;
+                let dense = st.dense().map_err(ode_err)?.clone();
+                let found = self.next_contact_event(
+                    &dense,
+                    (t0, &geo),
+                    (t1, &g1),
+                    st.y(),
+                    &contacts.borrow(),
+                    tau_min,
+                );
+                event = found.map_err(|e| fail(t1, e))?;
+                geo = g1;
             }
-            let t_end = event.unwrap_or(t1);
+            let t_end = event.map_or(t1, |e: NextContact| e.t());
             // samples in (t0, t_end] from the dense output (exactly y at the step end)
             while next_sample <= spec.samples && sample_time(next_sample) <= t_end {
                 let ts = sample_time(next_sample);
@@ -604,38 +627,65 @@ impl Scene {
                 }
                 next_sample += 1;
             }
-            if let Some(te) = event {
-                let mut y = st.dense().map_err(ode_err)?.eval(te);
-                let k = self.resolve_contacts(&mut y).map_err(|e| fail(te, e))?;
-                if k == 0 {
-                    return Err(fail(te, "a contact closed but no impact could be resolved".into()));
+            match event {
+                Some(NextContact::Touch(te)) => {
+                    let mut y = st.dense().map_err(ode_err)?.eval(te);
+                    let mut c = contacts.borrow_mut();
+                    if self.impact_at(te, &mut y, &mut c, &mut run.work).map_err(|e| fail(te, e))? == 0 {
+                        return Err(fail(te, "a contact closed but no impact could be resolved".into()));
+                    }
+                    if te <= t0 {
+                        return Err(fail(
+                            te,
+                            "a contact's impacts accumulate at one instant and it cannot come to rest; valid: \
+                             restitution 1, or a duration that ends before the bounces die out"
+                                .into(),
+                        ));
+                    }
+                    self.settle(te, &mut y, &mut c, tau_min).map_err(|e| fail(te, e))?;
+                    run.work.restarts += 1;
+                    if constrained {
+                        let (before, after) =
+                            self.project(&mut y, &mut step_projection).map_err(|e| fail(te, e))?;
+                        run.note_projection(before, after);
+                    }
+                    geo = self.gaps(&y).map_err(|e| fail(te, e))?;
+                    drop(c);
+                    st.restart(te, y).map_err(ode_err)?;
                 }
-                if te <= t0 {
-                    return Err(fail(
-                        te,
-                        "a contact comes to rest (impacts accumulate at one instant); resting contact is not \
-                         simulated; valid: restitution 1, or a duration that ends before the bounces die out"
-                            .into(),
-                    ));
+                Some(NextContact::LiftOff(te, k)) => {
+                    let y = st.dense().map_err(ode_err)?.eval(te);
+                    let mut c = contacts.borrow_mut();
+                    c.resting[k] = false;
+                    let effect = c.effect[k];
+                    let kind = ContactEventKind::LiftOff;
+                    c.record(ContactEvent { t: te, effect, kind, closing_speed: 0.0, opening_speed: 0.0 });
+                    run.work.restarts += 1;
+                    geo = self.gaps(&y).map_err(|e| fail(te, e))?;
+                    drop(c);
+                    st.restart(te, y).map_err(ode_err)?;
                 }
-                run.work.impacts += k;
-                run.work.restarts += 1;
-                if constrained {
+                None if contacts.borrow().resting.contains(&true) => {
+                    // resting spheres that drifted off their planes are put back
+                    let mut y = st.y().clone();
+                    if self.hold_resting(t1, &mut y, &contacts.borrow()).map_err(|e| fail(t1, e))? {
+                        geo = self.gaps(&y).map_err(|e| fail(t1, e))?;
+                        st.restart(t1, y).map_err(ode_err)?;
+                        run.work.projections += 1;
+                    }
+                }
+                None if constrained => {
+                    // drift control: back onto φ(q) = 0 and G v = 0, and restart from there
+                    let mut y = st.y().clone();
                     let (before, after) =
-                        self.project(&mut y, &mut step_projection).map_err(|e| fail(te, e))?;
+                        self.project(&mut y, &mut step_projection).map_err(|e| fail(t1, e))?;
                     run.note_projection(before, after);
+                    if before != after {
+                        st.restart(t1, y).map_err(ode_err)?;
+                        run.work.projections += 1;
+                    }
                 }
-                geo = self.geometry(&y).map_err(|e| fail(te, e))?;
-                st.restart(te, y).map_err(ode_err)?;
-            } else if constrained {
-                // drift control: back onto φ(q) = 0 and G v = 0, and restart from there
-                let mut y = st.y().clone();
-                let (before, after) = self.project(&mut y, &mut step_projection).map_err(|e| fail(t1, e))?;
-                run.note_projection(before, after);
-                if before != after {
-                    st.restart(t1, y).map_err(ode_err)?;
-                    run.work.projections += 1;
-                }
+                None => {}
             }
             (ctl.progress)(st.t() / duration);
             // budgets: cancellation every step, wall time and the pace every 64 steps
@@ -684,6 +734,7 @@ impl Scene {
         run.work.accepted = work.accepted;
         run.work.rejected = work.rejected;
         let y = st.y().clone();
+        run.contacts = std::mem::take(&mut contacts.borrow_mut().events);
         Ok(self.finish(run, trackers, y, start))
     }
 
@@ -706,22 +757,5 @@ impl Scene {
         run.final_state = y;
         run.work.wall_seconds = start.elapsed().as_secs_f64();
         run
-    }
-
-    /// The declared contacts at state y: gap (negative: penetrating), tracked position, size.
-    fn geometry(&self, y: &[f64]) -> Result<Vec<(f64, Vector3<f64>, f64)>, String> {
-        let b = &self.built;
-        let nq = b.model.nq();
-        let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])?;
-        Ok(self.contact_geometry(&kin))
-    }
-
-    /// Applies the impulses of every touching, approaching contact to y's velocities.
-    fn resolve_contacts(&self, y: &mut [f64]) -> Result<usize, String> {
-        let b = &self.built;
-        let nq = b.model.nq();
-        let (q, v) = y.split_at_mut(nq);
-        let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
-        Ok(self.impacts(&kin, v))
     }
 }
