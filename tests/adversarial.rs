@@ -8,6 +8,8 @@
 //! from its source and fails with the list of public functions that no case names, so a new
 //! public function without a case fails CI.
 
+mod support;
+
 #[path = "adversarial/api.rs"]
 mod api;
 #[path = "adversarial/coverage.rs"]

@@ -12,7 +12,7 @@ use vectrix::nalgebra::{Matrix3, Vector3};
 use vectrix::num_dual::{Dual2_64, Dual3_64, DualNum};
 use vectrix::prelude::*;
 
-use support::{EPS, assert_printed, assert_printed_slice};
+use support::{EPS, NanAmax, assert_printed, assert_printed_slice};
 
 /// Exact derivatives: rounding only, on O(1)–O(10) data.
 const TOL: f64 = 1024.0 * EPS;
@@ -58,7 +58,7 @@ fn eq_5_2_10_cylindrical_velocity_and_acceleration() {
         let (q, qd, qdd) = coords(CYL, t);
         let cyl = Cylindrical { q, q_dot: qd, q_ddot: qdd };
         let [r, v, acc] = position_jet(CYL, t, |[rr, th, ra]| Vector3::new(rr * th.cos(), rr * th.sin(), ra));
-        assert!((cyl.position_in_a() - r).amax() < TOL);
+        assert!((cyl.position_in_a() - r).nan_amax() < TOL);
         let [w, vel, accel] = cyl.kinematics(&a).unwrap();
         assert!(dist(&vel, &a.vector(arr(v))) < TOL, "v at t = {t}");
         assert!(dist(&accel, &a.vector(arr(acc))) < TOL, "a at t = {t}");
@@ -101,7 +101,7 @@ fn eq_5_3_13_spherical_frame_and_sign_of_phi() {
         sn(ph) * sn(th),
         c(ph),
     );
-    assert!((s.o_sph_a() - want).amax() < TOL);
+    assert!((s.o_sph_a() - want).nan_amax() < TOL);
     // the poles and origin get atan2's values, never NaN
     assert_eq!(Spherical::from_position([0.0, 0.0, 0.0]).unwrap().q, [0.0, 0.0, 0.0]);
     assert!((Spherical::from_position([0.0, 0.0, -2.0]).unwrap().q[2] - PI / 2.0).abs() < TOL);
@@ -117,7 +117,7 @@ fn eq_5_4_10_spherical_velocity_and_acceleration_corrected() {
         let (q, qd, qdd) = coords(SPH, t);
         let s = Spherical { q, q_dot: qd, q_ddot: qdd };
         let [r, v, acc] = position_jet(SPH, t, sph_map);
-        assert!((s.position_in_a() - r).amax() < TOL);
+        assert!((s.position_in_a() - r).nan_amax() < TOL);
         let [w, vel, accel] = s.kinematics(&a).unwrap();
         assert!(dist(&vel, &a.vector(arr(v))) < TOL, "v at t = {t}");
         assert!(dist(&accel, &a.vector(arr(acc))) < TOL, "a at t = {t}");
@@ -133,14 +133,16 @@ fn eq_5_4_10_spherical_velocity_and_acceleration_corrected() {
         let m = o(Dual2_64::new(t, 1.0, 0.0));
         let (o0, od) = (m.map(|x| x.re), m.map(|x| x.v1));
         let w_b = omega_body_from_orientation_rate(&o0, &od).unwrap();
-        assert!((w_b - s.omega_in_sph()).amax() < TOL);
+        assert!((w_b - s.omega_in_sph()).nan_amax() < TOL);
         assert!(dist(&w, &s.frame(&a).unwrap().vector(arr(w_b))) < TOL);
         // the printed "+" in the collected north term would be wrong here
         let [r_u, _, ph] = q;
         let printed_north = -r_u * qdd[2] - 2.0 * qd[0] * qd[2] + r_u * qd[1] * qd[1] * ph.sin() * ph.cos();
         assert!((s.acceleration_in_sph().z - printed_north).abs() > 1e-3);
         let cor = s.coriolis_in_sph();
-        assert!((cor - Vector3::new(0.0, 2.0 * qd[0] * qd[1] * ph.cos(), -2.0 * qd[0] * qd[2])).amax() < TOL);
+        assert!(
+            (cor - Vector3::new(0.0, 2.0 * qd[0] * qd[1] * ph.cos(), -2.0 * qd[0] * qd[2])).nan_amax() < TOL
+        );
     }
 }
 
@@ -378,9 +380,9 @@ mod prop {
             prop_assert!((s.q[2] > 0.0) == (r[2] < 0.0) || r[2] == 0.0);
             let back = s.position_in_a();
             let scale = 1.0 + Vector3::from(r).norm();
-            prop_assert!((back - Vector3::from(r)).amax() < 16.0 * EPS * scale);
+            prop_assert!((back - Vector3::from(r)).nan_amax() < 16.0 * EPS * scale);
             let c = Cylindrical::from_position(r).unwrap();
-            prop_assert!((c.position_in_a() - Vector3::from(r)).amax() < 16.0 * EPS * scale);
+            prop_assert!((c.position_in_a() - Vector3::from(r)).nan_amax() < 16.0 * EPS * scale);
         }
 
         // The Frenet frame is orthonormal and right-handed wherever it is defined; κ ≥ 0.
@@ -411,11 +413,11 @@ fn section_5_1_cylindrical_frame_and_coordinates() {
         assert!((rr - r[0].hypot(r[1])).abs() <= 2.0 * EPS * rr);
         let f = c.frame(&a).unwrap();
         let o3 = Matrix3::new(th.cos(), th.sin(), 0.0, -th.sin(), th.cos(), 0.0, 0.0, 0.0, 1.0);
-        assert!((f.orientation_rel(&a) - o3).amax() <= 4.0 * EPS);
-        assert!((c.o_cyl_a() - o3).amax() <= 4.0 * EPS);
+        assert!((f.orientation_rel(&a) - o3).nan_amax() <= 4.0 * EPS);
+        assert!((c.o_cyl_a() - o3).nan_amax() <= 4.0 * EPS);
         // r⃗ in F_cyl: (r_r, 0, r_a)
         let in_cyl = a.vector(r).resolve(&f);
-        assert!((in_cyl - Vector3::new(rr, 0.0, ra)).amax() <= 8.0 * EPS * (1.0 + rr), "{in_cyl}");
+        assert!((in_cyl - Vector3::new(rr, 0.0, ra)).nan_amax() <= 8.0 * EPS * (1.0 + rr), "{in_cyl}");
     }
     assert_eq!(Cylindrical::from_position([0.0, -2.0, 1.0]).unwrap().q[1], -PI / 2.0);
     assert_eq!(Cylindrical::from_position([0.0, 3.0, 1.0]).unwrap().q[1], PI / 2.0);

@@ -6,7 +6,7 @@
 #![allow(clippy::needless_range_loop)] // matrix entries read as the book's A(i, j)
 mod support;
 
-use support::{EPS, assert_abs, assert_rel, assert_rel_slice};
+use support::{EPS, assert_abs, assert_rel, assert_rel_slice, nan_max};
 use vectrix::flight::*;
 
 const TRIM_TOL: f64 = 1e-10;
@@ -20,7 +20,7 @@ fn residual_of(ac: &Aircraft, t: &Trim) -> f64 {
     let f = ac.dynamics(&t.state, &t.controls).unwrap();
     // steady: U̇..Ṙ and Φ̇, Θ̇ vanish (position and heading may change)
     let a = f.to_array();
-    [a[3], a[4], a[5], a[6], a[7], a[9], a[10], a[11]].iter().fold(0.0f64, |m, v| m.max(v.abs()))
+    [a[3], a[4], a[5], a[6], a[7], a[9], a[10], a[11]].iter().fold(0.0f64, |m, v| nan_max(m, v.abs()))
 }
 
 #[test]

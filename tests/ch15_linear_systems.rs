@@ -7,6 +7,8 @@
 //! Where the book errs (notes ch15-18 §4, "ERR"), the corrected value is tested and the comment
 //! says so.
 
+mod support;
+
 use nalgebra::DMatrix;
 use vectrix::lti::*;
 

@@ -6,6 +6,8 @@
 //! and relative. The notes' computed values (C) are used where the book is inconsistent or
 //! wrong; each such test says so.
 
+mod support;
+
 use vectrix::lti::*;
 
 #[path = "lti_asserts/mod.rs"]

@@ -9,7 +9,7 @@ mod support;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use nalgebra::{Matrix3, Vector3};
-use support::{EPS, HARD_ANGLES};
+use support::{EPS, HARD_ANGLES, NanAmax};
 use vectrix::prelude::*;
 
 /// A few ulps: the round-trip bound asserted below (components of size ≤ 1; angle vectors are
@@ -30,8 +30,8 @@ fn axes() -> [Vector3<f64>; 4] {
 }
 
 fn q_err(p: &Quaternion, q: &Quaternion) -> f64 {
-    let d = (p.to_vector4() - q.to_vector4()).amax();
-    let s = (p.to_vector4() + q.to_vector4()).amax();
+    let d = (p.to_vector4() - q.to_vector4()).nan_amax();
+    let s = (p.to_vector4() + q.to_vector4()).nan_amax();
     d.min(s)
 }
 
@@ -62,14 +62,14 @@ fn round_trips_at_hard_angles() {
                 "q→𝓡→q {ctx}"
             );
             let r2 = Quaternion::from_rotation_matrix_unchecked(&r).rotation_matrix();
-            assert!((r2 - r).amax() <= MATRIX_ULPS, "𝓡→q→𝓡 {ctx}");
+            assert!((r2 - r).nan_amax() <= MATRIX_ULPS, "𝓡→q→𝓡 {ctx}");
             // Angle vector: exact direction and angle, compared relative to θ ≤ π.
             let v = q.angle_vector();
-            assert!((v - n * th).amax() <= ULPS * th.max(1.0), "Θ {ctx}: {v:?}");
+            assert!((v - n * th).nan_amax() <= ULPS * th.max(1.0), "Θ {ctx}: {v:?}");
             assert!(q_err(&Quaternion::from_angle_vector(&v), &q) <= ULPS, "q→Θ→q {ctx}");
             let vm = Quaternion::angle_vector_of_rotation_matrix(&r);
             let vm_err =
-                (vm - n * th).amax().min(if th == PI { (vm + n * th).amax() } else { f64::INFINITY });
+                (vm - n * th).nan_amax().min(if th == PI { (vm + n * th).nan_amax() } else { f64::INFINITY });
             assert!(vm_err <= ULPS * th.max(1.0), "𝓡→Θ {ctx}: {vm:?}");
             assert!(q_err(&Quaternion::from_mrp(&q.mrp()), &q) <= ULPS, "q→p→q {ctx}");
             match q.gibbs() {
@@ -100,7 +100,7 @@ fn euler_near_gimbal_lock() {
                     let r = e.rotation_matrix();
                     let sol = EulerAngles::from_rotation_matrix(&r, seq, ROTATION_TOL).unwrap();
                     let p = sol.principal();
-                    let err = (p.rotation_matrix() - r).amax();
+                    let err = (p.rotation_matrix() - r).nan_amax();
                     assert!(err <= MATRIX_ULPS, "{seq:?} β = {mid:e}: rebuild error {err:e}");
                     // Principal β is in [−π/2, π/2] (Tait–Bryan) or [0, π] (symmetric): compare
                     // with the input folded into that range.
@@ -139,10 +139,10 @@ fn issue_nalgebra_1078_1512_half_turn_matrix_is_not_identity() {
         let m = -Matrix3::identity() + n * n.transpose() * 2.0; // (2.11.33): 𝓡 = −I + 2nnᵀ
         let r = Rotation::from_rotation_matrix_in(&a, &m, ROTATION_TOL).unwrap();
         assert!((r.angle() - PI).abs() <= ULPS * PI, "n = {n:?}: θ = {}", r.angle());
-        assert!((r.rotation_matrix_in(&a) - m).amax() <= MATRIX_ULPS);
+        assert!((r.rotation_matrix_in(&a) - m).nan_amax() <= MATRIX_ULPS);
         match r.axis_angle_in(&a) {
             AxisAngle::HalfTurn(axis) | AxisAngle::General { axis, .. } => {
-                assert!((axis - canonical_half_turn_axis(&n)).amax() <= ULPS, "{axis:?} vs {n:?}")
+                assert!((axis - canonical_half_turn_axis(&n)).nan_amax() <= ULPS, "{axis:?} vs {n:?}")
             }
             AxisAngle::Identity => panic!("a half turn came back as the identity"),
         }
@@ -161,7 +161,7 @@ fn issue_sophus_1_pytorch3d_188_log_near_pi() {
             let v = Quaternion::from_rotation_matrix(&m, ROTATION_TOL).unwrap().angle_vector();
             assert!(v.iter().all(|x| x.is_finite()));
             // The matrix itself carries ε-level error, which near π moves the axis by ~ε/(π−θ)·(π−θ).
-            assert!((v - n * th).amax() <= 8.0 * ULPS * PI, "θ = π − 1e-{k}: {v:?} vs {:?}", n * th);
+            assert!((v - n * th).nan_amax() <= 8.0 * ULPS * PI, "θ = π − 1e-{k}: {v:?} vs {:?}", n * th);
         }
     }
 }
@@ -185,7 +185,10 @@ fn issue_dm_control_555_gimbal_lock_signs() {
                 let EulerSolution::GimbalLock { combination, sign, representative, .. } = sol else {
                     panic!("{seq:?} at β = {lock}: lock expected, got {sol:?}")
                 };
-                assert!((representative.rotation_matrix() - r).amax() <= MATRIX_ULPS, "{seq:?} β = {lock}");
+                assert!(
+                    (representative.rotation_matrix() - r).nan_amax() <= MATRIX_ULPS,
+                    "{seq:?} β = {lock}"
+                );
                 assert!(congruent(combination, a + f64::from(sign) * c, 8.0 * ULPS), "{seq:?} β = {lock}");
             }
         }
@@ -206,7 +209,7 @@ fn issue_scipy_22417_markley_with_non_orthonormal_input() {
     let r = Rotation::nearest_in(&a, &m).unwrap().rotation_matrix_in(&a);
     // Polar factor: Rᵀ M is symmetric positive semidefinite, and R maximises tr(Rᵀ M).
     let s = r.transpose() * m;
-    assert!((s - s.transpose()).amax() <= 16.0 * EPS * m.norm());
+    assert!((s - s.transpose()).nan_amax() <= 16.0 * EPS * m.norm());
     assert!(s.symmetric_eigenvalues().iter().all(|&l| l >= -16.0 * EPS * m.norm()));
     let markley = Quaternion::from_rotation_matrix_unchecked(&m).rotation_matrix();
     assert!((r.transpose() * m).trace() >= (markley.transpose() * m).trace());
@@ -227,9 +230,9 @@ fn tiny_angle_survives_every_representation() {
     let r = Rotation::exp(&v).unwrap();
     assert!((r.angle() - 3e-300).abs() <= 4.0 * EPS * 3e-300);
     let back = r.log().resolve(&a);
-    assert!((back - Vector3::new(1e-300, -2e-300, 2e-300)).amax() <= 4.0 * EPS * 3e-300);
+    assert!((back - Vector3::new(1e-300, -2e-300, 2e-300)).nan_amax() <= 4.0 * EPS * 3e-300);
     let q = r.quaternion_in(&a);
-    assert!((q.gibbs().unwrap() * 2.0 - back).amax() <= 4.0 * EPS * 3e-300);
+    assert!((q.gibbs().unwrap() * 2.0 - back).nan_amax() <= 4.0 * EPS * 3e-300);
 }
 
 /// The log of a rotation matrix at tiny angles must be *relatively* accurate (a few ulps of θ,
@@ -247,10 +250,10 @@ fn matrix_log_is_relatively_accurate_at_tiny_and_moderate_angles() {
             let q = Quaternion::from_axis_angle(&n, th).unwrap();
             let r = q.rotation_matrix();
             let vm = Quaternion::angle_vector_of_rotation_matrix(&r);
-            let err = (vm - n * th).amax();
+            let err = (vm - n * th).nan_amax();
             assert!(err <= 8.0 * f64::EPSILON * th, "θ = {th:e}, n = {n:?}: |err| = {err:e}");
             let via_q = Quaternion::from_rotation_matrix_unchecked(&r).angle_vector();
-            assert!((vm - via_q).amax() <= 8.0 * f64::EPSILON * th, "branches disagree at θ = {th:e}");
+            assert!((vm - via_q).nan_amax() <= 8.0 * f64::EPSILON * th, "branches disagree at θ = {th:e}");
         }
     }
 }
@@ -294,7 +297,7 @@ fn batched_from_angle_vectors_matches_one_by_one() {
         let err = if (t.norm() - PI).abs() < 1e-15 {
             q_err(q, &one)
         } else {
-            (q.to_vector4() - one.to_vector4()).amax()
+            (q.to_vector4() - one.to_vector4()).nan_amax()
         };
         // Past |Θ| = 1 the input's own rounding limits both to ε·|Θ|/2 (h = |Θ|/2 is rounded).
         assert!(err <= ULPS * t.norm().max(1.0), "Θ = {t:?}: batch {q:?} vs {one:?}");

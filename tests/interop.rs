@@ -13,6 +13,7 @@
 
 mod support;
 
+use crate::support::NanAmax;
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 use vectrix::lti::{Polynomial, StateSpace, TransferFunction};
@@ -25,7 +26,7 @@ const EPS: f64 = f64::EPSILON;
 /// max |got − want| over the entries ≤ `tol` (absolute: the entries are of order 1).
 #[track_caller]
 fn assert_abs_matrix(got: &Matrix3<f64>, want: &Matrix3<f64>, tol: f64) {
-    let err = (got - want).amax();
+    let err = (got - want).nan_amax();
     assert!(err <= tol, "got {got}, want {want}, max |err| = {err:e} > {tol:e}");
 }
 
@@ -33,7 +34,7 @@ fn assert_abs_matrix(got: &Matrix3<f64>, want: &Matrix3<f64>, tol: f64) {
 #[track_caller]
 fn assert_same_rotation(got: &UnitQuaternion<f64>, want: &UnitQuaternion<f64>, tol: f64) {
     let (g, w) = (got.as_ref().coords, want.as_ref().coords);
-    let err = (g - w).amax().min((g + w).amax());
+    let err = (g - w).nan_amax().min((g + w).nan_amax());
     assert!(err <= tol, "got {g}, want ±{w}, |err| = {err:e} > {tol:e}");
 }
 
@@ -85,13 +86,13 @@ fn fact_2_11_5_half_turn_from_nalgebra_is_a_variant_with_canonical_axis() {
             AxisAngle::HalfTurn(n) => {
                 let first = n.iter().copied().find(|x| x.abs() > 0.5 * EPS).expect("unit axis");
                 assert!(first > 0.0, "canonical sign: {n}");
-                assert!((n - axis).amax().min((n + axis).amax()) <= 2.0 * EPS, "{n} vs ±{axis}");
+                assert!((n - axis).nan_amax().min((n + axis).nan_amax()) <= 2.0 * EPS, "{n} vs ±{axis}");
             }
             // nalgebra's cos(π/2) = 6e-17 is not an exact zero: the variant is then General
             // with θ = π to the last ulp; the axis is still ±n̂.
             AxisAngle::General { axis: n, angle } => {
                 assert!((angle - PI).abs() <= 2.0 * EPS * PI);
-                assert!((n - axis).amax().min((n + axis).amax()) <= 2.0 * EPS, "{n} vs ±{axis}");
+                assert!((n - axis).nan_amax().min((n + axis).nan_amax()) <= 2.0 * EPS, "{n} vs ±{axis}");
             }
             AxisAngle::Identity => panic!("a half turn is not the identity"),
         }
@@ -133,7 +134,7 @@ fn eq_2_15_14_only_unit_quaternions_become_rotations() {
     assert_eq!([uq.w, uq.i, uq.j, uq.k], [unit.a, unit.b, unit.c, unit.d]);
     // And back through Rotation3 (Shepperd/Markley): the same canonical q to a few ulps.
     let back = Quaternion::from(Rotation3::try_from(unit).expect("unit"));
-    assert!((back.to_vector4() - unit.to_vector4()).amax() <= 4.0 * EPS, "{back:?} vs {unit:?}");
+    assert!((back.to_vector4() - unit.to_vector4()).nan_amax() <= 4.0 * EPS, "{back:?} vs {unit:?}");
 }
 
 /// Resolved vectors and matrices are nalgebra values; nalgebra's `convert-mint` (enabled by
@@ -146,7 +147,7 @@ fn eq_2_10_2_resolved_values_reach_mint_exactly() {
     let b = r.apply_frame(&a);
     let r_ba = b.rotation_rel(&a);
     // (2.10.2): the columns of 𝓡_{B/A} are B's axes in A (entries of order 1: 4ε absolute).
-    assert!((r_ba.column(0) - b.i().resolve(&a)).amax() <= 4.0 * EPS);
+    assert!((r_ba.column(0) - b.i().resolve(&a)).nan_amax() <= 4.0 * EPS);
     let col: mint::ColumnMatrix3<f64> = r_ba.into();
     assert_eq!([col.x.x, col.x.y, col.x.z], [r_ba[(0, 0)], r_ba[(1, 0)], r_ba[(2, 0)]], "x = first column");
     let row: mint::RowMatrix3<f64> = col.into();

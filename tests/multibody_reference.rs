@@ -13,6 +13,9 @@
 //! `integrate` retraction (for a ball joint a rotation about the link's own k-th axis), which
 //! is Pinocchio's convention for its spherical joint too.
 
+mod support;
+
+use crate::support::{NanAmax, nan_max};
 use serde_json::Value;
 use vectrix::dynamics::multibody::{Joint, Link, Model};
 use vectrix::nalgebra::{DMatrix, Matrix3, SymmetricEigen, Vector3};
@@ -91,7 +94,7 @@ fn model(entry: &Value) -> Model {
 /// max |got − want| ≤ tol × max |want|, entry by entry, with a message naming the entry.
 fn assert_rel_to_max(what: &str, got: &[f64], want: &[f64], tol: f64) {
     assert_eq!(got.len(), want.len(), "{what}: length");
-    let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let scale = want.iter().fold(0.0f64, |m, x| nan_max(m, x.abs()));
     for (k, (g, w)) in got.iter().zip(want).enumerate() {
         assert!(
             (g - w).abs() <= tol * scale,
@@ -271,8 +274,8 @@ fn mass_matrix_derivative_by_dual_numbers() {
     // entries of ∂M/∂q are of the size of M per unit length (the tree spans about 1 m);
     // some are exactly zero (M does not depend on the free joint's translation), so the
     // tolerances are absolute, scaled by max |Mᵢⱼ| and max |aᵢ|
-    let m_scale = m.crba(&q).unwrap().amax();
-    let a_scale = a.iter().fold(0.0f64, |x, y| x.max(y.abs()));
+    let m_scale = m.crba(&q).unwrap().nan_amax();
+    let a_scale = a.iter().fold(0.0f64, |x, y| nan_max(x, y.abs()));
     m.gravity = Vector3::zeros();
     let rd = m.rnea_derivatives(&q, &vec![0.0; n], &a, None).unwrap();
     for (k, dmk) in dm.iter().enumerate() {

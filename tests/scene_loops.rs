@@ -7,6 +7,9 @@
 //!
 //! Book: §9.11 (constraints and multipliers), §6.10 (reactions), §7.8 (Euler's equations).
 
+mod support;
+
+use crate::support::{nan_max, nan_min};
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use vectrix::dynamics::scene::{Run, Scene, SceneError};
 
@@ -58,7 +61,7 @@ fn section_9_11_four_bar_scene_freudenstein_and_grashof() {
         .iter()
         .zip(&t4)
         .map(|(a2, a4)| (k1 * a4.cos() - k2 * a2.cos() + k3 - (a2 - a4).cos()).abs())
-        .fold(0.0, f64::max);
+        .fold(0.0, nan_max);
     // absolute: the residual is a sum of O(K) terms, each exact to the projection tolerance
     assert!(worst <= 1e-9, "Freudenstein residual {worst:e}");
     // Grashof (s + l = 5 ≤ p + q = 6.5, crank shortest): the crank turns round and round ...
@@ -66,7 +69,8 @@ fn section_9_11_four_bar_scene_freudenstein_and_grashof() {
     assert!(t2[t2.len() - 1] - t2[0] > 4.0 * std::f64::consts::TAU, "the crank makes full turns");
     // ... and the rocker swings between the collinear positions
     let (lo, hi) = rocker_limits();
-    let (min, max) = t4.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(*x), b.max(*x)));
+    let (min, max) =
+        t4.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (nan_min(a, *x), nan_max(b, *x)));
     assert!(min >= lo - 1e-9 && max <= hi + 1e-9, "rocker in [{min}, {max}], limits [{lo}, {hi}]");
     // sampled every 2.5 ms the extremes are met to second order in the sample spacing
     assert!(min - lo <= 1e-4 && hi - max <= 1e-4, "rocker reaches [{min}, {max}] of [{lo}, {hi}]");
@@ -107,8 +111,8 @@ fn section_6_10_four_bar_rocker_moment_balance() {
         let e = Vector3::new(t4[i].cos(), t4[i].sin(), 0.0);
         let f_rocker = -Vector3::new(fx[i], fy[i], 0.0);
         let torque = (e * C).cross(&f_rocker).z + (e * (C / 2.0)).cross(&Vector3::new(0.0, -m * g, 0.0)).z;
-        worst = worst.max((m * C * C / 3.0 * a4 - torque).abs());
-        scale = scale.max(torque.abs());
+        worst = nan_max(worst, (m * C * C / 3.0 * a4 - torque).abs());
+        scale = nan_max(scale, torque.abs());
         // a planar pin's couple rows are dependent: dropped, reported as 0
         assert_eq!(mz[i], 0.0);
     }
@@ -128,7 +132,7 @@ fn section_9_11_slider_crank_scene_piston_position_and_balance() {
         .iter()
         .zip(&x)
         .map(|(t, x)| (x - (r * t.cos() + (l * l - r * r * t.sin().powi(2)).sqrt())).abs())
-        .fold(0.0, f64::max);
+        .fold(0.0, nan_max);
     assert!(worst <= 1e-9, "piston position off the closed form by {worst:e} m");
     assert!(theta[theta.len() - 1] > 5.0 * std::f64::consts::TAU, "the crank turns");
     assert!(run.drift[0].max_rel <= 1e-9, "energy {:?}", run.drift[0]);
@@ -136,8 +140,8 @@ fn section_9_11_slider_crank_scene_piston_position_and_balance() {
     let h = scene.spec().duration / scene.spec().samples as f64;
     let (xd, fx) = (col(&run, "speeds:piston.0"), col(&run, "reaction:wrist_pin.x"));
     let xdd = central(&xd, h);
-    let scale = fx.iter().fold(0.0_f64, |m, f| m.max(f.abs()));
-    let worst = xdd.iter().enumerate().map(|(k, a)| (1.5 * a + fx[k + 2]).abs()).fold(0.0, f64::max);
+    let scale = fx.iter().fold(0.0_f64, |m, f| nan_max(m, f.abs()));
+    let worst = xdd.iter().enumerate().map(|(k, a)| (1.5 * a + fx[k + 2]).abs()).fold(0.0, nan_max);
     // fourth-order differences at h = 2 ms: the piston's acceleration carries harmonics of the
     // crank rate up to ~4ω (ω ≈ 10 rad/s), truncation (4ωh)⁴/30 ≈ 1e-6 per harmonic; measured
     // 2e-5 of the largest force, asserted 1e-4
@@ -172,11 +176,11 @@ fn section_6_10_pendulum_ball_loop_reaction_by_euler_about_the_pivot() {
         let rot = r.to_rotation_matrix().into_inner();
         let j_o = rot * j_o_link * rot.transpose();
         let rho = Vector3::new(px[i], py[i], pz[i]); // the pivot is the origin
-        off_pivot = off_pivot.max((rho - rot * d).norm());
+        off_pivot = nan_max(off_pivot, (rho - rot * d).norm());
         let w = Vector3::new(wx[i], wy[i], wz[i]);
         let alpha = j_o.lu().solve(&(rho.cross(&(g * m)) - w.cross(&(j_o * w)))).expect("J_O invertible");
         let f = m * (alpha.cross(&rho) + w.cross(&w.cross(&rho))) - m * g;
-        worst = worst.max((f - Vector3::new(fx[i], fy[i], fz[i])).norm());
+        worst = nan_max(worst, (f - Vector3::new(fx[i], fy[i], fz[i])).norm());
     }
     // the written states hold the pivot to the projection tolerance
     assert!(off_pivot <= 1e-10, "the bar's end is {off_pivot:e} m off the pivot");

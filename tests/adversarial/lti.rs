@@ -5,6 +5,7 @@
 //! of 1/(s + 1) are the closed forms, crossovers satisfy |L| = 1 or Im L = 0, and tolerances
 //! outside their range are refused (§3).
 
+use crate::support::nan_max;
 use nalgebra::DMatrix;
 use vectrix::lti::linalg::{balance, eigenvalues, rank, singular_values};
 use vectrix::lti::{
@@ -680,10 +681,10 @@ cases! {
                     refused(modes(&a), "modes(non-finite)");
                     continue;
                 }
-                let big = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                let big = a.iter().fold(0.0f64, |m, v| nan_max(m, v.abs()));
                 let trace = a.trace();
                 err_or(eigenvalues(&a), "eigenvalues", |ev| {
-                    let size = ev.iter().fold(big, |m, z| m.max(z.norm()));
+                    let size = ev.iter().fold(big, |m, z| nan_max(m, z.norm()));
                     ev.len() == a.nrows() && paired(ev) && (ev.iter().sum::<Complex64>() - trace).norm() <= 64.0 * EPS * size * a.nrows() as f64
                 });
                 err_or(balance(&a), "balance", |b| {

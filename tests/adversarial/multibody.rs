@@ -6,6 +6,7 @@
 //! form of a cart pendulum, constrained accelerations with G q̈ = γ, projections with
 //! |φ| ≤ tol, Kane's equations against a block on an incline.
 
+use crate::support::{NanAmax, nan_max};
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use num_dual::Dual64;
 use vectrix::dynamics::DynamicsError;
@@ -36,7 +37,7 @@ use crate::harness::{err_or, finite, hostile, hostile3, refused};
 const REL: f64 = 1e-8;
 
 fn amax(x: &[f64]) -> f64 {
-    x.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+    x.iter().fold(0.0f64, |m, v| nan_max(m, v.abs()))
 }
 
 /// A tree with every joint of Table 1.3 plus weld and free: a pin carrying a ball and a slot,
@@ -112,21 +113,23 @@ fn state(model: &Model) -> (Vec<f64>, Vec<f64>) {
 
 /// M is symmetric and positive definite (its Cholesky factor exists).
 fn spd(m: &DMatrix<f64>) -> bool {
-    finite(m.as_slice()) && (m - m.transpose()).amax() <= 1e-12 * m.amax() && m.clone().cholesky().is_some()
+    finite(m.as_slice())
+        && (m - m.transpose()).nan_amax() <= 1e-12 * m.nan_amax()
+        && m.clone().cholesky().is_some()
 }
 
 /// M is symmetric positive semidefinite (a massless link is valid, its M is singular): its
 /// smallest eigenvalue is ≥ −(round-off of the largest).
 fn psd(m: &DMatrix<f64>) -> bool {
     finite(m.as_slice())
-        && (m - m.transpose()).amax() <= 1e-12 * m.amax()
-        && m.clone().symmetric_eigenvalues().iter().all(|&l| l >= -1e-12 * m.amax())
+        && (m - m.transpose()).nan_amax() <= 1e-12 * m.nan_amax()
+        && m.clone().symmetric_eigenvalues().iter().all(|&l| l >= -1e-12 * m.nan_amax())
 }
 
 /// Orthonormal with det +1.
 fn rotation(o: &Matrix3<f64>) -> bool {
     finite(o.as_slice())
-        && (o * o.transpose() - Matrix3::identity()).amax() <= 1e-12
+        && (o * o.transpose() - Matrix3::identity()).nan_amax() <= 1e-12
         && (o.determinant() - 1.0).abs() <= 1e-12
 }
 
@@ -436,7 +439,7 @@ cases! {
                 err_or(Model::new(&links), "Model::new(pin axis)", |m| {
                     let n = Model::new(&unit).unwrap();
                     let (h, hn) = (m.crba(&m.neutral()).unwrap(), n.crba(&n.neutral()).unwrap());
-                    (h - &hn).amax() <= 1e-14 * hn.amax()
+                    (h - &hn).nan_amax() <= 1e-14 * hn.nan_amax()
                 });
                 let mut links = tree_links();
                 links[2].joint = Joint::Slot { axis: Vector3::z(), direction: Vector3::new(1.0, x, x) };
@@ -462,7 +465,7 @@ cases! {
         let d = m.cast::<Dual64>();
         let qd: Vec<Dual64> = q.iter().map(|&x| Dual64::from(x)).collect();
         let (h, hd) = (m.crba(&q).unwrap(), d.crba(&qd).unwrap());
-        assert!(h.iter().zip(hd.iter()).all(|(a, b)| (a - b.re).abs() <= 1e-14 * h.amax() && b.eps == 0.0));
+        assert!(h.iter().zip(hd.iter()).all(|(a, b)| (a - b.re).abs() <= 1e-14 * h.nan_amax() && b.eps == 0.0));
     }
 
     // Kinematics and energies (§2.22, §8.1, §8.4): poses are rotations; T = ½vᵀMv with M from
@@ -488,7 +491,7 @@ cases! {
         let mut s = m.crba_scratch();
         let mut h2 = DMatrix::zeros(m.nv(), m.nv());
         m.crba_into(&q, &mut h2, &mut s);
-        assert!((&h2 - &h).amax() <= 1e-14 * h.amax() && (m.crba_unchecked(&q) - &h).amax() <= 1e-14 * h.amax());
+        assert!((&h2 - &h).nan_amax() <= 1e-14 * h.nan_amax() && (m.crba_unchecked(&q) - &h).nan_amax() <= 1e-14 * h.nan_amax());
         let poses = m.poses(&q).unwrap();
         let (mut ws, mut out) = (PosesScratch::default(), Vec::new());
         m.poses_into(&q, &mut ws, &mut out);
@@ -497,8 +500,8 @@ cases! {
             for r in hostile3() {
                 let r = Vector3::from(r);
                 let u = tw.velocity_of(&r);
-                if finite(r.as_slice()) && r.amax() <= 1e100 {
-                    assert!((u - tw.velocity - tw.omega.cross(&r)).amax() <= 1e-12 * (1.0 + tw.omega.amax() * r.amax()));
+                if finite(r.as_slice()) && r.nan_amax() <= 1e100 {
+                    assert!((u - tw.velocity - tw.omega.cross(&r)).nan_amax() <= 1e-12 * (1.0 + tw.omega.nan_amax() * r.nan_amax()));
                 }
             }
         }
@@ -550,7 +553,7 @@ cases! {
             };
             let bias = m.rnea(q, v, &vec![0.0; nv], None).map(|b| amax(&b.tau)).unwrap_or(f64::INFINITY);
             // RNEA's round-off is ε times its largest terms: J v̇ and the velocity products J v²
-            let scale = amax(tau).max(bias).max(h.amax() * amax(vdot)).max(h.amax() * amax(v) * amax(v)).max(f64::MIN_POSITIVE);
+            let scale = amax(tau).max(bias).max(h.nan_amax() * amax(vdot)).max(h.nan_amax() * amax(v) * amax(v)).max(f64::MIN_POSITIVE);
             id.tau.iter().zip(tau).all(|(a, b)| (a - b).abs() <= REL * scale)
         };
         let vdot = m.aba(&q, &v, &tau0, None).unwrap();
@@ -607,28 +610,28 @@ cases! {
         let h = m.crba(&q).unwrap();
         let tau = m.rnea(&q, &v, &vdot, None).unwrap().tau;
         assert!(rd.tau.iter().zip(&tau).all(|(a, b)| (a - b).abs() <= 1e-12 * (1.0 + b.abs())));
-        assert!((&rd.mass_matrix - &h).amax() <= 1e-12 * h.amax());
+        assert!((&rd.mass_matrix - &h).nan_amax() <= 1e-12 * h.nan_amax());
         let eps = 1e-6;
         for k in 0..4 {
             let (up, dn) = (m.rnea(&with(&q, k, q[k] + eps), &v, &vdot, None).unwrap().tau, m.rnea(&with(&q, k, q[k] - eps), &v, &vdot, None).unwrap().tau);
             for i in 0..4 {
-                assert!(((up[i] - dn[i]) / (2.0 * eps) - rd.dtau_dq[(i, k)]).abs() <= 1e-6 * (1.0 + rd.dtau_dq.amax()), "∂τ{i}/∂q{k}");
+                assert!(((up[i] - dn[i]) / (2.0 * eps) - rd.dtau_dq[(i, k)]).abs() <= 1e-6 * (1.0 + rd.dtau_dq.nan_amax()), "∂τ{i}/∂q{k}");
             }
         }
         let dm = m.mass_matrix_derivatives(&q).unwrap();
         for (k, dmk) in dm.iter().enumerate() {
             let fd = (m.crba(&with(&q, k, q[k] + eps)).unwrap() - m.crba(&with(&q, k, q[k] - eps)).unwrap()) / (2.0 * eps);
-            assert!((fd - dmk).amax() <= 1e-6 * (1.0 + h.amax()), "∂M/∂q{k}");
+            assert!((fd - dmk).nan_amax() <= 1e-6 * (1.0 + h.nan_amax()), "∂M/∂q{k}");
         }
         let ad = m.aba_derivatives(&q, &v, &tau, None).unwrap();
-        assert!((&ad.dvdot_dtau * &h - DMatrix::identity(4, 4)).amax() <= 1e-10);
+        assert!((&ad.dvdot_dtau * &h - DMatrix::identity(4, 4)).nan_amax() <= 1e-10);
         assert!(ad.vdot.iter().zip(&vdot).all(|(a, b)| (a - b).abs() <= 1e-10));
         let mut s = m.derivative_scratch();
         let (mut ro, mut ao) = (RneaDerivatives::zeros(&m), AbaDerivatives::zeros(&m));
         m.rnea_derivatives_into(&q, &v, &vdot, None, &mut ro, &mut s);
         m.aba_derivatives_into(&q, &v, &tau, None, &mut ao, &mut s).unwrap();
-        assert!((&ro.dtau_dv - &rd.dtau_dv).amax() <= 1e-12 * (1.0 + rd.dtau_dv.amax()));
-        assert!((&ao.dvdot_dq - &ad.dvdot_dq).amax() <= 1e-12 * (1.0 + ad.dvdot_dq.amax()));
+        assert!((&ro.dtau_dv - &rd.dtau_dv).nan_amax() <= 1e-12 * (1.0 + rd.dtau_dv.nan_amax()));
+        assert!((&ao.dvdot_dq - &ad.dvdot_dq).nan_amax() <= 1e-12 * (1.0 + ad.dvdot_dq.nan_amax()));
         for x in hostile() {
             for k in 0..4 {
                 let all = |d: &RneaDerivatives| finite(&d.tau) && finite(d.dtau_dq.as_slice()) && finite(d.dtau_dv.as_slice()) && spd(&d.mass_matrix);
@@ -685,11 +688,11 @@ cases! {
         let check = |sys: &CartPendulum, q: &[f64], qd: &[f64]| {
             let mm = sys.m(q[1]);
             let qdv = DVector::from_column_slice(qd);
-            let scale_m = mm.amax();
-            err_or(mass_matrix(sys, q, qd, 0.0), "mass_matrix", |m| finite(m.as_slice()) && (m - &mm).amax() <= REL * scale_m);
+            let scale_m = mm.nan_amax();
+            err_or(mass_matrix(sys, q, qd, 0.0), "mass_matrix", |m| finite(m.as_slice()) && (m - &mm).nan_amax() <= REL * scale_m);
             err_or(generalized_momentum(sys, q, qd, 0.0), "generalized_momentum", |p| {
                 let want = &mm * &qdv;
-                finite(p.as_slice()) && (p - &want).amax() <= REL * scale_m * qdv.amax()
+                finite(p.as_slice()) && (p - &want).nan_amax() <= REL * scale_m * qdv.nan_amax()
             });
             err_or(energy(sys, q, qd, 0.0), "energy", |e| {
                 let t = 0.5 * qdv.dot(&(&mm * &qdv));
@@ -703,11 +706,11 @@ cases! {
             err_or(lagrange_terms(sys, q, qd, 0.0), "lagrange_terms", |t| {
                 let r = t.rhs();
                 let want = sys.rhs(q, qd);
-                finite(r.as_slice()) && (&r - &want).amax() <= REL * (want.amax() + scale_m * qdv.amax() * qdv.amax() + sys.f.abs())
+                finite(r.as_slice()) && (&r - &want).nan_amax() <= REL * (want.nan_amax() + scale_m * qdv.nan_amax() * qdv.nan_amax() + sys.f.abs())
             });
             err_or(accelerations(sys, q, qd, 0.0), "accelerations", |a| {
                 let res = &mm * a - sys.rhs(q, qd);
-                finite(a.as_slice()) && res.amax() <= REL * (scale_m * a.amax() + sys.rhs(q, qd).amax() + scale_m * qdv.amax() * qdv.amax())
+                finite(a.as_slice()) && res.nan_amax() <= REL * (scale_m * a.nan_amax() + sys.rhs(q, qd).nan_amax() + scale_m * qdv.nan_amax() * qdv.nan_amax())
             });
         };
         let (q, qd) = ([0.3, 0.7], [-0.4, 1.1]);
@@ -734,7 +737,7 @@ cases! {
             let free = FreeParticle(x);
             err_or(energy_rate(&free, &q, &qd, 0.0), "energy_rate(defaults)", |e| *e == 0.0);
             err_or(energy(&free, &q, &qd, 0.0), "energy(defaults)", |e| e.is_finite() && close(*e, 0.5 * x * (qd[0] * qd[0] + qd[1] * qd[1]), e.abs()));
-            err_or(accelerations(&free, &q, &qd, 0.0), "accelerations(free)", |a| a.amax() == 0.0);
+            err_or(accelerations(&free, &q, &qd, 0.0), "accelerations(free)", |a| a.nan_amax() == 0.0);
         }
         refused(accelerations(&CART, &q[..1], &qd, 0.0), "accelerations(short q)");
         refused(mass_matrix(&CART, &q, &[], 0.0), "mass_matrix(empty q̇)");
@@ -751,7 +754,7 @@ cases! {
             let mm = sys.m(q[1]);
             let pv = DVector::from_column_slice(p);
             err_or(velocities_from_momenta(sys, q, p, 0.0), "velocities_from_momenta", |qd| {
-                finite(qd.as_slice()) && (&mm * qd - &pv).amax() <= REL * (pv.amax() + mm.amax() * qd.amax())
+                finite(qd.as_slice()) && (&mm * qd - &pv).nan_amax() <= REL * (pv.nan_amax() + mm.nan_amax() * qd.nan_amax())
             });
             err_or(hamiltonian(sys, q, p, 0.0), "hamiltonian", |h| {
                 let Ok(qd) = velocities_from_momenta(sys, q, p, 0.0) else { return false };
@@ -788,17 +791,17 @@ cases! {
             let sys = CartPendulum { c: 0.0, ..*sys };
             let mm = sys.m(q[1]);
             let qdv = DVector::from_column_slice(qd);
-            let scale = mm.amax() * (1.0 + qdv.amax() * qdv.amax()) + sys.f.abs() + (sys.m2 * sys.g * sys.l).abs();
-            err_or(map_mass_matrix(&sys, q, 0.0), "map_mass_matrix", |m| finite(m.as_slice()) && (m - &mm).amax() <= REL * mm.amax());
+            let scale = mm.nan_amax() * (1.0 + qdv.nan_amax() * qdv.nan_amax()) + sys.f.abs() + (sys.m2 * sys.g * sys.l).abs();
+            err_or(map_mass_matrix(&sys, q, 0.0), "map_mass_matrix", |m| finite(m.as_slice()) && (m - &mm).nan_amax() <= REL * mm.nan_amax());
             err_or(map_equations(&sys, q, qd, 0.0), "map_equations", |(m, f)| {
-                finite(f.as_slice()) && (m - &mm).amax() <= REL * mm.amax() && (f - sys.rhs(q, qd)).amax() <= REL * scale
+                finite(f.as_slice()) && (m - &mm).nan_amax() <= REL * mm.nan_amax() && (f - sys.rhs(q, qd)).nan_amax() <= REL * scale
             });
             err_or(map_kinetic_energy(&sys, q, qd, 0.0), "map_kinetic_energy", |t| {
                 let want = 0.5 * qdv.dot(&(&mm * &qdv));
                 t.is_finite() && (t - want).abs() <= REL * want.abs().max(f64::MIN_POSITIVE)
             });
             err_or(map_accelerations(&sys, q, qd, 0.0), "map_accelerations", |a| {
-                finite(a.as_slice()) && (&mm * a - sys.rhs(q, qd)).amax() <= REL * (scale + mm.amax() * a.amax())
+                finite(a.as_slice()) && (&mm * a - sys.rhs(q, qd)).nan_amax() <= REL * (scale + mm.nan_amax() * a.nan_amax())
             });
         };
         let (q, qd) = ([0.3, 0.7], [-0.4, 1.1]);
@@ -866,7 +869,7 @@ cases! {
                 // G q̈ = γ and (q̈ + gŷ) × r = 0
                 let g_qdd = 2.0 * (q[0] * a[0] + q[1] * a[1]);
                 let gamma = -2.0 * (qd[0] * qd[0] + qd[1] * qd[1]);
-                let s2 = scale * (1.0 + a.amax() + p.g.abs());
+                let s2 = scale * (1.0 + a.nan_amax() + p.g.abs());
                 finite(a.as_slice()) && (g_qdd - gamma).abs() <= REL * s2 && (a[0] * q[1] - (a[1] + p.g) * q[0]).abs() <= REL * s2
             };
             err_or(constrained_accelerations(p, q, qd, 0.0), "constrained_accelerations", |s| central(&s.qdd) && finite(s.lambda.as_slice()));
@@ -887,7 +890,7 @@ cases! {
             // the velocity row ẋ + kẏ = 0 with hostile k: G q̈ = γ on both rows
             let pk = Pendulum { k: Some(x), ..p };
             err_or(constrained_accelerations(&pk, &q, &qd, 0.0), "constrained_accelerations(ψ)", |s| {
-                finite(s.qdd.as_slice()) && (s.qdd[0] + x * s.qdd[1]).abs() <= REL * (1.0 + x.abs()) * (1.0 + s.qdd.amax())
+                finite(s.qdd.as_slice()) && (s.qdd[0] + x * s.qdd[1]).abs() <= REL * (1.0 + x.abs()) * (1.0 + s.qdd.nan_amax())
             });
         }
         // two rows through one point of a 2-dof system leave nothing: the second row (ẋ = 0)
@@ -901,8 +904,8 @@ cases! {
         let (mm, f) = d.equations(&q, &qd, 0.0).unwrap();
         assert!(mm[(0, 0)] == 1.5 && f[1] == -1.5 * 9.81);
         let lf = LagrangeForm(&p);
-        assert!((lf.mass(&q, 0.0).unwrap() - DMatrix::identity(2, 2) * 1.5).amax() <= 1e-15);
-        assert!(MapForm(&p).equations(&q, &qd, 0.0).is_ok_and(|(m, _)| (m - DMatrix::identity(2, 2) * 1.5).amax() <= 1e-15));
+        assert!((lf.mass(&q, 0.0).unwrap() - DMatrix::identity(2, 2) * 1.5).nan_amax() <= 1e-15);
+        assert!(MapForm(&p).equations(&q, &qd, 0.0).is_ok_and(|(m, _)| (m - DMatrix::identity(2, 2) * 1.5).nan_amax() <= 1e-15));
         assert_eq!((ConstrainedSystem::dof(&lf), lf.constraint_count(), lf.velocity_constraint_count()), (2, 1, 0));
         let mut out = [0.0];
         p.velocity_constraints(&q, &qd, 0.0, &mut out);
@@ -910,7 +913,7 @@ cases! {
         FreeParticle(1.0).velocity_constraints(&q, &qd, 0.0, &mut []);
         assert_eq!((FreeParticle(1.0).constraint_count(), FreeParticle(1.0).velocity_constraint_count()), (0, 0));
         // no constraints: the unconstrained accelerations
-        assert!(constrained_accelerations(&FreeParticle(2.0), &q, &qd, 0.0).is_ok_and(|s| s.qdd.amax() == 0.0 && s.lambda.is_empty()));
+        assert!(constrained_accelerations(&FreeParticle(2.0), &q, &qd, 0.0).is_ok_and(|s| s.qdd.nan_amax() == 0.0 && s.lambda.is_empty()));
     }
 
     // The KKT core (§9.11) on plain matrices: M x + Gᵀλ = f and G x = γ (residuals checked),
@@ -921,8 +924,8 @@ cases! {
         let g = DMatrix::from_row_slice(2, 3, &[1.0, 0.0, 1.0, 0.0, 1.0, -1.0]);
         let (f, gamma) = (DVector::from_vec(vec![1.0, -2.0, 0.5]), DVector::from_vec(vec![0.3, -0.1]));
         let solves = |m: &DMatrix<f64>, g: &DMatrix<f64>, f: &DVector<f64>, gamma: &DVector<f64>, x: &DVector<f64>, l: &DVector<f64>| {
-            let scale = (m.amax() * x.amax()).max(g.amax() * l.amax()).max(f.amax()).max(gamma.amax()).max(f64::MIN_POSITIVE);
-            finite(x.as_slice()) && finite(l.as_slice()) && (m * x + g.transpose() * l - f).amax() <= REL * scale && (g * x - gamma).amax() <= REL * scale
+            let scale = (m.nan_amax() * x.nan_amax()).max(g.nan_amax() * l.nan_amax()).max(f.nan_amax()).max(gamma.nan_amax()).max(f64::MIN_POSITIVE);
+            finite(x.as_slice()) && finite(l.as_slice()) && (m * x + g.transpose() * l - f).nan_amax() <= REL * scale && (g * x - gamma).nan_amax() <= REL * scale
         };
         let k = KktFactor::new(&m, &g, DEPENDENT_ROW_REL_TOL).unwrap();
         assert_eq!(k.rows(), 2);
@@ -957,7 +960,7 @@ cases! {
         refused(k.solve(&f, &DVector::zeros(0)), "solve(empty γ)");
         // no rows: x = M⁻¹f
         let free = KktFactor::new(&m, &DMatrix::zeros(0, 3), DEPENDENT_ROW_REL_TOL).unwrap();
-        assert!(free.rows() == 0 && (&m * free.solve(&f, &DVector::zeros(0)).unwrap().x - &f).amax() <= 1e-14);
+        assert!(free.rows() == 0 && (&m * free.solve(&f, &DVector::zeros(0)).unwrap().x - &f).nan_amax() <= 1e-14);
         let empty = KktFactor::new(&DMatrix::zeros(0, 0), &DMatrix::zeros(0, 0), DEPENDENT_ROW_REL_TOL);
         err_or(empty, "KktFactor::new(0×0)", |k| k.rows() == 0);
     }
@@ -990,7 +993,7 @@ cases! {
                 let r = &g * &v + &c;
                 err_or(project_velocities(&v, &m, &g, &r, DEPENDENT_ROW_REL_TOL), "project_velocities", |w| {
                     let res = (&g * w + &c)[0];
-                    finite(w.as_slice()) && res.abs() <= REL * (1.0 + g.amax() * w.amax() + c.amax())
+                    finite(w.as_slice()) && res.abs() <= REL * (1.0 + g.nan_amax() * w.nan_amax() + c.nan_amax())
                 });
             }
         }
@@ -1079,7 +1082,7 @@ cases! {
                 pv.particles[0][0] == Vector3::x() && pv.particles[2][0] == Vector3::y() && pv.bodies[1][0].1 == Vector3::z()
             });
             err_or(kane_state_derivative(&sys, x, &[0.1, 0.2, 0.05, 0.7, -0.3]), "kane_state_derivative(t)", |y| finite(y) && y.len() == 5);
-            err_or(kane_accelerations(&Drifting(x), &q[..2], &u_i, 0.0), "kane_accelerations(defaults)", |s| s.ud.amax() == 0.0);
+            err_or(kane_accelerations(&Drifting(x), &q[..2], &u_i, 0.0), "kane_accelerations(defaults)", |s| s.ud.nan_amax() == 0.0);
         }
         let y = kane_state_derivative(&sys, 0.0, &[0.1, 0.2, 0.05, 0.7, -0.3]).unwrap();
         assert!((y[0] - 0.7).abs() <= 1e-15 && (y[2] - 0.35).abs() <= 1e-15 && law(&sys, &u_i, &s) && (y[3] - s.ud[0]).abs() <= 1e-12);
@@ -1118,7 +1121,7 @@ cases! {
         let (q, v, tau) = ([0.7, 0.1, -0.2, 0.3], [0.5, -0.4, 0.3, 0.2], [0.1, 0.0, -0.2, 0.05]);
         let agree = |a: Result<Vec<f64>, DynamicsError>, b: Result<Vec<f64>, DynamicsError>, what: &str| match (a, b) {
             (Ok(x), Ok(y)) => {
-                let scale = y.iter().fold(1.0f64, |m, c| m.max(c.abs()));
+                let scale = y.iter().fold(1.0f64, |m, c| nan_max(m, c.abs()));
                 assert!(x.iter().zip(&y).all(|(p, r)| (p - r).abs() <= REL * scale), "{what}: {x:?} vs {y:?}");
             }
             (a, b) => {

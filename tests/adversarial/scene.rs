@@ -6,6 +6,7 @@
 //! pendulum's normal modes ω² = (g/l)(2 ± √2); a run converted to imperial units by the
 //! exact factors; the source locator's spans inside the text.
 
+use crate::support::NanAmax;
 use std::sync::atomic::AtomicBool;
 
 use nalgebra::{DMatrix, DVector};
@@ -94,12 +95,12 @@ fn sound(s: &Scene) -> bool {
     let v = DVector::from_column_slice(&y0[nq..]);
     let vd = DVector::from_column_slice(&d[nq..]);
     let t = 0.5 * v.dot(&(m * &v));
-    let q_scale = st.generalized_forces.amax() + m.amax() * vd.amax();
+    let q_scale = st.generalized_forces.nan_amax() + m.nan_amax() * vd.nan_amax();
     finite(&d)
-        && (m - m.transpose()).amax() <= 1e-12 * m.amax()
+        && (m - m.transpose()).nan_amax() <= 1e-12 * m.nan_amax()
         && m.clone().cholesky().is_some()
         && (st.kinetic - t).abs() <= 1e-9 * t.abs().max(f64::MIN_POSITIVE)
-        && (m * &vd - &st.generalized_forces).amax() <= 1e-9 * q_scale.max(f64::MIN_POSITIVE)
+        && (m * &vd - &st.generalized_forces).nan_amax() <= 1e-9 * q_scale.max(f64::MIN_POSITIVE)
 }
 
 cases! {
@@ -194,12 +195,12 @@ cases! {
                     let m = &st.mass_matrix;
                     let v = DVector::from_column_slice(&y[2..]);
                     let t = 0.5 * v.dot(&(m * &v));
-                    let scale = st.generalized_forces.amax() + m.amax() * st.accelerations.amax();
+                    let scale = st.generalized_forces.nan_amax() + m.nan_amax() * st.accelerations.nan_amax();
                     m.clone().cholesky().is_some()
                         && st.kinetic.is_finite()
                         && st.potential.is_finite()
                         && (st.kinetic - t).abs() <= 1e-9 * t.abs().max(f64::MIN_POSITIVE)
-                        && (m * &st.accelerations - &st.generalized_forces).amax() <= 1e-9 * scale.max(f64::MIN_POSITIVE)
+                        && (m * &st.accelerations - &st.generalized_forces).nan_amax() <= 1e-9 * scale.max(f64::MIN_POSITIVE)
                 });
                 let mut out = vec![0.0; 4];
                 err_or(rhs.eval(0.0, &y, &mut out).map(|()| out.clone()), "SceneRhs::eval", |o| {

@@ -3,6 +3,7 @@
 //! Physical matrices (§2.6–2.10) are in `matrices.rs`, nonstandard frames and gradients
 //! (§2.23–2.24) in `nonstandard.rs`.
 
+use crate::support::NanAmax;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use vectrix::frames::FrameError;
@@ -441,20 +442,20 @@ mod prop {
             let scale = m_a.norm().max(1.0);
             let got = mm.resolve(&b);
             let want = change_frame_dyadic(&m_a, &a, &b);
-            prop_assert!((got - want).amax() <= 64.0 * EPS * scale);
+            prop_assert!((got - want).nan_amax() <= 64.0 * EPS * scale);
             let v = b.vector(x);
             let want = change_frame_vector(&(mm.resolve(&a) * v.resolve(&a)), &a, &b);
             prop_assert!(rel_close((mm * v).resolve(&b), want, 1e-12) || want.norm() < 1e-9);
             prop_assert!((mm.trace() - m_a.trace()).abs() <= 64.0 * EPS * scale);
             prop_assert!((mm.determinant() - nn.determinant()).abs() <= 1e-12 * scale.powi(3));
             let mn = (mm * nn).resolve(&a);
-            prop_assert!((mn - mm.resolve(&a) * nn.resolve(&a)).amax() <= 1e-12 * scale * scale);
-            prop_assert!((mm.coform().resolve(&b) - mm.resolve(&b).transpose()).amax() <= 64.0 * EPS * scale);
+            prop_assert!((mn - mm.resolve(&a) * nn.resolve(&a)).nan_amax() <= 1e-12 * scale * scale);
+            prop_assert!((mm.coform().resolve(&b) - mm.resolve(&b).transpose()).nan_amax() <= 64.0 * EPS * scale);
             let c = (v.coform() * mm).resolve(&a);
-            prop_assert!((c - v.resolve(&a).transpose() * mm.resolve(&a)).amax() <= 1e-12 * scale * (v.norm() + 1.0));
+            prop_assert!((c - v.resolve(&a).transpose() * mm.resolve(&a)).nan_amax() <= 1e-12 * scale * (v.norm() + 1.0));
             if let Ok(inv) = mm.inverse(1e-6) {
                 let e = (inv * mm).resolve(&b) - Matrix3::identity();
-                prop_assert!(e.amax() <= 1e-8, "{e}");
+                prop_assert!(e.nan_amax() <= 1e-8, "{e}");
             }
         }
 
@@ -495,9 +496,9 @@ mod prop {
             let t = a.tensor(p, q, &t_a).unwrap();
             let got = t.resolve(&b);
             let want = change_frame_tensor(&t_a, p, q, &a, &b).unwrap();
-            prop_assert!((&got - &want).amax() <= 64.0 * EPS * (p + q + 1) as f64);
-            prop_assert!((t.resolve(&a) - &t_a).amax() <= 64.0 * EPS * (p + q + 1) as f64);
-            prop_assert!((b.tensor(p, q, &got).unwrap().resolve(&a) - &t_a).amax() <= 128.0 * EPS * (p + q + 1) as f64);
+            prop_assert!((&got - &want).nan_amax() <= 64.0 * EPS * (p + q + 1) as f64);
+            prop_assert!((t.resolve(&a) - &t_a).nan_amax() <= 64.0 * EPS * (p + q + 1) as f64);
+            prop_assert!((b.tensor(p, q, &got).unwrap().resolve(&a) - &t_a).nan_amax() <= 128.0 * EPS * (p + q + 1) as f64);
         }
 
         /// Fact 2.1.1: a ≡ a + 2πk, wrapping lands in (−π, π] and is congruent to its input;

@@ -353,3 +353,33 @@ fn fact_6_2_4_rotated_body() {
         Err(StaticsError::Frame(_))
     ));
 }
+
+#[test]
+fn issue_33_particle_masses_summing_past_f64_max_overflow() {
+    // (6.1.1): m_B = Σm_i. Finite masses whose sum exceeds f64::MAX ≈ 1.8e308 used to give
+    // Ok with m_B = ∞ and a NaN centre; the sum is StaticsError::Overflow naming it
+    // (docs/robustness.md §2).
+    let a = Frame::new();
+    let two_huge = [(f64::MAX, pt(&a, [1.0, 0.0, 0.0])), (f64::MAX, pt(&a, [0.0, 1.0, 0.0]))];
+    match MassProperties::from_particles(&two_huge) {
+        Err(StaticsError::Overflow { what }) => assert!(what.contains("total mass"), "{what}"),
+        other => panic!("{other:?}"),
+    }
+    // a first moment Σm_i r_i past the range with a finite centre (m = 1e300 at 1e10): the
+    // centre is the weighted mean, and the inertia about it is finite
+    let p = MassProperties::from_particles(&[
+        (1e300, pt(&a, [1e10, 0.0, 0.0])),
+        (1e300, pt(&a, [1e10, 2.0, 0.0])),
+    ])
+    .unwrap();
+    assert_eq!(p.mass(), 2e300);
+    assert_eq!(p.centre_of_mass().position().resolve(&a).as_slice(), [1e10, 1.0, 0.0]);
+    assert_rel(p.inertia_about_centre().resolve(&a)[(0, 0)], 2e300, 4.0 * EPS);
+    assert_eq!(
+        MassProperties::particle(1e300, pt(&a, [1e10, 0.0, 0.0])).unwrap().centre_of_mass(),
+        pt(&a, [1e10, 0.0, 0.0])
+    );
+    // an inertia m r² past the range about a finite centre is an Overflow too
+    let far = [(1e300, pt(&a, [-1e10, 0.0, 0.0])), (1e300, pt(&a, [1e10, 0.0, 0.0]))];
+    assert!(matches!(MassProperties::from_particles(&far), Err(StaticsError::Overflow { .. })));
+}

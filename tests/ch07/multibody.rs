@@ -7,14 +7,14 @@ use vectrix::nalgebra::{DMatrix, Matrix3, Quaternion, UnitQuaternion, Vector3};
 use vectrix::num_dual::{Dual64, DualSVec64, HyperDual64};
 use vectrix::prelude::DynamicsError;
 
-use crate::support::EPS;
+use crate::support::{EPS, NanAmax, nan_max};
 
 /// max |got − want| ≤ tol × max(|want|) (relative to the largest entry).
 #[track_caller]
 fn assert_rel_to_max(got: &[f64], want: &[f64], tol: f64) {
     assert_eq!(got.len(), want.len(), "length mismatch");
-    let scale = want.iter().fold(0.0f64, |m, w| m.max(w.abs()));
-    let err = got.iter().zip(want).fold(0.0f64, |m, (g, w)| m.max((g - w).abs()));
+    let scale = want.iter().fold(0.0f64, |m, w| nan_max(m, w.abs()));
+    let err = got.iter().zip(want).fold(0.0f64, |m, (g, w)| nan_max(m, (g - w).abs()));
     assert!(err <= tol * scale, "got {got:?}, want {want:?}, max |err| = {err:e} > {tol:e} × {scale:e}");
 }
 
@@ -416,7 +416,7 @@ fn generic_scalar_dual_numbers_through_the_tree_algorithms() {
     let lift = |x: &[f64]| x.iter().map(|&x| Dual64::from(x)).collect::<Vec<_>>();
     let hd = model.cast::<HyperDual64>();
     let hlift = |x: &[f64]| x.iter().map(|&x| HyperDual64::from(x)).collect::<Vec<_>>();
-    let tol = 64.0 * EPS * h.amax() * (1.0 + v.iter().fold(0.0f64, |a, x| a.max(x.abs())));
+    let tol = 64.0 * EPS * h.nan_amax() * (1.0 + v.iter().fold(0.0f64, |a, x| nan_max(a, x.abs())));
     // gravity torques are at most the total weight (7 links of 1.5 kg) times a lever below 2 m
     let torque_scale = 9.81 * 1.5 * 7.0 * 2.0;
     for k in 0..n {
@@ -433,7 +433,7 @@ fn generic_scalar_dual_numbers_through_the_tree_algorithms() {
             vh[k].eps1 += 1.0;
             vh[j].eps2 += 1.0;
             let t = hd.kinetic_energy(&hlift(&q), &vh).unwrap();
-            assert_abs(t.eps1eps2, h[(k, j)], 64.0 * EPS * h.amax());
+            assert_abs(t.eps1eps2, h[(k, j)], 64.0 * EPS * h.nan_amax());
         }
     }
     // three directions at once: ∂v̇/∂τ₀, ∂v̇/∂τ₁, ∂v̇/∂v₂
@@ -492,7 +492,7 @@ fn fact_8_4_1_energy_rate_equals_power_of_joint_forces() {
     let rate = d.kinetic_energy(&qe, &ve).unwrap().eps + d.potential_energy(&qe).unwrap().eps;
     let power: f64 = tau.iter().zip(&v).map(|(t, w)| t * w).sum();
     // power of the weight (7 links of 1.5 kg, levers below 2 m) and of τ, per unit speed
-    let speed = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let speed = v.iter().fold(0.0f64, |m, x| nan_max(m, x.abs()));
     let scale = (9.81 * 1.5 * 7.0 * 2.0 + tau.iter().map(|t| t.abs()).sum::<f64>()) * speed;
     assert_abs(rate, power, 256.0 * EPS * scale);
 }

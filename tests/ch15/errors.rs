@@ -97,3 +97,46 @@ fn issue_22_nan_never_inside_ok() {
         Err(e) => assert!(matches!(e, LtiError::Overflow { .. })),
     }
 }
+
+#[test]
+fn issue_33_polynomial_at_infinity_is_the_limit() {
+    // docs/robustness.md, "Where ∞ is the answer": p(±∞) = lim p(x) = c₀·(±∞)ⁿ, as numpy's
+    // polyval; a finite x whose |p(x)| exceeds f64::MAX gives ±∞ by the sign of p(x); NaN
+    // gives NaN (it used to come out as ±∞).
+    let inf = f64::INFINITY;
+    let q = poly(&[1.0, 0.0, -1.0]); // s² − 1
+    assert_eq!((q.eval(inf), q.eval(-inf)), (inf, inf));
+    let cubic = poly(&[-2.0, 5.0, 0.0, 7.0]); // −2s³ + 5s² + 7
+    assert_eq!((cubic.eval(inf), cubic.eval(-inf)), (-inf, inf));
+    assert_eq!(poly(&[3.0]).eval(inf), 3.0);
+    assert_eq!(poly(&[0.0]).eval(-inf), 0.0);
+    // overflow at a finite point: s² at 1e200 and −s³ at 1e110 (true values 1e400, −1e330)
+    assert_eq!(poly(&[1.0, 0.0, 0.0]).eval(1e200), inf);
+    assert_eq!(poly(&[-1.0, 0.0, 0.0, 0.0]).eval(1e110), -inf);
+    for p in [&q, &cubic, &poly(&[3.0]), &poly(&[0.0])] {
+        assert!(p.eval(f64::NAN).is_nan(), "{p:?} at NaN");
+    }
+}
+
+#[test]
+fn issue_33_logspace_past_f64_max_is_an_error() {
+    // 10^b beyond f64::MAX ≈ 1.8e308 (b ≥ log₁₀ f64::MAX ≈ 308.2547) used to put ∞ inside Ok;
+    // it is an InvalidArgument naming the valid range. Up to that edge every point is finite,
+    // the last is exactly 10^b (Matlab's and numpy's endpoint), and a = −f64::MAX no longer
+    // overflows the exponent sum (b − a)·k.
+    for b in [400.0, f64::MAX.log10(), 1e300] {
+        match logspace(0.0, b, 5) {
+            Err(LtiError::InvalidArgument { what: "logspace", reason }) => {
+                assert!(reason.contains("308.2547"), "b = {b}: {reason}")
+            }
+            other => panic!("logspace(0, {b}, 5): {other:?}"),
+        }
+    }
+    let w = logspace(300.0, 308.25, 7).unwrap();
+    assert!(w.iter().all(|x| x.is_finite()) && w.windows(2).all(|p| p[0] < p[1]), "{w:?}");
+    assert_eq!(*w.last().unwrap(), 10f64.powf(308.25));
+    let w = logspace(-f64::MAX, 2.0, 10).unwrap();
+    assert!(w.iter().all(|x| x.is_finite() && *x >= 0.0) && w[9] == 100.0, "{w:?}");
+    // an ordinary grid keeps its values: 10⁻², 10⁻¹, …, 10²
+    assert_eq!(logspace(-2.0, 2.0, 5).unwrap(), [0.01, 0.1, 1.0, 10.0, 100.0]);
+}

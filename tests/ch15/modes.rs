@@ -2,6 +2,7 @@
 //! problems 15.20.11–13, 15.20.33–36 and 15.20.51, 15.20.53.
 
 use super::*;
+use crate::support::nan_min;
 use nalgebra::dmatrix;
 use std::f64::consts::LN_2;
 
@@ -147,7 +148,7 @@ fn yaw_damper_min_zeta(input: usize, k: f64) -> (f64, Vec<Complex64>) {
     let c_r = nalgebra::dmatrix![0.0, 1.0, 0.0, 0.0];
     let a_cl = sys.a() - k * &b * &c_r;
     let ev = sorted(linalg::eigenvalues(&a_cl).unwrap());
-    let z = ev.iter().map(|l| -l.re / l.norm()).fold(f64::INFINITY, f64::min);
+    let z = ev.iter().map(|l| -l.re / l.norm()).fold(f64::INFINITY, nan_min);
     (z, ev)
 }
 

@@ -105,6 +105,65 @@ fn sec_16_4_pole_at_zero_is_infinite_not_nan() {
 }
 
 #[test]
+fn issue_33_transfer_function_at_a_pole_is_the_point_at_infinity() {
+    // docs/robustness.md, "Where ∞ is the answer": G at a pole is ∞, the exact value of a
+    // rational function there (python-control and Matlab give ∞ too), in the direction of the
+    // limit G(s + h), h → 0⁺ real: 1/(s + 1) at −1 is 1/h → +∞; 1/(s² + 2s + 2) at −1 + j is
+    // 1/(D′(s)h) = 1/(2jh) → −j∞. A value beyond the f64 range is ∞ in its direction
+    // (1e300/(s + 1e-300) at 0 is 1e600: +∞, where it used to come out as −∞ − j∞); a
+    // cancelled factor gives the limit; elsewhere the value is finite.
+    let inf = f64::INFINITY;
+    let c = Complex64::new;
+    assert_eq!(tf(&[1.0], &[1.0, 1.0]).eval(c(-1.0, 0.0)), c(inf, 0.0));
+    assert_eq!(tf(&[1.0], &[1.0, 2.0, 2.0]).eval(c(-1.0, 1.0)), c(0.0, -inf));
+    assert_eq!(tf(&[1e300], &[1.0, 1e-300]).eval(c(0.0, 0.0)), c(inf, 0.0));
+    assert_eq!(tf(&[1.0, 1.0], &[1.0, 3.0, 2.0]).eval(c(-1.0, 0.0)), c(1.0, 0.0));
+    assert_eq!(tf(&[1.0], &[1.0, 1.0]).eval(c(-1.0, 1.0)), c(0.0, -1.0));
+}
+
+#[test]
+fn issue_33_freqresp_at_an_axis_pole_is_infinite_inside_ok() {
+    // docs/robustness.md, "Where ∞ is the answer": a grid point jω₀ that is a pole gives the
+    // point at infinity in the direction of the limit ω → ω₀⁺ and leaves the other points
+    // alone: 1/(s² + 1) = 1/(1 − ω²) → −∞ from above ω₀ = 1. Where |G(jω)| only exceeds the
+    // range (1e300/(s + 1e-300) at ω = 1e-300, |G| ≈ 7e599) the value is ∞ in its direction
+    // (−45°: both components).
+    let inf = f64::INFINITY;
+    let w = [0.5, 1.0, 2.0];
+    let f = tf(&[1.0], &[1.0, 0.0, 1.0]).freqresp(&w).unwrap();
+    assert_eq!(f[1], Complex64::new(-inf, 0.0));
+    for k in [0, 2] {
+        assert_eq!(f[k].im, 0.0);
+        assert_rel(f[k].re, 1.0 / (1.0 - w[k] * w[k]), 4.0 * EPS);
+    }
+    let f = tf(&[1e300], &[1.0, 1e-300]).freqresp(&[1e-300]).unwrap();
+    assert_eq!(f[0], Complex64::new(inf, -inf));
+}
+
+#[test]
+fn issue_33_bode_at_an_axis_pole_is_infinite_db_with_a_finite_phase() {
+    // docs/robustness.md, "Where ∞ is the answer": at a pole on the grid the magnitude is
+    // +∞ dB (§16.4: |G(j0)| = +∞ for 1/(ms)), the phase the finite limit ω → ω₀⁺ on the
+    // branch of the factors; the other points are the ordinary values. 1/(s(s² + 1)): −90° on
+    // (0, 1), −270° above 1 (the pair's factors turn by −180° there).
+    let w = [0.0, 0.5, 1.0, 2.0];
+    let b = tf(&[1.0], &[1.0, 0.0, 1.0, 0.0]).bode(&w).unwrap();
+    assert_eq!((b.magnitude_db[0], b.magnitude_db[2]), (f64::INFINITY, f64::INFINITY));
+    for (k, want) in [(0, -90.0), (1, -90.0), (2, -270.0), (3, -270.0)] {
+        assert_abs(b.phase_deg[k], want, 64.0 * EPS * 270.0);
+    }
+    for k in [1, 3] {
+        assert_abs(b.magnitude_db[k], -20.0 * (w[k] * (1.0 - w[k] * w[k])).abs().log10(), 64.0 * EPS * 20.0);
+    }
+    // |G| beyond the f64 range is not a pole: the response is ∞, the dB value finite
+    // (20 log₁₀(1e600/√2) = 12000 − 10 log₁₀ 2)
+    let b = tf(&[1e300], &[1.0, 1e-300]).bode(&[1e-300]).unwrap();
+    assert!(b.response[0].norm().is_infinite());
+    assert_rel(b.magnitude_db[0], 12000.0 - 10.0 * 2f64.log10(), 64.0 * EPS);
+    assert_abs(b.phase_deg[0], -45.0, 64.0 * EPS * 45.0);
+}
+
+#[test]
 fn eq_16_5_7_real_pole_minus_3_db() {
     // (16.5.3), (16.5.7): α/(s − p): |G| = |α|/√(ω² + p²), −3 dB (exactly −10 log₁₀ 2) at ω = |p|.
     let g = tf(&[5.0], &[1.0, 4.0]);

@@ -30,6 +30,7 @@
 #![allow(dead_code)]
 
 use proptest::prelude::*;
+use vectrix::nalgebra::{Dim, Matrix, RawStorage};
 use vectrix::prelude::*;
 
 /// Machine epsilon of f64.
@@ -80,7 +81,7 @@ pub fn assert_abs_slice(got: &[f64], want: &[f64], tol: f64) {
 pub fn assert_rel_slice(got: &[f64], want: &[f64], tol: f64) {
     assert_eq!(got.len(), want.len(), "length mismatch");
     let err = max_abs_diff(got, want);
-    let scale = want.iter().fold(0.0f64, |m, w| m.max(w.abs()));
+    let scale = want.iter().fold(0.0, |m, w| nan_max(m, w.abs()));
     assert!(
         err <= tol * scale,
         "got {got:?}, want {want:?}: max |err| = {err:e} > rel tol {tol:e} · max|want| = {scale:e}"
@@ -138,10 +139,39 @@ pub fn parse_printed(printed: &str) -> (f64, f64) {
 
 fn max_abs_diff(got: &[f64], want: &[f64]) -> f64 {
     // NaN must fail: fold with a comparison that propagates it.
-    got.iter().zip(want).fold(0.0f64, |m, (g, w)| {
-        let d = (g - w).abs();
-        if d.is_nan() || m.is_nan() { f64::NAN } else { m.max(d) }
-    })
+    got.iter().zip(want).fold(0.0, |m, (g, w)| nan_max(m, (g - w).abs()))
+}
+
+// # Worst-error folds that fail on NaN
+//
+// `f64::max(NaN, x)` is x, and nalgebra's `amax` keeps a NaN entry only when it is the last
+// one, so a worst error folded with either passes `worst <= tol` although an entry is NaN.
+// The folds below return NaN when any entry is NaN, so every comparison with them fails.
+// `nan_blind_folds_are_refused` in `tests/textbook_index.rs` rejects the NaN-blind forms by
+// pattern.
+
+/// max(a, b), NaN when either is NaN: the drop-in for `f64::max` in a worst-error fold
+/// (`.fold(0.0, nan_max)`, `worst = nan_max(worst, err)`).
+pub fn nan_max(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+}
+
+/// min(a, b), NaN when either is NaN: the drop-in for `f64::min` in a fold.
+pub fn nan_min(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() { f64::NAN } else { a.min(b) }
+}
+
+/// The largest |entry| of a matrix or vector, NaN when any entry is NaN (0 when empty, as
+/// `amax`): the drop-in for nalgebra's `amax` in a check `m.nan_amax() <= tol`.
+pub trait NanAmax {
+    /// max |mᵢⱼ|, NaN when any entry is NaN.
+    fn nan_amax(&self) -> f64;
+}
+
+impl<R: Dim, C: Dim, S: RawStorage<f64, R, C>> NanAmax for Matrix<f64, R, C, S> {
+    fn nan_amax(&self) -> f64 {
+        self.iter().fold(0.0, |m, x| nan_max(m, x.abs()))
+    }
 }
 
 /// Finite components in a range that includes tiny and huge magnitudes.

@@ -11,11 +11,17 @@ use crate::zpk::Zpk;
 use num_complex::Complex64;
 use std::f64::consts::TAU;
 
-/// `n` logarithmically spaced frequencies from 10^a to 10^b (Matlab `logspace`).
+/// `n` logarithmically spaced frequencies from 10^a to 10^b (Matlab `logspace`): the exponents
+/// a + (b − a)·k/(n − 1), the last one exactly b (as Matlab and numpy set it).
+///
+/// # Degenerate inputs
+/// An exponent below log₁₀ of the smallest subnormal (≈ −323.3) gives the correctly rounded
+/// frequency 0.
 ///
 /// # Errors
-/// [`LtiError::InvalidArgument`] unless a < b are finite and n ≥ 2; [`LtiError::TooLarge`]
-/// for n > [`crate::MAX_VALUES`].
+/// [`LtiError::InvalidArgument`] unless a < b are finite and n ≥ 2, and when 10^b exceeds the
+/// largest finite f64 (b ≥ log₁₀ f64::MAX ≈ 308.2547: the valid range of b is below that);
+/// [`LtiError::TooLarge`] for n > [`crate::MAX_VALUES`].
 pub fn logspace(a: f64, b: f64, n: usize) -> Result<Vec<f64>, LtiError> {
     if !(a.is_finite() && b.is_finite() && a < b && n >= 2) {
         return Err(LtiError::InvalidArgument {
@@ -23,10 +29,34 @@ pub fn logspace(a: f64, b: f64, n: usize) -> Result<Vec<f64>, LtiError> {
             reason: format!("10^{a} … 10^{b} with {n} points; need finite a < b and n ≥ 2"),
         });
     }
+    // every frequency is at most 10^b, which must be a finite f64 (issue 33: `logspace(0, 400,
+    // 5)` returned ∞ inside `Ok`)
+    if !10f64.powf(b).is_finite() {
+        return Err(LtiError::InvalidArgument {
+            what: "logspace",
+            reason: format!(
+                "10^{b} exceeds the largest finite f64 (≈ 1.8e308); the upper exponent b must be below log₁₀(f64::MAX) ≈ {:.4}",
+                f64::MAX.log10()
+            ),
+        });
+    }
     if n > crate::MAX_VALUES {
         return Err(LtiError::TooLarge { what: "logspace", requested: n as u128, limit: crate::MAX_VALUES });
     }
-    Ok((0..n).map(|k| 10f64.powf(a + (b - a) * k as f64 / (n - 1) as f64)).collect())
+    let (span, last) = (b - a, (n - 1) as f64);
+    // a + (b − a)·k/(n − 1), never above b; for a near −f64::MAX the product (b − a)·k would
+    // overflow, so the fraction k/(n − 1) is formed first there
+    let wide = !(span * last).is_finite();
+    let exponent = |k: usize| {
+        if k == n - 1 {
+            b
+        } else if wide {
+            (a + span * (k as f64 / last)).min(b)
+        } else {
+            (a + span * k as f64 / last).min(b)
+        }
+    };
+    Ok((0..n).map(|k| 10f64.powf(exponent(k))).collect())
 }
 
 /// G(jω) on a frequency grid with magnitude in dB and continuous phase in degrees.
@@ -197,11 +227,15 @@ impl TransferFunction {
     /// root finding.
     ///
     /// # Degenerate inputs
-    /// At an imaginary-axis pole the value is the point at infinity in the direction of the
-    /// limit ω → ω₀⁺ (components ±∞, or 0 where the direction has none; never NaN), at an
-    /// imaginary-axis zero it is 0, and a common factor of N and D at jω₀ gives the limit
-    /// (16.6.2 takes the same one-sided limit at ω = 0). [`TransferFunction::bode`] gives the
-    /// exact limiting phase.
+    /// `Ok` holds ±∞ components in exactly two places (docs/robustness.md, "Where ∞ is the
+    /// answer"): at an imaginary-axis pole jω₀ on the grid, where the value is the point at
+    /// infinity in the direction of the limit ω → ω₀⁺ (components ±∞, or 0 where the
+    /// direction has none; never NaN), and where |G(jω)| exceeds the f64 range. ∞ is the
+    /// book's value there (|G(j0)| = +∞ for 1/(ms), §16.4), and a grid that meets a pole keeps
+    /// its other points (python-control and Matlab return ∞ at such a point as well). At an
+    /// imaginary-axis zero the value is 0, and a common factor of N and D at jω₀ gives the
+    /// limit (16.6.2 takes the same one-sided limit at ω = 0). [`TransferFunction::bode`]
+    /// gives the exact limiting phase.
     ///
     /// Book: §16.2 (frequency response G(jω)), (16.2.4).
     ///
@@ -245,8 +279,12 @@ impl TransferFunction {
     /// decide the branch alone.
     ///
     /// # Degenerate inputs
-    /// At an imaginary-axis pole the magnitude is +∞ dB and the phase the limit ω → ω₀⁺; at a
-    /// zero −∞ dB with the same rule.
+    /// `Ok` holds ∞ only at an imaginary-axis pole jω₀ on the grid (docs/robustness.md, "Where
+    /// ∞ is the answer"): there the magnitude is +∞ dB (the book's value, §16.4), the response
+    /// is infinite as in [`TransferFunction::freqresp`], and the phase is the finite limit
+    /// ω → ω₀⁺; the other points of the grid are unaffected. At a zero the magnitude is −∞ dB
+    /// with the same phase rule. Where |G(jω)| merely exceeds the f64 range the magnitude in
+    /// dB stays finite (it is computed in logarithms) while the response is infinite.
     ///
     /// Book: §16.3, (16.6.2), 16.8.3–16.8.7.
     ///

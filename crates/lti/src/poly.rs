@@ -165,6 +165,16 @@ impl Polynomial {
     /// that intermediate powers never overflow (±∞ only when the value itself does): xⁿ·r(1/x)
     /// is formed by n multiplications of r by x, whose magnitudes only grow, so that a tiny
     /// leading coefficient (5e-324 x² + x + 1 at 10³⁰⁰) does not meet an overflowed xⁿ.
+    ///
+    /// # Degenerate inputs
+    /// This is a plain function on the extended reals (numpy's `polyval` gives the same
+    /// values); ±∞ comes out in exactly two places (docs/robustness.md, "Where ∞ is the
+    /// answer"):
+    /// - at x = ±∞ the value is the limit of p(x): c₀·(±∞)ⁿ, that is ±∞ with the sign of
+    ///   c₀·(±1)ⁿ for n ≥ 1, the constant c₀ for n = 0, and 0 for the zero polynomial;
+    /// - at a finite x where |p(x)| exceeds f64::MAX the value is ±∞ with the sign of p(x).
+    ///
+    /// NaN gives NaN.
     pub fn eval(&self, x: f64) -> f64 {
         if x.abs() <= 1.0 {
             return self.coeffs.iter().fold(0.0, |acc, &c| acc * x + c);
@@ -174,9 +184,9 @@ impl Polynomial {
         if r == 0.0 {
             return 0.0;
         }
-        // p(x) = xⁿ·r(1/x), multiplied in one x at a time (|x| > 1: no premature overflow)
-        let v = (0..self.degree()).fold(r, |v, _| v * x);
-        if v.is_nan() { f64::INFINITY.copysign(r) } else { v }
+        // p(x) = xⁿ·r(1/x), multiplied in one x at a time (|x| > 1: no premature overflow;
+        // at x = ±∞, r = c₀ and the product is the limit c₀·(±∞)ⁿ; NaN stays NaN)
+        (0..self.degree()).fold(r, |v, _| v * x)
     }
 
     /// p(s) at a complex point (Horner; on the reversed polynomial at 1/s for |s| > 1). A value

@@ -168,11 +168,17 @@ impl TransferFunction {
     /// (1/(s + 10³⁰⁰) at s = −10³⁰⁰ + j is −j, where 1/s would cancel to a false pole).
     ///
     /// # Degenerate inputs
-    /// At a pole (D(s) = 0 exactly in floating point) the value is the point at infinity in
-    /// the direction of the limit G(s + h), h → 0⁺ real (components ±∞, or 0 where the direction
-    /// has none; never NaN); where N and D vanish together the limit is taken (a removable
-    /// singularity gives its finite value). A value beyond the f64 range is the point at
-    /// infinity in its direction. For G(jω) see [`TransferFunction::freqresp`].
+    /// A plain function whose value at a pole is ∞, the exact value of a rational function
+    /// there (python-control's `G(s)` and Matlab's `evalfr` return ∞ too, with NaN parts).
+    /// At a finite s, ±∞ components come out in exactly two places (docs/robustness.md,
+    /// "Where ∞ is the answer"):
+    /// - at a pole (D(s) = 0 exactly in floating point) the value is the point at infinity in
+    ///   the direction of the limit G(s + h), h → 0⁺ real (components ±∞, or 0 where the
+    ///   direction has none; never NaN): 1/(s + 1) at s = −1 is +∞ + 0j;
+    /// - where |G(s)| exceeds the f64 range, the point at infinity in the direction of G(s).
+    ///
+    /// Where N and D vanish together the limit is taken (a removable singularity gives its
+    /// finite value). For G(jω) see [`TransferFunction::freqresp`].
     pub fn eval(&self, s: Complex64) -> Complex64 {
         use crate::axis::{cdiv, infinity_towards, taylor_leading};
         let (nc, dc) = (self.num.coeffs(), self.den.coeffs());
@@ -184,17 +190,28 @@ impl TransferFunction {
         let (pn, pd) = (poly(nc), poly(dc));
         let horner = |c: &[f64]| c.iter().fold(Complex64::new(0.0, 0.0), |acc, &x| acc * z + x);
         let k = if big { self.num.degree() as i32 - self.den.degree() as i32 } else { 0 };
-        let unit = |v: Complex64| v / v.norm();
+        // v/|v| for v ≠ 0, scaled by the larger component first so that |v| neither overflows
+        // nor underflows; an infinite component counts as the whole direction
+        let unit = |v: Complex64| {
+            let sat = |x: f64| if x.is_infinite() { x.signum() } else { 0.0 };
+            let w = if v.re.is_infinite() || v.im.is_infinite() {
+                Complex64::new(sat(v.re), sat(v.im))
+            } else {
+                v / v.re.abs().max(v.im.abs())
+            };
+            w / w.norm()
+        };
         let (nv, dv) = (horner(&pn), horner(&pd));
         let zero = Complex64::new(0.0, 0.0);
-        // (q, order, direction of the approach in the variable z)
-        let (q, order) = if dv != zero || self.num.is_zero() {
-            (if self.num.is_zero() { zero } else { cdiv(nv, dv) }, 0)
+        // q = a/b with its order at z, and the direction of q from a and b (q itself may
+        // overflow: 1e300/(s + 1e-300) at 0 is 1e600, whose direction is still +1)
+        let (q, q_dir, order) = if dv != zero || self.num.is_zero() {
+            if self.num.is_zero() { (zero, zero, 0) } else { (cdiv(nv, dv), unit(nv) * unit(dv).conj(), 0) }
         } else {
             // D(s) = 0: orders and leading Taylor coefficients at z
             let (a, ta) = taylor_leading(&pn, z).unwrap_or((0, zero));
             let (b, tb) = taylor_leading(&pd, z).unwrap_or((0, Complex64::new(1.0, 0.0)));
-            (cdiv(ta, tb), a as i32 - b as i32)
+            (cdiv(ta, tb), unit(ta) * unit(tb).conj(), a as i32 - b as i32)
         };
         // s + h ↦ z: z − z₀ ≈ −h/s² for the reversed variable
         let approach = if big { unit(-(z * z)) } else { Complex64::new(1.0, 0.0) };
@@ -202,8 +219,7 @@ impl TransferFunction {
         if order > 0 || q == zero {
             return zero;
         }
-        let dir =
-            || unit(q) * approach.powi(order) * unit(s).powi(k) * Complex64::from_polar(1.0, delay.arg());
+        let dir = || q_dir * approach.powi(order) * unit(s).powi(k) * Complex64::from_polar(1.0, delay.arg());
         if order < 0 {
             return infinity_towards(dir());
         }

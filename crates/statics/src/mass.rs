@@ -60,7 +60,9 @@ impl<T: Scalar> MassProperties<T> {
     /// # Errors
     /// [`StaticsError::InvalidMass`] for a negative or non-finite mass,
     /// [`StaticsError::NonFinite`] for a non-finite position, [`StaticsError::ZeroMass`] when
-    /// the total mass is zero (no centre of mass).
+    /// the total mass is zero (no centre of mass), [`StaticsError::Overflow`] when the total
+    /// mass Σmᵢ, the centre of mass or the inertia J⃗_{B/c} exceeds the largest finite f64
+    /// (≈ 1.8e308; finite masses may sum past it).
     pub fn from_particles(particles: &[(T, Point<T>)]) -> Result<Self, StaticsError> {
         let mut m_b = T::zero();
         let mut first = Vector::zero();
@@ -70,14 +72,31 @@ impl<T: Scalar> MassProperties<T> {
             m_b += *m;
             first += y.position() * *m;
         }
+        // (6.1.1): m_B = Σ m_i, finite masses whose sum may overflow (issue 33)
+        if !m_b.re().is_finite() {
+            return Err(StaticsError::Overflow { what: "total mass Σmᵢ of the particles" });
+        }
         if m_b.re() <= 0.0 {
             return Err(StaticsError::ZeroMass { what: "body of particles" });
         }
-        // (6.1.2): r_{c/o} = Σ m_i r_{y_i/o} / m_B
-        let c = Point::at(first / m_b);
+        // (6.1.2): r_{c/o} = Σ m_i r_{y_i/o} / m_B; where the first moment overflows although
+        // the centre is finite (m = 1e300 at 1e10), the same sum with the weights m_i/m_B ≤ 1
+        let mut r_c_o = first / m_b;
+        if !r_c_o.is_finite() {
+            r_c_o = particles.iter().fold(Vector::zero(), |s, (m, y)| s + y.position() * (*m / m_b));
+        }
+        if !r_c_o.is_finite() {
+            return Err(StaticsError::Overflow { what: "centre of mass of the particles" });
+        }
+        let c = Point::at(r_c_o);
         // (6.2.3): J_{B/c} = Σ m_i (|r|² I − r r′), r = r_{y_i/c}
         let j_c =
             particles.iter().fold(Dyadic::zero(), |j, (m, y)| j + particle_inertia(*m, &y.position_rel(&c)));
+        if !j_c.is_finite() {
+            return Err(StaticsError::Overflow {
+                what: "inertia of the particles about their centre of mass",
+            });
+        }
         Ok(Self { mass: m_b, centre: c, j_c })
     }
 

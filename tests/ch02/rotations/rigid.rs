@@ -1,6 +1,7 @@
 //! §2.19–2.22: additivity, commutators, rigid displacements, Chasles, chains; Ex 2.25.1 and
 //! Probs 2.26.19–20.
 
+use crate::support::NanAmax;
 use std::f64::consts::PI;
 
 use nalgebra::{Matrix3, Matrix4, Vector3, Vector4};
@@ -168,8 +169,8 @@ fn problem_2_26_19_homogeneous_inverse() {
     let r = Vector3::new(1.0, -2.0, 0.5);
     let h = homogeneous(&o_ba, &r);
     let inv = homogeneous_inverse(&h);
-    assert!((h * inv - Matrix4::identity()).amax() <= 8.0 * EPS);
-    assert!((inv - homogeneous(&o_ba.transpose(), &-(o_ba.transpose() * r))).amax() <= 0.0);
+    assert!((h * inv - Matrix4::identity()).nan_amax() <= 8.0 * EPS);
+    assert!((inv - homogeneous(&o_ba.transpose(), &-(o_ba.transpose() * r))).nan_amax() <= 0.0);
     // A displacement as a homogeneous transform acting on [r_{y/x}|_A; 1].
     let d = RigidDisplacement::new(rot(&a, [1.0, 0.0, 1.0], 0.6), a.vector([0.1, 0.2, 0.3]));
     let y = a.vector([2.0, -1.0, 0.5]);
