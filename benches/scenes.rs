@@ -12,7 +12,7 @@ use std::hint::black_box;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use nalgebra::Vector3;
 use vectrix::dynamics::multibody::{AbaScratch, JointWrench, Model, Pose, PosesScratch};
-use vectrix::dynamics::scene::{DEFAULT_SCENE, Scene};
+use vectrix::scene::{DEFAULT_SCENE, Scene};
 
 /// A chain of n pin-jointed rods under gravity, every other axis ŷ (a spatial chain).
 fn chain(n: usize) -> String {

@@ -6,7 +6,7 @@
 //!
 //! `cargo run --release --example scene_accuracy`
 
-use vectrix::dynamics::scene::{Run, Scene};
+use vectrix::scene::{Run, Scene};
 use vectrix_ode::harness::RigidBody;
 
 /// Kepler's equation M = E − e sin E by Newton; periapsis on +x at t = 0, counter-clockwise.

@@ -30,6 +30,8 @@ mod cli {
 mod dynamics;
 #[path = "adversarial/flight.rs"]
 mod flight;
+#[path = "adversarial/flight_scene.rs"]
+mod flight_scene;
 #[path = "adversarial/frames.rs"]
 mod frames;
 #[path = "adversarial/kinematics.rs"]

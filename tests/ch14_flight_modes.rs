@@ -325,8 +325,8 @@ fn section_14_7_doublet_response_and_mode_figures() {
 /// linearized and flown by the nonlinear and the linear model side by side.
 mod flight_scene {
     use super::*;
-    use vectrix::dynamics::scene::SceneError;
-    use vectrix::flight::scene::FlightScene;
+    use vectrix::scene::SceneError;
+    use vectrix::scene::flight::FlightScene;
 
     fn example(name: &str) -> String {
         let p = format!("{}/examples/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"));

@@ -5,7 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
-use vectrix::dynamics::scene::Scene;
+use vectrix::scene::Scene;
 use vectrix_cli::run_with_args;
 
 /// A fresh temporary directory for one test.

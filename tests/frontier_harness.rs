@@ -24,8 +24,8 @@ use problems::{
 };
 use report::time_to_reach;
 use serde_json::Value;
-use vectrix::dynamics::scene::Scene;
 use vectrix::ode::harness::{Pendulum, Reference};
+use vectrix::scene::Scene;
 
 const EPS: f64 = f64::EPSILON;
 

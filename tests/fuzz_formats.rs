@@ -28,8 +28,8 @@ use std::time::Duration;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use toml::Value;
-use vectrix::dynamics::scene::Scene;
-use vectrix::flight::scene::FlightScene;
+use vectrix::scene::Scene;
+use vectrix::scene::flight::FlightScene;
 
 /// A case that runs longer than this is a hang (the loaders parse and validate only; the
 /// sweep runs a scene whose duration the mutations keep short).

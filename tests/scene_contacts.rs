@@ -10,7 +10,10 @@
 //!
 //! Book: §7.13 (collisions, restitution (7.13.18)), §7.14.
 
-use vectrix::dynamics::scene::{ContactEventKind, Run, Scene, SceneError};
+mod support;
+
+use support::nan_min;
+use vectrix::scene::{ContactEventKind, Run, Scene, SceneError};
 
 const G: f64 = 9.81;
 const R: f64 = 0.1;
@@ -93,8 +96,8 @@ fn issue_33_ball_stays_above_the_floor_after_its_first_bounce() {
     // The reported case: dropped 1 m, e = 1, 5 s; it fell to z = −83 m after one impact.
     let run = run(&ball(1.0, [0.0, 0.0, 1.0], 1.0, 0.0, 5.0, 500, ""));
     let z = run.column("position:ball.z").unwrap();
-    let lowest = z.iter().copied().fold(f64::INFINITY, f64::min);
-    assert!(lowest >= R - 1e-12 && z.iter().all(|x| x.is_finite()), "lowest centre {lowest}");
+    let lowest = z.iter().copied().fold(f64::INFINITY, nan_min);
+    assert!(lowest >= R - 1e-12, "lowest centre {lowest}");
     // t₀ = 0.4515 s: impacts at t₀, 3t₀, …, 11t₀ = 4.967 s ≤ 5 s
     assert_eq!(impacts(&run).len(), 6);
 }

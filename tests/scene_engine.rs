@@ -13,7 +13,7 @@ use crate::support::nan_max;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use vectrix::dynamics::scene::{InvariantValue, Run, Scene, SceneError, StopReason};
+use vectrix::scene::{InvariantValue, Run, Scene, SceneError, StopReason};
 use vectrix_ode::harness::RigidBody;
 
 fn run(scene: &Scene) -> Run {
@@ -498,7 +498,7 @@ fn expected_names(message: &str) -> Vec<String> {
 
 /// The message of loading `text`, which must fail.
 fn message_of(text: &str) -> String {
-    match vectrix::flight::scene::AnyScene::from_toml(text, "probe.toml") {
+    match vectrix::scene::flight::AnyScene::from_toml(text, "probe.toml") {
         Err(SceneError::Parse { message, .. }) | Err(SceneError::Invalid { message, .. }) => message,
         other => panic!("expected an error, got {other:?}"),
     }
@@ -635,7 +635,7 @@ fn issue_16_scene_reference_documents_every_key_and_variant() {
             "{flight}[[inputs]]\ncontrol = \"elevator\"\nshape = \"step\"\nstart = 0.0\namplitude = 0.01\nzzz = 1\n"
         ))),
     );
-    need("flight output", vectrix::flight::scene::OUTPUT_NAMES.iter().map(|s| s.to_string()).collect());
+    need("flight output", vectrix::scene::flight::OUTPUT_NAMES.iter().map(|s| s.to_string()).collect());
     assert!(missing.is_empty(), "docs/scenes.md lacks: {missing:#?}");
 }
 
@@ -770,7 +770,7 @@ fn issue_21_outputs_in_imperial_units() {
 #[test]
 fn issue_16_a_cancelled_run_keeps_what_it_computed() {
     use std::sync::atomic::{AtomicBool, Ordering};
-    use vectrix::dynamics::scene::RunControl;
+    use vectrix::scene::RunControl;
     let scene = kepler_scene(0.9, 4.0, 400, 1e-10);
     let cancel = AtomicBool::new(false);
     let mut progress = |f: f64| {

@@ -10,7 +10,7 @@
 mod support;
 
 use crate::support::nan_max;
-use vectrix::dynamics::scene::{Run, Scene, SceneError};
+use vectrix::scene::{Run, Scene, SceneError};
 
 const G: f64 = 9.81;
 

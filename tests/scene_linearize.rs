@@ -11,8 +11,8 @@
 use std::path::PathBuf;
 use std::process::Command;
 
-use vectrix::dynamics::scene::{LinearModel, Scene, SceneError};
-use vectrix::flight::scene::FlightScene;
+use vectrix::scene::flight::FlightScene;
+use vectrix::scene::{LinearModel, Scene, SceneError};
 
 const G: f64 = 9.81;
 

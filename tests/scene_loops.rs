@@ -11,7 +11,7 @@ mod support;
 
 use crate::support::{nan_max, nan_min};
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
-use vectrix::dynamics::scene::{Run, Scene, SceneError};
+use vectrix::scene::{Run, Scene, SceneError};
 
 fn example(name: &str) -> (String, String) {
     let path = format!("{}/examples/scenes/{name}", env!("CARGO_MANIFEST_DIR"));

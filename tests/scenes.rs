@@ -7,7 +7,7 @@
 
 use std::f64::consts::PI;
 
-use vectrix::dynamics::scene::{DEFAULT_SCENE, Invariant, Run, Scene, SceneError, SceneSpec};
+use vectrix::scene::{DEFAULT_SCENE, Invariant, Run, Scene, SceneError, SceneSpec};
 
 /// Loads `examples/scenes/<name>.toml`.
 fn example(name: &str) -> Scene {

@@ -4,11 +4,11 @@
 
 use nalgebra::SVector;
 use serde_json::{Value, json};
-use vectrix::dynamics::scene::Scene;
 use vectrix::frames::Frame;
 use vectrix::ode::explicit::{Adaptive, Stepper, integrate_fixed};
 use vectrix::ode::harness::{Reference, Separable};
 use vectrix::ode::{GaussLegendre, LieMethod, RK4, integrate_lie, stormer_verlet};
+use vectrix::scene::Scene;
 
 use crate::problems::{
     CHAIN_T, EnergyPendulum, KEPLER, PENDULUM, chain_model, chain_scene, chain_y0, kepler_scene,

@@ -10,8 +10,8 @@ use crate::support::NanAmax;
 use std::sync::atomic::AtomicBool;
 
 use nalgebra::{DMatrix, DVector};
-use vectrix::dynamics::scene::spec::{LoopSpec, Profile};
-use vectrix::dynamics::scene::{
+use vectrix::scene::spec::{LoopSpec, Profile};
+use vectrix::scene::{
     EquilibriumResidual, InvariantValue, LinearModel, RunControl, Scene, SceneError, SceneSource, Step,
     body_schema, check_name, convert_quantities, key_of, render_path, tag,
 };
@@ -144,7 +144,7 @@ cases! {
         for n in ["0", "1", "-1", "1000001", "9223372036854775807", "18446744073709551615", "1e3", "\"many\""] {
             let t = text.replacen("samples = 11", &format!("samples = {n}"), 1);
             match Scene::from_toml(&t, "dp.toml") {
-                Ok(s) => assert!((1..=vectrix::dynamics::scene::MAX_SAMPLES).contains(&s.spec().samples), "samples = {n}"),
+                Ok(s) => assert!((1..=vectrix::scene::MAX_SAMPLES).contains(&s.spec().samples), "samples = {n}"),
                 Err(e) => assert!(located(&e), "samples = {n}: {e}"),
             }
         }
@@ -175,7 +175,7 @@ cases! {
         spec.bodies[1].parent = "nobody".into();
         refused(Scene::from_spec_in(spec, &src), "from_spec_in(unknown parent)");
         // a huge file is refused before parsing
-        let big = "#".repeat(vectrix::dynamics::scene::MAX_SCENE_BYTES + 1);
+        let big = "#".repeat(vectrix::scene::MAX_SCENE_BYTES + 1);
         refused(Scene::from_toml(&big, "dp.toml"), "4 MiB + 1 of comments");
     }
 
@@ -347,7 +347,7 @@ cases! {
         let s = Scene::from_toml(&four_bar, "four_bar.toml").unwrap();
         assert_eq!(s.spec().loops[0].name(), "coupler_rocker");
         let src = SceneSource::new(&four_bar, "four_bar.toml").unwrap();
-        let spec: vectrix::dynamics::scene::SceneSpec = src.deserialize().unwrap();
+        let spec: vectrix::scene::SceneSpec = src.deserialize().unwrap();
         assert!(matches!(&spec.loops[0], LoopSpec::Pin { name, .. } if name == "coupler_rocker"));
     }
 
@@ -388,16 +388,16 @@ cases! {
         let v: toml::Value = src.deserialize().unwrap();
         assert!(v.get("bodies").is_some());
         refused(src.deserialize::<u8>(), "deserialize into the wrong type");
-        let spec: vectrix::dynamics::scene::SceneSpec = src.deserialize_with(&body_schema).unwrap();
+        let spec: vectrix::scene::SceneSpec = src.deserialize_with(&body_schema).unwrap();
         assert_eq!(spec.bodies.len(), 2);
         let with_units = text.replacen("q = [0.4]", "q = [\"30 deg\"]", 1);
         let s3 = SceneSource::new(&with_units, "dp.toml").unwrap();
-        let spec: vectrix::dynamics::scene::SceneSpec = s3.deserialize_with(&body_schema).unwrap();
+        let spec: vectrix::scene::SceneSpec = s3.deserialize_with(&body_schema).unwrap();
         assert!((spec.bodies[0].q.as_ref().unwrap()[0] - std::f64::consts::FRAC_PI_6).abs() <= f64::EPSILON);
         for bad in ["\"1e999 deg\"", "\"nan deg\"", "\"inf deg\"", "\"1 kg\"", "\"deg\"", "\"\"", "\"1 parsec^99\""] {
             let t = text.replacen("q = [0.4]", &format!("q = [{bad}]"), 1);
             let s = SceneSource::new(&t, "dp.toml").unwrap();
-            match s.deserialize_with::<vectrix::dynamics::scene::SceneSpec>(&body_schema) {
+            match s.deserialize_with::<vectrix::scene::SceneSpec>(&body_schema) {
                 Ok(spec) => assert!(spec.bodies[0].q.as_ref().is_some_and(|q| q[0].is_finite()), "{bad}"),
                 Err(e) => assert!(located(&e), "{bad}: {e}"),
             }

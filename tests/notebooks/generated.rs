@@ -597,7 +597,7 @@ fn notebook_07_dynamics() {
     // cell 2
     use std::f64::consts::PI;
     use vectrix::dynamics::multibody::{Joint, Link, Model};
-    use vectrix::dynamics::scene::Scene;
+    use vectrix::scene::Scene;
     use vectrix::dynamics::{ImpactEnd, ZenoGuard, centre_of_percussion, collision_energy_loss, restitution_1d, simulate_with_impacts};
     use vectrix::nalgebra::{Matrix3, SVector, Vector3};
     use vectrix::ode::Adaptive;
@@ -757,7 +757,7 @@ fn notebook_07_dynamics() {
 fn notebook_08_energy() {
     // cell 1
     // cell 2
-    use vectrix::dynamics::scene::Scene;
+    use vectrix::scene::Scene;
     use vectrix::dynamics::{Element, Network, kinetic_energy_about_centre_pairwise, particles_kinetic_energy, work_along_path};
     use vectrix::nalgebra::SVector;
     use vectrix::num_dual::Dual64;
@@ -1308,7 +1308,7 @@ fn notebook_12_steady_flight() {
     direction = [1.0, 0.0, 0.0]
     profile = { kind = "constant", value = 0.0 }
     "#;
-        let scene = vectrix::dynamics::scene::Scene::from_toml(text, "cartpole.toml").expect("a valid scene");
+        let scene = vectrix::scene::Scene::from_toml(text, "cartpole.toml").expect("a valid scene");
         let lin = scene.linearize().expect("differentiable at the start");
         for m in &lin.modes {
             println!("λ = {} ± {}j  ωn = {} rad/s  ({})", Rounded(m.eigenvalue[0]), Rounded(m.eigenvalue[1]), Rounded(m.natural_frequency), m.dominant_state);
@@ -1387,7 +1387,7 @@ fn notebook_14_flight_modes() {
     // cell 1
     // cell 2
     use std::f64::consts::PI;
-    use vectrix::flight::scene::FlightScene;
+    use vectrix::scene::flight::FlightScene;
     use vectrix::flight::*;
     use vectrix::lti::{Complex64, logspace};
     use vectrix::plot::control;

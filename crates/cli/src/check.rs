@@ -5,7 +5,7 @@
 use std::io::Write;
 use std::path::Path;
 
-use vectrix_flight::scene::AnyScene;
+use vectrix_scene::flight::AnyScene;
 
 use crate::output::BoxError;
 

@@ -8,10 +8,10 @@
 use std::io::Write;
 use std::path::Path;
 
-use vectrix_dynamics::scene::{EquilibriumResidual, LinearModel};
-use vectrix_flight::scene::{AnyScene, OUTPUT_NAMES};
 use vectrix_lti::{StateSpace, logspace};
 use vectrix_plot::control;
+use vectrix_scene::flight::{AnyScene, OUTPUT_NAMES};
+use vectrix_scene::{EquilibriumResidual, LinearModel};
 
 use crate::output::{BoxError, is_ours, preflight, write_dir};
 use crate::run::load;

@@ -15,7 +15,7 @@ use std::io::ErrorKind;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use vectrix_dynamics::scene::check_name;
+use vectrix_scene::check_name;
 
 /// The marker file in every folder vectrix writes; its first line is [`MARKER_TEXT`].
 pub(crate) const MARKER: &str = ".vectrix-output";

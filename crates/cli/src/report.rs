@@ -2,16 +2,16 @@
 //! `summary.json` (what was asked, what was done, what it cost, how the invariants drifted),
 //! one SVG per requested output (y label with quantity and unit) and, for every position
 //! output, the path of that body in the plane of its largest motion. Flight scenes write their
-//! own CSV and figures (`vectrix_flight::scene::FlightRun`).
+//! own CSV and figures (`vectrix_scene::flight::FlightRun`).
 //!
 //! Book: §8.3 (invariants), §4.11 (the work of an integration).
 
 use std::path::Path;
 
 use serde::Serialize;
-use vectrix_dynamics::scene::{ConstraintViolation, Drift, Invariant, Run, RunWork, Scene, Stop};
-use vectrix_flight::scene::FlightRun;
 use vectrix_plot::{Chart, Curve, LineChart};
+use vectrix_scene::flight::FlightRun;
+use vectrix_scene::{ConstraintViolation, Drift, Invariant, Run, RunWork, Scene, Stop};
 
 use crate::output::{BoxError, file_stem};
 

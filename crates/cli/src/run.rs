@@ -11,8 +11,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use vectrix_dynamics::scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, StopReason};
-use vectrix_flight::scene::{AnyScene, FlightScene};
+use vectrix_scene::flight::{AnyScene, FlightScene};
+use vectrix_scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, StopReason};
 use vectrix_units::UnitSystem;
 
 use crate::output::{BoxError, write_dir};
@@ -153,11 +153,11 @@ pub(crate) fn print_summary(out: &mut impl Write, scene: &Scene, run: &Run) -> s
 pub(crate) fn load(path: &Path) -> Result<AnyScene, BoxError> {
     let shown = path.display().to_string();
     let meta = std::fs::metadata(path).map_err(|e| format!("{shown}: {e}"))?;
-    if meta.len() > vectrix_dynamics::scene::MAX_SCENE_BYTES as u64 {
+    if meta.len() > vectrix_scene::MAX_SCENE_BYTES as u64 {
         return Err(format!(
             "{shown}: {} bytes; valid: a scene file of at most {} bytes",
             meta.len(),
-            vectrix_dynamics::scene::MAX_SCENE_BYTES
+            vectrix_scene::MAX_SCENE_BYTES
         )
         .into());
     }

@@ -13,9 +13,9 @@ use std::path::Path;
 use std::sync::Mutex;
 
 use rayon::prelude::*;
-use vectrix_dynamics::scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, body_schema};
-use vectrix_flight::scene::AnyScene;
 use vectrix_plot::LineChart;
+use vectrix_scene::flight::AnyScene;
+use vectrix_scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, body_schema};
 use vectrix_units::UnitSystem;
 
 use crate::output::{BoxError, file_stem, write_dir};

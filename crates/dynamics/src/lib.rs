@@ -35,7 +35,6 @@ pub mod lagrange;
 pub mod multibody;
 mod network;
 mod rigid;
-pub mod scene;
 mod sixd;
 
 pub use collision::{
@@ -56,6 +55,5 @@ pub use sixd::{newton_euler_6d, twist_cross_matrix};
 pub mod prelude {
     pub use crate::constraints::Constraints;
     pub use crate::constraints::kane::KaneSystem;
-    pub use crate::scene::{Scene, SceneError};
     pub use crate::{DynamicsError, Joint, KinematicMap, Lagrangian, Link, MapMasses, Model, RigidBody};
 }

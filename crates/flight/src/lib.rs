@@ -27,7 +27,6 @@ mod linearize;
 mod modes;
 mod plots;
 mod rates;
-pub mod scene;
 mod table;
 mod trim;
 

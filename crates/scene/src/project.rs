@@ -15,8 +15,10 @@ use serde::Serialize;
 use super::kin::{Kin, kinematics, normalize};
 use super::loops::{rows_of, select, select_v};
 use super::{Scene, SceneError};
-use crate::DynamicsError;
-use crate::constraints::{DEPENDENT_ROW_REL_TOL, ProjectionOptions, project_positions, project_velocities};
+use vectrix_dynamics::DynamicsError;
+use vectrix_dynamics::constraints::{
+    DEPENDENT_ROW_REL_TOL, ProjectionOptions, project_positions, project_velocities,
+};
 
 /// Target of the projection after each step, relative to the scene's size: |φ|∞ ≤
 /// `CONSTRAINT_TOL`·L with L the largest distance of a loop point from the origin (at least

@@ -10,7 +10,7 @@ use vectrix_statics::{CentralGravity, Dashpot, Spring, dipole_interaction, dipol
 
 use super::build::{Body, Effect, eval_profile};
 use super::kin::Kin;
-use crate::multibody::JointWrench;
+use vectrix_dynamics::multibody::JointWrench;
 
 /// World vector ↔ frame-free vector through the ground frame.
 pub(crate) struct Ground(Frame);

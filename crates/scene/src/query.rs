@@ -11,7 +11,7 @@ use super::build::Effect;
 use super::forces::{Loads, apply, potential};
 use super::kin::kinematics;
 use super::{Scene, SceneError};
-use crate::multibody::JointWrench;
+use vectrix_dynamics::multibody::JointWrench;
 
 /// Everything a hand derivation of a scene's equations of motion can be compared with, at one
 /// state (q, v) and time t, in the scene's coordinates (the q and v layouts of docs/scenes.md).

@@ -1,18 +1,26 @@
-//! Scenes: a TOML file declares bodies, joints, effects, the run and the outputs; the
-//! simulator assembles exactly the declared effects, computes exactly the requested outputs,
-//! and checks the invariants that the declared effects imply.
+//! # vectrix-scene: the scene file and its pipeline
+//!
+//! A TOML file declares bodies, joints, effects, the run and the outputs; the simulator
+//! assembles exactly the declared effects, computes exactly the requested outputs, and checks
+//! the invariants that the declared effects imply. This crate holds the format (spec, source,
+//! quantities, errors), the loader, the run loop, contacts, outputs and linearization; the
+//! physics below it (`vectrix-dynamics`, `vectrix-flight`) carries no file format. The facade
+//! re-exports it as `vectrix::scene`.
 //!
 //! ```
-//! use vectrix_dynamics::scene::{DEFAULT_SCENE, Scene};
+//! use vectrix_scene::{DEFAULT_SCENE, Scene};
 //! let scene = Scene::from_toml(DEFAULT_SCENE, "default.toml").unwrap();
 //! assert_eq!(scene.spec().name, "tennis_racket");
 //! ```
 //!
 //! Book: §7.11 (trees), ch. 6 (force elements), §7.13 (impacts), §8.3 (energy).
 
+#![warn(missing_docs)]
+
 mod build;
 mod contacts;
 mod error;
+pub mod flight;
 mod forces;
 mod impacts;
 mod invariants;
@@ -51,7 +59,7 @@ use forces::Ground;
 use outputs::Output;
 use vectrix_ode::explicit::Adaptive;
 
-use crate::Model;
+use vectrix_dynamics::Model;
 
 /// The embedded default scene: a free rigid body spinning near its intermediate axis (the
 /// tennis-racket flip, Dzhanibekov effect).

@@ -35,15 +35,15 @@
 
 use std::collections::BTreeMap;
 
+use crate::{Expect, RunControl, Scene, SceneError, SceneSource, Step, Stop, StopReason};
 use nalgebra::DVector;
 use serde::{Deserialize, Serialize};
-use vectrix_dynamics::scene::{Expect, RunControl, Scene, SceneError, SceneSource, Step, Stop, StopReason};
 use vectrix_lti::Complex64;
 use vectrix_ode::OdeError;
 use vectrix_ode::explicit::{Adaptive, Stepper};
 use vectrix_units::UnitSystem;
 
-use crate::{
+use vectrix_flight::{
     Aircraft, AircraftState, Airframe, Controls, FlightError, FlightMode, Linearization, Trim, TrimLimits,
     TrimSpec, business_jet, lateral_modes, linearize, longitudinal_modes, trim,
 };
@@ -109,7 +109,7 @@ pub struct AircraftSpec {
     pub g: Option<f64>,
     /// Thrust-line angle (rad).
     pub thrust_angle: Option<f64>,
-    /// Overrides of individual [`crate::Coefficients`] fields by name (`cm_alpha = -0.6`).
+    /// Overrides of individual [`vectrix_flight::Coefficients`] fields by name (`cm_alpha = -0.6`).
     #[serde(default)]
     pub coefficients: BTreeMap<String, f64>,
 }
@@ -179,7 +179,7 @@ impl Input {
     fn value(&self, t: f64) -> f64 {
         let (t0, w, a) = (self.start, self.width, self.amplitude);
         match self.shape {
-            Shape::Doublet => crate::doublet(t, t0, w, a),
+            Shape::Doublet => vectrix_flight::doublet(t, t0, w, a),
             Shape::Step => {
                 if t >= t0 {
                     a
@@ -318,7 +318,7 @@ struct Integrated {
 /// Book: §7.11 (bodies), §12.1 and §14.2 (aircraft).
 #[derive(Debug)]
 pub enum AnyScene {
-    /// Bodies, joints and effects (`vectrix_dynamics::scene`).
+    /// Bodies, joints and effects (`vectrix_scene`).
     Bodies(Box<Scene>),
     /// An aircraft, its trim and control inputs.
     Flight(Box<FlightScene>),
@@ -397,7 +397,7 @@ pub fn flight_schema(path: &[Step], root: &toml::Value) -> Option<Expect> {
     const fn imp(dims: &'static [D]) -> Option<Expect> {
         Some(Expect { dims, system: UnitSystem::Imperial })
     }
-    let keys: Vec<Option<&str>> = path.iter().map(vectrix_dynamics::scene::key_of).collect();
+    let keys: Vec<Option<&str>> = path.iter().map(crate::key_of).collect();
     match keys.as_slice() {
         [Some("duration")] | [Some("inputs"), None, Some("start" | "width")] => imp(&[D::TIME]),
         [Some("accuracy")] => imp(&[D::DIMENSIONLESS]),
@@ -415,8 +415,7 @@ pub fn flight_schema(path: &[Step], root: &toml::Value) -> Option<Expect> {
         [Some("trim"), Some("turn_rate")] => imp(&[D::ANGULAR_VELOCITY, D::FREQUENCY]),
         [Some("inputs"), None, Some("amplitude")] => {
             let Step::Index(i) = path[1] else { return None };
-            let control =
-                vectrix_dynamics::scene::tag(root, &[Step::Key("inputs".into()), Step::Index(i)], "control");
+            let control = crate::tag(root, &[Step::Key("inputs".into()), Step::Index(i)], "control");
             if control == Some("thrust") { imp(&[D::FORCE]) } else { imp(&[D::ANGLE]) }
         }
         _ => None,
@@ -431,7 +430,7 @@ pub const MAX_FLIGHT_SAMPLES: usize = 1_000_000;
 type Src<'a> = SceneSource<'a>;
 
 /// Sets coefficient `name` of `c`; `false` for an unknown name.
-fn set_coefficient(c: &mut crate::Coefficients, name: &str, v: f64) -> bool {
+fn set_coefficient(c: &mut vectrix_flight::Coefficients, name: &str, v: f64) -> bool {
     macro_rules! fields {
         ($($f:ident)*) => {
             match name {
@@ -567,8 +566,7 @@ impl FlightScene {
     /// As [`FlightScene::from_toml`].
     pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
         let spec: FlightSceneSpec = src.deserialize_with(&flight_schema)?;
-        vectrix_dynamics::scene::check_name(&spec.name, "scene name", true)
-            .map_err(|m| src.invalid("name", m))?;
+        crate::check_name(&spec.name, "scene name", true).map_err(|m| src.invalid("name", m))?;
         if !(spec.duration.is_finite() && spec.duration > 0.0) {
             return Err(src.invalid("duration", format!("duration = {}; valid: finite, > 0", spec.duration)));
         }
@@ -837,7 +835,7 @@ impl FlightScene {
             14 => s.aero_angles().airspeed,
             15 => {
                 let a = s.aero_angles();
-                crate::FlightPathAngles::from_attitude(&s.attitude, a.alpha, a.beta).gamma
+                vectrix_flight::FlightPathAngles::from_attitude(&s.attitude, a.alpha, a.beta).gamma
             }
             _ => self.controls_at(t)[o - 16],
         }
@@ -1011,6 +1009,6 @@ impl FlightRun {
     /// # Errors
     /// [`FlightError::Plot`] if there are no poles or the figure cannot be drawn.
     pub fn modes_svg(&self) -> Result<String, FlightError> {
-        crate::modes_svg(&format!("{}: modes", self.scene), &self.poles)
+        vectrix_flight::modes_svg(&format!("{}: modes", self.scene), &self.poles)
     }
 }

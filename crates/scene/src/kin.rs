@@ -8,7 +8,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::build::{At, Body};
 use super::spec::JointSpec;
-use crate::multibody::{Model, Pose, PosesScratch};
+use vectrix_dynamics::multibody::{Model, Pose, PosesScratch};
 
 /// Poses and twists: for each link 𝓞_{link/ground}, r_{origin}, ω and v_{origin} (ground).
 #[derive(Debug, Clone)]

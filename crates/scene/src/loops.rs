@@ -3,7 +3,7 @@
 //! of a velocity Jacobian G (by unit velocities: G v is linear in v) and its bias Ġv (from the
 //! links' bias accelerations, exactly: no finite differences). The accelerations solve
 //! [[M + Σ b g gᵀ, Gᵀ], [G, 0]] [v̇; λ] = [M a − Σ b g ġv; −Ġv] with a at v̇ from ABA, by the
-//! rank-revealing factorization of `crate::constraints` (redundant loop rows, as in a planar
+//! rank-revealing factorization of `vectrix_dynamics::constraints` (redundant loop rows, as in a planar
 //! mechanism closed by a 3-D pin, are dropped: their reactions are indeterminate).
 //!
 //! Book: §9.11 (multipliers), §9.12 (nonholonomic), §4.18 (rolling), §6.8 (inerters), §6.10
@@ -14,8 +14,8 @@ use nalgebra::{DMatrix, DVector, Vector3};
 use super::Scene;
 use super::build::{At, Effect};
 use super::kin::{Kin, bias_accelerations, twists};
-use crate::DynamicsError;
-use crate::constraints::{DEPENDENT_ROW_REL_TOL, KktFactor};
+use vectrix_dynamics::DynamicsError;
+use vectrix_dynamics::constraints::{DEPENDENT_ROW_REL_TOL, KktFactor};
 
 /// A loop-closing joint with names resolved: points of body `a` and `b` (or the ground).
 #[derive(Debug, Clone)]

@@ -10,7 +10,7 @@ use nalgebra::{DMatrix, DVector};
 use super::forces::{Loads, apply};
 use super::kin::{Kin, kinematics_into, qdot};
 use super::{Scene, SceneError};
-use crate::multibody::{AbaScratch, JointWrench, PosesScratch};
+use vectrix_dynamics::multibody::{AbaScratch, JointWrench, PosesScratch};
 
 /// Work space of the right-hand side: everything an evaluation needs, allocated once per run.
 pub(crate) struct RhsScratch {

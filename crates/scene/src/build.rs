@@ -1,5 +1,5 @@
 //! From a scene file to a validated scene: names resolved to indices, joints to a
-//! [`Model`](crate::Model), shapes to mass properties, effects to their resolved form.
+//! [`Model`](vectrix_dynamics::Model), shapes to mass properties, effects to their resolved form.
 //!
 //! Book: §7.11 (trees), §6.1–6.2 (mass properties), §1.5 (joints).
 
@@ -8,7 +8,7 @@ use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
 use super::SceneError;
 use super::source::{SceneSource, check_name};
 use super::spec::{Attach, EffectSpec, JointSpec, LoopSpec, MassSpec, Profile, SceneSpec};
-use crate::multibody::{Joint, Link, Model};
+use vectrix_dynamics::multibody::{Joint, Link, Model};
 
 /// A body after validation: indices, offsets and mass properties in link components.
 #[derive(Debug, Clone)]
@@ -389,8 +389,9 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
         .collect();
     let model = Model::new(&links).map_err(|e| {
         let i = match &e {
-            crate::DynamicsError::Cyclic { link } | crate::DynamicsError::ZeroAxis { link, .. } => *link,
-            crate::DynamicsError::JointGeometry { link, .. } => *link,
+            vectrix_dynamics::DynamicsError::Cyclic { link }
+            | vectrix_dynamics::DynamicsError::ZeroAxis { link, .. } => *link,
+            vectrix_dynamics::DynamicsError::JointGeometry { link, .. } => *link,
             _ => 0,
         };
         src.invalid(format!("bodies[{i}].joint"), format!("{e} (joints must form a tree)"))
