@@ -187,7 +187,9 @@ fn section_12_6_steady_motion_needs_cyclic_moving_coordinates() {
     )
     .and_then(|s| s.linearize())
     {
-        Err(SceneError::Run { message, .. }) => {
+        Err(SceneError::Invalid { message, path, line, .. }) => {
+            // located at the `linearize` table of the file
+            assert_eq!((path.as_str(), line), ("linearize.steady", 3));
             assert!(message.contains("dq:body.0") && message.contains("cyclic"), "{message}")
         }
         other => panic!("expected a refusal, got {other:?}"),
@@ -196,9 +198,12 @@ fn section_12_6_steady_motion_needs_cyclic_moving_coordinates() {
 
 #[test]
 fn section_12_6_linearize_refuses_what_it_cannot_do() {
+    // every refusal is located in the file (issue 33: they read "simulation failed at t = 0")
     let fails = |text: &str, needle: &str| match Scene::from_toml(text, "t.toml").and_then(|s| s.linearize())
     {
-        Err(SceneError::Run { message, .. }) => assert!(message.contains(needle), "{message}"),
+        Err(SceneError::Invalid { message, file, line, .. }) => {
+            assert!(file == "t.toml" && line >= 1 && message.contains(needle), "{message}")
+        }
         other => panic!("expected a refusal containing {needle:?}, got {other:?}"),
     };
     fails(
@@ -216,6 +221,43 @@ fn section_12_6_linearize_refuses_what_it_cannot_do() {
          com = [0.0, -1.0, 0.0]\nv = [1.0]\n[[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, -9.81, 0.0]\n",
         "cyclic",
     );
+}
+
+/// The shipped heavy symmetric top.
+fn heavy_top(name: &str) -> String {
+    std::fs::read_to_string(format!("{}/examples/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"))).unwrap()
+}
+
+#[test]
+fn section_12_6_shipped_heavy_top_gimbal_linearizes_about_steady_precession() {
+    // examples/scenes/heavy_top_gimbal.toml: m = 1, l = 0.5, A_c = 0.05, C = 0.1, θ₀ = 0.5,
+    // ω₃ = 60; I₁ = A_c + m l², a = C ω₃/I₁, Ω the slow root of I₁ cos θ₀ Ω² − C ω₃ Ω + m g l = 0;
+    // nutation ω² = a² − 4aΩ cos θ₀ + Ω²(1 + 3cos²θ₀).
+    let (m, l, a_c, c_c, w3, th0): (f64, f64, f64, f64, f64, f64) = (1.0, 0.5, 0.05, 0.1, 60.0, 0.5);
+    let i1 = a_c + m * l * l;
+    let (a, c) = (c_c * w3 / i1, th0.cos());
+    let omega = (c_c * w3 - ((c_c * w3).powi(2) - 4.0 * i1 * c * m * G * l).sqrt()) / (2.0 * i1 * c);
+    let lm = lin(&heavy_top("heavy_top_gimbal"));
+    assert!(lm.steady && lm.residual.ok, "steady precession: {:?}", lm.residual);
+    let want = (a * a - 4.0 * a * omega * c + omega * omega * (1.0 + 3.0 * c * c)).sqrt();
+    // the nutation pair; the precession and spin angles are cyclic (0, up to the differences)
+    let w = frequencies(&lm);
+    let nutation = w.iter().copied().find(|w| *w > 1.0).expect("a nutation pair");
+    assert_rel(nutation, want, 1e-7, "nutation frequency");
+}
+
+#[test]
+fn section_12_6_shipped_heavy_top_on_a_ball_joint_is_refused_with_the_gimbal_form() {
+    // heavy_top.toml's ball joint resolves ω in the spinning top: steady precession is periodic
+    // there, so `steady = true` is refused, located, pointing at the gimbal form (issue 33)
+    let text = heavy_top("heavy_top").replacen("checks = ", "linearize = { steady = true }\nchecks = ", 1);
+    match Scene::from_toml(&text, "top.toml").and_then(|s| s.linearize()) {
+        Err(SceneError::Invalid { message, path, .. }) => {
+            assert_eq!(path, "linearize.steady");
+            assert!(message.contains("heavy_top_gimbal.toml") && message.contains("periodic"), "{message}");
+        }
+        other => panic!("expected a refusal, got {other:?}"),
+    }
 }
 
 fn temp_dir(tag: &str) -> PathBuf {

@@ -134,6 +134,9 @@ pub struct Scene {
     pub(crate) loop_scale: f64,
     /// The contact effects' indices in `built.effects`, in declaration order.
     pub(crate) contacts: Vec<usize>,
+    /// The file name and text the scene was read from, to locate refusals after loading
+    /// ([`Scene::invalid`]).
+    source: (String, String),
 }
 
 impl std::fmt::Debug for Scene {
@@ -230,6 +233,7 @@ impl Scene {
             invariants,
             loop_scale: 1.0,
             contacts: Vec::new(),
+            source: (src.file().to_string(), src.text().to_string()),
         };
         scene.contacts = scene.contact_effects();
         scene.loop_scale = scene.constraint_scale();
@@ -276,6 +280,22 @@ impl Scene {
             }
         }
         Ok(())
+    }
+
+    /// A refusal after loading (a run, a linearization), located at the item `path` of the
+    /// file the scene was read from, as a load-time refusal is.
+    pub(crate) fn invalid(&self, path: &str, message: impl Into<String>) -> SceneError {
+        let (file, text) = &self.source;
+        match SceneSource::new(text, file) {
+            Ok(src) => src.invalid(path, message),
+            Err(_) => SceneError::Invalid {
+                file: file.clone(),
+                line: 1,
+                column: 1,
+                path: path.into(),
+                message: message.into(),
+            },
+        }
     }
 
     /// The scene as declared.

@@ -19,8 +19,9 @@
 use nalgebra::{Complex, DMatrix, DVector};
 use serde::Serialize;
 
+use super::build::dims;
 use super::kin::{kinematics, normalize};
-use super::spec::EffectSpec;
+use super::spec::{EffectSpec, JointSpec};
 use super::{Scene, SceneError};
 
 /// The moving coordinates of a steady motion are cyclic when ∂v̇/∂x changes along the motion
@@ -242,15 +243,17 @@ impl Scene {
         let b = &self.built;
         let (nq, nv) = (b.model.nq(), b.model.nv());
         if nv == 0 {
-            return Err(fail(
-                "the scene has no degrees of freedom (every joint a weld): nothing to linearize".into(),
+            return Err(self.invalid(
+                "bodies",
+                "the scene has no degrees of freedom (every joint a weld): nothing to linearize",
             ));
         }
         if self.has_constraints() {
-            return Err(fail(
+            let at = if self.spec().loops.is_empty() { "effects" } else { "loops" };
+            return Err(self.invalid(
+                at,
                 "scenes with loops or rolling contacts are not linearized: their coordinates are dependent; valid: \
-                 a tree (write the mechanism in independent coordinates)"
-                    .into(),
+                 a tree (write the mechanism in independent coordinates)",
             ));
         }
         let steady = self.spec().linearize.as_ref().is_some_and(|l| l.steady);
@@ -315,13 +318,30 @@ impl Scene {
                 let names = self.state_names();
                 let moving: Vec<&str> =
                     (0..nv).filter(|&j| v0[j] != 0.0).map(|j| names[j].as_str()).collect();
-                return Err(fail(format!(
-                    "the coordinates that move ({}) are not cyclic: ∂v̇/∂x changes by {change:.3e} along the motion, so \
-                     the initial state is not a steady motion in these coordinates; valid: a motion whose moving \
-                     coordinates are cyclic (a symmetric top's spin and precession angles, a free body's attitude \
-                     without torques), or an equilibrium",
-                    moving.join(", ")
-                )));
+                // a ball or free joint's rates are resolved in the turning body: an applied
+                // torque turns with it, so a steady precession is periodic in them
+                let turning = b.bodies.iter().any(|body| {
+                    matches!(body.joint, JointSpec::Ball {} | JointSpec::Free {})
+                        && (body.vi..body.vi + dims(&body.joint).1).any(|j| v0[j] != 0.0)
+                });
+                let hint = if turning {
+                    "; a ball or free joint resolves ω in the turning body, where an applied torque turns with \
+                     it, so a precessing top is periodic, not steady, in its coordinates: write the top in a gimbal \
+                     of pins (Euler angles, examples/scenes/heavy_top_gimbal.toml)"
+                } else {
+                    ""
+                };
+                let at = self.spec().linearize.as_ref().map_or("bodies", |_| "linearize.steady");
+                return Err(self.invalid(
+                    at,
+                    format!(
+                        "the coordinates that move ({}) are not cyclic: ∂v̇/∂x changes by {change:.3e} along the \
+                         motion, so the initial state is not a steady motion in these coordinates; valid: a motion \
+                         whose moving coordinates are cyclic (a symmetric top's spin and precession angles in a \
+                         gimbal, a free body's attitude without torques), or an equilibrium{hint}",
+                        moving.join(", ")
+                    ),
+                ));
             }
         }
         // inputs: the magnitudes of the force and torque effects
