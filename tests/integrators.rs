@@ -564,3 +564,27 @@ mod prop {
         }
     }
 }
+
+#[test]
+fn stepper_set_end_lifts_the_default_step_cap_of_a_short_first_interval() {
+    // A first interval of 1e-13 s (a scene's profile corner just after t = 0) set the default
+    // step cap, which set_end kept: every later step stayed ≤ 1e-13 s. Now the cap is the
+    // interval still to go. x″ = −x over [0, 10] at rtol 1e-8 takes about a hundred steps.
+    use vectrix::ode::explicit::{Adaptive, Stepper};
+    let f = |_t: f64, y: &Vec<f64>| vec![y[1], -y[0]];
+    let cfg = Adaptive::dop853().rtol(1e-8).atol(1e-8).max_steps(100_000);
+    let mut st = Stepper::new(&cfg, f, 0.0, vec![1.0, 0.0], 1e-13).unwrap();
+    while !st.done() {
+        st.step().unwrap();
+    }
+    st.set_end(10.0).unwrap();
+    let (t, y) = (st.t(), st.y().clone());
+    st.restart(t, y).unwrap();
+    while !st.done() {
+        st.step().unwrap();
+    }
+    assert!(st.work().accepted < 1_000, "{} steps", st.work().accepted);
+    let y = st.y();
+    // x = cos t at rtol 1e-8 (global error a few times the tolerance)
+    assert!((y[0] - 10f64.cos()).abs() <= 1e-6 && (y[1] + 10f64.sin()).abs() <= 1e-6, "{y:?}");
+}

@@ -490,9 +490,13 @@ fn issue_16_weld_only_scene_runs() {
 
 // ----------------------------------------------------------- item 8: the format reference
 
-/// The backticked names after "expected" in a serde message (`expected one of `a`, `b``).
+/// The backticked names after "expected" or "valid:" in a loader message (`expected one of
+/// `a`, `b``, `unknown key `k`; valid: `a`, `b` (did you mean `a`?)`).
 fn expected_names(message: &str) -> Vec<String> {
-    let Some((_, tail)) = message.split_once("expected") else { return vec![] };
+    let Some((_, tail)) = message.split_once("expected").or_else(|| message.split_once("valid:")) else {
+        return vec![];
+    };
+    let tail = tail.split(" (did you mean").next().unwrap_or(tail);
     tail.split('`').skip(1).step_by(2).map(str::to_string).collect()
 }
 

@@ -240,10 +240,17 @@ fn check_inertia(j: &Matrix3<f64>) -> Result<(), String> {
 }
 
 /// Checks every number of the spec is finite (TOML admits `inf` and `nan`).
+/// The largest magnitude a number of a scene may have (SI): products of two such numbers stay
+/// finite, so masses, speeds, loads and their energies mean something; beyond it a run would
+/// produce ∞ or NaN, or an integrator step of zero, instead of an answer.
+pub const MAX_MAGNITUDE: f64 = 1e150;
+
 fn check_finite(spec: &SceneSpec, src: &Src) -> Result<(), SceneError> {
-    fn walk(v: &toml::Value, path: &str, bad: &mut Option<String>) {
+    fn walk(v: &toml::Value, path: &str, bad: &mut Option<(String, f64)>) {
         match v {
-            toml::Value::Float(x) if !x.is_finite() && bad.is_none() => *bad = Some(path.to_string()),
+            toml::Value::Float(x) if (x.is_nan() || x.abs() > MAX_MAGNITUDE) && bad.is_none() => {
+                *bad = Some((path.to_string(), *x))
+            }
             toml::Value::Array(a) => {
                 a.iter().enumerate().for_each(|(i, x)| walk(x, &format!("{path}[{i}]"), bad))
             }
@@ -254,8 +261,12 @@ fn check_finite(spec: &SceneSpec, src: &Src) -> Result<(), SceneError> {
     let value = toml::Value::try_from(spec).map_err(|e| src.invalid("", e.to_string()))?;
     let mut bad = None;
     walk(&value, "", &mut bad);
-    if let Some(path) = bad {
-        return Err(src.invalid(path.trim_start_matches('.'), "non-finite number; valid: finite numbers"));
+    if let Some((path, x)) = bad {
+        let what = if x.is_finite() { format!("{x:e}") } else { "a non-finite number".into() };
+        return Err(src.invalid(
+            path.trim_start_matches('.'),
+            format!("{what}; valid: finite numbers of magnitude at most {MAX_MAGNITUDE:e} (SI)"),
+        ));
     }
     Ok(())
 }
@@ -388,13 +399,22 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
         })
         .collect();
     let model = Model::new(&links).map_err(|e| {
-        let i = match &e {
-            vectrix_dynamics::DynamicsError::Cyclic { link }
-            | vectrix_dynamics::DynamicsError::ZeroAxis { link, .. } => *link,
-            vectrix_dynamics::DynamicsError::JointGeometry { link, .. } => *link,
-            _ => 0,
+        use vectrix_dynamics::DynamicsError as D;
+        // a cycle is in the parents; a bad axis or geometry in the joint
+        let (i, key) = match &e {
+            D::Cyclic { link } => (*link, "parent"),
+            D::ZeroAxis { link, .. } | D::JointGeometry { link, .. } => (*link, "joint"),
+            _ => (0, "joint"),
         };
-        src.invalid(format!("bodies[{i}].joint"), format!("{e} (joints must form a tree)"))
+        let message = match &e {
+            D::Cyclic { .. } => format!(
+                "body `{}` is its own ancestor through its parents; valid: parents that form a tree rooted at \
+                 the ground",
+                spec.bodies[i].name
+            ),
+            _ => format!("{e} (joints must form a tree)"),
+        };
+        src.invalid(format!("bodies[{i}].{key}"), message)
     })?;
     let mut q0 = model.neutral();
     let mut v0 = vec![0.0; model.nv()];

@@ -48,7 +48,98 @@ impl SceneError {
     /// A [`SceneError::Parse`] from a TOML error, located in `text` (shared by every kind of
     /// scene file: multibody here, flight in `vectrix-flight`).
     pub fn from_toml(e: &toml::de::Error, text: &str, file: &str) -> Self {
-        let (line, column) = e.span().map_or((1, 1), |s| super::source::line_col(text, s.start));
-        Self::Parse { file: file.into(), line, column, message: e.message().trim().to_string() }
+        let message = e.message().trim();
+        let mut at = e.span().map_or(0, |s| s.start);
+        if let (Some(key), Some(span)) = (unknown_key(message), e.span())
+            && let Some(table) = text.get(span.clone())
+        {
+            // the parser points at the table holding the key (an inline table's `{`): find the
+            // key itself in it
+            at = key_offset(table, key).map_or(span.start, |k| span.start + k);
+        }
+        let message = if message == "duplicate key" {
+            // name the key (the span is the repeated key)
+            let key = e.span().and_then(|s| text.get(s)).unwrap_or("").trim();
+            format!("duplicate key `{key}`; valid: each key once in its table")
+        } else {
+            plain_words(message)
+        };
+        let (line, column) = super::source::line_col(text, at);
+        Self::Parse { file: file.into(), line, column, message }
     }
+}
+
+/// The key of serde's "unknown field `k`, expected …" message.
+pub(crate) fn unknown_key(message: &str) -> Option<&str> {
+    message.strip_prefix("unknown field `")?.split('`').next()
+}
+
+/// Byte offset of the bare key `key` (followed by `=`) in `text`.
+fn key_offset(text: &str, key: &str) -> Option<usize> {
+    let mut from = 0;
+    while let Some(k) = text[from..].find(key).map(|k| from + k) {
+        let before = text[..k].chars().next_back();
+        let after = text[k + key.len()..].trim_start();
+        if before.is_none_or(|c| !(c.is_alphanumeric() || c == '_' || c == '-')) && after.starts_with('=') {
+            return Some(k);
+        }
+        from = k + key.len();
+    }
+    None
+}
+
+/// Edit distance (Levenshtein) between two short names.
+fn distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// A parser message in the scene's words: serde's Rust type names become what a scene
+/// writer would type, and an unknown key gets the closest valid one ("did you mean").
+pub(crate) fn plain_words(message: &str) -> String {
+    let mut m = message.trim().to_string();
+    for (rust, plain) in [
+        ("expected usize", "valid: a whole number ≥ 0 (no decimal point)"),
+        ("expected u64", "valid: a whole number ≥ 0 (no decimal point)"),
+        ("expected f64", "valid: a number"),
+        ("expected a sequence", "valid: an array [ … ]"),
+        ("expected a string", "valid: a string in quotes"),
+        ("expected a boolean", "valid: true or false"),
+    ] {
+        if let Some(k) = m.find(rust) {
+            let head = m[..k].trim_end().trim_end_matches(',');
+            m = format!("{head}; {plain}{}", &m[k + rust.len()..]);
+        }
+    }
+    if let Some(struct_at) = m.find("expected struct ") {
+        let head = m[..struct_at].trim_end().trim_end_matches(',');
+        m = format!("{head}; valid: a table {{ … }}");
+    }
+    if let Some(key) = unknown_key(message) {
+        // "unknown field `k`, expected `a`" or "…, expected one of `a`, `b`"
+        let valid: Vec<&str> = message.split('`').skip(3).step_by(2).collect();
+        m = format!(
+            "unknown key `{key}`; valid: {}",
+            valid.iter().map(|v| format!("`{v}`")).collect::<Vec<_>>().join(", ")
+        );
+        if valid.is_empty() {
+            m = format!("unknown key `{key}`; valid: none here");
+        } else if let Some(best) = valid.iter().copied().min_by_key(|v| distance(key, v))
+            && valid.len() > 1
+            && distance(key, best) <= (key.chars().count() / 3).max(2)
+        {
+            m.push_str(&format!(" (did you mean `{best}`?)"));
+        }
+    }
+    m
 }

@@ -37,6 +37,7 @@ mod run;
 mod source;
 pub mod spec;
 
+pub use build::MAX_MAGNITUDE;
 pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME_REL};
 pub use error::SceneError;
 pub use invariants::Invariant;

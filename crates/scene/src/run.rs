@@ -90,12 +90,56 @@ pub(crate) fn check_bounds(
             ),
         ));
     }
+    check_breakpoints(spec, src)?;
     if let Some(w) = spec.max_wall_seconds
         && !(w > 0.0 && w.is_finite())
     {
         return Err(
             src.invalid("max_wall_seconds", format!("max_wall_seconds = {w}; valid: a finite number > 0"))
         );
+    }
+    Ok(())
+}
+
+/// The corners and jumps of the load profiles are step ends: two of them (or one and t = 0 or
+/// the end) closer than the time resolution 64 ε · duration, yet distinct, would need a step
+/// below round-off. Refused at the later one, with what would be valid.
+fn check_breakpoints(spec: &SceneSpec, src: &Src) -> Result<(), SceneError> {
+    use super::spec::EffectSpec as E;
+    let resolution = 64.0 * f64::EPSILON * spec.duration;
+    let mut times: Vec<(f64, String)> = vec![(0.0, String::new()), (spec.duration, String::new())];
+    for (k, e) in spec.effects.iter().enumerate() {
+        let (E::Force { profile, .. } | E::Torque { profile, .. }) = e else { continue };
+        let at = |key: &str| format!("effects[{k}].profile.{key}");
+        match profile {
+            Profile::Step { at: t, .. } => times.push((*t, at("at"))),
+            Profile::Ramp { t0, t1, .. } => times.extend([(*t0, at("t0")), (*t1, at("t1"))]),
+            Profile::Table { t, .. } => {
+                times.extend(t.iter().enumerate().map(|(i, x)| (*x, at(&format!("t[{i}]")))))
+            }
+            Profile::Constant { .. } | Profile::Sine { .. } => {}
+        }
+    }
+    times.retain(|(t, _)| (0.0..=spec.duration).contains(t));
+    times.sort_by(|a, b| a.0.total_cmp(&b.0));
+    for w in times.windows(2) {
+        let ((t1, p1), (t2, p2)) = (&w[0], &w[1]);
+        if t2 > t1 && t2 - t1 < resolution {
+            let (path, other) = if p2.is_empty() {
+                (p1, "the end")
+            } else {
+                (p2, if p1.is_empty() { "t = 0" } else { p1.as_str() })
+            };
+            return Err(src.invalid(
+                path.as_str(),
+                format!(
+                    "a profile corner {:e} s from {other}: closer than the time resolution 64 ε × duration = \
+                     {resolution:e} s, so no integrator step fits between them; valid: the same time, or times at \
+                     least {resolution:e} s apart",
+                    t2 - t1
+                ),
+            ));
+        }
     }
     Ok(())
 }

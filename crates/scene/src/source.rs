@@ -129,11 +129,16 @@ impl<'a> SceneSource<'a> {
             }
             let message = e.inner().to_string();
             // an unknown key: point at it
-            if let Some(key) = message.split('`').nth(1).filter(|_| message.starts_with("unknown field")) {
+            if let Some(key) = super::error::unknown_key(&message) {
                 path = if path.is_empty() { key.to_string() } else { format!("{path}.{key}") };
             }
             let (line, column) = self.locate(&path);
-            SceneError::Parse { file: self.file.into(), line, column, message: message.trim().to_string() }
+            SceneError::Parse {
+                file: self.file.into(),
+                line,
+                column,
+                message: super::error::plain_words(&message),
+            }
         })
     }
 

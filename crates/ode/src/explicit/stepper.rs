@@ -279,6 +279,11 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     pub fn set_end(&mut self, t_end: f64) -> Result<(), OdeError> {
         check_interval(self.t, t_end)?;
         self.t_end = t_end;
+        // without a cap of the user's, the cap is the interval still to go (not the first
+        // interval's length: a first piece of 1e-13 s must not cap every later step)
+        if self.cfg.h_max.is_none() {
+            self.h_max = t_end - self.t;
+        }
         Ok(())
     }
 

@@ -1,0 +1,146 @@
+//! Every refusal of a scene file is located and worded for the writer of the file (issue 33):
+//! an unknown key is named with the valid keys and the closest one, at the key itself (also
+//! inside an inline table); a duplicate key is named; a parent cycle is reported at `parent`;
+//! numbers past 1e150 (whose products would overflow) and profile corners closer than the time
+//! resolution are refused where they stand instead of failing the run with "step size 0".
+//!
+//! Book: — (file format).
+
+use vectrix::scene::{MAX_MAGNITUDE, Scene, SceneError};
+
+const PIN: &str = r#"
+name = "p"
+duration = 1.0
+outputs = ["energy"]
+
+[[bodies]]
+name = "b"
+joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+mass = { shape = "particle", mass = 1.0 }
+com = [1.0, 0.0, 0.0]
+v = [1.0]
+"#;
+
+/// (line, column, message) of the refusal of `text`, which must be located in `p.toml`.
+fn refusal(text: &str) -> (usize, usize, String) {
+    match Scene::from_toml(text, "p.toml") {
+        Err(SceneError::Parse { file, line, column, message }) => {
+            assert_eq!(file, "p.toml");
+            (line, column, message)
+        }
+        Err(SceneError::Invalid { file, line, column, path, message }) => {
+            assert_eq!(file, "p.toml");
+            (line, column, format!("{path}: {message}"))
+        }
+        other => panic!("expected a located refusal, got {other:?}"),
+    }
+}
+
+/// 1-based (line, column) of the first occurrence of `needle` in `text`.
+fn position(text: &str, needle: &str) -> (usize, usize) {
+    let at = text.find(needle).expect("needle in text");
+    let line = text[..at].matches('\n').count() + 1;
+    let column = text[..at].rsplit('\n').next().unwrap().chars().count() + 1;
+    (line, column)
+}
+
+#[test]
+fn unknown_key_in_an_inline_table_is_located_at_the_key() {
+    let text = PIN.replace("axis = [0.0, 0.0, 1.0] }", "axis = [0.0, 0.0, 1.0], axes = 1 }");
+    let (line, column, message) = refusal(&text);
+    assert_eq!((line, column), position(&text, "axes"));
+    assert_eq!(message, "unknown key `axes`; valid: `axis`");
+}
+
+#[test]
+fn unknown_top_level_key_suggests_the_closest() {
+    let text = PIN.replace("duration = 1.0", "durration = 1.0");
+    let (line, column, message) = refusal(&text);
+    assert_eq!((line, column), position(&text, "durration"));
+    assert!(message.starts_with("unknown key `durration`; valid: `name`, `duration`"), "{message}");
+    assert!(message.ends_with("(did you mean `duration`?)"), "{message}");
+}
+
+#[test]
+fn duplicate_key_is_named() {
+    let text = PIN.replace("duration = 1.0", "duration = 1.0\nduration = 2.0");
+    let (line, _, message) = refusal(&text);
+    assert_eq!(line, 4);
+    assert_eq!(message, "duplicate key `duration`; valid: each key once in its table");
+}
+
+#[test]
+fn parser_wording_is_the_scene_writers() {
+    for (value, shown) in [("-3", "integer `-3`"), ("1.5", "floating point `1.5`")] {
+        let text = PIN.replace("duration = 1.0", &format!("duration = 1.0\nsamples = {value}"));
+        let (line, column, message) = refusal(&text);
+        assert_eq!((line, column), (4, 11));
+        assert!(
+            message.contains(shown) && message.ends_with("valid: a whole number ≥ 0 (no decimal point)"),
+            "{message}"
+        );
+        assert!(!message.contains("usize"), "{message}");
+    }
+}
+
+#[test]
+fn parent_cycle_is_reported_at_parent() {
+    let text = r#"
+name = "c"
+duration = 1.0
+[[bodies]]
+name = "a"
+parent = "b"
+joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+mass = { shape = "particle", mass = 1.0 }
+[[bodies]]
+name = "b"
+parent = "a"
+joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+mass = { shape = "particle", mass = 1.0 }
+"#;
+    let (line, _, message) = refusal(text);
+    assert_eq!(line, 6, "{message}");
+    assert!(message.starts_with("bodies[0].parent: body `a` is its own ancestor"), "{message}");
+}
+
+#[test]
+fn numbers_past_the_magnitude_bound_are_refused_where_they_stand() {
+    // the issue's cases: a mass ≥ 1e154 (energies overflow), g = −1e308 (a zero step)
+    assert_eq!(MAX_MAGNITUDE, 1e150);
+    let text = PIN.replace("mass = 1.0 }", "mass = 1e155 }");
+    let (line, column, message) = refusal(&text);
+    assert_eq!((line, column), position(&text, "mass = 1e155"));
+    assert!(
+        message.starts_with("bodies[0].mass.mass: 1e155; valid: finite numbers of magnitude at most 1e150")
+    );
+    let text = format!("{PIN}\n[[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, -1e308, 0.0]\n");
+    let (line, _, message) = refusal(&text);
+    assert_eq!(line, position(&text, "-1e308").0);
+    assert!(message.starts_with("effects[0].g[1]: -1e308;"), "{message}");
+    // the bound itself is accepted
+    let text = PIN.replace("com = [1.0, 0.0, 0.0]", "com = [1e150, 0.0, 0.0]");
+    assert!(Scene::from_toml(&text, "p.toml").is_ok());
+}
+
+#[test]
+fn profile_corner_closer_than_the_time_resolution_is_refused_where_it_stands() {
+    let torque = |at: &str| {
+        format!(
+            "{PIN}\n[[effects]]\ntype = \"torque\"\nbody = \"b\"\ndirection = [0.0, 0.0, 1.0]\n\
+             profile = {{ kind = \"step\", at = {at}, after = 1.0 }}\n"
+        )
+    };
+    for at in ["1e-300", "1e-15", "0.9999999999999999"] {
+        let text = torque(at);
+        let (line, _, message) = refusal(&text);
+        assert_eq!(line, position(&text, "profile").0);
+        assert!(message.starts_with("effects[0].profile.at: a profile corner"), "{at}: {message}");
+    }
+    // at the start, at the end and well apart they run
+    for at in ["0.0", "1.0", "1e-13", "0.5"] {
+        let scene = Scene::from_toml(&torque(at), "p.toml").unwrap_or_else(|e| panic!("{at}: {e}"));
+        let run = scene.run(&mut |_| {}).unwrap();
+        assert!(run.is_complete(), "{at}: {:?}", run.stop);
+    }
+}
