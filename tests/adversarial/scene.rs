@@ -298,8 +298,15 @@ cases! {
     // Linearization (§12.6): the hanging double pendulum of unit masses and rods has
     // ω² = (g/l)(2 ± √2), purely imaginary poles; LinearModel::new refuses non-finite
     // entries and shapes that disagree, and its modes have ωn = |λ|.
-    scene_linearize ["Scene::linearize", "LinearModel::new"] {
+    scene_linearize ["Scene::linearize", "LinearModel::new", "Scene::jacobian"] {
         let s = Scene::from_toml(&double_pendulum([0.0, 0.0], ""), "dp.toml").unwrap();
+        // the exact Jacobian at hostile states: finite, with ∂q̇/∂v = I, or refused
+        for x in crate::harness::hostile() {
+            err_or(s.jacobian(0.0, &[x, 0.2, -0.1, 0.3]), "jacobian", |(fy, fu)| {
+                finite(fy.as_slice()) && fu.ncols() == 0 && fy[(0, 2)] == 1.0 && fy[(1, 3)] == 1.0 && fy[(0, 3)] == 0.0
+            });
+        }
+        refused(s.jacobian(0.0, &[0.0; 3]), "jacobian(short y)");
         let lin = s.linearize().unwrap();
         let g = 9.81;
         let want = [g * (2.0 - 2f64.sqrt()), g * (2.0 + 2f64.sqrt())];

@@ -7,37 +7,38 @@
 use nalgebra::Vector3;
 use vectrix_frames::Frame;
 use vectrix_statics::{CentralGravity, Dashpot, Spring, dipole_interaction, dipole_potential};
+use vectrix_tensor::Scalar;
 
 use super::build::{Body, Effect, eval_profile};
-use super::kin::Kin;
+use super::kin::{Kin, lift};
 use vectrix_dynamics::multibody::JointWrench;
 
-/// World vector ↔ frame-free vector through the ground frame.
-pub(crate) struct Ground(Frame);
+/// World vector ↔ frame-free vector through the ground frame, in the scalar of an evaluation.
+pub(crate) struct Ground<T: Scalar = f64>(Frame<T>);
 
-impl Ground {
+impl<T: Scalar> Ground<T> {
     pub fn new() -> Self {
-        Self(Frame::new())
+        Self(Frame::identity())
     }
-    fn vec(&self, x: &Vector3<f64>) -> vectrix_tensor::Vector {
+    fn vec(&self, x: &Vector3<T>) -> vectrix_tensor::Vector<T> {
         self.0.vector([x[0], x[1], x[2]])
     }
-    fn res(&self, x: &vectrix_tensor::Vector) -> Vector3<f64> {
+    fn res(&self, x: &vectrix_tensor::Vector<T>) -> Vector3<T> {
         use vectrix_frames::Resolve;
         x.resolve(&self.0)
     }
 }
 
 /// Accumulates link wrenches (link components, about the link origin) and joint torques.
-pub(crate) struct Loads<'a> {
-    pub kin: &'a Kin,
-    pub wrenches: &'a mut [JointWrench],
-    pub tau: &'a mut [f64],
+pub(crate) struct Loads<'a, T: Scalar = f64> {
+    pub kin: &'a Kin<T>,
+    pub wrenches: &'a mut [JointWrench<T>],
+    pub tau: &'a mut [T],
 }
 
-impl Loads<'_> {
+impl<T: Scalar> Loads<'_, T> {
     /// Force f (ground) at ground point p on body i (nothing on the ground).
-    pub fn force(&mut self, i: Option<usize>, p: &Vector3<f64>, f: &Vector3<f64>) {
+    pub fn force(&mut self, i: Option<usize>, p: &Vector3<T>, f: &Vector3<T>) {
         if let Some(i) = i {
             let (e, r) = self.kin.poses[i];
             self.wrenches[i].force += e * f;
@@ -45,36 +46,47 @@ impl Loads<'_> {
         }
     }
     /// Pure torque (ground components) on body i.
-    pub fn torque(&mut self, i: usize, m: &Vector3<f64>) {
+    pub fn torque(&mut self, i: usize, m: &Vector3<T>) {
         let e = self.kin.poses[i].0;
         self.wrenches[i].moment += e * m;
     }
 }
 
 /// Ground position of a body's centre of mass.
-pub(crate) fn centre(kin: &Kin, b: &Body, i: usize) -> Vector3<f64> {
+pub(crate) fn centre<T: Scalar>(kin: &Kin<T>, b: &Body, i: usize) -> Vector3<T> {
     kin.point(&(Some(i), b.com)).0
 }
 
 /// Adds every declared force effect at time t (uniform gravity is the model's; impacts,
-/// rolling and inerters are handled elsewhere).
-pub(crate) fn apply(
+/// rolling and inerters are handled elsewhere), in the scalar of the evaluation (f64, or dual
+/// numbers for exact derivatives); `u` adds to the magnitudes of the `force` and `torque`
+/// effects, in their order (the inputs of a linearization), when given.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn apply<T: Scalar>(
     effects: &[Effect],
     bodies: &[Body],
-    g: &Ground,
+    g: &Ground<T>,
     t: f64,
-    v: &[f64],
-    q_angle: &dyn Fn(usize) -> f64,
-    loads: &mut Loads,
+    v: &[T],
+    q_angle: &dyn Fn(usize) -> T,
+    u: Option<&[T]>,
+    loads: &mut Loads<T>,
 ) -> Result<(), String> {
     let err = |e: vectrix_statics::StaticsError| e.to_string();
+    let c = T::lit;
+    let mut input = 0;
+    let mut magnitude = |p: f64| {
+        let m = c(p) + u.and_then(|u| u.get(input).copied()).unwrap_or_else(T::zero);
+        input += 1;
+        m
+    };
     for e in effects {
         match e {
-            Effect::Central { mu, centre: c } => {
-                let cg = CentralGravity::new(*mu).map_err(err)?;
+            Effect::Central { mu, centre: x0 } => {
+                let cg = CentralGravity::new(c(*mu)).map_err(err)?;
                 for (i, b) in bodies.iter().enumerate() {
                     let x = centre(loads.kin, b, i);
-                    let f = g.res(&cg.force(b.mass, &g.vec(&(x - c))).map_err(err)?);
+                    let f = g.res(&cg.force(c(b.mass), &g.vec(&(x - lift(x0)))).map_err(err)?);
                     loads.force(Some(i), &x, &f);
                 }
             }
@@ -83,9 +95,9 @@ pub(crate) fn apply(
                     for j in i + 1..bodies.len() {
                         let (xi, xj) = (centre(loads.kin, &bodies[i], i), centre(loads.kin, &bodies[j], j));
                         let pair = vectrix_statics::mutual_gravitation(
-                            *gc,
-                            bodies[i].mass,
-                            bodies[j].mass,
+                            c(*gc),
+                            c(bodies[i].mass),
+                            c(bodies[j].mass),
                             &g.vec(&(xi - xj)),
                         )
                         .map_err(err)?;
@@ -98,15 +110,16 @@ pub(crate) fn apply(
             Effect::Spring { a, b, k, d } => {
                 let (pa, _) = loads.kin.point(a);
                 let (pb, _) = loads.kin.point(b);
-                let f = g.res(&Spring::new(*k, *d).map_err(err)?.force(&g.vec(&(pb - pa))).map_err(err)?);
+                let f =
+                    g.res(&Spring::new(c(*k), c(*d)).map_err(err)?.force(&g.vec(&(pb - pa))).map_err(err)?);
                 loads.force(b.0, &pb, &f);
                 loads.force(a.0, &pa, &(-f));
             }
-            Effect::Dashpot { a, b, c } => {
+            Effect::Dashpot { a, b, c: damping } => {
                 let (pa, va) = loads.kin.point(a);
                 let (pb, vb) = loads.kin.point(b);
                 let f = g.res(
-                    &Dashpot::new(*c)
+                    &Dashpot::new(c(*damping))
                         .map_err(err)?
                         .force(&g.vec(&(pb - pa)), &g.vec(&(vb - va)))
                         .map_err(err)?,
@@ -114,8 +127,10 @@ pub(crate) fn apply(
                 loads.force(b.0, &pb, &f);
                 loads.force(a.0, &pa, &(-f));
             }
-            Effect::RotSpring { dof, kappa, angle } => loads.tau[*dof] -= kappa * (q_angle(*dof) - angle),
-            Effect::RotDashpot { dof, xi } => loads.tau[*dof] -= xi * v[*dof],
+            Effect::RotSpring { dof, kappa, angle } => {
+                loads.tau[*dof] -= c(*kappa) * (q_angle(*dof) - c(*angle))
+            }
+            Effect::RotDashpot { dof, xi } => loads.tau[*dof] -= c(*xi) * v[*dof],
             Effect::Dipoles { list } => {
                 for (x, (bi, mi)) in list.iter().enumerate() {
                     for (bj, mj) in &list[x + 1..] {
@@ -123,8 +138,8 @@ pub(crate) fn apply(
                         let (zi, zj) =
                             (centre(loads.kin, &bodies[*bi], *bi), centre(loads.kin, &bodies[*bj], *bj));
                         let p = dipole_interaction(
-                            &g.vec(&(ei.transpose() * mi)),
-                            &g.vec(&(ej.transpose() * mj)),
+                            &g.vec(&(ei.transpose() * lift::<T>(mi))),
+                            &g.vec(&(ej.transpose() * lift::<T>(mj))),
                             &g.vec(&(zi - zj)),
                         )
                         .map_err(err)?;
@@ -137,9 +152,13 @@ pub(crate) fn apply(
             }
             Effect::Force { at, dir, profile } => {
                 let (p, _) = loads.kin.point(at);
-                loads.force(at.0, &p, &(dir * eval_profile(profile, t)));
+                let f = lift::<T>(dir) * magnitude(eval_profile(profile, t));
+                loads.force(at.0, &p, &f);
             }
-            Effect::Torque { body, dir, profile } => loads.torque(*body, &(dir * eval_profile(profile, t))),
+            Effect::Torque { body, dir, profile } => {
+                let m = lift::<T>(dir) * magnitude(eval_profile(profile, t));
+                loads.torque(*body, &m)
+            }
             Effect::Uniform { .. }
             | Effect::Inerter { .. }
             | Effect::RotInerter { .. }
@@ -151,24 +170,27 @@ pub(crate) fn apply(
     Ok(())
 }
 
-/// Potential energy of the conservative declared effects.
-pub(crate) fn potential(
+/// Potential energy of the conservative declared effects, in any scalar.
+pub(crate) fn potential<T: Scalar>(
     effects: &[Effect],
     bodies: &[Body],
-    kin: &Kin,
-    g: &Ground,
-    q_angle: &dyn Fn(usize) -> f64,
-) -> f64 {
-    let mut u = 0.0;
+    kin: &Kin<T>,
+    g: &Ground<T>,
+    q_angle: &dyn Fn(usize) -> T,
+) -> T {
+    let (c, nan) = (T::lit, T::lit(f64::NAN));
+    let mut u = T::zero();
     for e in effects {
         match e {
             Effect::Uniform { g: gv } => {
-                u -= bodies.iter().enumerate().map(|(i, b)| b.mass * gv.dot(&centre(kin, b, i))).sum::<f64>();
-            }
-            Effect::Central { mu, centre: c } => {
                 for (i, b) in bodies.iter().enumerate() {
-                    if let Ok(cg) = CentralGravity::new(*mu) {
-                        u += cg.potential(b.mass, &g.vec(&(centre(kin, b, i) - c))).unwrap_or(f64::NAN);
+                    u -= c(b.mass) * lift::<T>(gv).dot(&centre(kin, b, i));
+                }
+            }
+            Effect::Central { mu, centre: x0 } => {
+                for (i, b) in bodies.iter().enumerate() {
+                    if let Ok(cg) = CentralGravity::new(c(*mu)) {
+                        u += cg.potential(c(b.mass), &g.vec(&(centre(kin, b, i) - lift(x0)))).unwrap_or(nan);
                     }
                 }
             }
@@ -176,26 +198,29 @@ pub(crate) fn potential(
                 for i in 0..bodies.len() {
                     for j in i + 1..bodies.len() {
                         let r = centre(kin, &bodies[i], i) - centre(kin, &bodies[j], j);
-                        u -= gc * bodies[i].mass * bodies[j].mass / r.norm();
+                        u -= c(*gc) * c(bodies[i].mass) * c(bodies[j].mass) / r.norm();
                     }
                 }
             }
             Effect::Spring { a, b, k, d } => {
                 let r = kin.point(b).0 - kin.point(a).0;
-                u += Spring::new(*k, *d).map_or(f64::NAN, |s| s.potential(&g.vec(&r)));
+                u += Spring::new(c(*k), c(*d)).map_or(nan, |s| s.potential(&g.vec(&r)));
             }
-            Effect::RotSpring { dof, kappa, angle } => u += 0.5 * kappa * (q_angle(*dof) - angle).powi(2),
+            Effect::RotSpring { dof, kappa, angle } => {
+                let d = q_angle(*dof) - c(*angle);
+                u += T::lit(0.5) * c(*kappa) * d * d
+            }
             Effect::Dipoles { list } => {
                 for (x, (bi, mi)) in list.iter().enumerate() {
                     for (bj, mj) in &list[x + 1..] {
                         let (ei, ej) = (kin.poses[*bi].0, kin.poses[*bj].0);
                         let r = centre(kin, &bodies[*bi], *bi) - centre(kin, &bodies[*bj], *bj);
                         u += dipole_potential(
-                            &g.vec(&(ei.transpose() * mi)),
-                            &g.vec(&(ej.transpose() * mj)),
+                            &g.vec(&(ei.transpose() * lift::<T>(mi))),
+                            &g.vec(&(ej.transpose() * lift::<T>(mj))),
                             &g.vec(&r),
                         )
-                        .unwrap_or(f64::NAN);
+                        .unwrap_or(nan);
                     }
                 }
             }

@@ -9,9 +9,10 @@ use serde::Serialize;
 
 use super::Scene;
 use super::build::{Built, Effect};
-use super::forces::{centre, potential};
-use super::kin::Kin;
+use super::forces::{Ground, centre, potential};
+use super::kin::{Kin, lift, lift33};
 use super::spec::JointSpec;
+use vectrix_tensor::Scalar;
 
 /// A conservation law implied by the declared effects.
 ///
@@ -149,23 +150,24 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
 
 impl Scene {
     /// Kinetic energy T = Σ ½ m v_c² + ½ ω·J ω (+ ½ b ℓ̇² of inerters), from a full [`Kin`].
-    pub(crate) fn kinetic(&self, kin: &Kin, v: &[f64]) -> f64 {
-        let mut t = 0.0;
+    pub(crate) fn kinetic<T: Scalar>(&self, kin: &Kin<T>, v: &[T]) -> T {
+        let (half, c) = (T::lit(0.5), T::lit);
+        let mut t = T::zero();
         for (i, b) in self.built.bodies.iter().enumerate() {
             let (e, _) = kin.poses[i];
             let (_, vc) = kin.point(&(Some(i), b.com));
             let w = e * kin.omega[i];
-            t += 0.5 * b.mass * vc.norm_squared() + 0.5 * w.dot(&(b.inertia * w));
+            t += half * c(b.mass) * vc.norm_squared() + half * w.dot(&(lift33::<T>(&b.inertia) * w));
         }
         for e in &self.built.effects {
             match e {
                 Effect::Inerter { a, b, b_in } => {
                     let (pa, va) = kin.point(a);
                     let (pb, vb) = kin.point(b);
-                    let rate = (pb - pa).try_normalize(1e-300).map_or(0.0, |r| r.dot(&(vb - va)));
-                    t += 0.5 * b_in * rate * rate;
+                    let rate = (pb - pa).try_normalize(c(1e-300)).map_or(T::zero(), |r| r.dot(&(vb - va)));
+                    t += half * c(*b_in) * rate * rate;
                 }
-                Effect::RotInerter { dof, beta } => t += 0.5 * beta * v[*dof] * v[*dof],
+                Effect::RotInerter { dof, beta } => t += half * c(*beta) * v[*dof] * v[*dof],
                 _ => {}
             }
         }
@@ -173,9 +175,10 @@ impl Scene {
     }
 
     /// Total energy T + U.
-    pub(crate) fn energy(&self, kin: &Kin, q: &[f64], v: &[f64]) -> f64 {
+    pub(crate) fn energy<T: Scalar>(&self, kin: &Kin<T>, q: &[T], v: &[T]) -> T {
         let q_angle = |dof: usize| self.angle_of_dof(q, dof);
-        self.kinetic(kin, v) + potential(&self.built.effects, &self.built.bodies, kin, &self.ground, &q_angle)
+        self.kinetic(kin, v)
+            + potential(&self.built.effects, &self.built.bodies, kin, &Ground::new(), &q_angle)
     }
 
     /// Sum of the magnitudes of an invariant's terms: the scale of its relative drift.
@@ -196,18 +199,20 @@ impl Scene {
     }
 
     /// p = Σ m v_c.
-    pub(crate) fn momentum(&self, kin: &Kin) -> Vector3<f64> {
-        self.built.bodies.iter().enumerate().map(|(i, b)| kin.point(&(Some(i), b.com)).1 * b.mass).sum()
+    pub(crate) fn momentum<T: Scalar>(&self, kin: &Kin<T>) -> Vector3<T> {
+        let bodies = self.built.bodies.iter().enumerate();
+        bodies.fold(Vector3::zeros(), |p, (i, b)| p + kin.point(&(Some(i), b.com)).1 * T::lit(b.mass))
     }
 
     /// H about the fixed point z: Σ (r_c − z) × m v_c + J_c ω (7.6.x).
-    pub(crate) fn angular_momentum(&self, kin: &Kin, z: &Vector3<f64>) -> Vector3<f64> {
+    pub(crate) fn angular_momentum<T: Scalar>(&self, kin: &Kin<T>, z: &Vector3<f64>) -> Vector3<T> {
         let mut h = Vector3::zeros();
         for (i, b) in self.built.bodies.iter().enumerate() {
             let (e, _) = kin.poses[i];
             let (_, vc) = kin.point(&(Some(i), b.com));
             let rc = centre(kin, b, i);
-            h += (rc - z).cross(&vc) * b.mass + e.transpose() * (b.inertia * (e * kin.omega[i]));
+            h += (rc - lift::<T>(z)).cross(&vc) * T::lit(b.mass)
+                + e.transpose() * (lift33::<T>(&b.inertia) * (e * kin.omega[i]));
         }
         h
     }

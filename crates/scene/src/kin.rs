@@ -5,17 +5,31 @@
 //! v_y = v_x + ω × r_{y/x}; (4.11.x) quaternion kinematics q̇ = ½ q ⊗ (0, ω).
 
 use nalgebra::{Matrix3, Vector3};
+use vectrix_tensor::Scalar;
 
 use super::build::{At, Body};
 use super::spec::JointSpec;
 use vectrix_dynamics::multibody::{Model, Pose, PosesScratch};
 
-/// Poses and twists: for each link 𝓞_{link/ground}, r_{origin}, ω and v_{origin} (ground).
+/// Poses and twists: for each link 𝓞_{link/ground}, r_{origin}, ω and v_{origin} (ground), in
+/// the scalar of the evaluation (f64, or dual numbers for exact derivatives).
 #[derive(Debug, Clone)]
-pub(crate) struct Kin {
-    pub poses: Vec<Pose>,
-    pub omega: Vec<Vector3<f64>>,
-    pub vel: Vec<Vector3<f64>>,
+pub(crate) struct Kin<T: Scalar = f64> {
+    pub poses: Vec<Pose<T>>,
+    pub omega: Vec<Vector3<T>>,
+    pub vel: Vec<Vector3<T>>,
+}
+
+/// A scene constant (f64) in the scalar T of an evaluation.
+#[inline(always)]
+pub(crate) fn lift<T: Scalar>(x: &Vector3<f64>) -> Vector3<T> {
+    x.map(T::lit)
+}
+
+/// A scene matrix constant (f64) in the scalar T of an evaluation.
+#[inline(always)]
+pub(crate) fn lift33<T: Scalar>(x: &Matrix3<f64>) -> Matrix3<T> {
+    x.map(T::lit)
 }
 
 /// Link twists for the velocities `v`, given the poses (bodies in any order: parents are
@@ -33,39 +47,41 @@ pub(crate) fn twists(
     (omega, vel)
 }
 
-/// [`twists`] into caller-owned slices of the bodies' length.
-pub(crate) fn twists_into(
+/// [`twists`] into caller-owned slices of the bodies' length, in any scalar.
+pub(crate) fn twists_into<T: Scalar>(
     bodies: &[Body],
     order: &[usize],
-    poses: &[Pose],
-    v: &[f64],
-    omega: &mut [Vector3<f64>],
-    vel: &mut [Vector3<f64>],
+    poses: &[Pose<T>],
+    v: &[T],
+    omega: &mut [Vector3<T>],
+    vel: &mut [Vector3<T>],
 ) {
+    let zero = Vector3::zeros();
     for &i in order {
         let b = &bodies[i];
         let (e_p, r_p, w_p, v_p) = match b.parent {
             Some(p) => (poses[p].0, poses[p].1, omega[p], vel[p]),
-            None => (Matrix3::identity(), Vector3::zeros(), Vector3::zeros(), Vector3::zeros()),
+            None => (Matrix3::identity(), zero, zero, zero),
         };
         // 𝓞_{J/G} = 𝓞_{J/P} 𝓞_{P/G}; ground components of a joint-frame vector x: 𝓞_{J/G}ᵀ x
-        let e_j = b.orient * e_p;
+        let e_j = lift33::<T>(&b.orient) * e_p;
         let (e_l, r_l) = poses[i];
         let vv = &v[b.vi..];
+        let axis = || e_j.tr_mul(&lift::<T>(&b.axis));
         let (w_rel, v_rel) = match &b.joint {
-            JointSpec::Pin { .. } => (e_j.tr_mul(&b.axis) * vv[0], Vector3::zeros()),
-            JointSpec::Sleeve { .. } => (Vector3::zeros(), e_j.tr_mul(&b.axis) * vv[0]),
+            JointSpec::Pin { .. } => (axis() * vv[0], zero),
+            JointSpec::Sleeve { .. } => (zero, axis() * vv[0]),
             JointSpec::Collar { .. } => {
-                let a = e_j.tr_mul(&b.axis);
+                let a = axis();
                 (a * vv[1], a * vv[0])
             }
-            JointSpec::Slot { .. } => (e_j.tr_mul(&b.axis) * vv[1], e_j.tr_mul(&b.direction) * vv[0]),
-            JointSpec::Ball {} => (e_l.transpose() * Vector3::new(vv[0], vv[1], vv[2]), Vector3::zeros()),
+            JointSpec::Slot { .. } => (axis() * vv[1], e_j.tr_mul(&lift::<T>(&b.direction)) * vv[0]),
+            JointSpec::Ball {} => (e_l.transpose() * Vector3::new(vv[0], vv[1], vv[2]), zero),
             JointSpec::Free {} => (
                 e_l.transpose() * Vector3::new(vv[3], vv[4], vv[5]),
                 e_j.transpose() * Vector3::new(vv[0], vv[1], vv[2]),
             ),
-            JointSpec::Weld {} => (Vector3::zeros(), Vector3::zeros()),
+            JointSpec::Weld {} => (zero, zero),
         };
         omega[i] = w_p + w_rel;
         vel[i] = v_p + w_p.cross(&(r_l - r_p)) + v_rel;
@@ -122,21 +138,41 @@ pub(crate) fn kinematics(
     Ok(Kin { poses, omega, vel })
 }
 
-/// [`kinematics`] into a reused [`Kin`] (`world` is work space): no allocation once grown.
-pub(crate) fn kinematics_into(
-    model: &Model,
+/// [`kinematics`] into a reused [`Kin`] (`world` is work space): no allocation once grown; in
+/// any scalar.
+pub(crate) fn kinematics_into<T: Scalar>(
+    model: &Model<T>,
     bodies: &[Body],
     order: &[usize],
-    q: &[f64],
-    v: &[f64],
-    kin: &mut Kin,
-    world: &mut PosesScratch,
+    q: &[T],
+    v: &[T],
+    kin: &mut Kin<T>,
+    world: &mut PosesScratch<T>,
 ) {
     model.poses_into(q, world, &mut kin.poses);
     let n = bodies.len();
     kin.omega.resize(n, Vector3::zeros());
     kin.vel.resize(n, Vector3::zeros());
     twists_into(bodies, order, &kin.poses, v, &mut kin.omega, &mut kin.vel);
+}
+
+impl<T: Scalar> Kin<T> {
+    /// An empty buffer for [`kinematics_into`].
+    pub fn empty() -> Self {
+        Self { poses: Vec::new(), omega: Vec::new(), vel: Vec::new() }
+    }
+
+    /// Ground position and velocity of a point fixed in a body (or in the ground).
+    pub fn point(&self, at: &At) -> (Vector3<T>, Vector3<T>) {
+        match at.0 {
+            None => (lift(&at.1), Vector3::zeros()),
+            Some(i) => {
+                let (e, r) = self.poses[i];
+                let d = e.transpose() * lift::<T>(&at.1);
+                (r + d, self.vel[i] + self.omega[i].cross(&d))
+            }
+        }
+    }
 }
 
 impl Kin {
@@ -148,23 +184,6 @@ impl Kin {
             Some(i) => {
                 let d = self.poses[i].0.transpose() * at.1;
                 acc[i] + alpha[i].cross(&d) + self.omega[i].cross(&self.omega[i].cross(&d))
-            }
-        }
-    }
-
-    /// An empty buffer for [`kinematics_into`].
-    pub fn empty() -> Self {
-        Self { poses: Vec::new(), omega: Vec::new(), vel: Vec::new() }
-    }
-
-    /// Ground position and velocity of a point fixed in a body (or in the ground).
-    pub fn point(&self, at: &At) -> (Vector3<f64>, Vector3<f64>) {
-        match at.0 {
-            None => (at.1, Vector3::zeros()),
-            Some(i) => {
-                let (e, r) = self.poses[i];
-                let d = e.transpose() * at.1;
-                (r + d, self.vel[i] + self.omega[i].cross(&d))
             }
         }
     }
@@ -189,14 +208,15 @@ pub(crate) fn tree_order(bodies: &[Body]) -> Vec<usize> {
 }
 
 /// q̇ from v: scalar joints q̇ = v, quaternions q̇ = ½ q ⊗ (0, ω_link), free translation ẋ = v.
-pub(crate) fn qdot(bodies: &[Body], q: &[f64], v: &[f64], out: &mut [f64]) {
-    let quat = |qq: &[f64], w: &[f64], o: &mut [f64]| {
+pub(crate) fn qdot<T: Scalar>(bodies: &[Body], q: &[T], v: &[T], out: &mut [T]) {
+    let half = T::lit(0.5);
+    let quat = |qq: &[T], w: &[T], o: &mut [T]| {
         let (e0, e1, e2, e3) = (qq[0], qq[1], qq[2], qq[3]);
         let (p, r, s) = (w[0], w[1], w[2]);
-        o[0] = 0.5 * (-e1 * p - e2 * r - e3 * s);
-        o[1] = 0.5 * (e0 * p + e2 * s - e3 * r);
-        o[2] = 0.5 * (e0 * r + e3 * p - e1 * s);
-        o[3] = 0.5 * (e0 * s + e1 * r - e2 * p);
+        o[0] = half * (-e1 * p - e2 * r - e3 * s);
+        o[1] = half * (e0 * p + e2 * s - e3 * r);
+        o[2] = half * (e0 * r + e3 * p - e1 * s);
+        o[3] = half * (e0 * s + e1 * r - e2 * p);
     };
     for b in bodies {
         let (qi, vi) = (b.qi, b.vi);
@@ -217,15 +237,15 @@ pub(crate) fn qdot(bodies: &[Body], q: &[f64], v: &[f64], out: &mut [f64]) {
 }
 
 /// Renormalizes every quaternion of q.
-pub(crate) fn normalize(bodies: &[Body], q: &mut [f64]) {
+pub(crate) fn normalize<T: Scalar>(bodies: &[Body], q: &mut [T]) {
     for b in bodies {
         let k = match b.joint {
             JointSpec::Ball {} => b.qi,
             JointSpec::Free {} => b.qi + 3,
             _ => continue,
         };
-        let n = q[k..k + 4].iter().map(|x| x * x).sum::<f64>().sqrt();
-        if n > 0.0 {
+        let n = q[k..k + 4].iter().fold(T::zero(), |s, x| s + *x * *x).sqrt();
+        if n > T::zero() {
             q[k..k + 4].iter_mut().for_each(|x| *x /= n);
         }
     }

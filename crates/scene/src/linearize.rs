@@ -9,35 +9,39 @@
 //! coordinate rows are then δ̇ = v (the drift of the cyclic coordinates themselves is not
 //! modelled, so their eigenvalues are 0).
 //!
-//! Derivatives are central differences with one Richardson extrapolation (error O(h⁴), h =
-//! 1e-3·max(1, |x|)): the scene's right-hand side is f64 code, so dual numbers do not reach it.
-//! The relative error of A is about 1e-10 on smooth scenes (tests: closed-form frequencies to
-//! 1e-8).
+//! Derivatives are exact: the right-hand side and the outputs are evaluated once per state and
+//! input on dual numbers (forward mode, num-dual's `Dual64`) through the same generic code that
+//! runs the scene in f64, so A, B and C carry no truncation error (tests: closed-form
+//! frequencies to 1e-12). [`Scene::jacobian`] gives ∂f/∂(y, u) of the right-hand side itself, for
+//! implicit integrators.
 //!
 //! Book: §12.6 (linearization), §15.3 (eigenvalues), (15.15.2)–(15.15.6) (modes).
 
 use nalgebra::{Complex, DMatrix, DVector};
+use num_dual::Dual64;
 use serde::Serialize;
+use vectrix_dynamics::Model;
+use vectrix_dynamics::multibody::PosesScratch;
+use vectrix_tensor::Scalar;
 
 use super::build::dims;
-use super::kin::{kinematics, normalize};
+use super::kin::{Kin, kinematics_into, normalize};
+use super::rhs::RhsScratch;
 use super::spec::{EffectSpec, JointSpec};
 use super::{Scene, SceneError};
 
 /// The moving coordinates of a steady motion are cyclic when ∂v̇/∂x changes along the motion
-/// by less than this fraction of its largest entry (the differences resolve A to about 1e-10
-/// of its size).
-const CYCLIC_REL: f64 = 1e-7;
-
-/// Relative step of the central differences (before Richardson extrapolation).
-const STEP: f64 = 1e-3;
+/// by less than this fraction of its largest entry (the derivatives are exact: a cyclic
+/// coordinate changes them by rounding alone).
+const CYCLIC_REL: f64 = 1e-9;
 
 /// An initial state whose velocity or acceleration exceeds this (∞-norm, SI) is reported as
 /// not an equilibrium (or, with `steady`, not a steady motion).
 pub const EQUILIBRIUM_TOL: f64 = 1e-9;
 
 /// Real parts of eigenvalues within this fraction of max |A_ij| are reported as 0 in
-/// [`LinearMode`] (the finite differences resolve A to about 1e-10 of its size).
+/// [`LinearMode`] (the eigenvalues of a double root, as a cyclic coordinate gives, are known
+/// to about √ε of A's size).
 pub const MARGINAL_REL: f64 = 1e-9;
 
 /// One mode of the linearization: an eigenvalue (one of each conjugate pair) with its modal
@@ -228,6 +232,140 @@ fn dominant(a: &DMatrix<f64>, l: &Complex<f64>) -> Option<usize> {
     (0..n).max_by(|&i, &j| x[i].norm().total_cmp(&x[j].norm()))
 }
 
+/// Exact first derivatives at a state of the linearization (x = (δ, v) about q₀).
+struct Jacobians {
+    /// v̇ at the state.
+    vdot: Vec<f64>,
+    /// ∂v̇/∂x (nv × 2nv).
+    vdot_x: DMatrix<f64>,
+    /// ∂v̇/∂u (nv × inputs).
+    vdot_u: DMatrix<f64>,
+    /// ∂(output columns)/∂x.
+    row_x: DMatrix<f64>,
+}
+
+impl Scene {
+    /// The inputs of a linearization: the `force` and `torque` effects, by index in `effects`.
+    fn inputs(&self) -> Vec<usize> {
+        let effects = self.spec().effects.iter().enumerate();
+        effects
+            .filter(|(_, e)| matches!(e, EffectSpec::Force { .. } | EffectSpec::Torque { .. }))
+            .map(|(k, _)| k)
+            .collect()
+    }
+
+    /// Scenes whose right-hand side is the tree's alone (no loops, rolling or inerters): the
+    /// generic right-hand side covers them.
+    fn tree_only(&self) -> bool {
+        !self.needs.constrained()
+    }
+
+    /// v̇ and the output columns at x = (δ, v) (q = q₀ ⊕ δ) with the inputs u, in any scalar.
+    fn vdot_and_row<T: Scalar>(
+        &self,
+        model: &Model<T>,
+        x: &[T],
+        u: &[T],
+        w: &mut RhsScratch<T>,
+    ) -> Result<(Vec<T>, Vec<T>), String> {
+        let b = &self.built;
+        let (nq, nv) = (model.nq(), model.nv());
+        let q0: Vec<T> = self.initial_state()[..nq].iter().map(|x| T::lit(*x)).collect();
+        let mut q = model.integrate(&q0, &x[..nv], T::one()).map_err(|e| e.to_string())?;
+        normalize(&b.bodies, &mut q);
+        let y = [q.as_slice(), &x[nv..]].concat();
+        let mut out = vec![T::zero(); nq + nv];
+        self.deriv_tree(model, 0.0, &y, Some(u), &mut out, w)?;
+        let (q, v) = y.split_at(nq);
+        let mut kin = Kin::empty();
+        kinematics_into(model, &b.bodies, &self.order, q, v, &mut kin, &mut PosesScratch::default());
+        let mut row = Vec::new();
+        self.row(&kin, q, v, None, &mut row);
+        Ok((out[nq..].to_vec(), row))
+    }
+
+    /// Exact ∂v̇/∂x, ∂v̇/∂u and ∂(outputs)/∂x at x, by one dual-number evaluation per state and
+    /// input.
+    fn jacobians(&self, x: &[f64]) -> Result<Jacobians, String> {
+        let model = self.built.model.cast::<Dual64>();
+        let mut w = RhsScratch::for_model(self, &model);
+        let (n, m) = (x.len(), self.inputs().len());
+        let (mut vdot_x, mut vdot_u) = (DMatrix::zeros(n / 2, n), DMatrix::zeros(n / 2, m));
+        let mut row_x = DMatrix::zeros(self.columns().len(), n);
+        let mut vdot = Vec::new();
+        for j in 0..n + m {
+            // seed the j-th variable: the ε parts are the j-th column
+            let seed = |k: usize, x: f64| Dual64::new(x, if k == j { 1.0 } else { 0.0 });
+            let xd: Vec<Dual64> = x.iter().enumerate().map(|(k, x)| seed(k, *x)).collect();
+            let ud: Vec<Dual64> = (0..m).map(|k| seed(n + k, 0.0)).collect();
+            let (a, row) = self.vdot_and_row(&model, &xd, &ud, &mut w)?;
+            if let Some(bad) = a.iter().chain(&row).find(|d| !(d.re.is_finite() && d.eps.is_finite())) {
+                return Err(format!(
+                    "a derivative is not finite ({bad}); valid: a state where the dynamics are smooth"
+                ));
+            }
+            vdot = a.iter().map(|d| d.re).collect();
+            for (i, d) in a.iter().enumerate() {
+                if j < n { vdot_x[(i, j)] = d.eps } else { vdot_u[(i, j - n)] = d.eps }
+            }
+            if j < n {
+                for (i, d) in row.iter().enumerate() {
+                    row_x[(i, j)] = d.eps;
+                }
+            }
+        }
+        Ok(Jacobians { vdot, vdot_x, vdot_u, row_x })
+    }
+
+    /// The Jacobians of the right-hand side y′ = f(t, y, u) at (t, y) with the inputs u = 0:
+    /// (∂f/∂y, ∂f/∂u), exact (dual numbers through the same code as the f64 evaluation), y =
+    /// (q, v) as [`Scene::derivative`] takes it (a quaternion's four components each), u the
+    /// magnitudes added to the `force` and `torque` effects in their order. For implicit
+    /// integrators and sensitivity studies.
+    ///
+    /// Book: §12.6 (linearization), §9.x (dual numbers for exact derivatives).
+    ///
+    /// # Errors
+    /// [`SceneError::Run`] for a state of the wrong length or not finite, a derivative that is
+    /// not finite; [`SceneError::Invalid`] for scenes with loops, rolling or inerters (their
+    /// right-hand side solves for multipliers in f64 only, so far).
+    pub fn jacobian(&self, t: f64, y: &[f64]) -> Result<(DMatrix<f64>, DMatrix<f64>), SceneError> {
+        let fail = |message: String| SceneError::Run { t, message };
+        let n = self.built.model.nq() + self.built.model.nv();
+        if y.len() != n {
+            return Err(fail(format!("state of length {}; valid: {n}", y.len())));
+        }
+        super::rhs::finite_state(t, y).map_err(fail)?;
+        if !self.tree_only() {
+            return Err(self.invalid(
+                "effects",
+                "exact Jacobians of scenes with loops, rolling or inerters are not available yet; valid: a tree \
+                 with force elements",
+            ));
+        }
+        let model = self.built.model.cast::<Dual64>();
+        let mut w = RhsScratch::for_model(self, &model);
+        let m = self.inputs().len();
+        let (mut fy, mut fu) = (DMatrix::zeros(n, n), DMatrix::zeros(n, m));
+        let mut out = vec![Dual64::from(0.0); n];
+        for j in 0..n + m {
+            let seed = |k: usize, x: f64| Dual64::new(x, if k == j { 1.0 } else { 0.0 });
+            let yd: Vec<Dual64> = y.iter().enumerate().map(|(k, x)| seed(k, *x)).collect();
+            let ud: Vec<Dual64> = (0..m).map(|k| seed(n + k, 0.0)).collect();
+            self.deriv_tree(&model, t, &yd, Some(&ud), &mut out, &mut w).map_err(fail)?;
+            for (i, d) in out.iter().enumerate() {
+                if !d.eps.is_finite() {
+                    return Err(fail(format!(
+                        "∂f{i}/∂ is not finite; valid: a state where the dynamics are smooth"
+                    )));
+                }
+                if j < n { fy[(i, j)] = d.eps } else { fu[(i, j - n)] = d.eps }
+            }
+        }
+        Ok((fy, fu))
+    }
+}
+
 impl Scene {
     /// Linearizes the scene about its initial state (see the module documentation).
     ///
@@ -256,54 +394,26 @@ impl Scene {
                  a tree (write the mechanism in independent coordinates)",
             ));
         }
+        if !self.tree_only() {
+            return Err(self.invalid(
+                "effects",
+                "scenes with inerters are not linearized yet (their mass terms are not in the exact, dual-number \
+                 right-hand side); valid: a tree with force elements",
+            ));
+        }
         let steady = self.spec().linearize.as_ref().is_some_and(|l| l.steady);
         let y0 = self.initial_state();
-        let (q0, v0) = (&y0[..nq], &y0[nq..]);
-        // x = (δ, v) ↦ (δ̇, v̇) with q = q₀ ⊕ δ; δ̇ = v to first order about an equilibrium, and
-        // exactly for scalar joints
-        let state_of = |x: &[f64]| -> Result<Vec<f64>, String> {
-            let mut q = b.model.integrate(q0, &x[..nv], 1.0).map_err(|e| e.to_string())?;
-            normalize(&b.bodies, &mut q);
-            Ok([q.as_slice(), &x[nv..]].concat())
-        };
-        let vdot = |scene: &Scene, x: &[f64]| -> Result<Vec<f64>, String> {
-            let y = state_of(x)?;
-            Ok(scene.deriv(0.0, &y)?[nq..].to_vec())
-        };
+        let v0 = &y0[nq..];
         let x0: Vec<f64> = [vec![0.0; nv], v0.to_vec()].concat();
         let n = 2 * nv;
-        let step = |j: usize| STEP * x0[j].abs().max(1.0);
-        let richardson = |g: &dyn Fn(f64) -> Result<Vec<f64>, String>, h: f64| -> Result<Vec<f64>, String> {
-            let (p1, m1, p2, m2) = (g(h)?, g(-h)?, g(h / 2.0)?, g(-h / 2.0)?);
-            Ok((0..p1.len())
-                .map(|i| {
-                    let d1 = (p1[i] - m1[i]) / (2.0 * h);
-                    let d2 = (p2[i] - m2[i]) / h;
-                    (4.0 * d2 - d1) / 3.0
-                })
-                .collect())
-        };
-        // ∂v̇/∂x at a base point (nv × n)
-        let vblock = |base: &[f64]| -> Result<DMatrix<f64>, String> {
-            let mut m = DMatrix::zeros(nv, n);
-            for j in 0..n {
-                let g = |h: f64| {
-                    let mut x = base.to_vec();
-                    x[j] += h;
-                    vdot(self, &x)
-                };
-                let col = richardson(&g, step(j))?;
-                for (i, c) in col.iter().enumerate() {
-                    m[(i, j)] = *c;
-                }
-            }
-            Ok(m)
-        };
+        let inputs = self.inputs();
+        // exact first derivatives by dual numbers: one evaluation per state and input
+        let jac = self.jacobians(&x0).map_err(fail)?;
         let mut a = DMatrix::zeros(n, n);
         for i in 0..nv {
             a[(i, nv + i)] = 1.0;
         }
-        let v_block = vblock(&x0).map_err(fail)?;
+        let v_block = jac.vdot_x.clone();
         a.view_mut((nv, 0), (nv, n)).copy_from(&v_block);
         if steady && v0.iter().any(|x| *x != 0.0) {
             // a steady motion is time-invariant in these coordinates only if the moving ones are
@@ -312,7 +422,7 @@ impl Scene {
             let tau = 0.3 / v0.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
             let moved: Vec<f64> =
                 x0.iter().enumerate().map(|(j, x)| if j < nv { x + v0[j] * tau } else { *x }).collect();
-            let later = vblock(&moved).map_err(fail)?;
+            let later = self.jacobians(&moved).map_err(fail)?.vdot_x;
             let change = (&later - &v_block).amax();
             if change > CYCLIC_REL * v_block.amax().max(1.0) {
                 let names = self.state_names();
@@ -344,66 +454,17 @@ impl Scene {
                 ));
             }
         }
-        // inputs: the magnitudes of the force and torque effects
         let spec = self.spec();
-        let inputs: Vec<usize> = spec
-            .effects
-            .iter()
-            .enumerate()
-            .filter(|(_, e)| matches!(e, EffectSpec::Force { .. } | EffectSpec::Torque { .. }))
-            .map(|(k, _)| k)
-            .collect();
-        let shifted = |k: usize, du: f64| -> Result<Scene, String> {
-            let mut s = spec.clone();
-            if let EffectSpec::Force { profile, .. } | EffectSpec::Torque { profile, .. } = &mut s.effects[k]
-            {
-                *profile = profile.shifted(du);
-            }
-            Scene::from_spec(s).map_err(|e| e.to_string())
-        };
         let mut bm = DMatrix::zeros(n, inputs.len());
-        for (col, &k) in inputs.iter().enumerate() {
-            let g = |h: f64| vdot(&shifted(k, h)?, &x0);
-            let d = richardson(&g, STEP).map_err(fail)?;
-            for (i, c) in d.iter().enumerate() {
-                bm[(nv + i, col)] = *c;
-            }
-        }
-        // outputs: the declared output columns as functions of the state (and of the inputs,
-        // for reactions and energies that do not depend on them D is 0)
+        bm.view_mut((nv, 0), (nv, inputs.len())).copy_from(&jac.vdot_u);
         let outputs = self.columns();
-        let row_at = |scene: &Scene, x: &[f64]| -> Result<Vec<f64>, String> {
-            let y = state_of(x)?;
-            let (q, v) = y.split_at(nq);
-            let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
-            let lambda = if scene.needs_multipliers() { Some(scene.multipliers(0.0, &y)?) } else { None };
-            let mut row = Vec::new();
-            scene.row(&kin, q, v, lambda.as_ref(), &mut row);
-            Ok(row)
-        };
-        let mut cm = DMatrix::zeros(outputs.len(), n);
-        for j in 0..n {
-            let g = |h: f64| {
-                let mut x = x0.clone();
-                x[j] += h;
-                row_at(self, &x)
-            };
-            let col = richardson(&g, step(j)).map_err(fail)?;
-            for (i, c) in col.iter().enumerate() {
-                cm[(i, j)] = *c;
-            }
-        }
-        let mut dm = DMatrix::zeros(outputs.len(), inputs.len());
-        for (col, &k) in inputs.iter().enumerate() {
-            let g = |h: f64| row_at(&shifted(k, h)?, &x0);
-            let d = richardson(&g, STEP).map_err(fail)?;
-            for (i, c) in d.iter().enumerate() {
-                dm[(i, col)] = *c;
-            }
-        }
-        let acc = vdot(self, &x0).map_err(fail)?;
+        let cm = jac.row_x;
+        // the output columns are functions of the state alone (a loop's reactions, the only
+        // ones that depend on the loads, are not linearized): D = 0
+        let dm = DMatrix::zeros(outputs.len(), inputs.len());
+        let acc = &jac.vdot;
         let amax = |x: &[f64]| x.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
-        let (rv, ra) = (amax(v0), amax(&acc));
+        let (rv, ra) = (amax(v0), amax(acc));
         let residual = EquilibriumResidual {
             velocity: rv,
             acceleration: ra,

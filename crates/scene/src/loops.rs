@@ -67,7 +67,7 @@ pub(crate) fn normals(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
 }
 
 /// 𝓞_{link/ground} of a body, the identity for the ground.
-pub(crate) fn orient(kin: &Kin, body: Option<usize>) -> nalgebra::Matrix3<f64> {
+pub(crate) fn orient<T: vectrix_tensor::Scalar>(kin: &Kin<T>, body: Option<usize>) -> nalgebra::Matrix3<T> {
     body.map_or_else(nalgebra::Matrix3::identity, |i| kin.poses[i].0)
 }
 

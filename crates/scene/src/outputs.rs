@@ -9,9 +9,10 @@ use super::Scene;
 use super::SceneError;
 use super::build::{Built, Src, dims};
 use super::forces::centre;
-use super::kin::Kin;
+use super::kin::{Kin, lift};
 use super::loops::{Loop, LoopKind, orient};
 use super::spec::{JointSpec, SceneSpec};
+use vectrix_tensor::Scalar;
 use vectrix_units::Dimension;
 
 /// One requested output.
@@ -225,13 +226,13 @@ impl Scene {
 
     /// Values of the requested outputs at (q, v); `lambda` holds the constraint multipliers
     /// when [`Scene::needs_multipliers`].
-    pub(crate) fn row(
+    pub(crate) fn row<T: Scalar>(
         &self,
-        kin: &Kin,
-        q: &[f64],
-        v: &[f64],
-        lambda: Option<&DVector<f64>>,
-        out: &mut Vec<f64>,
+        kin: &Kin<T>,
+        q: &[T],
+        v: &[T],
+        lambda: Option<&DVector<T>>,
+        out: &mut Vec<T>,
     ) {
         let b = &self.built;
         for o in &self.outputs {
@@ -254,7 +255,7 @@ impl Scene {
                     out.extend_from_slice(&v[bd.vi..bd.vi + dims(&bd.joint).1]);
                 }
                 Output::Reaction { index, row } => {
-                    let lam = |k: usize| lambda.and_then(|l| l.get(row + k).copied()).unwrap_or(0.0);
+                    let lam = |k: usize| lambda.and_then(|l| l.get(row + k).copied()).unwrap_or_else(T::zero);
                     let (force, couple) = reaction(kin, &b.loops[*index], lam);
                     out.extend(force.iter());
                     if let Some(m) = couple {
@@ -270,17 +271,20 @@ impl Scene {
 /// body `a`, from the multipliers of its rows: the generalized constraint force is −Gᵀλ, so a
 /// row λ·(v_a − v_b)·n gives −λn on `a`, and a pin's axis row λ·(ω_b − ω_a)·(k × e) gives the
 /// couple λ(k × e) on `a` (§6.10: `b` receives the opposite).
-fn reaction(kin: &Kin, l: &Loop, lam: impl Fn(usize) -> f64) -> (Vector3<f64>, Option<Vector3<f64>>) {
+fn reaction<T: Scalar>(kin: &Kin<T>, l: &Loop, lam: impl Fn(usize) -> T) -> (Vector3<T>, Option<Vector3<T>>) {
     let (ea, eb) = (orient(kin, l.a.0), orient(kin, l.b.0));
     let three = -Vector3::new(lam(0), lam(1), lam(2));
     match &l.kind {
         LoopKind::Ball => (three, None),
         LoopKind::Pin { e1_a, e2_a, axis_b } => {
-            let k = eb.tr_mul(axis_b);
-            let couple = k.cross(&ea.tr_mul(e1_a)) * lam(3) + k.cross(&ea.tr_mul(e2_a)) * lam(4);
+            let k = eb.tr_mul(&lift::<T>(axis_b));
+            let couple = k.cross(&ea.tr_mul(&lift::<T>(e1_a))) * lam(3)
+                + k.cross(&ea.tr_mul(&lift::<T>(e2_a))) * lam(4);
             (three, Some(couple))
         }
-        LoopKind::Line { n1_b, n2_b } => (-(eb.tr_mul(n1_b) * lam(0) + eb.tr_mul(n2_b) * lam(1)), None),
-        LoopKind::Plane { n_b } => (-(eb.tr_mul(n_b) * lam(0)), None),
+        LoopKind::Line { n1_b, n2_b } => {
+            (-(eb.tr_mul(&lift::<T>(n1_b)) * lam(0) + eb.tr_mul(&lift::<T>(n2_b)) * lam(1)), None)
+        }
+        LoopKind::Plane { n_b } => (-(eb.tr_mul(&lift::<T>(n_b)) * lam(0)), None),
     }
 }

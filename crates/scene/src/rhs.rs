@@ -6,32 +6,43 @@
 //! Book: §7.11 (ABA, CRBA), §6.8 (inerters), §4.18 and §9.12 (rolling), §9.11 (loops).
 
 use nalgebra::{DMatrix, DVector};
+use vectrix_tensor::Scalar;
 
-use super::forces::{Loads, apply};
+use super::forces::{Ground, Loads, apply};
 use super::kin::{Kin, kinematics_into, qdot};
 use super::{Scene, SceneError};
+use vectrix_dynamics::Model;
 use vectrix_dynamics::multibody::{AbaScratch, JointWrench, PosesScratch};
 
-/// Work space of the right-hand side: everything an evaluation needs, allocated once per run.
-pub(crate) struct RhsScratch {
-    aba: AbaScratch,
-    tau: Vec<f64>,
-    wrenches: Vec<JointWrench>,
-    kin: Kin,
-    world: PosesScratch,
+/// Work space of the right-hand side: everything an evaluation needs, allocated once per run,
+/// in the scalar of the evaluation (f64, or dual numbers for exact derivatives).
+pub(crate) struct RhsScratch<T: Scalar = f64> {
+    aba: AbaScratch<T>,
+    tau: Vec<T>,
+    wrenches: Vec<JointWrench<T>>,
+    kin: Kin<T>,
+    world: PosesScratch<T>,
+    ground: Ground<T>,
     /// The independent constraint rows found last (see `loops::solve_dropping`).
     keep: Option<Vec<usize>>,
 }
 
 impl RhsScratch {
     pub fn new(scene: &Scene) -> Self {
-        let m = &scene.built.model;
+        Self::for_model(scene, &scene.built.model)
+    }
+}
+
+impl<T: Scalar> RhsScratch<T> {
+    /// Work space for evaluations on `model` (the scene's, or its cast to another scalar).
+    pub fn for_model(scene: &Scene, m: &Model<T>) -> Self {
         Self {
             aba: m.aba_scratch(),
-            tau: vec![0.0; m.nv()],
+            tau: vec![T::zero(); m.nv()],
             wrenches: vec![JointWrench::default(); scene.built.bodies.len()],
             kin: Kin::empty(),
             world: PosesScratch::default(),
+            ground: Ground::new(),
             keep: None,
         }
     }
@@ -156,25 +167,9 @@ impl Scene {
     ) -> Result<Option<DVector<f64>>, String> {
         let b = &self.built;
         let nq = b.model.nq();
+        self.deriv_tree(&b.model, t, y, None, out, w)?;
         let (q, v) = y.split_at(nq);
-        let (qd, vd) = out.split_at_mut(nq);
-        if self.needs.qdot_is_v {
-            qd.copy_from_slice(v);
-        } else {
-            qdot(&b.bodies, q, v, qd);
-        }
-        let ext = if self.needs.loads {
-            kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
-            w.tau.fill(0.0);
-            w.wrenches.fill(JointWrench::default());
-            let q_angle = |dof: usize| self.angle_of_dof(q, dof);
-            let mut loads = Loads { kin: &w.kin, wrenches: &mut w.wrenches, tau: &mut w.tau };
-            apply(&b.effects, &b.bodies, &self.ground, t, v, &q_angle, &mut loads)?;
-            Some(w.wrenches.as_slice())
-        } else {
-            None
-        };
-        b.model.aba_into(q, v, &w.tau, ext, vd, &mut w.aba).map_err(|e| e.to_string())?;
+        let vd = &mut out[nq..];
         if self.needs.constrained() {
             if !self.needs.loads {
                 kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
@@ -190,6 +185,42 @@ impl Scene {
             self.rest_forces(&w.kin, resting, vd);
         }
         Ok(None)
+    }
+
+    /// y′ = (q̇, v̇) of the tree with the declared loads (ABA), in any scalar: the whole
+    /// right-hand side of a scene without loops, rolling, inerters or resting contacts, and the
+    /// first part of every other. `model` is the scene's model in the scalar T; `u` adds to the
+    /// magnitudes of the `force` and `torque` effects (a linearization's inputs).
+    pub(crate) fn deriv_tree<T: Scalar>(
+        &self,
+        model: &Model<T>,
+        t: f64,
+        y: &[T],
+        u: Option<&[T]>,
+        out: &mut [T],
+        w: &mut RhsScratch<T>,
+    ) -> Result<(), String> {
+        let b = &self.built;
+        let nq = model.nq();
+        let (q, v) = y.split_at(nq);
+        let (qd, vd) = out.split_at_mut(nq);
+        if self.needs.qdot_is_v {
+            qd.copy_from_slice(v);
+        } else {
+            qdot(&b.bodies, q, v, qd);
+        }
+        let ext = if self.needs.loads {
+            kinematics_into(model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
+            w.tau.fill(T::zero());
+            w.wrenches.fill(JointWrench::default());
+            let q_angle = |dof: usize| self.angle_of_dof(q, dof);
+            let mut loads = Loads { kin: &w.kin, wrenches: &mut w.wrenches, tau: &mut w.tau };
+            apply(&b.effects, &b.bodies, &w.ground, t, v, &q_angle, u, &mut loads)?;
+            Some(w.wrenches.as_slice())
+        } else {
+            None
+        };
+        model.aba_into(q, v, &w.tau, ext, vd, &mut w.aba).map_err(|e| e.to_string())
     }
 
     /// M + Σ b g gᵀ (+ rotational inerters): the mass matrix with the inerters, for
@@ -209,11 +240,11 @@ impl Scene {
     }
 
     /// The joint angle whose velocity coordinate is `dof` (pin, collar, slot: q and v align).
-    pub(crate) fn angle_of_dof(&self, q: &[f64], dof: usize) -> f64 {
+    pub(crate) fn angle_of_dof<T: Scalar>(&self, q: &[T], dof: usize) -> T {
         self.built
             .bodies
             .iter()
             .find(|b| dof >= b.vi && dof < b.vi + super::build::dims(&b.joint).1)
-            .map_or(0.0, |b| q[b.qi + (dof - b.vi)])
+            .map_or(T::zero(), |b| q[b.qi + (dof - b.vi)])
     }
 }
