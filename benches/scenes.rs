@@ -7,9 +7,14 @@
 //!
 //! `cargo bench --bench scenes -- --warm-up-time 1 --measurement-time 3`
 //! `cargo bench --bench scenes -- scene_overhead`
+//!
+//! Instruction counts (repeatable on a loaded machine): with `VECTRIX_ICOUNT=case:side:iters`
+//! (case `free_body`, `chain12` or `two_body_orbit`; side `scene` or `direct`) the binary makes
+//! `iters` right-hand-side evaluations and exits; under `valgrind --tool=callgrind` with two
+//! values of `iters`, the difference over the difference of `iters` is the count per evaluation.
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, criterion_group};
 use nalgebra::Vector3;
 use vectrix::dynamics::multibody::{AbaScratch, JointWrench, Model, Pose, PosesScratch};
 use vectrix::scene::{DEFAULT_SCENE, Scene};
@@ -273,5 +278,40 @@ fn four_bar_vs_mujoco(c: &mut Criterion) {
     g.finish();
 }
 
+/// `VECTRIX_ICOUNT=case:side:iters`: `iters` evaluations of one scene_overhead case and exit.
+fn icount_driver() -> bool {
+    let Ok(spec) = std::env::var("VECTRIX_ICOUNT") else { return false };
+    let parts: Vec<&str> = spec.split(':').collect();
+    let [case, side, iters] = parts[..] else { panic!("VECTRIX_ICOUNT must be case:side:iters, got {spec}") };
+    let iters: usize = iters.parse().expect("iters");
+    type Hand = fn(&mut Direct, &[f64], &mut [f64]);
+    let (text, hand): (String, Hand) = match case {
+        "free_body" => (FREE_BODY.to_string(), |d, y, o| d.free_body(y, o)),
+        "chain12" => (chain(12), |d, y, o| d.chain(y, o)),
+        "two_body_orbit" => (TWO_BODIES.to_string(), |d, y, o| d.orbit(y, o, 1.0, [1.0, 2.0])),
+        _ => panic!("case: free_body, chain12 or two_body_orbit"),
+    };
+    let scene = Scene::from_toml(&text, case).expect("scene");
+    let y = scene.initial_state();
+    let mut out = vec![0.0; y.len()];
+    let (mut rhs, mut d) = (scene.rhs(), Direct::new(scene.model()));
+    for _ in 0..iters {
+        match side {
+            "scene" => rhs.eval(0.0, black_box(&y), &mut out).expect("scene rhs"),
+            _ => hand(&mut d, black_box(&y), &mut out),
+        }
+        black_box(&out);
+    }
+    println!("{case} {side} iters={iters} out0={}", out[0]);
+    true
+}
+
 criterion_group!(benches, scenes, scene_overhead, four_bar_vs_mujoco);
-criterion_main!(benches);
+
+fn main() {
+    if icount_driver() {
+        return;
+    }
+    benches();
+    criterion::Criterion::default().configure_from_args().final_summary();
+}
