@@ -9,8 +9,9 @@ use vectrix_frames::Frame;
 use vectrix_statics::{CentralGravity, Dashpot, Spring, dipole_interaction, dipole_potential};
 use vectrix_tensor::Scalar;
 
-use super::build::{Body, Effect, eval_profile};
+use super::build::{Body, Effect};
 use super::kin::{Kin, lift};
+use super::resolve::eval_profile;
 use vectrix_dynamics::multibody::JointWrench;
 
 /// World vector ↔ frame-free vector through the ground frame, in the scalar of an evaluation.

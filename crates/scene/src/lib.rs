@@ -31,6 +31,7 @@ mod outputs;
 mod project;
 mod quantities;
 mod query;
+mod resolve;
 mod resting;
 mod rhs;
 mod run;

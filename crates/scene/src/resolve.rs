@@ -1,0 +1,277 @@
+//! Effects and loop-closing joints of a scene file with their names resolved and their numbers
+//! checked (signs, unit vectors, restitutions, profiles), and the profiles' values p(t).
+//!
+//! Book: ch. 6 (force elements), §7.13 (impacts), §4.18 (rolling), §9.11 (loops).
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::SceneError;
+use super::build::{At, Body, Effect, Src, angle_dof, v3};
+use super::spec::{Attach, EffectSpec, JointSpec, LoopSpec, Profile};
+use vectrix_dynamics::multibody::Model;
+
+fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> {
+    if x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(src.invalid(format!("{path}.{what}"), format!("{what} = {x}; valid: ≥ 0")))
+    }
+}
+
+fn unit(x: [f64; 3], what: &str, path: &str, src: &Src) -> Result<Vector3<f64>, SceneError> {
+    match direction(x) {
+        Some((d, n)) if n > 1e-12 => Ok(d),
+        _ => Err(src.invalid(format!("{path}.{what}"), format!("{what} is zero; valid: a nonzero vector"))),
+    }
+}
+
+/// The unit vector along x and |x|, scaled by the largest component first so that the norm
+/// of a vector with components near 1e300 does not overflow (|x|² = ∞ made x/|x| = 0⃗, a
+/// zero axis that the model, which normalizes by itself, did not share); `None` for 0⃗.
+pub(crate) fn direction(x: [f64; 3]) -> Option<(Vector3<f64>, f64)> {
+    let v = v3(x);
+    let s = v.amax();
+    // 0⃗ (s = 0) and a NaN component (s = NaN: a comparison that fails) have no direction
+    if s.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return None;
+    }
+    let w = v / s;
+    let n = w.norm();
+    Some((w / n, s * n))
+}
+
+type Index<'a> = dyn Fn(&str, &str) -> Result<Option<usize>, SceneError> + 'a;
+
+/// A loop-closing joint with names resolved and its geometry in the bodies' link frames.
+pub(crate) fn loop_joint(
+    l: &LoopSpec,
+    path: &str,
+    index: &Index,
+    model: &Model,
+    q0: &[f64],
+    src: &Src,
+) -> Result<super::loops::Loop, SceneError> {
+    use super::loops::{Loop, LoopKind, normals};
+    let (name, a, b) = match l {
+        LoopSpec::Ball { name, a, b }
+        | LoopSpec::Pin { name, a, b, .. }
+        | LoopSpec::PointOnLine { name, a, b, .. }
+        | LoopSpec::PointOnPlane { name, a, b, .. } => (name, a, b),
+    };
+    let at = |x: &Attach, k: &str| -> Result<At, SceneError> {
+        Ok((index(&x.body, &format!("{path}.{k}.body"))?, v3(x.point)))
+    };
+    let (a, b) = (at(a, "a")?, at(b, "b")?);
+    if a.0.is_none() && b.0.is_none() {
+        return Err(
+            src.invalid(format!("{path}.a.body"), "both ends are the ground; valid: at least one body")
+        );
+    }
+    if a.0 == b.0 {
+        return Err(
+            src.invalid(format!("{path}.b.body"), "both ends are the same body; valid: two different bodies")
+        );
+    }
+    let kind = match l {
+        LoopSpec::Ball { .. } => LoopKind::Ball,
+        LoopSpec::Pin { axis, .. } => {
+            let ax = unit(*axis, "axis", path, src)?;
+            let (e1_a, e2_a) = normals(&ax);
+            // the axis in b's link frame at q₀: 𝓞_{B/G} 𝓞_{A/G}ᵀ axis
+            let poses = model.poses(q0).map_err(|e| src.invalid(path, e.to_string()))?;
+            let o = |x: Option<usize>| x.map_or_else(Matrix3::identity, |i| poses[i].0);
+            let axis_b = o(b.0) * o(a.0).transpose() * ax;
+            LoopKind::Pin { e1_a, e2_a, axis_b }
+        }
+        LoopSpec::PointOnLine { direction, .. } => {
+            let (n1_b, n2_b) = normals(&unit(*direction, "direction", path, src)?);
+            LoopKind::Line { n1_b, n2_b }
+        }
+        LoopSpec::PointOnPlane { normal, .. } => LoopKind::Plane { n_b: unit(*normal, "normal", path, src)? },
+    };
+    Ok(Loop { name: name.clone(), kind, a, b })
+}
+type BodyOf<'a> = dyn Fn(&str, &str) -> Result<usize, SceneError> + 'a;
+
+pub(crate) fn effect(
+    e: &EffectSpec,
+    path: &str,
+    bodies: &[Body],
+    index: &Index,
+    body_of: &BodyOf,
+    src: &Src,
+) -> Result<Effect, SceneError> {
+    let key = |k: &str| format!("{path}.{k}");
+    let at = |a: &Attach, k: &str| -> Result<At, SceneError> {
+        Ok((index(&a.body, &format!("{path}.{k}.body"))?, v3(a.point)))
+    };
+    let dof = |name: &str| -> Result<usize, SceneError> {
+        let b = &bodies[body_of(name, &key("body"))?];
+        angle_dof(&b.joint).map(|k| b.vi + k).ok_or_else(|| {
+            src.invalid(
+                key("body"),
+                format!(
+                    "body `{name}` has no single joint angle; valid: a body on a pin, collar or slot joint"
+                ),
+            )
+        })
+    };
+    let free = |name: &str, k: &str| -> Result<usize, SceneError> {
+        let i = body_of(name, &key(k))?;
+        if !matches!(bodies[i].joint, JointSpec::Free {}) || bodies[i].parent.is_some() {
+            return Err(src.invalid(
+                key(k),
+                format!("body `{name}` must be on a free joint to the ground for impacts and rolling"),
+            ));
+        }
+        Ok(i)
+    };
+    // impacts and resting contact act on the sphere alone: it may carry no other body
+    let alone = |name: &str, k: &str| -> Result<usize, SceneError> {
+        let i = free(name, k)?;
+        if let Some(child) = bodies.iter().find(|c| c.parent == Some(i)) {
+            return Err(src.invalid(
+                key(k),
+                format!(
+                    "body `{name}` carries body `{}`; valid: a contact's sphere on a free joint that carries no \
+                     other body",
+                    child.name
+                ),
+            ));
+        }
+        Ok(i)
+    };
+    let restitution = |x: f64| {
+        if (0.0..=1.0).contains(&x) {
+            Ok(x)
+        } else {
+            Err(src.invalid(key("restitution"), format!("e = {x}; valid: 0 ≤ e ≤ 1")))
+        }
+    };
+    check_profile(e, path, src)?;
+    Ok(match e {
+        EffectSpec::UniformGravity { g } => Effect::Uniform { g: v3(*g) },
+        EffectSpec::CentralGravity { mu, centre } => {
+            Effect::Central { mu: nonneg(*mu, "mu", path, src)?, centre: v3(*centre) }
+        }
+        EffectSpec::MutualGravitation { g } => Effect::Mutual { g: nonneg(*g, "g", path, src)? },
+        EffectSpec::Spring { a, b, k, length } => Effect::Spring {
+            a: at(a, "a")?,
+            b: at(b, "b")?,
+            k: nonneg(*k, "k", path, src)?,
+            d: nonneg(*length, "length", path, src)?,
+        },
+        EffectSpec::Dashpot { a, b, c } => {
+            Effect::Dashpot { a: at(a, "a")?, b: at(b, "b")?, c: nonneg(*c, "c", path, src)? }
+        }
+        EffectSpec::Inerter { a, b, inertance } => Effect::Inerter {
+            a: at(a, "a")?,
+            b: at(b, "b")?,
+            b_in: nonneg(*inertance, "inertance", path, src)?,
+        },
+        EffectSpec::RotationalSpring { body, kappa, angle } => {
+            Effect::RotSpring { dof: dof(body)?, kappa: nonneg(*kappa, "kappa", path, src)?, angle: *angle }
+        }
+        EffectSpec::RotationalDashpot { body, xi } => {
+            Effect::RotDashpot { dof: dof(body)?, xi: nonneg(*xi, "xi", path, src)? }
+        }
+        EffectSpec::RotationalInerter { body, beta } => {
+            Effect::RotInerter { dof: dof(body)?, beta: nonneg(*beta, "beta", path, src)? }
+        }
+        EffectSpec::Dipoles { dipoles } => Effect::Dipoles {
+            list: dipoles
+                .iter()
+                .enumerate()
+                .map(|(k, d)| Ok((body_of(&d.body, &key(&format!("dipoles[{k}].body")))?, v3(d.moment))))
+                .collect::<Result<_, SceneError>>()?,
+        },
+        EffectSpec::Force { at: a, direction, profile } => {
+            Effect::Force { at: at(a, "at")?, dir: v3(*direction), profile: profile.clone() }
+        }
+        EffectSpec::Torque { body, direction, profile } => Effect::Torque {
+            body: body_of(body, &key("body"))?,
+            dir: v3(*direction),
+            profile: profile.clone(),
+        },
+        EffectSpec::ContactSpheres { a, b, radius_a, radius_b, restitution: e, friction } => {
+            Effect::Spheres {
+                a: alone(a, "a")?,
+                b: alone(b, "b")?,
+                ra: nonneg(*radius_a, "radius_a", path, src)?,
+                rb: nonneg(*radius_b, "radius_b", path, src)?,
+                e: restitution(*e)?,
+                mu: nonneg(*friction, "friction", path, src)?,
+            }
+        }
+        EffectSpec::ContactPlane { body, radius, point, normal, restitution: e, friction } => Effect::Plane {
+            body: alone(body, "body")?,
+            r: nonneg(*radius, "radius", path, src)?,
+            point: v3(*point),
+            n: unit(*normal, "normal", path, src)?,
+            e: restitution(*e)?,
+            mu: nonneg(*friction, "friction", path, src)?,
+        },
+        EffectSpec::Rolling { body, shape, radius, point, normal } => {
+            let disk = match shape.as_str() {
+                "disk" => true,
+                "sphere" => false,
+                s => return Err(src.invalid(key("shape"), format!("shape `{s}`; valid: sphere, disk"))),
+            };
+            Effect::Rolling {
+                body: free(body, "body")?,
+                disk,
+                r: nonneg(*radius, "radius", path, src)?,
+                point: v3(*point),
+                n: unit(*normal, "normal", path, src)?,
+            }
+        }
+    })
+}
+
+fn check_profile(e: &EffectSpec, path: &str, src: &Src) -> Result<(), SceneError> {
+    let p = match e {
+        EffectSpec::Force { profile, .. } | EffectSpec::Torque { profile, .. } => profile,
+        _ => return Ok(()),
+    };
+    match p {
+        Profile::Ramp { t0, t1, .. } if t1 <= t0 => {
+            Err(src.invalid(format!("{path}.profile.t1"), format!("t1 = {t1} ≤ t0 = {t0}; valid: t1 > t0")))
+        }
+        Profile::Table { t, value }
+            if t.len() != value.len() || t.is_empty() || t.windows(2).any(|w| w[1] <= w[0]) =>
+        {
+            Err(src.invalid(
+                format!("{path}.profile.t"),
+                "valid: `t` and `value` of equal nonzero length, `t` strictly increasing",
+            ))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// f(t) of a profile.
+pub(crate) fn eval_profile(p: &Profile, t: f64) -> f64 {
+    match p {
+        Profile::Constant { value } => *value,
+        Profile::Step { at, before, after } => {
+            if t < *at {
+                *before
+            } else {
+                *after
+            }
+        }
+        Profile::Ramp { t0, t1, from, to } => from + (to - from) * ((t - t0) / (t1 - t0)).clamp(0.0, 1.0),
+        Profile::Sine { amplitude, omega, phase, offset } => offset + amplitude * (omega * t + phase).sin(),
+        Profile::Table { t: ts, value } => {
+            let k = ts.partition_point(|&x| x <= t);
+            if k == 0 {
+                value[0]
+            } else if k == ts.len() {
+                value[k - 1]
+            } else {
+                let s = (t - ts[k - 1]) / (ts[k] - ts[k - 1]);
+                value[k - 1] + s * (value[k] - value[k - 1])
+            }
+        }
+    }
+}
