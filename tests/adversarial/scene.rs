@@ -295,6 +295,24 @@ cases! {
         assert!(imp.contacts.iter().zip(&r.contacts).all(|(a, b)| (a.closing_speed * 0.3048 - b.closing_speed).abs() <= 2.0 * f64::EPSILON * b.closing_speed));
     }
 
+    // Trim (§12.3): from hostile starting angles the double pendulum trims to an equilibrium
+    // (every |v̇| ≤ TRIM_TOL, finite state) or is refused at `trim`; a scene without `[trim]`
+    // has no report.
+    scene_trim ["Scene::trimmed", "Scene::trim_report"] {
+        let free = ["dq:upper.0".to_string(), "dq:lower.0".to_string()];
+        for x in crate::harness::hostile() {
+            let Ok(s) = Scene::from_toml(&double_pendulum([x, 0.1], ""), "dp.toml") else { continue };
+            assert!(s.trim_report().is_none());
+            err_or(s.trimmed(&free), "trimmed", |(spec, r)| {
+                r.residual <= vectrix::scene::TRIM_TOL
+                    && spec.bodies.iter().all(|b| b.q.as_ref().is_some_and(|q| q.iter().all(|x| x.is_finite())))
+            });
+        }
+        let s = Scene::from_toml(&double_pendulum([0.4, -0.3], ""), "dp.toml").unwrap();
+        refused(s.trimmed(&[]), "trimmed(no unknowns)");
+        refused(s.trimmed(&["dq:nobody.0".to_string()]), "trimmed(unknown)");
+    }
+
     // Linearization (§12.6): the hanging double pendulum of unit masses and rods has
     // ω² = (g/l)(2 ± √2), purely imaginary poles; LinearModel::new refuses non-finite
     // entries and shapes that disagree, and its modes have ωn = |λ|.

@@ -37,6 +37,7 @@ mod rhs;
 mod run;
 mod source;
 pub mod spec;
+mod trim;
 
 pub use build::MAX_MAGNITUDE;
 pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME_REL};
@@ -55,6 +56,7 @@ pub use run::{
 };
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
+pub use trim::{TRIM_TOL, TrimReport};
 
 use build::{Built, Src, build};
 use forces::Ground;
@@ -139,6 +141,8 @@ pub struct Scene {
     /// The file name and text the scene was read from, to locate refusals after loading
     /// ([`Scene::invalid`]).
     source: (String, String),
+    /// What `[trim]` found, when the file declares it.
+    trim: Option<TrimReport>,
 }
 
 impl std::fmt::Debug for Scene {
@@ -189,7 +193,26 @@ impl Scene {
         Self::build(spec, &src)
     }
 
+    /// Validates `spec`; with a `[trim]` table, trims its initial state and validates the
+    /// trimmed scene (whose [`Scene::trim_report`] says what was found).
     fn build(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
+        let scene = Self::build_plain(spec, src)?;
+        let Some(t) = scene.spec.trim.clone() else { return Ok(scene) };
+        let (trimmed, report) = scene.trimmed(&t.free)?;
+        let mut scene = Self::build_plain(trimmed, src)?;
+        scene.trim = Some(report);
+        Ok(scene)
+    }
+
+    /// What `[trim]` found (`None` without a `[trim]` table): the unknowns, their change, the
+    /// residual |v̇|∞ and the Newton iterations. The scene's initial state is the trimmed one.
+    ///
+    /// Book: §12.3.
+    pub fn trim_report(&self) -> Option<&TrimReport> {
+        self.trim.as_ref()
+    }
+
+    fn build_plain(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
         let built = build(&spec, src)?;
         let order = kin::tree_order(&built.bodies);
         let solver = run::solver(&spec, src)?;
@@ -236,6 +259,7 @@ impl Scene {
             loop_scale: 1.0,
             contacts: Vec::new(),
             source: (src.file().to_string(), src.text().to_string()),
+            trim: None,
         };
         scene.contacts = scene.contact_effects();
         scene.loop_scale = scene.constraint_scale();

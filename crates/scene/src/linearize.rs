@@ -199,7 +199,7 @@ impl LinearModel {
 
 impl Scene {
     /// Names of the linearization's states: `dq:BODY.k` then `v:BODY.k`, v layout.
-    fn state_names(&self) -> Vec<String> {
+    pub(crate) fn state_names(&self) -> Vec<String> {
         let mut state = Vec::new();
         for prefix in ["dq", "v"] {
             for body in &self.built.bodies {
@@ -233,20 +233,20 @@ fn dominant(a: &DMatrix<f64>, l: &Complex<f64>) -> Option<usize> {
 }
 
 /// Exact first derivatives at a state of the linearization (x = (δ, v) about q₀).
-struct Jacobians {
+pub(crate) struct Jacobians {
     /// v̇ at the state.
-    vdot: Vec<f64>,
+    pub vdot: Vec<f64>,
     /// ∂v̇/∂x (nv × 2nv).
-    vdot_x: DMatrix<f64>,
+    pub vdot_x: DMatrix<f64>,
     /// ∂v̇/∂u (nv × inputs).
-    vdot_u: DMatrix<f64>,
+    pub vdot_u: DMatrix<f64>,
     /// ∂(output columns)/∂x.
     row_x: DMatrix<f64>,
 }
 
 impl Scene {
     /// The inputs of a linearization: the `force` and `torque` effects, by index in `effects`.
-    fn inputs(&self) -> Vec<usize> {
+    pub(crate) fn inputs(&self) -> Vec<usize> {
         let effects = self.spec().effects.iter().enumerate();
         effects
             .filter(|(_, e)| matches!(e, EffectSpec::Force { .. } | EffectSpec::Torque { .. }))
@@ -256,7 +256,7 @@ impl Scene {
 
     /// Scenes whose right-hand side is the tree's alone (no loops, rolling or inerters): the
     /// generic right-hand side covers them.
-    fn tree_only(&self) -> bool {
+    pub(crate) fn tree_only(&self) -> bool {
         !self.needs.constrained()
     }
 
@@ -264,13 +264,14 @@ impl Scene {
     fn vdot_and_row<T: Scalar>(
         &self,
         model: &Model<T>,
+        q0: &[f64],
         x: &[T],
         u: &[T],
         w: &mut RhsScratch<T>,
     ) -> Result<(Vec<T>, Vec<T>), String> {
         let b = &self.built;
         let (nq, nv) = (model.nq(), model.nv());
-        let q0: Vec<T> = self.initial_state()[..nq].iter().map(|x| T::lit(*x)).collect();
+        let q0: Vec<T> = q0.iter().map(|x| T::lit(*x)).collect();
         let mut q = model.integrate(&q0, &x[..nv], T::one()).map_err(|e| e.to_string())?;
         normalize(&b.bodies, &mut q);
         let y = [q.as_slice(), &x[nv..]].concat();
@@ -284,9 +285,16 @@ impl Scene {
         Ok((out[nq..].to_vec(), row))
     }
 
-    /// Exact ∂v̇/∂x, ∂v̇/∂u and ∂(outputs)/∂x at x, by one dual-number evaluation per state and
-    /// input.
+    /// Exact ∂v̇/∂x, ∂v̇/∂u and ∂(outputs)/∂x at x about the initial configuration, with no
+    /// inputs added.
     fn jacobians(&self, x: &[f64]) -> Result<Jacobians, String> {
+        let q0 = self.initial_state()[..self.built.model.nq()].to_vec();
+        self.jacobians_at(&q0, &vec![0.0; self.inputs().len()], x)
+    }
+
+    /// Exact ∂v̇/∂x, ∂v̇/∂u and ∂(outputs)/∂x at x = (δ, v) about the configuration q0 with the
+    /// inputs u0, by one dual-number evaluation per state and input.
+    pub(crate) fn jacobians_at(&self, q0: &[f64], u0: &[f64], x: &[f64]) -> Result<Jacobians, String> {
         let model = self.built.model.cast::<Dual64>();
         let mut w = RhsScratch::for_model(self, &model);
         let (n, m) = (x.len(), self.inputs().len());
@@ -297,8 +305,8 @@ impl Scene {
             // seed the j-th variable: the ε parts are the j-th column
             let seed = |k: usize, x: f64| Dual64::new(x, if k == j { 1.0 } else { 0.0 });
             let xd: Vec<Dual64> = x.iter().enumerate().map(|(k, x)| seed(k, *x)).collect();
-            let ud: Vec<Dual64> = (0..m).map(|k| seed(n + k, 0.0)).collect();
-            let (a, row) = self.vdot_and_row(&model, &xd, &ud, &mut w)?;
+            let ud: Vec<Dual64> = (0..m).map(|k| seed(n + k, u0[k])).collect();
+            let (a, row) = self.vdot_and_row(&model, q0, &xd, &ud, &mut w)?;
             if let Some(bad) = a.iter().chain(&row).find(|d| !(d.re.is_finite() && d.eps.is_finite())) {
                 return Err(format!(
                     "a derivative is not finite ({bad}); valid: a state where the dynamics are smooth"

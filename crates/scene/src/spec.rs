@@ -50,6 +50,10 @@ pub struct SceneSpec {
     /// How `vectrix linearize` treats the initial state (an equilibrium unless `steady`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub linearize: Option<LinearizeSpec>,
+    /// Make the initial state steady (v̇ = 0) by solving for the named coordinates, speeds and
+    /// input magnitudes before anything else (see `Scene::trim`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trim: Option<TrimSpec>,
     /// Project the initial state onto the loop constraints (assemble the mechanism) instead of
     /// refusing a start that violates them.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
@@ -328,6 +332,18 @@ pub struct LinearizeSpec {
     /// v̇ = 0 is checked, and A is taken at the initial state.
     #[serde(default)]
     pub steady: bool,
+}
+
+/// The `[trim]` table: which unknowns make the initial state steady.
+///
+/// Book: §12.3 (trim), §12.6.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TrimSpec {
+    /// The unknowns, by the names of a linearization's states and inputs: `dq:BODY.k` (the k-th
+    /// displacement of a body's joint, in its tangent space), `v:BODY.k` (a joint speed) and
+    /// `effects[k]` (the magnitude added to a `force` or `torque` effect).
+    pub free: Vec<String>,
 }
 
 /// One effect. Only declared effects are assembled.

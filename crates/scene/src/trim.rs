@@ -1,0 +1,197 @@
+//! Trim: the initial state that makes a scene steady. The unknowns z are chosen by name among
+//! a linearization's states and inputs (`dq:BODY.k`, `v:BODY.k`, `effects[k]`); the residual is
+//! r(z) = v̇, every joint acceleration, which vanishes for an equilibrium (v = 0) and for a steady
+//! motion (constant speeds: a top in steady precession in a gimbal, a body spinning about a
+//! principal axis). Gauss–Newton with the exact Jacobian ∂v̇/∂z (dual numbers, as
+//! [`Scene::jacobian`]) and a halving line search; after each step the configuration is
+//! rebased (q₀ ← q₀ ⊕ δ), so ball and free joints stay on their unit quaternions.
+//!
+//! Book: §12.3 (trim of steady flight), §12.6 (about a reference motion), §8.5 (equilibria).
+
+use nalgebra::{DMatrix, DVector};
+use serde::Serialize;
+
+use super::spec::{EffectSpec, SceneSpec};
+use super::{Scene, SceneError};
+
+/// Newton iterations at most.
+const MAX_ITERATIONS: usize = 60;
+/// A trimmed state is steady when every |v̇| is at most this (SI), as
+/// [`super::EQUILIBRIUM_TOL`] for a linearization.
+pub const TRIM_TOL: f64 = 1e-9;
+
+/// What a trim found.
+///
+/// Book: §12.3.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrimReport {
+    /// The unknowns, as named in `[trim] free`.
+    pub free: Vec<String>,
+    /// Their change from the file's values (for `dq:` the displacement in the joint's tangent
+    /// space; for `v:` and `effects[k]` the added speed or magnitude).
+    pub change: Vec<f64>,
+    /// |v̇|∞ at the trimmed state.
+    pub residual: f64,
+    /// Newton iterations taken.
+    pub iterations: usize,
+}
+
+/// One unknown: an index into x = (δ, v) or into the inputs u.
+#[derive(Debug, Clone, Copy)]
+enum Unknown {
+    State(usize),
+    Input(usize),
+}
+
+impl Scene {
+    /// Resolves `[trim] free` (errors located at `trim.free[i]`).
+    fn trim_unknowns(&self, free: &[String]) -> Result<Vec<Unknown>, SceneError> {
+        let states = self.state_names();
+        let inputs = self.inputs();
+        let mut out = Vec::new();
+        for (i, name) in free.iter().enumerate() {
+            let path = format!("trim.free[{i}]");
+            let u = if let Some(j) = states.iter().position(|s| s == name) {
+                Unknown::State(j)
+            } else if let Some(j) = inputs.iter().position(|k| format!("effects[{k}]") == *name) {
+                Unknown::Input(j)
+            } else {
+                let inputs: Vec<String> = inputs.iter().map(|k| format!("effects[{k}]")).collect();
+                return Err(self.invalid(
+                    &path,
+                    format!(
+                        "unknown `{name}`; valid: a state ({}) or a force or torque input ({})",
+                        states.join(", "),
+                        if inputs.is_empty() { "none declared".into() } else { inputs.join(", ") }
+                    ),
+                ));
+            };
+            if free[..i].contains(name) {
+                return Err(self.invalid(&path, format!("`{name}` is named twice; valid: each unknown once")));
+            }
+            out.push(u);
+        }
+        if out.is_empty() {
+            return Err(self.invalid("trim.free", "no unknowns; valid: at least one state or input name"));
+        }
+        Ok(out)
+    }
+
+    /// The spec of this scene with its initial state made steady by the unknowns `free` (see
+    /// the module doc), and what the trim found.
+    ///
+    /// Book: §12.3, §12.6.
+    ///
+    /// # Errors
+    /// [`SceneError::Invalid`] located at `trim.free` for unknown names, scenes whose
+    /// right-hand side is not generic yet (loops, rolling, inerters), and a state that could
+    /// not be made steady (naming the accelerations that stay, and their size).
+    pub fn trimmed(&self, free: &[String]) -> Result<(SceneSpec, TrimReport), SceneError> {
+        let unknowns = self.trim_unknowns(free)?;
+        if !self.tree_only() {
+            return Err(self.invalid(
+                "trim",
+                "scenes with loops, rolling or inerters are not trimmed yet (their right-hand side is f64 only); \
+                 valid: a tree with force elements",
+            ));
+        }
+        let b = &self.built;
+        let (nq, nv) = (b.model.nq(), b.model.nv());
+        let y0 = self.initial_state();
+        let mut q = y0[..nq].to_vec();
+        let mut x: Vec<f64> = [vec![0.0; nv], y0[nq..].to_vec()].concat();
+        let mut u = vec![0.0; self.inputs().len()];
+        let mut change = vec![0.0; unknowns.len()];
+        let fail = |m: String| self.invalid("trim", m);
+        let norm = |r: &[f64]| {
+            r.iter().fold(0.0_f64, |m, x| if x.is_nan() || m.is_nan() { f64::NAN } else { m.max(x.abs()) })
+        };
+        let mut jac = self.jacobians_at(&q, &u, &x).map_err(fail)?;
+        let mut iterations = 0;
+        // (NaN is not steady: `steady` is false for it)
+        let steady = |r: f64| r <= TRIM_TOL;
+        while !steady(norm(&jac.vdot)) && iterations < MAX_ITERATIONS {
+            iterations += 1;
+            // J Δ = −r, least squares over the chosen columns
+            let j = DMatrix::from_fn(nv, unknowns.len(), |i, k| match unknowns[k] {
+                Unknown::State(s) => jac.vdot_x[(i, s)],
+                Unknown::Input(s) => jac.vdot_u[(i, s)],
+            });
+            let r = -DVector::from_column_slice(&jac.vdot);
+            let Ok(step) = j.svd(true, true).solve(&r, 1e-14) else { break };
+            // halve the step until the residual falls (or give up on this direction)
+            let r0 = norm(&jac.vdot);
+            let mut scale = 1.0;
+            let next = loop {
+                let (mut xt, mut ut) = (x.clone(), u.clone());
+                for (k, z) in unknowns.iter().enumerate() {
+                    match z {
+                        Unknown::State(s) => xt[*s] += scale * step[k],
+                        Unknown::Input(s) => ut[*s] += scale * step[k],
+                    }
+                }
+                match self.jacobians_at(&q, &ut, &xt) {
+                    Ok(jt) if norm(&jt.vdot) < r0 => break Some((xt, ut, jt)),
+                    _ if scale < 1e-9 => break None,
+                    _ => scale *= 0.5,
+                }
+            };
+            let Some((xt, ut, jt)) = next else { break };
+            for (k, c) in change.iter_mut().enumerate() {
+                *c += scale * step[k];
+            }
+            // rebase: q ← q ⊕ δ, δ = 0 (quaternions stay unit)
+            let mut qn = b.model.integrate(&q, &xt[..nv], 1.0).map_err(|e| fail(e.to_string()))?;
+            super::kin::normalize(&b.bodies, &mut qn);
+            (q, u) = (qn, ut);
+            x = [vec![0.0; nv], xt[nv..].to_vec()].concat();
+            jac = if xt[..nv].iter().all(|d| *d == 0.0) {
+                jt
+            } else {
+                self.jacobians_at(&q, &u, &x).map_err(fail)?
+            };
+        }
+        let residual = norm(&jac.vdot);
+        if !steady(residual) {
+            let names = self.state_names();
+            let stay: Vec<String> = jac
+                .vdot
+                .iter()
+                .enumerate()
+                .filter(|(_, a)| !steady(a.abs()))
+                .map(|(i, a)| format!("{} (v̇ = {a:e})", names[nv + i]))
+                .collect();
+            return Err(self.invalid(
+                "trim.free",
+                format!(
+                    "the state cannot be made steady by {}: after {iterations} Newton steps {} remain; valid: \
+                     unknowns that can cancel every acceleration (as many as the accelerations they must cancel)",
+                    free.join(", "),
+                    stay.join(", ")
+                ),
+            ));
+        }
+        Ok((
+            self.spec_with(&q, &x[nv..], &u),
+            TrimReport { free: free.to_vec(), change, residual, iterations },
+        ))
+    }
+
+    /// This scene's spec with the initial coordinates q, speeds v and input magnitudes added.
+    fn spec_with(&self, q: &[f64], v: &[f64], u: &[f64]) -> SceneSpec {
+        let mut spec = self.spec().clone();
+        for (body, b) in spec.bodies.iter_mut().zip(&self.built.bodies) {
+            let (nq, nv) = super::build::dims(&b.joint);
+            body.q = (nq > 0).then(|| q[b.qi..b.qi + nq].to_vec());
+            body.v = (nv > 0).then(|| v[b.vi..b.vi + nv].to_vec());
+        }
+        for (k, du) in self.inputs().into_iter().zip(u) {
+            if let EffectSpec::Force { profile, .. } | EffectSpec::Torque { profile, .. } =
+                &mut spec.effects[k]
+            {
+                *profile = profile.shifted(*du);
+            }
+        }
+        spec
+    }
+}
