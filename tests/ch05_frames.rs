@@ -146,11 +146,22 @@ fn eq_5_4_10_spherical_velocity_and_acceleration_corrected() {
     }
 }
 
-// P5.7.1 (bowling, Coriolis): the horizontal Coriolis acceleration 2Ω⃗×v⃗ has magnitude
-// 2Ωv sin λ for every heading (to the right in the northern hemisphere); with λ = 45°,
-// l = 18.288 m, v = 8 m/s: 8.25e-4 m/s² and a lateral offset ≈ Ω sin λ l²/v ≈ 2.16 mm (notes).
+// P5.7.1 (bowling, Coriolis): a ball rolled with speed v down a lane l long at latitude λ north,
+// the lane in any horizontal direction: the Coriolis acceleration and the ball's lateral
+// position at the end of the lane. Inputs as in the notes (λ = 45°, l = 60 ft = 18.288 m,
+// v = 8 m/s, Ω = 7.2921e-5 rad/s); notes [C]: horizontal Coriolis acceleration 2Ωv sin λ =
+// 8.25e-4 m/s² for every heading, deflecting to the right, and a lateral offset ≈ 2.16 mm.
+//
+// Computed through vectrix: the Coriolis term 2ω⃗×v⃗ of (4.5.1) by `double_transport`, its
+// horizontal part by the projector off ê_u, and the ball's path by integrating the horizontal
+// relative motion a⃗ = −P_h(2ω⃗×v⃗) with DOP853 to the end of the lane (a terminal event). The
+// vertical Coriolis part is carried by the lane's normal force and the centrifugal term is part
+// of local gravity. That motion is a circle of radius ρ = v/(2Ω sin λ) at speed v, so at the
+// end of the lane the offset is ρ(1 − √(1 − (l/ρ)²)) ≈ Ω sin λ l²/v exactly.
 #[test]
 fn problem_5_7_1_bowling_coriolis() {
+    use vectrix::nalgebra::Vector4;
+    use vectrix::ode::{Adaptive, Direction, Event};
     let (omega, lat, l, v) = (7.2921e-5, PI / 4.0, 18.288, 8.0);
     // local spherical frame at (θ, φ): ê_u up, ê_e east, ê_n north; Earth spins about k̂_A
     let s = Spherical { q: [6.371e6, 0.3, -lat], q_dot: [0.0; 3], q_ddot: [0.0; 3] };
@@ -158,19 +169,49 @@ fn problem_5_7_1_bowling_coriolis() {
     let f = s.frame(&a).unwrap();
     let w = a.k() * omega;
     assert!((w.dot(&f.i()) - omega * lat.sin()).abs() < 1e-18, "up component Ω sin λ");
+    let horizontal = Dyadic::projector_perp(&f.i()).unwrap();
+    // the closed form of the horizontal Coriolis motion: a circle of radius ρ
+    let rho = v / (2.0 * omega * lat.sin());
+    let offset = rho * (1.0 - (1.0 - (l / rho).powi(2)).sqrt());
+    let mut offsets = Vec::new();
     for heading in [0.0, 0.8, 2.0, -2.5] {
-        let v_b = f.j() * (v * heading.sin()) + f.k() * (v * heading.cos());
-        // Coriolis term of (4.5.1): 2ω⃗ × v⃗
-        let cor = double_transport(&Vector::zero(), &v_b, &Vector::zero(), &w, &Vector::zero());
-        let horiz = cor - f.i() * cor.dot(&f.i());
-        assert!((horiz.norm() - 2.0 * omega * v * lat.sin()).abs() < 1e-15);
-        assert_printed(horiz.norm(), "8.25e-4");
-        // a free ball (a⃗ ≈ 0⃗ w.r.t. the stars) accelerates by −2ω⃗×v⃗ relative to the Earth:
-        // to the right of the heading, i.e. v⃗ × (−2ω⃗×v⃗) points down (−ê_u)
-        assert!(v_b.cross(&(-horiz)).dot(&f.i()) < 0.0);
+        // along the lane ĥ and to its right r̂ = ĥ × ê_u (east for a lane heading north)
+        let h = f.k() * heading.cos() + f.j() * heading.sin();
+        let right = h.cross(&f.i());
+        // horizontal Coriolis acceleration of (4.5.1), 2ω⃗×v⃗ with v⃗ = vĥ
+        let coriolis = |vel: &Vector| {
+            horizontal * double_transport(&Vector::zero(), vel, &Vector::zero(), &w, &Vector::zero())
+        };
+        let cor = coriolis(&(h * v));
+        assert!((cor.norm() - 2.0 * omega * v * lat.sin()).abs() < 8.0 * EPS * cor.norm());
+        assert_printed(cor.norm(), "8.25e-4");
+        // y = (s, d, ṡ, ḋ) along and to the right of the lane; relative acceleration −P_h 2ω⃗×v⃗
+        let rhs = |_: f64, y: &Vector4<f64>| {
+            let acc = -coriolis(&(h * y[2] + right * y[3]));
+            Vector4::new(y[2], y[3], acc.dot(&h), acc.dot(&right))
+        };
+        let mut end =
+            [Event::new(|_, y: &Vector4<f64>| y[0] - l).direction(Direction::Rising).terminal(true)];
+        let sol = Adaptive::dop853()
+            .rtol(1e-13)
+            .atol(1e-13)
+            .solve_with_events(rhs, 0.0, &Vector4::new(0.0, 0.0, v, 0.0), 10.0, &mut end)
+            .unwrap();
+        assert!(sol.terminated, "the ball reaches the end of the lane");
+        let hit = &sol.events[0];
+        assert!((hit.y[0] - l).abs() <= 1e-12 * l);
+        // to the right in the northern hemisphere, for every heading
+        assert!(hit.y[1] > 0.0);
+        // DOP853 at rtol = atol = 1e-13 over ~2.3 s of a nearly straight path: the lateral
+        // coordinate (≈ 2e-3 m, beside s ≈ 18 m) is good to ~1e-12 m; 1e-10 m leaves margin
+        assert!((hit.y[1] - offset).abs() <= 1e-10, "heading {heading}: {} vs {offset}", hit.y[1]);
+        // the speed is unchanged (the Coriolis force does no work): the time is ≈ l/v
+        assert!((hit.t - (l / rho).asin() * rho / v).abs() <= 1e-10);
+        offsets.push(hit.y[1]);
     }
-    let offset = omega * lat.sin() * l * l / v;
-    assert_printed(offset, "2.16e-3");
+    assert_printed(offsets[0], "2.16e-3");
+    // the first-order offset the notes quote, Ω sin λ l²/v, differs by O((l/ρ)²) ≈ 1e-7 relative
+    assert!((offset - omega * lat.sin() * l * l / v).abs() <= 1e-6 * offset);
 }
 
 /// r′, r″, r‴ of a curve given over `Dual3_64`.

@@ -445,6 +445,19 @@ fn textbook_index_is_current_and_names_only_existing_tests() {
     );
 }
 
+/// A test name says which book item it executes, so within one test binary no two tests share a
+/// name (two `problem_2_26_9_quarter_turn` in different modules were credited twice, issue 38
+/// item 6).
+#[test]
+fn test_names_are_unique_within_each_binary() {
+    let mut twice = Vec::new();
+    for (file, names) in collect() {
+        let mut seen = BTreeSet::new();
+        twice.extend(names.iter().filter(|n| !seen.insert(n.as_str())).map(|n| format!("{file}::{n}")));
+    }
+    assert!(twice.is_empty(), "test names defined twice in one binary: {}", twice.join(", "));
+}
+
 /// The lists of problems and examples are the book's: 208 problems and 42 examples, numbered
 /// without gaps inside each problem section.
 #[test]

@@ -465,18 +465,6 @@ fn problem_2_26_3_dyads_of_two_vectors() {
     assert_eq!(arr((mm * x).resolve(&a)), [75.0, -100.0, 0.0]);
 }
 
-/// Prob 2.26.9 (answers computed): a quarter turn about k̂_A gives 𝓡_{B/A} = [[0,−1,0],[1,0,0],
-/// [0,0,1]] in A and in B, and 𝓞_{B/A} = [[0,1,0],[−1,0,0],[0,0,1]].
-#[test]
-fn problem_2_26_9_quarter_turn() {
-    let a = Frame::new();
-    let b = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.k(), FRAC_PI_2).unwrap());
-    let r = m3([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
-    assert_mat_abs(&b.rotation_rel(&a), &r, 4.0 * EPS);
-    assert_mat_abs(&b.rotation_dyadic_rel(&a).resolve(&b), &r, 4.0 * EPS);
-    assert_mat_abs(&b.orientation_rel(&a), &r.transpose(), 4.0 * EPS);
-}
-
 /// (3.6.2) for p + q ≤ 2: a (1,0) tensor resolves to x|_A, a (1,1) tensor to M|_A; the change of
 /// frame of T|_A is slotwise 𝓞_{B/A} (the tensor form of (2.10.31), (2.10.38)).
 #[test]

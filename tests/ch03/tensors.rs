@@ -5,7 +5,7 @@ use nalgebra::{DMatrix, Matrix3};
 use vectrix::prelude::*;
 
 use crate::common::*;
-use crate::support::{assert_abs, assert_rel};
+use crate::support::{NanAmax, assert_abs, assert_rel};
 
 fn frame() -> Frame {
     Frame::new()
@@ -248,34 +248,67 @@ fn fact_3_6_1_resolution_of_a_product_is_the_kronecker_product() {
 
 #[test]
 fn eq_3_5_kronecker_facts() {
-    // (3.5.1) vec stacks columns: vec([[1,2],[3,4]]) = (1,3,2,4); (3.5.4) A⊗B block matrix with
-    // the printed example; (3.5.10) (A⊗B)(C⊗D) = AC⊗BD; (3.5.13) vec(xyᵀ) = y⊗x;
-    // (3.5.14) vec(ABC) = (Cᵀ⊗A) vec B. These are the facts resolution rests on (§3.6).
+    // §3.5 through vectrix's tensors: by Fact 3.6.1 the resolution of a tensor product is the
+    // Kronecker product of the resolutions, (T₁⊗T₂)|_A = T₁|_A ⊗ T₂|_A, so each Kronecker fact
+    // becomes a statement about vectrix objects. The left sides are `otimes` (and `coform`,
+    // `try_add`) resolved in F_A; the right sides are vectrix dyadic algebra (composition,
+    // coform, sum, inverse) resolved in F_A. The dyadics are built in a turned frame F_B, so no
+    // component is exact by construction.
+    // (3.5.1) vec stacks columns: the definition, on the book's 2 × 2 example.
     let vec = |m: &DMatrix<f64>| DMatrix::from_column_slice(m.len(), 1, m.as_slice());
-    let a2 = DMatrix::from_row_slice(2, 2, &[1.0, 2.0, 3.0, 4.0]);
-    assert_eq!(vec(&a2).as_slice(), &[1.0, 3.0, 2.0, 4.0]);
-    let b2 = DMatrix::from_row_slice(2, 2, &[0.0, 5.0, 6.0, 7.0]);
-    let k = a2.kronecker(&b2);
-    for (r, c) in [(0usize, 0usize), (1, 3), (2, 1), (3, 2)] {
-        assert_eq!(k[(r, c)], a2[(r / 2, c / 2)] * b2[(r % 2, c % 2)]);
-    }
-    let m = |s: f64| DMatrix::from_fn(3, 3, |r, c| ((r * 3 + c) as f64 * s).sin());
-    let (a, b, c, d) = (m(0.3), m(0.7), m(1.1), m(1.9));
-    crate::support::assert_rel_slice(
-        (a.kronecker(&b) * c.kronecker(&d)).as_slice(),
-        (&a * &c).kronecker(&(&b * &d)).as_slice(),
-        TOL,
+    assert_eq!(vec(&DMatrix::from_row_slice(2, 2, &[1.0, 2.0, 3.0, 4.0])).as_slice(), &[1.0, 3.0, 2.0, 4.0]);
+    let a = frame();
+    let b = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.vector([0.4, -1.0, 2.0]), 1.3).unwrap());
+    // nonsingular dyadics: sines off a dominant diagonal of 2
+    let dy = |s: f64| {
+        b.dyadic(&Matrix3::from_fn(|r, c| ((r * 3 + c) as f64 * s).sin() + if r == c { 2.0 } else { 0.0 }))
+    };
+    let (ma, mb, mc, md) = (dy(0.3), dy(0.7), dy(1.1), dy(1.9));
+    let t = Tensor::from_dyadic;
+    let kron = |x: &Dyadic, y: &Dyadic| t(x).otimes(&t(y)).unwrap();
+    let res = |m: &Dyadic| {
+        let r = m.resolve(&a);
+        DMatrix::from_fn(3, 3, |i, j| r[(i, j)])
+    };
+    let close = |got: &DMatrix<f64>, want: &DMatrix<f64>| {
+        assert_eq!(got.shape(), want.shape());
+        crate::support::assert_rel_slice(got.as_slice(), want.as_slice(), TOL);
+    };
+    // (3.5.4): A⊗B is the block matrix [A_(i,j)B]
+    let ab = kron(&ma, &mb).resolve(&a);
+    assert_eq!(ab.shape(), (9, 9));
+    close(&ab, &DMatrix::from_fn(9, 9, |r, c| res(&ma)[(r / 3, c / 3)] * res(&mb)[(r % 3, c % 3)]));
+    // (3.5.3): tr AB = (vec Aᵀ)ᵀ vec B, with AB the composition and Aᵀ the coform
+    let tr = (vec(&res(&ma.coform())).transpose() * vec(&res(&mb)))[(0, 0)];
+    crate::support::assert_rel(tr, (ma * mb).trace(), TOL);
+    // (3.5.5)–(3.5.6): α-scaling moves through ⊗; (A⊗B)ᵀ = Aᵀ⊗Bᵀ
+    close(&kron(&(ma * 2.5), &mb).resolve(&a), &(kron(&ma, &mb).resolve(&a) * 2.5));
+    close(&kron(&ma, &mb).coform().resolve(&a), &ab.transpose());
+    close(&kron(&ma.coform(), &mb.coform()).resolve(&a), &ab.transpose());
+    // (3.5.7)–(3.5.8): distributivity over the sum of dyadics
+    close(&kron(&(ma + mb), &mc).resolve(&a), &kron(&ma, &mc).try_add(&kron(&mb, &mc)).unwrap().resolve(&a));
+    close(&kron(&mc, &(ma + mb)).resolve(&a), &kron(&mc, &ma).try_add(&kron(&mc, &mb)).unwrap().resolve(&a));
+    // (3.5.9): associativity, 27 × 27
+    close(
+        &t(&ma).otimes(&kron(&mb, &mc)).unwrap().resolve(&a),
+        &kron(&ma, &mb).otimes(&t(&mc)).unwrap().resolve(&a),
     );
-    let (x, y) = (
-        DMatrix::from_column_slice(3, 1, &[1.0, 2.0, 3.0]),
-        DMatrix::from_column_slice(3, 1, &[-1.0, 0.5, 2.0]),
-    );
-    assert_eq!(vec(&(&x * y.transpose())).as_slice(), y.kronecker(&x).as_slice());
+    // (3.5.10): (A⊗B)(C⊗D) = AC⊗BD
+    close(&(ab.clone() * kron(&mc, &md).resolve(&a)), &kron(&(ma * mc), &(mb * md)).resolve(&a));
+    // (3.5.11): (A⊗B)⁻¹ = A⁻¹⊗B⁻¹, with vectrix's inverse dyadics; the residual of the product
+    // with the identity scales with the entries of both factors
+    let inv = kron(&ma.inverse(1e-12).unwrap(), &mb.inverse(1e-12).unwrap()).resolve(&a);
+    let scale = 9.0 * ab.nan_amax() * inv.nan_amax();
     crate::support::assert_abs_slice(
-        vec(&(&a * &b * &c)).as_slice(),
-        (c.transpose().kronecker(&a) * vec(&b)).as_slice(),
-        TOL,
+        (&ab * &inv).as_slice(),
+        DMatrix::<f64>::identity(9, 9).as_slice(),
+        TOL * scale,
     );
+    // (3.5.13): vec xyᵀ = y⊗x, with x⃗y⃗′ the outer product and y⃗⊗x⃗ a (2, 0) tensor (9 × 1)
+    let (x, y) = (b.vector([1.0, 2.0, 3.0]), b.vector([-1.0, 0.5, 2.0]));
+    close(&vec(&res(&x.outer(&y))), &Tensor::from_factors(&[y, x], &[]).unwrap().resolve(&a));
+    // (3.5.14): vec(ABC) = (Cᵀ⊗A) vec B
+    close(&vec(&res(&(ma * mb * mc))), &(kron(&mc.coform(), &ma).resolve(&a) * vec(&res(&mb))));
 }
 
 #[test]

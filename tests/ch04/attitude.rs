@@ -84,32 +84,58 @@ fn eq_4_10_7_all_twelve_sequences_body_and_spatial() {
     }
 }
 
-// P4.20.7 (gimbal lock): at Θ = π/2 (3-2-1) S is singular, the inverse is Err(GimbalLock) with
-// the condition number; its range is span{e₁, (0, cΦ, −sΦ)}, so ω = ωk̂_D is attainable iff
-// Φ = ±π/2. Symmetric sequences lock at β = 0, i.e. at the identity attitude.
+// P4.20.7 (gimbal lock), 3-2-1 angles Ψ, Θ, Φ from F_A to F_D.
+// i) Not every ω⃗_{D/A} is attained by (Ψ̇, Θ̇, Φ̇) iff Θ = ±π/2: the body rate matrix S of
+//    (4.10.7–9) has |det S| = |cos Θ|, so vectrix's S loses rank exactly there. Checked on a grid
+//    of Θ: |det S| = |cos Θ|, `euler_rates_from_omega_body` inverts S (round trip through
+//    `omega_body_from_euler_rates`) away from the lock and returns `GimbalLock` at it.
+// ii) At Θ = ±π/2, ω⃗_{D/A} = ωk̂_D is attainable iff Φ = ±π/2. Decided from vectrix's S alone:
+//    the least-squares residual of S(Ψ̇, Θ̇, Φ̇)ᵀ = ωe₃, the distance from ωe₃ to the range of S,
+//    is |ωu₃·e₃| for u₃ the left singular vector of S's zero singular value. The range is
+//    span{e₁, (0, cos Φ, −sin Φ)} (notes ch4-5 §2), so that distance is |ω cos Φ|: zero iff
+//    Φ = ±π/2, where the rates (0, −ω/sin Φ, 0) attain ωk̂_D.
 #[test]
 fn problem_4_20_7_gimbal_lock() {
-    for phi in [0.3, PI / 2.0] {
-        let ea = EulerAngles::new(EulerSequence::S321, [0.2, PI / 2.0, phi]);
-        match euler_rates_from_omega_body(&ea, &Vector3::z(), 1e-12) {
-            Err(KinematicsError::GimbalLock { condition, det, .. }) => {
-                assert!(det.abs() < 1e-15 && condition > 1e15);
-            }
-            other => panic!("expected gimbal lock, got {other:?}"),
-        }
+    let w = 1.7; // ω ≠ 0
+    let omega = Vector3::new(0.3, -1.1, 0.8);
+    // i) |det S| = |cos Θ|; S is inverted away from Θ = ±π/2 and refused at it
+    for theta in [-PI / 2.0, -1.2, -1e-3, 0.0, 0.7, PI / 2.0 - 1e-6, PI / 2.0] {
+        let ea = EulerAngles::new(EulerSequence::S321, [0.2, theta, -0.9]);
         let s = euler_rate_matrix_body(&ea);
-        // least-squares residual of S x = k̂ through the range basis {e₁, (0, cΦ, −sΦ)}
-        let u = Vector3::new(0.0, phi.cos(), -phi.sin());
-        let resid = Vector3::z() - u * u.dot(&Vector3::z());
-        let in_range = resid.norm() < 1e-12;
-        assert_eq!(in_range, (phi - PI / 2.0).abs() < 1e-12, "Φ = {phi}");
-        assert!((s.column(0).into_owned() + Vector3::x()).norm() < TOL);
+        assert!((s.determinant().abs() - theta.cos().abs()).abs() <= 4.0 * EPS, "Θ = {theta}");
+        match euler_rates_from_omega_body(&ea, &omega, 1e-12) {
+            Ok(rates) => {
+                assert!(theta.cos().abs() > 1e-12, "Θ = {theta} should lock");
+                // S⁻¹ amplifies by 1/|cos Θ| (10⁶ at the Θ nearest the lock)
+                let back = omega_body_from_euler_rates(&ea, rates);
+                assert!((back - omega).nan_amax() <= 16.0 * EPS / theta.cos().abs(), "Θ = {theta}");
+            }
+            Err(KinematicsError::GimbalLock { det, condition, .. }) => {
+                assert!(theta.cos().abs() <= 1e-12, "Θ = {theta} is not a lock");
+                assert!(det.abs() <= 1e-15 && condition > 1e15);
+            }
+            Err(e) => panic!("Θ = {theta}: {e}"),
+        }
     }
-    let locked = EulerAngles::new(EulerSequence::S313, [0.4, 0.0, -0.2]);
-    assert!(matches!(
-        euler_rates_from_omega_body(&locked, &Vector3::x(), 1e-12),
-        Err(KinematicsError::GimbalLock { .. })
-    ));
+    // ii) at the lock: the distance from ωe₃ to the range of S is |ω cos Φ|
+    for theta in [PI / 2.0, -PI / 2.0] {
+        for phi in [-PI / 2.0, -1.2, -0.3, 0.0, 0.3, PI / 2.0, 2.0, PI] {
+            let ea = EulerAngles::new(EulerSequence::S321, [0.2, theta, phi]);
+            let svd = euler_rate_matrix_body(&ea).svd(true, false);
+            let k = svd.singular_values.imin();
+            // σ = (√2, 1, |cos Θ| ≈ 6e-17): the null direction is separated by a gap of 1
+            assert!(svd.singular_values[k] <= 4.0 * EPS);
+            let u3 = svd.u.unwrap().column(k).into_owned();
+            let residual = (w * u3.dot(&Vector3::z())).abs();
+            assert!((residual - (w * phi.cos()).abs()).abs() <= 8.0 * EPS * w, "Θ = {theta}, Φ = {phi}");
+            let attainable = residual <= 8.0 * EPS * w;
+            assert_eq!(attainable, (phi.abs() - PI / 2.0).abs() < 1e-12, "Θ = {theta}, Φ = {phi}");
+            if attainable {
+                let got = omega_body_from_euler_rates(&ea, [0.0, -w / phi.sin(), 0.0]);
+                assert!((got - Vector3::z() * w).nan_amax() <= 4.0 * EPS * w, "Θ = {theta}, Φ = {phi}");
+            }
+        }
+    }
 }
 
 /// exp(Θ^×) by Rodrigues, generic (for dual paths).

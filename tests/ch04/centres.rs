@@ -2,7 +2,7 @@
 
 use vectrix::kinematics::*;
 use vectrix::nalgebra::Vector3;
-use vectrix::num_dual::Dual2_64;
+use vectrix::num_dual::{Dual2_64, DualNum};
 use vectrix::prelude::*;
 use vectrix::tensor::Scalar;
 
@@ -136,25 +136,80 @@ fn eq_4_17_7_chasles_velocity() {
 }
 
 // Fact 4.18.1: colocated contact points have the same relative velocity in every frame
-// (r⃗_{x₁/x₂} = 0⃗ kills the transport term); Def 4.18.2 / Ex 4.18.4: a disk rolling without slip
-// on a fixed plane has a contact point at rest and |v_c| = rω.
+// (r⃗_{x₁/x₂} = 0⃗ kills the transport term): a slip velocity re-taken with respect to a turning
+// and translating frame by vectrix's transport theorem is unchanged, and Def 4.18.2 calls it
+// slipping.
 #[test]
-fn fact_4_18_1_and_example_4_18_4_rolling_disk() {
+fn fact_4_18_1_slip_velocity_is_the_same_in_every_frame() {
     let fa = LabeledFrame::new("A", Frame::new());
     let f = &fa.frame;
-    let (radius, w) = (0.4, 2.5);
-    let omega = f.vector([0.0, 0.0, -w]); // rolling toward +î on the plane ĵ = up
-    let r_x_c = f.vector([0.0, -radius, 0.0]);
-    let v_c = no_slip_velocity(&omega, &r_x_c, &Vector::zero());
-    assert!((v_c.norm() - radius * w).abs() < TOL);
-    let v_x = contact_point_velocity(&v_c, &omega, &r_x_c);
-    assert!(v_x.norm() < TOL);
-    assert!(rolls_without_slip(&v_x, &Vector::zero(), 1e-12));
-    // with slip: the slip velocity is the same seen from a rotating frame
-    let slip = slip_velocity(&(v_x + f.vector([0.3, 0.0, 0.0])), &Vector::zero());
+    let slip = slip_velocity(&f.vector([0.3, 0.0, -0.1]), &Vector::zero());
     assert!(!rolls_without_slip(&slip, &Vector::zero(), 1e-12));
     let jet = VectorJet::new(fa.label, Vector::zero(), slip, Vector::zero()).unwrap();
     let b = LabeledFrame::new("B", Frame::from_orientation_rel(f, &o3(0.7), 1e-12).unwrap());
-    let m = FrameMotion::new(b, fa, f.vector([0.1, 0.2, 3.0]), Vector::zero()).unwrap();
+    let m = FrameMotion::new(b, fa, f.vector([0.1, 0.2, 3.0]), f.vector([-1.0, 0.5, 0.2])).unwrap();
     assert!(dist(&jet.transported(&m).unwrap().rate(), &slip) < TOL);
+}
+
+// Ex 4.18.4: a wheel of radius R rolls without slipping in a straight line on a flat surface
+// (F_A fixed in the surface, î_A along the path, ĵ_A up; x, q fixed in the plane, p fixed on
+// the rim). When p is in contact with q, v⃗_{p/x/A} = v⃗_{q/x/A} = 0⃗.
+//
+// Computed, not assumed: the wheel frame F_B turns by −φ(t) about k̂_A (clockwise, rolling
+// toward +î_A) along a path φ(t) with nonzero φ̇ and φ̈; rolling in a straight line puts the
+// centre c at r⃗_{c/x} = (x₀ + Rφ)î_A + Rĵ_A (the unrolled arc). v⃗_{p/x/A} = v⃗_{c/x/A} +
+// r⃗_{p/c}^{A•}, with v⃗_{c/x/A} the exact (dual-number) derivative of the centre's path and
+// r⃗_{p/c}^{A•} from vectrix's transport of the body-fixed r⃗_{p/c} = −Rĵ_B (ω⃗_{B/A} from
+// Poisson's equation on 𝓞_{B/A}(t)). Oracle at every t: the derivatives of the cycloid
+// r⃗_{p/x}|_A = (x₀ + Rφ − R sin φ, R − R cos φ, 0); at the contact instant (φ = 2π) the
+// velocity is 0⃗ and the acceleration Rφ̇²ĵ_A (the cusp).
+#[test]
+fn example_4_18_4_rolling_wheel_contact_point_is_at_rest() {
+    let fa = LabeledFrame::new("A", Frame::new());
+    let f = fa.frame;
+    let (radius, x0) = (0.4, -1.3);
+    // φ(t) = 2π at t = t_c, with φ̇ = 2.5 and φ̈ = 0.8 there (plus a sine so φ‴ ≠ 0)
+    let t_c = 0.9;
+    let phi = |t: Dual2_64| {
+        let d = t - t_c;
+        Dual2_64::from(2.0 * std::f64::consts::PI) + d * 2.5 + d * d * 0.4 + (d * 1.7).sin() * 0.1 - d * 0.17
+    };
+    let wheel = |t: f64| {
+        let m = motion_from_path("B", &fa, |t| o3(-phi(t)), t);
+        let centre =
+            vec_jet(|t| Vector3::new(phi(t) * radius + x0, Dual2_64::from(radius), Dual2_64::from(0.0)), t);
+        let p_c = VectorJet::fixed_in(m.body().label, m.body().frame.vector([0.0, -radius, 0.0]));
+        let p_c = p_c.transported(&m).unwrap();
+        let [_, v_c, a_c] = centre.map(|x| f.vector(arr(x)));
+        (p_c.rate() + v_c, p_c.second_rate() + a_c)
+    };
+    let cycloid = |t: Dual2_64| {
+        let ph = phi(t);
+        Vector3::new(
+            ph * radius + x0 - ph.sin() * radius,
+            Dual2_64::from(radius) - ph.cos() * radius,
+            Dual2_64::from(0.0),
+        )
+    };
+    let p = |t: f64| Dual2_64::new(t, 1.0, 0.0);
+    for t in [0.0, 0.35, t_c, 1.6] {
+        let (v_p, a_p) = wheel(t);
+        let [_, v, a] = vec_jet(cycloid, t);
+        let (wd, wdd) = (phi(p(t)).v1, phi(p(t)).v2);
+        // speeds ≈ Rφ̇ ≈ 1, accelerations ≈ Rφ̇² ≈ 2.5: rounding of a few rotations and products
+        assert!(dist(&v_p, &f.vector(arr(v))) < TOL * radius * wd.abs(), "v at t = {t}");
+        assert!(dist(&a_p, &f.vector(arr(a))) < TOL * radius * (wd * wd + wdd.abs()), "a at t = {t}");
+    }
+    // the contact instant: p touches q, v⃗_{p/x/A} = v⃗_{q/x/A} = 0⃗, a⃗_{p/x/A} = Rφ̇²ĵ_A
+    let (v_p, a_p) = wheel(t_c);
+    let wd = phi(p(t_c)).v1;
+    let v_q = Vector::zero(); // q is fixed in the plane
+    assert!(v_p.norm() < TOL * radius * wd);
+    assert!(rolls_without_slip(&v_p, &v_q, TOL * radius * wd));
+    assert!(dist(&a_p, &(f.j() * (radius * wd * wd))) < TOL * radius * wd * wd * 4.0);
+    // away from contact p moves: |v⃗_{p/x/A}| = 2Rφ̇ sin(φ/2), and it is not the surface's velocity
+    let (v_p, _) = wheel(0.35);
+    let (ph, wd) = (phi(p(0.35)).re, phi(p(0.35)).v1);
+    assert!((v_p.norm() - 2.0 * radius * wd * (ph / 2.0).sin().abs()).abs() < TOL * radius * wd);
+    assert!(!rolls_without_slip(&v_p, &v_q, 1e-3));
 }

@@ -191,6 +191,96 @@ fn section_7_1_inertial_frames_are_nonrotating() {
     assert!(r_yw.transported(&spinning).unwrap().second_rate().norm() > 0.05);
 }
 
+/// Three distant stars y₁, y₂, y₃, unforced, seen from an unforced particle w at the origin of
+/// the inertial F_A: r⃗_{yᵢ/w} = tα⃗ᵢ + β⃗ᵢ (7.2.1) with β⃗ᵢ mutually orthogonal, along the axes of
+/// a turned frame (the star frame F_S at t = 0). `d` scales the distances, `v` the velocities.
+fn stars(d: f64, v: f64) -> (Frame, [Vector; 3], [Vector; 3]) {
+    let a = Frame::new();
+    let s = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.vector([1.0, -2.0, 0.5]), 0.8).unwrap());
+    let beta = [s.i() * (1.0 * d), s.j() * (6.2 * d), s.k() * (2.4 * d)];
+    let alpha =
+        [a.vector([0.8, -0.3, 0.5]) * v, a.vector([-0.2, 0.9, 0.1]) * v, a.vector([0.4, 0.4, -0.7]) * v];
+    (s, alpha, beta)
+}
+
+/// §7.2, (7.2.1)–(7.2.2): with β⃗ᵢ·β⃗ⱼ = 0 the angle θᵢⱼ between the lines of sight to stars i, j
+/// obeys cos θᵢⱼ = (α⃗ᵢ·α⃗ⱼt² + (α⃗ᵢ·β⃗ⱼ + α⃗ⱼ·β⃗ᵢ)t)/(|tα⃗ᵢ + β⃗ᵢ||tα⃗ⱼ + β⃗ⱼ|): checked against
+/// vectrix's angle between the position vectors where the angles move a lot (distances 1–6,
+/// speeds 1, t ≤ 3); then, for stars 4 to 25 light years away moving at 30 km/s, θᵢⱼ stays within
+/// the bound (7.2.2) gives, (|α⃗ᵢ||α⃗ⱼ|t² + (|α⃗ᵢ||β⃗ⱼ| + |α⃗ⱼ||β⃗ᵢ|)t)/((|β⃗ᵢ| − |α⃗ᵢ|t)(|β⃗ⱼ| − |α⃗ⱼ|t)),
+/// of π/2 over ten years: a few 10⁻⁴ rad, "approximately π/2".
+#[test]
+fn eq_7_2_2_angles_between_distant_stars_stay_near_right_angles() {
+    let (_, alpha, beta) = stars(1.0, 1.0);
+    for t in [0.0, 0.5, 1.7, 3.0] {
+        let r: Vec<Vector> = (0..3).map(|i| alpha[i] * t + beta[i]).collect();
+        for (i, j) in [(0, 1), (1, 2), (2, 0)] {
+            let num = alpha[i].dot(&alpha[j]) * t * t + (alpha[i].dot(&beta[j]) + alpha[j].dot(&beta[i])) * t;
+            let want = num / (r[i].norm() * r[j].norm());
+            // cos of an atan2 angle against a quotient of O(10) dot products: a few ε
+            assert_abs(r[i].angle(&r[j]).cos(), want, 16.0 * EPS);
+        }
+    }
+    let light_year = 9.4607e15;
+    let (_, alpha, beta) = stars(4.0 * light_year, 3.0e4);
+    let ten_years = 10.0 * 3.156e7;
+    for t in [0.0, 86400.0, ten_years] {
+        for (i, j) in [(0, 1), (1, 2), (2, 0)] {
+            let theta = (alpha[i] * t + beta[i]).angle(&(alpha[j] * t + beta[j]));
+            let (ai, aj, bi, bj) = (alpha[i].norm(), alpha[j].norm(), beta[i].norm(), beta[j].norm());
+            let bound = (ai * aj * t * t + (ai * bj + aj * bi) * t) / ((bi - ai * t) * (bj - aj * t));
+            // |θ − π/2| ≤ asin(|cos θ|), and the angle is exact to a few ε at t = 0
+            assert!((theta - std::f64::consts::FRAC_PI_2).abs() <= bound.asin() + 4.0 * EPS, "t = {t}");
+            assert!(bound < 1e-3);
+        }
+    }
+}
+
+/// §7.2, (7.2.3)–(7.2.4): the frame of the lines of sight F_S = [r̂_{y₁/w} r̂_{y₂/w} r̂_{y₃/w}]
+/// (= [β̂₁ β̂₂ β̂₃] at t = 0) turns relative to the inertial F_A only as fast as the stars cross
+/// the sky: r̂ᵢ^{A•} = (I − r̂ᵢr̂ᵢ′)α⃗ᵢ/|β⃗ᵢ| at t = 0, so ω⃗_{S/A} = ½Σ r̂ᵢ × r̂ᵢ^{A•} is at most
+/// (3/2)maxᵢ|α⃗ᵢ|/|β⃗ᵢ| and falls as 1/distance: Ω⃗_{S/A} ≈ 0 and F_S is approximately inertial
+/// (Fact 7.1.4). The axis rates are exact derivatives (a dual number in t through vectrix's
+/// `unit`), and ω⃗_{S/A} is vectrix's `omega_from_axis_rates` (P4.20.5). For stars 4–25 light
+/// years away at 30 km/s it is below 10⁻¹² rad/s, 10⁻⁷ of the Earth's spin.
+#[test]
+fn eq_7_2_4_the_star_frame_is_approximately_inertial() {
+    use vectrix::kinematics::omega_from_axis_rates;
+    use vectrix::num_dual::Dual64;
+    let omega_s_a = |d: f64, v: f64| {
+        let (s, alpha, beta) = stars(d, v);
+        let a = Frame::new();
+        let ad = a.cast::<Dual64>();
+        let t = Dual64::new(0.0, 1.0);
+        // r̂ᵢ^{A•} at t = 0: the derivative of vectrix's unit vector along tα⃗ᵢ + β⃗ᵢ
+        let rate = |i: usize| {
+            let (al, be) = (alpha[i].resolve(&a), beta[i].resolve(&a));
+            let r = ad.vector([0, 1, 2].map(|k| t * al[k] + be[k]));
+            a.vector(r.unit().unwrap().resolve(&ad).map(|x| x.eps).into())
+        };
+        let w = omega_from_axis_rates(&s, &rate(0), &rate(1), &rate(2));
+        // closed form of the same sum
+        let want = (0..3).fold(Vector::zero(), |acc, i| {
+            let u = beta[i].unit().unwrap();
+            acc + u.cross(&((alpha[i] - u * u.dot(&alpha[i])) * (1.0 / beta[i].norm()))) * 0.5
+        });
+        let fastest = (0..3).map(|i| alpha[i].norm() / beta[i].norm()).fold(0.0, nan_max);
+        (w, want, fastest)
+    };
+    let (w, want, fastest) = omega_s_a(1.0, 1.0);
+    assert!((w - want).norm() <= 32.0 * EPS * fastest);
+    assert!(w.norm() <= 1.5 * fastest && w.norm() > 0.01 * fastest);
+    // ten times farther, ten times slower; twice the speed, twice the rate
+    let (w10, _, _) = omega_s_a(10.0, 1.0);
+    assert!((w10 * 10.0 - w).norm() <= 32.0 * EPS * w.norm());
+    let (w2, _, _) = omega_s_a(1.0, 2.0);
+    assert!((w2 - w * 2.0).norm() <= 32.0 * EPS * w.norm());
+    // the real sky
+    let (w, _, fastest) = omega_s_a(4.0 * 9.4607e15, 3.0e4);
+    assert!(w.norm() <= 1.5 * fastest && fastest < 1e-12);
+    assert!(w.norm() < 1e-7 * 7.2921e-5);
+}
+
 /// §7.7, Facts 7.7.1–7.7.6: uniform gravity adds m_B g⃗ to the translational law and has no
 /// moment about the centre of mass, so Ḣ⃗_{B/c/A} is that of the nongravitational forces alone;
 /// about another point z it contributes r⃗_{c/z} × m_B g⃗.

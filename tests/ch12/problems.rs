@@ -8,13 +8,13 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use proptest::prelude::*;
 use vectrix::flight::*;
 use vectrix::kinematics::{FrameLabel, FrameMotion, LabeledFrame, VectorJet};
-use vectrix::num_dual::{Dual64, DualNum};
+use vectrix::num_dual::Dual64;
 use vectrix::prelude::*;
 use vectrix::rotation::{Axis, orientation_about};
 use vectrix::statics::CentralGravity;
 
 use crate::linearization::{G, P, PHI, PSI, Q, R, THETA, U, V, W, airframe, entry, jacobians, steady};
-use crate::support::EPS;
+use crate::support::{EPS, NanAmax};
 
 /// Half a unit in the last printed digit of a value printed with `digits` decimals.
 fn printed(digits: i32) -> f64 {
@@ -24,24 +24,43 @@ fn printed(digits: i32) -> f64 {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
-    /// Ex 12.2.1: sin(Φ₀ + φ) ≈ sin Φ₀ + cos Φ₀ φ, cos(Φ₀ + φ) ≈ cos Φ₀ − sin Φ₀ φ (12.2.3–4), the
-    /// same as expanding the sum formulas with sin φ ≈ φ, cos φ ≈ 1 (12.2.7–8). Checked as: the
-    /// coefficients are the exact derivatives (a dual number), and the error is at most φ²/2
-    /// (Taylor's remainder, |f″| ≤ 1).
+    /// Ex 12.2.1: sin(Φ₀ + φ) ≈ sin Φ₀ + (cos Φ₀)φ, cos(Φ₀ + φ) ≈ cos Φ₀ − (sin Φ₀)φ (12.2.3–4),
+    /// for Φ₀ = 0 sin φ ≈ φ, cos φ ≈ 1 (12.2.5–6), and the same linear terms from the sum formulas
+    /// (12.2.7–8). In vectrix these are the bank-angle entries of gravity in the aircraft frame,
+    /// g⃗|_AC = 𝓞_{AC/E}(0, 0, g) = g(0, sin Φ, cos Φ) for Ψ = Θ = 0 (`Euler321::o_ac_e`), the
+    /// terms linearized in §12.3. Checked: the dual-number derivative of vectrix's g⃗|_AC at Φ₀
+    /// is g(0, cos Φ₀, −sin Φ₀); the linearization misses vectrix's g⃗|_AC(Φ₀ + φ) by at most gφ²/2
+    /// (Taylor's remainder, |f″| ≤ g); and the sum formulas are vectrix's composition
+    /// 𝓞₁(Φ₀ + φ) = 𝓞₁(φ)𝓞₁(Φ₀) with the small-angle 𝓞₁(φ) ≈ I + φ𝓞₁′(0) (12.2.5–6), which
+    /// gives the same linear term.
     #[test]
     fn example_12_2_1_small_angle_linearization(
         phi0 in -PI..PI, phi in prop_oneof![3 => -0.5..0.5f64, 1 => Just(0.0), 1 => Just(1e-8)],
     ) {
-        let s = Dual64::new(phi0, 1.0).sin();
-        let c = Dual64::new(phi0, 1.0).cos();
-        prop_assert!((s.eps - phi0.cos()).abs() <= EPS && (c.eps + phi0.sin()).abs() <= EPS);
-        let lin_s = phi0.sin() + phi0.cos() * phi;
-        let lin_c = phi0.cos() - phi0.sin() * phi;
-        let bound = 0.5 * phi * phi + 4.0 * EPS;
-        prop_assert!(((phi0 + phi).sin() - lin_s).abs() <= bound);
-        prop_assert!(((phi0 + phi).cos() - lin_c).abs() <= bound);
-        // (12.2.7)–(12.2.8): the same linear terms from the sum formulas
-        prop_assert!((phi0.sin() * 1.0 + phi0.cos() * phi - lin_s).abs() <= 4.0 * EPS);
+        let z = Dual64::from(0.0);
+        let gravity = |bank: Dual64| Euler321::new(z, z, bank).o_ac_e() * nalgebra::Vector3::new(z, z, Dual64::from(G));
+        let at = gravity(Dual64::new(phi0, 1.0));
+        let exact = gravity(Dual64::from(phi0 + phi)).map(|x| x.re);
+        // the entries are g sin Φ₀, g cos Φ₀ and their derivatives (12.2.3–4)
+        prop_assert!((at[1].re - G * phi0.sin()).abs() <= 4.0 * EPS * G && (at[2].re - G * phi0.cos()).abs() <= 4.0 * EPS * G);
+        prop_assert!((at[1].eps - G * phi0.cos()).abs() <= 4.0 * EPS * G);
+        prop_assert!((at[2].eps + G * phi0.sin()).abs() <= 4.0 * EPS * G);
+        prop_assert!(at[0].re == 0.0 && at[0].eps == 0.0);
+        let linear = |k: usize| at[k].re + at[k].eps * phi;
+        let bound = 0.5 * G * phi * phi + 8.0 * EPS * G;
+        prop_assert!((exact[1] - linear(1)).abs() <= bound, "sin: {} vs {}", exact[1], linear(1));
+        prop_assert!((exact[2] - linear(2)).abs() <= bound, "cos: {} vs {}", exact[2], linear(2));
+        // (12.2.5–6): at Φ₀ = 0 the small-angle 𝓞₁(φ) ≈ I + φ𝓞₁′(0), 𝓞₁′(0) = −e₁^×
+        let small = o1(Dual64::new(0.0, 1.0));
+        let d_o1 = small.map(|x| x.eps);
+        prop_assert!(small.map(|x| x.re) == nalgebra::Matrix3::identity());
+        prop_assert!((d_o1 + nalgebra::Vector3::x().cross_matrix()).nan_amax() == 0.0);
+        // (12.2.7–8): 𝓞₁(Φ₀ + φ) = 𝓞₁(φ)𝓞₁(Φ₀), and with the small-angle factor the same
+        // linear terms as (12.2.3–4)
+        let o_phi0 = o1(phi0);
+        prop_assert!((o1(phi) * o_phi0 - o1(phi0 + phi)).nan_amax() <= 8.0 * EPS);
+        let summed = (nalgebra::Matrix3::identity() + d_o1 * phi) * o_phi0 * nalgebra::Vector3::new(0.0, 0.0, G);
+        prop_assert!((summed[1] - linear(1)).abs() <= 8.0 * EPS * G && (summed[2] - linear(2)).abs() <= 8.0 * EPS * G);
     }
 }
 

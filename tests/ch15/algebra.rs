@@ -3,23 +3,120 @@
 
 use super::*;
 use crate::support::NanAmax;
-use nalgebra::{dmatrix, dvector};
+use nalgebra::{Matrix3, dmatrix, dvector};
+use vectrix::prelude::{Dyadic, Frame, Resolve};
+use vectrix::tensor::adjugate;
+
+/// The physical matrix whose resolution in the first frame F_A is `m` (a 3 × 3 math matrix).
+fn physical(m: [[f64; 3]; 3]) -> (Frame, Dyadic) {
+    let a = Frame::new();
+    let d = a.dyadic(&Matrix3::from_fn(|i, j| m[i][j]));
+    (a, d)
+}
 
 #[test]
 fn problem_15_20_1_determinant_and_inverse() {
-    // 15.20.1: A = [[3,0,2],[4,3,5],[7,2,6]]: det A = −2 by cofactors, and
-    // A⁻¹ = [[−4,−2,3],[−5.5,−2,3.5],[6.5,3,−4.5]] (adjugate over det). The entries are small
-    // integers and halves, so LU with partial pivoting reproduces them to a few ε; and
+    // 15.20.1: A = [[3,0,2],[4,3,5],[7,2,6]], "manually compute the determinant and inverse".
+    // Printed: det A = 3(3·6 − 2·5) − 0(4·6 − 7·5) + 2(4·2 − 7·3) = −2 by cofactors along row 1,
+    // A⁻¹ = [[−4,−2,3],[−5.5,−2,3.5],[6.5,3,−4.5]].
+    // Through vectrix: the cofactors are `tensor::adjugate` (adj A = Cᵀ, products of small
+    // integers, exact), the expansion along row 1 is row₁(A)·col₁(adj A); the determinant of the
+    // physical matrix by `Dyadic::determinant` and from traces (2.10.57); the inverse by
+    // `Dyadic::inverse` (adjugate over det of the scaled matrix: halves, a few ε); and
     // det A = ∏λ (15.3.7) with the eigenvalues of `linalg::eigenvalues`.
-    let a = dmatrix![3.0, 0.0, 2.0; 4.0, 3.0, 5.0; 7.0, 2.0, 6.0];
-    assert_abs(a.determinant(), -2.0, 16.0 * EPS * 7.0f64.powi(3));
-    let inv = a.clone().try_inverse().unwrap();
-    let want = dmatrix![-4.0, -2.0, 3.0; -5.5, -2.0, 3.5; 6.5, 3.0, -4.5];
-    assert!((&inv - &want).nan_amax() <= 64.0 * EPS * 7.0, "{inv}");
-    let prod = linalg::eigenvalues(&a).unwrap().iter().fold(Complex64::new(1.0, 0.0), |p, l| p * l);
+    let (a, m) = physical([[3.0, 0.0, 2.0], [4.0, 3.0, 5.0], [7.0, 2.0, 6.0]]);
+    let m_a = m.resolve(&a);
+    let adj = adjugate(&m_a);
+    assert_eq!(adj, Matrix3::new(8.0, 4.0, -6.0, 11.0, 4.0, -7.0, -13.0, -6.0, 9.0));
+    let cofactor_row_1 = (0..3).map(|j| m_a[(0, j)] * adj[(j, 0)]).sum::<f64>();
+    assert_eq!(cofactor_row_1, -2.0);
+    assert_eq!(m_a * adj, Matrix3::identity() * -2.0);
+    // nalgebra's 3 × 3 determinant and the trace form: sums of products up to tr A³ ≈ 1000
+    assert_abs(m.determinant(), -2.0, 16.0 * EPS * 7.0f64.powi(3));
+    assert_abs(m.determinant_from_traces(), -2.0, 64.0 * EPS * (m * m * m).trace().abs());
+    let inv = m.inverse(1e-12).unwrap();
+    let want = [[-4.0, -2.0, 3.0], [-5.5, -2.0, 3.5], [6.5, 3.0, -4.5]];
+    // the inverse is computed from A/7 (inexact entries), and det A = −2 comes from terms of
+    // size Σ|a₁ⱼC₁ⱼ| = 50: the cancellation κ = 25 multiplies the entries' rounding
+    let kappa = (0..3).map(|j| (m_a[(0, j)] * adj[(j, 0)]).abs()).sum::<f64>() / 2.0;
+    for (i, row) in want.iter().enumerate() {
+        for (j, w) in row.iter().enumerate() {
+            assert_abs(inv.resolve(&a)[(i, j)], *w, 4.0 * EPS * kappa * 6.5);
+        }
+    }
+    // AB = I, so B = A⁻¹ (§15.1)
+    assert!(((m * inv).resolve(&a) - Matrix3::identity()).nan_amax() <= 4.0 * EPS * kappa * 6.5 * 7.0 * 3.0);
+    let eig = DMatrix::from_fn(3, 3, |i, j| m_a[(i, j)]);
+    let prod = linalg::eigenvalues(&eig).unwrap().iter().fold(Complex64::new(1.0, 0.0), |p, l| p * l);
     // the smallest eigenvalue −0.0905 is the worst conditioned factor (|λ|·κ ≈ 10² ε)
     assert_abs(prod.re, -2.0, 1e3 * EPS);
     assert_eq!(prod.im, 0.0);
+}
+
+#[test]
+fn facts_15_1_1_to_15_1_3_solutions_of_a_linear_system() {
+    // §15.1: Ax = 0 has the solution x = 0 (Fact 15.1.1), and it is the only one iff
+    // det A ≠ 0 (Fact 15.1.2); Ax = b has a unique solution iff det A ≠ 0, namely x = A⁻¹b
+    // (Fact 15.1.3); otherwise none or infinitely many (A(αx) = 0 for every α).
+    // Through vectrix: the equilibria of ẋ = Ax − b are the solutions of Ax = b
+    // (`affine_equilibria`, by the SVD), det A by `Dyadic::determinant`, A⁻¹b by
+    // `Dyadic::inverse` applied to the physical vector b⃗.
+    let (a, m) = physical([[3.0, 0.0, 2.0], [4.0, 3.0, 5.0], [7.0, 2.0, 6.0]]);
+    let b = [1.0, -2.0, 0.5];
+    assert!(m.determinant().abs() > 1.0);
+    let x = m.inverse(1e-12).unwrap() * a.vector(b);
+    let eqm = |d: &Dyadic, rhs: [f64; 3]| {
+        let mm = d.resolve(&a);
+        let neg: Vec<f64> = rhs.iter().map(|v| -v).collect();
+        affine_equilibria(&DMatrix::from_fn(3, 3, |i, j| mm[(i, j)]), &neg, 1e-12).unwrap()
+    };
+    let AffineEquilibria::Unique(xs) = eqm(&m, b) else { panic!("det A = −2: one solution") };
+    // κ(A) ≈ 200: the SVD solve and the adjugate agree to a few hundred ε of |x| ≈ 15
+    assert!((&xs - x.resolve(&a)).nan_amax() <= 1e3 * EPS * 15.0, "{xs} vs {x:?}");
+    let AffineEquilibria::Unique(zero) = eqm(&m, [0.0; 3]) else { panic!("det A ≠ 0: x = 0 only") };
+    assert!(zero.nan_amax() == 0.0);
+    // a singular A (row 3 = row 1 + row 2): det A = 0 and no inverse
+    let (_, s) = physical([[3.0, 0.0, 2.0], [4.0, 3.0, 5.0], [7.0, 3.0, 7.0]]);
+    assert_eq!(s.determinant(), 0.0);
+    assert!(s.inverse(1e-12).is_err());
+    // Ax = 0: x = 0 and every multiple of the null direction (−9, −7, 27)/|·|
+    let AffineEquilibria::Family { particular, directions } = eqm(&s, [0.0; 3]) else {
+        panic!("det A = 0: infinitely many solutions of Ax = 0")
+    };
+    assert!(particular.nan_amax() <= 4.0 * EPS);
+    assert_eq!(directions.ncols(), 1);
+    let n = a.vector([directions[0], directions[1], directions[2]]);
+    assert!((s * n).norm() <= 64.0 * EPS * 10.0);
+    assert!((s * (n * 3.5)).norm() <= 64.0 * EPS * 35.0);
+    // Ax = b: none when b is outside the range (the third entry breaks row 3 = row 1 + row 2),
+    // infinitely many when inside
+    assert_eq!(eqm(&s, [1.0, -2.0, 0.5]), AffineEquilibria::None);
+    assert!(matches!(eqm(&s, [1.0, -2.0, -1.0]), AffineEquilibria::Family { .. }));
+}
+
+#[test]
+fn section_15_1_table_15_1_special_matrices() {
+    // Table 15.1's examples, embedded as the upper-left block of a physical matrix with a 1 in
+    // the third diagonal entry (2 × 2 determinants ad − bc, §15.1): symmetric, skew symmetric,
+    // orthogonal (A⁻¹ = Aᵀ), nilpotent [[1,1],[−1,−1]]² = 0, idempotent ½[[1,1],[1,1]]² = itself,
+    // nonsingular [[1,2],[3,4]] (det = −2).
+    let block = |m: [[f64; 2]; 2], corner: f64| {
+        physical([[m[0][0], m[0][1], 0.0], [m[1][0], m[1][1], 0.0], [0.0, 0.0, corner]])
+    };
+    let (a, sym) = block([[1.0, 2.0], [2.0, 5.0]], 1.0);
+    assert!(sym.is_symmetric(0.0) && !sym.is_skew(0.5));
+    let (_, skew) = block([[0.0, 2.0], [-2.0, 0.0]], 0.0);
+    assert!(skew.is_skew(0.0) && !skew.is_symmetric(0.5));
+    let (_, orth) = block([[1.0, 0.0], [0.0, 1.0]], 1.0);
+    assert_eq!(orth.inverse(1e-12).unwrap().resolve(&a), orth.coform().resolve(&a));
+    let (_, nil) = block([[1.0, 1.0], [-1.0, -1.0]], 0.0);
+    assert_eq!((nil * nil).resolve(&a), Matrix3::zeros());
+    assert_eq!(nil.determinant(), 0.0);
+    let (_, idem) = block([[0.5, 0.5], [0.5, 0.5]], 0.0);
+    assert_eq!((idem * idem).resolve(&a), idem.resolve(&a));
+    let (_, nonsingular) = block([[1.0, 2.0], [3.0, 4.0]], 1.0);
+    assert_abs(nonsingular.determinant(), 1.0 * 4.0 - 2.0 * 3.0, 4.0 * EPS * 4.0);
+    assert!(nonsingular.inverse(1e-12).is_ok());
 }
 
 #[test]

@@ -47,12 +47,70 @@ fn intervals(n: &[f64], d: &Polynomial) -> Vec<(f64, f64)> {
 }
 
 #[test]
-fn problem_15_20_39_proportional_gain_bound() {
-    // 15.20.39: S = (s+0.5)/(s + 0.5 + 0.0203Kp): AS iff Kp > −24.6 (C: −24.631 = −0.5/0.0203).
-    let iv = intervals(&[0.0203], &poly(&[1.0, 0.5]));
+fn problem_15_20_39_proportional_and_integral_pitch_control() {
+    // 15.20.39: hold θ at 3° = 0.0524 rad on the pitch loop of 15.20.38, first with
+    // proportional control K_p, then with integral control K_i/s. Printed solution:
+    // S = (s + 0.5)/(s + 0.5 + 0.0203K_p), AS for K_p > −24.6, e∞ = 0.0262/(0.5 + 0.0203K_p) ≠ 0
+    // (notes [C]: K_p = 100, the M-file's gain, leaves 0.01036 rad); with K_i/s,
+    // S = s(s + 0.5)/(s² + 0.5s + 0.0203K_i), AS for K_i > 0, e∞ = 0 (K_i = 4 in the M-file);
+    // the step command and the integrator share the pole s = 0.
+    //
+    // Through vectrix: G from the state-space model of 15.20.38 (to_tf and minreal), the loops
+    // by series and sensitivity, their S(s) at sample s against the printed closed forms, the
+    // gain bounds by stable_gain_intervals and the Routh array, e∞ by the final-value theorem
+    // and, for K_p = 100, by the closed loop's step response at the M-file's t = 40 s.
+    let a = nalgebra::dmatrix![-0.313, 56.7, 0.0; -0.0139, -0.426, 0.0; 0.0, 0.0, -0.5];
+    let sys = StateSpace::new(
+        a,
+        nalgebra::dmatrix![0.232; 0.0; 0.0203],
+        nalgebra::dmatrix![0.0, 0.0, 1.0],
+        nalgebra::dmatrix![0.0],
+    )
+    .unwrap();
+    let g = sys.to_tf(0, 0).unwrap().minreal(1e-6).unwrap();
+    assert_eq!(g.den().degree(), 1);
+    let r0 = 0.0524;
+    let step = tf(&[r0], &[1.0, 0.0]);
+    // the minimal G carries the ~1e-13 relative error of the cancelled pair (15.20.38)
+    let same = |got: Complex64, want: Complex64| (got - want).norm() <= 1e-10 * want.norm();
+    let samples = [Complex64::new(0.0, 0.3), Complex64::new(-0.2, 2.0), Complex64::new(1.5, -0.7)];
+    // proportional control
+    let kp = 100.0;
+    let s_p = g.series(&tf(&[kp], &[1.0])).unwrap().sensitivity().unwrap();
+    for s in samples {
+        assert!(same(s_p.eval(s), (s + 0.5) / (s + 0.5 + 0.0203 * kp)), "S_P({s})");
+    }
+    let iv = stable_gain_intervals(g.num(), g.den()).unwrap();
     assert_eq!(iv.len(), 1);
-    assert_printed(iv[0].0, -24.631, 3);
+    assert_printed(iv[0].0, -24.6, 1);
+    assert_rel(iv[0].0, -0.5 / 0.0203, 1e-10);
     assert_eq!(iv[0].1, f64::INFINITY);
+    let closed_den = |k: f64| g.num().scale(k).unwrap().add(g.den()).unwrap();
+    assert!(routh(&closed_den(-24.0)).unwrap().is_hurwitz());
+    assert!(!routh(&closed_den(-25.0)).unwrap().is_hurwitz());
+    let FinalValue::Finite(e_inf) = s_p.series(&step).unwrap().final_value(AXIS_RTOL).unwrap() else {
+        panic!("the P loop is AS, so the final-value theorem applies")
+    };
+    assert_rel(e_inf, 0.0262 / (0.5 + 0.0203 * kp), 1e-10);
+    assert_printed(e_inf, 0.01036, 5);
+    // θ(40) of the closed loop T = 1 − S under the 3° step: the pole −0.5 − 2.03 has decayed
+    // by e^{−101}, so θ(40) = r₀ − e∞ to the accuracy of the simulation
+    let t_loop = g.series(&tf(&[kp], &[1.0])).unwrap().feedback(&tf(&[1.0], &[1.0])).unwrap();
+    let theta = t_loop.scale(r0).unwrap().step(&[0.0, 20.0, 40.0]).unwrap();
+    assert_abs(theta.y[0][2], r0 - e_inf, 1e-12);
+    // integral control
+    let ki = 4.0;
+    let s_i = g.series(&tf(&[ki], &[1.0, 0.0])).unwrap().sensitivity().unwrap();
+    for s in samples {
+        assert!(same(s_i.eval(s), s * (s + 0.5) / (s * s + 0.5 * s + 0.0203 * ki)), "S_I({s})");
+    }
+    let iv = stable_gain_intervals(g.num(), &g.den().mul(&poly(&[1.0, 0.0])).unwrap()).unwrap();
+    assert_eq!(iv.len(), 1);
+    assert_abs(iv[0].0, 0.0, 1e-12);
+    assert_eq!(iv[0].1, f64::INFINITY);
+    assert_eq!(s_i.series(&step).unwrap().final_value(AXIS_RTOL).unwrap(), FinalValue::Finite(0.0));
+    // the integrator's pole is the command's: s = 0
+    assert_eq!(tf(&[ki], &[1.0, 0.0]).poles().unwrap(), step.poles().unwrap());
 }
 
 #[test]

@@ -184,11 +184,24 @@ fn fact_2_11_9_rotation_taking_x_to_y() {
     assert!(Rotation::taking(&Vector::zero(), &a.i()).is_none());
 }
 
-/// Fact 2.11.10 (2.11.59): for n = v×w, n^× = wv′ − vw′.
+/// Fact 2.11.10 (2.11.59): for n⃗ = v⃗ × w⃗, n⃗^× = w⃗v⃗′ − v⃗w⃗′, a statement about physical
+/// vectors: vectrix's cross product, cross dyad and outer products, built in a turned frame and
+/// compared frame-free (the Frobenius norm of the difference), then resolved in a second frame.
 #[test]
 fn fact_2_11_10_cross_replacement() {
-    let (v, w) = (Vector3::new(1.0, -2.0, 0.5), Vector3::new(0.3, 0.7, 2.0));
-    assert_mat(&v.cross(&w).cross_matrix(), &(w * v.transpose() - v * w.transpose()), 4.0 * EPS);
+    let a = Frame::new();
+    let b = rot(&a, [1.0, -1.0, 2.0], 0.9).apply_frame(&a);
+    let (v, w) = (b.vector([1.0, -2.0, 0.5]), b.vector([0.3, 0.7, 2.0]));
+    let lhs = v.cross(&w).cross_dyad();
+    let rhs = w.outer(&v) - v.outer(&w);
+    // products of O(1)–O(2) components, resolved through one rotation: a few ε at scale |v||w|
+    let scale = v.norm() * w.norm();
+    assert_abs((lhs - rhs).norm(), 0.0, 16.0 * EPS * scale);
+    // and in components: (v×w)|_A^× = w|_A v|_Aᵀ − v|_A w|_Aᵀ
+    let (va, wa) = (v.resolve(&a), w.resolve(&a));
+    assert_mat(&lhs.resolve(&a), &(wa * va.transpose() - va * wa.transpose()), 16.0 * EPS * scale);
+    // the order matters: v⃗w⃗′ − w⃗v⃗′ is −n⃗^×, which differs by 2|n⃗|
+    assert!(((v.outer(&w) - w.outer(&v)) - lhs).norm() > scale * 0.1);
 }
 
 /// Fact 2.11.11 (2.11.60–61, corrected: csc(θ_{C/A}/2), and the lost ×): composition of
@@ -209,24 +222,44 @@ fn fact_2_11_11_composition_of_eigenaxis_rotations() {
     assert_vec(&axis, &n, 8.0 * EPS);
 }
 
-/// Prob 2.26.9: a quarter turn about k̂_A: 𝓡 = [[0,−1,0],[1,0,0],[0,0,1]], θ = π/2, n = k̂,
-/// q = [√2/2, 0, 0, √2/2], 𝓞 = 𝓡ᵀ.
+/// Prob 2.26.9: F_B is F_A turned by θ_{B/A} = π/2 about k̂_A (right-hand rule). Determine
+/// R⃗_{B/A}, 𝓡_{B/A} (as R⃗_{B/A}|_A and as R⃗_{B/A}|_B), n_{B/A} and q_{B/A}, then verify
+/// (2.11.39), (2.11.45) and (2.15.30). Answers (notes ch1-2a, ch2b [C]): 𝓡_{B/A} =
+/// [[0,−1,0],[1,0,0],[0,0,1]] in both frames, 𝓞_{B/A} = 𝓡ᵀ, θ = π/2, n = (0, 0, 1),
+/// q = [√2/2, 0, 0, √2/2]. The three identities are checked with the θ, n and q that vectrix
+/// extracts, not with the answers.
 #[test]
 fn problem_2_26_9_quarter_turn() {
     let a = Frame::new();
     let r = rot(&a, [0.0, 0.0, 1.0], FRAC_PI_2);
-    assert_mat(
-        &r.rotation_matrix_in(&a),
-        &Matrix3::new(0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0),
-        4.0 * EPS,
-    );
-    assert_mat(
-        &r.orientation_matrix_in(&a),
-        &Matrix3::new(0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 1.0),
-        4.0 * EPS,
-    );
+    let b = r.apply_frame(&a);
+    let want = Matrix3::new(0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0);
+    // entries of a rotation have scale 1; cos(π/2) ≈ 6e-17 and the quaternion products round
+    let tol = 4.0 * EPS;
+    let r_in_a = r.rotation_matrix_in(&a);
+    assert_mat(&r_in_a, &want, tol);
+    assert_mat(&r.rotation_matrix_in(&b), &want, tol);
+    // the same from the two frames: 𝓡_{B/A} = R⃗_{B/A}|_A = R⃗_{B/A}|_B (Fact 2.10.1)
+    assert_mat(&b.rotation_rel(&a), &want, tol);
+    assert_mat(&b.rotation_dyadic_rel(&a).resolve(&b), &want, tol);
+    assert_mat(&r.orientation_matrix_in(&a), &want.transpose(), tol);
+    assert_mat(&b.orientation_rel(&a), &want.transpose(), tol);
+    let AxisAngle::General { axis: n, angle: theta } = r.axis_angle_in(&a) else {
+        panic!("a quarter turn is neither the identity nor a half turn")
+    };
+    assert_abs(theta, FRAC_PI_2, tol);
+    assert_vec(&n, &Vector3::z(), tol);
+    let q = r.quaternion_in(&a);
     let h = std::f64::consts::FRAC_1_SQRT_2;
-    assert!(super::q_err(&r.quaternion_in(&a), &Quaternion::new(h, 0.0, 0.0, h)) <= 4.0 * EPS);
+    assert!(super::q_err(&q, &Quaternion::new(h, 0.0, 0.0, h)) <= tol);
+    // (2.11.39): cos θ = ½(tr R − 1), here 0
+    assert_abs(theta.cos(), 0.5 * (r_in_a.trace() - 1.0), tol);
+    // (2.11.45): R = I + (1 − cos θ)n^{×2} + (sin θ)n^×
+    let nx = n.cross_matrix();
+    assert_mat(&r_in_a, &(Matrix3::identity() + nx * nx * (1.0 - theta.cos()) + nx * theta.sin()), tol);
+    // (2.15.30): R = I + 2ηε^× + 2ε^{×2}, q = [η, ε]
+    let ex = Vector3::new(q.b, q.c, q.d).cross_matrix();
+    assert_mat(&r_in_a, &(Matrix3::identity() + ex * (2.0 * q.a) + ex * ex * 2.0), tol);
 }
 
 /// Prob 2.26.13: R_{Sn}(θ) = S R_n(θ) Sᵀ for a rotation S.
