@@ -9,8 +9,6 @@
 //! Book: §7.11 (chains), §6.3 (the moment of inertia about an axis); RBDA §2.16, Table 7.1.
 #![allow(non_snake_case)]
 
-use std::any::TypeId;
-
 use nalgebra::Vector3;
 use vectrix_tensor::Scalar;
 
@@ -233,18 +231,18 @@ impl<T: Scalar> Default for PlanarScratch<T> {
 }
 
 /// The planar passes' work space: one [`PlanarScratch`] per segment and one for the ground,
-/// and for `f64` the joint angles, their sines and their cosines (n each), computed together
-/// before the passes.
+/// and the joint angles, their sines and their cosines (n each), computed together before the
+/// passes.
 #[derive(Debug, Clone)]
 pub(crate) struct PlanarWork<T: Scalar> {
     pub seg: Vec<PlanarScratch<T>>,
-    pub trig: Vec<f64>,
+    pub trig: Vec<T>,
 }
 
 impl<T: Scalar> PlanarWork<T> {
     /// The work space of a planar model of `n` segments.
     pub fn new(n: usize) -> Self {
-        Self { seg: vec![PlanarScratch::default(); n + 1], trig: vec![0.0; 3 * n] }
+        Self { seg: vec![PlanarScratch::default(); n + 1], trig: vec![T::zero(); 3 * n] }
     }
 }
 
@@ -286,8 +284,10 @@ impl<T: Scalar> Model<T> {
         work: &mut PlanarWork<T>,
     ) -> bool {
         let Some(pl) = &self.planar else { return false };
-        let (s, trig) = (&mut work.seg[..], &mut work.trig[..]);
         let n = pl.segs.len();
+        // (a no-op for the work space of this model, `PlanarWork::new(n)`)
+        work.trig.resize(3 * n, T::zero());
+        let (s, trig) = (&mut work.seg[..], &mut work.trig[..]);
         let z = T::zero();
         // the ground, entry n: at rest, axes (û, ŵ), acceleration −g (its in-plane part) at
         // the origin (gravity by the fictitious acceleration of the base)
@@ -298,28 +298,16 @@ impl<T: Scalar> Model<T> {
         // the ground or the segment just done (a chain: no round trip through memory)
         let ground = ([T::one(), z], z, [z; 2]);
         let mut last = ground;
-        // the joint angles' (cos, sin) first, into `cs`: all at once in SIMD for f64 (inside
-        // the loop below each would wait on the loop's chain)
-        let simd = TypeId::of::<T>() == TypeId::of::<f64>() && trig.len() == 3 * n && {
-            let (x, rest) = trig.split_at_mut(n);
-            let (sn, cn) = rest.split_at_mut(n);
-            for (xk, ps) in x.iter_mut().zip(&pl.segs) {
-                *xk = if ps.joint == PlanarJoint::Revolute { q[ps.qi].re() } else { 0.0 };
-            }
-            vectrix_rotation::sin_cos_slices(x, sn, cn).is_ok()
-        };
-        if simd {
-            let (sn, cn) = trig[n..].split_at(n);
-            for (e, (c, sv)) in s.iter_mut().zip(cn.iter().zip(sn)) {
-                e.cs = [T::lit(*c), T::lit(*sv)];
-            }
-        } else {
-            for (e, ps) in s.iter_mut().zip(&pl.segs) {
-                if ps.joint == PlanarJoint::Revolute {
-                    let (sv, c) = vectrix_rotation::sin_cos(q[ps.qi]);
-                    e.cs = [c, sv];
-                }
-            }
+        // the joint angles' (cos, sin) first, all at once (`Scalar::fast_sin_cos_slices`: in
+        // SIMD for f64; inside the loop below each would wait on the loop's chain)
+        let (x, rest) = trig.split_at_mut(n);
+        let (sn, cn) = rest.split_at_mut(n);
+        for (xk, ps) in x.iter_mut().zip(&pl.segs) {
+            *xk = if ps.joint == PlanarJoint::Revolute { q[ps.qi] } else { z };
+        }
+        T::fast_sin_cos_slices(x, sn, cn);
+        for (e, (c, sv)) in s.iter_mut().zip(cn.iter().zip(sn.iter())) {
+            e.cs = [*c, *sv];
         }
         for (i, ps) in pl.segs.iter().enumerate() {
             let (cp, wp, vp) = if ps.parent == n {
