@@ -10,7 +10,7 @@ use crate::tf::TransferFunction;
 use crate::zpk::Zpk;
 use num_complex::Complex64;
 use std::f64::consts::TAU;
-use vectrix_simd::{FUSED, madd};
+use vectrix_simd::{FUSED_LOOPS, madd};
 
 /// `n` logarithmically spaced frequencies from 10^a to 10^b (Matlab `logspace`).
 ///
@@ -153,9 +153,9 @@ struct Grid<'a> {
 vectrix_simd::dispatch! {
     /// [`block`] over a whole grid, compiled for AVX2 when the CPU has it (detected when the
     /// program runs; the same bits either way) and portable otherwise, fused multiply–add where
-    /// the build enables it ([`FUSED`]); points above `w_max` are left as NaN. Returns whether
+    /// the build says so ([`FUSED_LOOPS`]); points above `w_max` are left as NaN. Returns whether
     /// any point was left.
-    fn blocks(grid: &Grid<'_>, out: &mut [Complex64]) -> bool = blocks_all::<FUSED>;
+    fn blocks(grid: &Grid<'_>, out: &mut [Complex64]) -> bool = blocks_all::<FUSED_LOOPS>;
 }
 
 /// The body of [`blocks`].
@@ -394,8 +394,8 @@ mod tests {
         let (mut dispatched, mut portable, mut other) =
             (vec![zero; omega.len()], vec![zero; omega.len()], vec![zero; omega.len()]);
         let bad = blocks(&grid, &mut dispatched);
-        assert_eq!(bad, blocks_all::<FUSED>(&grid, &mut portable));
-        blocks_all::<{ !FUSED }>(&grid, &mut other);
+        assert_eq!(bad, blocks_all::<FUSED_LOOPS>(&grid, &mut portable));
+        blocks_all::<{ !FUSED_LOOPS }>(&grid, &mut other);
         for (k, (d, p)) in dispatched.iter().zip(&portable).enumerate() {
             let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
             assert!(same(d.re, p.re) && same(d.im, p.im), "ω = {:e}: {d} vs {p}", omega[k]);

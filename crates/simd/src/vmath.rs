@@ -9,8 +9,9 @@
 //! the ranges used here; `tests` below measure the error against the platform's `libm` over
 //! hard sets (near 0, near multiples of π/2, both axes, every octant).
 //!
-//! `F` selects fused multiply–add ([`madd`]); the callers pass [`crate::FUSED`]. Both variants
-//! are accurate; they may differ in the last bit.
+//! `F` selects fused multiply–add ([`madd`]); the callers pass [`crate::FUSED`] (one value)
+//! or [`crate::FUSED_LOOPS`] (the batched conversions). Both variants are accurate; they may
+//! differ in the last bit.
 
 // The constants are fdlibm's decimal literals verbatim (so they can be checked against its
 // source); they round to the same doubles as the shorter forms clippy suggests.

@@ -3,7 +3,7 @@
 //! Book: §2.13, Facts 2.13.3–8 (corrected signs), (2.15.14).
 
 use vectrix_simd::vmath::atan2;
-use vectrix_simd::{FUSED, madd};
+use vectrix_simd::{FUSED_LOOPS, madd};
 
 use super::BLOCK;
 use crate::euler_extract::{GIMBAL_LOCK_TOL, assemble, parity};
@@ -16,7 +16,7 @@ vectrix_simd::dispatch! {
         sequence: EulerSequence,
         angles: &mut [[f64; 3]],
         locks: &mut Vec<(usize, EulerSolution<f64>)>
-    ) -> Result<(), RotationError> = euler_all::<FUSED>;
+    ) -> Result<(), RotationError> = euler_all::<FUSED_LOOPS>;
 }
 
 /// Principal Euler angles of many rotations, from [`EulerAngles::from_quaternions`]: one
@@ -260,7 +260,7 @@ mod tests {
         for seq in [EulerSequence::S321, EulerSequence::S313.extrinsic()] {
             let batch = EulerAngles::from_quaternions(&qs, seq).unwrap();
             let (mut angles, mut locks) = (vec![[0.0; 3]; qs.len()], Vec::new());
-            euler_all::<FUSED>(&qs, seq, &mut angles, &mut locks).unwrap();
+            euler_all::<FUSED_LOOPS>(&qs, seq, &mut angles, &mut locks).unwrap();
             for (d, p) in batch.angles().iter().zip(&angles) {
                 assert_eq!(d.map(f64::to_bits), p.map(f64::to_bits), "{seq:?}");
             }

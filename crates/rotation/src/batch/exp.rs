@@ -4,7 +4,7 @@
 
 use nalgebra::Vector3;
 use vectrix_simd::vmath::{HALF_PI_SQUARED, SIN_COS_MAX, cos_sinc_of_square, sin_cos};
-use vectrix_simd::{FUSED, madd};
+use vectrix_simd::{FUSED_LOOPS, madd};
 
 use super::BLOCK;
 use crate::series::all_finite;
@@ -12,12 +12,12 @@ use crate::{Quaternion, RotationError};
 
 vectrix_simd::dispatch! {
     fn exp_simd(thetas: &[Vector3<f64>], out: &mut [Quaternion<f64>]) -> Result<(), RotationError> =
-        exp_all::<FUSED>;
+        exp_all::<FUSED_LOOPS>;
 }
 
 vectrix_simd::dispatch! {
     fn exp_vec_simd(thetas: &[Vector3<f64>], out: &mut Vec<Quaternion<f64>>) -> Result<(), RotationError> =
-        exp_vec::<FUSED>;
+        exp_vec::<FUSED_LOOPS>;
 }
 
 impl Quaternion<f64> {
@@ -180,7 +180,7 @@ mod tests {
         }
         let dispatched = Quaternion::from_angle_vectors(&th).unwrap();
         let mut portable = vec![Quaternion::identity(); th.len()];
-        exp_all::<FUSED>(&th, &mut portable).unwrap();
+        exp_all::<FUSED_LOOPS>(&th, &mut portable).unwrap();
         for (d, p) in dispatched.iter().zip(&portable) {
             assert_eq!(d.to_vector4().map(f64::to_bits), p.to_vector4().map(f64::to_bits));
         }

@@ -5,7 +5,7 @@
 //! branches (and, for angle vectors with |Θ| ≤ π, the Taylor series of cos h and sin h / h in
 //! h²), so the loop runs four rotations per instruction with AVX2 (`vectrix_simd::dispatch!`:
 //! detected when the program runs, the portable build on other CPUs, the same bits either
-//! way; fused multiply–add only where the build enables it, `vectrix_simd::FUSED`).
+//! way; fused multiply–add only where the build says so, `vectrix_simd::FUSED_LOOPS`).
 //! Each element agrees with its one-rotation counterpart
 //! ([`Quaternion::from_angle_vector`], [`EulerAngles::from_quaternion`]) to a few ulps: the
 //! kernels are within 1 ulp of the platform's `libm` (tested in `vmath`).

@@ -4,7 +4,7 @@
 //! Book: (3.4.4), (3.4.5).
 
 use nalgebra::SMatrix;
-use vectrix_simd::{FUSED, madd};
+use vectrix_simd::{FUSED_LOOPS, madd};
 
 use crate::Dyadic;
 
@@ -18,7 +18,7 @@ pub(crate) fn apply_many(h: &SMatrix<f64, 9, 9>, eps: &[Dyadic<f64>], out: &mut 
 }
 
 vectrix_simd::dispatch! {
-    fn apply_all_dispatched(h: &[f64; 81], eps: &[Dyadic<f64>], out: &mut [Dyadic<f64>]) = apply_all::<FUSED>;
+    fn apply_all_dispatched(h: &[f64; 81], eps: &[Dyadic<f64>], out: &mut [Dyadic<f64>]) = apply_all::<FUSED_LOOPS>;
 }
 
 /// The body of [`apply_many`], H column-major; fused multiply–add when `F`.
@@ -84,7 +84,7 @@ mod tests {
             apply_all::<true>(&cols, &eps, &mut fused);
             map.apply_many(&eps, &mut public).unwrap();
             let mut portable = eps.clone();
-            apply_all::<FUSED>(&cols, &eps, &mut portable);
+            apply_all::<FUSED_LOOPS>(&cols, &eps, &mut portable);
             for (i, e) in eps.iter().enumerate() {
                 let want = map.apply(e);
                 let abs = map.h.abs() * nalgebra::SVector::<f64, 9>::from_column_slice(e.m.abs().as_slice());
