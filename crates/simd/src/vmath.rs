@@ -110,12 +110,18 @@ fn sin_cos_all(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
     }
 }
 
-/// atan2(y, x) by [`atan2`]`::<FUSED>` for finite (y, x) ≠ (0, 0), by `libm` for the special
-/// arguments (its rules for zeros, infinities and NaN): what `Scalar::fast_atan2` returns for
-/// `f64`.
+/// The range of max(|y|, |x|) on which [`atan2`] is accurate: there the products of its interval
+/// tests (up to 2.5·max) neither overflow nor, for the larger argument, underflow (below it
+/// 0.4375·5e-324 rounds to 0, and atan2(0, 5e-324) would take the wrong interval).
+pub const ATAN2_RANGE: core::ops::RangeInclusive<f64> = 1e-270..=1e300;
+
+/// atan2(y, x) by [`atan2`]`::<FUSED>` for max(|y|, |x|) in [`ATAN2_RANGE`] (NaN too, which the
+/// kernel propagates), by `libm` outside (zeros, infinities, tiny and huge pairs, with libm's
+/// rules for each): what `Scalar::fast_atan2` returns for `f64`.
 #[inline(always)]
 pub fn atan2_or_libm(y: f64, x: f64) -> f64 {
-    if y.is_finite() && x.is_finite() && (y != 0.0 || x != 0.0) { atan2::<FUSED>(y, x) } else { y.atan2(x) }
+    // `max` ignores one NaN: a NaN with a number in range takes the kernel, which returns NaN
+    if ATAN2_RANGE.contains(&y.abs().max(x.abs())) { atan2::<FUSED>(y, x) } else { y.atan2(x) }
 }
 
 /// (π/2)², the largest h² that [`cos_sinc_of_square`] takes.
@@ -197,7 +203,7 @@ const AT: [f64; 11] = [
 const PI: f64 = core::f64::consts::PI;
 const PI_LO: f64 = 1.224_646_799_147_353_177_2e-16;
 
-/// atan2(y, x) within 1 ulp for finite (y, x) ≠ (0, 0) (the callers exclude the origin): fdlibm's
+/// atan2(y, x) within 1 ulp for max(|y|, |x|) in [`ATAN2_RANGE`] (the callers check): fdlibm's
 /// `s_atan.c` on p/q with p = |y|, q = |x|, its five intervals chosen by comparisons and each
 /// reduced argument formed from p and q with a single division; then `e_atan2.c`'s quadrant
 /// rule (π − (z − π_lo) for x < 0, including x = −0) and the sign of y. Range [−π, π].
@@ -380,6 +386,37 @@ mod tests {
     fn atan2_matches_libm_within_two_ulps() {
         for (fused, worst) in [(false, worst_atan2::<false>()), (true, worst_atan2::<true>())] {
             assert!(worst <= 2.0, "fused = {fused}: worst atan2 {worst} ulp");
+        }
+    }
+
+    /// The hook's atan2 on every pair of hostile values (zeros, subnormals, the ends of
+    /// [`ATAN2_RANGE`] and beyond, ±∞, NaN): libm's value, bit for bit outside the range and
+    /// within 2 ulps inside.
+    #[test]
+    fn atan2_or_libm_matches_libm_on_hostile_pairs() {
+        let v = [
+            0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            1e-300,
+            1e-270,
+            1e-200,
+            0.75,
+            1.0,
+            1e300,
+            1.7e308,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        for &a in &v {
+            for &b in &v {
+                for (y, x) in [(a, b), (-a, b), (a, -b), (-a, -b)] {
+                    let (got, want) = (atan2_or_libm(y, x), y.atan2(x));
+                    let ok = got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan());
+                    assert!(ok || ulps(got, want) <= 2.0, "atan2({y:e}, {x:e}) = {got:e}, libm {want:e}");
+                }
+            }
         }
     }
 
