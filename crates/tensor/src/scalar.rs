@@ -72,8 +72,9 @@ pub trait Scalar: RealField + Copy {
     }
 
     /// (cos h, sin h / h) from u = h², where a kernel needs no square root, range reduction or
-    /// division: `f64` with u ≤ (π/2)², by the Taylor series in u (sin h / h within 2 ulps,
-    /// cos h within 2ε). `None` for larger u and every other scalar: the caller takes
+    /// division: `f64` with |u| ≤ (π/2)², by the Taylor series in u of these entire functions
+    /// of u (sin h / h within 2 ulps, cos h within 2ε; for u < 0 they are cosh √−u and
+    /// sinh √−u / √−u). `None` for larger |u|, NaN and every other scalar: the caller takes
     /// [`Scalar::fast_sin_cos`] of √u.
     #[inline(always)]
     fn fast_cos_sinc_of_square(self) -> Option<(Self, Self)> {
@@ -145,7 +146,8 @@ impl Scalar for f64 {
     }
     #[inline(always)]
     fn fast_cos_sinc_of_square(self) -> Option<(f64, f64)> {
-        (self <= vmath::HALF_PI_SQUARED).then(|| vmath::cos_sinc_of_square::<{ vectrix_simd::FUSED }>(self))
+        (self.abs() <= vmath::HALF_PI_SQUARED)
+            .then(|| vmath::cos_sinc_of_square::<{ vectrix_simd::FUSED }>(self))
     }
     #[inline(always)]
     fn fast_path<P: FastPath>(x: P::Input<f64>) -> P::Output<f64> {
@@ -278,6 +280,12 @@ mod tests {
         }
         assert!(edge.next_up().fast_cos_sinc_of_square().is_none());
         assert!(f64::NAN.fast_cos_sinc_of_square().is_none());
+        let (ch, sh) = (-1.0f64).fast_cos_sinc_of_square().expect("in range");
+        assert!(
+            (ch - 1f64.cosh()).abs() <= 2.0 * f64::EPSILON * ch
+                && (sh - 1f64.sinh()).abs() <= 2.0 * f64::EPSILON
+        );
+        assert!((-edge).next_down().fast_cos_sinc_of_square().is_none());
         assert!(Dual64::from(0.5).fast_cos_sinc_of_square().is_none());
     }
 }
