@@ -6,10 +6,14 @@
 //! Run: `cargo bench --bench kernel -- --warm-up-time 1 --measurement-time 3`.
 //! Each micro-benchmark maps over N = 1024 inputs per iteration so that loop overhead and
 //! black-box costs are amortised identically for both sides.
+//!
+//! Instruction counts: `VECTRIX_ICOUNT=hooke_apply_many:calls` runs `calls` calls of
+//! `HookeMap::apply_many` on N strains and exits (for callgrind at 1000 and 2000 calls; the
+//! difference / (1000·N) is the count per strain).
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
 use nalgebra::{Matrix3, SMatrix, SVector, UnitQuaternion, Vector3};
 use vectrix::prelude::*;
 
@@ -256,4 +260,36 @@ fn hooke_million(c: &mut Criterion) {
 }
 
 criterion_group!(benches, vector_ops, dyadic_and_resolve, rotor_sandwich, hooke, hooke_million);
-criterion_main!(benches);
+
+/// `VECTRIX_ICOUNT=hooke_apply_many:calls`: `calls` calls of `HookeMap::apply_many` on N
+/// strains, then exit (for callgrind).
+fn icount_driver() -> bool {
+    let Ok(spec) = std::env::var("VECTRIX_ICOUNT") else { return false };
+    let (name, calls) = spec.split_once(':').expect("VECTRIX_ICOUNT=name:calls");
+    assert_eq!(name, "hooke_apply_many", "the one instruction-count driver of this bench");
+    let calls: usize = calls.parse().expect("a number of calls");
+    let a = Frame::new();
+    let mut s = 11u64;
+    let strains: Vec<Dyadic> = (0..N)
+        .map(|_| {
+            let m = Matrix3::from_fn(|_, _| lcg(&mut s));
+            a.dyadic(&((m + m.transpose()) * 0.5))
+        })
+        .collect();
+    let map = HookeMap::new(&Isotropic::from_lame(1.2, 0.8).unwrap().stiffness()).unwrap();
+    let mut out = vec![Dyadic::zero(); N];
+    for _ in 0..calls {
+        map.apply_many(black_box(&strains), &mut out).unwrap();
+        black_box(&mut out);
+    }
+    println!("{name} calls={calls} sigma={:?}", out[0].resolve(&a)[(0, 0)]);
+    true
+}
+
+fn main() {
+    if icount_driver() {
+        return;
+    }
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}

@@ -6,11 +6,16 @@
 //! size of scipy's batched calls.
 //!
 //! Run: `cargo bench --bench rotation -- --warm-up-time 1 --measurement-time 3`.
+//!
+//! Instruction counts (repeatable on a loaded machine): with `VECTRIX_ICOUNT=conversion:passes`
+//! the binary runs `passes` passes of one conversion over the N inputs and exits (the names
+//! are those of [`icount_driver`]); run it under `valgrind --tool=callgrind` at 1000 and 2000
+//! passes, and the difference / (1000·N) is the count per conversion (set-up cancels).
 //! Peer (scipy, batched, per rotation): `~/.venv-peers/bin/python ../shared/peers/bench_rotation.py`.
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
 use nalgebra::{Matrix3, Rotation3, Unit, UnitQuaternion, Vector3};
 use vectrix::prelude::*;
 
@@ -231,4 +236,70 @@ fn batched(c: &mut Criterion) {
 }
 
 criterion_group!(benches, compose_apply, conversions, batched);
-criterion_main!(benches);
+
+/// `VECTRIX_ICOUNT=conversion:passes`: `passes` passes of one conversion over the N inputs of
+/// [`data`], then exit (for callgrind).
+fn icount_driver() -> bool {
+    let Ok(spec) = std::env::var("VECTRIX_ICOUNT") else { return false };
+    let (name, passes) = spec.split_once(':').expect("VECTRIX_ICOUNT=conversion:passes");
+    let passes: usize = passes.parse().expect("a number of passes");
+    let d = data();
+    let axes: Vec<(Vector3<f64>, f64)> = d
+        .quat
+        .iter()
+        .map(|q| (q.axis_angle().axis().expect("not identity"), q.axis_angle().angle()))
+        .collect();
+    let sum = |v: Vector3<f64>| v.x + v.y + v.z;
+    let pass = || -> f64 {
+        match name {
+            "matrix_to_quaternion" => {
+                d.mat.iter().map(|m| Quaternion::from_rotation_matrix_unchecked(black_box(m)).a).sum()
+            }
+            "matrix_to_rotvec" => {
+                d.mat.iter().map(|m| sum(Quaternion::angle_vector_of_rotation_matrix(black_box(m)))).sum()
+            }
+            "axis_angle_to_quaternion" => axes
+                .iter()
+                .map(|(n, t)| Quaternion::from_axis_angle(black_box(n), black_box(*t)).expect("unit").a)
+                .sum(),
+            "rotvec_to_quaternion" => {
+                d.rotvec.iter().map(|v| Quaternion::from_angle_vector(black_box(v)).a).sum()
+            }
+            "quaternion_to_rotvec" => d.quat.iter().map(|q| sum(black_box(q).angle_vector())).sum(),
+            "quaternion_to_euler321" => d
+                .quat
+                .iter()
+                .map(|q| {
+                    EulerAngles::from_quaternion(black_box(q), EulerSequence::S321).principal().angles[0]
+                })
+                .sum(),
+            "euler321_to_quaternion" => d.euler.iter().map(|e| black_box(e).quaternion().a).sum(),
+            "batched_from_rotvec" => Quaternion::from_angle_vectors(black_box(&d.rotvec))
+                .expect("finite")
+                .iter()
+                .map(|q| q.a)
+                .sum(),
+            "batched_as_euler321" => EulerAngles::from_quaternions(black_box(&d.quat), EulerSequence::S321)
+                .expect("unit")
+                .angles()
+                .iter()
+                .map(|a| a[0])
+                .sum(),
+            other => panic!("unknown conversion {other}"),
+        }
+    };
+    let mut sink = 0.0;
+    for _ in 0..passes {
+        sink += pass();
+    }
+    println!("{name} passes={passes} sink={sink}");
+    true
+}
+
+fn main() {
+    if icount_driver() {
+        return;
+    }
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}

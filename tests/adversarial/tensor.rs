@@ -385,6 +385,44 @@ cases! {
         assert_eq!(<f64 as Scalar>::eps(), EPS);
     }
 
+    // The fast-path hooks of Scalar: for f64 within 1 ulp of libm's values on each side (2ε
+    // apart for |value| ≤ 1; 2ε relative for atan2), libm's NaN for NaN and ±∞, the same bits
+    // one, three and a slice at a time; the series of cos h and sin h / h only on its range.
+    scalar_hooks ["Scalar::fast_sin_cos", "Scalar::fast_sin_cos3", "Scalar::fast_sin_cos_slices",
+        "Scalar::fast_atan2", "Scalar::fast_cos_sinc_of_square"] {
+        let xs: Vec<f64> = hostile().collect();
+        let (mut s, mut c) = (vec![0.0; xs.len()], vec![0.0; xs.len()]);
+        f64::fast_sin_cos_slices(&xs, &mut s, &mut c);
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+        for (k, &a) in xs.iter().enumerate() {
+            let (fs, fc) = a.fast_sin_cos();
+            let (ls, lc) = a.sin_cos();
+            assert!(same(fs, ls) || (fs - ls).abs() <= 2.0 * EPS, "sin {a:e}: {fs:e} vs {ls:e}");
+            assert!(same(fc, lc) || (fc - lc).abs() <= 2.0 * EPS, "cos {a:e}: {fc:e} vs {lc:e}");
+            assert!(same(s[k], fs) && same(c[k], fc), "slices at {a:e}");
+            for (t3, c3) in f64::fast_sin_cos3([a, 0.5, a]) {
+                assert!(t3.is_nan() || t3.abs() <= 1.0, "sin_cos3 at {a:e}");
+                assert!(c3.is_nan() || c3.abs() <= 1.0, "sin_cos3 at {a:e}");
+            }
+            for b in hostile() {
+                let (f, l) = (a.fast_atan2(b), a.atan2(b));
+                assert!(same(f, l) || (f - l).abs() <= 2.0 * EPS * l.abs(), "atan2({a:e}, {b:e})");
+            }
+            if let Some((ch, sinc)) = a.fast_cos_sinc_of_square() {
+                // cos √u and sin √u / √u, continued to cosh √−u and sinh √−u / √−u for u < 0
+                let (want_c, want_s) = if a >= 0.0 {
+                    let h = a.sqrt();
+                    (h.cos(), if h == 0.0 { 1.0 } else { h.sin() / h })
+                } else {
+                    let g = (-a).sqrt();
+                    (g.cosh(), g.sinh() / g)
+                };
+                assert!((ch - want_c).abs() <= 4.0 * EPS * want_c.abs().max(1.0), "cos_sinc({a:e})");
+                assert!((sinc - want_s).abs() <= 4.0 * EPS * want_s.abs().max(1.0), "cos_sinc({a:e})");
+            }
+        }
+    }
+
     // Elasticity: moduli are validated (NaN, negative, ν ≥ ½ refused); Hooke's law maps a
     // symmetric strain to a symmetric stress, and strain(stress(ε)) = ε.
     elasticity_hostile ["Isotropic::from_lame", "Isotropic::from_young_poisson", "Isotropic::lambda",

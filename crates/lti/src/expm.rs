@@ -60,38 +60,30 @@ fn mul_into(dst: MatMut<'_, f64>, acc: Accum, a: MatRef<'_, f64>, b: MatRef<'_, 
     faer::linalg::matmul::matmul(dst, acc, a, b, alpha, par);
 }
 
-/// Two linear combinations of the same three matrices in one pass (each matrix read once;
-/// column slices of an owned faer matrix are contiguous): d₁ ← Σ cₖMₖ + e₁I,
-/// d₂ ← Σ c'ₖMₖ + e₂I. Compiled for AVX2 (four lanes) when the CPU has it and FMA, detected at
-/// run time; the sums are plain multiply–adds, so the results do not depend on the CPU.
-fn combine2(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) {
-    #[inline(always)]
-    fn body(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) {
-        for j in 0..d1.ncols() {
-            let (x0, x1, x2) = (m[0].col_as_slice(j), m[1].col_as_slice(j), m[2].col_as_slice(j));
-            let (o1, o2) = (d1.col_as_slice_mut(j), d2.col_as_slice_mut(j));
-            let len = o1.len().min(o2.len()).min(x0.len()).min(x1.len()).min(x2.len());
-            let (o1, o2, x0, x1, x2) = (&mut o1[..len], &mut o2[..len], &x0[..len], &x1[..len], &x2[..len]);
-            for i in 0..len {
-                o1[i] = c[0][0] * x0[i] + c[0][1] * x1[i] + c[0][2] * x2[i];
-                o2[i] = c[1][0] * x0[i] + c[1][1] * x1[i] + c[1][2] * x2[i];
-            }
-            o1[j] += e[0];
-            o2[j] += e[1];
+vectrix_simd::dispatch! {
+    /// Two linear combinations of the same three matrices in one pass (each matrix read once;
+    /// column slices of an owned faer matrix are contiguous): d₁ ← Σ cₖMₖ + e₁I,
+    /// d₂ ← Σ c'ₖMₖ + e₂I. Compiled for AVX2 (four lanes) when the CPU has it, detected at run
+    /// time; the sums are plain multiplies and adds, so the results do not depend on the CPU.
+    fn combine2(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) =
+        combine2_body;
+}
+
+/// The body of [`combine2`].
+#[inline(always)]
+fn combine2_body(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) {
+    for j in 0..d1.ncols() {
+        let (x0, x1, x2) = (m[0].col_as_slice(j), m[1].col_as_slice(j), m[2].col_as_slice(j));
+        let (o1, o2) = (d1.col_as_slice_mut(j), d2.col_as_slice_mut(j));
+        let len = o1.len().min(o2.len()).min(x0.len()).min(x1.len()).min(x2.len());
+        let (o1, o2, x0, x1, x2) = (&mut o1[..len], &mut o2[..len], &x0[..len], &x1[..len], &x2[..len]);
+        for i in 0..len {
+            o1[i] = c[0][0] * x0[i] + c[0][1] * x1[i] + c[0][2] * x2[i];
+            o2[i] = c[1][0] * x0[i] + c[1][1] * x1[i] + c[1][2] * x2[i];
         }
+        o1[j] += e[0];
+        o2[j] += e[1];
     }
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "avx2,fma")]
-        fn avx2_fma(d1: &mut Mat<f64>, d2: &mut Mat<f64>, m: [&Mat<f64>; 3], c: [[f64; 3]; 2], e: [f64; 2]) {
-            body(d1, d2, m, c, e);
-        }
-        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
-            // SAFETY: AVX2 and FMA were detected on this CPU just above.
-            return unsafe { avx2_fma(d1, d2, m, c, e) };
-        }
-    }
-    body(d1, d2, m, c, e);
 }
 
 /// ‖A‖₁ without overflow: the norm of A/2^E and E (‖A‖₁ = 2^E·returned norm); E = 0 unless

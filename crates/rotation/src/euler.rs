@@ -21,7 +21,6 @@ use nalgebra::Matrix3;
 use vectrix_tensor::Scalar;
 
 use crate::axis::{quaternion_about_sin_cos, rotation_about_sin_cos, times_rotation_about};
-use crate::series::sin_cos3;
 use crate::{Axis, Quaternion, RotationError};
 
 /// Intrinsic (about the new, moving axes: the book's definition) or extrinsic (about the
@@ -173,7 +172,7 @@ impl<T: Scalar> EulerAngles<T> {
         // entries that carry the factor cos β (or sin β) stay relatively accurate here, while
         // 𝓡(q) forms them by cancellation, which makes the extraction lose ε/cos β.
         let [i, j, k] = self.sequence.axes;
-        let [(sa, ca), (sb, cb), (sc, cc)] = sin_cos3(self.angles);
+        let [(sa, ca), (sb, cb), (sc, cc)] = T::fast_sin_cos3(self.angles);
         match self.sequence.kind {
             EulerKind::Intrinsic => {
                 let m = times_rotation_about(&rotation_about_sin_cos(i, sa, ca), j, sb, cb);
@@ -210,7 +209,7 @@ impl<T: Scalar> EulerAngles<T> {
         let [i, j, k] = self.sequence.axes;
         let half = T::lit(0.5);
         let [a, b, c] = self.angles;
-        let [(sa, ca), (sb, cb), (sc, cc)] = sin_cos3([a * half, b * half, c * half]);
+        let [(sa, ca), (sb, cb), (sc, cc)] = T::fast_sin_cos3([a * half, b * half, c * half]);
         match self.sequence.kind {
             EulerKind::Intrinsic => quaternion_about_sin_cos(i, sa, ca)
                 .times_elementary_sin_cos(j, sb, cb)

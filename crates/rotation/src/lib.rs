@@ -59,6 +59,7 @@ mod error;
 mod euler;
 mod euler_extract;
 mod euler_parameters;
+mod f64;
 mod interop;
 mod matrix;
 mod mrp;
@@ -69,7 +70,6 @@ mod rotation;
 #[cfg(feature = "serde")]
 mod serde_impl;
 mod series;
-mod vmath;
 
 pub use axis::{Axis, orientation_about, quaternion_about, rotation_about};
 pub use axis_angle::AxisAngle;

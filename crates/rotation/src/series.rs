@@ -2,88 +2,30 @@
 //!
 //! Book: §2.14, (2.14.12–15); notes ch2b §3.4–3.5.
 
-use core::any::Any;
-
 use nalgebra::Vector3;
 use vectrix_tensor::Scalar;
 
-use crate::vmath;
-
-/// (sin x, cos x). For `f64` arguments with |x| ≤ 2·10⁵ this is the branch-free fdlibm kernel
-/// of [`vmath::sin_cos`] (one shared argument reduction, each result within 1 ulp, inlined:
-/// no call, so the caller keeps its registers); other scalars (dual numbers,
-/// `f32`) and larger or non-finite arguments take `T::sin_cos`. The type test is resolved at
-/// compile time (every [`Scalar`] is `'static`).
+/// (sin x, cos x): [`Scalar::fast_sin_cos`]. For `f64` arguments with |x| ≤ 2·10⁵ this is the
+/// branch-free fdlibm kernel (one shared argument reduction, each result within 1 ulp, inlined:
+/// no call, so the caller keeps its registers); other scalars (dual numbers, `f32`) and larger
+/// or non-finite arguments take `T::sin_cos`.
 ///
-/// Public as [`crate::sin_cos`] for the other layers' hot loops (the joint angles of
-/// `vectrix-dynamics`' ABA).
+/// Public for the other layers' hot loops; [`crate::sin_cos_slices`] is the same over a slice.
 ///
 /// Book: (2.12.17–19), (2.15.20): the elementary rotations and quaternions.
 #[inline(always)]
 pub fn sin_cos<T: Scalar>(x: T) -> (T, T) {
-    if let Some(&v) = (&x as &dyn Any).downcast_ref::<f64>()
-        && v.abs() <= vmath::SIN_COS_MAX
-    {
-        let (s, c) = vmath::sin_cos::<false>(v);
-        return (T::lit(s), T::lit(c));
-    }
-    x.sin_cos()
+    x.fast_sin_cos()
 }
 
-/// [`sin_cos`] of three arguments. For `f64` with every |xᵢ| ≤ 2·10⁵ the three branch-free
-/// kernels run side by side in one branch-free loop over four lanes, which the compiler may
-/// vectorise (measured: Euler 3-2-1 → quaternion 0.71–0.85× nalgebra's three `sin_cos` calls,
-/// docs/performance.md "Rotations").
-///
-/// Book: (2.12.33), F2.15.7: the three elementary factors of an Euler sequence.
-#[inline(always)]
-pub(crate) fn sin_cos3<T: Scalar>(x: [T; 3]) -> [(T, T); 3] {
-    if let Some(v) = (&x as &dyn Any).downcast_ref::<[f64; 3]>()
-        && v.iter().all(|a| a.abs() <= vmath::SIN_COS_MAX)
-    {
-        let lanes = [v[0], v[1], v[2], 0.0];
-        let mut s = [0.0; 4];
-        let mut c = [0.0; 4];
-        for k in 0..4 {
-            (s[k], c[k]) = vmath::sin_cos::<false>(lanes[k]);
-        }
-        return [0, 1, 2].map(|k| (T::lit(s[k]), T::lit(c[k])));
-    }
-    x.map(|a| a.sin_cos())
-}
-
-/// (cos h, sin h / h) from u = h² for `f64` with u ≤ (π/2)²: the Taylor series of
-/// [`vmath::cos_sinc_of_square`] (no square root, no range reduction, no division); `None`
-/// for other scalars or larger u.
-///
-/// Book: (2.14.5), Prob 2.26.22: q = (cos θ/2, ½ sinc(θ/2) Θ).
-#[inline(always)]
-pub(crate) fn cos_sinc_of_square<T: Scalar>(u: T) -> Option<(T, T)> {
-    if let Some(&v) = (&u as &dyn Any).downcast_ref::<f64>()
-        && v <= vmath::HALF_PI_SQUARED
-    {
-        let (c, s) = vmath::cos_sinc_of_square::<false>(v);
-        return Some((T::lit(c), T::lit(s)));
-    }
-    None
-}
-
-/// atan2(y, x) in [−π, π]. For finite `f64` arguments other than (0, 0) this is the fdlibm
-/// kernel of [`vmath::atan2`] (within 1 ulp, inlined); other scalars and the special
-/// arguments take `T::atan2` (the `libm` rules for zeros, infinities and NaN).
+/// atan2(y, x) in [−π, π]: [`Scalar::fast_atan2`], for finite `f64` arguments other than
+/// (0, 0) fdlibm's kernel (within 1 ulp, inlined); other scalars and the special arguments
+/// take `T::atan2` (the `libm` rules for zeros, infinities and NaN).
 ///
 /// Book: §2.11 (θ = 2 atan2(|ε|, η)), §2.13 (Euler angles).
 #[inline(always)]
 pub(crate) fn atan2<T: Scalar>(y: T, x: T) -> T {
-    if let (Some(&a), Some(&b)) =
-        ((&y as &dyn Any).downcast_ref::<f64>(), (&x as &dyn Any).downcast_ref::<f64>())
-        && a.is_finite()
-        && b.is_finite()
-        && (a != 0.0 || b != 0.0)
-    {
-        return T::lit(vmath::atan2::<false>(a, b));
-    }
-    y.atan2(x)
+    y.fast_atan2(x)
 }
 
 /// sin x / x, with the Taylor series 1 − x²/6 + x⁴/120 below |x| = 1e-3 (the next term,

@@ -4,11 +4,11 @@
 //! With 𝒦 = Σ c_klmn ê_k⊗ê_l⊗ê′_m⊗ê′_n the law reads σ_kn = Σ_lm c_klmn ε_ml (3.4.5); the
 //! conventional C_ijkl of σ_ij = C_ijkl ε_kl is C_ijkl = c_ilkj (ch. 3 notes).
 
-use std::any::Any;
+use core::marker::PhantomData;
 
 use nalgebra::{SMatrix, SVector};
 
-use crate::{Dyadic, Scalar, Tensor, TensorError};
+use crate::{Dyadic, FastPath, Scalar, Tensor, TensorError};
 
 /// Hooke's law σ = (𝒦⊗ε)_(2,3),(3,1) by the general fused contraction (3.4.4).
 ///
@@ -38,7 +38,7 @@ fn check_stiffness<T: Scalar>(k: &Tensor<T>) -> Result<(), TensorError> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HookeMap<T: Scalar = f64> {
     /// vec(σ) = H vec(ε), vec stacking the hidden components column by column.
-    h: SMatrix<T, 9, 9>,
+    pub(crate) h: SMatrix<T, 9, 9>,
 }
 
 impl<T: Scalar> HookeMap<T> {
@@ -79,78 +79,29 @@ impl<T: Scalar> HookeMap<T> {
                 ),
             });
         }
-        // f64 (the common case): the 81 multiply-adds column by column with AVX2 + FMA when the
-        // CPU has them (detected at run time); other scalar types (dual numbers) use `apply`
-        if let Some(h) = (&self.h as &dyn Any).downcast_ref::<SMatrix<f64, 9, 9>>() {
-            let mut cols = [0.0f64; 81];
-            cols.copy_from_slice(h.as_slice());
-            apply_many_f64(&cols, eps, out, |s, e| *s = self.apply(e));
-        } else {
-            for (s, e) in out.iter_mut().zip(eps) {
-                *s = self.apply(e);
-            }
-        }
+        // f64: the 81 multiply-adds column by column in SIMD (`crate::f64::hooke`)
+        T::fast_path::<ApplyMany<'_>>((self, eps, out));
         Ok(())
     }
 }
 
-/// a·b + c, fused when compiled for FMA.
-#[inline(always)]
-fn madd<const FMA: bool>(a: f64, b: f64, c: f64) -> f64 {
-    if FMA { a.mul_add(b, c) } else { a * b + c }
-}
+/// [`HookeMap::apply_many`] after the length check: [`HookeMap::apply`] strain by strain, or
+/// the `f64` kernel.
+struct ApplyMany<'a>(PhantomData<&'a ()>);
 
-/// vec(σ) = H vec(ε) for each pair, H given column-major; `T` is f64 in every call (the
-/// downcasts fold away), `fallback` covers the type system's other case.
-#[inline(always)]
-fn apply_many_kernel<const FMA: bool, T: Scalar>(
-    h: &[f64; 81],
-    eps: &[Dyadic<T>],
-    out: &mut [Dyadic<T>],
-    fallback: &impl Fn(&mut Dyadic<T>, &Dyadic<T>),
-) {
-    for (s, e) in out.iter_mut().zip(eps) {
-        let Some(e64) = (e as &dyn Any).downcast_ref::<Dyadic<f64>>() else {
-            fallback(s, e);
-            continue;
-        };
-        let x = e64.m.as_slice();
-        let mut acc = [0.0f64; 9];
-        for (col, &xj) in h.chunks_exact(9).zip(x) {
-            for (a, &c) in acc.iter_mut().zip(col) {
-                *a = madd::<FMA>(c, xj, *a);
-            }
-        }
-        if let Some(s64) = (s as &mut dyn Any).downcast_mut::<Dyadic<f64>>() {
-            s64.m.as_mut_slice().copy_from_slice(&acc);
+impl<'a> FastPath for ApplyMany<'a> {
+    type Input<T: Scalar> = (&'a HookeMap<T>, &'a [Dyadic<T>], &'a mut [Dyadic<T>]);
+    type Output<T: Scalar> = ();
+
+    fn generic<T: Scalar>((map, eps, out): Self::Input<T>) {
+        for (s, e) in out.iter_mut().zip(eps) {
+            *s = map.apply(e);
         }
     }
-}
 
-/// [`apply_many_kernel`] compiled for AVX2 + FMA when the CPU has them, portable otherwise.
-fn apply_many_f64<T: Scalar>(
-    h: &[f64; 81],
-    eps: &[Dyadic<T>],
-    out: &mut [Dyadic<T>],
-    fallback: impl Fn(&mut Dyadic<T>, &Dyadic<T>),
-) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "avx2,fma")]
-        fn avx2_fma<T: Scalar>(
-            h: &[f64; 81],
-            eps: &[Dyadic<T>],
-            out: &mut [Dyadic<T>],
-            fallback: &impl Fn(&mut Dyadic<T>, &Dyadic<T>),
-        ) {
-            apply_many_kernel::<true, T>(h, eps, out, fallback);
-        }
-        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
-            // SAFETY: AVX2 and FMA were detected on this CPU just above.
-            return unsafe { avx2_fma(h, eps, out, &fallback) };
-        }
+    fn f64((map, eps, out): Self::Input<f64>) {
+        crate::f64::hooke::apply_many(&map.h, eps, out);
     }
-    apply_many_kernel::<false, T>(h, eps, out, &fallback);
 }
 
 /// An isotropic linear elastic material given by its Lamé constants λ, μ (3.4.11).

@@ -20,6 +20,7 @@ mod covector;
 mod dyadic;
 mod elasticity;
 mod error;
+mod f64;
 mod multivector;
 mod pauli;
 mod rotor;
@@ -39,6 +40,8 @@ pub use elasticity::{HookeMap, Isotropic, hooke};
 pub use error::{TensorError, check_tolerance};
 pub use multivector::Multivector;
 pub use rotor::{Rotor, reflect};
+#[doc(hidden)]
+pub use scalar::FastPath;
 pub use scalar::Scalar;
 pub use tensor::{Arg, DEFAULT_MAX_COMPONENTS, Tensor};
 pub use trivector::Trivector;

@@ -1,5 +1,6 @@
-//! Branch-free sin/cos and atan2 for the batched conversions ([`crate::batch`]), also inlined
-//! into the one-rotation conversions for `f64` ([`crate::series`]).
+//! Branch-free sin/cos and atan2 for the `f64` paths of vectrix: `Scalar`'s hooks for `f64`
+//! (vectrix-tensor), the batched conversions of vectrix-rotation and the joint angles of the
+//! planar passes.
 //!
 //! These are fdlibm's kernels (the C library behind most `libm`s: `e_rem_pio2.c`, `k_sin.c`,
 //! `k_cos.c`, `s_atan.c`, `e_atan2.c`, © Sun Microsystems, freely redistributable) rewritten
@@ -8,24 +9,15 @@
 //! the ranges used here; `tests` below measure the error against the platform's `libm` over
 //! hard sets (near 0, near multiples of π/2, both axes, every octant).
 //!
-//! `F` selects fused multiply–add: `true` only where the CPU has it (an FMA instruction), since
-//! otherwise `f64::mul_add` is a slow software routine. Both variants are accurate; they may
+//! `F` selects fused multiply–add ([`madd`]); the callers pass [`crate::FUSED`] (one value)
+//! or [`crate::FUSED_LOOPS`] (the batched conversions). Both variants are accurate; they may
 //! differ in the last bit.
 
 // The constants are fdlibm's decimal literals verbatim (so they can be checked against its
 // source); they round to the same doubles as the shorter forms clippy suggests.
 #![allow(clippy::excessive_precision)]
 
-/// `true` when the build target guarantees fused multiply–add (aarch64, or x86-64 compiled with
-/// `+fma`); otherwise the callers detect it when the program runs (`batch`'s SIMD entries, the
-/// f64 matrix log and axis-angle paths of `euler_parameters`).
-pub(crate) const FMA_BUILTIN: bool = cfg!(any(target_feature = "fma", target_arch = "aarch64"));
-
-/// a·b + c, fused when `F`.
-#[inline(always)]
-pub(crate) fn madd<const F: bool>(a: f64, b: f64, c: f64) -> f64 {
-    if F { a.mul_add(b, c) } else { a * b + c }
-}
+use crate::{FUSED, madd};
 
 /// 1.5·2⁵²: adding it rounds a double of magnitude < 2⁵¹ to an integer held in the low bits.
 const TOINT: f64 = 6_755_399_441_055_744.0;
@@ -38,8 +30,8 @@ const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11;
 const PIO2_2T: f64 = 2.022_266_248_795_950_631_54e-21;
 
 /// The largest |x| [`sin_cos`] reduces (|n| < 2¹⁷ ≪ 2²⁰); callers send larger or non-finite
-/// arguments to `libm`.
-pub(crate) const SIN_COS_MAX: f64 = 2.0e5;
+/// arguments to `libm` ([`sin_cos_or_libm`]).
+pub const SIN_COS_MAX: f64 = 2.0e5;
 
 const S1: f64 = -1.666_666_666_666_663_243_48e-1;
 const S2: f64 = 8.333_333_333_322_489_461_24e-3;
@@ -60,7 +52,7 @@ const C6: f64 = -1.135_964_755_778_819_482_65e-11;
 /// quadrant n mod 4 chosen by selects. Outside the range the result is meaningless (callers
 /// check).
 #[inline(always)]
-pub(crate) fn sin_cos<const F: bool>(x: f64) -> (f64, f64) {
+pub fn sin_cos<const F: bool>(x: f64) -> (f64, f64) {
     // n = round(x·2/π); the low bits of t hold n mod 4 (two's complement, also for n < 0).
     let t = x * INV_PIO2 + TOINT;
     let n = t - TOINT;
@@ -90,8 +82,50 @@ pub(crate) fn sin_cos<const F: bool>(x: f64) -> (f64, f64) {
     (sin, cos)
 }
 
+/// (sin x, cos x) by [`sin_cos`]`::<FUSED>` for |x| ≤ [`SIN_COS_MAX`], by `libm` beyond and
+/// for NaN or ±∞: what `Scalar::fast_sin_cos` returns for `f64`.
+#[inline(always)]
+pub fn sin_cos_or_libm(x: f64) -> (f64, f64) {
+    if x.abs() <= SIN_COS_MAX { sin_cos::<FUSED>(x) } else { x.sin_cos() }
+}
+
+crate::dispatch! {
+    /// [`sin_cos_or_libm`] of every element of `x` into `sin` and `cos` (zipped: the caller
+    /// passes three slices of one length). The branch-free kernel runs over every element
+    /// first, then `libm` over the few beyond its range, so the loop vectorises; compiled for
+    /// AVX2 where the CPU has it ([`crate::dispatch!`]): the same bits on every CPU.
+    pub fn sin_cos_slices(x: &[f64], sin: &mut [f64], cos: &mut [f64]) = sin_cos_all;
+}
+
+/// The body of [`sin_cos_slices`].
+#[inline(always)]
+fn sin_cos_all(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
+    for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
+        (*sk, *ck) = sin_cos::<FUSED>(*xk);
+    }
+    for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
+        if xk.is_nan() || xk.abs() > SIN_COS_MAX {
+            (*sk, *ck) = xk.sin_cos();
+        }
+    }
+}
+
+/// The range of max(|y|, |x|) on which [`atan2`] is accurate: there the products of its interval
+/// tests (up to 2.5·max) neither overflow nor, for the larger argument, underflow (below it
+/// 0.4375·5e-324 rounds to 0, and atan2(0, 5e-324) would take the wrong interval).
+pub const ATAN2_RANGE: core::ops::RangeInclusive<f64> = 1e-270..=1e300;
+
+/// atan2(y, x) by [`atan2`]`::<FUSED>` for max(|y|, |x|) in [`ATAN2_RANGE`] (NaN too, which the
+/// kernel propagates), by `libm` outside (zeros, infinities, tiny and huge pairs, with libm's
+/// rules for each): what `Scalar::fast_atan2` returns for `f64`.
+#[inline(always)]
+pub fn atan2_or_libm(y: f64, x: f64) -> f64 {
+    // `max` ignores one NaN: a NaN with a number in range takes the kernel, which returns NaN
+    if ATAN2_RANGE.contains(&y.abs().max(x.abs())) { atan2::<FUSED>(y, x) } else { y.atan2(x) }
+}
+
 /// (π/2)², the largest h² that [`cos_sinc_of_square`] takes.
-pub(crate) const HALF_PI_SQUARED: f64 = 2.467_401_100_272_339_5;
+pub const HALF_PI_SQUARED: f64 = 2.467_401_100_272_339_5;
 
 /// Taylor coefficients (−1)ᵏ/(2k)! of cos h in u = h², k = 0..11 (the k = 12 term is below
 /// 1e-19 on u ≤ (π/2)²).
@@ -137,7 +171,7 @@ fn horner<const F: bool, const N: usize>(u: f64, c: &[f64; N]) -> f64 {
 /// decreasing terms: sin h / h within 2 ulps, cos h within 2ε absolute (near h = π/2, where
 /// cos h → 0, that is the absolute accuracy the rounded input h allows anyway: cos′ = −sin).
 #[inline(always)]
-pub(crate) fn cos_sinc_of_square<const F: bool>(u: f64) -> (f64, f64) {
+pub fn cos_sinc_of_square<const F: bool>(u: f64) -> (f64, f64) {
     (horner::<F, 12>(u, &COS_U), horner::<F, 11>(u, &SINC_U))
 }
 
@@ -169,12 +203,12 @@ const AT: [f64; 11] = [
 const PI: f64 = core::f64::consts::PI;
 const PI_LO: f64 = 1.224_646_799_147_353_177_2e-16;
 
-/// atan2(y, x) within 1 ulp for finite (y, x) ≠ (0, 0) (the callers exclude the origin): fdlibm's
+/// atan2(y, x) within 1 ulp for max(|y|, |x|) in [`ATAN2_RANGE`] (the callers check): fdlibm's
 /// `s_atan.c` on p/q with p = |y|, q = |x|, its five intervals chosen by comparisons and each
 /// reduced argument formed from p and q with a single division; then `e_atan2.c`'s quadrant
 /// rule (π − (z − π_lo) for x < 0, including x = −0) and the sign of y. Range [−π, π].
 #[inline(always)]
-pub(crate) fn atan2<const F: bool>(y: f64, x: f64) -> f64 {
+pub fn atan2<const F: bool>(y: f64, x: f64) -> f64 {
     let (p, q) = (y.abs(), x.abs());
     // Intervals of p/q: [0, 7/16), [7/16, 11/16), [11/16, 19/16), [19/16, 39/16), [39/16, ∞).
     let (i0, i1, i2, i3) = (p >= 0.4375 * q, p >= 0.6875 * q, p >= 1.1875 * q, p >= 2.4375 * q);
@@ -352,6 +386,75 @@ mod tests {
     fn atan2_matches_libm_within_two_ulps() {
         for (fused, worst) in [(false, worst_atan2::<false>()), (true, worst_atan2::<true>())] {
             assert!(worst <= 2.0, "fused = {fused}: worst atan2 {worst} ulp");
+        }
+    }
+
+    /// The hook's atan2 on every pair of hostile values (zeros, subnormals, the ends of
+    /// [`ATAN2_RANGE`] and beyond, ±∞, NaN): libm's value, bit for bit outside the range and
+    /// within 2 ulps inside.
+    #[test]
+    fn atan2_or_libm_matches_libm_on_hostile_pairs() {
+        let v = [
+            0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            1e-300,
+            1e-270,
+            1e-200,
+            0.75,
+            1.0,
+            1e300,
+            1.7e308,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        for &a in &v {
+            for &b in &v {
+                for (y, x) in [(a, b), (-a, b), (a, -b), (-a, -b)] {
+                    let (got, want) = (atan2_or_libm(y, x), y.atan2(x));
+                    let ok = got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan());
+                    assert!(ok || ulps(got, want) <= 2.0, "atan2({y:e}, {x:e}) = {got:e}, libm {want:e}");
+                }
+            }
+        }
+    }
+
+    /// The hard set of the joint angles: zeros of both signs, subnormals, tiny and huge,
+    /// multiples of π/2 and their neighbours (where the reduction cancels), the reduction's
+    /// boundary 2·10⁵ and beyond, and the non-finite values; plus a pseudo-random sweep.
+    fn joint_angles() -> Vec<f64> {
+        let mut x = vec![0.0, -0.0, 5e-324, -1e-310, 1e-20, 2e5, -2e5, 2e5 + 1e-10, 1e6, -3e8, 1e300];
+        x.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY]);
+        for k in -8i32..=8 {
+            let m = f64::from(k) * core::f64::consts::FRAC_PI_2;
+            x.extend([m, m.next_up(), m.next_down()]);
+        }
+        let mut seed = 0x2545_f491_4f6c_dd1d;
+        x.extend((0..257).map(|_| 80.0 * (xorshift(&mut seed) - 0.5)));
+        x
+    }
+
+    /// The dispatched slices (AVX2 here when the CPU has it) and the portable body give the
+    /// bits of [`sin_cos_or_libm`] element by element, NaN's class included: the run-time
+    /// choice of instructions changes no bit.
+    #[test]
+    fn sin_cos_slices_is_sin_cos_element_by_element() {
+        let x = joint_angles();
+        let n = x.len();
+        let (mut s, mut c) = (vec![0.0; n], vec![0.0; n]);
+        sin_cos_slices(&x, &mut s, &mut c);
+        let (mut s2, mut c2) = (vec![0.0; n], vec![0.0; n]);
+        sin_cos_all(&x, &mut s2, &mut c2);
+        for k in 0..n {
+            let (ws, wc) = sin_cos_or_libm(x[k]);
+            for (got, want) in [(s[k], ws), (c[k], wc), (s2[k], ws), (c2[k], wc)] {
+                assert!(
+                    got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                    "x = {:e}: got {got:e}, want {want:e}",
+                    x[k]
+                );
+            }
         }
     }
 }
