@@ -1,5 +1,6 @@
 //! The ownership rules of output folders (see the module doc of `output`).
 
+use super::marker::{FILES, WRITER, temp_pid};
 use super::*;
 
 /// A sink-free fill: one file `name` with `text`.
