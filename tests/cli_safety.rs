@@ -230,6 +230,16 @@ fn issue_33_accuracy_does_not_overwrite_a_users_files() {
     assert_eq!(snapshot(dir.path()), before);
     // an `--out` that is no folder name
     assert!(cli(&["accuracy", "--quick", "--out", "/"]).is_err());
+    // a folder of its own: written, replaced, and refused once a user's file is in it
+    let own = dir.path().join("own");
+    let o = own.to_str().unwrap();
+    let (_, text) = cli(&["accuracy", "--quick", "--out", o]).unwrap();
+    assert!(text.contains(&format!("wrote {}", own.join("oscillator.svg").display())), "{text}");
+    cli(&["accuracy", "--quick", "--out", o]).unwrap();
+    std::fs::write(own.join("notes.txt"), "mine").unwrap();
+    let e = cli(&["accuracy", "--quick", "--out", o]).unwrap_err();
+    assert!(e.contains("holds files vectrix did not write: notes.txt"), "{e}");
+    assert_eq!(std::fs::read_to_string(own.join("notes.txt")).unwrap(), "mine");
 }
 
 /// Finding 3: `sweep` and `linearize` follow the rule of `run`: a folder vectrix did not
