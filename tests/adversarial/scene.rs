@@ -108,10 +108,18 @@ cases! {
     // hostile sample count and name, is refused at its line and column or gives a sound
     // scene; save → load gives the same scene.
     scene_loading ["Scene::from_toml", "Scene::from_source", "Scene::from_spec", "Scene::from_spec_in", "Scene::spec",
-        "Scene::to_toml", "Scene::model", "Scene::initial_state", "Scene::invariants", "Invariant::name"] {
+        "Scene::to_toml", "Scene::model", "Scene::initial_state", "Scene::invariants", "Invariant::name",
+        "Scene::columns"] {
         let text = double_pendulum([0.4, -0.3], "");
         let s = Scene::from_toml(&text, "dp.toml").unwrap();
         assert!(sound(&s));
+        // the columns a run writes are known before it runs; a repeated output is refused
+        assert_eq!(s.columns(), ["coordinates:upper.0", "energy"]);
+        let twice = text.replacen("outputs = [\"coordinates:upper\", \"energy\"]", "outputs = [\"energy\", \"energy\"]", 1);
+        match Scene::from_toml(&twice, "dp.toml") {
+            Ok(_) => panic!("a repeated output accepted"),
+            Err(e) => assert!(located(&e) && e.to_string().contains("repeats outputs[0]"), "{e}"),
+        }
         assert_eq!(s.model().nq(), 2);
         assert!(s.invariants().iter().any(|i| i.name() == "energy"));
         assert!(s.invariants().iter().all(|i| ["energy", "momentum", "angular_momentum"].contains(&i.name())));

@@ -4,7 +4,6 @@
 //!
 //! Book: §4.11; HNW §II.10 (work–precision diagrams).
 
-use std::error::Error;
 use std::io::Write;
 use std::path::Path;
 
@@ -12,23 +11,47 @@ use vectrix_ode::ACCURACY_TABLE;
 use vectrix_ode::harness::{Budget, FILE_STEMS, PROBLEMS, Point, cheapest, derive_accuracy, run_all};
 use vectrix_plot::LineChart;
 
+use crate::output::{BoxError, write_dir};
+use crate::sink::Limits;
+
 /// Target errors of the "cheapest method" table.
 const TARGETS: [f64; 4] = [1e-3, 1e-6, 1e-9, 1e-12];
 
-/// Runs the harness, writes `<dir>/<problem>.svg` and prints the tables as markdown.
-/// `all` also prints every measured point.
+/// Runs the harness, writes `<dir>/<problem>.svg` (the folder `dir` written like a scene's
+/// output folder, see [`crate::output`]) and prints the tables as markdown. `all` also prints
+/// every measured point.
 ///
 /// # Errors
-/// I/O errors writing the SVGs or the output; plot errors.
-pub fn run(out: &mut impl Write, dir: &Path, quick: bool, all: bool) -> Result<(), Box<dyn Error>> {
+/// A `dir` that is not a folder name vectrix may write, I/O errors writing the SVGs or the
+/// output, plot errors.
+pub fn run(
+    out: &mut impl Write,
+    dir: &Path,
+    quick: bool,
+    all: bool,
+    max_bytes: u64,
+) -> Result<crate::run::Outcome, BoxError> {
+    let (parent, name) = split_dir(dir)?;
+    crate::output::preflight(parent, name)?;
     let budget = if quick { Budget::Quick } else { Budget::Full };
     let points = run_all(budget);
-    std::fs::create_dir_all(dir)?;
-    for (problem, stem) in PROBLEMS.iter().zip(FILE_STEMS) {
-        let svg = diagram(&points, problem)?;
-        let path = dir.join(format!("{stem}.svg"));
-        std::fs::write(&path, svg)?;
-        writeln!(out, "wrote {}", path.display())?;
+    let figures = PROBLEMS
+        .iter()
+        .zip(FILE_STEMS)
+        .map(|(problem, stem)| Ok((format!("{stem}.svg"), diagram(&points, problem)?)))
+        .collect::<Result<Vec<_>, BoxError>>()?;
+    let limits = Limits { max_bytes, reserve: 4096 };
+    let w = write_dir(parent, name, limits, |sink| {
+        for (file, svg) in &figures {
+            sink.data(file, svg.as_bytes())?;
+        }
+        Ok(())
+    })?;
+    for f in &w.files {
+        writeln!(out, "wrote {}", w.dest.join(f).display())?;
+    }
+    if w.halt.is_some() {
+        writeln!(out, "INCOMPLETE output: writing stopped before every figure was written")?;
     }
     writeln!(out)?;
     cheapest_table(out, &points)?;
@@ -58,7 +81,20 @@ pub fn run(out: &mut impl Write, dir: &Path, quick: bool, all: bool) -> Result<(
             )?;
         }
     }
-    Ok(())
+    Ok(crate::run::outcome(None, w.halt))
+}
+
+/// `docs/accuracy/integrators` → (`docs/accuracy`, `integrators`): the parent folder and the
+/// folder's name, which must be a plain name vectrix may write.
+fn split_dir(dir: &Path) -> Result<(&Path, &str), BoxError> {
+    let name = dir.file_name().and_then(|n| n.to_str()).ok_or_else(|| {
+        format!(
+            "--out {}: not a folder name; valid: a path ending in a folder name, e.g. out/accuracy",
+            dir.display()
+        )
+    })?;
+    let parent = dir.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    Ok((parent, name))
 }
 
 /// Methods in the order they appear in `points` for `problem`.
@@ -74,7 +110,7 @@ fn methods<'a>(points: &'a [Point], problem: &str) -> Vec<&'a str> {
 
 /// The diagram of one problem: error against time, log–log, one line per method (points
 /// with error above 10 or not finite are left out: the run blew up).
-fn diagram(points: &[Point], problem: &str) -> Result<String, Box<dyn Error>> {
+fn diagram(points: &[Point], problem: &str) -> Result<String, BoxError> {
     let mut chart = LineChart::new(
         format!("Work–precision: {problem}"),
         "wall time of one run [s]",
@@ -96,7 +132,7 @@ fn diagram(points: &[Point], problem: &str) -> Result<String, Box<dyn Error>> {
 }
 
 /// For each problem and target error: the cheapest method that reached it.
-fn cheapest_table(out: &mut impl Write, points: &[Point]) -> Result<(), Box<dyn Error>> {
+fn cheapest_table(out: &mut impl Write, points: &[Point]) -> Result<(), BoxError> {
     writeln!(out, "### Cheapest method per target error (wall time of one run, f-evals)\n")?;
     write!(out, "| problem |")?;
     for t in TARGETS {
@@ -117,7 +153,7 @@ fn cheapest_table(out: &mut impl Write, points: &[Point]) -> Result<(), Box<dyn 
 }
 
 /// For each problem and method: time to reach 10⁻⁶ and 10⁻⁹ (or the best error reached).
-fn effort_table(out: &mut impl Write, points: &[Point]) -> Result<(), Box<dyn Error>> {
+fn effort_table(out: &mut impl Write, points: &[Point]) -> Result<(), BoxError> {
     writeln!(out, "\n### Time to reach an error, per method (best error reached if never)\n")?;
     for problem in PROBLEMS {
         writeln!(out, "**{problem}**\n")?;
@@ -141,7 +177,7 @@ fn effort_table(out: &mut impl Write, points: &[Point]) -> Result<(), Box<dyn Er
 }
 
 /// Rigid body: drift off SO(3) (|q| − 1 or |RR̄| − 1), of T and of |H| at the finest run.
-fn drift_table(out: &mut impl Write, points: &[Point]) -> Result<(), Box<dyn Error>> {
+fn drift_table(out: &mut impl Write, points: &[Point]) -> Result<(), BoxError> {
     writeln!(out, "### Rigid body: drift at the most accurate run of each method (t = 20)\n")?;
     writeln!(out, "| method | error of ω | steps or rtol | off SO(3) | ΔT/T | Δ|H|/|H| |")?;
     writeln!(out, "|---|---|---|---|---|---|")?;
@@ -160,7 +196,7 @@ fn drift_table(out: &mut impl Write, points: &[Point]) -> Result<(), Box<dyn Err
 }
 
 /// The accuracy table as derived now, next to the one compiled into `Accuracy`.
-fn derived_table(out: &mut impl Write, points: &[Point]) -> Result<(), Box<dyn Error>> {
+fn derived_table(out: &mut impl Write, points: &[Point]) -> Result<(), BoxError> {
     writeln!(out, "\n### Accuracy::RelTol table (derived now | compiled in)\n")?;
     writeln!(
         out,

@@ -11,7 +11,7 @@ use crate::output::BoxError;
 
 /// Validates and prints what the scene declares and which invariants it implies.
 pub fn check(out: &mut impl Write, path: &Path) -> Result<(), BoxError> {
-    let scene = match crate::run::load(path)? {
+    let scene = match crate::input::load(path)?.scene {
         AnyScene::Bodies(s) => *s,
         AnyScene::Flight(f) => {
             let t = &f.linearization().trim;

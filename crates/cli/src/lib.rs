@@ -8,6 +8,12 @@
 //! * `vectrix tour`, `vectrix accuracy`: the kernel tour and the integrators' work–precision
 //!   harness.
 //!
+//! Every command that writes follows one rule (the `output` module): it writes only inside
+//! the folder named with `--out`, into folders it created and marked, never replaces a folder
+//! holding a file it did not write (it names them and stops), never writes more than
+//! `--max-output-bytes` (default [`DEFAULT_MAX_OUTPUT_BYTES`]), and stops writing at a whole
+//! file on Ctrl-C or SIGTERM, marking the output incomplete.
+//!
 //! [`run_with_args`] is the library entry the binary and the tests call.
 //!
 //! Book: §7.11, ch. 6, §7.13 (what a scene simulates); §4.11 (integration).
@@ -22,15 +28,19 @@ use clap::{Parser, Subcommand};
 use vectrix_units::UnitSystem;
 
 mod accuracy;
+mod budget;
 mod check;
+mod input;
 mod linearize;
 mod output;
 mod report;
 mod run;
+mod sink;
 mod sweep;
 mod tour;
 
 pub use run::Outcome;
+pub use sink::DEFAULT_MAX_OUTPUT_BYTES;
 
 /// Command-line arguments.
 #[derive(Debug, Parser)]
@@ -58,6 +68,10 @@ pub enum Command {
         /// Unit system of trajectory.csv, the plots and summary.json: `si` or `imperial`.
         #[arg(long, default_value = "si")]
         units: String,
+        /// Most bytes the command may write (`1073741824`, `500MB`, `2GiB`): a run whose
+        /// output could exceed it is refused before it starts, and writing stops there.
+        #[arg(long, default_value = "1GiB", value_parser = sink::parse_bytes)]
+        max_output_bytes: u64,
     },
     /// Validates a scene file without running it.
     Check {
@@ -81,6 +95,10 @@ pub enum Command {
         /// Unit system of the outputs: `si` or `imperial`.
         #[arg(long, default_value = "si")]
         units: String,
+        /// Most bytes the command may write (`1073741824`, `500MB`, `2GiB`): a run whose
+        /// output could exceed it is refused before it starts, and writing stops there.
+        #[arg(long, default_value = "1GiB", value_parser = sink::parse_bytes)]
+        max_output_bytes: u64,
     },
     /// Linearizes a scene about its initial state (an equilibrium, or a steady motion when the
     /// scene says `linearize = { steady = true }`; a flight scene about its trim) and writes
@@ -92,14 +110,19 @@ pub enum Command {
         /// Parent directory of the output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Most bytes the command may write (`1073741824`, `500MB`, `2GiB`): a run whose
+        /// output could exceed it is refused before it starts, and writing stops there.
+        #[arg(long, default_value = "1GiB", value_parser = sink::parse_bytes)]
+        max_output_bytes: u64,
     },
     /// A short tour: frames, resolution, a rotor, a contraction.
     Tour,
     /// Work–precision harness of the integrators: writes the SVG diagrams into out/accuracy/
     /// and prints the tables of docs/accuracy.md (regenerate the docs' figures with
-    /// `cargo run --release -- accuracy --out docs/accuracy`).
+    /// `cargo run --release -- accuracy --out docs/accuracy/integrators`).
     Accuracy {
-        /// Directory for the SVG diagrams.
+        /// The folder of the SVG diagrams, written like a scene's output folder: created, or
+        /// replaced when vectrix wrote it and it holds nothing else.
         #[arg(long, default_value = "out/accuracy")]
         out: PathBuf,
         /// A few points per line only (seconds instead of a minute).
@@ -108,6 +131,10 @@ pub enum Command {
         /// Also print every measured point.
         #[arg(long)]
         all: bool,
+        /// Most bytes the command may write (`1073741824`, `500MB`, `2GiB`): a run whose
+        /// output could exceed it is refused before it starts, and writing stops there.
+        #[arg(long, default_value = "1GiB", value_parser = sink::parse_bytes)]
+        max_output_bytes: u64,
     },
 }
 
@@ -128,31 +155,36 @@ where
     let cli = Cli::try_parse_from(args)?;
     let done = |r: Result<(), Box<dyn std::error::Error + Send + Sync>>| r.map(|()| Outcome::Complete);
     match cli.command {
-        None => run::run(out, None, &PathBuf::from("out"), false, UnitSystem::Si),
-        Some(Command::Run { scene, out: dir, quiet, units }) => {
-            run::run(out, scene.as_deref(), &dir, quiet, units.parse::<UnitSystem>()?)
+        None => run::run(out, None, &PathBuf::from("out"), false, UnitSystem::Si, DEFAULT_MAX_OUTPUT_BYTES),
+        Some(Command::Run { scene, out: dir, quiet, units, max_output_bytes }) => {
+            run::run(out, scene.as_deref(), &dir, quiet, units.parse::<UnitSystem>()?, max_output_bytes)
         }
         Some(Command::Check { scene }) => done(check::check(out, &scene)),
-        Some(Command::Sweep { scene, param, out: dir, quiet, units }) => {
-            sweep::sweep(out, &scene, &param, &dir, quiet, units.parse::<UnitSystem>()?)
+        Some(Command::Sweep { scene, param, out: dir, quiet, units, max_output_bytes }) => {
+            let opts =
+                sweep::Options { dir: &dir, quiet, units: units.parse::<UnitSystem>()?, max_output_bytes };
+            sweep::sweep(out, &scene, &param, &opts)
         }
-        Some(Command::Linearize { scene, out: dir }) => done(linearize::linearize(out, &scene, &dir)),
+        Some(Command::Linearize { scene, out: dir, max_output_bytes }) => {
+            done(linearize::linearize(out, &scene, &dir, max_output_bytes))
+        }
         Some(Command::Tour) => done(tour::run(out).map_err(|e| e.to_string().into())),
-        Some(Command::Accuracy { out: dir, quick, all }) => {
-            done(accuracy::run(out, &dir, quick, all).map_err(|e| e.to_string().into()))
+        Some(Command::Accuracy { out: dir, quick, all, max_output_bytes }) => {
+            accuracy::run(out, &dir, quick, all, max_output_bytes)
         }
     }
 }
 
-/// Entry point of the binary: parses `std::env::args` and runs. Exit codes: 0 done, 1 error
-/// or a run stopped by its budget (output written, marked incomplete), 130 interrupted.
+/// Entry point of the binary: parses `std::env::args` and runs. Exit codes: 0 done, 1 error,
+/// a run stopped by its budget or with untrustworthy numbers (output written, marked
+/// incomplete), 130 interrupted (Ctrl-C, SIGTERM, SIGHUP).
 pub fn main() -> ExitCode {
-    // Ctrl-C stops a run cleanly from the first instant on (the handler sets a flag)
+    // Ctrl-C and SIGTERM stop a run cleanly from the first instant on (the handler sets a flag)
     run::interrupted();
     let mut out = std::io::stdout().lock();
     match run_with_args(std::env::args_os(), &mut out) {
         Ok(Outcome::Complete) => ExitCode::SUCCESS,
-        Ok(Outcome::Budget) => ExitCode::FAILURE,
+        Ok(Outcome::Budget | Outcome::Unreliable) => ExitCode::FAILURE,
         Ok(Outcome::Interrupted) => ExitCode::from(130),
         Err(e) => {
             if let Some(c) = e.downcast_ref::<clap::Error>() {

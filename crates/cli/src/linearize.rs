@@ -13,15 +13,21 @@ use vectrix_plot::control;
 use vectrix_scene::flight::{AnyScene, OUTPUT_NAMES};
 use vectrix_scene::{EquilibriumResidual, LinearModel};
 
-use crate::output::{BoxError, is_ours, preflight, write_dir};
-use crate::run::load;
+use crate::input::load;
+use crate::output::{BoxError, not_inside, write_files};
+use crate::sink::Limits;
 
 /// Most Bode curves drawn (input–output pairs); the JSON holds every pair.
 const MAX_BODE_CURVES: usize = 12;
 
 /// `vectrix linearize`.
-pub(crate) fn linearize(out: &mut impl Write, path: &Path, dir: &Path) -> Result<(), BoxError> {
-    let model = match load(path)? {
+pub(crate) fn linearize(
+    out: &mut impl Write,
+    path: &Path,
+    dir: &Path,
+    max_bytes: u64,
+) -> Result<(), BoxError> {
+    let model = match load(path)?.scene {
         AnyScene::Bodies(s) => s.linearize()?,
         AnyScene::Flight(f) => {
             let lin = f.linearization();
@@ -40,8 +46,9 @@ pub(crate) fn linearize(out: &mut impl Write, path: &Path, dir: &Path) -> Result
             )?
         }
     };
+    not_inside(path, dir, &model.scene)?;
     let files = render(&model)?;
-    let dest = write_files(dir, &model.scene, &files)?;
+    let dest = write_files(dir, &model.scene, Limits { max_bytes, reserve: 0 }, &files)?;
     print_modes(out, &model)?;
     writeln!(out, "wrote {}", dest.display())?;
     Ok(())
@@ -77,39 +84,6 @@ fn render(m: &LinearModel) -> Result<Vec<(&'static str, String)>, BoxError> {
         }
     }
     Ok(files)
-}
-
-/// Writes the files into `<dir>/<name>/`: into the folder of an earlier vectrix run (which it
-/// then also holds) replacing only these files, else into a new folder created as `run` does.
-fn write_files(
-    dir: &Path,
-    name: &str,
-    files: &[(&'static str, String)],
-) -> Result<std::path::PathBuf, BoxError> {
-    preflight(dir, name)?;
-    let dest = dir.join(name);
-    if dest.is_dir() && is_ours(&dest) {
-        for (file, text) in files {
-            // each file by a rename from a fresh sibling: a reader sees the old or the new one
-            // (created new: never a file or link that was already there)
-            let tmp = dest.join(format!(".{file}.partial-{}", std::process::id()));
-            let mut f = std::fs::OpenOptions::new()
-                .write(true)
-                .create_new(true)
-                .open(&tmp)
-                .map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
-            std::io::Write::write_all(&mut f, text.as_bytes())?;
-            drop(f);
-            std::fs::rename(&tmp, dest.join(file))?;
-        }
-        return Ok(dest);
-    }
-    write_dir(dir, name, |tmp| {
-        for (file, text) in files {
-            std::fs::write(tmp.join(file), text)?;
-        }
-        Ok(())
-    })
 }
 
 fn print_modes(out: &mut impl Write, m: &LinearModel) -> std::io::Result<()> {

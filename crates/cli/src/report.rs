@@ -1,12 +1,11 @@
 //! What a run writes into its output folder: `trajectory.csv` (every column with its unit),
-//! `summary.json` (what was asked, what was done, what it cost, how the invariants drifted),
-//! one SVG per requested output (y label with quantity and unit) and, for every position
-//! output, the path of that body in the plane of its largest motion. Flight scenes write their
-//! own CSV and figures (`vectrix_scene::flight::FlightRun`).
+//! one SVG per requested output (y label with quantity and unit, drawing that output's columns
+//! only) and, for every position output, the path of that body in the plane of its largest
+//! motion; last `summary.json` (what was asked, what was done, what it cost, how the invariants
+//! drifted, and which files a Ctrl-C or the byte budget left unwritten). Flight scenes write
+//! their own CSV and figures (`vectrix_scene::flight::FlightRun`).
 //!
 //! Book: §8.3 (invariants), §4.11 (the work of an integration).
-
-use std::path::Path;
 
 use serde::Serialize;
 use vectrix_plot::{Chart, Curve, LineChart};
@@ -14,6 +13,7 @@ use vectrix_scene::flight::FlightRun;
 use vectrix_scene::{ConstraintViolation, Drift, Invariant, Run, RunWork, Scene, Stop};
 
 use crate::output::{BoxError, file_stem};
+use crate::sink::{Halt, Sink};
 
 /// One CSV column and its SI unit.
 #[derive(Debug, Serialize)]
@@ -51,22 +51,55 @@ struct Summary<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     max_constraint_drift: Option<ConstraintViolation>,
     work: RunWork,
+    /// The byte budget of the command's output (`--max-output-bytes`).
+    max_output_bytes: u64,
+    /// Set when writing stopped before every file was written: then `complete` is false.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    output_stop: Option<OutputStop<'a>>,
 }
 
-/// The columns belonging to output `o` (`q` → q0, q1, …; `position:b` → position:b.x, …).
-pub(crate) fn columns_of<'a>(run: &'a Run, o: &str) -> Vec<(usize, &'a str)> {
-    run.columns
-        .iter()
-        .enumerate()
-        .filter(|(_, c)| {
-            c.as_str() == o
-                || c.strip_prefix(o).is_some_and(|r| {
-                    r.starts_with('.')
-                        || (matches!(o, "q" | "v") && !r.is_empty() && r.chars().all(|x| x.is_ascii_digit()))
-                })
+/// Why files are missing from an output folder: Ctrl-C (or SIGTERM) while writing, or the
+/// byte budget.
+#[derive(Debug, Serialize)]
+pub(crate) struct OutputStop<'a> {
+    /// `interrupted` or `max_output_bytes`.
+    reason: &'static str,
+    /// The files not written.
+    not_written: &'a [String],
+    /// What happened and what would be valid.
+    message: String,
+}
+
+impl<'a> OutputStop<'a> {
+    /// The stop of a sink that halted with `not_written` files left.
+    pub(crate) fn new(halt: Halt, not_written: &'a [String], max_bytes: u64) -> Self {
+        let message = match halt {
+            Halt::Interrupted => {
+                "interrupted while writing the outputs: the files written are whole, the others are missing"
+                    .to_string()
+            }
+            Halt::Budget => format!(
+                "writing stopped at max_output_bytes = {max_bytes}: the files written are whole, the others are \
+                 missing; valid: a larger --max-output-bytes, or fewer samples or outputs"
+            ),
+        };
+        Self { reason: halt.name(), not_written, message }
+    }
+}
+
+/// Whether CSV column `c` belongs to output `o` (`q` → q0, q1, …; `position:b` →
+/// position:b.x, …). Exact: outputs are unique in a scene, and body and loop names hold no `.`.
+pub(crate) fn belongs(c: &str, o: &str) -> bool {
+    c == o
+        || c.strip_prefix(o).is_some_and(|r| {
+            r.starts_with('.')
+                || (matches!(o, "q" | "v") && !r.is_empty() && r.chars().all(|x| x.is_ascii_digit()))
         })
-        .map(|(k, c)| (k, c.as_str()))
-        .collect()
+}
+
+/// The columns belonging to output `o`, with their indices.
+pub(crate) fn columns_of<'a>(run: &'a Run, o: &str) -> Vec<(usize, &'a str)> {
+    run.columns.iter().enumerate().filter(|(_, c)| belongs(c, o)).map(|(k, c)| (k, c.as_str())).collect()
 }
 
 /// `kg m^2/s` → `kg m²/s`.
@@ -103,34 +136,68 @@ pub(crate) fn y_label(run: &Run, o: &str) -> String {
     format!("{symbol}{of} [{}]", units.join(", "))
 }
 
-/// Writes trajectory.csv, summary.json and the figures of a body-scene run into `dir`.
-pub(crate) fn write_scene(dir: &Path, scene: &Scene, run: &Run) -> Result<(), BoxError> {
-    std::fs::write(dir.join("trajectory.csv"), run.to_csv())?;
-    std::fs::write(dir.join("summary.json"), summary_json(scene, run)?)?;
+/// Writes the files of a body-scene run into the sink, below `prefix` (`""` or `run-003/`):
+/// trajectory.csv, contacts.csv, the figures, and last summary.json. Returns whether every
+/// file was written (a Ctrl-C or the byte budget may stop the data files; the summary then
+/// lists what is missing and says the run is not complete).
+///
+/// # Errors
+/// I/O and plot errors.
+pub(crate) fn write_scene(sink: &Sink, prefix: &str, scene: &Scene, run: &Run) -> Result<bool, BoxError> {
+    let mut skipped: Vec<String> = Vec::new();
+    // renders a data file only while the sink is still writing
+    let mut put =
+        |file: String, render: &dyn Fn() -> Result<Option<String>, BoxError>| -> Result<(), BoxError> {
+            if sink.halt().is_none() {
+                match render()? {
+                    None => return Ok(()),
+                    Some(text) if sink.data(&format!("{prefix}{file}"), text.as_bytes())? => return Ok(()),
+                    Some(_) => {}
+                }
+            }
+            skipped.push(file);
+            Ok(())
+        };
+    put("trajectory.csv".into(), &|| Ok(Some(run.to_csv())))?;
     let mut taken = vec!["trajectory".to_string(), "summary".to_string(), "contacts".to_string()];
     if !run.contacts.is_empty() {
-        std::fs::write(dir.join("contacts.csv"), run.contacts_csv())?;
+        put("contacts.csv".into(), &|| Ok(Some(run.contacts_csv())))?;
     }
     for o in &scene.spec().outputs {
-        let mut chart = LineChart::new(format!("{}: {o}", run.scene), "t [s]", y_label(run, o));
-        for (k, c) in columns_of(run, o) {
-            chart = chart.with_series(c, run.t.iter().zip(&run.rows).map(|(t, r)| (*t, r[k])).collect());
-        }
-        std::fs::write(dir.join(format!("{}.svg", file_stem(o, &mut taken))), chart.to_svg()?)?;
-        if let Some(body) = o.strip_prefix("position:")
-            && let Some(svg) = path_svg(run, o, body)?
-        {
-            std::fs::write(dir.join(format!("{}.svg", file_stem(&format!("path:{body}"), &mut taken))), svg)?;
+        // each figure draws its own output's columns
+        put(format!("{}.svg", file_stem(o, &mut taken)), &|| {
+            let mut chart = LineChart::new(format!("{}: {o}", run.scene), "t [s]", y_label(run, o));
+            for (k, c) in columns_of(run, o) {
+                chart = chart.with_series(c, run.t.iter().zip(&run.rows).map(|(t, r)| (*t, r[k])).collect());
+            }
+            Ok(Some(chart.to_svg()?))
+        })?;
+        if let Some(body) = o.strip_prefix("position:") {
+            put(format!("{}.svg", file_stem(&format!("path:{body}"), &mut taken)), &|| {
+                path_svg(run, o, body)
+            })?;
         }
     }
-    Ok(())
+    let stop =
+        sink.halt().filter(|_| !skipped.is_empty()).map(|h| OutputStop::new(h, &skipped, sink.max_bytes()));
+    let complete = stop.is_none();
+    sink.last(
+        &format!("{prefix}summary.json"),
+        summary_json(scene, run, sink.max_bytes(), stop)?.as_bytes(),
+    )?;
+    Ok(complete)
 }
 
-/// summary.json of a body-scene run.
-pub(crate) fn summary_json(scene: &Scene, run: &Run) -> Result<String, BoxError> {
+/// summary.json of a body-scene run; `output_stop` when files are missing.
+pub(crate) fn summary_json(
+    scene: &Scene,
+    run: &Run,
+    max_output_bytes: u64,
+    output_stop: Option<OutputStop<'_>>,
+) -> Result<String, BoxError> {
     let summary = Summary {
         scene: &run.scene,
-        complete: run.is_complete(),
+        complete: run.is_complete() && output_stop.is_none(),
         stop: &run.stop,
         duration: scene.spec().duration,
         samples: scene.spec().samples,
@@ -144,6 +211,8 @@ pub(crate) fn summary_json(scene: &Scene, run: &Run) -> Result<String, BoxError>
         max_constraint_violation: run.max_constraint_violation,
         max_constraint_drift: run.max_constraint_drift,
         work: run.work,
+        max_output_bytes,
+        output_stop,
     };
     Ok(serde_json::to_string_pretty(&summary)?)
 }
@@ -188,15 +257,66 @@ fn path_svg(run: &Run, o: &str, body: &str) -> Result<Option<String>, BoxError> 
     Ok(Some(chart.to_svg()?))
 }
 
-/// Writes a flight-scene run: trajectory.csv (nonlinear and linear columns), summary.json
-/// (trim, modes, linear-model error), one SVG per output and modes.svg.
-pub(crate) fn write_flight(dir: &Path, run: &FlightRun) -> Result<(), BoxError> {
-    std::fs::write(dir.join("trajectory.csv"), run.to_csv())?;
-    std::fs::write(dir.join("summary.json"), run.summary_json())?;
+/// Writes a flight-scene run: trajectory.csv (nonlinear and linear columns), one SVG per
+/// output, modes.svg, and last summary.json (trim, modes, linear-model error; with
+/// `output_stop` and `complete: false` when files are missing). Returns whether every file was
+/// written.
+///
+/// # Errors
+/// I/O and plot errors.
+pub(crate) fn write_flight(sink: &Sink, run: &FlightRun) -> Result<bool, BoxError> {
+    let mut skipped: Vec<String> = Vec::new();
+    let mut put = |file: String, render: &dyn Fn() -> Result<String, BoxError>| -> Result<(), BoxError> {
+        if sink.halt().is_none() && sink.data(&file, render()?.as_bytes())? {
+            return Ok(());
+        }
+        skipped.push(file);
+        Ok(())
+    };
+    put("trajectory.csv".into(), &|| Ok(run.to_csv()))?;
     let mut taken = vec!["trajectory".to_string(), "summary".to_string(), "modes".to_string()];
     for (k, o) in run.outputs.iter().enumerate() {
-        std::fs::write(dir.join(format!("{}.svg", file_stem(o, &mut taken))), run.response_svg(k)?)?;
+        put(format!("{}.svg", file_stem(o, &mut taken)), &|| Ok(run.response_svg(k)?))?;
     }
-    std::fs::write(dir.join("modes.svg"), run.modes_svg()?)?;
-    Ok(())
+    put("modes.svg".into(), &|| Ok(run.modes_svg()?))?;
+    let mut summary: serde_json::Value = serde_json::from_str(&run.summary_json())?;
+    summary["max_output_bytes"] = sink.max_bytes().into();
+    if let Some(h) = sink.halt().filter(|_| !skipped.is_empty()) {
+        summary["complete"] = false.into();
+        summary["output_stop"] = serde_json::to_value(OutputStop::new(h, &skipped, sink.max_bytes()))?;
+    }
+    sink.last("summary.json", serde_json::to_string_pretty(&summary)?.as_bytes())?;
+    Ok(skipped.is_empty())
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::AtomicBool;
+
+    use super::*;
+    use crate::sink::Limits;
+
+    /// Issue 33 item 2: Ctrl-C while the files are written stops at a whole file, and
+    /// summary.json says the run is not complete and which files are missing (it used to say
+    /// `complete: true` while the writing went on regardless).
+    #[test]
+    fn an_interrupt_while_writing_makes_the_summary_incomplete() {
+        static FLAG: AtomicBool = AtomicBool::new(true);
+        let text = vectrix_scene::DEFAULT_SCENE.replace("samples = 800", "samples = 10");
+        let scene = Scene::from_toml(&text, "t.toml").unwrap();
+        let run = scene.run(&mut |_| {}).unwrap();
+        assert!(run.is_complete());
+        let d = tempfile::tempdir().unwrap();
+        let sink = Sink::with_cancel(d.path(), Limits { max_bytes: 1 << 30, reserve: 0 }, Some(&FLAG));
+        assert!(!write_scene(&sink, "", &scene, &run).unwrap());
+        assert_eq!(sink.files(), ["summary.json"]);
+        let s: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(d.path().join("summary.json")).unwrap()).unwrap();
+        assert_eq!(s["complete"], false);
+        assert_eq!(s["output_stop"]["reason"], "interrupted");
+        let missing = s["output_stop"]["not_written"].as_array().unwrap();
+        assert_eq!(missing[0], "trajectory.csv");
+        assert_eq!(missing.len(), 1 + scene.spec().outputs.len());
+        assert_eq!(s["max_output_bytes"], 1u64 << 30);
+    }
 }

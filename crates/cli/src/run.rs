@@ -1,6 +1,7 @@
 //! `vectrix run [SCENE]`: run a scene (the embedded default when none is given), show a
-//! progress bar with an estimated time to completion on long runs, stop cleanly on Ctrl-C
-//! (writing what was computed, marked incomplete), write the outputs and print a summary.
+//! progress bar with an estimated time to completion on long runs, stop cleanly on Ctrl-C or
+//! SIGTERM (writing what was computed, marked incomplete), write the outputs within the byte
+//! budget (refused before the run when its bound exceeds it) and print a summary.
 //!
 //! Book: §7.8 (the default scene: torque-free body, tennis-racket flip), §8.3 (invariants).
 
@@ -12,17 +13,21 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
 use vectrix_scene::flight::{AnyScene, FlightScene};
-use vectrix_scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, StopReason};
+use vectrix_scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, SceneSource, StopReason};
 use vectrix_units::UnitSystem;
 
-use crate::output::{BoxError, write_dir};
+use crate::input::load;
+use crate::output::{BoxError, Written, not_inside, preflight, write_dir};
+use crate::sink::Halt;
 
-/// Set by Ctrl-C: the run in progress stops after its current step.
+/// Set by Ctrl-C, SIGTERM or SIGHUP: the run in progress stops after its current step, and
+/// writing that began before stops after the current file (see [`crate::sink`]).
 pub(crate) fn interrupted() -> &'static AtomicBool {
     static FLAG: AtomicBool = AtomicBool::new(false);
     static HANDLER: OnceLock<()> = OnceLock::new();
     HANDLER.get_or_init(|| {
-        // a second Ctrl-C ends the process at once
+        // a second signal ends the process at once (its temporary folder, marked with this
+        // process, is removed by the next run into the same folder)
         let _ = ctrlc::set_handler(|| {
             if FLAG.swap(true, Ordering::SeqCst) {
                 std::process::exit(130);
@@ -149,20 +154,32 @@ pub(crate) fn print_summary(out: &mut impl Write, scene: &Scene, run: &Run) -> s
     Ok(())
 }
 
-/// Reads a scene file of either kind (bounded size), reporting errors with line and column.
-pub(crate) fn load(path: &Path) -> Result<AnyScene, BoxError> {
-    let shown = path.display().to_string();
-    let meta = std::fs::metadata(path).map_err(|e| format!("{shown}: {e}"))?;
-    if meta.len() > vectrix_scene::MAX_SCENE_BYTES as u64 {
-        return Err(format!(
-            "{shown}: {} bytes; valid: a scene file of at most {} bytes",
-            meta.len(),
-            vectrix_scene::MAX_SCENE_BYTES
-        )
-        .into());
+/// The budget error of a scene, located at its `samples` key.
+pub(crate) fn located(text: &str, file: &str, message: String) -> BoxError {
+    match SceneSource::new(text, file) {
+        Ok(src) => src.invalid("samples", message).into(),
+        Err(e) => e.into(),
     }
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{shown}: {e}"))?;
-    Ok(AnyScene::from_toml(&text, &shown)?)
+}
+
+/// Prints where the output went, its size against the budget, and what writing left out.
+pub(crate) fn print_written(out: &mut impl Write, w: &Written, max_bytes: u64) -> std::io::Result<()> {
+    if let Some(h) = w.halt {
+        writeln!(
+            out,
+            "INCOMPLETE output: writing stopped ({}); the files written are whole, summary.json lists the others",
+            match h {
+                Halt::Interrupted => "interrupted",
+                Halt::Budget => "max_output_bytes reached",
+            }
+        )?;
+    }
+    writeln!(
+        out,
+        "wrote {} ({}; max_output_bytes = {max_bytes})",
+        w.dest.display(),
+        crate::budget::human(w.bytes)
+    )
 }
 
 /// How a run ended, for the process exit code.
@@ -172,8 +189,24 @@ pub enum Outcome {
     Complete,
     /// A budget stopped it (output written, marked incomplete).
     Budget,
-    /// Ctrl-C stopped it (output written, marked incomplete).
+    /// Ctrl-C or SIGTERM stopped the run or its writing (output written, marked incomplete).
     Interrupted,
+    /// The run reached its duration, but its numbers are outside the range where they mean
+    /// anything (an invariant's drift, a state near the largest f64): output written, marked
+    /// incomplete.
+    Unreliable,
+}
+
+/// The outcome of a run whose run loop ended with `stop` and whose writing with `halt`.
+pub(crate) fn outcome(stop: Option<StopReason>, halt: Option<Halt>) -> Outcome {
+    match (stop, halt) {
+        (Some(StopReason::Interrupted), _) | (_, Some(Halt::Interrupted)) => Outcome::Interrupted,
+        (Some(StopReason::MaxSteps | StopReason::MaxWallSeconds), _) | (_, Some(Halt::Budget)) => {
+            Outcome::Budget
+        }
+        (Some(StopReason::InvariantDrift | StopReason::StateOutOfRange), None) => Outcome::Unreliable,
+        (None, None) => Outcome::Complete,
+    }
 }
 
 /// `vectrix run`.
@@ -183,41 +216,55 @@ pub fn run(
     dir: &Path,
     quiet: bool,
     units: UnitSystem,
+    max_bytes: u64,
 ) -> Result<Outcome, BoxError> {
-    let scene = match path {
-        Some(p) => match load(p)? {
-            AnyScene::Bodies(s) => *s,
-            AnyScene::Flight(f) => return run_flight(out, &f, dir, quiet, units),
-        },
-        None => Scene::from_toml(DEFAULT_SCENE, "<default scene>")?,
+    let (text, file, scene) = match path {
+        Some(p) => {
+            let loaded = load(p)?;
+            match loaded.scene {
+                AnyScene::Bodies(s) => (loaded.text, loaded.file, *s),
+                AnyScene::Flight(f) => {
+                    let opts = (dir, quiet, units, max_bytes);
+                    return run_flight(out, (&loaded.text, &loaded.file, p), &f, opts);
+                }
+            }
+        }
+        None => {
+            let file = "<default scene>".to_string();
+            (DEFAULT_SCENE.to_string(), file.clone(), Scene::from_toml(DEFAULT_SCENE, &file)?)
+        }
     };
-    crate::output::preflight(dir, &scene.spec().name)?;
+    let name = &scene.spec().name;
+    if let Some(p) = path {
+        not_inside(p, dir, name)?;
+    }
+    preflight(dir, name)?;
+    let limits = crate::budget::scene(&scene).limits(max_bytes).map_err(|m| located(&text, &file, m))?;
     let run = simulate(&scene, quiet)?.in_units(units)?;
-    let dest = write_dir(dir, &scene.spec().name, |tmp| crate::report::write_scene(tmp, &scene, &run))?;
+    let w =
+        write_dir(dir, name, limits, |sink| crate::report::write_scene(sink, "", &scene, &run).map(|_| ()))?;
     print_summary(out, &scene, &run)?;
-    writeln!(out, "wrote {}", dest.display())?;
-    Ok(match run.stop.as_ref().map(|s| s.reason) {
-        None => Outcome::Complete,
-        Some(StopReason::Interrupted) => Outcome::Interrupted,
-        Some(_) => Outcome::Budget,
-    })
+    print_written(out, &w, max_bytes)?;
+    Ok(outcome(run.stop.as_ref().map(|s| s.reason), w.halt))
 }
 
 /// `vectrix run` on a flight scene: trim, nonlinear and linear responses, modes.
 fn run_flight(
     out: &mut impl Write,
+    (text, file, path): (&str, &str, &Path),
     scene: &FlightScene,
-    dir: &Path,
-    quiet: bool,
-    units: UnitSystem,
+    (dir, quiet, units, max_bytes): (&Path, bool, UnitSystem, u64),
 ) -> Result<Outcome, BoxError> {
-    crate::output::preflight(dir, &scene.spec().name)?;
+    let name = &scene.spec().name;
+    not_inside(path, dir, name)?;
+    preflight(dir, name)?;
+    let limits = crate::budget::flight(scene).limits(max_bytes).map_err(|m| located(text, file, m))?;
     let start = Instant::now();
-    let mut bar = Progress::new(&scene.spec().name, quiet);
+    let mut bar = Progress::new(name, quiet);
     let run = scene.run_with(RunControl { progress: &mut |f| bar.update(f), cancel: Some(interrupted()) })?;
     bar.finish();
     let run = run.in_units(units)?;
-    let dest = write_dir(dir, &run.scene, |tmp| crate::report::write_flight(tmp, &run))?;
+    let w = write_dir(dir, &run.scene, limits, |sink| crate::report::write_flight(sink, &run).map(|_| ()))?;
     writeln!(
         out,
         "flight scene `{}`: t = 0 … {} s, {} rows, {} f-evals, {} steps, {:.3} s wall",
@@ -248,6 +295,6 @@ fn run_flight(
             None => writeln!(out, "  {o:<9} max excursion {:.3e}", run.max_excursion(k))?,
         }
     }
-    writeln!(out, "wrote {}", dest.display())?;
-    Ok(if run.stop.is_some() { Outcome::Interrupted } else { Outcome::Complete })
+    print_written(out, &w, max_bytes)?;
+    Ok(outcome(run.stop.as_ref().map(|s| s.reason), w.halt))
 }

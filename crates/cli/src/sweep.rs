@@ -4,7 +4,8 @@
 //! (one row per run: parameters, completion, work, drift), one overlay SVG per requested
 //! output with every run's curves, and `run-000/`, `run-001/`, … with each run's own files.
 //! Runs are numbered, so their folders never collide whatever the parameter values; errors of
-//! a run point into the user's scene file.
+//! a run point into the user's scene file. A parameter given twice is refused (the table would
+//! name values that were not used), and the whole output is bounded before any run starts.
 //!
 //! Book: — (parameter studies of the scenes of §7.11, ch. 6).
 
@@ -15,24 +16,29 @@ use std::sync::Mutex;
 use rayon::prelude::*;
 use vectrix_plot::LineChart;
 use vectrix_scene::flight::AnyScene;
-use vectrix_scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, body_schema};
+use vectrix_scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, StopReason, body_schema};
 use vectrix_units::UnitSystem;
 
-use crate::output::{BoxError, file_stem, write_dir};
+use crate::output::{BoxError, file_stem, not_inside, preflight, write_dir};
 use crate::report::{columns_of, y_label};
-use crate::run::{Progress, interrupted};
+use crate::run::{Progress, interrupted, located, outcome, print_written};
 
 /// Most runs one sweep may ask for (the product of the value counts).
 pub const MAX_SWEEP_RUNS: usize = 10_000;
+
+/// The steps of a dotted path: `effects.0.k` → key, index, key (so `effects.00.k` is the
+/// same parameter).
+fn steps(path: &str) -> Vec<Step> {
+    path.split('.')
+        .map(|s| s.parse::<usize>().map_or_else(|_| Step::Key(s.to_string()), Step::Index))
+        .collect()
+}
 
 /// One parameter: its dotted path and values; a value may be a quantity string (`2 lbf/ft`),
 /// converted by the scene schema's dimension for that key.
 fn parse_param(p: &str, doc: &toml::Value) -> Result<(String, Vec<f64>), String> {
     let (path, values) = p.split_once('=').ok_or_else(|| format!("`{p}`: expected PATH=v1,v2,…"))?;
-    let steps: Vec<Step> = path
-        .split('.')
-        .map(|s| s.parse::<usize>().map_or_else(|_| Step::Key(s.to_string()), Step::Index))
-        .collect();
+    let steps = steps(path);
     let expect = body_schema(&steps, doc);
     let vals = values
         .split(',')
@@ -100,18 +106,58 @@ struct Done {
     label: Vec<(String, f64)>,
     scene: Scene,
     run: Run,
+    /// Whether every file of the run was written (a Ctrl-C or the byte budget may stop them).
+    written: bool,
+}
+
+impl Done {
+    /// Complete: the run reached its duration with trustworthy numbers, and its files are all
+    /// written.
+    fn complete(&self) -> bool {
+        self.run.is_complete() && self.written
+    }
+}
+
+/// Where and how a sweep writes.
+pub(crate) struct Options<'a> {
+    /// Parent directory of the output folder.
+    pub dir: &'a Path,
+    /// No progress bar.
+    pub quiet: bool,
+    /// Unit system of the outputs.
+    pub units: UnitSystem,
+    /// The byte budget.
+    pub max_output_bytes: u64,
+}
+
+/// Refuses a parameter given twice (`--param duration=1,2 --param duration=3`): every run
+/// would use the last value while the table named the others.
+fn unique(params: &[String]) -> Result<(), String> {
+    let paths: Vec<(&str, Vec<Step>)> = params
+        .iter()
+        .map(|p| (p.as_str(), steps(p.split_once('=').map_or(p.as_str(), |(a, _)| a))))
+        .collect();
+    for (k, (p, s)) in paths.iter().enumerate() {
+        if let Some((q, _)) = paths[..k].iter().find(|(_, t)| t == s) {
+            return Err(format!(
+                "--param `{p}` repeats the parameter of --param `{q}`; valid: each parameter once, with all its \
+                 values in one list (`PATH=v1,v2,…`)"
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// `vectrix sweep`.
-pub fn sweep(
+pub(crate) fn sweep(
     out: &mut impl Write,
     path: &Path,
     params: &[String],
-    dir: &Path,
-    quiet: bool,
-    units: UnitSystem,
+    opts: &Options<'_>,
 ) -> Result<crate::run::Outcome, BoxError> {
-    let base_scene = match crate::run::load(path)? {
+    unique(params)?;
+    let loaded = crate::input::load(path)?;
+    let base_scene = match loaded.scene {
         AnyScene::Bodies(s) => *s,
         AnyScene::Flight(_) => {
             return Err(format!(
@@ -121,10 +167,9 @@ pub fn sweep(
             .into());
         }
     };
-    let text = std::fs::read_to_string(path)?;
-    let file = path.display().to_string();
-    let src = SceneSource::new(&text, &file)?;
-    let doc: toml::Value = toml::from_str(&text)?;
+    let (text, file) = (&loaded.text, &loaded.file);
+    let src = SceneSource::new(text, file)?;
+    let doc: toml::Value = toml::from_str(text)?;
     let params = params.iter().map(|p| parse_param(p, &doc)).collect::<Result<Vec<_>, _>>()?;
     let total = params.iter().try_fold(1usize, |n, (_, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
     if total > MAX_SWEEP_RUNS {
@@ -152,8 +197,14 @@ pub fn sweep(
         })
         .collect::<Result<_, _>>()?;
     let name = format!("{}-sweep", base_scene.spec().name);
-    crate::output::preflight(dir, &name)?;
-    let progress = Mutex::new((Progress::new(&name, quiet), 0usize));
+    let dir = opts.dir;
+    not_inside(path, dir, &name)?;
+    preflight(dir, &name)?;
+    let labels: Vec<usize> = combos.iter().map(|c| describe(c).len()).collect();
+    let limits = crate::budget::sweep(&scenes, &labels, params.len())
+        .limits(opts.max_output_bytes)
+        .map_err(|m| located(text, file, format!("{total} runs: {m}")))?;
+    let progress = Mutex::new((Progress::new(&name, opts.quiet), 0usize));
     let results: Vec<Result<Done, String>> = scenes
         .into_par_iter()
         .zip(combos)
@@ -161,14 +212,14 @@ pub fn sweep(
         .map(|(index, (scene, label))| {
             let run = scene
                 .run_with(RunControl { progress: &mut |_| {}, cancel: Some(interrupted()) })
-                .and_then(|r| r.in_units(units))
+                .and_then(|r| r.in_units(opts.units))
                 .map_err(|e| format!("run {index} ({}): {e}", describe(&label)))?;
             if let Ok(mut p) = progress.lock() {
                 p.1 += 1;
                 let f = p.1 as f64 / total as f64;
                 p.0.update(f);
             }
-            Ok(Done { index, label, scene, run })
+            Ok(Done { index, label, scene, run, written: true })
         })
         .collect();
     if let Ok(p) = progress.into_inner() {
@@ -189,27 +240,30 @@ pub fn sweep(
         )
         .into());
     }
-    let dest = write_dir(dir, &name, |tmp| {
+    let w = write_dir(dir, &name, limits, |sink| {
         // each run's folder (CSV, summary, figures) on all cores too: serial, the writing was
         // a tenth of a two-core sweep's wall time
-        done.par_iter()
-            .map(|d| -> Result<(), String> {
-                let sub = tmp.join(format!("run-{:03}", d.index));
-                std::fs::create_dir(&sub).map_err(|e| format!("{}: {e}", sub.display()))?;
-                crate::report::write_scene(&sub, &d.scene, &d.run).map_err(|e| e.to_string())
+        let written = done
+            .par_iter()
+            .map(|d| -> Result<bool, String> {
+                let sub = format!("run-{:03}", d.index);
+                sink.dir(&sub).map_err(|e| e.to_string())?;
+                crate::report::write_scene(sink, &format!("{sub}/"), &d.scene, &d.run)
+                    .map_err(|e| e.to_string())
             })
-            .collect::<Result<(), String>>()?;
-        std::fs::write(tmp.join("sweep.csv"), sweep_csv(&params, &done))?;
+            .collect::<Result<Vec<bool>, String>>()?;
+        for (d, w) in done.iter_mut().zip(written) {
+            d.written = w;
+        }
         let mut taken = vec!["sweep".to_string()];
         let stems: Vec<(String, &_)> =
             base_scene.spec().outputs.iter().map(|o| (file_stem(o, &mut taken), o)).collect();
-        let figures = stems
-            .par_iter()
-            .map(|(stem, o)| overlay(&name, o, &done).map(|svg| (stem, svg)).map_err(|e| e.to_string()))
-            .collect::<Result<Vec<_>, String>>()?;
-        for (stem, svg) in figures {
-            std::fs::write(tmp.join(format!("{stem}.svg")), svg)?;
+        for (stem, o) in stems {
+            if sink.halt().is_none() {
+                sink.data(&format!("{stem}.svg"), overlay(&name, o, &done)?.as_bytes())?;
+            }
         }
+        sink.last("sweep.csv", sweep_csv(&params, &done).as_bytes())?;
         Ok(())
     })?;
     writeln!(out, "| run | parameters | complete | wall [s] | f-evals | drift |\n|---|---|---|---|---|---|")?;
@@ -221,20 +275,17 @@ pub fn sweep(
             "| {:03} | {} | {} | {:.3} | {} | {} |",
             d.index,
             describe(&d.label),
-            d.run.is_complete(),
+            d.complete(),
             d.run.work.wall_seconds,
             d.run.work.fevals,
             drift.join("; ")
         )?;
     }
-    writeln!(out, "wrote {}", dest.display())?;
-    Ok(if done.iter().all(|d| d.run.is_complete()) {
-        crate::run::Outcome::Complete
-    } else if interrupted().load(std::sync::atomic::Ordering::Relaxed) {
-        crate::run::Outcome::Interrupted
-    } else {
-        crate::run::Outcome::Budget
-    })
+    print_written(out, &w, opts.max_output_bytes)?;
+    // an interrupted run first, else the first run that stopped, says how the sweep ended
+    let reasons = || done.iter().filter_map(|d| d.run.stop.as_ref().map(|s| s.reason));
+    let stop = reasons().find(|r| *r == StopReason::Interrupted).or_else(|| reasons().next());
+    Ok(outcome(stop, w.halt))
 }
 
 fn describe(label: &[(String, f64)]) -> String {
@@ -262,7 +313,7 @@ fn sweep_csv(params: &[(String, Vec<f64>)], done: &[Done]) -> String {
         let w = d.run.work;
         s.push_str(&format!(
             ",{},{},{},{},{},{:e}",
-            d.run.is_complete(),
+            d.complete(),
             d.run.t.len(),
             w.fevals,
             w.accepted,

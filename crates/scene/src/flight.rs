@@ -582,6 +582,12 @@ impl FlightScene {
         }
         let mut outputs = Vec::new();
         for (i, o) in spec.outputs.iter().enumerate() {
+            if let Some(j) = spec.outputs[..i].iter().position(|p| p == o) {
+                return Err(src.invalid(
+                    format!("outputs[{i}]"),
+                    format!("output `{o}` repeats outputs[{j}]; valid: each output once"),
+                ));
+            }
             match OUTPUT_NAMES.iter().position(|n| n == o) {
                 Some(k) => outputs.push(k),
                 None => {

@@ -51,8 +51,8 @@ pub use quantities::{
 pub use query::StateQuery;
 pub use rhs::SceneRhs;
 pub use run::{
-    DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, Drift, InvariantValue, MAX_SAMPLE_VALUES, MAX_SAMPLES, Run,
-    RunControl, RunWork, Stop, StopReason,
+    DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, Drift, InvariantValue, MAX_SAMPLE_VALUES, MAX_SAMPLES,
+    MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE, Run, RunControl, RunWork, Stop, StopReason,
 };
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;

@@ -47,6 +47,12 @@ pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output
         .enumerate()
         .map(|(k, o)| {
             let path = format!("outputs[{k}]");
+            // a repeated output would repeat its columns and its figure (issue 33)
+            if let Some(j) = spec.outputs[..k].iter().position(|p| p == o) {
+                return Err(
+                    src.invalid(&path, format!("output `{o}` repeats outputs[{j}]; valid: each output once"))
+                );
+            }
             let bad = || src.invalid(&path, format!("unknown output `{o}`; valid: {VALID}"));
             if let Some(name) = o.strip_prefix("reaction:") {
                 let mut row = 0;
@@ -125,8 +131,9 @@ fn xyz(prefix: &str) -> Vec<String> {
 }
 
 impl Scene {
-    /// Column names of trajectory.csv (after `t`).
-    pub(crate) fn columns(&self) -> Vec<String> {
+    /// Column names of trajectory.csv (after `t`), in the order of the outputs: what a run
+    /// will write, known before it runs (the command line bounds its output size with it).
+    pub fn columns(&self) -> Vec<String> {
         let b = &self.built;
         let name = |i: usize| b.bodies[i].name.clone();
         let mut cols = Vec::new();

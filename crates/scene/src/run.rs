@@ -34,6 +34,14 @@ pub const MAX_SAMPLES: usize = 1_000_000;
 pub const MAX_SAMPLE_VALUES: usize = 50_000_000;
 /// A run whose pace predicts more than this multiple of a budget stops at once (fail fast).
 const FAIL_FAST_FACTOR: f64 = 10.0;
+/// Largest relative drift (`Drift::max_rel`) of a checked invariant that a complete run may
+/// have: beyond it the numbers no longer conserve what the declared effects conserve, and
+/// the run is marked incomplete ([`StopReason::InvariantDrift`]).
+pub const MAX_TRUSTED_DRIFT: f64 = 1e-3;
+/// Largest magnitude of a state component (q or v, SI) that a complete run may reach: about
+/// √f64::MAX, beyond which squared speeds and lengths (T = ½ m v², |r|²) overflow and an
+/// angle has no digit left below a turn ([`StopReason::StateOutOfRange`]).
+pub const MAX_TRUSTED_STATE: f64 = 1e154;
 
 /// The solver a scene asks for: `method`, else `accuracy`, else `Accuracy::RelTol(1e-6)`; with
 /// the scene's step budget.
@@ -222,9 +230,16 @@ pub enum StopReason {
     MaxSteps,
     /// The wall-time budget `max_wall_seconds` was reached, or the pace predicted it would be.
     MaxWallSeconds,
+    /// The run reached its duration, but a checked invariant drifted by more than
+    /// [`MAX_TRUSTED_DRIFT`] (relative): its numbers do not mean what they say.
+    InvariantDrift,
+    /// The run reached its duration, but a state component exceeded [`MAX_TRUSTED_STATE`] in
+    /// magnitude, where energies and squared lengths overflow.
+    StateOutOfRange,
 }
 
-/// A run that ended early: why, when, and what to do about it.
+/// A run that ended early, or whose numbers cannot be trusted: why, when, and what to do
+/// about it.
 ///
 /// Book: — (run control).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -267,7 +282,9 @@ pub struct Run {
     /// Final state y = (q, v) (quaternions normalized).
     pub final_state: Vec<f64>,
     /// `Some` when the run ended before its duration (budget or cancellation): the rows hold
-    /// what was computed.
+    /// what was computed; or when it reached its duration with numbers outside the range
+    /// where they mean anything (an invariant's drift above [`MAX_TRUSTED_DRIFT`], a state
+    /// above [`MAX_TRUSTED_STATE`]).
     pub stop: Option<Stop>,
     /// For scenes with loops or rolling contacts: the largest constraint violation of the
     /// written rows and of the step ends, after projection (§9.11).
@@ -364,7 +381,7 @@ impl Run {
         s
     }
 
-    /// `true` when the run reached its duration.
+    /// `true` when the run reached its duration with trustworthy numbers (see [`Run::stop`]).
     pub fn is_complete(&self) -> bool {
         self.stop.is_none()
     }
@@ -520,11 +537,18 @@ impl Scene {
         let mut step_projection = ProjectScratch::default();
         let sample_time = |k: usize| duration * (k as f64 / spec.samples as f64);
         let fail = |t: f64, e: String| SceneError::Run { t, message: e };
+        // the largest |y_i| at the samples, and where (time, index)
+        let peak = std::cell::Cell::new((0.0_f64, 0.0_f64, 0_usize));
 
         // outputs and invariants at a sample
         let mut record = |run: &mut Run, t: f64, y: &[f64]| -> Result<(), SceneError> {
             let mut y = y.to_vec();
             normalize(&b.bodies, &mut y[..nq]);
+            if let Some((i, x)) = y.iter().map(|x| x.abs()).enumerate().max_by(|a, b| a.1.total_cmp(&b.1))
+                && x > peak.get().0
+            {
+                peak.set((x, t, i));
+            }
             if constrained {
                 // a sample between step ends comes from the interpolant: project it too
                 let (_, after) = self.project(&mut y, &mut sample_projection).map_err(|e| fail(t, e))?;
@@ -583,7 +607,7 @@ impl Scene {
                 next_sample += 1;
             }
             (ctl.progress)(1.0);
-            return Ok(self.finish(run, trackers, y0, start));
+            return Ok(self.finish(run, trackers, y0, start, peak.get()));
         }
 
         let failure = std::cell::RefCell::new(None::<String>);
@@ -779,10 +803,20 @@ impl Scene {
         run.work.rejected = work.rejected;
         let y = st.y().clone();
         run.contacts = std::mem::take(&mut contacts.borrow_mut().events);
-        Ok(self.finish(run, trackers, y, start))
+        Ok(self.finish(run, trackers, y, start, peak.get()))
     }
 
-    fn finish(&self, mut run: Run, trackers: Vec<Tracker>, mut y: Vec<f64>, start: Instant) -> Run {
+    /// The drift of the checked invariants, the final state and the wall time; a run that
+    /// reached its duration with numbers outside their meaningful range is marked incomplete
+    /// (`peak`: the largest |y_i| at the samples, its time and index).
+    fn finish(
+        &self,
+        mut run: Run,
+        trackers: Vec<Tracker>,
+        mut y: Vec<f64>,
+        start: Instant,
+        peak: (f64, f64, usize),
+    ) -> Run {
         run.drift = trackers
             .into_iter()
             .map(|tr| {
@@ -797,9 +831,45 @@ impl Scene {
                 }
             })
             .collect();
+        if run.stop.is_none() {
+            run.stop = self.untrusted(&run, peak);
+        }
         normalize(&self.built.bodies, &mut y[..self.built.model.nq()]);
         run.final_state = y;
         run.work.wall_seconds = start.elapsed().as_secs_f64();
         run
+    }
+
+    /// Why a run that reached its duration cannot be trusted, if it cannot: a state component
+    /// above [`MAX_TRUSTED_STATE`] (`peak`: its magnitude, time and index in y = (q, v)), or a
+    /// checked invariant (conserved by the declared effects) whose relative drift reached
+    /// [`MAX_TRUSTED_DRIFT`] or is not finite.
+    fn untrusted(&self, run: &Run, (x, t, i): (f64, f64, usize)) -> Option<Stop> {
+        let t_end = run.t.last().copied().unwrap_or(0.0);
+        if x > MAX_TRUSTED_STATE || x.is_nan() {
+            let nq = self.built.model.nq();
+            let which = if i < nq { format!("q[{i}]") } else { format!("v[{}]", i - nq) };
+            return Some(Stop {
+                reason: StopReason::StateOutOfRange,
+                t,
+                message: format!(
+                    "the state component {which} reached {x:e} at t = {t} s, beyond {MAX_TRUSTED_STATE:e} (about \
+                     √ of the largest f64), where energies and squared lengths overflow and angles have no digits \
+                     left; valid: an initial state and motion well inside ±{MAX_TRUSTED_STATE:e} (SI)"
+                ),
+            });
+        }
+        let d = run.drift.iter().find(|d| d.max_rel >= MAX_TRUSTED_DRIFT || d.max_rel.is_nan())?;
+        Some(Stop {
+            reason: StopReason::InvariantDrift,
+            t: t_end,
+            message: format!(
+                "{} drifted by {:.2e} relative to its scale over the run, not below {MAX_TRUSTED_DRIFT:e}, although \
+                 the declared effects conserve it: the numbers do not mean what they say; valid: a tighter \
+                 accuracy, a shorter duration, or an initial state whose terms f64 can resolve",
+                d.invariant.name(),
+                d.max_rel
+            ),
+        })
     }
 }
