@@ -367,11 +367,20 @@ fn issue_33_meaningless_numbers_are_not_complete() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out");
     let o = out.to_str().unwrap();
+    // the issue's q = [1e308] is refused where it stands (numbers beyond 1e150 mean nothing)
     let p = pendulum(dir.path(), "huge.toml", "huge", "[\"energy\"]", 10, "1e308");
-    let (outcome, text) = cli(&["run", &p, "--quiet", "--out", o]).unwrap();
+    let e = cli(&["run", &p, "--quiet", "--out", o]).unwrap_err();
+    assert!(e.contains("huge.toml:") && e.contains("bodies[0].q[0]: 1e308; valid:"), "{e}");
+    // a state that grows beyond 1e154 during the run: a slider at 1e150 m/s for 1e5 s
+    let slider = "name = \"far\"\nduration = 1e5\nsamples = 10\noutputs = [\"q\"]\n\n[[bodies]]\nname = \"s\"\n\
+                  joint = { type = \"sleeve\", axis = [1.0, 0.0, 0.0] }\nmass = { shape = \"particle\", mass = 1.0 }\n\
+                  v = [1e150]\n";
+    std::fs::write(dir.path().join("far.toml"), slider).unwrap();
+    let p = dir.path().join("far.toml");
+    let (outcome, text) = cli(&["run", p.to_str().unwrap(), "--quiet", "--out", o]).unwrap();
     assert_eq!(outcome, Outcome::Unreliable);
-    assert!(text.contains("INCOMPLETE") && text.contains("q[0] reached 1e308"), "{text}");
-    let s = json(&out.join("huge/summary.json"));
+    assert!(text.contains("INCOMPLETE") && text.contains("q[0] reached"), "{text}");
+    let s = json(&out.join("far/summary.json"));
     assert_eq!(s["complete"], false);
     assert_eq!(s["stop"]["reason"], "state_out_of_range");
     // a loose method on a conservative pendulum: the energy drifts by far more than 1e-3

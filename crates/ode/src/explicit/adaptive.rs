@@ -244,6 +244,22 @@ impl Adaptive {
     }
 }
 
+/// √(Σ xᵢ²/n), the plain sum of squares when it is finite (the same bits as always), else
+/// scaled by the largest |xᵢ| so that rates beyond 1e154 of their tolerance do not square to ∞
+/// (which made the starting step 0).
+fn rms(n: usize, x: impl Fn(usize) -> f64) -> f64 {
+    let plain = (0..n).fold(0.0, |s, i| s + x(i).powi(2));
+    if plain.is_finite() {
+        return (plain / n as f64).sqrt();
+    }
+    let m =
+        (0..n).fold(0.0_f64, |m, i| if x(i).is_nan() || m.is_nan() { f64::NAN } else { m.max(x(i).abs()) });
+    if !(m.is_finite() && m > 0.0) {
+        return m;
+    }
+    m * ((0..n).fold(0.0, |s, i| s + (x(i) / m).powi(2)) / n as f64).sqrt()
+}
+
 /// Hairer's starting step `hinit`: h with ‖h f₀‖ ≈ 0.01‖y₀‖, refined by an estimate of
 /// the second derivative so that the first local error is near the tolerance.
 #[allow(clippy::too_many_arguments)]
@@ -257,14 +273,8 @@ pub(crate) fn initial_step<S: State, F: FnMut(f64, &S) -> S>(
     (rtol, atol): (f64, f64),
     work: &mut Work,
 ) -> Result<f64, OdeError> {
-    let n = y.dim() as f64;
     let sk = |i: usize| atol + rtol * y.as_slice()[i].abs();
-    let (mut dnf, mut dny) = (0.0, 0.0);
-    for i in 0..y.dim() {
-        dnf += (f0.as_slice()[i] / sk(i)).powi(2);
-        dny += (y.as_slice()[i] / sk(i)).powi(2);
-    }
-    let (dnf, dny) = ((dnf / n).sqrt(), (dny / n).sqrt());
+    let (dnf, dny) = (rms(y.dim(), |i| f0.as_slice()[i] / sk(i)), rms(y.dim(), |i| y.as_slice()[i] / sk(i)));
     let mut h = if dnf <= 1e-5 || dny <= 1e-5 { 1e-6 } else { 0.01 * dny / dnf };
     h = h.min(h_max);
     // explicit Euler step y + h f₀ and the derivative there
@@ -273,11 +283,7 @@ pub(crate) fn initial_step<S: State, F: FnMut(f64, &S) -> S>(
         *a += h * b;
     }
     let f1 = eval(f, t + h, &y1, t, 1, &mut work.fevals)?;
-    let mut der2 = 0.0;
-    for i in 0..y.dim() {
-        der2 += ((f1.as_slice()[i] - f0.as_slice()[i]) / sk(i)).powi(2);
-    }
-    let der2 = (der2 / n).sqrt() / h;
+    let der2 = rms(y.dim(), |i| (f1.as_slice()[i] - f0.as_slice()[i]) / sk(i)) / h;
     let der12 = der2.abs().max(dnf);
     let h1 = if der12 <= 1e-15 { (h * 1e-3).max(1e-6) } else { (0.01 / der12).powf(1.0 / order) };
     Ok((100.0 * h).min(h1).min(h_max))
