@@ -97,10 +97,9 @@ pub struct ContactEvent {
 /// The state of the contacts through a run: which rest, and the events so far.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Contacts {
-    /// Per contact (declaration order among the contact effects): resting?
+    /// Per contact (declaration order among the contact effects, `Scene::contacts` gives each
+    /// one's effect index): resting?
     pub resting: Vec<bool>,
-    /// The effect index of each contact.
-    pub effect: Vec<usize>,
     pub events: Vec<ContactEvent>,
 }
 
@@ -284,7 +283,7 @@ impl Scene {
                         return Err(format!(
                             "the contact of effects[{}] ends a step at t = {t1:e} s penetrating by {:e} m without \
                              a located touch",
-                            contacts.effect[c], -g.gap
+                            self.contacts[c], -g.gap
                         ));
                     }
                 }
@@ -314,7 +313,7 @@ impl Scene {
         let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
         let hits = self.impacts(&kin, v, &contacts.resting);
         for &(c, closing_speed, opening_speed) in &hits {
-            let (effect, kind) = (contacts.effect[c], ContactEventKind::Impact);
+            let (effect, kind) = (self.contacts[c], ContactEventKind::Impact);
             contacts.record(ContactEvent { t, effect, kind, closing_speed, opening_speed });
         }
         work.impacts += hits.len();

@@ -232,6 +232,40 @@ fn dominant(a: &DMatrix<f64>, l: &Complex<f64>) -> Option<usize> {
     (0..n).max_by(|&i, &j| x[i].norm().total_cmp(&x[j].norm()))
 }
 
+/// g's value, ∂g/∂x and ∂g/∂u.
+type DualColumns = (Vec<f64>, DMatrix<f64>, DMatrix<f64>);
+
+/// Forward-mode derivatives of g(x, u): one Dual64 evaluation per variable, the j-th seeded
+/// (ε = 1), so the ε parts of the result are the j-th column. Returns g's value, ∂g/∂x and
+/// ∂g/∂u; a value or derivative that is not finite is an error.
+fn dual_columns(
+    x: &[f64],
+    u: &[f64],
+    mut g: impl FnMut(&[Dual64], &[Dual64]) -> Result<Vec<Dual64>, String>,
+) -> Result<DualColumns, String> {
+    let (n, m) = (x.len(), u.len());
+    let (mut value, mut gx, mut gu) = (Vec::new(), DMatrix::zeros(0, n), DMatrix::zeros(0, m));
+    for j in 0..n + m {
+        let seed = |k: usize, v: f64| Dual64::new(v, if k == j { 1.0 } else { 0.0 });
+        let xd: Vec<Dual64> = x.iter().enumerate().map(|(k, v)| seed(k, *v)).collect();
+        let ud: Vec<Dual64> = u.iter().enumerate().map(|(k, v)| seed(n + k, *v)).collect();
+        let r = g(&xd, &ud)?;
+        if let Some(bad) = r.iter().find(|d| !(d.re.is_finite() && d.eps.is_finite())) {
+            return Err(format!(
+                "a derivative is not finite ({bad}); valid: a state where the dynamics are smooth"
+            ));
+        }
+        if j == 0 {
+            (gx, gu) = (DMatrix::zeros(r.len(), n), DMatrix::zeros(r.len(), m));
+        }
+        value = r.iter().map(|d| d.re).collect();
+        for (i, d) in r.iter().enumerate() {
+            if j < n { gx[(i, j)] = d.eps } else { gu[(i, j - n)] = d.eps }
+        }
+    }
+    Ok((value, gx, gu))
+}
+
 /// Exact first derivatives at a state of the linearization (x = (δ, v) about q₀).
 pub(crate) struct Jacobians {
     /// v̇ at the state.
@@ -297,32 +331,18 @@ impl Scene {
     pub(crate) fn jacobians_at(&self, q0: &[f64], u0: &[f64], x: &[f64]) -> Result<Jacobians, String> {
         let model = self.built.model.cast::<Dual64>();
         let mut w = RhsScratch::for_model(self, &model);
-        let (n, m) = (x.len(), self.inputs().len());
-        let (mut vdot_x, mut vdot_u) = (DMatrix::zeros(n / 2, n), DMatrix::zeros(n / 2, m));
-        let mut row_x = DMatrix::zeros(self.columns().len(), n);
-        let mut vdot = Vec::new();
-        for j in 0..n + m {
-            // seed the j-th variable: the ε parts are the j-th column
-            let seed = |k: usize, x: f64| Dual64::new(x, if k == j { 1.0 } else { 0.0 });
-            let xd: Vec<Dual64> = x.iter().enumerate().map(|(k, x)| seed(k, *x)).collect();
-            let ud: Vec<Dual64> = (0..m).map(|k| seed(n + k, u0[k])).collect();
-            let (a, row) = self.vdot_and_row(&model, q0, &xd, &ud, &mut w)?;
-            if let Some(bad) = a.iter().chain(&row).find(|d| !(d.re.is_finite() && d.eps.is_finite())) {
-                return Err(format!(
-                    "a derivative is not finite ({bad}); valid: a state where the dynamics are smooth"
-                ));
-            }
-            vdot = a.iter().map(|d| d.re).collect();
-            for (i, d) in a.iter().enumerate() {
-                if j < n { vdot_x[(i, j)] = d.eps } else { vdot_u[(i, j - n)] = d.eps }
-            }
-            if j < n {
-                for (i, d) in row.iter().enumerate() {
-                    row_x[(i, j)] = d.eps;
-                }
-            }
-        }
-        Ok(Jacobians { vdot, vdot_x, vdot_u, row_x })
+        let nv = x.len() / 2;
+        let (value, fx, fu) = dual_columns(x, u0, |xd, ud| {
+            let (a, row) = self.vdot_and_row(&model, q0, xd, ud, &mut w)?;
+            Ok([a, row].concat())
+        })?;
+        let rows = fx.nrows();
+        Ok(Jacobians {
+            vdot: value[..nv].to_vec(),
+            vdot_x: fx.rows(0, nv).into_owned(),
+            vdot_u: fu.rows(0, nv).into_owned(),
+            row_x: fx.rows(nv, rows - nv).into_owned(),
+        })
     }
 
     /// The Jacobians of the right-hand side y′ = f(t, y, u) at (t, y) with the inputs u = 0:
@@ -353,23 +373,12 @@ impl Scene {
         }
         let model = self.built.model.cast::<Dual64>();
         let mut w = RhsScratch::for_model(self, &model);
-        let m = self.inputs().len();
-        let (mut fy, mut fu) = (DMatrix::zeros(n, n), DMatrix::zeros(n, m));
         let mut out = vec![Dual64::from(0.0); n];
-        for j in 0..n + m {
-            let seed = |k: usize, x: f64| Dual64::new(x, if k == j { 1.0 } else { 0.0 });
-            let yd: Vec<Dual64> = y.iter().enumerate().map(|(k, x)| seed(k, *x)).collect();
-            let ud: Vec<Dual64> = (0..m).map(|k| seed(n + k, 0.0)).collect();
-            self.deriv_tree(&model, t, &yd, Some(&ud), &mut out, &mut w).map_err(fail)?;
-            for (i, d) in out.iter().enumerate() {
-                if !d.eps.is_finite() {
-                    return Err(fail(format!(
-                        "∂f{i}/∂ is not finite; valid: a state where the dynamics are smooth"
-                    )));
-                }
-                if j < n { fy[(i, j)] = d.eps } else { fu[(i, j - n)] = d.eps }
-            }
-        }
+        let (_, fy, fu) = dual_columns(y, &vec![0.0; self.inputs().len()], |yd, ud| {
+            self.deriv_tree(&model, t, yd, Some(ud), &mut out, &mut w)?;
+            Ok(out.clone())
+        })
+        .map_err(fail)?;
         Ok((fy, fu))
     }
 }

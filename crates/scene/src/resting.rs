@@ -151,7 +151,7 @@ impl Scene {
                     "the contact of effects[{}] comes to rest at t = {t:e} s in a scene with loops, rolling or \
                      inerters; resting contact is simulated for free spheres alone; valid: restitution 1, or a \
                      duration that ends before the bounces die out",
-                    contacts.effect[c]
+                    self.contacts[c]
                 ));
             }
             for (c2, r2) in contacts.resting.iter().enumerate() {
@@ -162,7 +162,7 @@ impl Scene {
                     return Err(format!(
                         "body `{}` comes to rest on two planes whose normals are not perpendicular \
                          (effects[{}] and effects[{}]) at t = {t:e} s; valid: perpendicular resting planes",
-                        self.built.bodies[p.body].name, contacts.effect[c2], contacts.effect[c]
+                        self.built.bodies[p.body].name, self.contacts[c2], self.contacts[c]
                     ));
                 }
             }
@@ -170,7 +170,7 @@ impl Scene {
             contacts.resting[c] = true;
             contacts.record(ContactEvent {
                 t,
-                effect: contacts.effect[c],
+                effect: self.contacts[c],
                 kind: ContactEventKind::Rest,
                 closing_speed: 0.0,
                 opening_speed: u_n.max(0.0),
@@ -208,7 +208,7 @@ impl Scene {
                 "the spheres of effects[{}] stay in contact at t = {t:e} s (bounces accumulate at one instant); \
                  resting contact between spheres is not simulated; valid: restitution 1, or a duration that ends \
                  before the bounces die out",
-                contacts.effect[c]
+                self.contacts[c]
             ));
         }
         Ok(())
@@ -281,7 +281,7 @@ impl Scene {
                         "the resting contact of effects[{}] slips at {slip:e} m/s at t = {t:e} s with friction \
                          {}; sliding, sticking and rolling friction in resting contact are not simulated; valid: \
                          friction = 0 (frictionless resting contact), or a `rolling` effect",
-                        contacts.effect[c], p.mu
+                        self.contacts[c], p.mu
                     ));
                 }
             }

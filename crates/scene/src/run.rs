@@ -113,21 +113,9 @@ pub(crate) fn check_bounds(
 /// the end) closer than the time resolution 64 ε · duration, yet distinct, would need a step
 /// below round-off. Refused at the later one, with what would be valid.
 fn check_breakpoints(spec: &SceneSpec, src: &Src) -> Result<(), SceneError> {
-    use super::spec::EffectSpec as E;
     let resolution = 64.0 * f64::EPSILON * spec.duration;
     let mut times: Vec<(f64, String)> = vec![(0.0, String::new()), (spec.duration, String::new())];
-    for (k, e) in spec.effects.iter().enumerate() {
-        let (E::Force { profile, .. } | E::Torque { profile, .. }) = e else { continue };
-        let at = |key: &str| format!("effects[{k}].profile.{key}");
-        match profile {
-            Profile::Step { at: t, .. } => times.push((*t, at("at"))),
-            Profile::Ramp { t0, t1, .. } => times.extend([(*t0, at("t0")), (*t1, at("t1"))]),
-            Profile::Table { t, .. } => {
-                times.extend(t.iter().enumerate().map(|(i, x)| (*x, at(&format!("t[{i}]")))))
-            }
-            Profile::Constant { .. } | Profile::Sine { .. } => {}
-        }
-    }
+    times.extend(profile_corners(spec));
     times.retain(|(t, _)| (0.0..=spec.duration).contains(t));
     times.sort_by(|a, b| a.0.total_cmp(&b.0));
     for w in times.windows(2) {
@@ -449,23 +437,30 @@ pub struct RunControl<'a> {
 
 /// Times in (0, duration) where an applied load profile is discontinuous or has a kink.
 fn breakpoints(spec: &SceneSpec) -> Vec<f64> {
-    let mut out = Vec::new();
-    for e in &spec.effects {
-        use super::spec::EffectSpec as E;
-        let p = match e {
-            E::Force { profile, .. } | E::Torque { profile, .. } => profile,
-            _ => continue,
-        };
-        match p {
-            Profile::Step { at, .. } => out.push(*at),
-            Profile::Ramp { t0, t1, .. } => out.extend([*t0, *t1]),
-            Profile::Table { t, .. } => out.extend(t.iter().copied()),
-            Profile::Constant { .. } | Profile::Sine { .. } => {}
-        }
-    }
+    let mut out: Vec<f64> = profile_corners(spec).into_iter().map(|(t, _)| t).collect();
     out.retain(|&t| t > 0.0 && t < spec.duration);
     out.sort_by(f64::total_cmp);
     out.dedup();
+    out
+}
+
+/// Every corner and jump of the applied-load profiles, with the item path of the key that
+/// declares it (`effects[k].profile.at`, `.t0`, `.t1`, `.t[i]`), in declaration order.
+fn profile_corners(spec: &SceneSpec) -> Vec<(f64, String)> {
+    use super::spec::EffectSpec as E;
+    let mut out = Vec::new();
+    for (k, e) in spec.effects.iter().enumerate() {
+        let (E::Force { profile, .. } | E::Torque { profile, .. }) = e else { continue };
+        let at = |key: &str| format!("effects[{k}].profile.{key}");
+        match profile {
+            Profile::Step { at: t, .. } => out.push((*t, at("at"))),
+            Profile::Ramp { t0, t1, .. } => out.extend([(*t0, at("t0")), (*t1, at("t1"))]),
+            Profile::Table { t, .. } => {
+                out.extend(t.iter().enumerate().map(|(i, x)| (*x, at(&format!("t[{i}]")))))
+            }
+            Profile::Constant { .. } | Profile::Sine { .. } => {}
+        }
+    }
     out
 }
 
@@ -582,7 +577,6 @@ impl Scene {
         // contacts: which rest, and what happened (the right-hand side reads `resting`)
         let contacts = std::cell::RefCell::new(Contacts {
             resting: vec![false; self.contacts.len()],
-            effect: self.contacts.clone(),
             events: Vec::new(),
         });
         // a rebound shorter than tau_min comes to rest; the contact scan splits no shorter piece
@@ -725,7 +719,7 @@ impl Scene {
                     let y = st.dense().map_err(ode_err)?.eval(te);
                     let mut c = contacts.borrow_mut();
                     c.resting[k] = false;
-                    let effect = c.effect[k];
+                    let effect = self.contacts[k];
                     let kind = ContactEventKind::LiftOff;
                     c.record(ContactEvent { t: te, effect, kind, closing_speed: 0.0, opening_speed: 0.0 });
                     run.work.restarts += 1;
