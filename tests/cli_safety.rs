@@ -13,7 +13,11 @@
 //!
 //! Book: — (the command line; scenes of §7.11).
 
-use std::path::{Path, PathBuf};
+mod support;
+
+use std::path::Path;
+
+use support::snapshot;
 
 use vectrix_cli::{Outcome, run_with_args};
 
@@ -39,24 +43,6 @@ fn pendulum(dir: &Path, file: &str, name: &str, outputs: &str, samples: usize, q
 
 fn simple(dir: &Path) -> String {
     pendulum(dir, "p.toml", "p", "[\"coordinates:bob\", \"energy\"]", 10, "1.0")
-}
-
-/// Every file below `dir` with its contents, to show that nothing changed.
-fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).unwrap() {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
-            } else {
-                out.push((p.clone(), std::fs::read(&p).unwrap_or_default()));
-            }
-        }
-    }
-    out.sort();
-    out
 }
 
 fn json(path: &Path) -> serde_json::Value {

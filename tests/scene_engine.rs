@@ -11,7 +11,9 @@ mod support;
 
 use crate::support::nan_max;
 use std::path::{Path, PathBuf};
+
 use std::process::Command;
+use support::snapshot;
 
 use vectrix::scene::{InvariantValue, Run, Scene, SceneError, StopReason};
 use vectrix_ode::harness::RigidBody;
@@ -38,24 +40,6 @@ fn pendulum(name_line: &str) -> String {
          \"pin\", axis = [0.0, 0.0, 1.0] }}\nmass = {{ shape = \"particle\", mass = 1.0 }}\ncom = [0.0, -1.0, 0.0]\nq = \
          [0.5]\n\n[[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, -9.81, 0.0]\n"
     )
-}
-
-/// Every file below `dir` with its contents, to compare a tree before and after.
-fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).unwrap() {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
-            } else {
-                out.push((p.clone(), std::fs::read(&p).unwrap()));
-            }
-        }
-    }
-    out.sort();
-    out
 }
 
 // ---------------------------------------------------------------- item 1: output safety
