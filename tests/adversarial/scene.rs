@@ -362,7 +362,7 @@ cases! {
 
     // Load profiles and loop names (spec): shifting adds du at every t (and nothing to times);
     // a loop reports its name.
-    scene_spec_values ["Profile::shifted", "LoopSpec::name"] {
+    scene_spec_values ["Profile::shifted", "Profile::eval", "LoopSpec::name"] {
         // compared through their Debug text, so that NaN + du = NaN compares equal
         let same = |a: &Profile, b: &Profile| format!("{a:?}") == format!("{b:?}");
         for du in crate::harness::hostile() {
@@ -375,6 +375,15 @@ cases! {
             assert!(same(&st, &Profile::Step { at: 1.0, before: 0.0 + du, after: 2.0 + du }));
             let sn = Profile::Sine { amplitude: 1.0, omega: 2.0, phase: 0.0, offset: 0.5 }.shifted(du);
             assert!(same(&sn, &Profile::Sine { amplitude: 1.0, omega: 2.0, phase: 0.0, offset: 0.5 + du }));
+            // §14.2: a doublet is +A on [t₀, t₀+w), −A on [t₀+w, t₀+2w); a pulse +A on [t₀, t₀+w)
+            let d = Profile::Doublet { start: 1.0, width: 0.5, amplitude: 2.0, offset: 0.25 };
+            let p = Profile::Pulse { start: 1.0, width: 0.5, amplitude: 2.0, offset: 0.25 };
+            for (t, dv, pv) in [(0.999, 0.25, 0.25), (1.0, 2.25, 2.25), (1.5, -1.75, 0.25), (1.999, -1.75, 0.25), (2.0, 0.25, 0.25)] {
+                assert_eq!((d.eval(t), p.eval(t)), (dv, pv), "t = {t}");
+            }
+            // hostile times give a value of the profile's own, never a panic
+            let v = d.eval(du);
+            assert!(v.is_nan() || [0.25, 2.25, -1.75].contains(&v), "doublet({du}) = {v}");
         }
         let four_bar = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/four_bar.toml")).unwrap();
         let s = Scene::from_toml(&four_bar, "four_bar.toml").unwrap();

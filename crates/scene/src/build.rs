@@ -112,6 +112,19 @@ pub(crate) enum Effect {
         point: Vector3<f64>,
         n: Vector3<f64>,
     },
+    /// An aircraft's aerodynamics on a free body (see [`super::aero`]).
+    Aero {
+        body: usize,
+        aircraft: Box<vectrix_flight::Aircraft>,
+        /// δe, δa, δr.
+        controls: Box<[Profile; 3]>,
+    },
+    /// Thrust along the tilted x axis of a body, at its centre of mass.
+    Thrust {
+        body: usize,
+        profile: Profile,
+        angle: f64,
+    },
 }
 
 /// Errors are located by item path in the spanned document.
@@ -199,6 +212,10 @@ fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), (&'static str, String
         MassSpec::Disk { mass, radius } => {
             let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
             (m, Matrix3::from_diagonal(&Vector3::new(m * r * r / 4.0, m * r * r / 4.0, m * r * r / 2.0)))
+        }
+        MassSpec::Aircraft { model } => {
+            let ac = super::aero::catalogue(model).ok_or(("model", super::aero::unknown_aircraft(model)))?;
+            (ac.airframe.mass(), ac.airframe.inertia_matrix())
         }
         MassSpec::Value { mass, principal, matrix } => {
             let m = pos(*mass, "mass")?;

@@ -11,7 +11,6 @@ use vectrix_tensor::Scalar;
 
 use super::build::{Body, Effect};
 use super::kin::{Kin, lift};
-use super::resolve::eval_profile;
 use vectrix_dynamics::multibody::JointWrench;
 
 /// World vector ↔ frame-free vector through the ground frame, in the scalar of an evaluation.
@@ -153,12 +152,28 @@ pub(crate) fn apply<T: Scalar>(
             }
             Effect::Force { at, dir, profile } => {
                 let (p, _) = loads.kin.point(at);
-                let f = lift::<T>(dir) * magnitude(eval_profile(profile, t));
+                let f = lift::<T>(dir) * magnitude(profile.eval(t));
                 loads.force(at.0, &p, &f);
             }
             Effect::Torque { body, dir, profile } => {
-                let m = lift::<T>(dir) * magnitude(eval_profile(profile, t));
+                let m = lift::<T>(dir) * magnitude(profile.eval(t));
                 loads.torque(*body, &m)
+            }
+            Effect::Thrust { body, profile, angle } => {
+                // (11.2.11): F_T [cos Φ_T, 0, −sin Φ_T] in link components, at the centre of mass
+                let f_t = magnitude(profile.eval(t));
+                let e = loads.kin.poses[*body].0;
+                let f = e.tr_mul(&Vector3::new(c(angle.cos()), T::zero(), c(-angle.sin()))) * f_t;
+                loads.force(Some(*body), &centre(loads.kin, &bodies[*body], *body), &f);
+            }
+            Effect::Aero { body, aircraft, controls } => {
+                // at α̇ = β̇ = 0; the rate terms are solved after ABA (`aero::aero_rates`)
+                let u = [0, 1, 2].map(|k| magnitude(controls[k].eval(t)));
+                let b = &bodies[*body];
+                let (vel, omega) = super::aero::air_velocity(loads.kin, b, *body);
+                let w = super::aero::wrench(aircraft, b, &vel, &omega, u, (T::zero(), T::zero()))?;
+                loads.wrenches[*body].force += w.force;
+                loads.wrenches[*body].moment += w.moment;
             }
             Effect::Uniform { .. }
             | Effect::Inerter { .. }

@@ -107,7 +107,7 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
                 conservative = false;
                 external_force = true;
             }
-            Effect::Force { .. } | Effect::Torque { .. } => {
+            Effect::Force { .. } | Effect::Torque { .. } | Effect::Aero { .. } | Effect::Thrust { .. } => {
                 conservative = false;
                 external_force = true;
             }

@@ -17,6 +17,7 @@
 
 #![warn(missing_docs)]
 
+mod aero;
 mod build;
 mod contacts;
 mod error;
@@ -28,6 +29,7 @@ mod kin;
 mod linearize;
 mod loops;
 mod outputs;
+mod profile;
 mod project;
 mod quantities;
 mod query;
@@ -39,6 +41,7 @@ mod source;
 pub mod spec;
 mod trim;
 
+pub use aero::AIRCRAFT;
 pub use build::MAX_MAGNITUDE;
 pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME_REL};
 pub use error::SceneError;
@@ -83,6 +86,8 @@ pub(crate) struct Needs {
     /// Every joint's coordinates are its velocities (pins, sleeves, collars, slots, welds: no
     /// ball or free joint), numbered alike: q̇ = v is a copy.
     pub qdot_is_v: bool,
+    /// An aero effect's forces depend on α̇ or β̇ (solved after ABA, see `aero`).
+    pub aero_rates: bool,
 }
 
 impl Needs {
@@ -234,6 +239,19 @@ impl Scene {
             }
         }
         needs.loops = !built.loops.is_empty();
+        needs.aero_rates = built.effects.iter().any(|e| match e {
+            build::Effect::Aero { aircraft, .. } => aero::has_rate_terms(aircraft),
+            _ => false,
+        });
+        if needs.aero_rates && needs.constrained() {
+            let k = spec.effects.iter().position(|e| matches!(e, spec::EffectSpec::Aero { .. })).unwrap_or(0);
+            return Err(src.invalid(
+                format!("effects[{k}]"),
+                "an aero effect with loops, rolling contacts or inerters is not supported (its α̇/β̇ solve runs on \
+                 the tree's forward dynamics); valid: an aircraft in a tree of bodies (a slung load on a ball \
+                 joint, a rotor on a pin)",
+            ));
+        }
         needs.qdot_is_v = built.model.nq() == built.model.nv()
             && built.bodies.iter().all(|b| {
                 b.qi == b.vi && !matches!(b.joint, spec::JointSpec::Ball {} | spec::JointSpec::Free {})

@@ -27,7 +27,7 @@ use vectrix_tensor::Scalar;
 use super::build::dims;
 use super::kin::{Kin, kinematics_into, normalize};
 use super::rhs::RhsScratch;
-use super::spec::{EffectSpec, JointSpec};
+use super::spec::JointSpec;
 use super::{Scene, SceneError};
 
 /// The moving coordinates of a steady motion are cyclic when ∂v̇/∂x changes along the motion
@@ -279,13 +279,22 @@ pub(crate) struct Jacobians {
 }
 
 impl Scene {
-    /// The inputs of a linearization: the `force` and `torque` effects, by index in `effects`.
-    pub(crate) fn inputs(&self) -> Vec<usize> {
+    /// The inputs of a linearization, in the order the right-hand side reads them: every
+    /// profile of the `force`, `torque`, `thrust` and `aero` effects, as (effect index, key);
+    /// named `effects[k]` for a one-profile effect and `effects[k].elevator` (`aileron`,
+    /// `rudder`) for an aircraft's controls.
+    pub(crate) fn inputs(&self) -> Vec<(usize, &'static str)> {
         let effects = self.spec().effects.iter().enumerate();
-        effects
-            .filter(|(_, e)| matches!(e, EffectSpec::Force { .. } | EffectSpec::Torque { .. }))
-            .map(|(k, _)| k)
-            .collect()
+        effects.flat_map(|(k, e)| e.profiles().into_iter().map(move |(key, _)| (k, key))).collect()
+    }
+
+    /// The names of [`Scene::inputs`].
+    pub(crate) fn input_names(&self) -> Vec<String> {
+        let name = |(k, key): (usize, &str)| match key {
+            "profile" => format!("effects[{k}]"),
+            _ => format!("effects[{k}].{key}"),
+        };
+        self.inputs().into_iter().map(name).collect()
     }
 
     /// Scenes whose right-hand side is the tree's alone (no loops, rolling or inerters): the
@@ -488,7 +497,7 @@ impl Scene {
             ok: ra <= EQUILIBRIUM_TOL && (steady || rv <= EQUILIBRIUM_TOL),
         };
         let state = self.state_names();
-        let input_names = inputs.iter().map(|k| format!("effects[{k}]")).collect();
+        let input_names = self.input_names();
         LinearModel::new(spec.name.clone(), state, input_names, outputs, (a, bm, cm, dm), steady, residual)
             .map_err(fail)
     }

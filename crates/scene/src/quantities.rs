@@ -156,6 +156,7 @@ const MU: &[Dimension] = &[Dimension::GRAVITATIONAL_PARAMETER];
 const BIG_G: &[Dimension] = &[Dimension::new(-1, 3, -2, 0)];
 const STIFFNESS: &[Dimension] = &[Dimension::STIFFNESS];
 const DAMPING: &[Dimension] = &[Dimension::DAMPING];
+const DENSITY: &[Dimension] = &[Dimension::new(1, -3, 0, 0)];
 
 /// The key of a path step (`None` for an index).
 pub fn key_of(s: &Step) -> Option<&str> {
@@ -210,9 +211,18 @@ pub fn body_schema(path: &[Step], root: &Value) -> Option<Expect> {
 
 fn effect_schema(kind: &str, rest: &[Option<&str>]) -> Option<Expect> {
     let profile_value = match kind {
-        "force" => FORCE,
+        "force" | "thrust" => FORCE,
         "torque" => MOMENT,
+        "aero" => ANGLE,
         _ => ONE,
+    };
+    let profile = |tail: &[Option<&str>]| match tail {
+        [Some("at" | "t0" | "t1" | "start" | "width")] | [Some("t"), None] => si(TIME),
+        [Some("value" | "before" | "after" | "from" | "to" | "amplitude" | "offset")]
+        | [Some("value"), None] => si(profile_value),
+        [Some("omega")] => si(ANGULAR_VELOCITY),
+        [Some("phase")] => si(ANGLE),
+        _ => None,
     };
     match (kind, rest) {
         ("uniform_gravity", [Some("g"), None]) => si(ACCELERATION),
@@ -230,14 +240,10 @@ fn effect_schema(kind: &str, rest: &[Option<&str>]) -> Option<Expect> {
         ("rotational_inerter", [Some("beta")]) => si(BETA),
         ("dipoles", [Some("dipoles"), None, Some("moment"), None]) => si(ONE),
         ("force" | "torque", [Some("direction"), None]) => si(ONE),
-        ("force" | "torque", [Some("profile"), Some(key), tail @ ..]) => match (*key, tail) {
-            ("at" | "t0" | "t1", []) | ("t", [None]) => si(TIME),
-            ("value" | "before" | "after" | "from" | "to" | "amplitude" | "offset", [])
-            | ("value", [None]) => si(profile_value),
-            ("omega", []) => si(ANGULAR_VELOCITY),
-            ("phase", []) => si(ANGLE),
-            _ => None,
-        },
+        ("force" | "torque" | "thrust", [Some("profile"), tail @ ..]) => profile(tail),
+        ("aero", [Some("elevator" | "aileron" | "rudder"), tail @ ..]) => profile(tail),
+        ("aero", [Some("rho")]) => si(DENSITY),
+        ("thrust", [Some("angle")]) => si(ANGLE),
         ("contact_spheres", [Some("radius_a" | "radius_b")]) => si(LENGTH),
         ("contact_plane" | "rolling", [Some("radius")]) => si(LENGTH),
         ("contact_plane" | "rolling", [Some("point"), None]) => si(LENGTH),

@@ -7,7 +7,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::SceneError;
 use super::build::{At, Body, Effect, Src, angle_dof, v3};
-use super::spec::{Attach, EffectSpec, JointSpec, LoopSpec, Profile};
+use super::spec::{Attach, EffectSpec, JointSpec, LoopSpec};
 use vectrix_dynamics::multibody::Model;
 
 fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> {
@@ -121,7 +121,7 @@ pub(crate) fn effect(
         if !matches!(bodies[i].joint, JointSpec::Free {}) || bodies[i].parent.is_some() {
             return Err(src.invalid(
                 key(k),
-                format!("body `{name}` must be on a free joint to the ground for impacts and rolling"),
+                format!("body `{name}` must be on a free joint to the ground for impacts, rolling and aero effects"),
             ));
         }
         Ok(i)
@@ -148,7 +148,9 @@ pub(crate) fn effect(
             Err(src.invalid(key("restitution"), format!("e = {x}; valid: 0 ≤ e ≤ 1")))
         }
     };
-    check_profile(e, path, src)?;
+    for (key, p) in e.profiles() {
+        p.check(&format!("{path}.{key}"), src)?;
+    }
     Ok(match e {
         EffectSpec::UniformGravity { g } => Effect::Uniform { g: v3(*g) },
         EffectSpec::CentralGravity { mu, centre } => {
@@ -211,6 +213,26 @@ pub(crate) fn effect(
             e: restitution(*e)?,
             mu: nonneg(*friction, "friction", path, src)?,
         },
+        EffectSpec::Aero { body, aircraft, rho, elevator, aileron, rudder } => {
+            let mut ac = super::aero::catalogue(aircraft)
+                .ok_or_else(|| src.invalid(key("aircraft"), super::aero::unknown_aircraft(aircraft)))?;
+            if let Some(rho) = rho {
+                if !(rho.is_finite() && *rho > 0.0) {
+                    return Err(
+                        src.invalid(key("rho"), format!("ρ = {rho} kg/m³; valid: a finite density > 0"))
+                    );
+                }
+                ac.rho = *rho;
+            }
+            Effect::Aero {
+                body: free(body, "body")?,
+                aircraft: Box::new(ac),
+                controls: Box::new([elevator.clone(), aileron.clone(), rudder.clone()]),
+            }
+        }
+        EffectSpec::Thrust { body, profile, angle } => {
+            Effect::Thrust { body: body_of(body, &key("body"))?, profile: profile.clone(), angle: *angle }
+        }
         EffectSpec::Rolling { body, shape, radius, point, normal } => {
             let disk = match shape.as_str() {
                 "disk" => true,
@@ -226,52 +248,4 @@ pub(crate) fn effect(
             }
         }
     })
-}
-
-fn check_profile(e: &EffectSpec, path: &str, src: &Src) -> Result<(), SceneError> {
-    let p = match e {
-        EffectSpec::Force { profile, .. } | EffectSpec::Torque { profile, .. } => profile,
-        _ => return Ok(()),
-    };
-    match p {
-        Profile::Ramp { t0, t1, .. } if t1 <= t0 => {
-            Err(src.invalid(format!("{path}.profile.t1"), format!("t1 = {t1} ≤ t0 = {t0}; valid: t1 > t0")))
-        }
-        Profile::Table { t, value }
-            if t.len() != value.len() || t.is_empty() || t.windows(2).any(|w| w[1] <= w[0]) =>
-        {
-            Err(src.invalid(
-                format!("{path}.profile.t"),
-                "valid: `t` and `value` of equal nonzero length, `t` strictly increasing",
-            ))
-        }
-        _ => Ok(()),
-    }
-}
-
-/// f(t) of a profile.
-pub(crate) fn eval_profile(p: &Profile, t: f64) -> f64 {
-    match p {
-        Profile::Constant { value } => *value,
-        Profile::Step { at, before, after } => {
-            if t < *at {
-                *before
-            } else {
-                *after
-            }
-        }
-        Profile::Ramp { t0, t1, from, to } => from + (to - from) * ((t - t0) / (t1 - t0)).clamp(0.0, 1.0),
-        Profile::Sine { amplitude, omega, phase, offset } => offset + amplitude * (omega * t + phase).sin(),
-        Profile::Table { t: ts, value } => {
-            let k = ts.partition_point(|&x| x <= t);
-            if k == 0 {
-                value[0]
-            } else if k == ts.len() {
-                value[k - 1]
-            } else {
-                let s = (t - ts[k - 1]) / (ts[k] - ts[k - 1]);
-                value[k - 1] + s * (value[k] - value[k - 1])
-            }
-        }
-    }
 }

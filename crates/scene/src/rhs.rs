@@ -8,6 +8,7 @@
 use nalgebra::{DMatrix, DVector};
 use vectrix_tensor::Scalar;
 
+use super::aero::AeroScratch;
 use super::forces::{Ground, Loads, apply};
 use super::kin::{Kin, kinematics_into, qdot};
 use super::{Scene, SceneError};
@@ -25,6 +26,8 @@ pub(crate) struct RhsScratch<T: Scalar = f64> {
     ground: Ground<T>,
     /// The independent constraint rows found last (see `loops::solve_dropping`).
     keep: Option<Vec<usize>>,
+    /// The α̇/β̇ solve of aero effects.
+    aero: AeroScratch<T>,
 }
 
 impl RhsScratch {
@@ -44,6 +47,7 @@ impl<T: Scalar> RhsScratch<T> {
             world: PosesScratch::default(),
             ground: Ground::new(),
             keep: None,
+            aero: AeroScratch::new(scene.built.bodies.len(), m.nv(), scene.rate_aircraft().count()),
         }
     }
 }
@@ -220,7 +224,11 @@ impl Scene {
         } else {
             None
         };
-        model.aba_into(q, v, &w.tau, ext, vd, &mut w.aba).map_err(|e| e.to_string())
+        model.aba_into(q, v, &w.tau, ext, vd, &mut w.aba).map_err(|e| e.to_string())?;
+        if self.needs.aero_rates {
+            self.aero_rates(model, q, v, &w.tau, &w.kin, &w.wrenches, vd, &mut w.aba, &mut w.aero)?;
+        }
+        Ok(())
     }
 
     /// M + Σ b g gᵀ (+ rotational inerters): the mass matrix with the inerters, for

@@ -21,7 +21,7 @@ use super::contacts::{ContactEvent, ContactEventKind, Contacts, NextContact};
 use super::kin::{Kin, kinematics, normalize};
 use super::project::{ConstraintViolation, ProjectScratch};
 use super::rhs::RhsScratch;
-use super::spec::{Profile, SceneSpec};
+use super::spec::SceneSpec;
 use super::{Invariant, Scene, SceneError};
 
 /// Default bound on the steps of a run (accepted + rejected).
@@ -447,18 +447,10 @@ fn breakpoints(spec: &SceneSpec) -> Vec<f64> {
 /// Every corner and jump of the applied-load profiles, with the item path of the key that
 /// declares it (`effects[k].profile.at`, `.t0`, `.t1`, `.t[i]`), in declaration order.
 fn profile_corners(spec: &SceneSpec) -> Vec<(f64, String)> {
-    use super::spec::EffectSpec as E;
     let mut out = Vec::new();
     for (k, e) in spec.effects.iter().enumerate() {
-        let (E::Force { profile, .. } | E::Torque { profile, .. }) = e else { continue };
-        let at = |key: &str| format!("effects[{k}].profile.{key}");
-        match profile {
-            Profile::Step { at: t, .. } => out.push((*t, at("at"))),
-            Profile::Ramp { t0, t1, .. } => out.extend([(*t0, at("t0")), (*t1, at("t1"))]),
-            Profile::Table { t, .. } => {
-                out.extend(t.iter().enumerate().map(|(i, x)| (*x, at(&format!("t[{i}]")))))
-            }
-            Profile::Constant { .. } | Profile::Sine { .. } => {}
+        for (key, p) in e.profiles() {
+            out.extend(p.corners().into_iter().map(|(t, at)| (t, format!("effects[{k}].{key}.{at}"))));
         }
     }
     out

@@ -5,6 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
+pub use super::profile::Profile;
+
 /// A whole scene: bodies joined in a tree, the effects acting on them, the run and the outputs.
 ///
 /// Book: §7.11, ch. 6.
@@ -65,6 +67,10 @@ pub struct SceneSpec {
     /// declared effects imply they hold.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub checks: Vec<String>,
+}
+
+fn zero_profile() -> Profile {
+    Profile::Constant { value: 0.0 }
 }
 
 fn default_samples() -> usize {
@@ -221,6 +227,12 @@ pub enum MassSpec {
         /// Radius [m].
         radius: f64,
     },
+    /// The airframe of a catalogue aircraft: its mass and inertia (11.3.6) in SI, about the
+    /// centre of mass, in the aircraft axes (x forward, y right, z down).
+    Aircraft {
+        /// `business_jet`.
+        model: String,
+    },
     /// Given values: mass and the inertia matrix J_{B/c} (principal moments, or full rows).
     Value {
         /// Mass [kg].
@@ -245,80 +257,6 @@ pub struct Attach {
     /// The point relative to the link origin, link components.
     #[serde(default)]
     pub point: [f64; 3],
-}
-
-/// A scalar function of time for applied forces and torques.
-///
-/// Book: §7.x (applied loads as functions of time).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
-pub enum Profile {
-    /// f(t) = value.
-    Constant {
-        /// Value.
-        value: f64,
-    },
-    /// f(t) = before for t < at, after otherwise.
-    Step {
-        /// Switching time.
-        at: f64,
-        /// Value before.
-        #[serde(default)]
-        before: f64,
-        /// Value after.
-        after: f64,
-    },
-    /// Linear from `from` at t0 to `to` at t1, constant outside.
-    Ramp {
-        /// Start time.
-        t0: f64,
-        /// End time (> t0).
-        t1: f64,
-        /// Value until t0.
-        #[serde(default)]
-        from: f64,
-        /// Value from t1.
-        to: f64,
-    },
-    /// offset + amplitude sin(ω t + phase).
-    Sine {
-        /// Amplitude.
-        amplitude: f64,
-        /// Angular frequency ω [rad/s].
-        omega: f64,
-        /// Phase [rad].
-        #[serde(default)]
-        phase: f64,
-        /// Offset.
-        #[serde(default)]
-        offset: f64,
-    },
-    /// Piecewise-linear through (t, value) points (t increasing), constant outside.
-    Table {
-        /// Times, strictly increasing.
-        t: Vec<f64>,
-        /// Values.
-        value: Vec<f64>,
-    },
-}
-
-impl Profile {
-    /// The profile plus a constant `du` at every t (an input perturbation for linearization).
-    pub fn shifted(&self, du: f64) -> Profile {
-        match self.clone() {
-            Profile::Constant { value } => Profile::Constant { value: value + du },
-            Profile::Step { at, before, after } => {
-                Profile::Step { at, before: before + du, after: after + du }
-            }
-            Profile::Ramp { t0, t1, from, to } => Profile::Ramp { t0, t1, from: from + du, to: to + du },
-            Profile::Sine { amplitude, omega, phase, offset } => {
-                Profile::Sine { amplitude, omega, phase, offset: offset + du }
-            }
-            Profile::Table { t, value } => {
-                Profile::Table { t, value: value.into_iter().map(|v| v + du).collect() }
-            }
-        }
-    }
 }
 
 /// How `vectrix linearize` treats the initial state.
@@ -479,6 +417,43 @@ pub enum EffectSpec {
         /// μ ≥ 0.
         #[serde(default)]
         friction: f64,
+    },
+    /// The aerodynamic forces and moments of an aircraft on a free body (§11.1, §13.3–13.5):
+    /// lift, drag and side force from the body's airspeed, angle of attack α and sideslip β,
+    /// its angular velocity, α̇ and β̇, and the control deflections, with the aircraft's
+    /// coefficient model. The body's link axes are the aircraft's (x forward, y right wing,
+    /// z down); the air is at rest in the ground frame. α̇ and β̇ depend on the body's own
+    /// acceleration, so the right-hand side solves for them exactly (the accelerations are
+    /// affine in them).
+    Aero {
+        /// The aircraft body: on a free joint to the ground.
+        body: String,
+        /// The coefficient model from the catalogue: `business_jet` (Tables 14.1–14.2,
+        /// converted exactly to SI).
+        aircraft: String,
+        /// Air density ρ [kg/m³] (default: the catalogue's, 0.000588 slug/ft³ at 40,000 ft).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        rho: Option<f64>,
+        /// Elevator δe [rad] (trailing edge down positive).
+        #[serde(default = "zero_profile")]
+        elevator: Profile,
+        /// Aileron δa [rad] (right aileron up positive).
+        #[serde(default = "zero_profile")]
+        aileron: Profile,
+        /// Rudder δr [rad] (trailing edge left positive).
+        #[serde(default = "zero_profile")]
+        rudder: Profile,
+    },
+    /// Engine thrust F_T on a body along a line tilted up by `angle` from the link x axis,
+    /// F_T [cos Φ_T, 0, −sin Φ_T] in link components (11.2.11), at the centre of mass.
+    Thrust {
+        /// The body.
+        body: String,
+        /// F_T(t) [N].
+        profile: Profile,
+        /// Thrust-line angle Φ_T [rad] above the link x axis (default 0).
+        #[serde(default)]
+        angle: f64,
     },
     /// Rolling without slip of a sphere or a disk (a free body, centre at its link origin)
     /// on a fixed plane.

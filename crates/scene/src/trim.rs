@@ -11,7 +11,7 @@
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-use super::spec::{EffectSpec, SceneSpec};
+use super::spec::SceneSpec;
 use super::{Scene, SceneError};
 
 /// Newton iterations at most.
@@ -47,16 +47,15 @@ impl Scene {
     /// Resolves `[trim] free` (errors located at `trim.free[i]`).
     fn trim_unknowns(&self, free: &[String]) -> Result<Vec<Unknown>, SceneError> {
         let states = self.state_names();
-        let inputs = self.inputs();
+        let inputs = self.input_names();
         let mut out = Vec::new();
         for (i, name) in free.iter().enumerate() {
             let path = format!("trim.free[{i}]");
             let u = if let Some(j) = states.iter().position(|s| s == name) {
                 Unknown::State(j)
-            } else if let Some(j) = inputs.iter().position(|k| format!("effects[{k}]") == *name) {
+            } else if let Some(j) = inputs.iter().position(|k| k == name) {
                 Unknown::Input(j)
             } else {
-                let inputs: Vec<String> = inputs.iter().map(|k| format!("effects[{k}]")).collect();
                 return Err(self.invalid(
                     &path,
                     format!(
@@ -185,12 +184,10 @@ impl Scene {
             body.q = (nq > 0).then(|| q[b.qi..b.qi + nq].to_vec());
             body.v = (nv > 0).then(|| v[b.vi..b.vi + nv].to_vec());
         }
-        for (k, du) in self.inputs().into_iter().zip(u) {
-            if let EffectSpec::Force { profile, .. } | EffectSpec::Torque { profile, .. } =
-                &mut spec.effects[k]
-            {
-                *profile = profile.shifted(*du);
-            }
+        let mut profiles: Vec<&mut super::spec::Profile> =
+            spec.effects.iter_mut().flat_map(|e| e.profiles_mut()).collect();
+        for (p, du) in profiles.iter_mut().zip(u) {
+            **p = p.shifted(*du);
         }
         spec
     }
