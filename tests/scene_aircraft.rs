@@ -260,3 +260,39 @@ fn aero_effect_refusals_name_the_key() {
     let e = Scene::from_toml(&still, "jet.toml").and_then(|s| s.run(&mut |_| {})).unwrap_err().to_string();
     assert!(e.contains("airspeed") && e.contains("`jet`"), "{e}");
 }
+
+/// The eigenvalues with |λ| > 1e-6 (the flight modes; the zeros are position and heading),
+/// sorted by real then imaginary part.
+fn flight_modes(mut l: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+    l.retain(|z| z[0].hypot(z[1]) > 1e-6);
+    l.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    l
+}
+
+#[test]
+fn aircraft_body_modes_equal_the_flight_linearization() {
+    let tr = level_trim();
+    let extra = "linearize = { steady = true }";
+    let scene = Scene::from_toml(&scene_text(&tr.state, &tr.controls, 0.0, 10.0, extra), "jet.toml").unwrap();
+    let lm = scene.linearize().unwrap();
+    let ours = flight_modes(lm.eigenvalues.clone());
+    let lin = vectrix_flight::linearize(&jet(), &tr).unwrap();
+    let theirs =
+        flight_modes(lin.state_space.a().complex_eigenvalues().iter().map(|z| [z.re, z.im]).collect());
+    // short period (2), phugoid (2), Dutch roll (2), roll and spiral: eight modes on each side
+    assert_eq!(ours.len(), 8, "{ours:?}");
+    assert_eq!(theirs.len(), 8, "{theirs:?}");
+    let mut worst = 0.0_f64;
+    for (a, b) in ours.iter().zip(&theirs) {
+        let d = (a[0] - b[0]).hypot(a[1] - b[1]) / b[0].hypot(b[1]);
+        worst = if d.is_nan() || worst.is_nan() { f64::NAN } else { worst.max(d) };
+    }
+    eprintln!("largest relative eigenvalue difference {worst:.2e}");
+    // both linearizations are exact (dual numbers), in different coordinates (quaternion and
+    // ground velocity against Euler angles and body velocity); what differs is the eigenvalue
+    // solvers' absolute error, about ε‖A‖ with ‖A‖ ~ U₀, which is largest relative to the
+    // slowest mode (measured 8e-11)
+    assert!(worst <= 1e-10, "{worst:e}\nscene {ours:?}\nflight {theirs:?}");
+    // the control inputs are the aircraft's: B has the elevator, aileron, rudder and thrust columns
+    assert_eq!(lm.inputs, ["effects[1].elevator", "effects[1].aileron", "effects[1].rudder", "effects[2]"]);
+}
