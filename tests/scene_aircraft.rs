@@ -296,3 +296,56 @@ fn aircraft_body_modes_equal_the_flight_linearization() {
     // the control inputs are the aircraft's: B has the elevator, aileron, rudder and thrust columns
     assert_eq!(lm.inputs, ["effects[1].elevator", "effects[1].aileron", "effects[1].rudder", "effects[2]"]);
 }
+
+#[test]
+fn aircraft_body_level_turn_trim_equals_the_flight_trim() {
+    // a coordinated level turn at 400 kt and 3°/s: steady in the body's axes (the ground
+    // velocity turns with the aircraft), β = 0, ω vertical at the turn rate (§12.5)
+    let turn_rate = 3f64.to_radians();
+    let tr = trim(&jet(), TrimSpec::LevelTurn { airspeed: U0, turn_rate }, TrimLimits::default()).unwrap();
+    let x = AircraftState::from_array([0.0, 0.0, 0.0, U0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+    let u = Controls { elevator: 0.0, aileron: 0.0, rudder: 0.0, thrust: 0.0 };
+    let extra = format!(
+        r#"outputs = ["air:jet", "omega:jet"]
+[trim]
+free = ["dq:jet.3", "dq:jet.4", "dq:jet.5", "v:jet.3", "v:jet.4", "v:jet.5",
+        "effects[1].elevator", "effects[1].aileron", "effects[1].rudder", "effects[2]"]
+hold = {{ "air:jet.beta" = 0.0, "omega:jet.x" = 0.0, "omega:jet.y" = 0.0, "omega:jet.z" = {turn_rate:?} }}"#
+    );
+    let text = scene_text(&x, &u, 0.0, 10.0, "").replace(r#"outputs = ["q", "v"]"#, &extra);
+    let scene = Scene::from_toml(&text, "jet.toml").unwrap();
+    let report = scene.trim_report().expect("trimmed");
+    let body = &scene.spec().bodies[0];
+    let (q, v) = (body.q.as_ref().unwrap(), body.v.as_ref().unwrap());
+    let r = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(q[3], q[4], q[5], q[6]));
+    let (phi, theta, _) = r.euler_angles();
+    let e = tr.state.attitude;
+    let c = tr.controls;
+    let got = [phi, theta, v[3], v[4], v[5], report.change[6], report.change[7], report.change[8]];
+    let want = [
+        e.phi,
+        e.theta,
+        tr.state.omega[0],
+        tr.state.omega[1],
+        tr.state.omega[2],
+        c.elevator,
+        c.aileron,
+        c.rudder,
+    ];
+    eprintln!(
+        "turn trim: scene {got:?}\n           flight {want:?}; F_T {} vs {}",
+        report.change[9], c.thrust
+    );
+    for (k, (a, b)) in got.iter().zip(&want).enumerate() {
+        // angles (rad), rates (rad/s) and deflections (rad): absolute 1e-10
+        assert!((a - b).abs() <= 1e-10, "unknown {k}: scene {a:e}, flight {b:e}");
+    }
+    assert!(
+        (report.change[9] - c.thrust).abs() <= 1e-10 * c.thrust,
+        "F_T {} vs {}",
+        report.change[9],
+        c.thrust
+    );
+    // the bank is the turn's: tan φ = V Ψ̇ / g (a coordinated turn)
+    assert!(phi > 0.1, "φ = {phi}");
+}

@@ -306,7 +306,7 @@ cases! {
     // Trim (§12.3): from hostile starting angles the double pendulum trims to an equilibrium
     // (every |v̇| ≤ TRIM_TOL, finite state) or is refused at `trim`; a scene without `[trim]`
     // has no report.
-    scene_trim ["Scene::trimmed", "Scene::trim_report"] {
+    scene_trim ["Scene::trimmed", "Scene::trimmed_holding", "Scene::trim_report"] {
         let free = ["dq:upper.0".to_string(), "dq:lower.0".to_string()];
         for x in crate::harness::hostile() {
             let Ok(s) = Scene::from_toml(&double_pendulum([x, 0.1], ""), "dp.toml") else { continue };
@@ -319,6 +319,17 @@ cases! {
         let s = Scene::from_toml(&double_pendulum([0.4, -0.3], ""), "dp.toml").unwrap();
         refused(s.trimmed(&[]), "trimmed(no unknowns)");
         refused(s.trimmed(&["dq:nobody.0".to_string()]), "trimmed(unknown)");
+        // held output columns at hostile targets: steady and on target, or refused at `trim`
+        use std::collections::BTreeMap;
+        let held = |name: &str, x: f64| BTreeMap::from([(name.to_string(), x)]);
+        for c in s.columns().iter().take(2) {
+            for x in crate::harness::hostile() {
+                err_or(s.trimmed_holding(&free, &held(c, x)), "trimmed_holding", |(_, r)| {
+                    r.residual <= vectrix::scene::TRIM_TOL
+                });
+            }
+        }
+        refused(s.trimmed_holding(&free, &held("no_such_column", 0.0)), "trimmed_holding(unknown column)");
     }
 
     // Linearization (§12.6): the hanging double pendulum of unit masses and rods has

@@ -203,7 +203,7 @@ impl Scene {
     fn build(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
         let scene = Self::build_plain(spec, src)?;
         let Some(t) = scene.spec.trim.clone() else { return Ok(scene) };
-        let (trimmed, report) = scene.trimmed(&t.free)?;
+        let (trimmed, report) = scene.trimmed_holding(&t.free, &t.hold)?;
         let mut scene = Self::build_plain(trimmed, src)?;
         scene.trim = Some(report);
         Ok(scene)

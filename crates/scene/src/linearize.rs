@@ -303,13 +303,14 @@ impl Scene {
         !self.needs.constrained()
     }
 
-    /// v̇ and the output columns at x = (δ, v) (q = q₀ ⊕ δ) with the inputs u, in any scalar.
+    /// v̇ and the output columns at x = (δ, v) (q = q₀ ⊕ δ) with the inputs u, in any scalar;
+    /// with `body_axes`, a free joint's translational v̇ is taken in its body's axes (see
+    /// [`Scene::body_axis_rates`]).
     fn vdot_and_row<T: Scalar>(
         &self,
         model: &Model<T>,
-        q0: &[f64],
-        x: &[T],
-        u: &[T],
+        (q0, x, u): (&[f64], &[T], &[T]),
+        body_axes: bool,
         w: &mut RhsScratch<T>,
     ) -> Result<(Vec<T>, Vec<T>), String> {
         let b = &self.built;
@@ -325,32 +326,71 @@ impl Scene {
         kinematics_into(model, &b.bodies, &self.order, q, v, &mut kin, &mut PosesScratch::default());
         let mut row = Vec::new();
         self.row(&kin, q, v, None, &mut row);
-        Ok((out[nq..].to_vec(), row))
+        let mut vd = out[nq..].to_vec();
+        if body_axes {
+            self.body_axis_rates(&kin, &mut vd);
+        }
+        Ok((vd, row))
+    }
+
+    /// A free joint's (on the ground) translational acceleration (joint-frame components of the
+    /// origin's acceleration) replaced by the rate of its velocity in the body's own axes,
+    /// d/dt(𝓞 v_o) = 𝓞 a_o − ω × 𝓞 v_o (transport theorem): zero in a steady turn, where the
+    /// ground velocity turns with the body. The other joints' v̇ are left as they are.
+    ///
+    /// Book: §5.x (transport theorem), §12.5 (steady turning flight).
+    pub(crate) fn body_axis_rates<T: Scalar>(&self, kin: &Kin<T>, vd: &mut [T]) {
+        for (i, b) in self.built.bodies.iter().enumerate() {
+            if !matches!(b.joint, JointSpec::Free {}) || b.parent.is_some() {
+                continue;
+            }
+            let e = kin.poses[i].0;
+            let w = e * kin.omega[i];
+            // the ground joint frame's components of a_o → ground → body
+            let a_o = super::kin::lift33::<T>(&b.orient).tr_mul(&nalgebra::Vector3::new(
+                vd[b.vi],
+                vd[b.vi + 1],
+                vd[b.vi + 2],
+            ));
+            let r = e * a_o - w.cross(&(e * kin.vel[i]));
+            vd[b.vi..b.vi + 3].copy_from_slice(r.as_slice());
+        }
     }
 
     /// Exact ∂v̇/∂x, ∂v̇/∂u and ∂(outputs)/∂x at x about the initial configuration, with no
     /// inputs added.
     fn jacobians(&self, x: &[f64]) -> Result<Jacobians, String> {
         let q0 = self.initial_state()[..self.built.model.nq()].to_vec();
-        self.jacobians_at(&q0, &vec![0.0; self.inputs().len()], x)
+        self.jacobians_at(&q0, &vec![0.0; self.inputs().len()], x, None)
     }
 
     /// Exact ∂v̇/∂x, ∂v̇/∂u and ∂(outputs)/∂x at x = (δ, v) about the configuration q0 with the
-    /// inputs u0, by one dual-number evaluation per state and input.
-    pub(crate) fn jacobians_at(&self, q0: &[f64], u0: &[f64], x: &[f64]) -> Result<Jacobians, String> {
+    /// inputs u0, by one dual-number evaluation per state and input. With `hold` (a trim's), the
+    /// residual is v̇ with free joints in body axes followed by output column − target for each
+    /// (column, target) held.
+    pub(crate) fn jacobians_at(
+        &self,
+        q0: &[f64],
+        u0: &[f64],
+        x: &[f64],
+        hold: Option<&[(usize, f64)]>,
+    ) -> Result<Jacobians, String> {
         let model = self.built.model.cast::<Dual64>();
         let mut w = RhsScratch::for_model(self, &model);
-        let nv = x.len() / 2;
+        let nr = x.len() / 2 + hold.map_or(0, |h| h.len());
         let (value, fx, fu) = dual_columns(x, u0, |xd, ud| {
-            let (a, row) = self.vdot_and_row(&model, q0, xd, ud, &mut w)?;
+            let (mut a, row) = self.vdot_and_row(&model, (q0, xd, ud), hold.is_some(), &mut w)?;
+            for (c, target) in hold.unwrap_or_default() {
+                a.push(row[*c] - Dual64::from(*target));
+            }
             Ok([a, row].concat())
         })?;
         let rows = fx.nrows();
         Ok(Jacobians {
-            vdot: value[..nv].to_vec(),
-            vdot_x: fx.rows(0, nv).into_owned(),
-            vdot_u: fu.rows(0, nv).into_owned(),
-            row_x: fx.rows(nv, rows - nv).into_owned(),
+            vdot: value[..nr].to_vec(),
+            vdot_x: fx.rows(0, nr).into_owned(),
+            vdot_u: fu.rows(0, nr).into_owned(),
+            row_x: fx.rows(nr, rows - nr).into_owned(),
         })
     }
 

@@ -29,6 +29,12 @@ pub(crate) enum Output {
     OmegaBody(usize),
     Coordinates(usize),
     Speeds(usize),
+    /// Airspeed V, angle of attack α and sideslip β of the body's centre of mass in still air
+    /// (10.6.18), (10.6.27), link axes as aircraft axes.
+    Air(usize),
+    /// The 3-2-1 Euler angles (ψ, θ, φ) of the body relative to the ground (10.4.x): 𝓞_{B/G} =
+    /// 𝓞₁(φ) 𝓞₂(θ) 𝓞₃(ψ).
+    Euler321(usize),
     /// The force (and for a pin the couple) a loop joint exerts on its body `a`: the loop's
     /// index and its first row among the constraint rows.
     Reaction {
@@ -38,7 +44,7 @@ pub(crate) enum Output {
 }
 
 const VALID: &str = "q, v, energy, momentum, angular_momentum, position:BODY, velocity:BODY, omega:BODY, \
-omega_body:BODY, coordinates:BODY, speeds:BODY, reaction:LOOP";
+omega_body:BODY, coordinates:BODY, speeds:BODY, air:BODY, euler321:BODY, reaction:LOOP";
 
 /// Parses the `outputs` list.
 pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output>, SceneError> {
@@ -100,6 +106,8 @@ pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output
                 ("omega_body", Some(i)) => Output::OmegaBody(i),
                 ("coordinates", Some(i)) => Output::Coordinates(i),
                 ("speeds", Some(i)) => Output::Speeds(i),
+                ("air", Some(i)) => Output::Air(i),
+                ("euler321", Some(i)) => Output::Euler321(i),
                 _ => return Err(bad()),
             })
         })
@@ -154,6 +162,12 @@ impl Scene {
                 Output::Speeds(i) => {
                     cols.extend((0..dims(&b.bodies[*i].joint).1).map(|k| format!("speeds:{}.{k}", name(*i))))
                 }
+                Output::Air(i) => {
+                    cols.extend(["airspeed", "alpha", "beta"].iter().map(|c| format!("air:{}.{c}", name(*i))))
+                }
+                Output::Euler321(i) => {
+                    cols.extend(["psi", "theta", "phi"].iter().map(|c| format!("euler321:{}.{c}", name(*i))))
+                }
                 Output::Reaction { index, .. } => {
                     let p = format!("reaction:{}", b.loops[*index].name);
                     cols.extend(xyz(&p));
@@ -203,6 +217,8 @@ impl Scene {
                 Output::Omega(_) | Output::OmegaBody(_) => dims.extend([Dimension::ANGULAR_VELOCITY; 3]),
                 Output::Coordinates(i) => dims.extend(joint_dims(*i, false)),
                 Output::Speeds(i) => dims.extend(joint_dims(*i, true)),
+                Output::Air(_) => dims.extend([Dimension::VELOCITY, Dimension::ANGLE, Dimension::ANGLE]),
+                Output::Euler321(_) => dims.extend([Dimension::ANGLE; 3]),
                 Output::Reaction { index, .. } => {
                     dims.extend([Dimension::FORCE; 3]);
                     if is_pin(b, *index) {
@@ -260,6 +276,17 @@ impl Scene {
                 Output::Speeds(i) => {
                     let bd = &b.bodies[*i];
                     out.extend_from_slice(&v[bd.vi..bd.vi + dims(&bd.joint).1]);
+                }
+                Output::Air(i) => {
+                    let (vel, _) = super::aero::air_velocity(kin, &b.bodies[*i], *i);
+                    let a = vectrix_flight::AeroAngles::from_body_velocity([vel[0], vel[1], vel[2]]);
+                    out.extend([a.airspeed, a.alpha, a.beta]);
+                }
+                Output::Euler321(i) => {
+                    // 𝓞_{B/G} = 𝓞₁(φ)𝓞₂(θ)𝓞₃(ψ): row 0 = (cθcψ, cθsψ, −sθ), column 2 = (−sθ, sφcθ, cφcθ)
+                    let e = kin.poses[*i].0;
+                    let theta = (-e[(0, 2)]).max(-T::one()).min(T::one()).asin();
+                    out.extend([e[(0, 1)].atan2(e[(0, 0)]), theta, e[(1, 2)].atan2(e[(2, 2)])]);
                 }
                 Output::Reaction { index, row } => {
                     let lam = |k: usize| lambda.and_then(|l| l.get(row + k).copied()).unwrap_or_else(T::zero);

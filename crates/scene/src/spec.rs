@@ -282,6 +282,11 @@ pub struct TrimSpec {
     /// displacement of a body's joint, in its tangent space), `v:BODY.k` (a joint speed) and
     /// `effects[k]` (the magnitude added to a `force` or `torque` effect).
     pub free: Vec<String>,
+    /// Output columns held at given values while the state is made steady (`"air:jet.beta" =
+    /// 0.0`, `"omega:jet.z" = 0.05`): one more equation each (names as in trajectory.csv; the
+    /// output must be declared). SI values.
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub hold: std::collections::BTreeMap<String, f64>,
 }
 
 /// One effect. Only declared effects are assembled.

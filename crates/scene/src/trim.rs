@@ -2,11 +2,15 @@
 //! a linearization's states and inputs (`dq:BODY.k`, `v:BODY.k`, `effects[k]`); the residual is
 //! r(z) = v̇, every joint acceleration, which vanishes for an equilibrium (v = 0) and for a steady
 //! motion (constant speeds: a top in steady precession in a gimbal, a body spinning about a
-//! principal axis). Gauss–Newton with the exact Jacobian ∂v̇/∂z (dual numbers, as
+//! principal axis), with a free joint's velocity rate taken in its body's axes so that a steady
+//! turn is steady; `[trim] hold` appends output columns minus their targets (an aircraft's β = 0
+//! and turn rate). Gauss–Newton with the exact Jacobian ∂v̇/∂z (dual numbers, as
 //! [`Scene::jacobian`]) and a halving line search; after each step the configuration is
 //! rebased (q₀ ← q₀ ⊕ δ), so ball and free joints stay on their unit quaternions.
 //!
-//! Book: §12.3 (trim of steady flight), §12.6 (about a reference motion), §8.5 (equilibria).
+//! Book: §12.3 (trim of steady flight), §12.5 (turning flight), §12.6 (about a reference motion), §8.5 (equilibria).
+
+use std::collections::BTreeMap;
 
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -86,7 +90,49 @@ impl Scene {
     /// right-hand side is not generic yet (loops, rolling, inerters), and a state that could
     /// not be made steady (naming the accelerations that stay, and their size).
     pub fn trimmed(&self, free: &[String]) -> Result<(SceneSpec, TrimReport), SceneError> {
+        self.trimmed_holding(free, &BTreeMap::new())
+    }
+
+    /// Resolves `[trim] hold` to (column index, target) (errors located at `trim.hold`).
+    fn trim_holds(&self, hold: &BTreeMap<String, f64>) -> Result<Vec<(usize, f64)>, SceneError> {
+        let columns = self.columns();
+        hold.iter()
+            .map(|(name, target)| {
+                let at = format!("trim.hold.{name}");
+                if !target.is_finite() {
+                    return Err(self.invalid(&at, format!("{name} = {target}; valid: a finite value")));
+                }
+                let c = columns.iter().position(|c| c == name).ok_or_else(|| {
+                    self.invalid(
+                        &at,
+                        format!(
+                            "`{name}` is not an output column of this scene; valid: one of {} (declare the \
+                             output in `outputs` to hold it)",
+                            if columns.is_empty() { "none".to_string() } else { columns.join(", ") }
+                        ),
+                    )
+                })?;
+                Ok((c, *target))
+            })
+            .collect()
+    }
+
+    /// [`Scene::trimmed`] with output columns held at targets (`[trim] hold`): the residual is
+    /// every joint acceleration (a free joint's velocity in its body's axes, so that a steady
+    /// turn counts as steady) and each held column minus its target.
+    ///
+    /// Book: §12.3–12.5 (straight and turning flight), §8.5.
+    ///
+    /// # Errors
+    /// As [`Scene::trimmed`]; a held name that is not an output column, or a non-finite target.
+    pub fn trimmed_holding(
+        &self,
+        free: &[String],
+        hold: &BTreeMap<String, f64>,
+    ) -> Result<(SceneSpec, TrimReport), SceneError> {
         let unknowns = self.trim_unknowns(free)?;
+        let holds = self.trim_holds(hold)?;
+        let holding = Some(holds.as_slice());
         if !self.tree_only() {
             return Err(self.invalid(
                 "trim",
@@ -105,14 +151,14 @@ impl Scene {
         let norm = |r: &[f64]| {
             r.iter().fold(0.0_f64, |m, x| if x.is_nan() || m.is_nan() { f64::NAN } else { m.max(x.abs()) })
         };
-        let mut jac = self.jacobians_at(&q, &u, &x).map_err(fail)?;
+        let mut jac = self.jacobians_at(&q, &u, &x, holding).map_err(fail)?;
         let mut iterations = 0;
         // (NaN is not steady: `steady` is false for it)
         let steady = |r: f64| r <= TRIM_TOL;
         while !steady(norm(&jac.vdot)) && iterations < MAX_ITERATIONS {
             iterations += 1;
             // J Δ = −r, least squares over the chosen columns
-            let j = DMatrix::from_fn(nv, unknowns.len(), |i, k| match unknowns[k] {
+            let j = DMatrix::from_fn(jac.vdot.len(), unknowns.len(), |i, k| match unknowns[k] {
                 Unknown::State(s) => jac.vdot_x[(i, s)],
                 Unknown::Input(s) => jac.vdot_u[(i, s)],
             });
@@ -129,7 +175,7 @@ impl Scene {
                         Unknown::Input(s) => ut[*s] += scale * step[k],
                     }
                 }
-                match self.jacobians_at(&q, &ut, &xt) {
+                match self.jacobians_at(&q, &ut, &xt, holding) {
                     Ok(jt) if norm(&jt.vdot) < r0 => break Some((xt, ut, jt)),
                     _ if scale < 1e-9 => break None,
                     _ => scale *= 0.5,
@@ -147,7 +193,7 @@ impl Scene {
             jac = if xt[..nv].iter().all(|d| *d == 0.0) {
                 jt
             } else {
-                self.jacobians_at(&q, &u, &x).map_err(fail)?
+                self.jacobians_at(&q, &u, &x, holding).map_err(fail)?
             };
         }
         let residual = norm(&jac.vdot);
@@ -158,7 +204,13 @@ impl Scene {
                 .iter()
                 .enumerate()
                 .filter(|(_, a)| !steady(a.abs()))
-                .map(|(i, a)| format!("{} (v̇ = {a:e})", names[nv + i]))
+                .map(|(i, a)| match names.get(nv + i) {
+                    Some(n) if i < nv => format!("{n} (v̇ = {a:e})"),
+                    _ => {
+                        let (c, target) = holds[i - nv];
+                        format!("{} held at {target:e} (off by {a:e})", self.columns()[c])
+                    }
+                })
                 .collect();
             return Err(self.invalid(
                 "trim.free",
