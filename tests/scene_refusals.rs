@@ -49,7 +49,7 @@ fn unknown_key_in_an_inline_table_is_located_at_the_key() {
     let text = PIN.replace("axis = [0.0, 0.0, 1.0] }", "axis = [0.0, 0.0, 1.0], axes = 1 }");
     let (line, column, message) = refusal(&text);
     assert_eq!((line, column), position(&text, "axes"));
-    assert_eq!(message, "unknown key `axes`; valid: `axis`");
+    assert_eq!(message, "bodies[0].joint.axes: unknown key `axes`; valid: `axis`");
 }
 
 #[test]
@@ -57,7 +57,10 @@ fn unknown_top_level_key_suggests_the_closest() {
     let text = PIN.replace("duration = 1.0", "durration = 1.0");
     let (line, column, message) = refusal(&text);
     assert_eq!((line, column), position(&text, "durration"));
-    assert!(message.starts_with("unknown key `durration`; valid: `name`, `duration`"), "{message}");
+    assert!(
+        message.starts_with("durration: unknown key `durration`; valid: `name`, `duration`"),
+        "{message}"
+    );
     assert!(message.ends_with("(did you mean `duration`?)"), "{message}");
 }
 

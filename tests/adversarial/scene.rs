@@ -371,6 +371,18 @@ cases! {
         err_or(empty, "LinearModel::new(empty)", |m| m.modes.is_empty());
     }
 
+    // Quantity errors in a scene's words: the units library's byte positions are left out,
+    // everything else is kept.
+    scene_unit_message ["unit_message"] {
+        for text in ["abc", "", "1 kgg", "1e999 kg", "nan kg", "1 kg kg", "1 m/s/s/", "\u{0}", "1 ° C"] {
+            if let Err(e) = vectrix_units::Quantity::parse(text) {
+                let m = vectrix::scene::unit_message(&e);
+                assert!(!m.contains(" at bytes ") && !m.is_empty(), "{text:?}: {m}");
+                assert!(e.to_string().starts_with(m.split('`').next().unwrap_or("")), "{text:?}: {m}");
+            }
+        }
+    }
+
     // Load profiles and loop names (spec): shifting adds du at every t (and nothing to times);
     // a loop reports its name.
     scene_spec_values ["Profile::shifted", "Profile::eval", "LoopSpec::name"] {

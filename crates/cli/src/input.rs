@@ -88,9 +88,15 @@ pub(crate) fn read_scene(path: &Path) -> Result<String, BoxError> {
         }
     };
     String::from_utf8(bytes).map_err(|e| {
+        // located like every other refusal: line and column (in characters) of the first bad byte
+        let bytes = e.as_bytes();
+        let at = e.utf8_error().valid_up_to();
+        let line_start = bytes[..at].iter().rposition(|b| *b == b'\n').map_or(0, |k| k + 1);
+        let line = 1 + bytes[..at].iter().filter(|b| **b == b'\n').count();
+        let column = 1 + String::from_utf8_lossy(&bytes[line_start..at]).chars().count();
         format!(
-            "{shown}: not UTF-8 text (byte {}); valid: a TOML file in UTF-8",
-            e.utf8_error().valid_up_to()
+            "{shown}:{line}:{column}: the byte {:#04x} is not UTF-8 text; valid: a TOML file in UTF-8",
+            bytes[at]
         )
         .into()
     })

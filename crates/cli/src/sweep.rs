@@ -50,7 +50,7 @@ fn parse_param(p: &str, doc: &toml::Value) -> Result<(String, Vec<f64>), String>
                     let d = e.dims.iter().copied().find(|d| *d == q.dimension()).unwrap_or(e.dims[0]);
                     q.to_si(d)
                 })
-                .map_err(|err| format!("`{v}` in `{p}`: {err}")),
+                .map_err(|err| format!("`{v}` in --param `{p}`: {}", vectrix_scene::unit_message(&err))),
             (Err(_), None) => Err(format!("`{v}` in `{p}` is not a finite number")),
         })
         .collect::<Result<Vec<_>, _>>()?;

@@ -371,6 +371,22 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             ));
         }
         let (jq, jv) = dims(&b.joint);
+        // a joint's axis and groove must be directions: refused at the key itself
+        let axes: Vec<(&str, &[f64; 3])> = match &b.joint {
+            JointSpec::Pin { axis } | JointSpec::Sleeve { axis } | JointSpec::Collar { axis } => {
+                vec![("axis", axis)]
+            }
+            JointSpec::Slot { axis, direction } => vec![("axis", axis), ("direction", direction)],
+            _ => vec![],
+        };
+        for (key, a) in axes {
+            if !direction(*a).is_some_and(|(_, n)| n > 1e-12) {
+                return Err(src.invalid(
+                    format!("bodies[{i}].joint.{key}"),
+                    format!("{key} = {a:?} has no direction; valid: a nonzero vector"),
+                ));
+            }
+        }
         let u = |a: &[f64; 3]| direction(*a).map(|(d, _)| d).unwrap_or_default();
         let (axis, direction) = match &b.joint {
             JointSpec::Pin { axis } | JointSpec::Sleeve { axis } | JointSpec::Collar { axis } => {

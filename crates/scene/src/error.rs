@@ -74,6 +74,28 @@ pub(crate) fn unknown_key(message: &str) -> Option<&str> {
     message.strip_prefix("unknown field `")?.split('`').next()
 }
 
+/// A quantity-string error in the words of a scene file: the units library's byte positions
+/// inside the string (`at bytes 0..1`) are left out, since a scene error is located by file,
+/// line and column at the offending character already (and a command-line value names itself).
+///
+/// Book: §15.19 (quantities).
+pub fn unit_message(e: &vectrix_units::UnitError) -> String {
+    let m = e.to_string();
+    let Some(k) = m.find(" at bytes ") else { return m };
+    let tail = &m[k + " at bytes ".len()..];
+    let end = tail.find(|c: char| !(c.is_ascii_digit() || c == '.')).unwrap_or(tail.len());
+    format!("{}{}", &m[..k], &tail[end..])
+}
+
+/// The variant and the valid ones of serde's "unknown variant `v`, expected one of `a`, `b`"
+/// (or "expected `a` or `b`"), the valid ones as "`a`, `b`".
+pub(crate) fn unknown_variant(message: &str) -> Option<(&str, String)> {
+    let rest = message.strip_prefix("unknown variant `")?;
+    let (variant, tail) = rest.split_once('`')?;
+    let valid: Vec<String> = tail.split('`').skip(1).step_by(2).map(|v| format!("`{v}`")).collect();
+    Some((variant, valid.join(", ")))
+}
+
 /// Byte offset of the bare key `key` (followed by `=`) in `text`.
 fn key_offset(text: &str, key: &str) -> Option<usize> {
     let mut from = 0;
@@ -120,6 +142,9 @@ pub(crate) fn plain_words(message: &str) -> String {
             let head = m[..k].trim_end().trim_end_matches(',');
             m = format!("{head}; {plain}{}", &m[k + rust.len()..]);
         }
+    }
+    if let Some(key) = m.strip_prefix("missing field `").and_then(|r| r.split('`').next()) {
+        m = format!("the required key `{key}` is missing; valid: a table that gives `{key}`");
     }
     if let Some(struct_at) = m.find("expected struct ") {
         let head = m[..struct_at].trim_end().trim_end_matches(',');

@@ -44,7 +44,7 @@ mod trim;
 pub use aero::AIRCRAFT;
 pub use build::MAX_MAGNITUDE;
 pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME_REL};
-pub use error::SceneError;
+pub use error::{SceneError, unit_message};
 pub use invariants::Invariant;
 pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
 pub use project::{ASSEMBLY_TOL, CONSTRAINT_TOL, ConstraintViolation};

@@ -110,7 +110,8 @@ fn quantity(src: &SceneSource, text: &str, path: &str, expect: Expect) -> Result
             at.start,
             path,
             format!(
-                "{e}; valid: a number, or a quantity string of {name}e.g. \"1 {}\"",
+                "{}; valid: a number, or a quantity string of {name}e.g. \"1 {}\"",
+                super::error::unit_message(&e),
                 expect.system.label(expected)
             ),
         )

@@ -196,6 +196,11 @@ pub(crate) fn effect(
             profile: profile.clone(),
         },
         EffectSpec::ContactSpheres { a, b, radius_a, radius_b, restitution: e, friction } => {
+            if a == b {
+                return Err(
+                    src.invalid(key("b"), format!("`{b}` is both spheres; valid: two different bodies"))
+                );
+            }
             Effect::Spheres {
                 a: alone(a, "a")?,
                 b: alone(b, "b")?,

@@ -62,6 +62,9 @@ pub(crate) fn solver(spec: &SceneSpec, src: &Src) -> Result<Adaptive, SceneError
         a.rtol(m.rtol).atol(m.rtol)
     } else {
         let tol = spec.accuracy.unwrap_or(1e-6);
+        if !(tol > 0.0 && tol < 1.0) {
+            return Err(src.invalid("accuracy", format!("accuracy = {tol}; valid: 0 < accuracy < 1")));
+        }
         Accuracy::RelTol(tol).solver().map_err(|e| src.invalid("accuracy", e.to_string()))?
     };
     let max_steps = spec.max_steps.unwrap_or(DEFAULT_MAX_STEPS);

@@ -51,6 +51,18 @@ fn segments(path: &str) -> Vec<Seg<'_>> {
     out
 }
 
+/// The string value of `key` in the table at `path` of `root`.
+fn tag_at<'v>(root: &'v toml::Value, path: &str, key: &str) -> Option<&'v str> {
+    let mut cur = root;
+    for seg in segments(path) {
+        cur = match seg {
+            Seg::Key(k) => cur.get(k)?,
+            Seg::Index(i) => cur.get(i)?,
+        };
+    }
+    cur.get(key)?.as_str()
+}
+
 impl<'a> SceneSource<'a> {
     /// Parses `text` (named `file` in messages) into its spanned tree.
     ///
@@ -110,9 +122,8 @@ impl<'a> SceneSource<'a> {
     ) -> Result<T, SceneError> {
         let mut doc: toml::Value =
             toml::from_str(self.text).map_err(|e| SceneError::from_toml(&e, self.text, self.file))?;
-        if super::quantities::convert(self, &mut doc, schema)? == 0 {
-            return self.deserialize();
-        }
+        super::quantities::convert(self, &mut doc, schema)?;
+        let root = doc.clone();
         serde_path_to_error::deserialize(doc).map_err(|e| {
             let mut path = String::new();
             for seg in e.path().iter() {
@@ -127,17 +138,43 @@ impl<'a> SceneSource<'a> {
                     _ => {}
                 }
             }
-            let message = e.inner().to_string();
-            // an unknown key: point at it
+            let join = |path: &str, key: &str| {
+                if path.is_empty() { key.to_string() } else { format!("{path}.{key}") }
+            };
+            let full = e.inner().to_string();
+            // the TOML value deserializer appends a line "in `a.b`": the path says that better
+            let message = full.split("\nin `").next().unwrap_or(&full).trim().to_string();
+            let mut plain = super::error::plain_words(&message);
+            let last = path.rsplit('.').next().unwrap_or("").to_string();
             if let Some(key) = super::error::unknown_key(&message) {
-                path = if path.is_empty() { key.to_string() } else { format!("{path}.{key}") };
+                // an unknown key: point at it
+                if last != key {
+                    path = join(&path, key);
+                }
+            } else if let Some((variant, valid)) = super::error::unknown_variant(&message) {
+                // an unknown `type`, `shape` or `kind` of a tagged table: point at the tag
+                let tag = if ["type", "shape", "kind"].contains(&last.as_str()) {
+                    last.clone()
+                } else {
+                    let tag = ["type", "shape", "kind"]
+                        .into_iter()
+                        .find(|t| tag_at(&root, &path, t) == Some(variant));
+                    let tag = tag.unwrap_or("type").to_string();
+                    path = join(&path, &tag);
+                    tag
+                };
+                plain = format!("unknown {tag} `{variant}`; valid: {valid}");
             }
-            let (line, column) = self.locate(&path);
-            SceneError::Parse {
-                file: self.file.into(),
-                line,
-                column,
-                message: super::error::plain_words(&message),
+            // an unknown key at the key; a wrong value (type, range, tag) at the value
+            let (line, column) = if super::error::unknown_key(&message).is_some() || path.is_empty() {
+                self.locate(&path)
+            } else {
+                line_col(self.text, self.value_span(&path).start)
+            };
+            if path.is_empty() {
+                SceneError::Parse { file: self.file.into(), line, column, message: plain }
+            } else {
+                SceneError::Invalid { file: self.file.into(), line, column, path, message: plain }
             }
         })
     }
