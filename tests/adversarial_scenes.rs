@@ -151,7 +151,14 @@ fn check(case: &Case, n: usize) -> Result<(), String> {
 /// names the item path.
 fn located(case: &Case, scene: &Path, message: &str, path: Option<&str>) -> Result<(), String> {
     let file = scene.display().to_string();
-    let Some(rest) = message.find(&format!("{file}:")).map(|i| &message[i + file.len() + 1..]) else {
+    // a file may have several errors (one per line, in file order): the one at `path`, or the first
+    let lines: Vec<&str> = message.lines().filter(|l| l.contains(&format!("{file}:"))).collect();
+    let chosen = match path {
+        Some(p) => lines.iter().find(|l| l.contains(&format!(": {p}: "))).or(lines.first()),
+        None => lines.first(),
+    };
+    let Some(rest) = chosen.and_then(|l| l.find(&format!("{file}:")).map(|i| &l[i + file.len() + 1..]))
+    else {
         return Err("no file:line:col location".into());
     };
     let mut parts = rest.splitn(3, ':');

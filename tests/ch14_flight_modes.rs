@@ -480,9 +480,9 @@ mod flight_scene {
         let (_, path, msg) = invalid(&with(&ok, "shape = \"doublet\"", "shape = \"sine\""));
         assert_eq!(path, "inputs[0].shape");
         assert!(msg.contains("valid: doublet, step, pulse"), "{msg}");
-        // unknown keys are parse errors at their line
+        // unknown keys are refused at their line, with their item path
         let (line, path, msg) = invalid(&with(&ok, "gamma = 0.0", "gama = 0.0"));
-        assert_eq!((line, path.as_str()), (line_of("gamma = 0.0"), "<parse>"));
+        assert_eq!((line, path.as_str()), (line_of("gamma = 0.0"), "trim.gama"));
         assert!(msg.contains("gama"), "{msg}");
         let (_, path, _) = invalid(&with(&ok, "duration = 120.0", "duration = -1.0"));
         assert_eq!(path, "duration");

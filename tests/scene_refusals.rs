@@ -147,3 +147,64 @@ fn profile_corner_closer_than_the_time_resolution_is_refused_where_it_stands() {
         assert!(run.is_complete(), "{at}: {:?}", run.stop);
     }
 }
+
+/// Issue 33 item 5: every error of a file in one pass, in file order, each located, without
+/// the errors that would only follow from an earlier one.
+#[test]
+fn every_error_of_a_file_in_one_pass_in_file_order() {
+    let text = r#"name = "multi"
+duration = -1.0
+outputs = ["q", "qq", "energy", "position:nobody"]
+checks = ["energy", "momentum2"]
+
+[[bodies]]
+name = "rod"
+joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+mass = { shape = "rod", mass = 1.0, length = 1.0 }
+
+[[effects]]
+type = "spring"
+a = { body = "rod", point = [1.0, 0.0, 0.0] }
+b = { body = "nobody" }
+k = 3.0
+
+[[effects]]
+type = "torque"
+body = "rod"
+direction = [0.0, 0.0, 1.0]
+profile = { kind = "ramp", t0 = 1.0, t1 = 0.5, to = 1.0 }
+"#;
+    let Err(SceneError::Many { errors }) = Scene::from_toml(text, "multi.toml") else {
+        panic!("expected several errors")
+    };
+    let got: Vec<(usize, String)> = errors
+        .iter()
+        .map(|e| match e {
+            SceneError::Invalid { line, path, .. } => (*line, path.clone()),
+            other => panic!("{other}"),
+        })
+        .collect();
+    let want = [
+        (2, "duration"),
+        (3, "outputs[1]"),
+        (3, "outputs[3]"),
+        (4, "checks[1]"),
+        (14, "effects[0].b.body"),
+        (21, "effects[1].profile.t1"),
+    ];
+    assert_eq!(got, want.map(|(l, p)| (l, p.to_string())));
+    // the shape errors of a file, likewise (a misspelt key, a wrong type, unknown tags)
+    let shape = "name = \"s\"\ndurration = 1.0\nsamples = \"x\"\n\n[[bodies]]\nname = \"rod\"\n\
+        joint = { type = \"hinge\" }\nmass = { shape = \"particle\", mass = 1.0 }\n\n[[effects]]\ntype = \"wind\"\n";
+    let Err(SceneError::Many { errors }) = Scene::from_toml(shape, "shape.toml") else {
+        panic!("expected several errors")
+    };
+    let paths: Vec<String> = errors
+        .iter()
+        .filter_map(|e| match e {
+            SceneError::Invalid { path, .. } => Some(path.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(paths, ["duration", "durration", "samples", "bodies[0].joint.type", "effects[0].type"]);
+}

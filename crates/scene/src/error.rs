@@ -34,6 +34,12 @@ pub enum SceneError {
         /// What is wrong and what would be valid.
         message: String,
     },
+    /// Several errors of one file, in file order (at most [`super::MAX_ERRORS`]), each located.
+    #[error("{}", .errors.iter().map(|e| e.to_string()).collect::<Vec<_>>().join("\n"))]
+    Many {
+        /// The errors, each a located [`SceneError::Parse`] or [`SceneError::Invalid`].
+        errors: Vec<SceneError>,
+    },
     /// The dynamics failed during the run (a singular mass matrix, a non-finite state, …).
     #[error("simulation failed at t = {t}: {message}")]
     Run {

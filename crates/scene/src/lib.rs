@@ -28,6 +28,7 @@ mod invariants;
 mod kin;
 mod linearize;
 mod loops;
+mod many;
 mod outputs;
 mod profile;
 mod project;
@@ -47,6 +48,7 @@ pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME
 pub use error::{SceneError, unit_message};
 pub use invariants::Invariant;
 pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
+pub use many::MAX_ERRORS;
 pub use project::{ASSEMBLY_TOL, CONSTRAINT_TOL, ConstraintViolation};
 pub use quantities::{
     Expect, Schema, Step, body_schema, convert as convert_quantities, key_of, render as render_path, tag,
@@ -175,8 +177,34 @@ impl Scene {
     /// # Errors
     /// As [`Scene::from_toml`].
     pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
-        let spec: SceneSpec = src.deserialize_with(&body_schema)?;
-        Self::build(spec, src)
+        let spec: SceneSpec = src.deserialize_all(&body_schema).map_err(many::report)?;
+        Self::build_reporting_all(spec, src)
+    }
+
+    /// [`Scene::build`], reporting every error of the file in one pass (see [`many`]): after
+    /// an error the item at fault is set aside and the scene is checked again.
+    fn build_reporting_all(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
+        let first = match Self::build(spec.clone(), src) {
+            Ok(scene) => return Ok(scene),
+            Err(e) => e,
+        };
+        let (mut spec, mut removed) = (spec, many::Removed::default());
+        let mut errors = vec![first.clone()];
+        let mut last = first;
+        while errors.len() < MAX_ERRORS {
+            let SceneError::Invalid { path, .. } = &last else { break };
+            if !many::patch_spec(&mut spec, path, &mut removed) {
+                break;
+            }
+            match Self::build(spec.clone(), src) {
+                Ok(_) => break,
+                Err(e) => {
+                    errors.push(removed.renumber(e.clone(), src));
+                    last = e;
+                }
+            }
+        }
+        Err(many::report(errors))
     }
 
     /// Validates `spec` with errors located in `src`, the file it was derived from (a sweep

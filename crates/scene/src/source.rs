@@ -120,9 +120,62 @@ impl<'a> SceneSource<'a> {
         &self,
         schema: &super::quantities::Schema,
     ) -> Result<T, SceneError> {
+        self.read_document(self.document(schema)?)
+    }
+
+    /// Every shape error of the document (unknown or missing keys, wrong types) in one pass,
+    /// up to [`super::MAX_ERRORS`]: after each, the item at fault is set aside (see
+    /// `many::patch_document`) and the rest is read again.
+    pub(crate) fn deserialize_all<T: DeserializeOwned>(
+        &self,
+        schema: &super::quantities::Schema,
+    ) -> Result<T, Vec<SceneError>> {
+        let mut doc = self.document(schema).map_err(|e| vec![e])?;
+        let (mut errors, mut suggested) = (Vec::new(), Vec::<String>::new());
+        loop {
+            match self.read_document::<T>(doc.clone()) {
+                Ok(t) if errors.is_empty() => return Ok(t),
+                Ok(_) => return Err(errors),
+                Err(e) => {
+                    let (path, message) = match &e {
+                        SceneError::Invalid { path, message, .. } => (path.clone(), message.clone()),
+                        _ => (String::new(), String::new()),
+                    };
+                    // a misspelt key explains the missing one it suggests: report it once
+                    let parent = path.rsplit_once('.').map_or("", |(p, _)| p);
+                    if let Some(meant) =
+                        message.split("(did you mean `").nth(1).and_then(|r| r.split('`').next())
+                    {
+                        suggested.push(if parent.is_empty() {
+                            meant.to_string()
+                        } else {
+                            format!("{parent}.{meant}")
+                        });
+                    }
+                    if !(message.starts_with("the required key") && suggested.contains(&path)) {
+                        errors.push(e);
+                    }
+                    if errors.len() >= super::many::MAX_ERRORS
+                        || !super::many::patch_document(&mut doc, &path)
+                    {
+                        return Err(errors);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The document as a TOML value with its quantity strings converted by `schema`.
+    fn document(&self, schema: &super::quantities::Schema) -> Result<toml::Value, SceneError> {
         let mut doc: toml::Value =
             toml::from_str(self.text).map_err(|e| SceneError::from_toml(&e, self.text, self.file))?;
         super::quantities::convert(self, &mut doc, schema)?;
+        Ok(doc)
+    }
+
+    /// Deserializes a converted document; a shape error names its item path and is located at
+    /// the key (unknown keys) or the value (wrong values).
+    fn read_document<T: DeserializeOwned>(&self, doc: toml::Value) -> Result<T, SceneError> {
         let root = doc.clone();
         serde_path_to_error::deserialize(doc).map_err(|e| {
             let mut path = String::new();
@@ -151,6 +204,11 @@ impl<'a> SceneSource<'a> {
                 if last != key {
                     path = join(&path, key);
                 }
+            } else if let Some(key) =
+                message.strip_prefix("missing field `").and_then(|r| r.split('`').next())
+            {
+                // a missing key: named by its path, located at its table
+                path = join(&path, key);
             } else if let Some((variant, valid)) = super::error::unknown_variant(&message) {
                 // an unknown `type`, `shape` or `kind` of a tagged table: point at the tag
                 let tag = if ["type", "shape", "kind"].contains(&last.as_str()) {
