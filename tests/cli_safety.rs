@@ -382,3 +382,28 @@ fn issue_33_meaningless_numbers_are_not_complete() {
     assert_eq!(s["stop"]["reason"], "invariant_drift");
     assert!(s["drift"][0]["max_rel"].as_f64().unwrap() >= 1e-3);
 }
+
+/// An `--out` that is a file, a device or a symbolic-link loop is refused with its path and
+/// why, in the user's words (issue 33: "File exists" with no path), and nothing is written.
+#[test]
+fn out_that_is_not_a_folder_is_refused_with_its_path() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = pendulum(dir.path(), "p.toml", "p", "[\"q\"]", 10, "0.3");
+    let file = dir.path().join("afile");
+    std::fs::write(&file, "mine").unwrap();
+    // the loop lives in a folder of its own (a snapshot cannot read through it)
+    let links = tempfile::tempdir().unwrap();
+    let (a, b) = (links.path().join("loop_a"), links.path().join("loop_b"));
+    std::os::unix::fs::symlink(&b, &a).unwrap();
+    std::os::unix::fs::symlink(&a, &b).unwrap();
+    let before = snapshot(dir.path());
+    for (out, why) in [
+        (file.display().to_string(), "is not a folder"),
+        ("/dev/null".to_string(), "is not a folder"),
+        (a.display().to_string(), "symbolic link"),
+    ] {
+        let e = cli(&["run", &scene, "--out", &out]).unwrap_err();
+        assert!(e.contains(&format!("--out {out}")) && e.contains(why) && !e.contains("os error"), "{e}");
+    }
+    assert_eq!(snapshot(dir.path()), before);
+}

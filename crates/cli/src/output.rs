@@ -112,6 +112,22 @@ pub(crate) struct Written {
     pub files: Vec<String>,
 }
 
+/// The `--out` folder that cannot be made says why in the user's words, with its path.
+fn out_folder_error(parent: &Path, e: &std::io::Error) -> String {
+    let shown = parent.display();
+    let why = match std::fs::symlink_metadata(parent) {
+        Ok(m) if m.file_type().is_symlink() && std::fs::metadata(parent).is_err() => {
+            "is a symbolic link that leads nowhere (or in a loop)".to_string()
+        }
+        Ok(m) if !m.is_dir() => "is not a folder (a file or a device is there)".to_string(),
+        _ => match e.kind() {
+            std::io::ErrorKind::PermissionDenied => "cannot be created: permission denied".to_string(),
+            _ => format!("cannot be created ({e})"),
+        },
+    };
+    format!("--out {shown} {why}; valid: a folder, or a path where one can be created")
+}
+
 /// Creates `<parent>/<name>/` (see the module doc): `fill` writes through a [`Sink`] into a
 /// fresh temporary folder that takes the place of the destination only when it succeeded.
 ///
@@ -126,7 +142,7 @@ pub(crate) fn write_dir(
 ) -> Result<Written, BoxError> {
     preflight(parent, name)?;
     let dest = parent.join(name);
-    std::fs::create_dir_all(parent).map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
+    std::fs::create_dir_all(parent).map_err(|e| out_folder_error(parent, &e))?;
     remove_stale_temps(parent);
     let tmp = fresh_temp(parent, name)?;
     let sink = Sink::new(&tmp, limits);
