@@ -10,6 +10,7 @@
 //! let x = a.vector([1.0, 2.0, 3.0]);
 //! assert_eq!(x.resolve(&a), nalgebra::Vector3::new(1.0, 2.0, 3.0));
 //! ```
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub use nalgebra;

@@ -100,13 +100,13 @@ fn eq_11_3_6_bad_mass_properties_are_errors() {
     // (11.3.6): mass and moments of inertia must be positive and physical.
     assert!(matches!(
         Airframe::new(-1.0, 3.0, 5.0, 6.0, 0.0),
-        Err(FlightError::InvalidParameter { what: "mass", .. })
+        Err(FlightError::OutOfRange { what: "mass", .. })
     ));
-    assert!(matches!(Airframe::new(1.0, -3.0, 5.0, 6.0, 0.0), Err(FlightError::InvalidParameter { .. })));
-    assert!(matches!(Airframe::new(1.0, 3.0, 5.0, 6.0, 5.0), Err(FlightError::InvalidParameter { .. })));
+    assert!(matches!(Airframe::new(1.0, -3.0, 5.0, 6.0, 0.0), Err(FlightError::OutOfRange { .. })));
+    assert!(matches!(Airframe::new(1.0, 3.0, 5.0, 6.0, 5.0), Err(FlightError::OutOfRange { .. })));
     // J_zz > J_xx + J_yy is not a rigid body (triangle inequality, Fact 6.2.8)
-    assert!(matches!(Airframe::new(1.0, 1.0, 1.0, 3.0, 0.0), Err(FlightError::InvalidParameter { .. })));
-    assert!(matches!(Airframe::new(f64::NAN, 3.0, 5.0, 6.0, 0.0), Err(FlightError::InvalidParameter { .. })));
+    assert!(matches!(Airframe::new(1.0, 1.0, 1.0, 3.0, 0.0), Err(FlightError::OutOfRange { .. })));
+    assert!(matches!(Airframe::new(f64::NAN, 3.0, 5.0, 6.0, 0.0), Err(FlightError::OutOfRange { .. })));
     let j = airframe().inertia_matrix();
     assert_eq!(j, Matrix3::new(3.0, 0.0, -0.4, 0.0, 5.0, 0.0, -0.4, 0.0, 6.0));
 }

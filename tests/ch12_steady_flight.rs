@@ -96,7 +96,7 @@ fn section_12_1_unreachable_trim_names_the_condition() {
     assert!(matches!(err, FlightError::TrimFailed { ref condition, .. } if condition.contains("U̇")), "{err}");
     assert!(matches!(
         trim(&ac, TrimSpec::Straight { airspeed: -1.0, gamma: 0.0 }, TrimLimits::default()),
-        Err(FlightError::InvalidParameter { .. })
+        Err(FlightError::OutOfRange { .. })
     ));
 }
 

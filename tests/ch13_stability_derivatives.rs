@@ -173,7 +173,7 @@ fn non_finite_derivatives_are_errors() {
     ));
     let mut ac = business_jet();
     ac.rho = -1.0;
-    assert!(matches!(ac.check(), Err(FlightError::InvalidParameter { .. })));
+    assert!(matches!(ac.check(), Err(FlightError::OutOfRange { .. })));
 }
 
 #[path = "ch13/common.rs"]

@@ -289,7 +289,7 @@ fn eq_14_1_7_singular_descriptor_is_an_error() {
     assert!(matches!(d.state_space(), Err(FlightError::NonFinite { .. })));
     let mut l = business_jet_lateral();
     l.jxx = -1.0;
-    assert!(matches!(l.state_space(), Err(FlightError::InvalidParameter { .. })));
+    assert!(matches!(l.state_space(), Err(FlightError::OutOfRange { .. })));
 }
 
 #[test]

@@ -27,7 +27,7 @@ fn eq_6_7_1_spring_force_and_third_law() {
     assert_vec_rel(&zero_len.force(&a.vector([1.0, -2.0, 0.5])).unwrap(), &a.vector([-4.0, 8.0, -2.0]), EPS);
     assert_vec_abs(&zero_len.force(&Vector::zero()).unwrap(), &Vector::zero(), 0.0);
     assert!(matches!(s.force(&Vector::zero()), Err(StaticsError::CoincidentPoints { .. })));
-    assert!(matches!(Spring::new(-1.0, 0.0), Err(StaticsError::InvalidParameter { .. })));
+    assert!(matches!(Spring::new(-1.0, 0.0), Err(StaticsError::OutOfRange { .. })));
     assert!(matches!(s.force(&a.vector([f64::NAN, 0.0, 0.0])), Err(StaticsError::NonFinite { .. })));
     // (8.3.12): U = ½k(|r| − d)²
     assert_rel(s.potential(&a.vector([0.0, 0.0, 3.5])), 0.5 * 10.0 * 1.5 * 1.5, EPS);
@@ -134,7 +134,7 @@ fn fact_6_12_1_central_gravity_and_erratum_6_12_2() {
     assert_vec_abs(&(pair.on_y + pair.on_w), &Vector::zero(), 0.0);
     assert!(matches!(earth.force(1.0, &Vector::zero()), Err(StaticsError::CoincidentPoints { .. })));
     assert!(matches!(earth.force(-1.0, &r), Err(StaticsError::InvalidMass { .. })));
-    assert!(matches!(CentralGravity::new(f64::NAN), Err(StaticsError::InvalidParameter { .. })));
+    assert!(matches!(CentralGravity::new(f64::NAN), Err(StaticsError::OutOfRange { .. })));
 }
 
 /// A body as (mass, position) particles.

@@ -115,10 +115,10 @@ fn fact_6_2_7_and_6_2_8_invalid_inertia_is_rejected() {
         MassProperties::from_particles(&[(0.0, c), (0.0, pt(&a, [1.0, 0.0, 0.0]))]),
         Err(StaticsError::ZeroMass { .. })
     ));
-    assert!(matches!(MassProperties::solid_sphere(1.0, -1.0, c), Err(StaticsError::InvalidParameter { .. })));
+    assert!(matches!(MassProperties::solid_sphere(1.0, -1.0, c), Err(StaticsError::OutOfRange { .. })));
     assert!(matches!(
         MassProperties::annulus(1.0, 1.0, 2.0, &a.k(), c),
-        Err(StaticsError::InvalidParameter { .. })
+        Err(StaticsError::OutOfRange { .. })
     ));
     assert!(matches!(
         MassProperties::disk(1.0, 1.0, &Vector::zero(), c),

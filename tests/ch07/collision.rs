@@ -27,7 +27,7 @@ fn fact_7_13_1_restitution_and_corrected_energy_loss() {
     // (7.13.18): e = (u2⁺ − u1⁺)/(u1 − u2)
     assert_abs((b - a) / (u1 - u2), e, 8.0 * EPS);
     assert!(matches!(restitution_1d(m1, m2, -1.0, 5.0, e), Err(DynamicsError::Separating { .. })));
-    assert!(matches!(restitution_1d(m1, m2, u1, u2, 1.5), Err(DynamicsError::InvalidParameter { .. })));
+    assert!(matches!(restitution_1d(m1, m2, u1, u2, 1.5), Err(DynamicsError::OutOfRange { .. })));
 }
 
 /// §7.13 (7.13.9–10): smooth spheres exchange momentum along the line of centres only; the
@@ -139,7 +139,7 @@ fn impulses_reject_bad_input() {
     let contact = Point::at(a.vector([0.5, 0.0, 0.0]));
     assert!(matches!(
         rigid_impact(&body, None, &contact, &Vector::zero(), 0.5),
-        Err(DynamicsError::InvalidParameter { .. })
+        Err(DynamicsError::OutOfRange { .. })
     ));
     // approaching the ground along −k̂ with normal k̂ pointing from body to ground: separating
     assert!(matches!(

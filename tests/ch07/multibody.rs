@@ -114,7 +114,7 @@ fn model_rejects_bad_input() {
     ));
     let mut q = model.neutral();
     q[3..7].copy_from_slice(&[0.0; 4]);
-    assert!(matches!(model.aba(&q, &zeros, &zeros, None), Err(DynamicsError::InvalidParameter { .. })));
+    assert!(matches!(model.aba(&q, &zeros, &zeros, None), Err(DynamicsError::OutOfRange { .. })));
     assert!(matches!(
         model.integrate(&model.neutral(), &zeros, f64::NAN),
         Err(DynamicsError::NonFinite { what: "dt" })

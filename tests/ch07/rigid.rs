@@ -17,7 +17,7 @@ fn eq_7_3_1_newton_second_law_particle() {
     assert_rel_slice(acc.resolve(&a).as_slice(), &[2.0, -1.0, 0.5], EPS);
     assert!(matches!(
         particle_acceleration(0.0, &a.vector([1.0, 0.0, 0.0])),
-        Err(DynamicsError::InvalidParameter { .. })
+        Err(DynamicsError::OutOfRange { .. })
     ));
 }
 

@@ -342,7 +342,7 @@ fn section_9_11_bad_input_is_typed() {
         }
     );
     let err = solve_kkt(&m, &g, &f, &gamma, 0.0).unwrap_err();
-    assert!(matches!(err, DynamicsError::InvalidParameter { .. }), "{err}");
+    assert!(matches!(err, DynamicsError::OutOfRange { .. }), "{err}");
     let err = solve_kkt(&m, &g, &f, &DVector::zeros(2), DEPENDENT_ROW_REL_TOL).unwrap_err();
     assert!(matches!(err, DynamicsError::DimensionMismatch { .. }), "{err}");
 }

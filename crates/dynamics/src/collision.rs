@@ -10,10 +10,8 @@ fn check_e(e: f64) -> Result<(), DynamicsError> {
     if (0.0..=1.0).contains(&e) {
         Ok(())
     } else {
-        Err(DynamicsError::InvalidParameter {
-            what: "coefficient of restitution e",
-            value: e,
-            valid: "0 ≤ e ≤ 1",
+        Err(DynamicsError::OutOfRange {
+            what: "coefficient of restitution e", value: e, valid: "0 ≤ e ≤ 1"
         })
     }
 }
@@ -21,11 +19,7 @@ fn check_e(e: f64) -> Result<(), DynamicsError> {
 fn check_masses(m1: f64, m2: f64) -> Result<(), DynamicsError> {
     for m in [m1, m2] {
         if !(m.is_finite() && m > 0.0) {
-            return Err(DynamicsError::InvalidParameter {
-                what: "mass",
-                value: m,
-                valid: "a finite number > 0",
-            });
+            return Err(DynamicsError::OutOfRange { what: "mass", value: m, valid: "a finite number > 0" });
         }
     }
     Ok(())
@@ -38,7 +32,7 @@ fn check_masses(m1: f64, m2: f64) -> Result<(), DynamicsError> {
 /// Book: §7.13, Fact 7.13.1, (7.13.18)–(7.13.21).
 ///
 /// # Errors
-/// [`DynamicsError::InvalidParameter`] for e ∉ [0, 1] or masses ≤ 0;
+/// [`DynamicsError::OutOfRange`] for e ∉ [0, 1] or masses ≤ 0;
 /// [`DynamicsError::NonFinite`]; [`DynamicsError::Overflow`] for speeds beyond f64::MAX;
 /// [`DynamicsError::Separating`] when u₁ ≤ u₂ (particle 1,
 /// behind, does not catch up with particle 2).
@@ -63,7 +57,7 @@ pub fn restitution_1d(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<(f64
 /// Book: (7.13.22) **corrected**: the printed formula lacks the factor ½ (notes ch6-8 errata).
 ///
 /// # Errors
-/// [`DynamicsError::InvalidParameter`] for a mass that is not finite and > 0 (m₁ = m₂ = 0
+/// [`DynamicsError::OutOfRange`] for a mass that is not finite and > 0 (m₁ = m₂ = 0
 /// would be 0/0) or e outside [0, 1]; [`DynamicsError::NonFinite`] for a non-finite speed;
 /// [`DynamicsError::Overflow`] when ΔT exceeds the largest finite number.
 pub fn collision_energy_loss(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Result<f64, DynamicsError> {
@@ -86,7 +80,7 @@ pub fn collision_energy_loss(m1: f64, m2: f64, u1: f64, u2: f64, e: f64) -> Resu
 /// Book: §7.13, (7.13.9)–(7.13.21).
 ///
 /// # Errors
-/// As [`restitution_1d`]; [`DynamicsError::InvalidParameter`] when the centres coincide.
+/// As [`restitution_1d`]; [`DynamicsError::OutOfRange`] when the centres coincide.
 pub fn sphere_collision(
     m1: f64,
     m2: f64,
@@ -100,7 +94,7 @@ pub fn sphere_collision(
         return Err(DynamicsError::NonFinite { what: "sphere centres or velocities" });
     }
     let d = c2.position_rel(c1);
-    let n = d.unit().ok_or(DynamicsError::InvalidParameter {
+    let n = d.unit().ok_or(DynamicsError::OutOfRange {
         what: "distance between centres",
         value: d.norm(),
         valid: "> 0 (distinct centres define the contact normal)",
@@ -151,7 +145,7 @@ pub fn impulse_response(
 /// Book: §7.13–7.14 generalised (notes ch6-8 §3, "rigid-body generalisation"); (7.14.2)–(7.14.3).
 ///
 /// # Errors
-/// [`DynamicsError::InvalidParameter`] (e ∉ [0, 1], zero normal),
+/// [`DynamicsError::OutOfRange`] (e ∉ [0, 1], zero normal),
 /// [`DynamicsError::Separating`] when the contact points are not approaching, and the errors
 /// of [`impulse_response`].
 pub fn rigid_impact(
@@ -162,7 +156,7 @@ pub fn rigid_impact(
     e: f64,
 ) -> Result<Impact, DynamicsError> {
     check_e(e)?;
-    let n = normal.unit().ok_or(DynamicsError::InvalidParameter {
+    let n = normal.unit().ok_or(DynamicsError::OutOfRange {
         what: "contact normal length",
         value: normal.norm(),
         valid: "> 0",
@@ -208,7 +202,7 @@ pub fn centre_of_percussion(
     at: &Point,
     normal: &Vector,
 ) -> Result<Point, DynamicsError> {
-    let n = normal.unit().ok_or(DynamicsError::InvalidParameter {
+    let n = normal.unit().ok_or(DynamicsError::OutOfRange {
         what: "impulse direction length",
         value: normal.norm(),
         valid: "> 0",

@@ -21,7 +21,7 @@ pub enum DynamicsError {
     },
     /// A mass, coefficient or length outside its valid range.
     #[error("{what} = {value} is invalid: valid is {valid}")]
-    InvalidParameter {
+    OutOfRange {
         /// Which parameter.
         what: &'static str,
         /// Its value.

@@ -43,7 +43,7 @@ fn laplacian(n: usize, elems: &[Element], what: &'static str) -> Result<DMatrix<
     let mut l = DMatrix::zeros(n, n);
     for e in elems {
         if !(e.value.is_finite() && e.value >= 0.0) {
-            return Err(DynamicsError::InvalidParameter { what, value: e.value, valid: "finite ≥ 0" });
+            return Err(DynamicsError::OutOfRange { what, value: e.value, valid: "finite ≥ 0" });
         }
         let bad = e.i >= n || e.j.is_some_and(|j| j >= n || j == e.i);
         if bad {
@@ -66,13 +66,13 @@ impl Network {
     /// Book: (7.5.2)–(7.5.7), P9.15.1.
     ///
     /// # Errors
-    /// [`DynamicsError::InvalidParameter`] for masses ≤ 0 or negative coefficients;
+    /// [`DynamicsError::OutOfRange`] for masses ≤ 0 or negative coefficients;
     /// [`DynamicsError::Disconnected`] for an element naming a missing particle.
     pub fn matrices(&self) -> Result<NetworkMatrices, DynamicsError> {
         let n = self.masses.len();
         for &m in &self.masses {
             if !(m.is_finite() && m > 0.0) {
-                return Err(DynamicsError::InvalidParameter {
+                return Err(DynamicsError::OutOfRange {
                     what: "particle mass",
                     value: m,
                     valid: "finite > 0",

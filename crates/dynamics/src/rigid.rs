@@ -16,7 +16,7 @@ use crate::DynamicsError;
 /// Book: §7.3, (7.3.1).
 ///
 /// # Errors
-/// [`DynamicsError::InvalidParameter`] unless m > 0 and finite.
+/// [`DynamicsError::OutOfRange`] unless m > 0 and finite.
 pub fn particle_acceleration<T: Scalar>(m: T, f: &Vector<T>) -> Result<Vector<T>, DynamicsError> {
     check_mass(m.re())?;
     if !f.is_finite() {
@@ -30,7 +30,7 @@ fn check_mass(m: f64) -> Result<(), DynamicsError> {
     if m.is_finite() && m > 0.0 {
         Ok(())
     } else {
-        Err(DynamicsError::InvalidParameter { what: "mass", value: m, valid: "a finite number > 0" })
+        Err(DynamicsError::OutOfRange { what: "mass", value: m, valid: "a finite number > 0" })
     }
 }
 

@@ -159,7 +159,7 @@ impl Aircraft {
     /// Checks that every coefficient and parameter is finite and ρ, g, S, c̄, b > 0.
     ///
     /// # Errors
-    /// [`FlightError::NonFinite`] for a non-finite coefficient; [`FlightError::InvalidParameter`]
+    /// [`FlightError::NonFinite`] for a non-finite coefficient; [`FlightError::OutOfRange`]
     /// for a non-positive density, gravity or geometry.
     pub fn check(&self) -> Result<(), FlightError> {
         let c = &self.coefficients;
@@ -212,7 +212,7 @@ impl Aircraft {
             ("span b", g.span),
         ] {
             if !(value.is_finite() && value > 0.0) {
-                return Err(FlightError::InvalidParameter { what, value, valid: "a finite number > 0" });
+                return Err(FlightError::OutOfRange { what, value, valid: "a finite number > 0" });
             }
         }
         Ok(())
@@ -333,13 +333,13 @@ impl Aircraft {
     /// Book: (11.5.3)–(11.5.16).
     ///
     /// # Errors
-    /// [`FlightError::InvalidParameter`] at zero airspeed (coefficients are undefined);
+    /// [`FlightError::OutOfRange`] at zero airspeed (coefficients are undefined);
     /// [`FlightError::TrimFailed`]-style non-convergence is reported as
     /// [`FlightError::NonFinite`]; errors of [`state_derivative`].
     pub fn dynamics(&self, x: &AircraftState, u: &Controls) -> Result<AircraftState, FlightError> {
         let v = x.aero_angles().airspeed;
         if v.is_nan() || v <= 0.0 {
-            return Err(FlightError::InvalidParameter { what: "airspeed", value: v, valid: "V > 0" });
+            return Err(FlightError::OutOfRange { what: "airspeed", value: v, valid: "V > 0" });
         }
         let (mut ad, mut bd) = (0.0, 0.0);
         for _ in 0..60 {

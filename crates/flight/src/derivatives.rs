@@ -173,11 +173,11 @@ impl LongitudinalDerivatives {
     /// except −g).
     ///
     /// # Errors
-    /// [`FlightError::NonFinite`]; [`FlightError::InvalidParameter`] unless U₀ > 0.
+    /// [`FlightError::NonFinite`]; [`FlightError::OutOfRange`] unless U₀ > 0.
     pub fn descriptor(&self) -> Result<Descriptor, FlightError> {
         check_all(&self.values(), "longitudinal derivatives")?;
         if self.u0 <= 0.0 {
-            return Err(FlightError::InvalidParameter { what: "U₀", value: self.u0, valid: "a speed > 0" });
+            return Err(FlightError::OutOfRange { what: "U₀", value: self.u0, valid: "a speed > 0" });
         }
         let (s0, c0) = self.theta0.sin_cos();
         #[rustfmt::skip]
@@ -250,12 +250,12 @@ impl LateralDerivatives {
     /// Book: §14.3, (14.3.x), Table 14.2.
     ///
     /// # Errors
-    /// [`FlightError::NonFinite`]; [`FlightError::InvalidParameter`] unless U₀, J_xx, J_zz > 0.
+    /// [`FlightError::NonFinite`]; [`FlightError::OutOfRange`] unless U₀, J_xx, J_zz > 0.
     pub fn descriptor(&self) -> Result<Descriptor, FlightError> {
         check_all(&self.values(), "lateral derivatives")?;
         for (what, value) in [("U₀", self.u0), ("J_xx", self.jxx), ("J_zz", self.jzz)] {
             if value <= 0.0 {
-                return Err(FlightError::InvalidParameter { what, value, valid: "a number > 0" });
+                return Err(FlightError::OutOfRange { what, value, valid: "a number > 0" });
             }
         }
         #[rustfmt::skip]

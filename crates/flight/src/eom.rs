@@ -38,24 +38,24 @@ impl Airframe {
     /// Book: (11.3.6); Fact 6.2.7 (inertia PSD, triangle inequalities).
     ///
     /// # Errors
-    /// [`FlightError::InvalidParameter`] for a mass or moment of inertia that is not finite
+    /// [`FlightError::OutOfRange`] for a mass or moment of inertia that is not finite
     /// and > 0, or an inertia matrix that is not a physical inertia (checked by
     /// `vectrix-statics`: positive definite, λ₁ ≤ λ₂ + λ₃).
     pub fn new(mass: f64, jxx: f64, jyy: f64, jzz: f64, jxz: f64) -> Result<Self, FlightError> {
         for (what, value) in [("mass", mass), ("J_xx", jxx), ("J_yy", jyy), ("J_zz", jzz)] {
             if !(value.is_finite() && value > 0.0) {
-                return Err(FlightError::InvalidParameter { what, value, valid: "a finite number > 0" });
+                return Err(FlightError::OutOfRange { what, value, valid: "a finite number > 0" });
             }
         }
         if !jxz.is_finite() || jxx * jzz <= jxz * jxz {
-            return Err(FlightError::InvalidParameter {
+            return Err(FlightError::OutOfRange {
                 what: "J_xz",
                 value: jxz,
                 valid: "finite with J_xz² < J_xx J_zz (positive-definite inertia)",
             });
         }
         let a = Self { mass, jxx, jyy, jzz, jxz };
-        a.mass_properties::<f64>().map_err(|_| FlightError::InvalidParameter {
+        a.mass_properties::<f64>().map_err(|_| FlightError::OutOfRange {
             what: "inertia",
             value: jxz,
             valid: "a physical inertia (each principal moment ≤ the sum of the other two)",
@@ -82,7 +82,7 @@ impl Airframe {
         let f = Frame::<T>::identity();
         let j = self.inertia_matrix().map(T::lit);
         MassProperties::new(T::lit(self.mass), Point::origin(), f.dyadic(&j)).map_err(|_| {
-            FlightError::InvalidParameter { what: "inertia", value: self.jxz, valid: "a physical inertia" }
+            FlightError::OutOfRange { what: "inertia", value: self.jxz, valid: "a physical inertia" }
         })
     }
 }

@@ -8,7 +8,7 @@ use thiserror::Error;
 pub enum FlightError {
     /// A mass, inertia, area, length or speed that must be positive (or otherwise bounded) is not.
     #[error("invalid {what} = {value}: {valid}")]
-    InvalidParameter {
+    OutOfRange {
         /// Which parameter.
         what: &'static str,
         /// The value given.

@@ -15,6 +15,7 @@
 //! Bad input: every public function returns a correct value or a typed error (never a panic,
 //! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
 //! and tolerances are reported — is `docs/robustness.md` in the repository.
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod aero;

@@ -47,7 +47,7 @@ pub fn doublet_response(
 /// Book: §14.2, §14.7.
 ///
 /// # Errors
-/// As [`doublet_response`]; [`FlightError::InvalidParameter`] unless there is one name per
+/// As [`doublet_response`]; [`FlightError::OutOfRange`] unless there is one name per
 /// state; [`FlightError::Plot`] if the figure cannot be drawn.
 pub fn doublet_response_svg(
     title: &str,
@@ -60,7 +60,7 @@ pub fn doublet_response_svg(
 ) -> Result<String, FlightError> {
     if names.len() != sys.n_states() {
         // one label per curve: extra or missing names would silently drop or mislabel curves
-        return Err(FlightError::InvalidParameter {
+        return Err(FlightError::OutOfRange {
             what: "number of state names",
             value: names.len() as f64,
             valid: "one name per state of the system",

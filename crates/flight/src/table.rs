@@ -26,7 +26,7 @@ fn condition(ac: &Aircraft, trim: &Trim) -> Result<Cond, FlightError> {
     }
     let [u0, v0, w0] = trim.state.velocity;
     if w0.abs() > 1e-9 * u0.abs() || v0.abs() > 1e-9 * u0.abs() || u0 <= 0.0 {
-        return Err(FlightError::InvalidParameter {
+        return Err(FlightError::OutOfRange {
             what: "trim α₀ (W₀/U₀)",
             value: w0 / u0,
             valid: "0: Table 14.1 holds in the stability axes of the trim (§12.4)",
@@ -52,7 +52,7 @@ impl LongitudinalDerivatives {
     /// Book: Table 14.1, (13.3.30)–(13.3.52), (13.5.14).
     ///
     /// # Errors
-    /// [`FlightError::InvalidParameter`] unless the trim has W₀ = V₀ = 0.
+    /// [`FlightError::OutOfRange`] unless the trim has W₀ = V₀ = 0.
     pub fn from_aircraft(ac: &Aircraft, trim: &Trim) -> Result<Self, FlightError> {
         let k = condition(ac, trim)?;
         let c = &ac.coefficients;
@@ -97,7 +97,7 @@ impl LateralDerivatives {
     /// Book: Table 14.2, (13.3.39), (13.5.3), (13.5.33).
     ///
     /// # Errors
-    /// [`FlightError::InvalidParameter`] unless the trim has W₀ = V₀ = 0.
+    /// [`FlightError::OutOfRange`] unless the trim has W₀ = V₀ = 0.
     pub fn from_aircraft(ac: &Aircraft, trim: &Trim) -> Result<Self, FlightError> {
         let k = condition(ac, trim)?;
         let c = &ac.coefficients;

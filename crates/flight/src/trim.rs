@@ -147,7 +147,7 @@ fn bounds(spec: &TrimSpec, lim: &TrimLimits) -> Vec<(f64, f64)> {
 /// Book: §12.1; notes ch9-14 §3 (bounded Newton/LM against stall and negative thrust).
 ///
 /// # Errors
-/// [`Aircraft::check`] errors; [`FlightError::InvalidParameter`] for a non-positive airspeed, |γ| ≥ π/2
+/// [`Aircraft::check`] errors; [`FlightError::OutOfRange`] for a non-positive airspeed, |γ| ≥ π/2
 /// or a limit that is NaN or ≤ 0;
 /// [`FlightError::TrimFailed`] naming the condition with the largest residual when the solve
 /// stalls (e.g. the elevator at its limit cannot zero the pitching moment).
@@ -156,11 +156,7 @@ pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, F
     let (v, names): (f64, &[&str]) = match spec {
         TrimSpec::Straight { airspeed, gamma } => {
             if !(gamma.is_finite() && gamma.abs() < 1.5) {
-                return Err(FlightError::InvalidParameter {
-                    what: "γ",
-                    value: gamma,
-                    valid: "|γ| < 1.5 rad",
-                });
+                return Err(FlightError::OutOfRange { what: "γ", value: gamma, valid: "|γ| < 1.5 rad" });
             }
             (airspeed, &NAMES_STRAIGHT)
         }
@@ -172,7 +168,7 @@ pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, F
         }
     };
     if !(v.is_finite() && v > 0.0) {
-        return Err(FlightError::InvalidParameter { what: "airspeed", value: v, valid: "a finite V > 0" });
+        return Err(FlightError::OutOfRange { what: "airspeed", value: v, valid: "a finite V > 0" });
     }
     // Each limit bounds a box [−l, l] (thrust [0, l]): it must be a number > 0 (+∞ = no limit),
     // else the box is empty or NaN and clamping into it is meaningless.
@@ -183,9 +179,7 @@ pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, F
         ("bank limit", limits.bank),
     ] {
         if l.is_nan() || l <= 0.0 {
-            return Err(FlightError::InvalidParameter {
-                what, value: l, valid: "a limit > 0 (+∞ for none)"
-            });
+            return Err(FlightError::OutOfRange { what, value: l, valid: "a limit > 0 (+∞ for none)" });
         }
     }
     let bnd = bounds(&spec, &limits);

@@ -47,6 +47,7 @@
 //! Bad input: every public function returns a correct value or a typed error (never a panic,
 //! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
 //! and tolerances are reported — is `docs/robustness.md` in the repository.
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 /// `Ok(v)` when every component of the matrix or vector `v` is finite, else

@@ -4,6 +4,7 @@
 //! with exact discretisation, Laplace tools, stability (classes, Routh), frequency response,
 //! Nyquist, margins and root loci, after Bernstein, Goel and Ansari, ch. 15–16 (solutions
 //! ch. 17–18), with the errata listed in the chapter notes corrected.
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod axis;

@@ -15,6 +15,7 @@
 //!
 //! Book: §7.11 (trees), ch. 6 (force elements), §7.13 (impacts), §8.3 (energy).
 
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod aero;

@@ -24,7 +24,7 @@ impl<T: Scalar> Dashpot<T> {
     /// Book: §6.8, §7.12.
     ///
     /// # Errors
-    /// [`StaticsError::InvalidParameter`] for c < 0 or non-finite.
+    /// [`StaticsError::OutOfRange`] for c < 0 or non-finite.
     pub fn new(c: T) -> Result<Self, StaticsError> {
         Ok(Self { c: check_coeff(c, "damping coefficient c", "a finite coefficient ≥ 0")? })
     }
@@ -79,7 +79,7 @@ impl<T: Scalar> RotationalDashpot<T> {
     /// Book: §6.8, §7.12.
     ///
     /// # Errors
-    /// [`StaticsError::InvalidParameter`] for ξ < 0 or non-finite.
+    /// [`StaticsError::OutOfRange`] for ξ < 0 or non-finite.
     pub fn new(xi: T) -> Result<Self, StaticsError> {
         Ok(Self { xi: check_coeff(xi, "rotational damping ξ", "a finite coefficient ≥ 0")? })
     }
@@ -118,7 +118,7 @@ impl<T: Scalar> Inerter<T> {
     /// Book: §6.8, §7.12.
     ///
     /// # Errors
-    /// [`StaticsError::InvalidParameter`] for b < 0 or non-finite.
+    /// [`StaticsError::OutOfRange`] for b < 0 or non-finite.
     pub fn new(b: T) -> Result<Self, StaticsError> {
         Ok(Self { b: check_coeff(b, "inertance b", "a finite inertance ≥ 0")? })
     }
@@ -187,7 +187,7 @@ impl<T: Scalar> RotationalInerter<T> {
     /// Book: §6.8, §7.12.
     ///
     /// # Errors
-    /// [`StaticsError::InvalidParameter`] for β < 0 or non-finite.
+    /// [`StaticsError::OutOfRange`] for β < 0 or non-finite.
     pub fn new(beta: T) -> Result<Self, StaticsError> {
         Ok(Self { beta: check_coeff(beta, "rotational inertance β", "a finite inertance ≥ 0")? })
     }

@@ -24,7 +24,7 @@ pub enum StaticsError {
     },
     /// A length, radius or coefficient that is negative, NaN or infinite.
     #[error("{what} = {value} is invalid: valid is {valid}")]
-    InvalidParameter {
+    OutOfRange {
         /// Which parameter.
         what: &'static str,
         /// Its value.

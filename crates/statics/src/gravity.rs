@@ -77,7 +77,7 @@ impl<T: Scalar> CentralGravity<T> {
     /// Book: §6.12, (6.12.1).
     ///
     /// # Errors
-    /// [`StaticsError::InvalidParameter`] for μ < 0 or non-finite.
+    /// [`StaticsError::OutOfRange`] for μ < 0 or non-finite.
     pub fn new(mu: T) -> Result<Self, StaticsError> {
         Ok(Self { mu: check_coeff(mu, "gravitational parameter μ", "a finite μ = GM ≥ 0")? })
     }
@@ -139,7 +139,7 @@ impl<T: Scalar> CentralGravity<T> {
 /// Book: Fact 6.12.1, (6.12.1).
 ///
 /// # Errors
-/// [`StaticsError::InvalidMass`], [`StaticsError::InvalidParameter`] for G < 0,
+/// [`StaticsError::InvalidMass`], [`StaticsError::OutOfRange`] for G < 0,
 /// [`StaticsError::CoincidentPoints`].
 pub fn mutual_gravitation<T: Scalar>(
     g: T,

@@ -13,7 +13,7 @@ use crate::{MassProperties, Point, StaticsError};
 fn check_len<T: Scalar>(x: T, what: &'static str) -> Result<T, StaticsError> {
     let v = x.re();
     if !v.is_finite() || v < 0.0 {
-        return Err(StaticsError::InvalidParameter { what, value: v, valid: "a finite length ≥ 0" });
+        return Err(StaticsError::OutOfRange { what, value: v, valid: "a finite length ≥ 0" });
     }
     Ok(x)
 }
@@ -53,7 +53,7 @@ impl<T: Scalar> MassProperties<T> {
     /// Book: Example 6.3.2, (6.3.13).
     ///
     /// # Errors
-    /// [`StaticsError::InvalidMass`], [`StaticsError::ZeroMass`], [`StaticsError::InvalidParameter`]
+    /// [`StaticsError::InvalidMass`], [`StaticsError::ZeroMass`], [`StaticsError::OutOfRange`]
     /// for a negative or non-finite radius, [`StaticsError::NonFinite`] for the centre.
     pub fn solid_sphere(m: T, radius: T, centre: Point<T>) -> Result<Self, StaticsError> {
         check_body(m, &centre)?;
@@ -70,12 +70,12 @@ impl<T: Scalar> MassProperties<T> {
     /// Book: Problem 6.14.11.
     ///
     /// # Errors
-    /// As [`MassProperties::solid_sphere`]; [`StaticsError::InvalidParameter`] when r > R.
+    /// As [`MassProperties::solid_sphere`]; [`StaticsError::OutOfRange`] when r > R.
     pub fn spherical_shell(m: T, outer: T, inner: T, centre: Point<T>) -> Result<Self, StaticsError> {
         check_body(m, &centre)?;
         let (big, r) = (check_len(outer, "outer radius")?, check_len(inner, "inner radius")?);
         if r.re() > big.re() {
-            return Err(StaticsError::InvalidParameter {
+            return Err(StaticsError::OutOfRange {
                 what: "inner radius",
                 value: r.re(),
                 valid: "0 ≤ inner radius ≤ outer radius",
@@ -210,7 +210,7 @@ impl<T: Scalar> MassProperties<T> {
         check_body(m, &centre)?;
         let (big, r) = (check_len(outer, "outer radius")?, check_len(inner, "inner radius")?);
         if r.re() > big.re() {
-            return Err(StaticsError::InvalidParameter {
+            return Err(StaticsError::OutOfRange {
                 what: "inner radius",
                 value: r.re(),
                 valid: "0 ≤ inner radius ≤ outer radius",

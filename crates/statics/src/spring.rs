@@ -33,7 +33,7 @@ pub(crate) fn check_coeff<T: Scalar>(
 ) -> Result<T, StaticsError> {
     let v = x.re();
     if !v.is_finite() || v < 0.0 {
-        return Err(StaticsError::InvalidParameter { what, value: v, valid });
+        return Err(StaticsError::OutOfRange { what, value: v, valid });
     }
     Ok(x)
 }
@@ -67,7 +67,7 @@ impl<T: Scalar> Spring<T> {
     /// Book: §6.7, Fact 6.9.1.
     ///
     /// # Errors
-    /// [`StaticsError::InvalidParameter`] when k or d is negative or non-finite.
+    /// [`StaticsError::OutOfRange`] when k or d is negative or non-finite.
     pub fn new(k: T, d: T) -> Result<Self, StaticsError> {
         let k = check_coeff(k, "spring stiffness k", "a finite stiffness ≥ 0")?;
         let d = check_coeff(d, "relaxed length d", "a finite length ≥ 0")?;
@@ -142,11 +142,11 @@ impl<T: Scalar> RotationalSpring<T> {
     /// Book: §6.7, Fact 6.9.1.
     ///
     /// # Errors
-    /// [`StaticsError::InvalidParameter`] for κ < 0 or non-finite κ, θ₀.
+    /// [`StaticsError::OutOfRange`] for κ < 0 or non-finite κ, θ₀.
     pub fn new(kappa: T, theta0: T) -> Result<Self, StaticsError> {
         let kappa = check_coeff(kappa, "rotational stiffness κ", "a finite stiffness ≥ 0")?;
         if !theta0.re().is_finite() {
-            return Err(StaticsError::InvalidParameter {
+            return Err(StaticsError::OutOfRange {
                 what: "relaxed angle θ₀",
                 value: theta0.re(),
                 valid: "a finite angle",

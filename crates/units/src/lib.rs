@@ -57,6 +57,7 @@
 //! values within 10⁻⁵⁹ (relative) of a rounding boundary. [`Measure`] arithmetic is plain
 //! `f64` arithmetic. Results outside the normal `f64` range are [`UnitError::Overflow`] or
 //! [`UnitError::Underflow`], never ∞, 0 or a subnormal.
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 mod converter;

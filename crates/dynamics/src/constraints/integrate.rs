@@ -188,7 +188,7 @@ impl ConstrainedIntegrator {
     ///
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
-    /// [`DynamicsError::InvalidParameter`] (tolerances);
+    /// [`DynamicsError::OutOfRange`] (tolerances);
     /// [`DynamicsError::InconsistentInitialConditions`] when (q₀, q̇₀) violates the
     /// constraints by more than `initial_tol` and `project_initial` is off; the errors of
     /// [`solve_constrained`] (redundant or singular constraints, reached during the run) and
@@ -207,7 +207,7 @@ impl ConstrainedIntegrator {
         check_len(qd0.len(), n, "q̇₀")?;
         self.projection.check()?;
         if !(self.initial_tol.is_finite() && self.initial_tol > 0.0) {
-            return Err(DynamicsError::InvalidParameter {
+            return Err(DynamicsError::OutOfRange {
                 what: "initial consistency tolerance",
                 value: self.initial_tol,
                 valid: "finite and > 0",

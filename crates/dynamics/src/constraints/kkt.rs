@@ -64,7 +64,7 @@ impl KktFactor {
         check_finite(mass.as_slice(), "mass matrix")?;
         check_finite(jacobian.as_slice(), "constraint Jacobian")?;
         if !(rank_tol.is_finite() && rank_tol > 0.0 && rank_tol < 1.0) {
-            return Err(DynamicsError::InvalidParameter {
+            return Err(DynamicsError::OutOfRange {
                 what: "rank tolerance",
                 value: rank_tol,
                 valid: "0 < tol < 1",

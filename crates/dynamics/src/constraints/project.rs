@@ -39,10 +39,10 @@ impl Default for ProjectionOptions {
 }
 
 impl ProjectionOptions {
-    /// `Err(InvalidParameter)` unless tol > 0, 1 ≤ max_iterations ≤
+    /// `Err(OutOfRange)` unless tol > 0, 1 ≤ max_iterations ≤
     /// [`MAX_PROJECTION_ITERATIONS`] and 0 < rank_tol < 1.
     pub(crate) fn check(&self) -> Result<(), DynamicsError> {
-        let bad = |what, value, valid| Err(DynamicsError::InvalidParameter { what, value, valid });
+        let bad = |what, value, valid| Err(DynamicsError::OutOfRange { what, value, valid });
         if !(self.tol.is_finite() && self.tol > 0.0) {
             return bad("projection tolerance", self.tol, "finite and > 0");
         }
@@ -86,7 +86,7 @@ fn inf_norm(x: &DVector<f64>) -> f64 {
 /// Book: §9.11; HNW §VII.2.
 ///
 /// # Errors
-/// [`DynamicsError::InvalidParameter`] (options), the callbacks' errors, the factorization's
+/// [`DynamicsError::OutOfRange`] (options), the callbacks' errors, the factorization's
 /// errors ([`KktFactor::new`]), and [`DynamicsError::ProjectionFailed`] when |φ|∞ does not
 /// reach `tol` within `max_iterations` or stops decreasing.
 pub fn project_positions<F, R>(

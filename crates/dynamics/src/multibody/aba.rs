@@ -76,7 +76,7 @@ impl<T: Scalar> Model<T> {
     ///
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`] (an input),
-    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6);
+    /// [`DynamicsError::OutOfRange`] (a ball-joint quaternion of norm below 1e-6);
     /// [`DynamicsError::InertJointForce`] when a generalized force acts along an inert
     /// direction (its acceleration would be infinite), e.g. a massless leaf link driven by a
     /// torque; [`DynamicsError::Overflow`] when finite inputs give a non-finite v̇ (v ≈ 1e200).

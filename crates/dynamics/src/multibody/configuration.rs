@@ -60,7 +60,7 @@ impl<T: Scalar> Model<T> {
             if s.elem == Elem::Spherical {
                 let n = q[s.qi..s.qi + 4].iter().map(|x| x.re() * x.re()).sum::<f64>().sqrt();
                 if !(1e-6..=1e150).contains(&n) {
-                    return Err(DynamicsError::InvalidParameter {
+                    return Err(DynamicsError::OutOfRange {
                         what: "ball-joint quaternion norm",
                         value: n,
                         valid: "a quaternion of norm in [1e-6, 1e150] (it is normalized)",

@@ -76,7 +76,7 @@ impl<T: Scalar> Model<T> {
     ///
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
-    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6);
+    /// [`DynamicsError::OutOfRange`] (a ball-joint quaternion of norm below 1e-6);
     /// [`DynamicsError::Overflow`] when finite q gives a non-finite entry (a prismatic
     /// coordinate near 1e154 squares past f64::MAX in the composite inertias).
     pub fn crba(&self, q: &[T]) -> Result<DMatrix<T>, DynamicsError> {

@@ -67,7 +67,7 @@ impl<T: Scalar> Model<T> {
     ///
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
-    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6),
+    /// [`DynamicsError::OutOfRange`] (a ball-joint quaternion of norm below 1e-6),
     /// [`DynamicsError::Overflow`].
     pub fn twists(&self, q: &[T], v: &[T]) -> Result<Vec<LinkTwist<T>>, DynamicsError> {
         self.check_q(q)?;
@@ -114,7 +114,7 @@ impl<T: Scalar> Model<T> {
     ///
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
-    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6),
+    /// [`DynamicsError::OutOfRange`] (a ball-joint quaternion of norm below 1e-6),
     /// [`DynamicsError::Overflow`].
     pub fn potential_energy(&self, q: &[T]) -> Result<T, DynamicsError> {
         self.check_q(q)?;

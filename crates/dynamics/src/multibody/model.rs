@@ -165,7 +165,7 @@ impl Model<f64> {
     /// # Errors
     /// [`DynamicsError::Disconnected`] (a parent index that does not exist),
     /// [`DynamicsError::Cyclic`], [`DynamicsError::ZeroAxis`], [`DynamicsError::JointGeometry`]
-    /// (slot axis not ⊥ direction), [`DynamicsError::InvalidParameter`] (mass < 0),
+    /// (slot axis not ⊥ direction), [`DynamicsError::OutOfRange`] (mass < 0),
     /// [`DynamicsError::InvalidInertia`] (not symmetric, not PSD, rank 1, triangle inequality),
     /// [`DynamicsError::NonFinite`].
     pub fn new(links: &[Link]) -> Result<Self, DynamicsError> {
@@ -180,7 +180,7 @@ impl Model<f64> {
             check_finite(l.orientation.as_slice(), "link orientation")?;
             check_finite(l.com.as_slice(), "centre of mass")?;
             if !(l.mass.is_finite() && l.mass >= 0.0) {
-                return Err(DynamicsError::InvalidParameter {
+                return Err(DynamicsError::OutOfRange {
                     what: "link mass",
                     value: l.mass,
                     valid: "finite ≥ 0",
@@ -317,11 +317,11 @@ impl Model<f64> {
     ///
     /// # Errors
     /// As [`Model::new`] (n = 0 gives an empty model, which is valid);
-    /// [`DynamicsError::InvalidParameter`] for n > [`MAX_CHAIN_LINKS`] (refused before
+    /// [`DynamicsError::OutOfRange`] for n > [`MAX_CHAIN_LINKS`] (refused before
     /// allocating, docs/robustness.md §4).
     pub fn revolute_chain(n: usize, m: f64, l: f64) -> Result<Self, DynamicsError> {
         if n > MAX_CHAIN_LINKS {
-            return Err(DynamicsError::InvalidParameter {
+            return Err(DynamicsError::OutOfRange {
                 what: "number of chain links",
                 value: n as f64,
                 valid: "0 ≤ n ≤ 1 000 000",
@@ -510,7 +510,7 @@ impl<T: Scalar> Model<T> {
     ///
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`],
-    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
+    /// [`DynamicsError::OutOfRange`] (a ball-joint quaternion of norm below 1e-6).
     pub fn poses(&self, q: &[T]) -> Result<Vec<Pose<T>>, DynamicsError> {
         self.check_q(q)?;
         let (mut world, mut out) = (PosesScratch::default(), Vec::new());

@@ -54,7 +54,7 @@ impl<T: Scalar> Model<T> {
     /// # Errors
     /// [`DynamicsError::DimensionMismatch`], [`DynamicsError::NonFinite`] (an input),
     /// [`DynamicsError::Overflow`] (finite inputs whose τ overflows, e.g. v ≈ 1e200),
-    /// [`DynamicsError::InvalidParameter`] (a ball-joint quaternion of norm below 1e-6).
+    /// [`DynamicsError::OutOfRange`] (a ball-joint quaternion of norm below 1e-6).
     pub fn rnea(
         &self,
         q: &[T],
