@@ -26,6 +26,7 @@ pub mod flight;
 mod forces;
 mod impacts;
 mod invariants;
+mod jacobian;
 mod kin;
 mod linearize;
 mod loops;
