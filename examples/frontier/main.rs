@@ -32,9 +32,8 @@ use vectrix::ode::explicit::Adaptive;
 use vectrix::ode::harness::{Pendulum, Reference};
 
 use problems::{
-    CLOSED_FORMS, closed_form_f64, closed_form_mp,
-    CHAIN_NS, CHAIN_T, GRAVITY, LINK, MASS, RADIUS, capsule_inertia, chain_model, chain_q0, chain_y0,
-    max_abs_diff,
+    CHAIN_NS, CHAIN_T, CLOSED_FORMS, GRAVITY, LINK, MASS, RADIUS, capsule_inertia, chain_model, chain_q0,
+    chain_y0, closed_form_f64, closed_form_mp, max_abs_diff,
 };
 use report::{Pt, figure};
 use routes::{Ctx, chain_rhs};

@@ -32,10 +32,20 @@ pub const COMPILED: [&str; 2] = ["odeint", "mujoco-c"];
 
 /// The series name without its tool prefix.
 fn short(series: &str) -> &str {
-    ["vectrix scene ", "vectrix ", "Odeint ", "MuJoCo C ", "mujoco ", "MuJoCo ", "scipy ", "pinocchio+", "sympy+"]
-        .iter()
-        .find_map(|p| series.strip_prefix(p))
-        .unwrap_or(series)
+    [
+        "vectrix scene ",
+        "vectrix ",
+        "Odeint ",
+        "MuJoCo C ",
+        "mujoco ",
+        "MuJoCo ",
+        "scipy ",
+        "pinocchio+",
+        "sympy+",
+    ]
+    .iter()
+    .find_map(|p| series.strip_prefix(p))
+    .unwrap_or(series)
 }
 
 /// How far each problem's reference can be trusted: the uncertainty `reference.json` states
