@@ -20,6 +20,7 @@
 mod problems;
 mod report;
 mod routes;
+mod table;
 mod timing;
 
 use std::collections::BTreeMap;
@@ -31,11 +32,12 @@ use vectrix::ode::explicit::Adaptive;
 use vectrix::ode::harness::{Pendulum, Reference};
 
 use problems::{
-    CHAIN_NS, CHAIN_T, GRAVITY, LINK, MASS, RADIUS, capsule_inertia, chain_model, chain_q0, chain_y0,
-    max_abs_diff,
+    CHAIN_NS, CHAIN_T, CLOSED_FORMS, GRAVITY, LINK, MASS, RADIUS, capsule_inertia, chain_model, chain_q0,
+    chain_y0, closed_form_f64, closed_form_mp, max_abs_diff,
 };
-use report::{Pt, family_time, figure, fmt_time};
+use report::{Pt, figure};
 use routes::{Ctx, chain_rhs};
+use table::{FAMILIES, reference_floors, table};
 
 const DATA: &str = "docs/accuracy/peers-data";
 const SVG: &str = "docs/accuracy";
@@ -89,19 +91,6 @@ const PROBLEMS: [(&str, &str, &str); 9] = [
         "Pendulum θ₀ = 1 rad over 10⁴ periods: energy",
         "max |E − E₀|/E₀ at every 10th period",
     ),
-];
-
-/// Target errors of the table.
-const LEVELS: [f64; 4] = [1e-3, 1e-6, 1e-9, 1e-12];
-
-/// Families in table order, with their names in the table.
-const FAMILIES: [(&str, &str); 6] = [
-    ("vectrix library", "vectrix (library)"),
-    ("vectrix scene", "vectrix (scene file)"),
-    ("mujoco", "MuJoCo"),
-    ("scipy", "scipy solve_ivp (numpy RHS)"),
-    ("pinocchio", "Pinocchio ABA + solve_ivp"),
-    ("sympy", "sympy.physics.mechanics + solve_ivp"),
 ];
 
 fn arg(args: &[String], key: &str) -> Option<String> {
@@ -260,6 +249,22 @@ fn run(args: &[String]) {
             reference.insert(id, reference_for(n));
         }
     }
+    // the closed-form problems: the extended-precision end states the peers measure against,
+    // and how far vectrix's double-precision closed forms (its routes' reference) are from them
+    for id in CLOSED_FORMS.into_iter().filter(|id| want(id)) {
+        let mp = closed_form_mp(id).expect("tests/data/closed_form_reference_mp.json holds the problem");
+        let f64s = closed_form_f64(id).expect("a closed-form problem");
+        let diff = max_abs_diff(&f64s, &mp);
+        reference.insert(
+            id.to_string(),
+            json!({
+                "state": mp,
+                "source": "tests/data/closed_form_reference_mp.json (scripts/peers/closed_form_reference_mp.py, mpmath 40 digits)",
+                "vectrix_closed_form": f64s,
+                "uncertainty": diff.max(mp.iter().fold(0.0f64, |a, x| a.max(x.abs() * f64::EPSILON / 2.0))),
+            }),
+        );
+    }
     std::fs::write(&ref_path, serde_json::to_string_pretty(&reference).expect("json"))
         .expect("write reference");
 
@@ -385,112 +390,4 @@ fn plot(args: &[String]) {
         std::fs::write(&doc, new).expect("write document");
         eprintln!("updated {doc}");
     }
-}
-
-/// The series name without its tool prefix.
-fn short(series: &str) -> &str {
-    ["vectrix scene ", "vectrix ", "mujoco ", "MuJoCo ", "scipy ", "pinocchio+", "sympy+"]
-        .iter()
-        .find_map(|p| series.strip_prefix(p))
-        .unwrap_or(series)
-}
-
-/// How far each chain's reference can be trusted: the uncertainty `reference.json` states for
-/// it (the extended-precision reference: its convergence difference or the rounding of its
-/// doubles, ~1e-16). `reference_check.json` (from `check_reference.py`) holds the errors of
-/// scipy's and Pinocchio's recomputations, i.e. checks of those tools, not of the reference.
-fn reference_floors(data: &Path) -> BTreeMap<String, f64> {
-    let reference: Value = std::fs::read_to_string(data.join("reference.json"))
-        .ok()
-        .and_then(|s| serde_json::from_str(&s).ok())
-        .unwrap_or(Value::Null);
-    CHAIN_NS
-        .iter()
-        .map(|n| format!("chain-{n}"))
-        .filter_map(|id| reference[&id]["uncertainty"].as_f64().map(|u| (id, u)))
-        .collect()
-}
-
-fn table(pts: &[Pt], tools: &[Value], floors: &BTreeMap<String, f64>) -> String {
-    let mut s = String::new();
-    s += "Machine, date and load of each tool's sitting (1-minute load average at its start and end):\n\n";
-    s += "| tool | machine | date (UTC) | load start → end |\n|---|---|---|---|\n";
-    for t in tools {
-        let load = |k: &str| {
-            t[k].as_array()
-                .and_then(|a| a.first())
-                .and_then(Value::as_f64)
-                .map_or("?".into(), |x| format!("{x:.1}"))
-        };
-        s += &format!(
-            "| {} | {} | {} | {} → {} |\n",
-            t["tool"].as_str().unwrap_or("?"),
-            t["machine"].as_str().unwrap_or("?"),
-            t["date"].as_str().unwrap_or("?"),
-            load("load_start"),
-            load("load_end")
-        );
-    }
-    s += "\nTime to reach a given error (the fastest method of each tool; ≤: even its cheapest run is that \
-          accurate, so the time is an upper bound; blank: no run reached it). The speed-up rows divide the \
-          fastest peer's time by vectrix's.\n";
-    for (id, title, _) in PROBLEMS {
-        if !pts.iter().any(|p| p.problem == id) {
-            continue;
-        }
-        s += &format!("\n**{title}** (`peers-{id}.svg`)");
-        if let Some(u) = floors.get(id) {
-            s += &format!("; reference checked to {u:.1e}");
-        }
-        s += "\n\n| tool | 1e-3 | 1e-6 | 1e-9 | 1e-12 |\n|---|---|---|---|---|\n";
-        let mut best: BTreeMap<&str, [Option<f64>; 4]> = BTreeMap::new();
-        for (fam, label) in FAMILIES {
-            if !pts.iter().any(|p| p.problem == id && p.family() == fam) {
-                continue;
-            }
-            let mut row = format!("| {label} |");
-            let mut times = [None; 4];
-            for (k, &lvl) in LEVELS.iter().enumerate() {
-                // an error level within 10× of the reference's own uncertainty is not measured
-                if floors.get(id).is_some_and(|u| *u > 0.1 * lvl) {
-                    row += " (below the reference's accuracy) |";
-                    continue;
-                }
-                match family_time(pts, id, fam, lvl) {
-                    Some((t, ub, series)) => {
-                        times[k] = Some(t);
-                        row +=
-                            &format!(" {}{} {} |", if ub { "≤ " } else { "" }, fmt_time(t), short(&series));
-                    }
-                    None => row += " |",
-                }
-            }
-            best.insert(fam, times);
-            s += &row;
-            s += "\n";
-        }
-        let peers: Vec<[Option<f64>; 4]> =
-            best.iter().filter(|(f, _)| !f.starts_with("vectrix")).map(|(_, t)| *t).collect();
-        for (fam, label) in [("vectrix library", "speed-up, library"), ("vectrix scene", "speed-up, scene")] {
-            let Some(ours) = best.get(fam) else { continue };
-            let mut row = format!("| *{label}* |");
-            for k in 0..4 {
-                let fastest = peers.iter().filter_map(|p| p[k]).min_by(f64::total_cmp);
-                row += &match (ours[k], fastest) {
-                    (Some(o), Some(p)) => format!(" {} |", ratio(p / o)),
-                    (Some(_), None) if !peers.is_empty() => " no peer reaches it |".into(),
-                    (None, Some(_)) => " **peer only** |".into(),
-                    _ => " |".into(),
-                };
-            }
-            s += &row;
-            s += "\n";
-        }
-    }
-    s
-}
-
-/// A speed-up with two significant digits.
-fn ratio(r: f64) -> String {
-    if r >= 10.0 { format!("{r:.0}×") } else { format!("{r:.2}×") }
 }

@@ -172,10 +172,41 @@ impl EnergyPendulum {
     }
 }
 
-/// max-norm distance of two states, ∞ if either is not finite.
+/// max-norm distance of two states, ∞ if either is not finite (every component is tested:
+/// `f64::max` alone would drop a NaN).
 pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
+    let finite = a.iter().chain(b).all(|x| x.is_finite());
     let e = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
-    if e.is_finite() && a.len() == b.len() { e } else { f64::INFINITY }
+    if finite && a.len() == b.len() { e } else { f64::INFINITY }
+}
+
+/// The closed-form problems whose end states have an extended-precision reference.
+pub const CLOSED_FORMS: [&str; 3] = ["rigid-body", "kepler-e0.9", "pendulum"];
+
+/// The extended-precision end state of a closed-form problem (`rigid-body`: ω(20) in body
+/// components; `kepler-e0.9`: (x, y, ẋ, ẏ)(20); `pendulum`: (θ, θ̇)(10)), as the nearest
+/// doubles of mpmath's 40-digit values: `scripts/peers/closed_form_reference_mp.py`, committed
+/// as `tests/data/closed_form_reference_mp.json`; the peers measure their errors against it.
+/// Reference: Landau & Lifshitz, Mechanics §37 (the body); Kepler's equation; the pendulum's
+/// Jacobi elliptic solution (Book §4.11).
+pub fn closed_form_mp(id: &str) -> Option<Vec<f64>> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/closed_form_reference_mp.json");
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+    doc["problems"][id]["state"].as_array()?.iter().map(serde_json::Value::as_f64).collect()
+}
+
+/// The same end state from vectrix's double-precision closed forms (`vectrix::ode::harness`),
+/// which the vectrix routes of the frontier measure their errors against.
+pub fn closed_form_f64(id: &str) -> Option<Vec<f64>> {
+    match id {
+        "rigid-body" => {
+            let rb = rigid_body();
+            Some(rb.exact_omega(rb.t_end).as_slice().to_vec())
+        }
+        "kepler-e0.9" => Some(KEPLER.exact(KEPLER.t_end()).as_slice().to_vec()),
+        "pendulum" => Some(PENDULUM.exact(PENDULUM.t_end()).as_slice().to_vec()),
+        _ => None,
+    }
 }
 
 /// The chain's state y = (q, v) as a fixed-size vector.

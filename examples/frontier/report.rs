@@ -96,6 +96,8 @@ fn style(family: &str) -> (Shape, Stroke, &'static str) {
         "vectrix library" => (Shape::Dot, Stroke::Solid, "●"),
         "vectrix scene" => (Shape::Circle, Stroke::Solid, "○"),
         "mujoco" => (Shape::Cross, Stroke::Dashed, "×"),
+        "mujoco-c" => (Shape::Cross, Stroke::Solid, "×"),
+        "odeint" => (Shape::Plus, Stroke::Solid, "+"),
         "scipy" => (Shape::Plus, Stroke::Dotted, "+"),
         "sympy" => (Shape::Circle, Stroke::Dashed, "◌"),
         _ => (Shape::Plus, Stroke::Dashed, "✚"),

@@ -1,7 +1,9 @@
 """Cross-checks the chains' reference end states of reference.json against two computations
 with other tools: scipy's DOP853 at rtol = atol = 1e-13 on the numpy Lagrangian of
 frontier_common (absolute angles, O(n³) solve), and scipy's DOP853 at the same tolerance on
-Pinocchio's ABA. Writes the max-norm differences into reference_check.json.
+Pinocchio's ABA. Writes the max-norm differences into reference_check.json; for the body, Kepler and the
+pendulum, the distance of frontier_common's double-precision closed forms to the
+extended-precision end states (closed_form_reference_mp.py) the errors are measured against.
 
 The reference is the extended-precision one (scripts/peers/chain_reference_mp.py, committed as
 tests/data/chain_reference_mp.json, copied into reference.json by the frontier's `run`; its
@@ -45,6 +47,15 @@ def main():
             row[name] = float(np.max(np.abs(sol.y[:, -1] - state)))
         out[problem] = row
         print(problem, row, flush=True)
+    # the closed-form problems: frontier_common's double-precision closed forms against the
+    # extended-precision end states every tool's error is measured against
+    for problem, exact in (("rigid-body", fc.rigid_exact_omega(fc.RB_T)),
+                           ("kepler-e0.9", fc.kepler_exact(fc.KEPLER_T)),
+                           ("pendulum", fc.pendulum_exact(fc.PEND_T))):
+        if fc.only(problem):
+            out[problem] = {"scipy.special closed form (frontier_common) vs mpmath":
+                            float(np.max(np.abs(exact - fc.MP_END[problem])))}
+            print(problem, out[problem], flush=True)
     path = os.path.join(fc.RESULTS, "reference_check.json")
     with open(path, "w") as f:
         json.dump(out, f, indent=1)

@@ -5,12 +5,15 @@
 #   sh scripts/peers/frontier.sh --quick    # a smoke run of the vectrix side only
 #
 # A partial sitting: FRONTIER_ONLY=kepler-e0.9,chain-30 restricts every tool to those problems
-# and FRONTIER_TOOLS="scipy pinocchio" to those peers; it needs its own FRONTIER_RESULTS folder
+# and FRONTIER_TOOLS="compiled scipy pinocchio" to those peers; it needs its own FRONTIER_RESULTS folder
 # (a peer's file is rewritten with the problems it ran) and prints its table instead of writing
 # the docs' figures and table.
 #
-# vectrix first (it also writes the chains' reference), then the peers one after the other,
-# every tool single-threaded; then the cross-check of the reference, the figures
+# vectrix first (it also writes the problems' references), then the compiled peers right after
+# it (issue 39: Pinocchio's C++ ABA and hand-written C++ right-hand sides inside Boost.Odeint,
+# MuJoCo through its C API; built by cpp/build.sh from the wheels' headers, run by
+# frontier_compiled.py), then the Python-driven peers one after the other, every tool
+# single-threaded; then the cross-check of the reference, the figures
 # docs/accuracy/peers-*.svg and the table in docs/performance.md. Points go to
 # docs/accuracy/peers-data/*.json (override with FRONTIER_RESULTS). Needs the venv of
 # ../shared/peers/README.md (PEERS_VENV, default ~/.venv-peers).
@@ -22,21 +25,24 @@ export FRONTIER_RESULTS="$(pwd)/$DATA"
 PY=${PEERS_VENV:-$HOME/.venv-peers}/bin/python
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc --all) CPUs; $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"
 cargo build --release --example frontier
+FRONTIER=${CARGO_TARGET_DIR:-target}/release/examples/frontier
 if [ "$1" = "--quick" ]; then
-  ./target/release/examples/frontier run --quick --out "$DATA"
+  "$FRONTIER" run --quick --out "$DATA"
   exit 0
 fi
+# the compiled peers are built before any timing starts
+case " ${FRONTIER_TOOLS:-compiled} " in *" compiled "*) sh scripts/peers/cpp/build.sh ;; esac
 if [ -n "$FRONTIER_ONLY" ]; then
   if [ "$DATA" = "docs/accuracy/peers-data" ]; then
     echo "FRONTIER_ONLY needs its own FRONTIER_RESULTS folder (the docs' data holds every problem)" >&2
     exit 2
   fi
-  ./target/release/examples/frontier run --out "$DATA" --only "$FRONTIER_ONLY"
+  "$FRONTIER" run --out "$DATA" --only "$FRONTIER_ONLY"
 else
-  ./target/release/examples/frontier run --out "$DATA"
+  "$FRONTIER" run --out "$DATA"
 fi
 cd scripts/peers
-for tool in ${FRONTIER_TOOLS:-mujoco scipy pinocchio sympy}; do
+for tool in ${FRONTIER_TOOLS:-compiled mujoco scipy pinocchio sympy}; do
   echo "== $tool (load: $(cut -d' ' -f1-3 /proc/loadavg))"
   $PY frontier_$tool.py
 done
@@ -44,8 +50,8 @@ $PY check_reference.py
 cd ../..
 if [ -n "$FRONTIER_ONLY" ]; then
   mkdir -p "$DATA/svg"
-  ./target/release/examples/frontier plot --data "$DATA" --svg "$DATA/svg"
+  "$FRONTIER" plot --data "$DATA" --svg "$DATA/svg"
 else
-  ./target/release/examples/frontier plot --data "$DATA" --svg docs/accuracy --doc docs/performance.md
+  "$FRONTIER" plot --data "$DATA" --svg docs/accuracy --doc docs/performance.md
 fi
 echo "done: $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"
