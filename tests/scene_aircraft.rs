@@ -8,7 +8,10 @@
 //! 3-2-1 angles with body-axis velocities and a fixed-point α̇/β̇); the flight equations
 //! themselves are tested against the book in tests/ch11_* to ch14_*.
 
+mod support;
+
 use nalgebra::{UnitQuaternion, Vector3};
+use support::nan_max;
 use vectrix::scene::Scene;
 use vectrix_flight::{Aircraft, AircraftState, Controls, Trim, TrimLimits, TrimSpec, business_jet_in, trim};
 use vectrix_ode::explicit::{Adaptive, Stepper};
@@ -131,10 +134,7 @@ fn flight_reference(x0: &AircraftState, u0: &Controls, doublet: f64, times: &[f6
 
 /// The largest |a − b| over a group, failing on NaN.
 fn max_diff(a: &[f64], b: &[f64]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, |m, d| if d.is_nan() || m.is_nan() { f64::NAN } else { m.max(d) })
+    a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, nan_max)
 }
 
 #[test]
@@ -155,12 +155,12 @@ fn aircraft_body_follows_the_flight_equations_through_an_elevator_doublet() {
         // body-axis velocity U, V, W = 𝓞_{AC/E} v (the joint's speeds are ground components)
         let uvw = r.inverse() * Vector3::new(row[7], row[8], row[9]);
         let (phi, theta, psi) = r.euler_angles();
-        pos = pos.max(max_diff(&row[0..3], &y.position) / (U0 * 20.0));
-        vel = vel.max(max_diff(uvw.as_slice(), &y.velocity) / U0);
-        ang = ang.max(max_diff(&[phi, theta, psi], &[y.attitude.phi, y.attitude.theta, y.attitude.psi]));
-        rate = rate.max(max_diff(&row[10..13], &y.omega));
-        rate_scale = rate_scale.max(y.omega[1].abs());
-        moved = moved.max((y.attitude.theta - x0.attitude.theta).abs());
+        pos = nan_max(pos, max_diff(&row[0..3], &y.position) / (U0 * 20.0));
+        vel = nan_max(vel, max_diff(uvw.as_slice(), &y.velocity) / U0);
+        ang = nan_max(ang, max_diff(&[phi, theta, psi], &[y.attitude.phi, y.attitude.theta, y.attitude.psi]));
+        rate = nan_max(rate, max_diff(&row[10..13], &y.omega));
+        rate_scale = nan_max(rate_scale, y.omega[1].abs());
+        moved = nan_max(moved, (y.attitude.theta - x0.attitude.theta).abs());
     }
     eprintln!(
         "position {pos:.2e}, velocity {vel:.2e}, attitude {ang:.2e}, rates {rate:.2e} of {rate_scale:.2e}, θ moved {moved:.2e}"
@@ -285,7 +285,7 @@ fn aircraft_body_modes_equal_the_flight_linearization() {
     let mut worst = 0.0_f64;
     for (a, b) in ours.iter().zip(&theirs) {
         let d = (a[0] - b[0]).hypot(a[1] - b[1]) / b[0].hypot(b[1]);
-        worst = if d.is_nan() || worst.is_nan() { f64::NAN } else { worst.max(d) };
+        worst = nan_max(worst, d);
     }
     eprintln!("largest relative eigenvalue difference {worst:.2e}");
     // both linearizations are exact (dual numbers), in different coordinates (quaternion and
