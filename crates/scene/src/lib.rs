@@ -23,6 +23,7 @@ mod error;
 pub mod flight;
 mod forces;
 mod impacts;
+pub mod import;
 mod invariants;
 mod kin;
 mod linearize;
@@ -143,6 +144,8 @@ pub struct Scene {
     source: (String, String),
     /// What `[trim]` found, when the file declares it.
     trim: Option<TrimReport>,
+    /// What the `[model]` file had that does not map (issue 35).
+    import_warnings: Vec<import::ImportWarning>,
 }
 
 impl std::fmt::Debug for Scene {
@@ -196,12 +199,24 @@ impl Scene {
     /// Validates `spec`; with a `[trim]` table, trims its initial state and validates the
     /// trimmed scene (whose [`Scene::trim_report`] says what was found).
     fn build(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
-        let scene = Self::build_plain(spec, src)?;
-        let Some(t) = scene.spec.trim.clone() else { return Ok(scene) };
-        let (trimmed, report) = scene.trimmed(&t.free)?;
-        let mut scene = Self::build_plain(trimmed, src)?;
-        scene.trim = Some(report);
+        // issue 35: a `[model]` file's links become bodies first
+        let (spec, warnings) = import::expand(spec, src)?;
+        let mut scene = Self::build_plain(spec, src)?;
+        if let Some(t) = scene.spec.trim.clone() {
+            let (trimmed, report) = scene.trimmed(&t.free)?;
+            scene = Self::build_plain(trimmed, src)?;
+            scene.trim = Some(report);
+        }
+        scene.import_warnings = warnings;
         Ok(scene)
+    }
+
+    /// What the `[model]` file (URDF, MJCF) had that does not map onto the scene, each with
+    /// its file and line (empty without `[model]`).
+    ///
+    /// Book: — (issue 35: nothing dropped silently).
+    pub fn import_warnings(&self) -> &[import::ImportWarning] {
+        &self.import_warnings
     }
 
     /// What `[trim]` found (`None` without a `[trim]` table): the unknowns, their change, the
@@ -260,6 +275,7 @@ impl Scene {
             contacts: Vec::new(),
             source: (src.file().to_string(), src.text().to_string()),
             trim: None,
+            import_warnings: Vec::new(),
         };
         scene.contacts = scene.contact_effects();
         scene.loop_scale = scene.constraint_scale();
