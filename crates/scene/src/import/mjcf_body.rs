@@ -183,6 +183,13 @@ impl<'a, 'i> Ctx<'a, 'i> {
         // the body's frame in its last link frame: shifted back by the last joint's position
         let shift = -prev;
         self.mass[b] = mp.moved(&Matrix3::identity(), &shift);
+        let link = LinkFrame {
+            link: name.into(),
+            body: name.into(),
+            offset: shift.into(),
+            orientation: rows(&Matrix3::identity()),
+        };
+        self.m.frames.push(link);
         Ok(Place { host: Some(b), local: (Matrix3::identity(), shift), world })
     }
 

@@ -70,8 +70,9 @@ pub struct JointLimit {
     pub velocity: f64,
 }
 
-/// A link of the file that is not a body of its own (merged through a fixed joint, or the
-/// root welded to the ground): where it sits in the body that carries it.
+/// A link of the file (URDF `<link>`, MJCF `<body>`) and where its frame sits in the body
+/// that carries it: its own body (at the origin, or for MJCF at minus its last joint's
+/// `pos`), the body it was merged into through a fixed joint, or the ground (the root).
 ///
 /// Book: §2.10 (frames), §7.11.
 #[derive(Debug, Clone, PartialEq)]

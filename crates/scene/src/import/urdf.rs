@@ -346,6 +346,7 @@ fn emit(
             let b = m.bodies.len() - 1;
             mass[b] = own;
             host[j.child] = (Some(b), Matrix3::identity(), Vector3::zeros());
+            frame(m, &child.name, &child.name, &Matrix3::identity(), &Vector3::zeros());
             if let Some(l) = &j.limit {
                 m.limits.push(JointLimit { body: child.name.clone(), ..l.clone() });
             }
