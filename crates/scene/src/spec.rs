@@ -162,6 +162,12 @@ pub struct ModelSpec {
     /// Add uniform gravity: MJCF's `<option gravity>`, else (0, 0, −9.81) m/s².
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub gravity: bool,
+    /// Initial joint coordinates of the model's bodies, by body name (as `bodies[].q`).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub q: std::collections::BTreeMap<String, Vec<f64>>,
+    /// Initial joint velocities of the model's bodies, by body name (as `bodies[].v`).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub v: std::collections::BTreeMap<String, Vec<f64>>,
 }
 
 fn ground() -> String {

@@ -244,6 +244,12 @@ impl<'a, 'i> Ctx<'a, 'i> {
                     return Err(self.t.err(i, "missing `diaginertia` or `fullinertia`"));
                 };
                 check_stated(m, &j).map_err(|e| self.t.err(i, e))?;
+                for g in geoms {
+                    self.t.skip(
+                        *g,
+                        "the body's mass comes from its <inertial>; geometry is not used for dynamics",
+                    );
+                }
                 return Ok(MassProps { m, c: Vector3::zeros(), j }.moved(&r, &c));
             }
         }

@@ -149,3 +149,6 @@ pub(crate) fn orientation(rows: &[[f64; 3]; 3]) -> Result<Matrix3<f64>, String> 
         .map_err(|e| format!("{e}; valid: the rows of a rotation matrix (orthonormal, determinant +1)"))?;
     Ok(r.transpose())
 }
+
+#[cfg(test)]
+mod tests;

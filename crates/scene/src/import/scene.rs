@@ -98,7 +98,19 @@ pub fn expand(mut spec: SceneSpec, src: &SceneSource) -> Result<(SceneSpec, Vec<
     let base = dir.canonicalize().unwrap_or(dir);
     let model = load_file(&path, &base, is_mjcf)?;
     model.check_strict(m.strict)?;
-    spec.bodies.extend(model.bodies);
+    let mut bodies = model.bodies;
+    for (key, map, is_q) in [("q", &m.q, true), ("v", &m.v, false)] {
+        for (name, x) in map {
+            let b = bodies.iter_mut().find(|b| &b.name == name).ok_or_else(|| {
+                src.invalid(
+                    format!("model.{key}.{name}"),
+                    format!("`{name}` is not a moving body of the model"),
+                )
+            })?;
+            if is_q { b.q = Some(x.clone()) } else { b.v = Some(x.clone()) }
+        }
+    }
+    spec.bodies.extend(bodies);
     spec.loops.extend(model.loops);
     if m.gravity {
         spec.effects.push(EffectSpec::UniformGravity { g: model.gravity.unwrap_or(G0) });
