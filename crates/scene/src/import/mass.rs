@@ -78,7 +78,7 @@ impl MassProps {
 /// # Errors
 /// What is wrong, and what would be valid.
 pub(crate) fn check_stated(m: f64, j: &Matrix3<f64>) -> Result<(), String> {
-    if !(m > 0.0) {
+    if m.is_nan() || m <= 0.0 {
         return Err(format!("mass {m}; valid: a mass > 0 (leave out <inertial> for a massless link)"));
     }
     if !j.iter().all(|x| x.is_finite()) {

@@ -288,7 +288,7 @@ impl<'a, 'i> Ctx<'a, 'i> {
                 Some(m) => m[0],
                 None => vol * self.dnums(*g, "density", &gc, Some(1))?.map_or(1000.0, |d| d[0]),
             };
-            if !(vol > 0.0) || mass < 0.0 {
+            if vol.is_nan() || vol <= 0.0 || mass.is_nan() || mass < 0.0 {
                 return Err(self
                     .t
                     .err(*g, "zero volume or negative mass; valid: positive sizes and mass ≥ 0"));
