@@ -107,10 +107,55 @@ pub(crate) fn read_scene(path: &Path) -> Result<String, BoxError> {
 /// # Errors
 /// As [`read_scene`], and the scene's own errors (`file:line:col`).
 pub(crate) fn load(path: &Path) -> Result<Loaded, BoxError> {
-    let text = read_scene(path)?;
     let file = path.display().to_string();
+    // issue 35: a URDF or MJCF file alone is a scene of that model under gravity
+    let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    let text = match ext.as_deref() {
+        Some(e @ ("urdf" | "xml")) => {
+            let name = path.file_name().and_then(|n| n.to_str()).ok_or("the model file name is not UTF-8")?;
+            vectrix_scene::import::model_scene_toml(name, e == "xml")
+        }
+        _ => read_scene(path)?,
+    };
     let scene = AnyScene::from_toml(&text, &file)?;
+    if let AnyScene::Bodies(s) = &scene {
+        report_import(s.import_warnings(), STRICT.with(std::cell::Cell::get))?;
+    }
     Ok(Loaded { text, file, scene })
+}
+
+thread_local! {
+    /// `--strict`: unmapped model content is an error (set per command by `run_with_args`).
+    static STRICT: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Sets `--strict` for the commands run next on this thread.
+pub(crate) fn set_strict(strict: bool) {
+    STRICT.with(|s| s.set(strict));
+}
+
+/// Most import warnings printed one by one (the rest are counted).
+const MAX_WARNINGS_SHOWN: usize = 50;
+
+/// Prints what a `[model]` file had that does not map (to stderr), or refuses it when strict.
+fn report_import(w: &[vectrix_scene::import::ImportWarning], strict: bool) -> Result<(), BoxError> {
+    if w.is_empty() {
+        return Ok(());
+    }
+    let shown: Vec<String> = w.iter().take(MAX_WARNINGS_SHOWN).map(ToString::to_string).collect();
+    let more = w.len().saturating_sub(MAX_WARNINGS_SHOWN);
+    let tail = if more > 0 { format!("\n… and {more} more") } else { String::new() };
+    if strict {
+        return Err(format!(
+            "{}{tail}\n--strict: {} element(s) or attribute(s) of the model do not map; valid: a model whose every \
+             element maps, or drop --strict to run with them left out",
+            shown.join("\n"),
+            w.len()
+        )
+        .into());
+    }
+    eprintln!("{}{tail}", shown.join("\n"));
+    Ok(())
 }
 
 #[cfg(test)]

@@ -72,11 +72,18 @@ pub enum Command {
         /// output could exceed it is refused before it starts, and writing stops there.
         #[arg(long, default_value = "1GiB", value_parser = sink::parse_bytes)]
         max_output_bytes: u64,
+        /// Refuse a URDF/MJCF model with any element or attribute that does not map
+        /// (instead of warning about it).
+        #[arg(long)]
+        strict: bool,
     },
-    /// Validates a scene file without running it.
+    /// Validates a scene file (or a URDF/MJCF model) without running it.
     Check {
-        /// The scene file (TOML).
+        /// The scene file (TOML), or a model file (`.urdf`, MJCF `.xml`).
         scene: PathBuf,
+        /// Refuse a URDF/MJCF model with any element or attribute that does not map.
+        #[arg(long)]
+        strict: bool,
     },
     /// Runs a scene for every value of one or more parameters, in parallel.
     Sweep {
@@ -153,13 +160,18 @@ where
     T: Into<OsString> + Clone,
 {
     let cli = Cli::try_parse_from(args)?;
+    input::set_strict(false);
     let done = |r: Result<(), Box<dyn std::error::Error + Send + Sync>>| r.map(|()| Outcome::Complete);
     match cli.command {
         None => run::run(out, None, &PathBuf::from("out"), false, UnitSystem::Si, DEFAULT_MAX_OUTPUT_BYTES),
-        Some(Command::Run { scene, out: dir, quiet, units, max_output_bytes }) => {
+        Some(Command::Run { scene, out: dir, quiet, units, max_output_bytes, strict }) => {
+            input::set_strict(strict);
             run::run(out, scene.as_deref(), &dir, quiet, units.parse::<UnitSystem>()?, max_output_bytes)
         }
-        Some(Command::Check { scene }) => done(check::check(out, &scene)),
+        Some(Command::Check { scene, strict }) => {
+            input::set_strict(strict);
+            done(check::check(out, &scene))
+        }
         Some(Command::Sweep { scene, param, out: dir, quiet, units, max_output_bytes }) => {
             let opts =
                 sweep::Options { dir: &dir, quiet, units: units.parse::<UnitSystem>()?, max_output_bytes };

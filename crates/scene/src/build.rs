@@ -339,9 +339,19 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
                 "a body cannot be its own parent; joints must form a tree",
             ));
         }
-        let orient = match &b.frame {
-            None => Matrix3::identity(),
-            Some(f) => {
+        let orient = match (&b.frame, &b.orientation) {
+            // issue 35 (import): a joint frame turned in its parent, 𝓞_{J/P} = Rᵀ
+            (None, Some(rows)) => {
+                super::import::orientation(rows).map_err(|m| src.invalid(format!("{path}.orientation"), m))?
+            }
+            (Some(_), Some(_)) => {
+                return Err(src.invalid(
+                    format!("{path}.orientation"),
+                    "both `frame` and `orientation`; valid: one of them",
+                ));
+            }
+            (None, None) => Matrix3::identity(),
+            (Some(f), None) => {
                 let k = spec.frames.iter().position(|x| &x.name == f).ok_or_else(|| {
                     src.invalid(
                         format!("{path}.frame"),

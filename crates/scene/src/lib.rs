@@ -25,6 +25,7 @@ mod error;
 pub mod flight;
 mod forces;
 mod impacts;
+pub mod import;
 mod invariants;
 mod jacobian;
 mod kin;
@@ -152,6 +153,8 @@ pub struct Scene {
     source: (String, String),
     /// What `[trim]` found, when the file declares it.
     trim: Option<TrimReport>,
+    /// What the `[model]` file had that does not map (issue 35).
+    import_warnings: Vec<import::ImportWarning>,
 }
 
 impl std::fmt::Debug for Scene {
@@ -231,12 +234,24 @@ impl Scene {
     /// Validates `spec`; with a `[trim]` table, trims its initial state and validates the
     /// trimmed scene (whose [`Scene::trim_report`] says what was found).
     fn build(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
-        let scene = Self::build_plain(spec, src)?;
-        let Some(t) = scene.spec.trim.clone() else { return Ok(scene) };
-        let (trimmed, report) = scene.trimmed_holding(&t.free, &t.hold)?;
-        let mut scene = Self::build_plain(trimmed, src)?;
-        scene.trim = Some(report);
+        // issue 35: a `[model]` file's links become bodies first
+        let (spec, warnings) = import::expand(spec, src)?;
+        let mut scene = Self::build_plain(spec, src)?;
+        if let Some(t) = scene.spec.trim.clone() {
+            let (trimmed, report) = scene.trimmed_holding(&t.free, &t.hold)?;
+            scene = Self::build_plain(trimmed, src)?;
+            scene.trim = Some(report);
+        }
+        scene.import_warnings = warnings;
         Ok(scene)
+    }
+
+    /// What the `[model]` file (URDF, MJCF) had that does not map onto the scene, each with
+    /// its file and line (empty without `[model]`).
+    ///
+    /// Book: — (issue 35: nothing dropped silently).
+    pub fn import_warnings(&self) -> &[import::ImportWarning] {
+        &self.import_warnings
     }
 
     /// What `[trim]` found (`None` without a `[trim]` table): the unknowns, their change, the
@@ -308,6 +323,7 @@ impl Scene {
             contacts: Vec::new(),
             source: (src.file().to_string(), src.text().to_string()),
             trim: None,
+            import_warnings: Vec::new(),
         };
         scene.contacts = scene.contact_effects();
         scene.loop_scale = scene.constraint_scale();

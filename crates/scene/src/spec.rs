@@ -39,7 +39,12 @@ pub struct SceneSpec {
     /// Named frames (orientations relative to the ground) that joints may be placed in.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub frames: Vec<FrameSpec>,
+    /// A robot model read from a URDF or MJCF file (issue 35, `import`): its links become
+    /// bodies after the scene's own `bodies`, its loops after the scene's `loops`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model: Option<ModelSpec>,
     /// The bodies, each joined to its parent (or to the ground).
+    #[serde(default)]
     pub bodies: Vec<BodySpec>,
     /// The effects acting: only these are assembled.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -127,6 +132,11 @@ pub struct BodySpec {
     /// for bodies on the ground), identity when omitted.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub frame: Option<String>,
+    /// Orientation of the joint frame relative to the parent link frame, as the rows of the
+    /// rotation matrix whose columns are the joint frame's axes in parent components (URDF's
+    /// `rpy`, MJCF's `quat`); identity when omitted; not together with `frame`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub orientation: Option<[[f64; 3]; 3]>,
     /// Mass properties.
     pub mass: MassSpec,
     /// Centre of mass relative to the link origin (link components).
@@ -138,6 +148,32 @@ pub struct BodySpec {
     /// Initial joint velocities (length nv of the joint; zero when omitted).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub v: Option<Vec<f64>>,
+}
+
+/// The `[model]` table: a URDF or MJCF file whose links and joints become bodies.
+///
+/// Book: §7.11 (trees of bodies and joints); URDF (ROS `urdf/XML`), MJCF (MuJoCo XML reference).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelSpec {
+    /// A URDF file, relative to the scene file and inside its folder tree.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub urdf: Option<String>,
+    /// An MJCF file, relative to the scene file and inside its folder tree.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mjcf: Option<String>,
+    /// Refuse the model when any element or attribute does not map (instead of a warning).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub strict: bool,
+    /// Add uniform gravity: MJCF's `<option gravity>`, else (0, 0, −9.81) m/s².
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub gravity: bool,
+    /// Initial joint coordinates of the model's bodies, by body name (as `bodies[].q`).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub q: std::collections::BTreeMap<String, Vec<f64>>,
+    /// Initial joint velocities of the model's bodies, by body name (as `bodies[].v`).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub v: std::collections::BTreeMap<String, Vec<f64>>,
 }
 
 fn ground() -> String {

@@ -1,0 +1,132 @@
+//! The `[model]` table: a URDF or MJCF file, confined to the scene file's folder tree, read
+//! into the scene's bodies and loops.
+//!
+//! Book: §7.11.
+
+use std::io::Read;
+use std::path::{Component, Path, PathBuf};
+
+use super::{ImportWarning, ImportedModel, MAX_MODEL_BYTES, mjcf, urdf};
+use crate::SceneError;
+use crate::source::SceneSource;
+use crate::spec::{EffectSpec, SceneSpec};
+
+/// Standard gravity, −ẑ [m/s²]: the default of a model without `<option gravity>`.
+const G0: [f64; 3] = [0.0, 0.0, -9.81];
+
+/// Resolves `rel` against `dir`: relative, without `..`, and (symlinks followed) inside `dir`.
+///
+/// # Errors
+/// A message saying what was wrong and what is valid.
+pub(crate) fn confined(dir: &Path, rel: &str) -> Result<PathBuf, String> {
+    let p = Path::new(rel);
+    if rel.is_empty() || !p.components().all(|c| matches!(c, Component::Normal(_) | Component::CurDir)) {
+        return Err(format!(
+            "`{rel}` leaves the folder; valid: a relative path inside the scene's folder tree (no `..`, not absolute)"
+        ));
+    }
+    let full = dir.join(p);
+    let (Ok(real), Ok(base)) = (full.canonicalize(), dir.canonicalize()) else {
+        return Err(format!("`{}` cannot be opened (missing file?)", full.display()));
+    };
+    if !real.starts_with(&base) {
+        return Err(format!(
+            "`{rel}` resolves (through a link) outside the scene's folder tree; valid: a file inside it"
+        ));
+    }
+    Ok(real)
+}
+
+/// The text of a model file: a regular file of at most [`MAX_MODEL_BYTES`] bytes of UTF-8.
+///
+/// # Errors
+/// A message naming the problem.
+pub(crate) fn read_model(path: &Path) -> Result<String, String> {
+    let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if !meta.is_file() {
+        return Err(format!("{}: not a regular file; valid: a URDF or MJCF file", path.display()));
+    }
+    let f = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut bytes = Vec::new();
+    f.take(MAX_MODEL_BYTES as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    if bytes.len() > MAX_MODEL_BYTES {
+        return Err(format!("{}: more than {MAX_MODEL_BYTES} bytes; valid: a smaller model", path.display()));
+    }
+    String::from_utf8(bytes)
+        .map_err(|_| format!("{}: not UTF-8 text; valid: an XML file in UTF-8", path.display()))
+}
+
+/// Reads the model file at `path` (`mjcf` picks the format; MJCF includes stay inside `dir`).
+///
+/// # Errors
+/// [`SceneError::Parse`] located in the model file; a read failure as a message.
+pub fn load_file(path: &Path, dir: &Path, is_mjcf: bool) -> Result<ImportedModel, SceneError> {
+    let shown = path.display().to_string();
+    let text = read_model(path).map_err(|m| SceneError::Parse {
+        file: shown.clone(),
+        line: 1,
+        column: 1,
+        message: m,
+    })?;
+    if is_mjcf { mjcf::load_mjcf(&text, &shown, dir) } else { urdf::load_urdf(&text, &shown) }
+}
+
+/// The scene with its `[model]` read in: the model's bodies after the scene's own, its loops
+/// after the scene's, uniform gravity added when `gravity = true`; `model` is then cleared
+/// (so expanding again changes nothing). Returns the warnings of what did not map.
+///
+/// Book: §7.11.
+///
+/// # Errors
+/// [`SceneError::Invalid`] at `model.*` (both or neither file, a path leaving the folder,
+/// a missing file); the model file's own errors ([`SceneError::Parse`] at its line); with
+/// `strict`, the first warning as an error.
+pub fn expand(mut spec: SceneSpec, src: &SceneSource) -> Result<(SceneSpec, Vec<ImportWarning>), SceneError> {
+    let Some(m) = spec.model.take() else { return Ok((spec, Vec::new())) };
+    let (key, rel, is_mjcf) = match (&m.urdf, &m.mjcf) {
+        (Some(u), None) => ("model.urdf", u.clone(), false),
+        (None, Some(x)) => ("model.mjcf", x.clone(), true),
+        _ => return Err(src.invalid("model", "give exactly one of `urdf` and `mjcf`")),
+    };
+    let dir = match Path::new(src.file()).parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let path = confined(&dir, &rel).map_err(|e| src.invalid(key, e))?;
+    let base = dir.canonicalize().unwrap_or(dir);
+    let model = load_file(&path, &base, is_mjcf)?;
+    model.check_strict(m.strict)?;
+    let mut bodies = model.bodies;
+    for (key, map, is_q) in [("q", &m.q, true), ("v", &m.v, false)] {
+        for (name, x) in map {
+            let b = bodies.iter_mut().find(|b| &b.name == name).ok_or_else(|| {
+                src.invalid(
+                    format!("model.{key}.{name}"),
+                    format!("`{name}` is not a moving body of the model"),
+                )
+            })?;
+            if is_q { b.q = Some(x.clone()) } else { b.v = Some(x.clone()) }
+        }
+    }
+    spec.bodies.extend(bodies);
+    spec.loops.extend(model.loops);
+    if m.gravity {
+        spec.effects.push(EffectSpec::UniformGravity { g: model.gravity.unwrap_or(G0) });
+    }
+    Ok((spec, model.warnings))
+}
+
+/// A scene for a model file alone (`vectrix run arm.urdf`): the model with gravity, 2 s, its
+/// coordinates as outputs (the default of a scene without `outputs`).
+///
+/// Book: §7.11.
+pub fn model_scene_toml(file_name: &str, is_mjcf: bool) -> String {
+    let stem = Path::new(file_name).file_stem().and_then(|s| s.to_str()).unwrap_or("model");
+    let name: String =
+        stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).take(64).collect();
+    let key = if is_mjcf { "mjcf" } else { "urdf" };
+    let quoted = toml::Value::String(file_name.to_string());
+    format!("name = \"{name}\"\nduration = 2.0\n\n[model]\n{key} = {quoted}\ngravity = true\n")
+}
