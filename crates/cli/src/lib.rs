@@ -2,7 +2,8 @@
 //!
 //! * `vectrix` (no arguments) and `vectrix run [SCENE]`: run a scene (the embedded default,
 //!   the tennis-racket flip, when no file is given) and write `out/<scene>/` with
-//!   `trajectory.csv`, `summary.json` and one SVG per requested output.
+//!   `trajectory.csv`, `summary.json`, one SVG per requested output and `view.html` (the
+//!   run's self-contained 3-D view; `--no-view` or `view = false` skips it).
 //! * `vectrix check SCENE`: validate without running.
 //! * `vectrix sweep SCENE --param PATH=v1,v2,…`: parameter sweeps in parallel (rayon).
 //! * `vectrix tour`, `vectrix accuracy`: the kernel tour and the integrators' work–precision
@@ -38,6 +39,7 @@ mod run;
 mod sink;
 mod sweep;
 mod tour;
+mod view;
 
 pub use run::Outcome;
 pub use sink::DEFAULT_MAX_OUTPUT_BYTES;
@@ -55,7 +57,8 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Runs a scene file (the embedded tennis-racket scene when omitted) and writes
-    /// out/<scene>/ with trajectory.csv, summary.json and SVG plots.
+    /// out/<scene>/ with trajectory.csv, summary.json, SVG plots and view.html (a 3-D view
+    /// that opens offline in a browser).
     Run {
         /// The scene file (TOML).
         scene: Option<PathBuf>,
@@ -72,6 +75,10 @@ pub enum Command {
         /// output could exceed it is refused before it starts, and writing stops there.
         #[arg(long, default_value = "1GiB", value_parser = sink::parse_bytes)]
         max_output_bytes: u64,
+        /// Do not write view.html, the run's self-contained 3-D view (also `view = false` in
+        /// the scene file).
+        #[arg(long)]
+        no_view: bool,
     },
     /// Validates a scene file without running it.
     Check {
@@ -155,9 +162,25 @@ where
     let cli = Cli::try_parse_from(args)?;
     let done = |r: Result<(), Box<dyn std::error::Error + Send + Sync>>| r.map(|()| Outcome::Complete);
     match cli.command {
-        None => run::run(out, None, &PathBuf::from("out"), false, UnitSystem::Si, DEFAULT_MAX_OUTPUT_BYTES),
-        Some(Command::Run { scene, out: dir, quiet, units, max_output_bytes }) => {
-            run::run(out, scene.as_deref(), &dir, quiet, units.parse::<UnitSystem>()?, max_output_bytes)
+        None => {
+            let opts = run::Options {
+                dir: &PathBuf::from("out"),
+                quiet: false,
+                units: UnitSystem::Si,
+                max_bytes: DEFAULT_MAX_OUTPUT_BYTES,
+                view: true,
+            };
+            run::run(out, None, &opts)
+        }
+        Some(Command::Run { scene, out: dir, quiet, units, max_output_bytes, no_view }) => {
+            let opts = run::Options {
+                dir: &dir,
+                quiet,
+                units: units.parse::<UnitSystem>()?,
+                max_bytes: max_output_bytes,
+                view: !no_view,
+            };
+            run::run(out, scene.as_deref(), &opts)
         }
         Some(Command::Check { scene }) => done(check::check(out, &scene)),
         Some(Command::Sweep { scene, param, out: dir, quiet, units, max_output_bytes }) => {
