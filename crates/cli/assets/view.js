@@ -125,8 +125,10 @@ function bodyMesh(b, color) {
 const bodyGroups = D.bodies.map((b, i) => { const g = bodyMesh(b, COLORS[i % COLORS.length]); scene.add(g); return g; });
 
 // ground: grid perpendicular to up, below everything; the ground triad and the named frames
-const cell = Math.pow(10, Math.floor(Math.log10(flight ? 4 * S : L / 2)));
-const gridSize = cell * (flight ? 200 : Math.ceil(3 * L / cell));
+// (a flight's grid is small and moves under the aircraft by whole cells: SwiftShader drops the
+// near part of a grid whose lines reach far behind the camera)
+const cell = Math.pow(10, Math.floor(Math.log10(flight ? S : L / 2)));
+const gridSize = cell * (flight ? 40 : Math.ceil(3 * L / cell));
 const grid = new THREE.GridHelper(gridSize, Math.round(gridSize / cell), 0x9aa3b2, 0xd0d5de);
 grid.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), up);
 let lowest = Infinity;

@@ -15,7 +15,8 @@
 //! `--max-output-bytes` (default [`DEFAULT_MAX_OUTPUT_BYTES`]), and stops writing at a whole
 //! file on Ctrl-C or SIGTERM, marking the output incomplete.
 //!
-//! [`run_with_args`] is the library entry the binary and the tests call.
+//! [`run_with_args`] is the library entry the binary and the tests call; [`View`] shows a run's
+//! `view.html` inline in an evcxr notebook.
 //!
 //! Book: §7.11, ch. 6, §7.13 (what a scene simulates); §4.11 (integration).
 #![warn(missing_docs)]
@@ -43,6 +44,7 @@ mod view;
 
 pub use run::Outcome;
 pub use sink::DEFAULT_MAX_OUTPUT_BYTES;
+pub use view::View;
 
 /// Command-line arguments.
 #[derive(Debug, Parser)]

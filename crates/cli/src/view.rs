@@ -23,8 +23,10 @@ use vectrix_scene::spec::{Attach, EffectSpec, LoopSpec, MassSpec};
 use vectrix_scene::{Run, RunControl, Scene, SceneSource};
 use vectrix_units::UnitSystem;
 
+mod notebook;
 mod page;
 
+pub use notebook::View;
 pub(crate) use page::{page, page_bound};
 
 /// Most instants a view samples.

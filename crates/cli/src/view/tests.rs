@@ -125,3 +125,28 @@ fn inertia_values_draw_the_equivalent_box() {
     // the moments back from the sides: J₁ = m(b² + c²)/12 = 1
     assert!(((sides[1].powi(2) + sides[2].powi(2)) / 12.0 - 1.0).abs() < 1e-6);
 }
+
+/// A notebook cell shows the page in a sandboxed iframe: evcxr's HTML markers around it, the
+/// page HTML-escaped in `srcdoc` (so no `<script` and no `"` of the page is read as the
+/// notebook's markup), and the page back unchanged after unescaping.
+#[test]
+fn a_notebook_view_is_an_escaped_iframe() {
+    let d = tempfile::tempdir().unwrap();
+    let page = page("p", &no_poses("p", "test"));
+    std::fs::write(d.path().join("view.html"), &page).unwrap();
+    let text = View::open(d.path()).unwrap().display_text();
+    assert!(text.starts_with("EVCXR_BEGIN_CONTENT text/html\n<iframe sandbox=\"allow-scripts\""));
+    assert!(text.ends_with("></iframe>\nEVCXR_END_CONTENT\n"));
+    let at = text.find("srcdoc=\"").unwrap() + 8;
+    let end = text[at..].find('"').unwrap();
+    let doc = &text[at..at + end];
+    assert!(!doc.contains('<') && !doc.contains('>'));
+    let back = doc
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&#39;", "'")
+        .replace("&amp;", "&");
+    assert_eq!(back, page);
+    assert!(View::open(d.path().join("missing")).unwrap_err().to_string().contains("view.html"));
+}
