@@ -1,5 +1,5 @@
 // vectrix view: draws a run's bodies from its sampled poses (issue 36). Follows the inlined
-// three.js (`THREE`). The data is the JSON of <script id="vectrix-data"> (see crates/cli/src/
+// three.js (`THREE`). The data is the JSON of the element #vectrix-data (see crates/cli/src/
 // view.rs): t[k], pose[(k·B + b)·7 + 0..7] = position (x, y, z) and attitude (w, x, y, z) of
 // body b's link frame in the ground frame. Between samples: positions linearly, attitudes by
 // slerp. Hooks for tests: window.vectrixView.
