@@ -6,9 +6,12 @@
 //!
 //! Book: §7.11 (poses of a tree of bodies), §2.12 (Euler parameters), §14.2 (aircraft).
 
+mod support;
+
 use std::path::Path;
 
 use serde_json::Value;
+use support::nan_max;
 use vectrix_cli::{Outcome, run_with_args};
 
 fn cli(args: &[&str]) -> Result<(Outcome, String), String> {
@@ -230,7 +233,7 @@ fn a_flight_scene_view_shows_the_aircraft() {
     let mut largest = 0.0_f64;
     for k in 0..t.len() {
         let theta = hud[2 * k];
-        largest = largest.max(theta.abs());
+        largest = nan_max(largest, theta.abs());
         let q = &pose[7 * k + 3..7 * k + 7];
         let want = [(theta / 2.0).cos(), 0.0, -(theta / 2.0).sin(), 0.0];
         for (g, w) in q.iter().zip(want) {
