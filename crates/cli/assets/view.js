@@ -143,7 +143,8 @@ if (!flight) {
 if (D.gravity) {
   const g = V3(D.gravity), n = g.length();
   if (n > 0) {
-    const at = centre.clone().addScaledVector(up, 0.5 * L).add(new THREE.Vector3(0.6 * L, 0, 0).projectOnPlane(up));
+    const R = flight ? 1.5 * S : L; // beside the aircraft, which it follows; else beside the scene
+    const at = centre.clone().addScaledVector(up, 0.5 * R).add(new THREE.Vector3(0.6 * R, 0, 0).projectOnPlane(up));
     const arrow = new THREE.ArrowHelper(g.clone().divideScalar(n), at, 0.35 * S, 0x666666, 0.08 * S, 0.04 * S);
     const l = label(`g = ${n.toPrecision(4)}`, 0.05 * S); l.position.copy(at).addScaledVector(up, 0.06 * S);
     const gravity = new THREE.Group(); gravity.add(arrow, l); scene.add(gravity);
