@@ -53,7 +53,8 @@ pub(crate) struct Estimate {
 }
 
 impl Estimate {
-    fn data(&mut self, name: impl Into<String>, n: u64) {
+    /// Adds a data file (or a group of them) of at most `n` bytes.
+    pub(crate) fn data(&mut self, name: impl Into<String>, n: u64) {
         self.data = self.data.saturating_add(n);
         self.parts.push((name.into(), n));
     }
@@ -164,6 +165,32 @@ pub(crate) fn scene(s: &Scene) -> Estimate {
     e.summary(summary);
     e.summary(mul(files, MANIFEST_LINE));
     e
+}
+
+/// view.html of a body-scene run (see [`crate::view`]): at most [`crate::view::frames`]
+/// instants of every body's pose and of the first heads-up columns, whatever `samples` is.
+pub(crate) fn scene_view(s: &Scene) -> u64 {
+    let spec = s.spec();
+    let bodies = spec.bodies.len();
+    let rows = crate::view::frames(spec.samples + 1, bodies);
+    let columns = s.columns();
+    let hud = columns.len().min(crate::view::MAX_HUD_COLUMNS);
+    let text = spec.name.len()
+        + spec.bodies.iter().map(|b| 2 * b.name.len()).sum::<usize>()
+        + columns.iter().take(hud).map(|c| c.len() + UNIT as usize).sum::<usize>()
+        + spec.frames.iter().map(|f| f.name.len()).sum::<usize>()
+        + spec.loops.len() * (vectrix_scene::MAX_NAME_CHARS + 16);
+    let items = bodies + spec.loops.len() + spec.effects.len() + spec.frames.len();
+    crate::view::page_bound(rows * bodies, rows, hud, text, items)
+}
+
+/// view.html of a flight-scene run: one aircraft's pose at the view's instants.
+pub(crate) fn flight_view(s: &FlightScene) -> u64 {
+    let spec = s.spec();
+    let rows = crate::view::frames(spec.samples, 1);
+    let hud = spec.outputs.len().min(crate::view::MAX_HUD_COLUMNS);
+    let text = spec.name.len() + spec.outputs.iter().map(|o| o.len() + UNIT as usize).sum::<usize>() + 64;
+    crate::view::page_bound(rows, rows, hud, text, 2)
 }
 
 /// Files of a flight-scene run (see [`crate::report::write_flight`]).

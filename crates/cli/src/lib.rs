@@ -2,7 +2,8 @@
 //!
 //! * `vectrix` (no arguments) and `vectrix run [SCENE]`: run a scene (the embedded default,
 //!   the tennis-racket flip, when no file is given) and write `out/<scene>/` with
-//!   `trajectory.csv`, `summary.json` and one SVG per requested output.
+//!   `trajectory.csv`, `summary.json`, one SVG per requested output and `view.html` (the
+//!   run's self-contained 3-D view; `--no-view` or `view = false` skips it).
 //! * `vectrix check SCENE`: validate without running.
 //! * `vectrix sweep SCENE --param PATH=v1,v2,…`: parameter sweeps in parallel (rayon).
 //! * `vectrix tour`, `vectrix accuracy`: the kernel tour and the integrators' work–precision
@@ -14,7 +15,8 @@
 //! `--max-output-bytes` (default [`DEFAULT_MAX_OUTPUT_BYTES`]), and stops writing at a whole
 //! file on Ctrl-C or SIGTERM, marking the output incomplete.
 //!
-//! [`run_with_args`] is the library entry the binary and the tests call.
+//! [`run_with_args`] is the library entry the binary and the tests call; [`View`] shows a run's
+//! `view.html` inline in an evcxr notebook.
 //!
 //! Book: §7.11, ch. 6, §7.13 (what a scene simulates); §4.11 (integration).
 #![warn(missing_docs)]
@@ -38,9 +40,11 @@ mod run;
 mod sink;
 mod sweep;
 mod tour;
+mod view;
 
 pub use run::Outcome;
 pub use sink::DEFAULT_MAX_OUTPUT_BYTES;
+pub use view::View;
 
 /// Command-line arguments.
 #[derive(Debug, Parser)]
@@ -55,7 +59,8 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Runs a scene file (the embedded tennis-racket scene when omitted) and writes
-    /// out/<scene>/ with trajectory.csv, summary.json and SVG plots.
+    /// out/<scene>/ with trajectory.csv, summary.json, SVG plots and view.html (a 3-D view
+    /// that opens offline in a browser).
     Run {
         /// The scene file (TOML).
         scene: Option<PathBuf>,
@@ -76,6 +81,10 @@ pub enum Command {
         /// (instead of warning about it).
         #[arg(long)]
         strict: bool,
+        /// Do not write view.html, the run's self-contained 3-D view (also `view = false` in
+        /// the scene file).
+        #[arg(long)]
+        no_view: bool,
     },
     /// Validates a scene file (or a URDF/MJCF model) without running it.
     Check {
@@ -163,10 +172,26 @@ where
     input::set_strict(false);
     let done = |r: Result<(), Box<dyn std::error::Error + Send + Sync>>| r.map(|()| Outcome::Complete);
     match cli.command {
-        None => run::run(out, None, &PathBuf::from("out"), false, UnitSystem::Si, DEFAULT_MAX_OUTPUT_BYTES),
-        Some(Command::Run { scene, out: dir, quiet, units, max_output_bytes, strict }) => {
+        None => {
+            let opts = run::Options {
+                dir: &PathBuf::from("out"),
+                quiet: false,
+                units: UnitSystem::Si,
+                max_bytes: DEFAULT_MAX_OUTPUT_BYTES,
+                view: true,
+            };
+            run::run(out, None, &opts)
+        }
+        Some(Command::Run { scene, out: dir, quiet, units, max_output_bytes, strict, no_view }) => {
             input::set_strict(strict);
-            run::run(out, scene.as_deref(), &dir, quiet, units.parse::<UnitSystem>()?, max_output_bytes)
+            let opts = run::Options {
+                dir: &dir,
+                quiet,
+                units: units.parse::<UnitSystem>()?,
+                max_bytes: max_output_bytes,
+                view: !no_view,
+            };
+            run::run(out, scene.as_deref(), &opts)
         }
         Some(Command::Check { scene, strict }) => {
             input::set_strict(strict);

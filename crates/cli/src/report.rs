@@ -143,7 +143,13 @@ pub(crate) fn y_label(run: &Run, o: &str) -> String {
 ///
 /// # Errors
 /// I/O and plot errors.
-pub(crate) fn write_scene(sink: &Sink, prefix: &str, scene: &Scene, run: &Run) -> Result<bool, BoxError> {
+pub(crate) fn write_scene(
+    sink: &Sink,
+    prefix: &str,
+    scene: &Scene,
+    run: &Run,
+    view: Option<&str>,
+) -> Result<bool, BoxError> {
     let mut skipped: Vec<String> = Vec::new();
     // renders a data file only while the sink is still writing
     let mut put =
@@ -177,6 +183,9 @@ pub(crate) fn write_scene(sink: &Sink, prefix: &str, scene: &Scene, run: &Run) -
                 path_svg(run, o, body)
             })?;
         }
+    }
+    if let Some(page) = view {
+        put("view.html".into(), &|| Ok(Some(page.to_string())))?;
     }
     let stop =
         sink.halt().filter(|_| !skipped.is_empty()).map(|h| OutputStop::new(h, &skipped, sink.max_bytes()));
@@ -264,7 +273,7 @@ fn path_svg(run: &Run, o: &str, body: &str) -> Result<Option<String>, BoxError> 
 ///
 /// # Errors
 /// I/O and plot errors.
-pub(crate) fn write_flight(sink: &Sink, run: &FlightRun) -> Result<bool, BoxError> {
+pub(crate) fn write_flight(sink: &Sink, run: &FlightRun, view: Option<&str>) -> Result<bool, BoxError> {
     let mut skipped: Vec<String> = Vec::new();
     let mut put = |file: String, render: &dyn Fn() -> Result<String, BoxError>| -> Result<(), BoxError> {
         if sink.halt().is_none() && sink.data(&file, render()?.as_bytes())? {
@@ -279,6 +288,9 @@ pub(crate) fn write_flight(sink: &Sink, run: &FlightRun) -> Result<bool, BoxErro
         put(format!("{}.svg", file_stem(o, &mut taken)), &|| Ok(run.response_svg(k)?))?;
     }
     put("modes.svg".into(), &|| Ok(run.modes_svg()?))?;
+    if let Some(page) = view {
+        put("view.html".into(), &|| Ok(page.to_string()))?;
+    }
     let mut summary: serde_json::Value = serde_json::from_str(&run.summary_json())?;
     summary["max_output_bytes"] = sink.max_bytes().into();
     if let Some(h) = sink.halt().filter(|_| !skipped.is_empty()) {
@@ -308,7 +320,7 @@ mod tests {
         assert!(run.is_complete());
         let d = tempfile::tempdir().unwrap();
         let sink = Sink::with_cancel(d.path(), Limits { max_bytes: 1 << 30, reserve: 0 }, Some(&FLAG));
-        assert!(!write_scene(&sink, "", &scene, &run).unwrap());
+        assert!(!write_scene(&sink, "", &scene, &run, None).unwrap());
         assert_eq!(sink.files(), ["summary.json"]);
         let s: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(d.path().join("summary.json")).unwrap()).unwrap();

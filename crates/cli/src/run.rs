@@ -209,22 +209,33 @@ pub(crate) fn outcome(stop: Option<StopReason>, halt: Option<Halt>) -> Outcome {
     }
 }
 
+/// Options of `vectrix run`.
+pub(crate) struct Options<'a> {
+    /// Parent of the output folder.
+    pub dir: &'a Path,
+    /// No progress bar.
+    pub quiet: bool,
+    /// Unit system of the outputs.
+    pub units: UnitSystem,
+    /// `--max-output-bytes`.
+    pub max_bytes: u64,
+    /// Write view.html (unless the scene says `view = false`).
+    pub view: bool,
+}
+
 /// `vectrix run`.
-pub fn run(
+pub(crate) fn run(
     out: &mut impl Write,
     path: Option<&Path>,
-    dir: &Path,
-    quiet: bool,
-    units: UnitSystem,
-    max_bytes: u64,
+    opts: &Options<'_>,
 ) -> Result<Outcome, BoxError> {
+    let &Options { dir, quiet, units, max_bytes, .. } = opts;
     let (text, file, scene) = match path {
         Some(p) => {
             let loaded = load(p)?;
             match loaded.scene {
                 AnyScene::Bodies(s) => (loaded.text, loaded.file, *s),
                 AnyScene::Flight(f) => {
-                    let opts = (dir, quiet, units, max_bytes);
                     return run_flight(out, (&loaded.text, &loaded.file, p), &f, opts);
                 }
             }
@@ -239,10 +250,21 @@ pub fn run(
         not_inside(p, dir, name)?;
     }
     preflight(dir, name)?;
-    let limits = crate::budget::scene(&scene).limits(max_bytes).map_err(|m| located(&text, &file, m))?;
+    let view = opts.view && scene.spec().view;
+    let mut estimate = crate::budget::scene(&scene);
+    if view {
+        estimate.data("view.html", crate::budget::scene_view(&scene));
+    }
+    let limits = estimate.limits(max_bytes).map_err(|m| located(&text, &file, m))?;
     let run = simulate(&scene, quiet)?.in_units(units)?;
-    let w =
-        write_dir(dir, name, limits, |sink| crate::report::write_scene(sink, "", &scene, &run).map(|_| ()))?;
+    let page = view.then(|| {
+        let data = crate::view::scene_view(&scene, (&text, &file), &run, units)
+            .unwrap_or_else(|why| crate::view::no_poses(name, &why));
+        crate::view::page(name, &data)
+    });
+    let w = write_dir(dir, name, limits, |sink| {
+        crate::report::write_scene(sink, "", &scene, &run, page.as_deref()).map(|_| ())
+    })?;
     print_summary(out, &scene, &run)?;
     print_written(out, &w, max_bytes)?;
     Ok(outcome(run.stop.as_ref().map(|s| s.reason), w.halt))
@@ -253,18 +275,31 @@ fn run_flight(
     out: &mut impl Write,
     (text, file, path): (&str, &str, &Path),
     scene: &FlightScene,
-    (dir, quiet, units, max_bytes): (&Path, bool, UnitSystem, u64),
+    opts: &Options<'_>,
 ) -> Result<Outcome, BoxError> {
+    let &Options { dir, quiet, units, max_bytes, .. } = opts;
     let name = &scene.spec().name;
     not_inside(path, dir, name)?;
     preflight(dir, name)?;
-    let limits = crate::budget::flight(scene).limits(max_bytes).map_err(|m| located(text, file, m))?;
+    let view = opts.view && scene.spec().view;
+    let mut estimate = crate::budget::flight(scene);
+    if view {
+        estimate.data("view.html", crate::budget::flight_view(scene));
+    }
+    let limits = estimate.limits(max_bytes).map_err(|m| located(text, file, m))?;
     let start = Instant::now();
     let mut bar = Progress::new(name, quiet);
     let run = scene.run_with(RunControl { progress: &mut |f| bar.update(f), cancel: Some(interrupted()) })?;
     bar.finish();
+    let page = view.then(|| {
+        let data = crate::view::flight_view(scene, &run, units)
+            .unwrap_or_else(|why| crate::view::no_poses(name, &why));
+        crate::view::page(name, &data)
+    });
     let run = run.in_units(units)?;
-    let w = write_dir(dir, &run.scene, limits, |sink| crate::report::write_flight(sink, &run).map(|_| ()))?;
+    let w = write_dir(dir, &run.scene, limits, |sink| {
+        crate::report::write_flight(sink, &run, page.as_deref()).map(|_| ())
+    })?;
     writeln!(
         out,
         "flight scene `{}`: t = 0 … {} s, {} rows, {} f-evals, {} steps, {:.3} s wall",

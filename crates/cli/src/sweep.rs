@@ -248,7 +248,7 @@ pub(crate) fn sweep(
             .map(|d| -> Result<bool, String> {
                 let sub = format!("run-{:03}", d.index);
                 sink.dir(&sub).map_err(|e| e.to_string())?;
-                crate::report::write_scene(sink, &format!("{sub}/"), &d.scene, &d.run)
+                crate::report::write_scene(sink, &format!("{sub}/"), &d.scene, &d.run, None)
                     .map_err(|e| e.to_string())
             })
             .collect::<Result<Vec<bool>, String>>()?;

@@ -74,6 +74,10 @@ pub struct FlightSceneSpec {
     /// Control inputs added to the trim controls.
     #[serde(default)]
     pub inputs: Vec<InputSpec>,
+    /// Write `view.html`, the run's self-contained 3-D view, into the output folder (`true`
+    /// when omitted; `vectrix run --no-view` skips it as well).
+    #[serde(default = "crate::spec::yes", skip_serializing_if = "crate::spec::is_yes")]
+    pub view: bool,
 }
 
 fn default_samples() -> usize {

@@ -72,6 +72,10 @@ pub struct SceneSpec {
     /// declared effects imply they hold.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub checks: Vec<String>,
+    /// Write `view.html`, the run's self-contained 3-D view, into the output folder (`true`
+    /// when omitted; `vectrix run --no-view` skips it as well).
+    #[serde(default = "yes", skip_serializing_if = "is_yes")]
+    pub view: bool,
 }
 
 fn zero_profile() -> Profile {
@@ -80,6 +84,17 @@ fn zero_profile() -> Profile {
 
 fn default_samples() -> usize {
     200
+}
+
+/// The default of a key that is on unless turned off.
+pub(crate) fn yes() -> bool {
+    true
+}
+
+/// Whether a key is at its default `true` (then it is not serialized).
+#[allow(clippy::trivially_copy_pass_by_ref)]
+pub(crate) fn is_yes(b: &bool) -> bool {
+    *b
 }
 
 /// An integration method chosen by name.

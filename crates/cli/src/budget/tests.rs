@@ -32,7 +32,7 @@ fn a_runs_files_fit_its_estimate() {
     let run = scene.run(&mut |_| {}).unwrap();
     let d = tempfile::tempdir().unwrap();
     let sink = Sink::with_cancel(d.path(), e.limits(1 << 30).unwrap(), None);
-    assert!(crate::report::write_scene(&sink, "", &scene, &run).unwrap());
+    assert!(crate::report::write_scene(&sink, "", &scene, &run, None).unwrap());
     let size = |f: &str| std::fs::metadata(d.path().join(f)).unwrap().len();
     let part = |n: &str| e.parts.iter().find(|(m, _)| m == n).unwrap().1;
     assert!(size("trajectory.csv") <= part("trajectory.csv"));
