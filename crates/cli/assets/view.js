@@ -113,13 +113,14 @@ function bodyMesh(b, color) {
       const wing = new THREE.Mesh(new THREE.BoxGeometry(0.16 * l, w, 0.012 * l), m); wing.position.x = 0.05 * l; mesh.add(wing);
       const tail = new THREE.Mesh(new THREE.BoxGeometry(0.1 * l, 0.38 * w, 0.01 * l), m); tail.position.x = -0.44 * l; mesh.add(tail);
       const fin = new THREE.Mesh(new THREE.BoxGeometry(0.12 * l, 0.01 * l, 0.16 * l), m); fin.position.set(-0.44 * l, 0, 0.08 * l); mesh.add(fin);
+      if (s.zdown) mesh.rotation.x = Math.PI; // a body scene's aircraft axes: z down, the fin up
       break;
     }
     default: break;
   }
   if (mesh) { mesh.position.add(V3(b.com)); g.add(mesh); }
   const tl = AIR(b) ? 0.6 * s.span : Math.max(0.7 * shapeSize(s), 0.12 * L);
-  g.add(AIR(b) ? triad('aircraft', tl, ['x_B', 'y_B', 'z_B'], [1, -1, -1]) : triad(b.name, tl));
+  g.add(AIR(b) ? triad(b.name, tl, ['x_B', 'y_B', 'z_B'], s.zdown ? [1, 1, 1] : [1, -1, -1]) : triad(b.name, tl));
   return g;
 }
 const bodyGroups = D.bodies.map((b, i) => { const g = bodyMesh(b, COLORS[i % COLORS.length]); scene.add(g); return g; });

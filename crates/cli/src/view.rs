@@ -69,6 +69,14 @@ fn shape(m: &MassSpec) -> Value {
         MassSpec::Box { sides, .. } => json!({ "kind": "box", "sides": sides.map(r7) }),
         MassSpec::Rod { length, .. } => json!({ "kind": "rod", "length": r7(*length) }),
         MassSpec::Disk { radius, .. } => json!({ "kind": "disk", "radius": r7(*radius) }),
+        // an aircraft body: the glyph of the flight view, in the link's own aircraft axes
+        // (z down), sized by the catalogue's span
+        MassSpec::Aircraft { model } => {
+            // (a validated scene names a catalogue aircraft: `business_jet` is the one)
+            let _ = model;
+            let span = vectrix_flight::business_jet_in(vectrix_units::UnitSystem::Si).geometry.span;
+            json!({ "kind": "aircraft", "span": r7(span), "length": r7(0.8 * span), "zdown": true })
+        }
         MassSpec::Value { mass, principal, matrix } => {
             let j = match (principal, matrix) {
                 (_, Some(m)) => Matrix3::from_fn(|i, k| m[i][k]),
