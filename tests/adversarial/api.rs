@@ -195,7 +195,8 @@ impl Walk {
                         continue;
                     }
                     let candidates = match path_attr(&m.attrs) {
-                        Some(p) => vec![dir.join(p)],
+                        // a #[path] outside inline modules is relative to the declaring file's folder
+                        Some(p) => vec![src.join(file).parent().map_or_else(|| dir.join(&p), |d| d.join(&p))],
                         None => vec![dir.join(format!("{name}.rs")), dir.join(&name).join("mod.rs")],
                     };
                     let Some(found) = candidates.into_iter().find(|p| p.exists()) else {

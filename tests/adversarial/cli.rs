@@ -14,6 +14,24 @@ fn cli(args: &[&str]) -> Result<String, String> {
 }
 
 cases! {
+    // The notebook view (issue 36): a folder without a view is an error naming view.html; a
+    // view shows as a sandboxed iframe whose page is escaped inside `srcdoc` (no raw `"` or `<`
+    // of the page can end the attribute), wrapped in evcxr's HTML markers.
+    cli_notebook_view ["View::open", "View::iframe", "View::display_text", "View::evcxr_display"] {
+        let dir = tempfile::tempdir().unwrap();
+        let e = vectrix_cli::View::open(dir.path()).unwrap_err().to_string();
+        assert!(e.contains("view.html"), "{e}");
+        std::fs::write(dir.path().join("view.html"), "<p title=\"x\">a & b</p><script>alert(1)</script>").unwrap();
+        let v = vectrix_cli::View::open(dir.path()).unwrap();
+        let frame = v.iframe();
+        let inner = frame.split("srcdoc=\"").nth(1).unwrap().rsplit_once("\"></iframe>").unwrap().0;
+        assert!(!inner.contains('"') && !inner.contains('<'), "{inner}");
+        assert!(frame.contains("sandbox=\"allow-scripts\""));
+        let text = v.display_text();
+        assert!(text.starts_with("EVCXR_BEGIN_CONTENT text/html") && text.trim_end().ends_with("EVCXR_END_CONTENT"));
+        v.evcxr_display();
+    }
+
     // `check`, `run` and `sweep` with hostile arguments: an error with a message, or output
     // without NaN/∞ (a valid scene is checked; a sweep over non-finite values is refused per
     // value or as a whole). The binary (`main`) exits 0 for `--help`, nonzero for nonsense.

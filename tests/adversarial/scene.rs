@@ -371,6 +371,44 @@ cases! {
         err_or(empty, "LinearModel::new(empty)", |m| m.modes.is_empty());
     }
 
+    // URDF and MJCF import (issue 35): hostile XML (empty, not XML, an unknown joint type, NaN
+    // and huge numbers, a mesh path outside the folder) is a typed error or a model whose
+    // every warning is located; strict refuses a model with warnings; a scene without `[model]`
+    // expands to itself; the gallery's arm loads from its file and its model scene parses.
+    scene_import ["import::urdf::load_urdf", "import::mjcf::load_mjcf", "ImportedModel::check_strict",
+        "expand", "load_file", "model_scene_toml", "Scene::import_warnings"] {
+        use vectrix::scene::import;
+        let dir = std::env::temp_dir();
+        let texts = [
+            "", "not xml", "<robot/>", "<mujoco/>",
+            "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"nan\"/><inertia ixx=\"1\" iyy=\"1\" izz=\"1\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link></robot>",
+            "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"1e308\"/><inertia ixx=\"1e308\" iyy=\"1e308\" izz=\"1e308\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial><visual><geometry><mesh filename=\"/etc/passwd\"/></geometry></visual></link></robot>",
+            "<mujoco><worldbody><body name=\"b\"><joint type=\"warp\"/><geom type=\"sphere\" size=\"0.1\"/></body></worldbody></mujoco>",
+            "<mujoco><worldbody><body name=\"b\"><freejoint/><geom type=\"sphere\" size=\"nan\"/></body></worldbody></mujoco>",
+            "<mujoco><include file=\"../../etc/passwd\"/></mujoco>",
+        ];
+        for text in texts {
+            let located = |m: &import::ImportedModel| m.warnings.iter().all(|w| w.line >= 1 && w.column >= 1);
+            err_or(import::urdf::load_urdf(text, "t.urdf"), "load_urdf", located);
+            err_or(import::mjcf::load_mjcf(text, "t.xml", &dir), "load_mjcf", located);
+            if let Ok(m) = import::urdf::load_urdf(text, "t.urdf") {
+                assert!(m.check_strict(false).is_ok());
+                assert_eq!(m.check_strict(true).is_err(), !m.warnings.is_empty());
+            }
+        }
+        let arm = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/models/arm7.urdf");
+        let folder = std::path::Path::new(arm).parent().unwrap();
+        err_or(import::load_file(std::path::Path::new(arm), folder, false), "load_file(arm7)", |m| !m.bodies.is_empty());
+        refused(import::load_file(std::path::Path::new("/nonexistent/x.urdf"), folder, false), "load_file(missing)");
+        let text = import::model_scene_toml("../arm7.urdf", false);
+        assert!(toml::from_str::<toml::Value>(&text).is_ok(), "{text}");
+        let plain = double_pendulum([0.4, -0.3], "");
+        let src = SceneSource::new(&plain, "dp.toml").unwrap();
+        let spec: vectrix::scene::SceneSpec = src.deserialize().unwrap();
+        err_or(import::expand(spec.clone(), &src), "expand(no model)", |(s, w)| *s == spec && w.is_empty());
+        assert!(Scene::from_toml(&plain, "dp.toml").unwrap().import_warnings().is_empty());
+    }
+
     // Quantity errors in a scene's words: the units library's byte positions are left out,
     // everything else is kept.
     scene_unit_message ["unit_message"] {
