@@ -6,8 +6,8 @@ the Radau reference (per problem), so tests can ask for no more than that.
 
   Robertson's chemical kinetics (HW II §IV.1, (1.3)): y1' = -0.04 y1 + 1e4 y2 y3,
   y2' = 0.04 y1 - 1e4 y2 y3 - 3e7 y2^2, y3' = 3e7 y2^2, y(0) = (1, 0, 0), t in [0, 40] and [0, 1e5].
-  Van der Pol (HW II §IV.1, (1.5)), mu = 1000: y1' = y2, y2' = mu ((1 - y1^2) y2 - y1),
-  y(0) = (2, 0), t in [0, 3000].
+  (Van der Pol at mu = 1000 is checked against the published VDPOL reference of the Test Set
+  for IVP Solvers instead: scipy's Radau at 1e-13 over [0, 3000] took longer than 25 minutes.)
 
 Run: ~/.venv-peers/bin/python scripts/stiff_reference.py  (writes tests/data/stiff_reference.json)
 """
@@ -29,17 +29,6 @@ def robertson_jac(t, y):
     return [[-0.04, 1e4 * y[2], 1e4 * y[1]],
             [0.04, -1e4 * y[2] - 6e7 * y[1], -1e4 * y[1]],
             [0.0, 6e7 * y[1], 0.0]]
-
-
-MU = 1000.0
-
-
-def vdp(t, y):
-    return [y[1], MU * ((1 - y[0] ** 2) * y[1] - y[0])]
-
-
-def vdp_jac(t, y):
-    return [[0.0, 1.0], [MU * (-2 * y[0] * y[1] - 1), MU * (1 - y[0] ** 2)]]
 
 
 def solve(rhs, jac, y0, t_end, method, rtol, atol):
@@ -68,9 +57,7 @@ def main():
     todo = [
         ("robertson_40", robertson, robertson_jac, [1.0, 0.0, 0.0], 40.0, [1e-20, 1e-24, 1e-20]),
         ("robertson_1e5", robertson, robertson_jac, [1.0, 0.0, 0.0], 1e5, [1e-20, 1e-24, 1e-20]),
-        ("vdp_mu1000", vdp, vdp_jac, [2.0, 0.0], 3000.0, [1e-14, 1e-14]),
     ]
-    # written after every case: Van der Pol at 1e-13 takes long in Python
     for args in todo:
         out["cases"].append(case(*args))
         path.write_text(json.dumps(out, indent=1) + "\n")
