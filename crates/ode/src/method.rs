@@ -54,6 +54,8 @@ impl Method {
 /// row-major for RADAU5 (finite differences when `None`; ignored by the explicit pairs).
 ///
 /// Book: §4.11.
+// one stepper per run, moved never: boxing either variant would only add an indirection
+#[allow(clippy::large_enum_variant)]
 pub enum AnyStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> {
     /// An explicit pair.
     Explicit(Stepper<S, F>),

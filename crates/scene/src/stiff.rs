@@ -154,6 +154,9 @@ impl Scene {
 /// largest; `None` when every eigenvalue is zero or the decomposition does not give finite
 /// values.
 fn spectrum(j: &DMatrix<f64>) -> Option<(f64, f64)> {
+    if j.nrows() == 0 || j.nrows() != j.ncols() {
+        return None; // nothing moves (every joint a weld)
+    }
     let ev = j.clone().complex_eigenvalues();
     let mags: Vec<f64> = ev.iter().map(|z| z.norm()).collect();
     if mags.iter().any(|m| !m.is_finite()) {
