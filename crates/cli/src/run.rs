@@ -127,6 +127,7 @@ pub(crate) fn print_summary(out: &mut impl Write, scene: &Scene, run: &Run) -> s
         w.restarts,
         w.wall_seconds
     )?;
+    writeln!(out, "  method             {}", run.method)?;
     if let Some(s) = &run.stop {
         writeln!(out, "INCOMPLETE (requested t = 0 … {} s): {}", scene.spec().duration, s.message)?;
     }

@@ -124,6 +124,64 @@ pub enum OdeError {
         /// The required length.
         expected: usize,
     },
+    /// The iteration matrices of an implicit Runge–Kutta step (RADAU5's (γ/h)I − J and
+    /// ((α + iβ)/h)I − J) are singular at this step size.
+    #[error(
+        "iteration matrix of the implicit step from t = {t} (h = {h:e}) is singular at the state {}; the Jacobian has an eigenvalue at γ/h: change the step size bounds or check the model",
+        show_state(.state)
+    )]
+    SingularIterationMatrix {
+        /// Start of the step.
+        t: f64,
+        /// Step size.
+        h: f64,
+        /// State at the start of the step.
+        state: Vec<f64>,
+    },
+    /// Newton's method for the implicit stages kept failing (diverging, stalling or meeting
+    /// a non-finite right-hand side) until the step reached the floor of round-off or
+    /// ten consecutive failures.
+    #[error(
+        "Newton iteration of the implicit step from t = {t} did not converge even at h = {h:e} ({failures} consecutive failures) at the state {}; the right-hand side may be discontinuous or its Jacobian wrong",
+        show_state(.state)
+    )]
+    NewtonStalled {
+        /// Start of the step.
+        t: f64,
+        /// The last step size tried.
+        h: f64,
+        /// Consecutive failed Newton iterations.
+        failures: usize,
+        /// State at the start of the step.
+        state: Vec<f64>,
+    },
+    /// The Jacobian ∂f/∂y has a NaN or infinite entry.
+    #[error(
+        "Jacobian ∂f/∂y has {value} at row {row}, column {col} at t = {t}, state {}; every entry must be finite",
+        show_state(.state)
+    )]
+    JacobianNotFinite {
+        /// Time of the evaluation.
+        t: f64,
+        /// Row (component of f).
+        row: usize,
+        /// Column (component of y).
+        col: usize,
+        /// The offending value.
+        value: f64,
+        /// The state at which it was evaluated.
+        state: Vec<f64>,
+    },
+}
+
+/// The first components of a state, for messages (at most 8, then the count of the rest).
+fn show_state(y: &[f64]) -> String {
+    let head: Vec<String> = y.iter().take(8).map(|v| format!("{v}")).collect();
+    if y.len() > 8 {
+        format!("[{}, … {} more]", head.join(", "), y.len() - 8)
+    } else {
+        format!("[{}]", head.join(", "))
+    }
 }
 
 /// Checks that `h` is positive and finite.

@@ -3,6 +3,9 @@
 //! * explicit Runge–Kutta from Butcher tableaux ([`EULER`], [`HEUN`], [`RK4`]) and the
 //!   adaptive Dormand–Prince pairs ([`Adaptive::dopri5`], [`Adaptive::dop853`]) with error
 //!   control, dense output and event location;
+//! * the stiff integrator RADAU5 ([`Radau5`]: Radau IIA 5 with Hairer–Wanner's control,
+//!   exact or finite-difference Jacobians, dense output and events), and [`AnyStepper`] to
+//!   drive either kind step by step;
 //! * Gauss–Legendre collocation ([`GaussLegendre`]: implicit midpoint, 2 and 3 stages, Newton
 //!   with faer) and Störmer–Verlet ([`stormer_verlet`]);
 //! * Lie-group methods for attitude ([`LieMethod`]: exponential Euler, RKMK4,
@@ -45,6 +48,7 @@ pub mod explicit;
 pub mod harness;
 pub mod implicit;
 pub mod lie;
+mod method;
 mod state;
 mod work;
 
@@ -53,8 +57,9 @@ pub use error::OdeError;
 pub use explicit::{
     Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, HEUN, Pair, RK4, Solution, Tableau,
 };
-pub use implicit::{GaussLegendre, stormer_verlet};
+pub use implicit::{GaussLegendre, Radau5, RadauStepper, stormer_verlet};
 pub use lie::{LieGroup, LieMethod, integrate_lie, quaternion_exact_step};
+pub use method::{AnyStepper, Method};
 pub use state::State;
 pub use work::Work;
 

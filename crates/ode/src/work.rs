@@ -20,6 +20,9 @@ pub struct Work {
     pub factorizations: usize,
     /// Newton iterations in total (implicit methods).
     pub newton_iterations: usize,
+    /// Of `fevals`, those spent on finite-difference Jacobians (0 when the Jacobian is
+    /// exact: supplied by the caller or from dual numbers).
+    pub fd_jacobian_fevals: usize,
     /// Wall-clock time of the run.
     pub wall: Duration,
 }
@@ -36,6 +39,10 @@ impl core::fmt::Display for Work {
             self.factorizations,
             self.newton_iterations,
             self.wall.as_secs_f64() * 1e3
-        )
+        )?;
+        if self.fd_jacobian_fevals > 0 {
+            write!(f, " (Jacobians by finite differences: {} of the f-evals)", self.fd_jacobian_fevals)?;
+        }
+        Ok(())
     }
 }

@@ -43,6 +43,7 @@ mod rhs;
 mod run;
 mod source;
 pub mod spec;
+mod stiff;
 mod trim;
 
 pub use aero::AIRCRAFT;
@@ -64,12 +65,13 @@ pub use run::{
 };
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
+pub use stiff::{MethodChoice, RADAU5_TOL_FACTOR, STIFF_RATIO, STIFF_RHO_DURATION};
 pub use trim::{TRIM_TOL, TrimReport};
 
 use build::{Built, Src, build};
 use forces::Ground;
 use outputs::Output;
-use vectrix_ode::explicit::Adaptive;
+use vectrix_ode::Method;
 
 use vectrix_dynamics::Model;
 
@@ -141,7 +143,9 @@ pub struct Scene {
     pub(crate) order: Vec<usize>,
     pub(crate) ground: Ground,
     pub(crate) needs: Needs,
-    pub(crate) solver: Adaptive,
+    pub(crate) solver: Method,
+    /// The integrator chosen and why (named, accuracy table, or the stiffness test).
+    pub(crate) choice: MethodChoice,
     pub(crate) outputs: Vec<Output>,
     invariants: Vec<Invariant>,
     /// The length scale of the constraint tolerances (see [`CONSTRAINT_TOL`]).
@@ -265,7 +269,7 @@ impl Scene {
     fn build_plain(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
         let built = build(&spec, src)?;
         let order = kin::tree_order(&built.bodies);
-        let solver = run::solver(&spec, src)?;
+        let (solver, named) = run::solver(&spec, src)?;
         let outputs = outputs::parse(&spec, &built, src)?;
         run::check_bounds(&spec, &built, &outputs, src)?;
         let invariants = invariants::derive(&built);
@@ -317,6 +321,12 @@ impl Scene {
             ground: Ground::new(),
             needs,
             solver,
+            choice: MethodChoice {
+                name: solver.name(),
+                rtol: solver.tolerances().0,
+                jacobian: "none",
+                reason: String::new(),
+            },
             outputs,
             invariants,
             loop_scale: 1.0,
@@ -330,6 +340,16 @@ impl Scene {
         scene.assemble(src)?;
         scene.check_start(src)?;
         scene.check_contacts_start(src)?;
+        match named {
+            Some(reason) => {
+                scene.choice.reason = reason;
+                if matches!(scene.solver, Method::Radau5(_)) {
+                    scene.choice.jacobian =
+                        if scene.tree_only() { "exact (dual numbers)" } else { "finite differences" };
+                }
+            }
+            None => scene.choose_method(),
+        }
         Ok(scene)
     }
 
@@ -415,6 +435,14 @@ impl Scene {
     /// The invariants that the declared effects imply (whether or not they are checked).
     pub fn invariants(&self) -> &[Invariant] {
         &self.invariants
+    }
+
+    /// The integrator the scene runs and why: named by `method`, or picked from `accuracy` by
+    /// the accuracy table and the stiffness test of the Jacobian at t = 0 (RADAU5 when stiff).
+    ///
+    /// Book: §4.11; HW §IV.1.
+    pub fn method_choice(&self) -> &MethodChoice {
+        &self.choice
     }
 
     /// The initial state y₀ = (q₀, v₀).

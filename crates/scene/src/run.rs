@@ -12,8 +12,7 @@ use std::time::Instant;
 
 use nalgebra::Vector3;
 use serde::Serialize;
-use vectrix_ode::explicit::{Adaptive, Stepper};
-use vectrix_ode::{Accuracy, OdeError};
+use vectrix_ode::{AnyStepper, Method, OdeError};
 use vectrix_units::{Dimension, UnitSystem};
 
 use super::build::Src;
@@ -43,35 +42,19 @@ pub const MAX_TRUSTED_DRIFT: f64 = 1e-3;
 /// angle has no digit left below a turn ([`StopReason::StateOutOfRange`]).
 pub const MAX_TRUSTED_STATE: f64 = 1e154;
 
-/// The solver a scene asks for: `method`, else `accuracy`, else `Accuracy::RelTol(1e-6)`; with
-/// the scene's step budget.
-pub(crate) fn solver(spec: &SceneSpec, src: &Src) -> Result<Adaptive, SceneError> {
-    let a = if let Some(m) = &spec.method {
-        if !(m.rtol > 0.0 && m.rtol < 1.0) {
-            return Err(src.invalid("method.rtol", format!("rtol = {}; valid: 0 < rtol < 1", m.rtol)));
-        }
-        let a = match m.name.as_str() {
-            "dopri5" => Adaptive::dopri5(),
-            "dop853" => Adaptive::dop853(),
-            n => {
-                return Err(
-                    src.invalid("method.name", format!("unknown method `{n}`; valid: dopri5, dop853"))
-                );
-            }
-        };
-        a.rtol(m.rtol).atol(m.rtol)
-    } else {
-        let tol = spec.accuracy.unwrap_or(1e-6);
-        if !(tol > 0.0 && tol < 1.0) {
-            return Err(src.invalid("accuracy", format!("accuracy = {tol}; valid: 0 < accuracy < 1")));
-        }
-        Accuracy::RelTol(tol).solver().map_err(|e| src.invalid("accuracy", e.to_string()))?
+/// The solver a scene asks for: `method` (with the reason, "named"), else the explicit method
+/// of the accuracy table for `accuracy` (default 1e-6; the stiffness test may switch it to
+/// RADAU5 once the scene is built, `Scene::choose_method`); with the scene's step budget.
+pub(crate) fn solver(spec: &SceneSpec, src: &Src) -> Result<(Method, Option<String>), SceneError> {
+    let (a, named) = match super::stiff::named(spec, src)? {
+        Some((m, why)) => (m, Some(why)),
+        None => (super::stiff::from_accuracy(spec, src)?, None),
     };
     let max_steps = spec.max_steps.unwrap_or(DEFAULT_MAX_STEPS);
     if max_steps == 0 {
         return Err(src.invalid("max_steps", "max_steps = 0; valid: ≥ 1"));
     }
-    Ok(a.max_steps(max_steps))
+    Ok((a.with_max_steps(max_steps), named))
 }
 
 /// Checks the run's sizes: duration, samples (and samples × columns), wall-time budget.
@@ -283,6 +266,8 @@ pub struct Run {
     /// For scenes with loops or rolling contacts: the largest violation the integrator left at
     /// a step end before it was projected away (the drift that projection corrects).
     pub max_constraint_drift: Option<ConstraintViolation>,
+    /// The integrator used and why (named, accuracy table, or the stiffness test).
+    pub method: super::MethodChoice,
     /// The contact events in time order (impacts, comes to rest, lift-off), at most
     /// [`super::MAX_CONTACT_EVENTS`] (impacts beyond are counted in [`RunWork::impacts`]).
     pub contacts: Vec<ContactEvent>,
@@ -521,6 +506,7 @@ impl Scene {
             max_constraint_violation: None,
             max_constraint_drift: None,
             contacts: Vec::new(),
+            method: self.choice.clone(),
         };
         let constrained = self.has_constraints();
         let mut sample_projection = ProjectScratch::default();
@@ -613,7 +599,10 @@ impl Scene {
             let t = match &e {
                 OdeError::RhsNotFinite { t, .. }
                 | OdeError::StepSizeUnderflow { t, .. }
-                | OdeError::NonFiniteState { t, .. } => *t,
+                | OdeError::NonFiniteState { t, .. }
+                | OdeError::SingularIterationMatrix { t, .. }
+                | OdeError::NewtonStalled { t, .. }
+                | OdeError::JacobianNotFinite { t, .. } => *t,
                 _ => 0.0,
             };
             fail(t, failure.borrow_mut().take().unwrap_or_else(|| e.to_string()))
@@ -621,7 +610,24 @@ impl Scene {
         let mut stops = breakpoints(spec);
         stops.push(duration);
         let mut stop_at = 0;
-        let mut st = Stepper::new(&self.solver, f, 0.0, y0, stops[0]).map_err(ode_err)?;
+        // implicit steps: ∂f/∂y from dual numbers for a tree; otherwise RADAU5's own finite
+        // differences (through the same f, so they see the resting contacts too)
+        let exact = matches!(self.solver, Method::Radau5(_)) && self.tree_only() && !self.needs.impacts;
+        let jac = exact.then_some(|t: f64, y: &Vec<f64>, out: &mut [f64]| match self.jacobian(t, y) {
+            Ok((j, _)) => {
+                let n = y.len();
+                for r in 0..n {
+                    for c in 0..n {
+                        out[r * n + c] = j[(r, c)];
+                    }
+                }
+            }
+            Err(e) => {
+                failure.borrow_mut().get_or_insert(e.to_string());
+                out.fill(f64::NAN);
+            }
+        });
+        let mut st = AnyStepper::new(&self.solver, f, jac, 0.0, y0, stops[0]).map_err(ode_err)?;
         let mut geo =
             if self.needs.impacts { self.gaps(st.y()).map_err(|e| fail(0.0, e))? } else { Vec::new() };
         let mut last_check = 0usize;
@@ -751,12 +757,12 @@ impl Scene {
             let mut stop = None;
             if ctl.cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
                 stop = Some((StopReason::Interrupted, format!("interrupted at t = {t} s of {duration} s")));
-            } else if steps >= last_check + 64 || steps + 1 >= self.solver.max_steps {
+            } else if steps >= last_check + 64 || steps + 1 >= self.solver.max_steps() {
                 last_check = steps;
                 let wall = start.elapsed().as_secs_f64();
                 let pace = duration / t.max(f64::MIN_POSITIVE);
-                let (max_steps, s) = (self.solver.max_steps as f64, steps as f64);
-                if steps + 1 >= self.solver.max_steps
+                let (max_steps, s) = (self.solver.max_steps() as f64, steps as f64);
+                if steps + 1 >= self.solver.max_steps()
                     || (steps >= 1024 && s * pace > FAIL_FAST_FACTOR * max_steps)
                 {
                     stop = Some((
@@ -766,7 +772,7 @@ impl Scene {
                              needs about {:.1e} steps, more than max_steps = {}; valid: raise max_steps, loosen \
                              accuracy or shorten duration",
                             s * pace,
-                            self.solver.max_steps
+                            self.solver.max_steps()
                         ),
                     ));
                 } else if wall >= max_wall || (wall >= 0.5 && wall * pace > FAIL_FAST_FACTOR * max_wall) {

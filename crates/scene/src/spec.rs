@@ -103,7 +103,7 @@ pub(crate) fn is_yes(b: &bool) -> bool {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MethodSpec {
-    /// `dopri5` or `dop853`.
+    /// `dopri5`, `dop853` or `radau5` (stiff scenes).
     pub name: String,
     /// Relative (= absolute) local tolerance.
     pub rtol: f64,

@@ -187,7 +187,7 @@ impl Adaptive {
             // events: sign changes of g over [t, t_new], located on the dense output
             if let Some(d) = &dense
                 && !events.is_empty()
-                && let Some(t_stop) = self.find_events(events, &mut g_prev, d, t, t_new, st.y(), &mut sol)
+                && let Some(t_stop) = find_events(events, &mut g_prev, d, t, t_new, st.y(), &mut sol)
             {
                 sol.t.push(t_stop);
                 sol.y.push(d.eval(t_stop));
@@ -209,39 +209,39 @@ impl Adaptive {
         sol.work.wall = start.elapsed();
         Ok(sol)
     }
+}
 
-    /// Records the events of one accepted step; returns the time of the first terminal one.
-    #[allow(clippy::too_many_arguments)]
-    fn find_events<S: State>(
-        &self,
-        events: &mut [Event<'_, S>],
-        g_prev: &mut [f64],
-        d: &DenseStep<S>,
-        t: f64,
-        t_new: f64,
-        y1: &S,
-        sol: &mut Solution<S>,
-    ) -> Option<f64> {
-        let mut hits = Vec::new();
-        for (i, e) in events.iter_mut().enumerate() {
-            let g1 = (e.g)(t_new, y1);
-            if let Some(rising) = crosses(e.direction, g_prev[i], g1) {
-                let tz = locate(&mut *e.g, d, (t, g_prev[i]), (t_new, g1));
-                hits.push((tz, i, rising, e.terminal));
-            }
-            g_prev[i] = g1;
+/// Records the events of one accepted step [t, t_new] (zeros of g located on its dense
+/// output `d`); returns the time of the first terminal one.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn find_events<S: State>(
+    events: &mut [Event<'_, S>],
+    g_prev: &mut [f64],
+    d: &DenseStep<S>,
+    t: f64,
+    t_new: f64,
+    y1: &S,
+    sol: &mut Solution<S>,
+) -> Option<f64> {
+    let mut hits = Vec::new();
+    for (i, e) in events.iter_mut().enumerate() {
+        let g1 = (e.g)(t_new, y1);
+        if let Some(rising) = crosses(e.direction, g_prev[i], g1) {
+            let tz = locate(&mut *e.g, d, (t, g_prev[i]), (t_new, g1));
+            hits.push((tz, i, rising, e.terminal));
         }
-        hits.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut stop = None;
-        for (tz, index, rising, terminal) in hits {
-            sol.events.push(EventHit { index, t: tz, y: d.eval(tz), rising });
-            if terminal {
-                stop = Some(tz);
-                break;
-            }
-        }
-        stop
+        g_prev[i] = g1;
     }
+    hits.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut stop = None;
+    for (tz, index, rising, terminal) in hits {
+        sol.events.push(EventHit { index, t: tz, y: d.eval(tz), rising });
+        if terminal {
+            stop = Some(tz);
+            break;
+        }
+    }
+    stop
 }
 
 /// √(Σ xᵢ²/n), the plain sum of squares when it is finite (the same bits as always), else

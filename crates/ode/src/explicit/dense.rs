@@ -4,9 +4,13 @@ use crate::state::State;
 
 /// The interpolant of one accepted step [t, t + h]: Hairer's form
 /// y(t + θh) = c₀ + θ(c₁ + (1−θ)(c₂ + θ(c₃ + (1−θ) q(θ)))), with q ≡ c₄ for DOPRI5 (order 4)
-/// and q(θ) = c₄ + θ(c₅ + (1−θ)(c₆ + θc₇)) for DOP853 (order 7).
+/// and q(θ) = c₄ + θ(c₅ + (1−θ)(c₆ + θc₇)) for DOP853 (order 7); for Radau IIA 5 the
+/// collocation polynomial y(t + θh) = c₀ + s(c₁ + (s − c₂ + 1)(c₂' + (s − c₁ + 1)c₃)) with
+/// s = θ − 1 through the step's end and its three stages (order 3 uniformly, exact at the
+/// collocation points).
 ///
-/// Book: §4.11; HNW §II.6 (dense output), `contd5`/`contd8` of `dopri5.f`/`dop853.f`.
+/// Book: §4.11; HNW §II.6 (dense output), `contd5`/`contd8` of `dopri5.f`/`dop853.f`; HW
+/// §IV.8 and `contr5` of `radau5.f` (Radau IIA collocation polynomial).
 #[derive(Debug, Clone)]
 pub struct DenseStep<S> {
     /// Start of the step.
@@ -14,16 +18,34 @@ pub struct DenseStep<S> {
     /// Step size.
     pub h: f64,
     pub(crate) c: Vec<S>,
+    pub(crate) form: Form,
+}
+
+/// Which polynomial the coefficients of a [`DenseStep`] describe.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Form {
+    /// Hairer's Dormand–Prince form (5 coefficients for DOPRI5, 8 for DOP853).
+    DormandPrince,
+    /// RADAU5's collocation polynomial about the step's end (4 coefficients).
+    Radau,
 }
 
 impl<S: State> DenseStep<S> {
     /// The interpolated state at `t` (θ = (t − t₀)/h, meant for θ ∈ [0, 1]).
     pub fn eval(&self, t: f64) -> S {
         let s = (t - self.t) / self.h;
-        let s1 = 1.0 - s;
         let mut out = self.c[0].clone();
         let o = out.as_mut_slice();
         let c: Vec<&[f64]> = self.c.iter().map(State::as_slice).collect();
+        if self.form == Form::Radau {
+            let (c1m1, c2m1) = crate::implicit::radau_nodes_minus_one();
+            let s = s - 1.0;
+            for (i, oi) in o.iter_mut().enumerate() {
+                *oi += s * (c[1][i] + (s - c2m1) * (c[2][i] + (s - c1m1) * c[3][i]));
+            }
+            return out;
+        }
+        let s1 = 1.0 - s;
         for (i, oi) in o.iter_mut().enumerate() {
             let q =
                 if c.len() == 8 { c[4][i] + s * (c[5][i] + s1 * (c[6][i] + s * c[7][i])) } else { c[4][i] };

@@ -1,6 +1,6 @@
 //! One step of DOP853 (Dormand & Prince 8(5,3)) with its error estimate and dense output.
 
-use super::dense::{DenseStep, hermite_part, weighted};
+use super::dense::{DenseStep, Form, hermite_part, weighted};
 use super::dop853_coefficients::{A, B, BHH, C, D, E};
 use crate::state::{State, check_stages, combine, combine_into, eval, eval_unchecked};
 use crate::{OdeError, Work};
@@ -98,5 +98,5 @@ pub(crate) fn dense<S: State, F: FnMut(f64, &S) -> S>(
     for d in &D {
         c.push(weighted(y, h, d, k));
     }
-    Ok(DenseStep { t, h, c })
+    Ok(DenseStep { t, h, c, form: Form::DormandPrince })
 }

@@ -1,6 +1,6 @@
 //! One step of DOPRI5 (Dormand & Prince 5(4)) with its error estimate and dense output.
 
-use super::dense::{DenseStep, hermite_part, weighted};
+use super::dense::{DenseStep, Form, hermite_part, weighted};
 use super::tableau::{DOPRI5, DOPRI5_D, DOPRI5_E};
 use crate::state::{State, check_stages, eval_unchecked};
 use crate::{OdeError, Work};
@@ -73,5 +73,5 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
 pub(crate) fn dense<S: State>(t: f64, y: &S, y1: &S, h: f64, k: &[S]) -> DenseStep<S> {
     let [c0, c1, c2, c3] = hermite_part(y, y1, &k[0], &k[6], h);
     let c4 = weighted(y, h, &DOPRI5_D, k);
-    DenseStep { t, h, c: vec![c0, c1, c2, c3, c4] }
+    DenseStep { t, h, c: vec![c0, c1, c2, c3, c4], form: Form::DormandPrince }
 }

@@ -1,10 +1,20 @@
 //! Implicit and symplectic methods: Gauss–Legendre collocation (implicit midpoint, 2 and
-//! 3 stages) and Störmer–Verlet.
+//! 3 stages), Störmer–Verlet, and the adaptive stiff integrator Radau IIA 5 (RADAU5).
 //!
-//! Book: §4.11; HLW ch. II, IV, VI.
+//! Book: §4.11; HLW ch. II, IV, VI; HW §IV.8.
 
 mod gauss;
+mod radau5;
+mod radau_core;
+mod radau_stepper;
 mod verlet;
 
 pub use gauss::GaussLegendre;
+pub use radau_stepper::{NoJacobian, RadauStepper};
+pub use radau5::Radau5;
 pub use verlet::stormer_verlet;
+
+/// (c₁ − 1, c₂ − 1) of Radau IIA 5, for its dense output.
+pub(crate) fn radau_nodes_minus_one() -> (f64, f64) {
+    (radau_core::C1 - 1.0, radau_core::C2 - 1.0)
+}

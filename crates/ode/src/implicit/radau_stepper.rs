@@ -1,0 +1,481 @@
+//! RADAU5 one accepted step at a time: the step-size and Jacobian/factorization control of
+//! Hairer & Wanner's `radau5.f` (`RADCOR`) around the linear algebra of `radau_core`.
+//!
+//! Book: §4.11; HW §IV.8 (implementation of implicit Runge–Kutta methods).
+
+use faer::Mat;
+
+use super::radau_core::{C1, C2, Factors, T_MAT, TI_MAT, estimate, finite_difference, rms_scaled, transform};
+use super::radau5::Radau5;
+use crate::error::{check_interval, check_step, check_tol};
+use crate::explicit::DenseStep;
+
+#[path = "radau_restart.rs"]
+mod restart;
+use crate::state::{State, check_state, eval};
+use crate::{OdeError, Work};
+
+/// Jacobians are kept while the Newton contraction stays below this (`THET` of `radau5.f`).
+const THET: f64 = 1e-3;
+/// Safety factor of the step-size controller.
+const SAFE: f64 = 0.9;
+/// Bounds of h_new/h: [1/FACL, 1/FACR] = [0.2, 8].
+const FACL: f64 = 5.0;
+const FACR: f64 = 0.125;
+/// Consecutive failed Newton iterations (or singular matrices) before giving up.
+const MAX_FAILURES: usize = 10;
+
+/// The Jacobian closure's type when none is given (finite differences are used instead).
+pub type NoJacobian<S> = fn(f64, &S, &mut [f64]);
+
+/// A RADAU5 integration in progress, with the interface of
+/// [`Stepper`](crate::explicit::Stepper): [`RadauStepper::step`] takes one accepted step,
+/// [`RadauStepper::dense`] gives its collocation polynomial, [`RadauStepper::restart`]
+/// continues after a jump. `J` writes ∂f/∂y row-major (entry (i, j) at i·n + j); without
+/// one the Jacobian is taken by finite differences, counted in [`Work::fd_jacobian_fevals`].
+///
+/// Book: §4.11; HW §IV.8.
+pub struct RadauStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64]) = NoJacobian<S>> {
+    cfg: Radau5,
+    f: F,
+    jac_fn: Option<J>,
+    t: f64,
+    y: S,
+    t_end: f64,
+    h: f64,
+    h_max: f64,
+    /// Tolerances transformed as in `radau5.f`: rtol' = 0.1·rtol^{2/3}, atol' = rtol'·atol/rtol.
+    tol: (f64, f64),
+    /// Newton stopping tolerance.
+    fnewt: f64,
+    f_now: Vec<f64>,
+    scal: Vec<f64>,
+    jm: Mat<f64>,
+    /// `true` when `jm` was evaluated at the current (t, y) (`CALJAC`).
+    jac_fresh: bool,
+    need_jac: bool,
+    lu: Option<Factors>,
+    /// Collocation coefficients of the last accepted step and its size (starting values).
+    cont: [Vec<f64>; 3],
+    hold: f64,
+    first: bool,
+    reject: bool,
+    faccon: f64,
+    theta: f64,
+    /// Gustafsson's predictive controller: last accepted h and error, and accepted steps.
+    hacc: f64,
+    erracc: f64,
+    naccpt: usize,
+    prev: Option<(f64, S)>,
+    dense: Option<DenseStep<S>>,
+    work: Work,
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug
+    for RadauStepper<S, F, J>
+{
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("RadauStepper")
+            .field("t", &self.t)
+            .field("h", &self.h)
+            .field("work", &self.work)
+            .finish()
+    }
+}
+
+/// The outcome of one Newton solve.
+enum Newton {
+    Converged(usize),
+    /// Converging too slowly for this h: retry with h·factor.
+    Slow(f64),
+    /// Diverging, iteration cap, or a non-finite f at an iterate.
+    Failed(Option<OdeError>),
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepper<S, F, J> {
+    /// Starts integrating y′ = f(t, y), y(t0) = y0 toward `t_end` with the tolerances and
+    /// limits of `cfg` and the Jacobian `jac` (finite differences when `None`).
+    ///
+    /// # Errors
+    /// [`OdeError::InvalidInterval`], [`OdeError::NonPositiveTolerance`] (also for
+    /// `max_newton` = 0), [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`],
+    /// [`OdeError::TooManySteps`] when h_max cannot cover the interval, and
+    /// [`OdeError::RhsNotFinite`] or [`OdeError::DimensionMismatch`] from f(t0, y0).
+    pub fn new(cfg: &Radau5, mut f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+        check_interval(t0, t_end)?;
+        check_tol("rtol", cfg.rtol)?;
+        check_tol("atol", cfg.atol)?;
+        if cfg.max_newton == 0 {
+            return Err(OdeError::NonPositiveTolerance { name: "max_newton", value: 0.0 });
+        }
+        let h_max = cfg.h_max.unwrap_or(t_end - t0);
+        check_step(h_max)?;
+        if (t_end - t0) / h_max > cfg.max_steps as f64 {
+            return Err(OdeError::TooManySteps { t: t0, max_steps: cfg.max_steps });
+        }
+        if let Some(h0) = cfg.h0 {
+            check_step(h0)?;
+        }
+        check_state(t0, &y0)?;
+        let mut work = Work::default();
+        let f_now = eval(&mut f, t0, &y0, t0, 1, &mut work.fevals)?.as_slice().to_vec();
+        let rtol = 0.1 * cfg.rtol.powf(2.0 / 3.0);
+        let tol = (rtol, rtol * cfg.atol / cfg.rtol);
+        let n = y0.dim();
+        let mut st = Self {
+            cfg: *cfg,
+            f,
+            jac_fn: jac,
+            t: t0,
+            t_end,
+            h: cfg.h0.unwrap_or(1e-6).min(h_max),
+            h_max,
+            tol,
+            fnewt: (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt())),
+            f_now,
+            scal: vec![0.0; n],
+            jm: Mat::zeros(n, n),
+            jac_fresh: false,
+            need_jac: true,
+            lu: None,
+            cont: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
+            hold: 0.0,
+            first: true,
+            reject: false,
+            faccon: 1.0,
+            theta: THET,
+            hacc: 0.0,
+            erracc: 1e-2,
+            naccpt: 0,
+            prev: None,
+            dense: None,
+            work,
+            y: y0,
+        };
+        st.update_scal();
+        Ok(st)
+    }
+
+    fn update_scal(&mut self) {
+        let (rtol, atol) = self.tol;
+        for (s, y) in self.scal.iter_mut().zip(self.y.as_slice()) {
+            *s = atol + rtol * y.abs();
+        }
+    }
+
+    /// The current time (the end of the last accepted step).
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+    /// The current state.
+    pub fn y(&self) -> &S {
+        &self.y
+    }
+    /// The start of the last accepted step (`None` right after [`RadauStepper::new`] or a restart).
+    pub fn step_start(&self) -> Option<f64> {
+        self.prev.as_ref().map(|p| p.0)
+    }
+    /// `true` once the end time has been reached.
+    pub fn done(&self) -> bool {
+        self.t >= self.t_end
+    }
+    /// The work so far (wall time is not measured here).
+    pub fn work(&self) -> Work {
+        self.work
+    }
+    /// The step size the controller proposes next.
+    pub fn proposed_step(&self) -> f64 {
+        self.h
+    }
+    /// The end time.
+    pub fn end(&self) -> f64 {
+        self.t_end
+    }
+    /// `true` when the Jacobian is supplied (exact), `false` for finite differences.
+    pub fn exact_jacobian(&self) -> bool {
+        self.jac_fn.is_some()
+    }
+
+    /// J = ∂f/∂y at the current point, refused if any entry is not finite.
+    fn compute_jacobian(&mut self) -> Result<(), OdeError> {
+        let n = self.y.dim();
+        self.work.jacobians += 1;
+        match self.jac_fn.as_mut() {
+            Some(j) => {
+                let mut buf = vec![f64::NAN; n * n];
+                j(self.t, &self.y, &mut buf);
+                for r in 0..n {
+                    for c in 0..n {
+                        self.jm[(r, c)] = buf[r * n + c];
+                    }
+                }
+            }
+            None => {
+                finite_difference(&mut self.f, self.t, &self.y, &self.f_now, &mut self.jm, &mut self.work)
+            }
+        }
+        for c in 0..n {
+            for r in 0..n {
+                let value = self.jm[(r, c)];
+                if !value.is_finite() {
+                    return Err(OdeError::JacobianNotFinite {
+                        t: self.t,
+                        row: r,
+                        col: c,
+                        value,
+                        state: self.y.as_slice().to_vec(),
+                    });
+                }
+            }
+        }
+        self.jac_fresh = true;
+        self.need_jac = false;
+        self.lu = None;
+        Ok(())
+    }
+
+    /// Takes one accepted step (rejected attempts are retried inside, smaller); the last step
+    /// lands exactly on the end time. Does nothing when [`RadauStepper::done`].
+    ///
+    /// # Errors
+    /// [`OdeError::TooManySteps`], [`OdeError::StepSizeUnderflow`] (error test failing down
+    /// to the round-off floor), [`OdeError::NewtonStalled`] (Newton failing down to the floor
+    /// or ten times in a row), [`OdeError::SingularIterationMatrix`] (singular ten times in a
+    /// row), [`OdeError::JacobianNotFinite`], [`OdeError::RhsNotFinite`] at an accepted point.
+    pub fn step(&mut self) -> Result<(), OdeError> {
+        if self.done() {
+            return Ok(());
+        }
+        let (mut newton_failures, mut singular) = (0usize, 0usize);
+        let mut last_error: Option<OdeError> = None;
+        loop {
+            if self.work.accepted + self.work.rejected >= self.cfg.max_steps {
+                return Err(OdeError::TooManySteps { t: self.t, max_steps: self.cfg.max_steps });
+            }
+            let t = self.t;
+            self.h = self.h.min(self.h_max);
+            let last = t + 1.0001 * self.h >= self.t_end;
+            if last {
+                self.h = self.t_end - t;
+            }
+            let h = self.h;
+            if 0.1 * h <= t.abs() * f64::EPSILON || h <= f64::MIN_POSITIVE {
+                let state = self.y.as_slice().to_vec();
+                return Err(if singular > 0 {
+                    OdeError::SingularIterationMatrix { t, h, state }
+                } else if newton_failures > 0 {
+                    last_error.unwrap_or(OdeError::NewtonStalled { t, h, failures: newton_failures, state })
+                } else {
+                    OdeError::StepSizeUnderflow { t, h }
+                });
+            }
+            if self.need_jac {
+                self.compute_jacobian()?;
+            }
+            if self.lu.as_ref().is_none_or(|l| l.h != h) {
+                self.work.factorizations += 1;
+                self.lu = Factors::new(&self.jm, h);
+                if self.lu.is_none() {
+                    singular += 1;
+                    if singular >= MAX_FAILURES {
+                        return Err(OdeError::SingularIterationMatrix {
+                            t,
+                            h,
+                            state: self.y.as_slice().to_vec(),
+                        });
+                    }
+                    self.h *= 0.5;
+                    self.reject = true;
+                    continue;
+                }
+            }
+            let mut z = self.starting_values(h);
+            let mut w = [vec![0.0; z[0].len()], vec![0.0; z[0].len()], vec![0.0; z[0].len()]];
+            let zr = [&z[0][..], &z[1][..], &z[2][..]];
+            let [w1, w2, w3] = &mut w;
+            transform(&TI_MAT, zr, [w1, w2, w3]);
+            match self.newton(h, &mut z, &mut w) {
+                Newton::Converged(newt) => {
+                    if self.finish_step(h, last, newt, &z)? {
+                        return Ok(());
+                    }
+                }
+                Newton::Slow(fac) => {
+                    self.h *= fac;
+                    self.reject = true;
+                    self.need_jac |= !self.jac_fresh;
+                }
+                Newton::Failed(e) => {
+                    newton_failures += 1;
+                    if e.is_some() {
+                        last_error = e;
+                    }
+                    if newton_failures >= MAX_FAILURES {
+                        return Err(last_error.unwrap_or(OdeError::NewtonStalled {
+                            t,
+                            h,
+                            failures: newton_failures,
+                            state: self.y.as_slice().to_vec(),
+                        }));
+                    }
+                    self.h *= 0.5;
+                    self.reject = true;
+                    self.need_jac |= !self.jac_fresh;
+                }
+            }
+        }
+    }
+
+    /// Starting stage increments Z: zero on the first step, else the previous step's
+    /// collocation polynomial extrapolated (HW (IV.8.5)).
+    fn starting_values(&self, h: f64) -> [Vec<f64>; 3] {
+        let n = self.y.dim();
+        if self.first {
+            return [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+        }
+        let (c1m1, c2m1) = (C1 - 1.0, C2 - 1.0);
+        let c3q = h / self.hold;
+        let [a1, a2, a3] = &self.cont;
+        let ext = |cq: f64| -> Vec<f64> {
+            (0..n).map(|i| cq * (a1[i] + (cq - c2m1) * (a2[i] + (cq - c1m1) * a3[i]))).collect()
+        };
+        [ext(C1 * c3q), ext(C2 * c3q), ext(c3q)]
+    }
+
+    /// Simplified Newton on the transformed stage equations (HW §IV.8, `RADCOR` label 40):
+    /// at most `max_newton` iterations; the contraction θ decides whether to go on.
+    fn newton(&mut self, h: f64, z: &mut [Vec<f64>; 3], w: &mut [Vec<f64>; 3]) -> Newton {
+        let n = self.y.dim();
+        let nit = self.cfg.max_newton;
+        let nodes = [C1, C2, 1.0];
+        self.faccon = self.faccon.max(f64::EPSILON).powf(0.8);
+        self.theta = THET;
+        let (mut dynold, mut thqold) = (0.0, 0.0);
+        let mut fz = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+        let Some(lu) = self.lu.as_ref() else { return Newton::Failed(None) };
+        for newt in 1..=nit {
+            for k in 0..3 {
+                let mut ys = self.y.clone();
+                for (o, zi) in ys.as_mut_slice().iter_mut().zip(&z[k]) {
+                    *o += zi;
+                }
+                match eval(&mut self.f, self.t + nodes[k] * h, &ys, self.t, k + 1, &mut self.work.fevals) {
+                    Ok(v) => fz[k].copy_from_slice(v.as_slice()),
+                    Err(e) => return Newton::Failed(Some(e)),
+                }
+            }
+            let [z1, z2, z3] = z;
+            transform(&TI_MAT, [&fz[0], &fz[1], &fz[2]], [z1, z2, z3]);
+            lu.solve_newton([z1, z2, z3], [&w[0], &w[1], &w[2]]);
+            self.work.newton_iterations += 1;
+            let dyno = ((0..3).map(|k| rms_scaled(&z[k], &self.scal).powi(2)).sum::<f64>() / 3.0).sqrt();
+            if !dyno.is_finite() {
+                return Newton::Failed(None);
+            }
+            if newt > 1 && newt < nit {
+                let thq = dyno / dynold;
+                self.theta = if newt == 2 { thq } else { (thq * thqold).sqrt() };
+                thqold = thq;
+                if self.theta < 0.99 {
+                    self.faccon = self.theta / (1.0 - self.theta);
+                    let left = (nit - 1 - newt) as i32;
+                    let dyth = self.faccon * dyno * self.theta.powi(left) / self.fnewt;
+                    if dyth >= 1.0 {
+                        let qnewt = dyth.clamp(1e-4, 20.0);
+                        return Newton::Slow(0.8 * qnewt.powf(-1.0 / (4.0 + left as f64)));
+                    }
+                } else {
+                    return Newton::Failed(None);
+                }
+            }
+            dynold = dyno.max(f64::EPSILON);
+            for k in 0..3 {
+                for (wi, zi) in w[k].iter_mut().zip(&z[k]) {
+                    *wi += zi;
+                }
+            }
+            let [z1, z2, z3] = z;
+            transform(&T_MAT, [&w[0], &w[1], &w[2]], [z1, z2, z3]);
+            if self.faccon * dyno <= self.fnewt {
+                return Newton::Converged(newt);
+            }
+        }
+        Newton::Failed(None)
+    }
+
+    /// Error test and step-size choice after a converged Newton solve; on acceptance moves
+    /// to the step's end and returns `true`, on rejection sets the smaller h and returns
+    /// `false`. Gustafsson's predictive controller (HW (IV.8.25)) as `radau5.f` with PRED.
+    fn finish_step(&mut self, h: f64, last: bool, newt: usize, z: &[Vec<f64>; 3]) -> Result<bool, OdeError> {
+        let Some(lu) = self.lu.as_ref() else { return Ok(false) };
+        let err = estimate(
+            &mut self.f,
+            lu,
+            (self.t, &self.y, &self.f_now),
+            [&z[0], &z[1], &z[2]],
+            &self.scal,
+            self.first || self.reject,
+            &mut self.work,
+        )?;
+        let nit = self.cfg.max_newton as f64;
+        let fac = SAFE.min(SAFE * (1.0 + 2.0 * nit) / (newt as f64 + 2.0 * nit));
+        let mut quot = (err.powf(0.25) / fac).clamp(FACR, FACL);
+        let mut hnew = h / quot;
+        if err >= 1.0 {
+            self.reject = true;
+            self.h = if self.first { 0.1 * h } else { hnew };
+            self.work.rejected += 1;
+            self.need_jac |= !self.jac_fresh;
+            return Ok(false);
+        }
+        self.naccpt += 1;
+        if self.naccpt > 1 {
+            let facgus = ((self.hacc / h) * (err * err / self.erracc).powf(0.25) / SAFE).clamp(FACR, FACL);
+            quot = quot.max(facgus);
+            hnew = h / quot;
+        }
+        self.hacc = h;
+        self.erracc = err.max(1e-2);
+        // the step's end and the collocation polynomial through it (`RADCOR` after 'accepted')
+        let n = self.y.dim();
+        let (c1m1, c2m1, c1mc2) = (C1 - 1.0, C2 - 1.0, C1 - C2);
+        let mut y1 = self.y.clone();
+        for (i, o) in y1.as_mut_slice().iter_mut().enumerate() {
+            *o += z[2][i];
+            let (z1, z2, z3) = (z[0][i], z[1][i], z[2][i]);
+            let c1 = (z2 - z3) / c2m1;
+            let ak = (z1 - z2) / c1mc2;
+            let acont3 = (ak - z1 / C1) / C2;
+            let c2 = (ak - c1) / c1m1;
+            self.cont[0][i] = c1;
+            self.cont[1][i] = c2;
+            self.cont[2][i] = c2 - acont3;
+        }
+        let t_new = if last { self.t_end } else { self.t + h };
+        let f1 = eval(&mut self.f, t_new, &y1, self.t, 4, &mut self.work.fevals)?;
+        debug_assert_eq!(f1.dim(), n);
+        self.f_now.copy_from_slice(f1.as_slice());
+        let y0 = std::mem::replace(&mut self.y, y1);
+        self.prev = Some((self.t, y0));
+        self.t = t_new;
+        self.dense = None;
+        self.work.accepted += 1;
+        self.update_scal();
+        self.first = false;
+        self.hold = h;
+        hnew = hnew.min(self.h_max);
+        if self.reject {
+            hnew = hnew.min(h);
+        }
+        self.reject = false;
+        self.jac_fresh = false;
+        let qt = hnew / h;
+        if self.theta <= THET && (1.0..=1.2).contains(&qt) && !last {
+            self.h = h; // same h, same J and LU
+        } else {
+            self.h = hnew;
+            self.need_jac = self.theta > THET;
+        }
+        Ok(true)
+    }
+}

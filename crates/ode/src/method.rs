@@ -1,0 +1,170 @@
+//! One stepping interface over the explicit pairs and RADAU5, so that a caller that drives
+//! the integration itself (scenes: samples, impacts, budgets) can take either.
+
+use crate::explicit::{Adaptive, DenseStep, Stepper};
+use crate::implicit::{Radau5, RadauStepper};
+use crate::{OdeError, State, Work};
+
+/// An adaptive method: an explicit pair ([`Adaptive`]) or the stiff RADAU5 ([`Radau5`]).
+///
+/// Book: §4.11; HNW §II.4–II.10 (explicit pairs), HW §IV.8 (RADAU5).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    /// DOPRI5 or DOP853.
+    Explicit(Adaptive),
+    /// Radau IIA 5.
+    Radau5(Radau5),
+}
+
+impl Method {
+    /// Most steps (accepted + rejected) of a run.
+    pub fn max_steps(&self) -> usize {
+        match self {
+            Self::Explicit(a) => a.max_steps,
+            Self::Radau5(r) => r.max_steps,
+        }
+    }
+    /// The same method with another step bound.
+    pub fn with_max_steps(self, n: usize) -> Self {
+        match self {
+            Self::Explicit(a) => Self::Explicit(a.max_steps(n)),
+            Self::Radau5(r) => Self::Radau5(r.max_steps(n)),
+        }
+    }
+    /// Its name as in scene files: `dopri5`, `dop853`, `radau5`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Explicit(a) => match a.pair {
+                crate::Pair::Dopri5 => "dopri5",
+                crate::Pair::Dop853 => "dop853",
+            },
+            Self::Radau5(_) => "radau5",
+        }
+    }
+    /// (rtol, atol).
+    pub fn tolerances(&self) -> (f64, f64) {
+        match self {
+            Self::Explicit(a) => (a.rtol, a.atol),
+            Self::Radau5(r) => (r.rtol, r.atol),
+        }
+    }
+}
+
+/// A run of either kind in progress, with the interface of [`Stepper`]: `J` writes ∂f/∂y
+/// row-major for RADAU5 (finite differences when `None`; ignored by the explicit pairs).
+///
+/// Book: §4.11.
+// one stepper per run, moved never: boxing either variant would only add an indirection
+#[allow(clippy::large_enum_variant)]
+pub enum AnyStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> {
+    /// An explicit pair.
+    Explicit(Stepper<S, F>),
+    /// RADAU5.
+    Radau5(RadauStepper<S, F, J>),
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug
+    for AnyStepper<S, F, J>
+{
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Explicit(s) => s.fmt(f),
+            Self::Radau5(s) => s.fmt(f),
+        }
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
+    /// Starts a run of `method` (see [`Stepper::new`], [`RadauStepper::new`]).
+    ///
+    /// # Errors
+    /// As those constructors.
+    pub fn new(method: &Method, f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+        Ok(match method {
+            Method::Explicit(a) => Self::Explicit(Stepper::new(a, f, t0, y0, t_end)?),
+            Method::Radau5(r) => Self::Radau5(RadauStepper::new(r, f, jac, t0, y0, t_end)?),
+        })
+    }
+    /// The current time.
+    pub fn t(&self) -> f64 {
+        match self {
+            Self::Explicit(s) => s.t(),
+            Self::Radau5(s) => s.t(),
+        }
+    }
+    /// The current state.
+    pub fn y(&self) -> &S {
+        match self {
+            Self::Explicit(s) => s.y(),
+            Self::Radau5(s) => s.y(),
+        }
+    }
+    /// The start of the last accepted step.
+    pub fn step_start(&self) -> Option<f64> {
+        match self {
+            Self::Explicit(s) => s.step_start(),
+            Self::Radau5(s) => s.step_start(),
+        }
+    }
+    /// `true` once the end time has been reached.
+    pub fn done(&self) -> bool {
+        match self {
+            Self::Explicit(s) => s.done(),
+            Self::Radau5(s) => s.done(),
+        }
+    }
+    /// The work so far.
+    pub fn work(&self) -> Work {
+        match self {
+            Self::Explicit(s) => s.work(),
+            Self::Radau5(s) => s.work(),
+        }
+    }
+    /// One accepted step.
+    ///
+    /// # Errors
+    /// As [`Stepper::step`] and [`RadauStepper::step`].
+    pub fn step(&mut self) -> Result<(), OdeError> {
+        match self {
+            Self::Explicit(s) => s.step(),
+            Self::Radau5(s) => s.step(),
+        }
+    }
+    /// The interpolant of the last accepted step.
+    ///
+    /// # Errors
+    /// As [`Stepper::dense`] and [`RadauStepper::dense`].
+    pub fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
+        match self {
+            Self::Explicit(s) => s.dense(),
+            Self::Radau5(s) => s.dense(),
+        }
+    }
+    /// Continues from (t, y) after a jump.
+    ///
+    /// # Errors
+    /// As [`Stepper::restart`].
+    pub fn restart(&mut self, t: f64, y: S) -> Result<(), OdeError> {
+        match self {
+            Self::Explicit(s) => s.restart(t, y),
+            Self::Radau5(s) => s.restart(t, y),
+        }
+    }
+    /// Moves the end time.
+    ///
+    /// # Errors
+    /// As [`Stepper::set_end`].
+    pub fn set_end(&mut self, t_end: f64) -> Result<(), OdeError> {
+        match self {
+            Self::Explicit(s) => s.set_end(t_end),
+            Self::Radau5(s) => s.set_end(t_end),
+        }
+    }
+    /// The end time.
+    pub fn end(&self) -> f64 {
+        match self {
+            Self::Explicit(s) => s.end(),
+            Self::Radau5(s) => s.end(),
+        }
+    }
+}
