@@ -1,0 +1,139 @@
+//! Input checking shared by every binding: numpy arrays of real numbers in, typed Python
+//! errors out, and the panic guard.
+//!
+//! Book: — (the binding layer; DESIGN §5, errors name what was wrong and what is valid).
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use numpy::{PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+
+pyo3::create_exception!(
+    _vectrix,
+    Interrupted,
+    pyo3::exceptions::PyKeyboardInterrupt,
+    "Ctrl-C stopped a long computation; `.partial` holds what was computed."
+);
+
+/// Most elements one input array may have (2³¹): beyond it the call is refused before any
+/// allocation (docs/robustness.md: every size is bounded).
+pub const MAX_ELEMENTS: usize = 1 << 31;
+
+/// A real array read from Python: its shape and its values in C order.
+pub struct Real {
+    pub shape: Vec<usize>,
+    pub data: Vec<f64>,
+}
+
+impl Real {
+    /// Number of elements.
+    pub fn len(&self) -> usize {
+        self.data.len()
+    }
+}
+
+/// Reads `obj` (any array-like of real numbers: float or integer dtype) as f64 in C order.
+/// `name` names the argument in every error. NaN and infinities are refused unless
+/// `allow_nonfinite`.
+///
+/// # Errors
+/// `TypeError` for a non-real dtype (complex, bool, object, strings), `ValueError` for NaN/∞,
+/// or more than [`MAX_ELEMENTS`] elements.
+pub fn real(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Real> {
+    let np = py.import("numpy")?;
+    let arr = np
+        .call_method1("asarray", (obj,))
+        .map_err(|e| PyTypeError::new_err(format!("{name}: not an array of numbers ({e}); valid: real numbers")))?;
+    let kind: String = arr.getattr("dtype")?.getattr("kind")?.extract()?;
+    if !matches!(kind.as_str(), "f" | "i" | "u") {
+        let dt = arr.getattr("dtype")?.str()?.to_string();
+        return Err(PyTypeError::new_err(format!(
+            "{name}: dtype {dt}; valid: real numbers (a float or integer dtype)"
+        )));
+    }
+    let size: usize = arr.getattr("size")?.extract()?;
+    if size > MAX_ELEMENTS {
+        return Err(PyValueError::new_err(format!(
+            "{name}: {size} elements; valid: at most {MAX_ELEMENTS}"
+        )));
+    }
+    let f = np.getattr("float64")?;
+    let arr = np.call_method1("ascontiguousarray", (arr, f))?;
+    let arr = arr.downcast::<PyArrayDyn<f64>>()?;
+    let shape = arr.shape().to_vec();
+    let ro = arr.readonly();
+    let data = ro.as_slice()?.to_vec();
+    if let Some(k) = data.iter().position(|x| !x.is_finite()) {
+        return Err(PyValueError::new_err(format!(
+            "{name}: element {k} (flat index) is {}; valid: finite numbers",
+            data[k]
+        )));
+    }
+    Ok(Real { shape, data })
+}
+
+/// `real` for a 1-D vector of length `n` (or any length when `n` is `None`).
+pub fn vector(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, n: Option<usize>) -> PyResult<Vec<f64>> {
+    let r = real(py, obj, name)?;
+    if r.shape.len() != 1 || n.is_some_and(|n| r.shape[0] != n) {
+        let want = n.map_or("(k,)".to_string(), |n| format!("({n},)"));
+        return Err(PyValueError::new_err(format!("{name}: shape {:?}; valid: {want}", r.shape)));
+    }
+    Ok(r.data)
+}
+
+/// Rows of length `width`: a single (width,) row or a (k, width) batch; returns the rows and
+/// whether the input was a single row.
+pub fn rows(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, width: usize) -> PyResult<(Vec<f64>, usize, bool)> {
+    let r = real(py, obj, name)?;
+    match r.shape.as_slice() {
+        [w] if *w == width => Ok((r.data, 1, true)),
+        [n, w] if *w == width => Ok((r.data, *n, false)),
+        s => Err(PyValueError::new_err(format!(
+            "{name}: shape {s:?}; valid: ({width},) or (N, {width})"
+        ))),
+    }
+}
+
+/// Runs `f`, turning a Rust panic into a `RuntimeError` that says it is a vectrix bug: no panic
+/// unwinds into Python.
+pub fn guard<T>(what: &str, f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(r) => r,
+        Err(p) => {
+            let msg = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            Err(PyRuntimeError::new_err(format!("vectrix internal error in {what}: {msg} (please report)")))
+        }
+    }
+}
+
+/// [`guard`] around a computation that runs without the GIL.
+pub fn nogil<T: Send>(py: Python<'_>, what: &str, f: impl FnOnce() -> PyResult<T> + Send) -> PyResult<T> {
+    let r = py.allow_threads(|| catch_unwind(AssertUnwindSafe(f)));
+    guard(what, || match r {
+        Ok(r) => r,
+        Err(p) => std::panic::resume_unwind(p),
+    })
+}
+
+/// Splits `n` items into chunks for the available cores (one chunk below 16384 items) and
+/// runs `f(start, end, chunk_out)` on each, in scoped threads; `out` has `width` values per item.
+pub fn par_fill(n: usize, width: usize, out: &mut [f64], f: impl Fn(usize, usize, &mut [f64]) + Sync) {
+    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
+    if n < 16_384 || cores == 1 {
+        f(0, n, out);
+        return;
+    }
+    let per = n.div_ceil(cores);
+    std::thread::scope(|s| {
+        for (k, chunk) in out.chunks_mut(per * width).enumerate() {
+            let f = &f;
+            s.spawn(move || f(k * per, (k * per + chunk.len() / width).min(n), chunk));
+        }
+    });
+}
