@@ -31,7 +31,7 @@ fn matrix(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<DMatri
     let r = real(py, obj, name)?;
     match r.shape.as_slice() {
         [n, m] => Ok(DMatrix::from_row_slice(*n, *m, &r.data)),
-        s => Err(PyValueError::new_err(format!("{name}: shape {s:?}; valid: a 2-D matrix"))),
+        s => Err(PyValueError::new_err(format!("{name}: shape {}; valid: a 2-D matrix", crate::util::shape_str(s)))),
     }
 }
 

@@ -79,7 +79,7 @@ fn states(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, width: usize) -> P
     match r.shape.as_slice() {
         [w] if *w == width => Ok((r.data, 1, true)),
         [n, w] if *w == width => Ok((r.data, *n, false)),
-        s => Err(PyValueError::new_err(format!("{name}: shape {s:?}; valid: ({width},) or (N, {width})"))),
+        s => Err(PyValueError::new_err(format!("{name}: shape {}; valid: ({width},) or (N, {width})", crate::util::shape_str(s)))),
     }
 }
 

@@ -166,7 +166,7 @@ impl Rotation {
         let (n, single) = match r.shape.as_slice() {
             [3, 3] => (1, true),
             [n, 3, 3] => (*n, false),
-            s => return Err(PyValueError::new_err(format!("matrix: shape {s:?}; valid: (3, 3) or (N, 3, 3)"))),
+            s => return Err(PyValueError::new_err(format!("matrix: shape {}; valid: (3, 3) or (N, 3, 3)", crate::util::shape_str(s)))),
         };
         let q = nogil(py, "from_matrix", || {
             (0..n)
@@ -301,7 +301,15 @@ impl Rotation {
             }
         }
         let f = if degrees { 180.0 / std::f64::consts::PI } else { 1.0 };
-        let v: Vec<f64> = batch.angles().iter().flat_map(|a| a.map(|x| x * f)).collect();
+        let mut angles = batch.angles().to_vec();
+        for (k, sol) in batch.gimbal_locks() {
+            // scipy's choice for both kinds: the angle applied last is 0, so the first is the
+            // determined combination α + sign·γ (F2.13.5, F2.13.8)
+            if let vectrix_rotation::EulerSolution::GimbalLock { middle, combination, .. } = sol {
+                angles[*k] = [*combination, *middle, 0.0];
+            }
+        }
+        let v: Vec<f64> = angles.iter().flat_map(|a| a.map(|x| x * f)).collect();
         out(py, v, q.len(), self.single, &[3])
     }
 

@@ -18,7 +18,7 @@ use crate::util::{nogil, real, rows, vector};
 fn davenport_axes(py: Python<'_>, axes: &Bound<'_, PyAny>) -> PyResult<[Vector3<f64>; 3]> {
     let r = real(py, axes, "axes")?;
     if r.shape != [3, 3] {
-        return Err(PyValueError::new_err(format!("axes: shape {:?}; valid: (3, 3), one axis per row", r.shape)));
+        return Err(PyValueError::new_err(format!("axes: shape {}; valid: (3, 3), one axis per row", crate::util::shape_str(&r.shape))));
     }
     let mut n = [Vector3::zeros(); 3];
     for (k, a) in n.iter_mut().enumerate() {

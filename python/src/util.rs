@@ -73,12 +73,20 @@ pub fn real(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Real
     Ok(Real { shape, data })
 }
 
+/// A shape as numpy prints it: `(5,)`, `(2, 3)`.
+pub fn shape_str(s: &[usize]) -> String {
+    match s {
+        [n] => format!("({n},)"),
+        _ => format!("({})", s.iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", ")),
+    }
+}
+
 /// `real` for a 1-D vector of length `n` (or any length when `n` is `None`).
 pub fn vector(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, n: Option<usize>) -> PyResult<Vec<f64>> {
     let r = real(py, obj, name)?;
     if r.shape.len() != 1 || n.is_some_and(|n| r.shape[0] != n) {
         let want = n.map_or("(k,)".to_string(), |n| format!("({n},)"));
-        return Err(PyValueError::new_err(format!("{name}: shape {:?}; valid: {want}", r.shape)));
+        return Err(PyValueError::new_err(format!("{name}: shape {}; valid: {want}", shape_str(&r.shape))));
     }
     Ok(r.data)
 }
@@ -90,9 +98,7 @@ pub fn rows(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, width: usize) ->
     match r.shape.as_slice() {
         [w] if *w == width => Ok((r.data, 1, true)),
         [n, w] if *w == width => Ok((r.data, *n, false)),
-        s => Err(PyValueError::new_err(format!(
-            "{name}: shape {s:?}; valid: ({width},) or (N, {width})"
-        ))),
+        s => Err(PyValueError::new_err(format!("{name}: shape {}; valid: ({width},) or (N, {width})", shape_str(s)))),
     }
 }
 

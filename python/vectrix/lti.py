@@ -11,10 +11,12 @@ class TransferFunction:
     """G(s) = num(s)/den(s)·e^{−s·delay}, coefficients in descending powers (book §15.18)."""
 
     def __init__(self, num, den, delay=0.0):
+        _v._tf_roots(num, den)  # validates first (TypeError/ValueError naming num or den)
         self.num = _np.atleast_1d(_np.asarray(num, dtype=float))
         self.den = _np.atleast_1d(_np.asarray(den, dtype=float))
         self.delay = float(delay)
-        _v._tf_roots(self.num, self.den)  # validates (ValueError naming num/den)
+        if not (_np.isfinite(self.delay) and self.delay >= 0):
+            raise ValueError(f"delay = {delay}; valid: a finite number >= 0 [s]")
 
     def poles(self):
         """Roots of den (book §15.18)."""
@@ -62,8 +64,8 @@ class StateSpace:
     """ẋ = Ax + Bu, y = Cx + Du (book §15.8)."""
 
     def __init__(self, A, B, C, D):
+        _v._ss_to_tf(*(_np.atleast_2d(m) for m in (A, B, C, D)), 0, 0)  # validates shapes, dtypes, values
         self.A, self.B, self.C, self.D = (_np.atleast_2d(_np.asarray(m, dtype=float)) for m in (A, B, C, D))
-        _v._ss_to_tf(self.A, self.B, self.C, self.D, 0, 0)  # validates shapes and values
 
     def to_tf(self, output=0, input=0):
         """The transfer function from `input` to `output` (book (15.8.1))."""
@@ -75,7 +77,7 @@ class StateSpace:
 
     def step(self, t, input=0):
         """Step response of `input`: y (outputs, len t) (book §15.9)."""
-        return _v._ss_step(self.A, self.B, self.C, self.D, _np.asarray(t, float), input)
+        return _v._ss_step(self.A, self.B, self.C, self.D, t, input)
 
     def to_control(self):
         import control
@@ -129,14 +131,14 @@ def margins(sys):
 def bode(sys, omega):
     """(magnitude |G(jω)|, phase [deg], complex G(jω)) at `omega` [rad/s] (book §16.2)."""
     g = _siso(sys)
-    mag, ph, re, im = _v._tf_bode(g.num, g.den, _np.asarray(omega, float), g.delay)
+    mag, ph, re, im = _v._tf_bode(g.num, g.den, omega, g.delay)
     return mag, ph, re + 1j * im
 
 
 def step(sys, t):
     """Unit-step response y(t) on a uniform grid t from 0 (book §15.9)."""
     g = _siso(sys)
-    return _v._tf_step(g.num, g.den, _np.asarray(t, float), g.delay)
+    return _v._tf_step(g.num, g.den, t, g.delay)
 
 
 def root_locus(sys, k_max, max_step=None):
