@@ -136,10 +136,12 @@ impl Scene {
 
 /// Runs `scene` without the GIL; Ctrl-C (checked every 0.1 s on the main thread) or `cancel`
 /// stop it after the current step with the rows computed (`stop.reason = "interrupted"`).
-pub(crate) fn run_scene(py: Python<'_>, scene: &RsScene, cancel: Option<&Cancel>) -> PyResult<Run> {
+/// Returns the run and the KeyboardInterrupt when Ctrl-C stopped it.
+pub(crate) fn run_scene(py: Python<'_>, scene: &RsScene, cancel: Option<&Cancel>) -> PyResult<(Run, Option<PyErr>)> {
     let flag = cancel.map_or_else(|| Arc::new(AtomicBool::new(false)), |c| c.0.clone());
     let signal: Mutex<Option<PyErr>> = Mutex::new(None);
-    let main = py.import("threading")?.call_method0("current_thread")?.is(&py.import("threading")?.call_method0("main_thread")?);
+    let threading = py.import("threading")?;
+    let main = threading.call_method0("current_thread")?.is(&threading.call_method0("main_thread")?);
     let r = nogil(py, "Scene.run", || {
         let mut last = Instant::now();
         let mut progress = |_f: f64| {
@@ -155,8 +157,9 @@ pub(crate) fn run_scene(py: Python<'_>, scene: &RsScene, cancel: Option<&Cancel>
         };
         Ok(scene.run_with(RunControl { progress: &mut progress, cancel: Some(&flag) }))
     })?;
-    let _ = signal.lock().map(|mut s| s.take());
-    r.map_err(|e| scene_err(py, &e))
+    let sig = signal.into_inner().ok().flatten();
+    let run = r.map_err(|e| scene_err(py, &e))?;
+    Ok((run, sig))
 }
 
 /// t, the columns as numpy arrays, units, and the summary (everything but the rows) as JSON.
@@ -236,8 +239,15 @@ impl Scene {
     #[pyo3(signature = (overrides, cancel = None))]
     fn _run<'py>(&self, py: Python<'py>, overrides: Vec<(String, Bound<'py, PyAny>)>, cancel: Option<Cancel>) -> PyResult<Bound<'py, PyDict>> {
         let own = self.with(py, &overrides)?;
-        let run = run_scene(py, own.as_ref().unwrap_or(&self.scene), cancel.as_ref())?;
-        guard("Scene.run", || run_to_py(py, &run))
+        let (run, sig) = run_scene(py, own.as_ref().unwrap_or(&self.scene), cancel.as_ref())?;
+        let d = guard("Scene.run", || run_to_py(py, &run))?;
+        if let Some(sig) = sig {
+            // Ctrl-C: `vectrix.Interrupted` (a KeyboardInterrupt) carrying what was computed
+            let e = crate::util::Interrupted::new_err(format!("{sig}: run stopped at t = {}", run.t.last().copied().unwrap_or(0.0)));
+            e.value(py).setattr("partial", d)?;
+            return Err(e);
+        }
+        Ok(d)
     }
 
     /// Internal: the linearization as JSON (A, B, C, D row-major, eigenvalues, modes).

@@ -159,8 +159,14 @@ class Scene:
         """Runs the scene (GIL released) and returns a `RunResult`: `.t`, `.columns` (dict of
         numpy arrays), `.units`, `.summary` (dict: work, drift, stop, complete …) and
         `.frame()` (a pandas DataFrame when pandas is installed). Ctrl-C stops the run after
-        the current step and returns the rows computed (`summary["stop"]["reason"]`)."""
-        d = self._s._run(self._overrides(overrides, kw), cancel)
+        the current step and raises `vectrix.Interrupted` (a KeyboardInterrupt) whose
+        `.partial` is the RunResult of the rows computed; a set `cancel` flag stops it the same
+        way and returns that RunResult (`summary["stop"]["reason"] == "interrupted"`)."""
+        try:
+            d = self._s._run(self._overrides(overrides, kw), cancel)
+        except Interrupted as e:
+            e.partial = RunResult(e.partial)
+            raise
         return RunResult(d)
 
     def linearize(self, overrides=None, **kw):
