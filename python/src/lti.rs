@@ -17,7 +17,12 @@ fn lti_err(what: &str, e: LtiError) -> PyErr {
     PyValueError::new_err(format!("{what}: {e}"))
 }
 
-fn tf(py: Python<'_>, num: &Bound<'_, PyAny>, den: &Bound<'_, PyAny>, delay: f64) -> PyResult<TransferFunction> {
+fn tf(
+    py: Python<'_>,
+    num: &Bound<'_, PyAny>,
+    den: &Bound<'_, PyAny>,
+    delay: f64,
+) -> PyResult<TransferFunction> {
     let n = vector(py, num, "num", None)?;
     let d = vector(py, den, "den", None)?;
     if !(delay.is_finite() && delay >= 0.0) {
@@ -31,11 +36,20 @@ fn matrix(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<DMatri
     let r = real(py, obj, name)?;
     match r.shape.as_slice() {
         [n, m] => Ok(DMatrix::from_row_slice(*n, *m, &r.data)),
-        s => Err(PyValueError::new_err(format!("{name}: shape {}; valid: a 2-D matrix", crate::util::shape_str(s)))),
+        s => Err(PyValueError::new_err(format!(
+            "{name}: shape {}; valid: a 2-D matrix",
+            crate::util::shape_str(s)
+        ))),
     }
 }
 
-fn ss(py: Python<'_>, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>, c: &Bound<'_, PyAny>, d: &Bound<'_, PyAny>) -> PyResult<StateSpace> {
+fn ss(
+    py: Python<'_>,
+    a: &Bound<'_, PyAny>,
+    b: &Bound<'_, PyAny>,
+    c: &Bound<'_, PyAny>,
+    d: &Bound<'_, PyAny>,
+) -> PyResult<StateSpace> {
     StateSpace::new(matrix(py, a, "A")?, matrix(py, b, "B")?, matrix(py, c, "C")?, matrix(py, d, "D")?)
         .map_err(|e| lti_err("ss", e))
 }
@@ -48,7 +62,12 @@ fn complex_parts(v: &[Complex64]) -> (Vec<f64>, Vec<f64>) {
 /// reports (gm, pm, wpc, wgc, sm, wsm; gm = inf and w = nan when absent). Book: §16.3.
 #[pyfunction]
 #[pyo3(signature = (num, den, delay = 0.0))]
-fn _tf_margins<'py>(py: Python<'py>, num: &Bound<'_, PyAny>, den: &Bound<'_, PyAny>, delay: f64) -> PyResult<Bound<'py, PyDict>> {
+fn _tf_margins<'py>(
+    py: Python<'py>,
+    num: &Bound<'_, PyAny>,
+    den: &Bound<'_, PyAny>,
+    delay: f64,
+) -> PyResult<Bound<'py, PyDict>> {
     let g = tf(py, num, den, delay)?;
     let m = nogil(py, "margins", || g.margins().map_err(|e| lti_err("margins", e)))?;
     let d = PyDict::new(py);
@@ -77,7 +96,12 @@ fn _tf_bode<'py>(
     den: &Bound<'_, PyAny>,
     omega: &Bound<'_, PyAny>,
     delay: f64,
-) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)> {
+) -> PyResult<(
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+)> {
     let g = tf(py, num, den, delay)?;
     let w = vector(py, omega, "omega", None)?;
     let r = nogil(py, "bode", || g.bode(&w).map_err(|e| lti_err("bode (omega: valid 0 ≤ ω < ∞)", e)))?;
@@ -89,7 +113,13 @@ fn _tf_bode<'py>(
 /// Step response y(t) of num/den·e^{−sτ} on a uniform grid `t` starting at 0. Book: §15.9.
 #[pyfunction]
 #[pyo3(signature = (num, den, t, delay = 0.0))]
-fn _tf_step<'py>(py: Python<'py>, num: &Bound<'_, PyAny>, den: &Bound<'_, PyAny>, t: &Bound<'_, PyAny>, delay: f64) -> PyResult<Bound<'py, PyArray1<f64>>> {
+fn _tf_step<'py>(
+    py: Python<'py>,
+    num: &Bound<'_, PyAny>,
+    den: &Bound<'_, PyAny>,
+    t: &Bound<'_, PyAny>,
+    delay: f64,
+) -> PyResult<Bound<'py, PyArray1<f64>>> {
     let g = tf(py, num, den, delay)?;
     let t = vector(py, t, "t", None)?;
     let r = nogil(py, "step", || g.step(&t).map_err(|e| lti_err("step (t: a uniform grid from 0)", e)))?;
@@ -111,14 +141,20 @@ fn _ss_step<'py>(
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let s = ss(py, a, b, c, d)?;
     let t = vector(py, t, "t", None)?;
-    let r = nogil(py, "step", || response(&s, InputKind::Step, input, 1.0, 0.0, &t).map_err(|e| lti_err("step", e)))?;
+    let r = nogil(py, "step", || {
+        response(&s, InputKind::Step, input, 1.0, 0.0, &t).map_err(|e| lti_err("step", e))
+    })?;
     PyArray2::from_vec2(py, &r.y).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
 /// Poles and zeros of num/den as (re, im) arrays. Book: §15.18.
 #[pyfunction]
 #[allow(clippy::type_complexity)]
-fn _tf_roots<'py>(py: Python<'py>, num: &Bound<'_, PyAny>, den: &Bound<'_, PyAny>) -> PyResult<((Vec<f64>, Vec<f64>), (Vec<f64>, Vec<f64>))> {
+fn _tf_roots<'py>(
+    py: Python<'py>,
+    num: &Bound<'_, PyAny>,
+    den: &Bound<'_, PyAny>,
+) -> PyResult<((Vec<f64>, Vec<f64>), (Vec<f64>, Vec<f64>))> {
     let g = tf(py, num, den, 0.0)?;
     let (p, z) = nogil(py, "roots", || {
         Ok((g.poles().map_err(|e| lti_err("poles", e))?, g.zeros().map_err(|e| lti_err("zeros", e))?))
@@ -148,7 +184,11 @@ fn _ss_to_tf(
 /// A controllable-canonical realization (A, B, C, D) of a proper num/den. Book: §15.20.
 #[pyfunction]
 #[allow(clippy::type_complexity)]
-fn _tf_to_ss(py: Python<'_>, num: &Bound<'_, PyAny>, den: &Bound<'_, PyAny>) -> PyResult<(Vec<Vec<f64>>, Vec<Vec<f64>>, Vec<Vec<f64>>, Vec<Vec<f64>>)> {
+fn _tf_to_ss(
+    py: Python<'_>,
+    num: &Bound<'_, PyAny>,
+    den: &Bound<'_, PyAny>,
+) -> PyResult<(Vec<Vec<f64>>, Vec<Vec<f64>>, Vec<Vec<f64>>, Vec<Vec<f64>>)> {
     let g = tf(py, num, den, 0.0)?;
     let s = StateSpace::from_tf(&g).map_err(|e| lti_err("to_ss", e))?;
     let rows = |m: &DMatrix<f64>| (0..m.nrows()).map(|i| m.row(i).iter().copied().collect()).collect();
@@ -176,7 +216,9 @@ fn _root_locus<'py>(
 ) -> PyResult<(Bound<'py, PyArray1<f64>>, Vec<Vec<Complex64>>)> {
     let g = tf(py, num, den, 0.0)?;
     let step = max_step.unwrap_or(k_max / 200.0);
-    let r = nogil(py, "root_locus", || root_locus(&g, k_max, step).map_err(|e| lti_err("root_locus (valid: k_max > 0)", e)))?;
+    let r = nogil(py, "root_locus", || {
+        root_locus(&g, k_max, step).map_err(|e| lti_err("root_locus (valid: k_max > 0)", e))
+    })?;
     Ok((r.gains.into_pyarray(py), r.branches))
 }
 

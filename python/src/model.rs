@@ -25,7 +25,9 @@ fn dyn_err(what: &str, k: Option<usize>, e: DynamicsError) -> PyErr {
 }
 
 fn vec3(d: &Bound<'_, PyDict>, key: &str, k: usize) -> PyResult<Vector3<f64>> {
-    let v: Vec<f64> = item(d, key, k)?.extract().map_err(|_| PyTypeError::new_err(format!("links[{k}].{key}: valid: 3 numbers")))?;
+    let v: Vec<f64> = item(d, key, k)?
+        .extract()
+        .map_err(|_| PyTypeError::new_err(format!("links[{k}].{key}: valid: 3 numbers")))?;
     if v.len() != 3 || !v.iter().all(|x| x.is_finite()) {
         return Err(PyValueError::new_err(format!("links[{k}].{key} = {v:?}; valid: 3 finite numbers")));
     }
@@ -37,8 +39,9 @@ fn item<'py>(d: &Bound<'py, PyDict>, key: &str, k: usize) -> PyResult<Bound<'py,
 }
 
 fn mat3(d: &Bound<'_, PyDict>, key: &str, k: usize) -> PyResult<Matrix3<f64>> {
-    let rows: Vec<Vec<f64>> =
-        item(d, key, k)?.extract().map_err(|_| PyTypeError::new_err(format!("links[{k}].{key}: valid: a 3×3 nested list")))?;
+    let rows: Vec<Vec<f64>> = item(d, key, k)?
+        .extract()
+        .map_err(|_| PyTypeError::new_err(format!("links[{k}].{key}: valid: a 3×3 nested list")))?;
     if rows.len() != 3 || rows.iter().any(|r| r.len() != 3 || !r.iter().all(|x| x.is_finite())) {
         return Err(PyValueError::new_err(format!("links[{k}].{key}: valid: 3×3 finite numbers")));
     }
@@ -62,11 +65,14 @@ fn link(d: &Bound<'_, PyDict>, k: usize) -> PyResult<Link> {
         }
     };
     let parent: Option<usize> = match d.get_item("parent")? {
-        Some(p) if !p.is_none() => Some(p.extract().map_err(|_| PyValueError::new_err(format!("links[{k}].parent: valid: None or an earlier link index")))?),
+        Some(p) if !p.is_none() => Some(p.extract().map_err(|_| {
+            PyValueError::new_err(format!("links[{k}].parent: valid: None or an earlier link index"))
+        })?),
         _ => None,
     };
     let mass: f64 = item(d, "mass", k)?.extract()?;
-    let mut l = Link::new(parent, joint, vec3(d, "offset", k)?, mass, vec3(d, "com", k)?, mat3(d, "inertia", k)?);
+    let mut l =
+        Link::new(parent, joint, vec3(d, "offset", k)?, mass, vec3(d, "com", k)?, mat3(d, "inertia", k)?);
     if d.get_item("orientation")?.is_some() {
         l.orientation = mat3(d, "orientation", k)?;
     }
@@ -74,12 +80,20 @@ fn link(d: &Bound<'_, PyDict>, k: usize) -> PyResult<Link> {
 }
 
 /// Reads a state array: (width,) single or (N, width) batch.
-fn states(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, width: usize) -> PyResult<(Vec<f64>, usize, bool)> {
+fn states(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    name: &str,
+    width: usize,
+) -> PyResult<(Vec<f64>, usize, bool)> {
     let r = real(py, obj, name)?;
     match r.shape.as_slice() {
         [w] if *w == width => Ok((r.data, 1, true)),
         [n, w] if *w == width => Ok((r.data, *n, false)),
-        s => Err(PyValueError::new_err(format!("{name}: shape {}; valid: ({width},) or (N, {width})", crate::util::shape_str(s)))),
+        s => Err(PyValueError::new_err(format!(
+            "{name}: shape {}; valid: ({width},) or (N, {width})",
+            crate::util::shape_str(s)
+        ))),
     }
 }
 
@@ -87,7 +101,9 @@ fn states(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, width: usize) -> P
 fn count(ns: &[(usize, &str)]) -> PyResult<usize> {
     let n = ns.iter().map(|x| x.0).max().unwrap_or(1);
     if let Some((m, name)) = ns.iter().find(|(m, _)| *m != 1 && *m != n) {
-        return Err(PyValueError::new_err(format!("{name}: {m} states against {n}; valid: equal batch sizes, or one state")));
+        return Err(PyValueError::new_err(format!(
+            "{name}: {m} states against {n}; valid: equal batch sizes, or one state"
+        )));
     }
     Ok(n)
 }
@@ -156,7 +172,11 @@ impl Model {
     /// tests/data/multibody_reference.json. Book: §7.11, Table 1.3.
     #[staticmethod]
     #[pyo3(signature = (links, gravity = None))]
-    fn from_links(py: Python<'_>, links: Vec<Bound<'_, PyDict>>, gravity: Option<Bound<'_, PyAny>>) -> PyResult<Self> {
+    fn from_links(
+        py: Python<'_>,
+        links: Vec<Bound<'_, PyDict>>,
+        gravity: Option<Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
         let links: Vec<Link> = links.iter().enumerate().map(|(k, d)| link(d, k)).collect::<PyResult<_>>()?;
         let mut m = RsModel::new(&links).map_err(|e| dyn_err("links", None, e))?;
         if let Some(g) = gravity {
@@ -201,7 +221,13 @@ impl Model {
 
     /// Inverse dynamics τ = RNEA(q, v, v̇): (nv,) or (N, nv) for batches. Book: §7.11,
     /// (7.11.13)–(7.11.22).
-    fn rnea<'py>(&self, py: Python<'py>, q: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>, a: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn rnea<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'_, PyAny>,
+        v: &Bound<'_, PyAny>,
+        a: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (nq, nv) = (self.m.nq(), self.m.nv());
         self.batch3(py, "rnea", [(q, "q", nq), (v, "v", nv), (a, "a", nv)], &[nv], |m, q, v, a, o| {
             o.copy_from_slice(&m.rnea(q, v, a, None)?.tau);
@@ -210,7 +236,13 @@ impl Model {
     }
 
     /// Forward dynamics v̇ = ABA(q, v, τ): (nv,) or (N, nv). Book: §7.11; RBDA Table 7.1.
-    fn aba<'py>(&self, py: Python<'py>, q: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>, tau: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn aba<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'_, PyAny>,
+        v: &Bound<'_, PyAny>,
+        tau: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (nq, nv) = (self.m.nq(), self.m.nv());
         self.batch3(py, "aba", [(q, "q", nq), (v, "v", nv), (tau, "tau", nv)], &[nv], |m, q, v, t, o| {
             o.copy_from_slice(&m.aba(q, v, t, None)?);
@@ -228,31 +260,55 @@ impl Model {
     }
 
     /// Internal: RNEA derivatives packed per state as [τ, ∂τ/∂q, ∂τ/∂v, M] (row-major).
-    fn _rnea_derivatives<'py>(&self, py: Python<'py>, q: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>, a: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn _rnea_derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'_, PyAny>,
+        v: &Bound<'_, PyAny>,
+        a: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (nq, nv) = (self.m.nq(), self.m.nv());
-        self.batch3(py, "rnea_derivatives", [(q, "q", nq), (v, "v", nv), (a, "a", nv)], &[nv * (1 + 3 * nv)], |m, q, v, a, o| {
-            let d = m.rnea_derivatives(q, v, a, None)?;
-            o[..nv].copy_from_slice(&d.tau);
-            let s = nv * nv;
-            put(&mut o[nv..nv + s], &d.dtau_dq);
-            put(&mut o[nv + s..nv + 2 * s], &d.dtau_dv);
-            put(&mut o[nv + 2 * s..], &d.mass_matrix);
-            Ok(())
-        })
+        self.batch3(
+            py,
+            "rnea_derivatives",
+            [(q, "q", nq), (v, "v", nv), (a, "a", nv)],
+            &[nv * (1 + 3 * nv)],
+            |m, q, v, a, o| {
+                let d = m.rnea_derivatives(q, v, a, None)?;
+                o[..nv].copy_from_slice(&d.tau);
+                let s = nv * nv;
+                put(&mut o[nv..nv + s], &d.dtau_dq);
+                put(&mut o[nv + s..nv + 2 * s], &d.dtau_dv);
+                put(&mut o[nv + 2 * s..], &d.mass_matrix);
+                Ok(())
+            },
+        )
     }
 
     /// Internal: ABA derivatives packed per state as [v̇, ∂v̇/∂q, ∂v̇/∂v, ∂v̇/∂τ].
-    fn _aba_derivatives<'py>(&self, py: Python<'py>, q: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>, tau: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn _aba_derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'_, PyAny>,
+        v: &Bound<'_, PyAny>,
+        tau: &Bound<'_, PyAny>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (nq, nv) = (self.m.nq(), self.m.nv());
-        self.batch3(py, "aba_derivatives", [(q, "q", nq), (v, "v", nv), (tau, "tau", nv)], &[nv * (1 + 3 * nv)], |m, q, v, t, o| {
-            let d = m.aba_derivatives(q, v, t, None)?;
-            o[..nv].copy_from_slice(&d.vdot);
-            let s = nv * nv;
-            put(&mut o[nv..nv + s], &d.dvdot_dq);
-            put(&mut o[nv + s..nv + 2 * s], &d.dvdot_dv);
-            put(&mut o[nv + 2 * s..], &d.dvdot_dtau);
-            Ok(())
-        })
+        self.batch3(
+            py,
+            "aba_derivatives",
+            [(q, "q", nq), (v, "v", nv), (tau, "tau", nv)],
+            &[nv * (1 + 3 * nv)],
+            |m, q, v, t, o| {
+                let d = m.aba_derivatives(q, v, t, None)?;
+                o[..nv].copy_from_slice(&d.vdot);
+                let s = nv * nv;
+                put(&mut o[nv..nv + s], &d.dvdot_dq);
+                put(&mut o[nv + s..nv + 2 * s], &d.dvdot_dv);
+                put(&mut o[nv + 2 * s..], &d.dvdot_dtau);
+                Ok(())
+            },
+        )
     }
 
     fn __repr__(&self) -> String {

@@ -12,9 +12,11 @@ use numpy::{IntoPyArray, PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PySlice;
-use vectrix_rotation::{EulerAngles, EulerKind, EulerSequence, Quaternion, nearest_rotation};
+use vectrix_rotation::{
+    EulerAngles, EulerKind, EulerSequence, Quaternion, ROTATION_TOL, check_rotation_matrix, nearest_rotation,
+};
 
-use crate::util::{nogil, par_fill, real, rows};
+use crate::util::{nogil, par_fill, par_map, real, rows};
 
 pyo3::create_exception!(
     _vectrix,
@@ -39,7 +41,13 @@ pub struct Rotation {
 }
 
 /// A (N, …) or (…) numpy array from flat values.
-pub(crate) fn out<'py>(py: Python<'py>, v: Vec<f64>, n: usize, single: bool, tail: &[usize]) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+pub(crate) fn out<'py>(
+    py: Python<'py>,
+    v: Vec<f64>,
+    n: usize,
+    single: bool,
+    tail: &[usize],
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let mut shape: Vec<usize> = if single { vec![] } else { vec![n] };
     shape.extend_from_slice(tail);
     Ok(v.into_pyarray(py).reshape(shape)?.into_any().downcast_into::<PyArrayDyn<f64>>()?)
@@ -128,15 +136,17 @@ impl Rotation {
     fn from_quat(py: Python<'_>, quat: &Bound<'_, PyAny>, scalar_first: bool) -> PyResult<Self> {
         let (d, n, single) = rows(py, quat, "quat", 4)?;
         let q = nogil(py, "from_quat", || {
-            d.chunks(4)
-                .enumerate()
-                .map(|(k, v)| {
-                    let q = if scalar_first { quat_from(v) } else { Quaternion::new(v[3], v[0], v[1], v[2]) };
-                    q.normalize().ok_or_else(|| {
-                        PyValueError::new_err(format!("quat[{k}] has norm 0 (or overflows); valid: a nonzero finite quaternion"))
-                    })
-                })
-                .collect::<PyResult<Vec<_>>>()
+            let q = par_map(n, |k| {
+                let v = &d[4 * k..4 * k + 4];
+                let q = if scalar_first { quat_from(v) } else { Quaternion::new(v[3], v[0], v[1], v[2]) };
+                q.normalize()
+            });
+            if let Some(k) = q.iter().position(Option::is_none) {
+                return Err(PyValueError::new_err(format!(
+                    "quat[{k}] has norm 0 (or overflows); valid: a nonzero finite quaternion"
+                )));
+            }
+            Ok(q.into_iter().flatten().collect::<Vec<_>>())
         })?;
         debug_assert_eq!(q.len(), n);
         Ok(Self::new(q, single))
@@ -145,7 +155,12 @@ impl Rotation {
     /// Quaternions (N, 4), scalar last unless `scalar_first`; `canonical=True` gives the one
     /// with η ≥ 0 (book's canonical form). Book: §2.15.
     #[pyo3(signature = (canonical = false, *, scalar_first = false))]
-    fn as_quat<'py>(&self, py: Python<'py>, canonical: bool, scalar_first: bool) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn as_quat<'py>(
+        &self,
+        py: Python<'py>,
+        canonical: bool,
+        scalar_first: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         self.map(py, "as_quat", &[4], |q, o| {
             let q = if canonical { q.canonical() } else { *q };
             let v = [q.a, q.b, q.c, q.d];
@@ -166,22 +181,32 @@ impl Rotation {
         let (n, single) = match r.shape.as_slice() {
             [3, 3] => (1, true),
             [n, 3, 3] => (*n, false),
-            s => return Err(PyValueError::new_err(format!("matrix: shape {}; valid: (3, 3) or (N, 3, 3)", crate::util::shape_str(s)))),
+            s => {
+                return Err(PyValueError::new_err(format!(
+                    "matrix: shape {}; valid: (3, 3) or (N, 3, 3)",
+                    crate::util::shape_str(s)
+                )));
+            }
         };
         let q = nogil(py, "from_matrix", || {
-            (0..n)
-                .map(|k| {
-                    let m = Matrix3::from_row_slice(&r.data[9 * k..9 * k + 9]);
-                    if m.determinant().is_nan() || m.determinant() <= 0.0 {
-                        return Err(PyValueError::new_err(format!(
-                            "matrix[{k}] has determinant {:e}; valid: a rotation matrix (determinant > 0)",
-                            m.determinant()
-                        )));
-                    }
-                    let m = nearest_rotation(&m).map_err(|e| PyValueError::new_err(format!("matrix[{k}]: {e}")))?;
-                    Ok(Quaternion::from_rotation_matrix_unchecked(&m).canonical())
-                })
-                .collect::<PyResult<Vec<_>>>()
+            par_map(n, |k| -> PyResult<Quaternion<f64>> {
+                let m = Matrix3::from_row_slice(&r.data[9 * k..9 * k + 9]);
+                if m.determinant().is_nan() || m.determinant() <= 0.0 {
+                    return Err(PyValueError::new_err(format!(
+                        "matrix[{k}] has determinant {:e}; valid: a rotation matrix (determinant > 0)",
+                        m.determinant()
+                    )));
+                }
+                // a rotation matrix to round-off is used as it is; others are projected
+                let m = if check_rotation_matrix(&m, ROTATION_TOL).is_ok() {
+                    m
+                } else {
+                    nearest_rotation(&m).map_err(|e| PyValueError::new_err(format!("matrix[{k}]: {e}")))?
+                };
+                Ok(Quaternion::from_rotation_matrix_unchecked(&m).canonical())
+            })
+            .into_iter()
+            .collect::<PyResult<Vec<_>>>()
         })?;
         Ok(Self::new(q, single))
     }
@@ -205,7 +230,9 @@ impl Rotation {
         let (d, _, single) = rows(py, rotvec, "rotvec", 3)?;
         let s = if degrees { std::f64::consts::PI / 180.0 } else { 1.0 };
         let q = nogil(py, "from_rotvec", || {
-            Ok(d.chunks(3).map(|v| Quaternion::from_angle_vector(&(Vector3::new(v[0], v[1], v[2]) * s))).collect())
+            Ok(par_map(d.len() / 3, |k| {
+                Quaternion::from_angle_vector(&(Vector3::new(d[3 * k], d[3 * k + 1], d[3 * k + 2]) * s))
+            }))
         })?;
         Ok(Self::new(q, single))
     }
@@ -224,7 +251,9 @@ impl Rotation {
     #[staticmethod]
     fn from_mrp(py: Python<'_>, mrp: &Bound<'_, PyAny>) -> PyResult<Self> {
         let (d, _, single) = rows(py, mrp, "mrp", 3)?;
-        let q = nogil(py, "from_mrp", || Ok(d.chunks(3).map(|v| Quaternion::from_mrp(&Vector3::new(v[0], v[1], v[2]))).collect()))?;
+        let q = nogil(py, "from_mrp", || {
+            Ok(d.chunks(3).map(|v| Quaternion::from_mrp(&Vector3::new(v[0], v[1], v[2]))).collect())
+        })?;
         Ok(Self::new(q, single))
     }
 
@@ -237,7 +266,9 @@ impl Rotation {
     #[staticmethod]
     fn from_gibbs(py: Python<'_>, gibbs: &Bound<'_, PyAny>) -> PyResult<Self> {
         let (d, _, single) = rows(py, gibbs, "gibbs", 3)?;
-        let q = nogil(py, "from_gibbs", || Ok(d.chunks(3).map(|v| Quaternion::from_gibbs(&Vector3::new(v[0], v[1], v[2]))).collect()))?;
+        let q = nogil(py, "from_gibbs", || {
+            Ok(d.chunks(3).map(|v| Quaternion::from_gibbs(&Vector3::new(v[0], v[1], v[2]))).collect())
+        })?;
         Ok(Self::new(q, single))
     }
 
@@ -261,7 +292,9 @@ impl Rotation {
         let (d, _, single) = rows(py, angles, "angles", 3)?;
         let f = if degrees { std::f64::consts::PI / 180.0 } else { 1.0 };
         let q = nogil(py, "from_euler", || {
-            Ok(d.chunks(3).map(|a| EulerAngles::new(s, [a[0] * f, a[1] * f, a[2] * f]).quaternion()).collect())
+            Ok(par_map(d.len() / 3, |k| {
+                EulerAngles::new(s, [d[3 * k] * f, d[3 * k + 1] * f, d[3 * k + 2] * f]).quaternion()
+            }))
         })?;
         Ok(Self::new(q, single))
     }
@@ -272,10 +305,18 @@ impl Rotation {
     /// typed warning), "raise" (`GimbalLockError` with `.indices`), or "ignore".
     /// Book: §2.13, Facts 2.13.3–8.
     #[pyo3(signature = (seq, degrees = false, gimbal_lock = "warn"))]
-    fn as_euler<'py>(&self, py: Python<'py>, seq: &str, degrees: bool, gimbal_lock: &str) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn as_euler<'py>(
+        &self,
+        py: Python<'py>,
+        seq: &str,
+        degrees: bool,
+        gimbal_lock: &str,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let s = sequence(seq)?;
         if !matches!(gimbal_lock, "warn" | "raise" | "ignore") {
-            return Err(PyValueError::new_err(format!("gimbal_lock = {gimbal_lock:?}; valid: 'warn', 'raise', 'ignore'")));
+            return Err(PyValueError::new_err(format!(
+                "gimbal_lock = {gimbal_lock:?}; valid: 'warn', 'raise', 'ignore'"
+            )));
         }
         let q = &self.q;
         let batch = nogil(py, "as_euler", || {
@@ -296,7 +337,9 @@ impl Rotation {
                     e.value(py).setattr("indices", locks)?;
                     return Err(e);
                 }
-                "warn" => PyErr::warn(py, &py.get_type::<GimbalLockWarning>(), &std::ffi::CString::new(msg)?, 1)?,
+                "warn" => {
+                    PyErr::warn(py, &py.get_type::<GimbalLockWarning>(), &std::ffi::CString::new(msg)?, 1)?
+                }
                 _ => {}
             }
         }
@@ -325,7 +368,9 @@ impl Rotation {
             .gimbal_locks()
             .iter()
             .filter_map(|(k, sol)| match sol {
-                vectrix_rotation::EulerSolution::GimbalLock { middle, combination, sign, .. } => Some((*k, *middle, *combination, *sign)),
+                vectrix_rotation::EulerSolution::GimbalLock { middle, combination, sign, .. } => {
+                    Some((*k, *middle, *combination, *sign))
+                }
                 _ => None,
             })
             .collect())
@@ -334,7 +379,12 @@ impl Rotation {
     /// Rotates vectors (3,) or (N, 3): 𝓡(q)x (or 𝓡ᵀx with `inverse`), one rotation against
     /// many vectors and many against one broadcast. Book: Prob 2.26.23.
     #[pyo3(signature = (vectors, inverse = false))]
-    fn apply<'py>(&self, py: Python<'py>, vectors: &Bound<'_, PyAny>, inverse: bool) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn apply<'py>(
+        &self,
+        py: Python<'py>,
+        vectors: &Bound<'_, PyAny>,
+        inverse: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (d, m, vsingle) = rows(py, vectors, "vectors", 3)?;
         let n = self.q.len();
         if n != m && n != 1 && m != 1 {
@@ -363,12 +413,14 @@ impl Rotation {
     /// Composition `self * other`: apply `other` first, then `self` (scipy's order), q₁ ⊗ q₂.
     /// Book: F2.15.7 (corrected order), §2.16.
     fn __mul__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let other = other.downcast::<Rotation>().map_err(|_| PyTypeError::new_err("other: not a Rotation; valid: Rotation * Rotation"))?;
+        let other = other
+            .downcast::<Rotation>()
+            .map_err(|_| PyTypeError::new_err("other: not a Rotation; valid: Rotation * Rotation"))?;
         let o = other.get();
         let (n, single) = self.pair(o)?;
         let (a, b) = (&self.q, &o.q);
         let q = nogil(py, "compose", || {
-            Ok((0..n).map(|k| a[if a.len() == 1 { 0 } else { k }] * b[if b.len() == 1 { 0 } else { k }]).collect())
+            Ok(par_map(n, |k| a[if a.len() == 1 { 0 } else { k }] * b[if b.len() == 1 { 0 } else { k }]))
         })?;
         Ok(Self::new(q, single))
     }
@@ -392,7 +444,9 @@ impl Rotation {
         let (n, single) = self.pair(other)?;
         let (a, b) = (&self.q, &other.q);
         let q = nogil(py, "slerp", || {
-            Ok((0..n).map(|k| a[if a.len() == 1 { 0 } else { k }].slerp(&b[if b.len() == 1 { 0 } else { k }], t)).collect())
+            Ok((0..n)
+                .map(|k| a[if a.len() == 1 { 0 } else { k }].slerp(&b[if b.len() == 1 { 0 } else { k }], t))
+                .collect())
         })?;
         Ok(Self::new(q, single))
     }

@@ -18,14 +18,19 @@ use crate::util::{nogil, real, rows, vector};
 fn davenport_axes(py: Python<'_>, axes: &Bound<'_, PyAny>) -> PyResult<[Vector3<f64>; 3]> {
     let r = real(py, axes, "axes")?;
     if r.shape != [3, 3] {
-        return Err(PyValueError::new_err(format!("axes: shape {}; valid: (3, 3), one axis per row", crate::util::shape_str(&r.shape))));
+        return Err(PyValueError::new_err(format!(
+            "axes: shape {}; valid: (3, 3), one axis per row",
+            crate::util::shape_str(&r.shape)
+        )));
     }
     let mut n = [Vector3::zeros(); 3];
     for (k, a) in n.iter_mut().enumerate() {
         let v = Vector3::new(r.data[3 * k], r.data[3 * k + 1], r.data[3 * k + 2]);
         let len = v.norm();
         if !(len > 0.0 && len.is_finite()) {
-            return Err(PyValueError::new_err(format!("axes[{k}] has norm {len}; valid: a nonzero finite vector")));
+            return Err(PyValueError::new_err(format!(
+                "axes[{k}] has norm {len}; valid: a nonzero finite vector"
+            )));
         }
         *a = v / len;
     }
@@ -44,7 +49,9 @@ fn extrinsic(order: &str) -> PyResult<bool> {
     match order {
         "e" | "extrinsic" => Ok(true),
         "i" | "intrinsic" => Ok(false),
-        _ => Err(PyValueError::new_err(format!("order = {order:?}; valid: 'e'/'extrinsic' or 'i'/'intrinsic'"))),
+        _ => Err(PyValueError::new_err(format!(
+            "order = {order:?}; valid: 'e'/'extrinsic' or 'i'/'intrinsic'"
+        ))),
     }
 }
 
@@ -105,7 +112,13 @@ impl Rotation {
     /// order applied. Book: §2.12 (composition of rotations about given axes), F2.15.7.
     #[staticmethod]
     #[pyo3(signature = (axes, order, angles, degrees = false))]
-    fn from_davenport(py: Python<'_>, axes: &Bound<'_, PyAny>, order: &str, angles: &Bound<'_, PyAny>, degrees: bool) -> PyResult<Self> {
+    fn from_davenport(
+        py: Python<'_>,
+        axes: &Bound<'_, PyAny>,
+        order: &str,
+        angles: &Bound<'_, PyAny>,
+        degrees: bool,
+    ) -> PyResult<Self> {
         let n = davenport_axes(py, axes)?;
         let ext = extrinsic(order)?;
         let (d, _, single) = rows(py, angles, "angles", 3)?;
@@ -136,7 +149,9 @@ impl Rotation {
         let n = davenport_axes(py, axes)?;
         let ext = extrinsic(order)?;
         if !matches!(gimbal_lock, "warn" | "raise" | "ignore") {
-            return Err(PyValueError::new_err(format!("gimbal_lock = {gimbal_lock:?}; valid: 'warn', 'raise', 'ignore'")));
+            return Err(PyValueError::new_err(format!(
+                "gimbal_lock = {gimbal_lock:?}; valid: 'warn', 'raise', 'ignore'"
+            )));
         }
         let q = &self.q;
         let (v, locks) = nogil(py, "as_davenport", || {
@@ -153,14 +168,21 @@ impl Rotation {
             Ok((v, locks))
         })?;
         if !locks.is_empty() {
-            let msg = format!("gimbal lock at {} of {} rotations (first: {}); third angle set to 0", locks.len(), q.len(), locks[0]);
+            let msg = format!(
+                "gimbal lock at {} of {} rotations (first: {}); third angle set to 0",
+                locks.len(),
+                q.len(),
+                locks[0]
+            );
             match gimbal_lock {
                 "raise" => {
                     let e = GimbalLockError::new_err(msg);
                     e.value(py).setattr("indices", locks)?;
                     return Err(e);
                 }
-                "warn" => PyErr::warn(py, &py.get_type::<GimbalLockWarning>(), &std::ffi::CString::new(msg)?, 1)?,
+                "warn" => {
+                    PyErr::warn(py, &py.get_type::<GimbalLockWarning>(), &std::ffi::CString::new(msg)?, 1)?
+                }
                 _ => {}
             }
         }
@@ -181,7 +203,9 @@ impl Rotation {
             return Err(PyValueError::new_err(format!("weights[{k}] = {}; valid: weights ≥ 0", w[k])));
         }
         if w.iter().sum::<f64>() <= 0.0 || n == 0 {
-            return Err(PyValueError::new_err("weights: all zero (or no rotations); valid: a positive total weight"));
+            return Err(PyValueError::new_err(
+                "weights: all zero (or no rotations); valid: a positive total weight",
+            ));
         }
         let q = &self.q;
         let m = nogil(py, "mean", || {
@@ -203,11 +227,18 @@ impl Rotation {
     /// rotation taking b to a. Book: §2.10 (orthogonal matrices); Kabsch 1976, Markley 1988.
     #[staticmethod]
     #[pyo3(signature = (a, b, weights = None))]
-    fn align_vectors(py: Python<'_>, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>, weights: Option<Bound<'_, PyAny>>) -> PyResult<(Self, f64)> {
+    fn align_vectors(
+        py: Python<'_>,
+        a: &Bound<'_, PyAny>,
+        b: &Bound<'_, PyAny>,
+        weights: Option<Bound<'_, PyAny>>,
+    ) -> PyResult<(Self, f64)> {
         let (da, na, _) = rows(py, a, "a", 3)?;
         let (db, nb, _) = rows(py, b, "b", 3)?;
         if na != nb {
-            return Err(PyValueError::new_err(format!("a has {na} vectors and b {nb}; valid: the same number")));
+            return Err(PyValueError::new_err(format!(
+                "a has {na} vectors and b {nb}; valid: the same number"
+            )));
         }
         let w = match weights {
             Some(w) => vector(py, &w, "weights", Some(na))?,
@@ -226,11 +257,14 @@ impl Rotation {
                 bm += x * y.transpose() * *w;
             }
             if bm.iter().all(|x| *x == 0.0) {
-                return Err(PyValueError::new_err("a, b: no weighted pair of nonzero vectors; valid: at least one"));
+                return Err(PyValueError::new_err(
+                    "a, b: no weighted pair of nonzero vectors; valid: at least one",
+                ));
             }
             nearest_rotation(&bm).map_err(|e| PyValueError::new_err(format!("align_vectors: {e}")))?
         };
-        let rssd = va.iter().zip(&vb).zip(&w).map(|((x, y), w)| w * (x - c * y).norm_squared()).sum::<f64>().sqrt();
+        let rssd =
+            va.iter().zip(&vb).zip(&w).map(|((x, y), w)| w * (x - c * y).norm_squared()).sum::<f64>().sqrt();
         Ok((Self::new(vec![Quaternion::from_rotation_matrix_unchecked(&c).canonical()], true), rssd))
     }
 }

@@ -28,12 +28,15 @@ pyo3::create_exception!(
 pub(crate) fn scene_err(py: Python<'_>, e: &RsError) -> PyErr {
     let err = SceneError::new_err(e.to_string());
     let v = err.value(py);
-    let (file, line, col, path, t): (Option<&str>, Option<usize>, Option<usize>, Option<&str>, Option<f64>) = match e {
-        RsError::Parse { file, line, column, .. } => (Some(file), Some(*line), Some(*column), None, None),
-        RsError::Invalid { file, line, column, path, .. } => (Some(file), Some(*line), Some(*column), Some(path), None),
-        RsError::Run { t, .. } => (None, None, None, None, Some(*t)),
-        _ => (None, None, None, None, None),
-    };
+    let (file, line, col, path, t): (Option<&str>, Option<usize>, Option<usize>, Option<&str>, Option<f64>) =
+        match e {
+            RsError::Parse { file, line, column, .. } => (Some(file), Some(*line), Some(*column), None, None),
+            RsError::Invalid { file, line, column, path, .. } => {
+                (Some(file), Some(*line), Some(*column), Some(path), None)
+            }
+            RsError::Run { t, .. } => (None, None, None, None, Some(*t)),
+            _ => (None, None, None, None, None),
+        };
     let _ = v.setattr("file", file);
     let _ = v.setattr("line", line);
     let _ = v.setattr("col", col);
@@ -78,7 +81,9 @@ fn set(doc: &mut toml::Value, path: &str, x: &Bound<'_, PyAny>) -> Result<(), St
     let mut cur = doc;
     for seg in path.split('.') {
         cur = match cur {
-            toml::Value::Table(t) => t.get_mut(seg).ok_or_else(|| format!("`{path}`: no key `{seg}` in the scene"))?,
+            toml::Value::Table(t) => {
+                t.get_mut(seg).ok_or_else(|| format!("`{path}`: no key `{seg}` in the scene"))?
+            }
             toml::Value::Array(a) => {
                 let i: usize = seg.parse().map_err(|_| format!("`{path}`: `{seg}` must be an index"))?;
                 let n = a.len();
@@ -119,7 +124,11 @@ impl Scene {
     }
 
     /// The scene with `overrides` applied (none: a clone).
-    pub(crate) fn with(&self, py: Python<'_>, overrides: &[(String, Bound<'_, PyAny>)]) -> PyResult<Option<RsScene>> {
+    pub(crate) fn with(
+        &self,
+        py: Python<'_>,
+        overrides: &[(String, Bound<'_, PyAny>)],
+    ) -> PyResult<Option<RsScene>> {
         if overrides.is_empty() {
             return Ok(None);
         }
@@ -130,14 +139,20 @@ impl Scene {
         }
         let text = toml::to_string(&doc).map_err(|e| PyValueError::new_err(format!("overrides: {e}")))?;
         let label = format!("{} (with overrides)", self.file);
-        nogil(py, "Scene overrides", || Ok(RsScene::from_toml(&text, &label)))?.map(Some).map_err(|e| scene_err(py, &e))
+        nogil(py, "Scene overrides", || Ok(RsScene::from_toml(&text, &label)))?
+            .map(Some)
+            .map_err(|e| scene_err(py, &e))
     }
 }
 
 /// Runs `scene` without the GIL; Ctrl-C (checked every 0.1 s on the main thread) or `cancel`
 /// stop it after the current step with the rows computed (`stop.reason = "interrupted"`).
 /// Returns the run and the KeyboardInterrupt when Ctrl-C stopped it.
-pub(crate) fn run_scene(py: Python<'_>, scene: &RsScene, cancel: Option<&Cancel>) -> PyResult<(Run, Option<PyErr>)> {
+pub(crate) fn run_scene(
+    py: Python<'_>,
+    scene: &RsScene,
+    cancel: Option<&Cancel>,
+) -> PyResult<(Run, Option<PyErr>)> {
     let flag = cancel.map_or_else(|| Arc::new(AtomicBool::new(false)), |c| c.0.clone());
     let signal: Mutex<Option<PyErr>> = Mutex::new(None);
     let threading = py.import("threading")?;
@@ -193,7 +208,8 @@ impl Scene {
     /// file, line, col. Book: §4.11, §7.11.
     #[staticmethod]
     fn from_file(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Self> {
-        let meta = std::fs::metadata(&path).map_err(|e| PyValueError::new_err(format!("path {}: {e}", path.display())))?;
+        let meta = std::fs::metadata(&path)
+            .map_err(|e| PyValueError::new_err(format!("path {}: {e}", path.display())))?;
         if !meta.is_file() || meta.len() > MAX_SCENE_BYTES as u64 {
             return Err(PyValueError::new_err(format!(
                 "path {}: {} bytes or not a regular file; valid: a scene file of at most {MAX_SCENE_BYTES} bytes",
@@ -201,7 +217,8 @@ impl Scene {
                 meta.len()
             )));
         }
-        let text = std::fs::read_to_string(&path).map_err(|e| PyValueError::new_err(format!("path {}: {e}", path.display())))?;
+        let text = std::fs::read_to_string(&path)
+            .map_err(|e| PyValueError::new_err(format!("path {}: {e}", path.display())))?;
         Self::load(py, text, path.display().to_string())
     }
 
@@ -237,13 +254,21 @@ impl Scene {
 
     /// Internal: runs with overrides; a dict of t, columns, units, summary_json.
     #[pyo3(signature = (overrides, cancel = None))]
-    fn _run<'py>(&self, py: Python<'py>, overrides: Vec<(String, Bound<'py, PyAny>)>, cancel: Option<Cancel>) -> PyResult<Bound<'py, PyDict>> {
+    fn _run<'py>(
+        &self,
+        py: Python<'py>,
+        overrides: Vec<(String, Bound<'py, PyAny>)>,
+        cancel: Option<Cancel>,
+    ) -> PyResult<Bound<'py, PyDict>> {
         let own = self.with(py, &overrides)?;
         let (run, sig) = run_scene(py, own.as_ref().unwrap_or(&self.scene), cancel.as_ref())?;
         let d = guard("Scene.run", || run_to_py(py, &run))?;
         if let Some(sig) = sig {
             // Ctrl-C: `vectrix.Interrupted` (a KeyboardInterrupt) carrying what was computed
-            let e = crate::util::Interrupted::new_err(format!("{sig}: run stopped at t = {}", run.t.last().copied().unwrap_or(0.0)));
+            let e = crate::util::Interrupted::new_err(format!(
+                "{sig}: run stopped at t = {}",
+                run.t.last().copied().unwrap_or(0.0)
+            ));
             e.value(py).setattr("partial", d)?;
             return Err(e);
         }

@@ -41,10 +41,18 @@ impl Real {
 /// `TypeError` for a non-real dtype (complex, bool, object, strings), `ValueError` for NaN/∞,
 /// or more than [`MAX_ELEMENTS`] elements.
 pub fn real(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Real> {
+    // fast path: a C-contiguous float64 array is read without any call into Python
+    if let Ok(a) = obj.downcast::<PyArrayDyn<f64>>()
+        && a.is_c_contiguous()
+        && a.len() <= MAX_ELEMENTS
+    {
+        let ro = a.readonly();
+        return finite(Real { shape: a.shape().to_vec(), data: ro.as_slice()?.to_vec() }, name);
+    }
     let np = py.import("numpy")?;
-    let arr = np
-        .call_method1("asarray", (obj,))
-        .map_err(|e| PyTypeError::new_err(format!("{name}: not an array of numbers ({e}); valid: real numbers")))?;
+    let arr = np.call_method1("asarray", (obj,)).map_err(|e| {
+        PyTypeError::new_err(format!("{name}: not an array of numbers ({e}); valid: real numbers"))
+    })?;
     let kind: String = arr.getattr("dtype")?.getattr("kind")?.extract()?;
     if !matches!(kind.as_str(), "f" | "i" | "u") {
         let dt = arr.getattr("dtype")?.str()?.to_string();
@@ -54,23 +62,49 @@ pub fn real(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Real
     }
     let size: usize = arr.getattr("size")?.extract()?;
     if size > MAX_ELEMENTS {
-        return Err(PyValueError::new_err(format!(
-            "{name}: {size} elements; valid: at most {MAX_ELEMENTS}"
-        )));
+        return Err(PyValueError::new_err(format!("{name}: {size} elements; valid: at most {MAX_ELEMENTS}")));
     }
     let f = np.getattr("float64")?;
     let arr = np.call_method1("ascontiguousarray", (arr, f))?;
     let arr = arr.downcast::<PyArrayDyn<f64>>()?;
     let shape = arr.shape().to_vec();
     let ro = arr.readonly();
-    let data = ro.as_slice()?.to_vec();
-    if let Some(k) = data.iter().position(|x| !x.is_finite()) {
+    finite(Real { shape, data: ro.as_slice()?.to_vec() }, name)
+}
+
+/// `r`, or a ValueError naming the first non-finite element.
+fn finite(r: Real, name: &str) -> PyResult<Real> {
+    if let Some(k) = r.data.iter().position(|x| !x.is_finite()) {
         return Err(PyValueError::new_err(format!(
             "{name}: element {k} (flat index) is {}; valid: finite numbers",
-            data[k]
+            r.data[k]
         )));
     }
-    Ok(Real { shape, data })
+    Ok(r)
+}
+
+/// The number of cores, asked once (`available_parallelism` reads cgroup files on Linux).
+pub fn cores() -> usize {
+    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |c| c.get()))
+}
+
+/// `f(k)` for k in 0..n, on all cores when n ≥ 16384.
+pub fn par_map<T: Send>(n: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
+    let c = cores();
+    if n < 16_384 || c == 1 {
+        return (0..n).map(f).collect();
+    }
+    let per = n.div_ceil(c);
+    std::thread::scope(|s| {
+        let hs: Vec<_> = (0..c)
+            .map(|k| {
+                let f = &f;
+                s.spawn(move || (k * per..((k + 1) * per).min(n)).map(f).collect::<Vec<T>>())
+            })
+            .collect();
+        hs.into_iter().flat_map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))).collect()
+    })
 }
 
 /// A shape as numpy prints it: `(5,)`, `(2, 3)`.
@@ -93,12 +127,20 @@ pub fn vector(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, n: Option<usiz
 
 /// Rows of length `width`: a single (width,) row or a (k, width) batch; returns the rows and
 /// whether the input was a single row.
-pub fn rows(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str, width: usize) -> PyResult<(Vec<f64>, usize, bool)> {
+pub fn rows(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    name: &str,
+    width: usize,
+) -> PyResult<(Vec<f64>, usize, bool)> {
     let r = real(py, obj, name)?;
     match r.shape.as_slice() {
         [w] if *w == width => Ok((r.data, 1, true)),
         [n, w] if *w == width => Ok((r.data, *n, false)),
-        s => Err(PyValueError::new_err(format!("{name}: shape {}; valid: ({width},) or (N, {width})", shape_str(s)))),
+        s => Err(PyValueError::new_err(format!(
+            "{name}: shape {}; valid: ({width},) or (N, {width})",
+            shape_str(s)
+        ))),
     }
 }
 
@@ -130,12 +172,11 @@ pub fn nogil<T: Send>(py: Python<'_>, what: &str, f: impl FnOnce() -> PyResult<T
 /// Splits `n` items into chunks for the available cores (one chunk below 16384 items) and
 /// runs `f(start, end, chunk_out)` on each, in scoped threads; `out` has `width` values per item.
 pub fn par_fill(n: usize, width: usize, out: &mut [f64], f: impl Fn(usize, usize, &mut [f64]) + Sync) {
-    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
-    if n < 16_384 || cores == 1 {
+    if n < 16_384 || cores() == 1 {
         f(0, n, out);
         return;
     }
-    let per = n.div_ceil(cores);
+    let per = n.div_ceil(cores());
     std::thread::scope(|s| {
         for (k, chunk) in out.chunks_mut(per * width).enumerate() {
             let f = &f;

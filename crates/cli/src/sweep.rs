@@ -199,7 +199,8 @@ pub(crate) fn sweep(
             .collect();
     }
     // a shard keeps the global run numbers of its slice
-    let mine: Vec<usize> = (0..combos.len()).filter(|i| opts.shard.is_none_or(|(k, n)| i % n == k - 1)).collect();
+    let mine: Vec<usize> =
+        (0..combos.len()).filter(|i| opts.shard.is_none_or(|(k, n)| i % n == k - 1)).collect();
     let combos: Vec<(usize, Vec<(String, f64)>)> =
         combos.into_iter().enumerate().filter(|(i, _)| mine.binary_search(i).is_ok()).collect();
     let total = combos.len();

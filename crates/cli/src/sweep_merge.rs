@@ -19,9 +19,12 @@ pub(crate) fn merge(out: &mut impl Write, dirs: &[PathBuf]) -> Result<(), BoxErr
     let mut rows: Vec<(usize, String, PathBuf)> = Vec::new();
     for d in dirs {
         let p = d.join("sweep.csv");
-        let meta = std::fs::metadata(&p).map_err(|e| format!("{}: {e} (valid: the output folder of a sweep shard)", p.display()))?;
+        let meta = std::fs::metadata(&p)
+            .map_err(|e| format!("{}: {e} (valid: the output folder of a sweep shard)", p.display()))?;
         if !meta.is_file() || meta.len() > MAX_TABLE_BYTES {
-            return Err(format!("{}: not a regular file of at most {MAX_TABLE_BYTES} bytes", p.display()).into());
+            return Err(
+                format!("{}: not a regular file of at most {MAX_TABLE_BYTES} bytes", p.display()).into()
+            );
         }
         let text = std::fs::read_to_string(&p).map_err(|e| format!("{}: {e}", p.display()))?;
         let mut lines = text.lines();
@@ -53,11 +56,19 @@ pub(crate) fn merge(out: &mut impl Write, dirs: &[PathBuf]) -> Result<(), BoxErr
     rows.sort_by_key(|r| r.0);
     for w in rows.windows(2) {
         if w[0].0 == w[1].0 {
-            return Err(format!("run {:03} is in {} and in {}; valid: each shard once", w[0].0, w[0].2.display(), w[1].2.display()).into());
+            return Err(format!(
+                "run {:03} is in {} and in {}; valid: each shard once",
+                w[0].0,
+                w[0].2.display(),
+                w[1].2.display()
+            )
+            .into());
         }
     }
     if let Some(k) = rows.iter().enumerate().find(|(i, r)| r.0 != *i).map(|(i, _)| i) {
-        return Err(format!("run {k:03} is in no shard given; valid: every shard of the sweep (K = 1 … N)").into());
+        return Err(
+            format!("run {k:03} is in no shard given; valid: every shard of the sweep (K = 1 … N)").into()
+        );
     }
     if let Some((h, _)) = header {
         writeln!(out, "{h}")?;

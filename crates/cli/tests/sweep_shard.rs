@@ -78,7 +78,9 @@ fn sharded_and_merged_sweep_equals_the_unsharded_one() {
     // each shard keeps the global run numbers: shard 2 of 3 ran runs 1, 4, 7
     assert!(d(2).join("run-004/trajectory.csv").exists());
     assert!(!d(2).join("run-000").exists());
-    let merged = cli(&["sweep", "merge", d(3).to_str().unwrap(), d(1).to_str().unwrap(), d(2).to_str().unwrap()]).unwrap();
+    let merged =
+        cli(&["sweep", "merge", d(3).to_str().unwrap(), d(1).to_str().unwrap(), d(2).to_str().unwrap()])
+            .unwrap();
     assert_eq!(without_wall(&merged), without_wall(&want), "merged:\n{merged}\nwhole:\n{want}");
     // the trajectories themselves are the same bits
     let a = std::fs::read(whole.join("osc-sweep/run-007/trajectory.csv")).unwrap();
@@ -89,10 +91,12 @@ fn sharded_and_merged_sweep_equals_the_unsharded_one() {
     assert!(e.contains("run 002 is in no shard"), "{e}");
     let e = cli(&["sweep", "merge", d(1).to_str().unwrap(), d(1).to_str().unwrap()]).unwrap_err();
     assert!(e.contains("run 000 is in"), "{e}");
-    let e = cli(&["sweep", "merge", d(1).to_str().unwrap(), whole.join("osc-sweep").to_str().unwrap()]).unwrap_err();
+    let e = cli(&["sweep", "merge", d(1).to_str().unwrap(), whole.join("osc-sweep").to_str().unwrap()])
+        .unwrap_err();
     assert!(e.contains("run 000 is in"), "{e}");
     for bad in ["0/3", "4/3", "1/0", "x", "1/2/3"] {
-        let e = cli(&["sweep", scene.to_str().unwrap(), "--param", "duration=1", "--shard", bad]).unwrap_err();
+        let e =
+            cli(&["sweep", scene.to_str().unwrap(), "--param", "duration=1", "--shard", bad]).unwrap_err();
         assert!(e.contains("valid: K/N"), "{bad}: {e}");
     }
 }
