@@ -207,6 +207,7 @@ fn _zpk_to_tf(zeros: Vec<Complex64>, poles: Vec<Complex64>, gain: f64) -> PyResu
 /// Book: §15.18, Rules 1–7.
 #[pyfunction]
 #[pyo3(signature = (num, den, k_max, max_step = None))]
+#[allow(clippy::type_complexity)]
 fn _root_locus<'py>(
     py: Python<'py>,
     num: &Bound<'_, PyAny>,

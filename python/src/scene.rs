@@ -28,6 +28,7 @@ pyo3::create_exception!(
 pub(crate) fn scene_err(py: Python<'_>, e: &RsError) -> PyErr {
     let err = SceneError::new_err(e.to_string());
     let v = err.value(py);
+    #[allow(clippy::type_complexity)]
     let (file, line, col, path, t): (Option<&str>, Option<usize>, Option<usize>, Option<&str>, Option<f64>) =
         match e {
             RsError::Parse { file, line, column, .. } => (Some(file), Some(*line), Some(*column), None, None),
