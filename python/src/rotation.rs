@@ -9,9 +9,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 use numpy::{IntoPyArray, PyArrayDyn, PyArrayMethods};
-use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PySlice;
 use vectrix_rotation::{
     EulerAngles, EulerKind, EulerSequence, Quaternion, ROTATION_TOL, check_rotation_matrix, nearest_rotation,
 };
@@ -449,78 +448,6 @@ impl Rotation {
                 .collect())
         })?;
         Ok(Self::new(q, single))
-    }
-
-    /// Number of rotations (a single rotation has none, like scipy: TypeError).
-    fn __len__(&self) -> PyResult<usize> {
-        if self.single {
-            return Err(PyTypeError::new_err("a single rotation has no len(); valid: a stack of rotations"));
-        }
-        Ok(self.q.len())
-    }
-
-    /// Element or slice (numpy-style integer, slice, or integer array).
-    fn __getitem__(&self, py: Python<'_>, key: &Bound<'_, PyAny>) -> PyResult<Self> {
-        if self.single {
-            return Err(PyTypeError::new_err("a single rotation is not subscriptable"));
-        }
-        let n = self.q.len() as isize;
-        if let Ok(k) = key.extract::<isize>() {
-            let i = if k < 0 { k + n } else { k };
-            if !(0..n).contains(&i) {
-                return Err(PyIndexError::new_err(format!("index {k}; valid: -{n} ≤ k < {n}")));
-            }
-            return Ok(Self::new(vec![self.q[i as usize]], true));
-        }
-        if let Ok(s) = key.downcast::<PySlice>() {
-            let ind = s.indices(n)?;
-            let mut v = Vec::new();
-            let mut i = ind.start;
-            while (ind.step > 0 && i < ind.stop) || (ind.step < 0 && i > ind.stop) {
-                v.push(self.q[i as usize]);
-                i += ind.step;
-            }
-            return Ok(Self::new(v, false));
-        }
-        let idx = real(py, key, "index")?;
-        let mut v = Vec::with_capacity(idx.len());
-        for &x in &idx.data {
-            let i = if x < 0.0 { x + n as f64 } else { x };
-            if i.fract() != 0.0 || !(0.0..n as f64).contains(&i) {
-                return Err(PyIndexError::new_err(format!("index {x}; valid: integers -{n} ≤ k < {n}")));
-            }
-            v.push(self.q[i as usize]);
-        }
-        Ok(Self::new(v, false))
-    }
-
-    /// Whether this is one rotation (not a stack).
-    #[getter]
-    fn single(&self) -> bool {
-        self.single
-    }
-
-    fn __repr__(&self) -> String {
-        if self.single {
-            let q = self.q[0];
-            format!("Rotation.from_quat([{}, {}, {}, {}])", q.b, q.c, q.d, q.a)
-        } else {
-            format!("<vectrix.Rotation: {} rotations>", self.q.len())
-        }
-    }
-
-    /// Internal: the stack of rotations `rotations` joined (used by `Rotation.concatenate`).
-    #[staticmethod]
-    fn _concat(rotations: Vec<Rotation>) -> Self {
-        Self::new(rotations.iter().flat_map(|r| r.q.iter().copied()).collect(), false)
-    }
-
-    /// Internal: the same rotations as a stack (single → N = 1) or, when `single`, unstacked.
-    fn _as_single(&self, single: bool) -> PyResult<Self> {
-        if single && self.q.len() != 1 {
-            return Err(PyValueError::new_err("only a stack of one rotation can be single"));
-        }
-        Ok(Self::new(self.q.clone(), single))
     }
 }
 

@@ -29,15 +29,20 @@ pub(crate) fn scene_err(py: Python<'_>, e: &RsError) -> PyErr {
     let err = SceneError::new_err(e.to_string());
     let v = err.value(py);
     #[allow(clippy::type_complexity)]
-    let (file, line, col, path, t): (Option<&str>, Option<usize>, Option<usize>, Option<&str>, Option<f64>) =
-        match e {
-            RsError::Parse { file, line, column, .. } => (Some(file), Some(*line), Some(*column), None, None),
-            RsError::Invalid { file, line, column, path, .. } => {
-                (Some(file), Some(*line), Some(*column), Some(path), None)
-            }
-            RsError::Run { t, .. } => (None, None, None, None, Some(*t)),
-            _ => (None, None, None, None, None),
-        };
+    let (file, line, col, path, t): (
+        Option<&str>,
+        Option<usize>,
+        Option<usize>,
+        Option<&str>,
+        Option<f64>,
+    ) = match e {
+        RsError::Parse { file, line, column, .. } => (Some(file), Some(*line), Some(*column), None, None),
+        RsError::Invalid { file, line, column, path, .. } => {
+            (Some(file), Some(*line), Some(*column), Some(path), None)
+        }
+        RsError::Run { t, .. } => (None, None, None, None, Some(*t)),
+        _ => (None, None, None, None, None),
+    };
     let _ = v.setattr("file", file);
     let _ = v.setattr("line", line);
     let _ = v.setattr("col", col);
