@@ -39,6 +39,7 @@ mod report;
 mod run;
 mod sink;
 mod sweep;
+mod sweep_merge;
 mod tour;
 mod view;
 
@@ -94,14 +95,24 @@ pub enum Command {
         #[arg(long)]
         strict: bool,
     },
-    /// Runs a scene for every value of one or more parameters, in parallel.
+    /// Runs a scene for every value of one or more parameters, in parallel; `--shard K/N`
+    /// runs one slice of them (a Slurm array task), `sweep merge DIR…` joins the slices.
+    #[command(args_conflicts_with_subcommands = true)]
     Sweep {
+        /// `merge DIR…`: one table from the sweep.csv of sharded sweeps.
+        #[command(subcommand)]
+        merge: Option<SweepCommand>,
         /// The scene file (TOML).
-        scene: PathBuf,
+        #[arg(required = true)]
+        scene: Option<PathBuf>,
         /// `PATH=v1,v2,…` with PATH a dotted path into the file (`effects.0.k`,
         /// `bodies.1.mass.mass`, `duration`); several give the Cartesian product.
         #[arg(long, required = true)]
         param: Vec<String>,
+        /// `K/N`: run only the K-th of N slices (runs i with i mod N = K − 1, numbered as in
+        /// the whole sweep), into `<out>/<name>-sweep-shard-K-of-N/`.
+        #[arg(long, value_parser = sweep::parse_shard)]
+        shard: Option<(usize, usize)>,
         /// Parent directory of the output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
@@ -154,6 +165,18 @@ pub enum Command {
     },
 }
 
+/// Subcommands of `vectrix sweep`.
+#[derive(Debug, Subcommand)]
+pub enum SweepCommand {
+    /// Prints one sweep.csv (rows in run order) from the output folders of the shards of one
+    /// sweep; refuses folders of different sweeps, a run given twice, or a missing run.
+    Merge {
+        /// The shards' output folders (`<name>-sweep-shard-K-of-N`).
+        #[arg(required = true)]
+        dirs: Vec<PathBuf>,
+    },
+}
+
 /// Parses `args` (the first is the program name) and runs, printing to `out`. A run that a
 /// budget or Ctrl-C stopped early still writes its output and returns its [`Outcome`].
 ///
@@ -197,9 +220,18 @@ where
             input::set_strict(strict);
             done(check::check(out, &scene))
         }
-        Some(Command::Sweep { scene, param, out: dir, quiet, units, max_output_bytes }) => {
-            let opts =
-                sweep::Options { dir: &dir, quiet, units: units.parse::<UnitSystem>()?, max_output_bytes };
+        Some(Command::Sweep { merge: Some(SweepCommand::Merge { dirs }), .. }) => {
+            done(sweep_merge::merge(out, &dirs))
+        }
+        Some(Command::Sweep { scene, param, shard, out: dir, quiet, units, max_output_bytes, .. }) => {
+            let scene = scene.ok_or("sweep: the scene file is missing")?;
+            let opts = sweep::Options {
+                dir: &dir,
+                quiet,
+                units: units.parse::<UnitSystem>()?,
+                max_output_bytes,
+                shard,
+            };
             sweep::sweep(out, &scene, &param, &opts)
         }
         Some(Command::Linearize { scene, out: dir, max_output_bytes }) => {

@@ -128,6 +128,21 @@ pub(crate) struct Options<'a> {
     pub units: UnitSystem,
     /// The byte budget.
     pub max_output_bytes: u64,
+    /// `Some((k, n))`: run only the k-th of n slices (1 ≤ k ≤ n), see [`parse_shard`].
+    pub shard: Option<(usize, usize)>,
+}
+
+/// `K/N` of `--shard`: the runs whose number i (0-based, in the order of the unsharded sweep)
+/// has i mod N = K − 1, so that the slices of a grid take about equal work; 1 ≤ K ≤ N ≤
+/// [`MAX_SWEEP_RUNS`]. Slurm: `--array=1-N` and `--shard $SLURM_ARRAY_TASK_ID/N`.
+pub(crate) fn parse_shard(s: &str) -> Result<(usize, usize), String> {
+    let bad = || format!("--shard `{s}`; valid: K/N with 1 ≤ K ≤ N ≤ {MAX_SWEEP_RUNS} (e.g. 3/8)");
+    let (k, n) = s.split_once('/').ok_or_else(bad)?;
+    let (k, n): (usize, usize) = (k.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
+    if !(1 <= k && k <= n && n <= MAX_SWEEP_RUNS) {
+        return Err(bad());
+    }
+    Ok((k, n))
 }
 
 /// Refuses a parameter given twice (`--param duration=1,2 --param duration=3`): every run
@@ -183,10 +198,16 @@ pub(crate) fn sweep(
             .flat_map(|c| vals.iter().map(move |v| [c.clone(), vec![(p.clone(), *v)]].concat()))
             .collect();
     }
+    // a shard keeps the global run numbers of its slice
+    let mine: Vec<usize> =
+        (0..combos.len()).filter(|i| opts.shard.is_none_or(|(k, n)| i % n == k - 1)).collect();
+    let combos: Vec<(usize, Vec<(String, f64)>)> =
+        combos.into_iter().enumerate().filter(|(i, _)| mine.binary_search(i).is_ok()).collect();
+    let total = combos.len();
     // every run's scene is validated before any is run; errors point into the user's file
     let scenes: Vec<Scene> = combos
         .iter()
-        .map(|combo| -> Result<Scene, BoxError> {
+        .map(|(_, combo)| -> Result<Scene, BoxError> {
             let mut d = doc.clone();
             for (p, v) in combo {
                 set(&mut d, p, *v).map_err(|m| src.invalid(item_path(p), m))?;
@@ -196,11 +217,14 @@ pub(crate) fn sweep(
             Ok(Scene::from_spec_in(spec, &src)?)
         })
         .collect::<Result<_, _>>()?;
-    let name = format!("{}-sweep", base_scene.spec().name);
+    let name = match opts.shard {
+        Some((k, n)) => format!("{}-sweep-shard-{k}-of-{n}", base_scene.spec().name),
+        None => format!("{}-sweep", base_scene.spec().name),
+    };
     let dir = opts.dir;
     not_inside(path, dir, &name)?;
     preflight(dir, &name)?;
-    let labels: Vec<usize> = combos.iter().map(|c| describe(c).len()).collect();
+    let labels: Vec<usize> = combos.iter().map(|(_, c)| describe(c).len()).collect();
     let limits = crate::budget::sweep(&scenes, &labels, params.len())
         .limits(opts.max_output_bytes)
         .map_err(|m| located(text, file, format!("{total} runs: {m}")))?;
@@ -208,8 +232,7 @@ pub(crate) fn sweep(
     let results: Vec<Result<Done, String>> = scenes
         .into_par_iter()
         .zip(combos)
-        .enumerate()
-        .map(|(index, (scene, label))| {
+        .map(|(scene, (index, label))| {
             let run = scene
                 .run_with(RunControl { progress: &mut |_| {}, cancel: Some(interrupted()) })
                 .and_then(|r| r.in_units(opts.units))

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Builds the Python package in a fresh virtual environment and runs its pytest suite
+# (python/tests: against scipy, python-control, Pinocchio's stored reference, Dask).
+#
+#   scripts/python-tests.sh            # needs Rust and Python ≥ 3.11 (python3), and PyPI
+#
+# The test dependencies are pinned; maturin comes from PyPI as the build backend. The
+# extension is compiled into $CARGO_TARGET_DIR (default target/python, kept between runs).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+PY=${PYTHON:-python3}
+VENV=$(mktemp -d)
+trap 'rm -rf "$VENV"' EXIT
+"$PY" -m venv "$VENV"
+"$VENV/bin/pip" install -q --upgrade pip
+export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$PWD/target/python}
+"$VENV/bin/pip" install -q ./python \
+    "numpy==2.4.6" "scipy==1.17.1" "control==0.10.2" "pandas==3.1.1" \
+    "dask[distributed]==${DASK_VERSION:-2026.8.0}" "hypothesis==${HYPOTHESIS_VERSION:-6.170.27}" "pytest==${PYTEST_VERSION:-9.2.0}"
+"$VENV/bin/python" -c "import vectrix"
+cd python && "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests
