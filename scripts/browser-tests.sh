@@ -21,8 +21,10 @@ trap 'rm -rf "$scratch"' EXIT
 cp scripts/browser/package.json scripts/browser/package-lock.json scripts/browser/check.mjs "$scratch/"
 (cd "$scratch" && npm ci --silent --no-audit --no-fund)
 
-cargo build --release --quiet --bin vectrix
-bin="${CARGO_TARGET_DIR:-$root/target}/release/vectrix"
+# the `test` profile (opt-level 1, dependencies at 2): after `cargo test --workspace` (as in
+# .ci/run) this reuses its build instead of compiling a release binary
+cargo build --profile test --quiet --bin vectrix
+bin="${CARGO_TARGET_DIR:-$root/target}/debug/vectrix"
 out="$scratch/out"
 "$bin" run --quiet --out "$out" >/dev/null
 "$bin" run examples/scenes/four_bar.toml --quiet --out "$out" >/dev/null
