@@ -23,7 +23,92 @@ fn fin(s: &[f64]) -> bool {
     s.iter().all(|x| x.is_finite())
 }
 
+/// y′ = −k(y − cos t), y(0) = 1, k = 1000: y = (k² cos t + k sin t + e^{−kt})/(k² + 1).
+fn stiff_exact(t: f64) -> f64 {
+    let k = 1000.0_f64;
+    (k * k * t.cos() + k * t.sin() + (-k * t).exp()) / (k * k + 1.0)
+}
+
 cases! {
+    // RADAU5 (issue 34) and the one stepping interface over it and the explicit pairs: hostile
+    // tolerances, Newton caps, states and intervals are refused or give finite answers; on the
+    // stiff y′ = −1000(y − cos t) every route ends on the closed form; the steppers reach t_end
+    // exactly, give dense output between steps, restart and move their end; a NaN Jacobian is a
+    // typed error.
+    radau5 ["Radau5::new", "Radau5::rtol", "Radau5::atol", "Radau5::h0", "Radau5::h_max", "Radau5::max_steps",
+        "Radau5::max_newton", "Radau5::dense", "Radau5::solve", "Radau5::solve_with_jacobian",
+        "Radau5::solve_with_events", "Radau5::solve_with_jacobian_and_events",
+        "RadauStepper::new", "RadauStepper::t", "RadauStepper::y", "RadauStepper::step_start", "RadauStepper::done",
+        "RadauStepper::work", "RadauStepper::proposed_step", "RadauStepper::end", "RadauStepper::exact_jacobian",
+        "RadauStepper::step", "RadauStepper::dense", "RadauStepper::restart", "RadauStepper::set_end",
+        "Method::max_steps", "Method::with_max_steps", "Method::tolerances",
+        "AnyStepper::new", "AnyStepper::t", "AnyStepper::y", "AnyStepper::step_start", "AnyStepper::done",
+        "AnyStepper::work", "AnyStepper::step", "AnyStepper::dense", "AnyStepper::restart", "AnyStepper::set_end",
+        "AnyStepper::end"] {
+        use vectrix::ode::{AnyStepper, Method as OdeMethod, Radau5, RadauStepper};
+        let f = |t: f64, y: &Vec<f64>| vec![-1000.0 * (y[0] - t.cos())];
+        let jac = |_: f64, _: &Vec<f64>, out: &mut [f64]| out[0] = -1000.0;
+        for x in hostile() {
+            err_or(Radau5::new().rtol(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile rtol)", |s| fin(&s.last()));
+            err_or(Radau5::new().atol(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile atol)", |s| fin(&s.last()));
+            err_or(Radau5::new().h0(x).h_max(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile h)", |s| fin(&s.last()));
+            err_or(Radau5::new().solve(f, 0.0, &vec![x], 1.0), "solve(hostile y0)", |s| fin(&s.last()));
+            err_or(Radau5::new().solve(f, 0.0, &vec![1.0], x), "solve(hostile t1)", |s| fin(&s.last()));
+            err_or(RadauStepper::new(&Radau5::new(), f, Some(jac), 0.0, vec![x], 1.0), "stepper(hostile y0)", |s| fin(s.y()));
+        }
+        refused(Radau5::new().max_steps(3).solve(f, 0.0, &vec![1.0], 10.0), "max_steps(3)");
+        refused(Radau5::new().max_newton(0).solve(f, 0.0, &vec![1.0], 1.0), "max_newton(0)");
+        let nan_jac = |_: f64, _: &Vec<f64>, out: &mut [f64]| out[0] = f64::NAN;
+        refused(Radau5::new().solve_with_jacobian(f, nan_jac, 0.0, &vec![1.0], 1.0), "NaN Jacobian");
+        // every route ends on the closed form (rtol 1e-8: the end error is of that order)
+        let r = Radau5::new().rtol(1e-8).atol(1e-10).dense(true);
+        let ends = [
+            r.solve(f, 0.0, &vec![1.0], 1.0).unwrap().last()[0],
+            r.solve_with_jacobian(f, jac, 0.0, &vec![1.0], 1.0).unwrap().last()[0],
+            r.solve_with_events(f, 0.0, &vec![1.0], 1.0, &mut []).unwrap().last()[0],
+            r.solve_with_jacobian_and_events(f, jac, 0.0, &vec![1.0], 1.0, &mut []).unwrap().last()[0],
+        ];
+        for e in ends {
+            assert!((e - stiff_exact(1.0)).abs() <= 1e-7, "{e} vs {}", stiff_exact(1.0));
+        }
+        // the stepper: to t_end exactly, dense output on the closed form, restart, new end
+        let mut st = RadauStepper::new(&r, f, Some(jac), 0.0, vec![1.0], 1.0).unwrap();
+        assert!(st.exact_jacobian() && st.step_start().is_none() && st.proposed_step() > 0.0);
+        while !st.done() {
+            st.step().unwrap();
+            let tm = 0.5 * (st.step_start().unwrap() + st.t());
+            let mid = st.dense().unwrap().eval(tm)[0];
+            assert!((mid - stiff_exact(tm)).abs() <= 1e-5, "dense at {tm}");
+        }
+        assert_eq!((st.t(), st.end()), (1.0, 1.0));
+        assert!(st.work().fevals > 0 && fin(st.y()));
+        refused(st.restart(0.5, vec![f64::NAN]), "restart(NaN)");
+        st.restart(1.0, vec![stiff_exact(1.0)]).unwrap();
+        refused(st.set_end(f64::NAN), "set_end(NaN)");
+        st.set_end(2.0).unwrap();
+        while !st.done() { st.step().unwrap(); }
+        assert!((st.y()[0] - stiff_exact(2.0)).abs() <= 1e-7);
+        // one interface over both kinds
+        for m in [OdeMethod::Radau5(r), OdeMethod::Explicit(Adaptive::dop853().rtol(1e-8).atol(1e-10))] {
+            let m = m.with_max_steps(100_000);
+            assert_eq!(m.max_steps(), 100_000);
+            let (rt, at) = m.tolerances();
+            assert!(rt > 0.0 && at > 0.0);
+            let mut s = AnyStepper::new(&m, f, Some(jac), 0.0, vec![1.0], 1.0).unwrap();
+            while !s.done() {
+                s.step().unwrap();
+                let mid = 0.5 * (s.step_start().unwrap() + s.t());
+                assert!(fin(&s.dense().unwrap().eval(mid)));
+            }
+            assert!((s.y()[0] - stiff_exact(1.0)).abs() <= 1e-7 && s.t() == s.end() && s.work().fevals > 0);
+            s.restart(1.0, vec![stiff_exact(1.0)]).unwrap();
+            s.set_end(1.5).unwrap();
+            while !s.done() { s.step().unwrap(); }
+            assert!((s.y()[0] - stiff_exact(1.5)).abs() <= 1e-7, "{}", s.y()[0]);
+            err_or(AnyStepper::new(&m, f, Some(jac), 0.0, vec![f64::NAN], 1.0), "AnyStepper(NaN)", |s| fin(s.y()));
+        }
+    }
+
     // The step-by-step driver: hostile intervals, states, restarts and end times are refused;
     // one step at a time reaches t_end exactly; the interpolant agrees with e^{−t}; a restart
     // with the wrong dimension or a NaN state is refused; bracket_zero keeps its bracket even

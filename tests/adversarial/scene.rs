@@ -409,6 +409,23 @@ cases! {
         assert!(Scene::from_toml(&plain, "dp.toml").unwrap().import_warnings().is_empty());
     }
 
+    // The method a scene runs with (issue 34): named, or chosen by the stiffness test, with a
+    // reason and a positive tolerance; the stiff example picks RADAU5 with an exact Jacobian,
+    // the hanging double pendulum keeps the explicit pair.
+    scene_method_choice ["Scene::method_choice"] {
+        for x in crate::harness::hostile() {
+            let Ok(s) = Scene::from_toml(&double_pendulum([x, 0.1], ""), "dp.toml") else { continue };
+            let c = s.method_choice();
+            assert!(c.rtol > 0.0 && !c.reason.is_empty(), "{c:?}");
+        }
+        let stiff = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/stiff_spring_pendulum.toml")).unwrap();
+        let c = Scene::from_toml(&stiff, "s.toml").unwrap().method_choice().clone();
+        assert_eq!(c.name, "radau5", "{c:?}");
+        assert!(c.jacobian.starts_with("exact"), "{c:?}");
+        let c = Scene::from_toml(&double_pendulum([0.0, 0.0], ""), "dp.toml").unwrap().method_choice().clone();
+        assert_ne!(c.name, "radau5", "{c:?}");
+    }
+
     // Quantity errors in a scene's words: the units library's byte positions are left out,
     // everything else is kept.
     scene_unit_message ["unit_message"] {
