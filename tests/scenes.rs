@@ -383,6 +383,20 @@ mod prop {
                 Err(SceneError::Parse { line, column, .. } | SceneError::Invalid { line, column, .. }) => {
                     prop_assert!(line >= 1 && column >= 1);
                 }
+                // several errors of one file: each located, in file order
+                Err(SceneError::Many { errors }) => {
+                    let at: Vec<(usize, usize)> = errors
+                        .iter()
+                        .map(|e| match e {
+                            SceneError::Parse { line, column, .. } | SceneError::Invalid { line, column, .. } => {
+                                (*line, *column)
+                            }
+                            _ => (0, 0),
+                        })
+                        .collect();
+                    prop_assert!(at.len() >= 2 && at.iter().all(|&(l, c)| l >= 1 && c >= 1), "{at:?}");
+                    prop_assert!(at.windows(2).all(|w| w[0] <= w[1]), "{at:?}");
+                }
                 Err(e) => prop_assert!(false, "unexpected {e}"),
             }
         }

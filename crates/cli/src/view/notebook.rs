@@ -6,7 +6,7 @@
 //! ```no_run
 //! // in an evcxr cell, after `vectrix run SCENE --out out`:
 //! let view = vectrix_cli::View::open("out/four_bar").unwrap();
-//! view // shown inline
+//! view.evcxr_display(); // in a cell, ending the cell with `view` shows it the same way
 //! ```
 //!
 //! Book: — (reporting).
