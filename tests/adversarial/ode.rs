@@ -49,11 +49,11 @@ cases! {
         let f = |t: f64, y: &Vec<f64>| vec![-1000.0 * (y[0] - t.cos())];
         let jac = |_: f64, _: &Vec<f64>, out: &mut [f64]| out[0] = -1000.0;
         for x in hostile() {
-            err_or(Radau5::new().rtol(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile rtol)", |s| fin(&s.last()));
-            err_or(Radau5::new().atol(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile atol)", |s| fin(&s.last()));
-            err_or(Radau5::new().h0(x).h_max(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile h)", |s| fin(&s.last()));
-            err_or(Radau5::new().solve(f, 0.0, &vec![x], 1.0), "solve(hostile y0)", |s| fin(&s.last()));
-            err_or(Radau5::new().solve(f, 0.0, &vec![1.0], x), "solve(hostile t1)", |s| fin(&s.last()));
+            err_or(Radau5::new().rtol(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile rtol)", |s| fin(s.last()));
+            err_or(Radau5::new().atol(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile atol)", |s| fin(s.last()));
+            err_or(Radau5::new().h0(x).h_max(x).solve(f, 0.0, &vec![1.0], 1.0), "solve(hostile h)", |s| fin(s.last()));
+            err_or(Radau5::new().solve(f, 0.0, &vec![x], 1.0), "solve(hostile y0)", |s| fin(s.last()));
+            err_or(Radau5::new().solve(f, 0.0, &vec![1.0], x), "solve(hostile t1)", |s| fin(s.last()));
             err_or(RadauStepper::new(&Radau5::new(), f, Some(jac), 0.0, vec![x], 1.0), "stepper(hostile y0)", |s| fin(s.y()));
         }
         refused(Radau5::new().max_steps(3).solve(f, 0.0, &vec![1.0], 10.0), "max_steps(3)");
