@@ -21,4 +21,8 @@ export CARGO_PROFILE_RELEASE_OPT_LEVEL=${VECTRIX_PY_OPT_LEVEL:-1}
     "numpy==2.4.6" "scipy==1.17.1" "control==0.10.2" "pandas==3.1.1" \
     "dask[distributed]==${DASK_VERSION:-2026.8.0}" "hypothesis==${HYPOTHESIS_VERSION:-6.170.27}" "pytest==${PYTEST_VERSION:-9.2.0}"
 "$VENV/bin/python" -c "import vectrix"
-cd python && "$VENV/bin/python" -m pytest -q -p no:cacheprovider tests
+# run from outside python/ so that `import vectrix` is the installed package (with its compiled
+# extension), not the source folder beside the tests
+root=$PWD
+cd "$VENV" && "$VENV/bin/python" -m pytest -q -p no:cacheprovider \
+    --rootdir "$root/python" "$root/python/tests"
