@@ -1387,7 +1387,7 @@ fn notebook_14_flight_modes() {
     // cell 1
     // cell 2
     use std::f64::consts::PI;
-    use vectrix::scene::flight::FlightScene;
+    use vectrix::scene::Scene;
     use vectrix::flight::*;
     use vectrix::lti::{Complex64, logspace};
     use vectrix::plot::control;
@@ -1438,26 +1438,48 @@ fn notebook_14_flight_modes() {
     let text = r#"
     name = "doublet"
     duration = 10.0
-    samples = 201
-    outputs = ["alpha", "q"]
-    [aircraft]
-    model = "business_jet"
-    [trim]
-    airspeed = 675.124
-    [[inputs]]
-    control = "elevator"
-    shape = "doublet"
-    start = 1.0
-    width = 1.0
-    amplitude = 0.01
+    samples = 200
+    method = { name = "dop853", rtol = 1e-10 }
+    outputs = ["air:jet", "omega_body:jet"]
+    trim = { free = ["dq:jet.4", "effects[1].elevator", "effects[2]"] }
+    linearize = { steady = true }
+    [[bodies]]
+    name = "jet"
+    joint = { type = "free" }
+    mass = { shape = "aircraft", model = "business_jet" }
+    v = ["675.124 ft/s", 0.0, 0.0, 0.0, 0.0, 0.0]
+    [[effects]]
+    type = "uniform_gravity"
+    g = [0.0, 0.0, "32.2 ft/s^2"]
+    [[effects]]
+    type = "aero"
+    body = "jet"
+    aircraft = "business_jet"
+    elevator = { kind = "doublet", start = 1.0, width = 1.0, amplitude = 0.01 }
+    [[effects]]
+    type = "thrust"
+    body = "jet"
+    profile = { kind = "constant", value = 0.0 }
     "#;
-    let scene = FlightScene::from_toml(text, "doublet.toml").expect("valid scene");
-    let run = scene.run().expect("finite flight");
-    for m in &run.modes {
-        println!("{:<13} λ = {:+.4} ± {:.4}j", m.name, m.re, m.im);
+    let scene = Scene::from_toml(text, "doublet.toml").unwrap_or_else(|e| panic!("{e}"));
+    let trim = scene.trim_report().expect("the scene has [trim]");
+    for (name, change) in trim.free.iter().zip(&trim.change) {
+        println!("trim: {name} = {change:.6e}");
     }
-    println!("α: excursion {:.2e} rad, linear model off by ≤ {:.1e}", run.max_excursion(0), run.max_linear_error(0).expect("defined"));
-    show(run.response_svg(1).expect("drawable"));
+    let lin = scene.linearize().unwrap_or_else(|e| panic!("{e}"));
+    for m in lin.modes.iter().filter(|m| m.natural_frequency > 1e-6 && m.eigenvalue[1] >= 0.0) {
+        println!("λ = {:+.4} ± {:.4}j  ωn = {} rad/s", m.eigenvalue[0], m.eigenvalue[1], Rounded(m.natural_frequency));
+    }
+    let run = scene.run(&mut |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    let alpha = run.column("air:jet.alpha").expect("declared output");
+    let q = run.column("omega_body:jet.y").expect("declared output");
+    show(
+        LineChart::new("Business jet after an elevator doublet (§14.2), as a body", "t [s]", "α − α₀, q [rad, rad/s]")
+            .with_series("α − α₀", run.t.iter().zip(&alpha).map(|(t, a)| (*t, a - alpha[0])).collect())
+            .with_series("q", run.t.iter().copied().zip(q).collect())
+            .to_svg()
+            .expect("finite data"),
+    );
 }
 
 /// `docs/notebooks/15-linear-systems.ipynb`

@@ -22,7 +22,6 @@ mod aero;
 mod build;
 mod contacts;
 mod error;
-pub mod flight;
 mod forces;
 mod impacts;
 pub mod import;
@@ -32,6 +31,7 @@ mod kin;
 mod linearize;
 mod loops;
 mod many;
+mod migrate;
 mod outputs;
 mod profile;
 mod project;
@@ -186,6 +186,11 @@ impl Scene {
     /// # Errors
     /// As [`Scene::from_toml`].
     pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
+        if src.has_key("aircraft") {
+            // the old flight-scene form: refused with the file written in the new form
+            let doc: toml::Value = src.deserialize()?;
+            return Err(src.invalid("aircraft", migrate::message(&doc)));
+        }
         let spec: SceneSpec = src.deserialize_all(&body_schema).map_err(many::report)?;
         Self::build_reporting_all(spec, src)
     }

@@ -490,6 +490,19 @@ pub enum EffectSpec {
         /// Air density ρ [kg/m³] (default: the catalogue's, 0.000588 slug/ft³ at 40,000 ft).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         rho: Option<f64>,
+        /// Wing area S [m²] (default: the catalogue's).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        area: Option<f64>,
+        /// Mean aerodynamic chord c̄ [m] (default: the catalogue's).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        chord: Option<f64>,
+        /// Wing span b [m] (default: the catalogue's).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        span: Option<f64>,
+        /// Overrides of the catalogue's nondimensional coefficients by name (`cm_alpha = -0.6`;
+        /// `u_ref` is a speed [m/s]); names as in `vectrix_flight::Coefficients` (§13.3–13.5).
+        #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+        coefficients: std::collections::BTreeMap<String, f64>,
         /// Elevator δe [rad] (trailing edge down positive).
         #[serde(default = "zero_profile")]
         elevator: Profile,
