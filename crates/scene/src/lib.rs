@@ -28,10 +28,12 @@ pub mod import;
 mod invariants;
 mod jacobian;
 mod kin;
+mod limits;
 mod linearize;
 mod loops;
 mod many;
 mod migrate;
+mod outcome;
 mod outputs;
 mod profile;
 mod project;
@@ -53,6 +55,7 @@ pub use error::{SceneError, unit_message};
 pub use invariants::Invariant;
 pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
 pub use many::MAX_ERRORS;
+pub use outcome::{Drift, InvariantValue, Run, RunControl, RunWork, Stop, StopReason};
 pub use project::{ASSEMBLY_TOL, CONSTRAINT_TOL, ConstraintViolation};
 pub use quantities::{
     Expect, Schema, Step, body_schema, convert as convert_quantities, key_of, render as render_path, tag,
@@ -60,8 +63,8 @@ pub use quantities::{
 pub use query::StateQuery;
 pub use rhs::SceneRhs;
 pub use run::{
-    DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, Drift, InvariantValue, MAX_SAMPLE_VALUES, MAX_SAMPLES,
-    MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE, Run, RunControl, RunWork, Stop, StopReason,
+    DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, MAX_SAMPLE_VALUES, MAX_SAMPLES, MAX_TRUSTED_DRIFT,
+    MAX_TRUSTED_STATE,
 };
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
@@ -274,9 +277,9 @@ impl Scene {
     fn build_plain(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
         let built = build(&spec, src)?;
         let order = kin::tree_order(&built.bodies);
-        let (solver, named) = run::solver(&spec, src)?;
+        let (solver, named) = limits::solver(&spec, src)?;
         let outputs = outputs::parse(&spec, &built, src)?;
-        run::check_bounds(&spec, &built, &outputs, src)?;
+        limits::check_bounds(&spec, &built, &outputs, src)?;
         let invariants = invariants::derive(&built);
         let mut needs = Needs::default();
         for e in &built.effects {
