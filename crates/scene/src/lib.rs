@@ -21,6 +21,7 @@
 mod aero;
 mod build;
 mod contacts;
+mod effect_spec;
 mod error;
 mod forces;
 mod impacts;
