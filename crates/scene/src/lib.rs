@@ -54,6 +54,7 @@ pub use build::MAX_MAGNITUDE;
 pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME_REL};
 pub use error::{SceneError, unit_message};
 pub use invariants::Invariant;
+pub use limits::{DEFAULT_MAX_STEPS, MAX_SAMPLE_VALUES, MAX_SAMPLES};
 pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
 pub use many::MAX_ERRORS;
 pub use outcome::{Drift, InvariantValue, Run, RunControl, RunWork, Stop, StopReason};
@@ -63,10 +64,7 @@ pub use quantities::{
 };
 pub use query::StateQuery;
 pub use rhs::SceneRhs;
-pub use run::{
-    DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, MAX_SAMPLE_VALUES, MAX_SAMPLES, MAX_TRUSTED_DRIFT,
-    MAX_TRUSTED_STATE,
-};
+pub use run::{DEFAULT_MAX_WALL_SECONDS, MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE};
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
 pub use stiff::{MethodChoice, RADAU5_TOL_FACTOR, STIFF_RATIO, STIFF_RHO_DURATION};

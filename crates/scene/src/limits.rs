@@ -8,8 +8,14 @@ use vectrix_ode::Method;
 
 use super::SceneError;
 use super::build::Src;
-use super::run::{DEFAULT_MAX_STEPS, MAX_SAMPLE_VALUES, MAX_SAMPLES};
 use super::spec::SceneSpec;
+
+/// Default bound on the steps of a run (accepted + rejected).
+pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
+/// Most output samples of a scene (rows of trajectory.csv after the first).
+pub const MAX_SAMPLES: usize = 1_000_000;
+/// Most output values of a scene (rows × columns), which bounds its memory (8 bytes each).
+pub const MAX_SAMPLE_VALUES: usize = 50_000_000;
 
 /// The solver a scene asks for: `method` (with the reason, "named"), else the explicit method
 /// of the accuracy table for `accuracy` (default 1e-6; the stiffness test may switch it to

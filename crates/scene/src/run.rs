@@ -21,14 +21,8 @@ use super::project::ProjectScratch;
 use super::rhs::RhsScratch;
 use super::{Invariant, Scene, SceneError};
 
-/// Default bound on the steps of a run (accepted + rejected).
-pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
 /// Default bound on the wall time of a run [s].
 pub const DEFAULT_MAX_WALL_SECONDS: f64 = 600.0;
-/// Most output samples of a scene (rows of trajectory.csv after the first).
-pub const MAX_SAMPLES: usize = 1_000_000;
-/// Most output values of a scene (rows × columns), which bounds its memory (8 bytes each).
-pub const MAX_SAMPLE_VALUES: usize = 50_000_000;
 /// A run whose pace predicts more than this multiple of a budget stops at once (fail fast).
 const FAIL_FAST_FACTOR: f64 = 10.0;
 /// Largest relative drift (`Drift::max_rel`) of a checked invariant that a complete run may
