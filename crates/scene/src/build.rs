@@ -511,7 +511,7 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
         .loops
         .iter()
         .enumerate()
-        .map(|(i, l)| loop_joint(l, &format!("loops[{i}]"), &index, &model, &q0, src))
+        .map(|(i, l)| loop_joint(l, &format!("loops[{i}]"), &index, (&model, &bodies), &q0, src))
         .collect::<Result<Vec<_>, _>>()?;
     for (i, l) in spec.loops.iter().enumerate() {
         check_name(l.name(), "loop name", false).map_err(|m| src.invalid(format!("loops[{i}].name"), m))?;

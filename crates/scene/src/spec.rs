@@ -585,6 +585,42 @@ pub enum LoopSpec {
         /// The plane's normal, `b`'s link components.
         normal: [f64; 3],
     },
+    /// The two bodies keep the relative pose they have at the initial state (a weld, MJCF
+    /// `<equality><weld>`): the points coincide (3 constraints) and the relative orientation
+    /// is fixed (3 constraints). The reaction is a force and a couple on `a`.
+    Weld {
+        /// Name.
+        name: String,
+        /// Point of the first body.
+        a: Attach,
+        /// Point of the second body (the same point as `a` at the initial state).
+        b: Attach,
+    },
+    /// A linear coupling of two joint coordinates (a gear; URDF `<mimic>`, MJCF `<equality>
+    /// <joint polycoef>` with a linear polynomial): q_body = ratio · q_leader + offset, one
+    /// holonomic constraint. Both joints have one coordinate (pin or sleeve); without
+    /// `leader` the joint is locked at q_body = offset. The reaction is the generalized force
+    /// (N m for a pin, N for a sleeve) the coupling applies to `body`'s joint; the leader's
+    /// joint receives −ratio times it.
+    Coupler {
+        /// Name.
+        name: String,
+        /// The body whose joint follows.
+        body: String,
+        /// The body whose joint leads (none: the joint is locked).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        leader: Option<String>,
+        /// The gear ratio m in q_body = m q_leader + offset.
+        #[serde(default = "one")]
+        ratio: f64,
+        /// The offset [rad or m].
+        #[serde(default)]
+        offset: f64,
+    },
+}
+
+fn one() -> f64 {
+    1.0
 }
 
 impl LoopSpec {
@@ -594,7 +630,9 @@ impl LoopSpec {
             Self::Ball { name, .. }
             | Self::Pin { name, .. }
             | Self::PointOnLine { name, .. }
-            | Self::PointOnPlane { name, .. } => name,
+            | Self::PointOnPlane { name, .. }
+            | Self::Weld { name, .. }
+            | Self::Coupler { name, .. } => name,
         }
     }
 }

@@ -1,0 +1,153 @@
+//! Loops that come from model files (issue 35): URDF `<mimic>` and MJCF `<equality><joint>`
+//! as a coupler (q_follower = m q_leader + offset), MJCF `<equality><weld>` as a weld, each
+//! checked against the closed form of the one rigid system it makes.
+//!
+//! * A pendulum geared to a flywheel whose centre of mass is on its axis is one pendulum of
+//!   inertia I_eff = I_arm + m² I_wheel: ½ I_eff θ̇² + m g ℓ sin θ is constant (θ from +x,
+//!   gravity −y), so θ̇² = 2 m g ℓ (sin θ₀ − sin θ)/I_eff along the whole swing, and the gear's
+//!   torque on the wheel's joint is I_wheel · m · θ̈ with θ̈ = −m g ℓ cos θ / I_eff (§6.10).
+//! * A ball welded to a bar pendulum's tip is the merged body: inertia I_bar + I_ball +
+//!   m_ball ℓ² about the pivot (parallel axes, §6.2); the ball's centre is the tip, its angular
+//!   velocity θ̇ ẑ, and the weld's force on the bar is −m_ball (a_ball − g), its couple
+//!   −I_ball θ̈ ẑ (Newton–Euler for the ball, §7.3).
+//!
+//! Book: §9.11 (holonomic constraints), §8 (energy), §6.2 (parallel axes), §6.10 (reactions).
+
+mod support;
+
+use support::nan_max;
+use vectrix::scene::{Run, Scene};
+
+const G: f64 = 9.81;
+
+fn run_model_scene(toml: &str) -> Run {
+    let scene = Scene::from_toml(toml, "examples/models/scene.toml").unwrap_or_else(|e| panic!("{e}"));
+    scene.run(&mut |_| {}).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn col(run: &Run, name: &str) -> Vec<f64> {
+    run.column(name).unwrap_or_else(|| panic!("no column {name} in {:?}", run.columns))
+}
+
+/// The largest |f(i)| over the samples, NaN-propagating.
+fn worst(n: usize, f: impl Fn(usize) -> f64) -> f64 {
+    (0..n).fold(0.0, |m, i| nan_max(m, f(i).abs()))
+}
+
+/// The geared pendulum of examples/models/geared_pendulum.*: arm J = 1/3 about the pivot,
+/// m g ℓ = 1 · 9.81 · 0.5; wheel J = 0.25 on its axis; ratio −2, offset 0.3; θ₀ = 1.
+fn check_geared(run: &Run, arm: &str, wheel: &str, gear: &str) {
+    let (i_arm, i_wheel, ratio, offset, mgl, th0): (f64, f64, f64, f64, f64, f64) =
+        (1.0 / 3.0, 0.25, -2.0, 0.3, G * 0.5, 1.0);
+    let i_eff = i_arm + ratio * ratio * i_wheel;
+    let (th, w) = (col(run, &format!("coordinates:{arm}.0")), col(run, &format!("speeds:{arm}.0")));
+    let phi = col(run, &format!("coordinates:{wheel}.0"));
+    let tau = col(run, &format!("reaction:{gear}"));
+    // the swing reaches the far side (θ = −π − 1), so the check covers the whole arc
+    assert!(th.iter().fold(0.0, |m: f64, x| m.min(*x)) < -3.5, "the pendulum did not swing through");
+    let n = th.len();
+    // the gear holds: projection keeps φ within its tolerance (1e-10 relative); measured 5e-14
+    let e_gear = worst(n, |i| phi[i] - (ratio * th[i] + offset));
+    assert!(e_gear <= 1e-10, "gear violated by {e_gear:e}");
+    // θ̇² against the closed form with I_eff; scale 2 m g ℓ · 2 / I_eff ≈ 14.7 (rad/s)²
+    // accuracy = 1e-10 bounds the integration error; measured 4e-12 relative
+    let scale = 4.0 * mgl / i_eff;
+    let e_w = worst(n, |i| w[i] * w[i] - 2.0 * mgl * (th0.sin() - th[i].sin()) / i_eff) / scale;
+    assert!(e_w <= 1e-9, "θ̇² off the one-pendulum closed form by {e_w:e} relative");
+    // the gear's torque on the wheel: I_wheel m θ̈ (scale I_wheel |m| m g ℓ / I_eff ≈ 1.8 N m),
+    // a function of the sampled θ: rounding only (measured 7e-16)
+    let t_scale = i_wheel * ratio.abs() * mgl / i_eff;
+    let e_t = worst(n, |i| tau[i] - i_wheel * ratio * (-mgl * th[i].cos() / i_eff)) / t_scale;
+    assert!(e_t <= 1e-12, "gear torque off the closed form by {e_t:e} relative");
+}
+
+#[test]
+fn urdf_mimic_geared_pendulum_swings_with_the_effective_inertia() {
+    let text = std::fs::read_to_string("examples/models/geared_pendulum.toml").unwrap();
+    let run = run_model_scene(&text);
+    check_geared(&run, "arm", "wheel", "wheel_joint_mimic");
+}
+
+#[test]
+fn mjcf_joint_equality_geared_pendulum_swings_with_the_effective_inertia() {
+    let text = std::fs::read_to_string("examples/models/geared_pendulum_mjcf.toml").unwrap();
+    let run = run_model_scene(&text);
+    check_geared(&run, "arm", "wheel", "gear");
+}
+
+#[test]
+fn mjcf_weld_ball_on_a_bar_moves_as_the_merged_body() {
+    let text = std::fs::read_to_string("examples/models/welded_pendulum.toml").unwrap();
+    let run = run_model_scene(&text);
+    let (m_ball, i_ball, l, th0) = (2.0, 0.4 * 2.0 * 0.04, 1.0, 0.0);
+    let i_eff = 1.0 / 3.0 + i_ball + m_ball * l * l;
+    let mgl = G * (1.0 * 0.5 + m_ball * l);
+    let (th, w) = (col(&run, "coordinates:bar.0"), col(&run, "speeds:bar.0"));
+    let n = th.len();
+    assert!(th.iter().fold(0.0, |m: f64, x| m.min(*x)) < -3.0, "the pendulum did not swing through");
+    // integration error at accuracy = 1e-10 (measured 1e-12); the ball's motion and the
+    // weld's reactions follow from the sampled θ, θ̇ by rounding (measured ≤ 1e-12)
+    let scale = 4.0 * mgl / i_eff;
+    let e_w = worst(n, |i| w[i] * w[i] - 2.0 * mgl * (f64::sin(th0) - th[i].sin()) / i_eff) / scale;
+    assert!(e_w <= 1e-9, "θ̇² off the merged-body closed form by {e_w:e} relative");
+    let c = |k: &str| col(&run, k);
+    let (px, py, pz) = (c("position:ball.x"), c("position:ball.y"), c("position:ball.z"));
+    let (wx, wy, wz) = (c("omega:ball.x"), c("omega:ball.y"), c("omega:ball.z"));
+    let e_p = worst(n, |i| nan_max((px[i] - th[i].cos()).abs(), (py[i] - th[i].sin()).abs()) + pz[i].abs());
+    assert!(e_p <= 1e-9, "the ball left the tip by {e_p:e} m");
+    let e_o = worst(n, |i| nan_max(wx[i].abs(), wy[i].abs()) + (wz[i] - w[i]).abs());
+    assert!(e_o <= 1e-9, "the ball turned unlike the bar by {e_o:e} rad/s");
+    // the weld's force and couple on the bar, from Newton–Euler for the ball
+    let (fx, fy, fz) = (c("reaction:tip.x"), c("reaction:tip.y"), c("reaction:tip.z"));
+    let (mx, my, mz) = (c("reaction:tip.mx"), c("reaction:tip.my"), c("reaction:tip.mz"));
+    let f_scale = m_ball * (G + scale);
+    let e_f = worst(n, |i| {
+        let (s, co) = th[i].sin_cos();
+        let acc = -mgl * co / i_eff;
+        let a = [-acc * s - w[i] * w[i] * co, acc * co - w[i] * w[i] * s];
+        let want = [-m_ball * a[0], -m_ball * (a[1] + G)];
+        nan_max((fx[i] - want[0]).abs(), (fy[i] - want[1]).abs()) + fz[i].abs()
+    }) / f_scale;
+    assert!(e_f <= 1e-9, "weld force off Newton's law for the ball by {e_f:e} relative");
+    let e_m = worst(n, |i| {
+        nan_max(mx[i].abs(), my[i].abs()) + (mz[i] + i_ball * (-mgl * th[i].cos() / i_eff)).abs()
+    }) / (i_ball * mgl / i_eff);
+    assert!(e_m <= 1e-9, "weld couple off Euler's law for the ball by {e_m:e} relative");
+}
+
+/// A coupler and a weld written in the scene format itself; bad couplers are refused with
+/// the key and what is valid.
+#[test]
+fn scene_coupler_and_weld_refuse_bad_input() {
+    let base = r#"name = "t"
+duration = 0.1
+[[bodies]]
+name = "a"
+joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+mass = { shape = "disk", mass = 1.0, radius = 0.5 }
+[[bodies]]
+name = "b"
+joint = { type = "ball" }
+offset = [2.0, 0.0, 0.0]
+mass = { shape = "sphere", mass = 1.0, radius = 0.5 }
+"#;
+    let bad = [
+        ("type = \"coupler\"\nname = \"g\"\nbody = \"a\"\nleader = \"a\"", "loops[0].leader", "another body"),
+        ("type = \"coupler\"\nname = \"g\"\nbody = \"b\"", "loops[0].body", "pin or sleeve"),
+        ("type = \"coupler\"\nname = \"g\"\nbody = \"a\"\nratio = nan", "loops[0].ratio", "finite"),
+        ("type = \"coupler\"\nname = \"g\"\nbody = \"c\"", "loops[0].body", "c"),
+    ];
+    for (l, key, valid) in bad {
+        let text = format!("{base}[[loops]]\n{l}\n");
+        match Scene::from_toml(&text, "t.toml") {
+            Err(e) => {
+                let m = e.to_string();
+                assert!(m.contains(key) && m.contains(valid), "{l}: message {m:?} lacks {key} or {valid}");
+            }
+            Ok(_) => panic!("{l}: accepted"),
+        }
+    }
+    // a lock (no leader) at the initial angle loads, and holds the disk still
+    let ok = format!("{base}[[loops]]\ntype = \"coupler\"\nname = \"g\"\nbody = \"a\"\noffset = 0.0\n");
+    assert!(Scene::from_toml(&ok, "t.toml").is_ok());
+}
