@@ -151,3 +151,56 @@ mass = { shape = "sphere", mass = 1.0, radius = 0.5 }
     let ok = format!("{base}[[loops]]\ntype = \"coupler\"\nname = \"g\"\nbody = \"a\"\noffset = 0.0\n");
     assert!(Scene::from_toml(&ok, "t.toml").is_ok());
 }
+
+/// The geared pendulum without gravity, a rotational spring κ on the joint named `shoulder`
+/// (the body `arm`), started by joint name: a harmonic oscillator θ = θ₀ cos ωt with
+/// ω² = κ / I_eff, I_eff = 1/3 + (−2)² · 0.25 (§8: I_eff θ̈ = −κ θ).
+const BY_JOINT: &str = r#"name = "by_joint"
+duration = 3.0
+samples = 300
+accuracy = 1e-10
+outputs = ["coordinates:shoulder", "coordinates:wheel_joint"]
+
+[model]
+urdf = "geared_pendulum.urdf"
+
+[model.q]
+shoulder = [0.5]
+wheel_joint = [-0.7]
+
+[[effects]]
+type = "rotational_spring"
+body = "shoulder"
+kappa = 3.0
+"#;
+
+#[test]
+fn model_joints_are_named_in_effects_initial_state_and_outputs() {
+    let run = run_model_scene(BY_JOINT);
+    // joint names stand for their bodies: the columns carry the body's name
+    let (th, phi) = (col(&run, "coordinates:arm.0"), col(&run, "coordinates:wheel.0"));
+    let omega = (3.0_f64 / (1.0 / 3.0 + 4.0 * 0.25)).sqrt();
+    // integration error at accuracy = 1e-10 over ~2 periods, relative to θ₀
+    let e = worst(th.len(), |i| th[i] - 0.5 * (omega * run.t[i]).cos()) / 0.5;
+    assert!(e <= 1e-8, "θ off θ₀ cos ωt by {e:e} relative");
+    let e_gear = worst(th.len(), |i| phi[i] - (-2.0 * th[i] + 0.3));
+    assert!(e_gear <= 1e-10, "gear violated by {e_gear:e}");
+}
+
+#[test]
+fn misspelt_joint_names_get_located_did_you_mean() {
+    for (from, to, key) in [
+        ("shoulder = [0.5]", "sholder = [0.5]", "model.q.sholder"),
+        ("body = \"shoulder\"", "body = \"sholder\"", "effects[0].body"),
+    ] {
+        let text = BY_JOINT.replace(from, to);
+        match Scene::from_toml(&text, "examples/models/scene.toml") {
+            Err(e) => {
+                let m = e.to_string();
+                assert!(m.contains(key), "{to}: {m:?} does not name {key}");
+                assert!(m.contains("did you mean `shoulder`"), "{to}: {m:?} has no hint");
+            }
+            Ok(_) => panic!("{to}: accepted"),
+        }
+    }
+}

@@ -312,7 +312,9 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             return Ok(None);
         }
         names.iter().position(|n| *n == name).map(Some).ok_or_else(|| {
-            src.invalid(path, format!("unknown body `{name}`; valid: ground, {}", names.join(", ")))
+            let joints = spec.joint_aliases.keys().map(String::as_str);
+            let hint = super::error::did_you_mean(name, names.iter().copied().chain(joints));
+            src.invalid(path, format!("unknown body `{name}`{hint}; valid: ground, {}", names.join(", ")))
         })
     };
     let body_of = |name: &str, path: &str| -> Result<usize, SceneError> {

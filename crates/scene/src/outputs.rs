@@ -85,9 +85,13 @@ pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output
                 Some((kd, name)) => {
                     let i = b.bodies.iter().position(|x| x.name == name).ok_or_else(|| {
                         let names: Vec<&str> = b.bodies.iter().map(|x| x.name.as_str()).collect();
+                        let hint = super::error::did_you_mean(name, names.iter().copied());
                         src.invalid(
                             &path,
-                            format!("unknown body `{name}` in output `{o}`; valid: {}", names.join(", ")),
+                            format!(
+                                "unknown body `{name}`{hint} in output `{o}`; valid: {}",
+                                names.join(", ")
+                            ),
                         )
                     })?;
                     (kd, Some(i))

@@ -43,6 +43,11 @@ pub struct SceneSpec {
     /// bodies after the scene's own `bodies`, its loops after the scene's `loops`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub model: Option<ModelSpec>,
+    /// The joint names of the `model` that stand for their bodies (joint → body), filled when
+    /// the model is read and used for "did you mean" hints; never read from or written to a
+    /// file.
+    #[serde(skip)]
+    pub joint_aliases: std::collections::BTreeMap<String, String>,
     /// The bodies, each joined to its parent (or to the ground).
     #[serde(default)]
     pub bodies: Vec<BodySpec>,
