@@ -97,6 +97,14 @@ pub(crate) enum Effect {
         e: f64,
         mu: f64,
     },
+    /// A joint stop: q[qi] ∈ [lower, upper] (±∞ for none), speed v[vi], restitution e.
+    JointStop {
+        qi: usize,
+        vi: usize,
+        lower: f64,
+        upper: f64,
+        e: f64,
+    },
     Plane {
         body: usize,
         r: f64,

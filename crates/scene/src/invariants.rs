@@ -119,6 +119,11 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
                 external_force = true;
             }
             Effect::Rolling { .. } => external_force = true,
+            // a stop acts through a joint torque (as a rotational spring does)
+            Effect::JointStop { e, .. } => {
+                conservative &= *e == 1.0;
+                external_force = true;
+            }
             Effect::Mutual { .. } | Effect::Dipoles { .. } => {}
         }
     }

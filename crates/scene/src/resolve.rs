@@ -288,6 +288,26 @@ pub(crate) fn effect(
                 mu: nonneg(*friction, "friction", path, src)?,
             }
         }
+        EffectSpec::JointStop { body, lower, upper, restitution: e } => {
+            let i = body_of(body, &key("body"))?;
+            let b = &bodies[i];
+            if !matches!(b.joint, JointSpec::Pin { .. } | JointSpec::Sleeve { .. }) {
+                return Err(src.invalid(
+                    key("body"),
+                    format!("body `{body}`'s joint has more than one coordinate; valid: a body on a pin or sleeve joint"),
+                ));
+            }
+            let (lo, hi) = (lower.unwrap_or(f64::NEG_INFINITY), upper.unwrap_or(f64::INFINITY));
+            if (lower.is_none() && upper.is_none()) || lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
+                return Err(src.invalid(
+                    path,
+                    format!(
+                        "stops {lower:?} and {upper:?}; valid: `lower`, `upper` or both, with lower < upper"
+                    ),
+                ));
+            }
+            Effect::JointStop { qi: b.qi, vi: b.vi, lower: lo, upper: hi, e: restitution(*e)? }
+        }
         EffectSpec::ContactPlane { body, radius, point, normal, restitution: e, friction } => Effect::Plane {
             body: alone(body, "body")?,
             r: nonneg(*radius, "radius", path, src)?,

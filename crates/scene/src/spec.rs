@@ -182,6 +182,13 @@ pub struct ModelSpec {
     /// An MJCF file, relative to the scene file and inside its folder tree.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mjcf: Option<String>,
+    /// What the model's joint limits do: `"data"` (kept in the import report, the default, as
+    /// Pinocchio) or `"contact"` (each becomes a `joint_stop` effect, as MuJoCo's limits).
+    #[serde(default, skip_serializing_if = "LimitsMode::is_data")]
+    pub limits: LimitsMode,
+    /// The restitution e ∈ [0, 1] of the stops made from the limits (`limits = "contact"`).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub limit_restitution: f64,
     /// Refuse the model when any element or attribute does not map (instead of a warning).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub strict: bool,
@@ -462,6 +469,25 @@ pub enum EffectSpec {
         #[serde(default)]
         friction: f64,
     },
+    /// Stops of a one-coordinate joint (pin or sleeve) at `lower` ≤ q ≤ `upper`: unilateral
+    /// constraints with restitution e, through the same touch events, impacts and resting
+    /// contact as a sphere on a plane (URDF `<limit>`, MJCF `range`, with `[model] limits =
+    /// "contact"`). An impact sends the joint's speed from q̇ to −e q̇ by a generalized impulse
+    /// on its coordinate (§7.14); a stop held (bounces accumulated, or e = 0) pushes with the
+    /// generalized force that keeps q̈ = 0 until that force would have to pull.
+    JointStop {
+        /// The body whose joint is stopped.
+        body: String,
+        /// The lower stop [rad or m] (none: no lower stop).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        lower: Option<f64>,
+        /// The upper stop [rad or m] (none: no upper stop).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        upper: Option<f64>,
+        /// e ∈ [0, 1].
+        #[serde(default)]
+        restitution: f64,
+    },
     /// Impacts of a sphere (free body) on a fixed plane.
     ContactPlane {
         /// The sphere.
@@ -622,6 +648,29 @@ pub enum LoopSpec {
         #[serde(default)]
         offset: f64,
     },
+}
+
+/// What a model's joint limits do (see [`ModelSpec::limits`]).
+///
+/// Book: §7.13 (impacts).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LimitsMode {
+    /// Kept as data only.
+    #[default]
+    Data,
+    /// Joint stops (`joint_stop` effects).
+    Contact,
+}
+
+impl LimitsMode {
+    fn is_data(&self) -> bool {
+        *self == Self::Data
+    }
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 fn one() -> f64 {

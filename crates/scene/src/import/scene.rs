@@ -10,7 +10,7 @@ use std::path::{Component, Path, PathBuf};
 use super::{ImportWarning, ImportedModel, MAX_MODEL_BYTES, mjcf, urdf};
 use crate::SceneError;
 use crate::source::SceneSource;
-use crate::spec::{BodySpec, EffectSpec, SceneSpec};
+use crate::spec::{BodySpec, EffectSpec, LimitsMode, SceneSpec};
 
 /// Standard gravity, −ẑ [m/s²]: the default of a model without `<option gravity>`.
 const G0: [f64; 3] = [0.0, 0.0, -9.81];
@@ -117,6 +117,25 @@ pub fn expand(mut spec: SceneSpec, src: &SceneSource) -> Result<(SceneSpec, Vec<
     }
     rename_references(&mut spec, &alias).map_err(|e| src.invalid("model", e))?;
     spec.joint_aliases = alias.into_iter().collect();
+    if !(0.0..=1.0).contains(&m.limit_restitution) {
+        return Err(src.invalid(
+            "model.limit_restitution",
+            format!("e = {}; valid: a restitution in [0, 1]", m.limit_restitution),
+        ));
+    }
+    if m.limits == LimitsMode::Contact {
+        // each limit with a range becomes a joint stop (MuJoCo's limits; Pinocchio keeps data)
+        for l in &model.limits {
+            if let Some((lo, hi)) = l.range {
+                spec.effects.push(EffectSpec::JointStop {
+                    body: l.body.clone(),
+                    lower: Some(lo),
+                    upper: Some(hi),
+                    restitution: m.limit_restitution,
+                });
+            }
+        }
+    }
     spec.bodies.extend(bodies);
     spec.loops.extend(model.loops);
     if m.gravity {
