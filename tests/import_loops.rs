@@ -15,7 +15,7 @@
 
 mod support;
 
-use support::nan_max;
+use support::{nan_max, nan_min};
 use vectrix::scene::{Run, Scene};
 
 const G: f64 = 9.81;
@@ -44,7 +44,7 @@ fn check_geared(run: &Run, arm: &str, wheel: &str, gear: &str) {
     let phi = col(run, &format!("coordinates:{wheel}.0"));
     let tau = col(run, &format!("reaction:{gear}"));
     // the swing reaches the far side (θ = −π − 1), so the check covers the whole arc
-    assert!(th.iter().fold(0.0, |m: f64, x| m.min(*x)) < -3.5, "the pendulum did not swing through");
+    assert!(th.iter().fold(0.0, |m, x| nan_min(m, *x)) < -3.5, "the pendulum did not swing through");
     let n = th.len();
     // the gear holds: projection keeps φ within its tolerance (1e-10 relative); measured 5e-14
     let e_gear = worst(n, |i| phi[i] - (ratio * th[i] + offset));
@@ -84,7 +84,7 @@ fn mjcf_weld_ball_on_a_bar_moves_as_the_merged_body() {
     let mgl = G * (1.0 * 0.5 + m_ball * l);
     let (th, w) = (col(&run, "coordinates:bar.0"), col(&run, "speeds:bar.0"));
     let n = th.len();
-    assert!(th.iter().fold(0.0, |m: f64, x| m.min(*x)) < -3.0, "the pendulum did not swing through");
+    assert!(th.iter().fold(0.0, |m, x| nan_min(m, *x)) < -3.0, "the pendulum did not swing through");
     // integration error at accuracy = 1e-10 (measured 1e-12); the ball's motion and the
     // weld's reactions follow from the sampled θ, θ̇ by rounding (measured ≤ 1e-12)
     let scale = 4.0 * mgl / i_eff;
