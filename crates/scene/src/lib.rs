@@ -30,6 +30,7 @@ mod invariants;
 mod jacobian;
 mod kin;
 mod linearize;
+mod loop_spec;
 mod loops;
 mod many;
 mod outputs;
