@@ -209,6 +209,7 @@ impl Scene {
                 kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
             }
             self.rest_forces(&w.kin, resting, vd);
+            self.stop_rest_forces(q, resting, vd)?;
         }
         Ok(None)
     }
