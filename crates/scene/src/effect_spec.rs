@@ -4,7 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::spec::{Attach, Profile, zero_profile};
+use super::profile::Profile;
 
 /// One effect. Only declared effects are assembled.
 ///
@@ -224,6 +224,23 @@ pub enum EffectSpec {
         /// Plane normal (toward the body).
         normal: [f64; 3],
     },
+}
+
+/// A point fixed in a body (link components) or in the ground (`body = "ground"`).
+///
+/// Book: §6.7.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Attach {
+    /// Body name or `ground`.
+    pub body: String,
+    /// The point relative to the link origin, link components.
+    #[serde(default)]
+    pub point: [f64; 3],
+}
+
+pub(crate) fn zero_profile() -> Profile {
+    Profile::Constant { value: 0.0 }
 }
 
 /// A magnetic dipole m (link components) at the body's centre of mass.

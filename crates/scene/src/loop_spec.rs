@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::spec::Attach;
+use crate::effect_spec::Attach;
 
 /// A loop-closing joint between a point of body `a` and a point of body `b` (or the ground).
 ///

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-pub use super::effect_spec::{DipoleSpec, EffectSpec};
+pub use super::effect_spec::{Attach, DipoleSpec, EffectSpec};
 pub use crate::loop_spec::LoopSpec;
 
 pub use super::profile::Profile;
@@ -84,10 +84,6 @@ pub struct SceneSpec {
     /// when omitted; `vectrix run --no-view` skips it as well).
     #[serde(default = "yes", skip_serializing_if = "is_yes")]
     pub view: bool,
-}
-
-pub(crate) fn zero_profile() -> Profile {
-    Profile::Constant { value: 0.0 }
 }
 
 fn default_samples() -> usize {
@@ -310,19 +306,6 @@ pub enum MassSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         matrix: Option<[[f64; 3]; 3]>,
     },
-}
-
-/// A point fixed in a body (link components) or in the ground (`body = "ground"`).
-///
-/// Book: §6.7.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Attach {
-    /// Body name or `ground`.
-    pub body: String,
-    /// The point relative to the link origin, link components.
-    #[serde(default)]
-    pub point: [f64; 3],
 }
 
 /// How `vectrix linearize` treats the initial state.
