@@ -11,6 +11,7 @@ use pyo3::prelude::*;
 mod lti;
 mod model;
 mod rotation;
+mod rotation_kernels;
 mod rotation_more;
 mod scene;
 mod util;

@@ -7,15 +7,14 @@
 //!
 //! Book: §2.9–2.17 (rotation matrices, Euler angles, angle vector, Euler parameters, Gibbs).
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 use numpy::{IntoPyArray, PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use vectrix_rotation::{
-    EulerAngles, EulerKind, EulerSequence, Quaternion, ROTATION_TOL, check_rotation_matrix, nearest_rotation,
-};
+use vectrix_rotation::{EulerAngles, EulerKind, EulerSequence, Quaternion};
 
-use crate::util::{CHEAP, build, fill_out, nogil, nonfinite, real_unchecked, rows, rows_unchecked};
+use crate::rotation_kernels::{EULER_BLOCK, euler_block, matrix_quat, quat_error};
+use crate::util::{CHEAP, build, fill_out, nogil, real_unchecked, rows, rows_unchecked};
 
 pyo3::create_exception!(
     _vectrix,
@@ -84,17 +83,6 @@ pub(crate) fn sequence(seq: &str) -> PyResult<EulerSequence> {
 
 fn quat_from(v: &[f64]) -> Quaternion<f64> {
     Quaternion::new(v[0], v[1], v[2], v[3])
-}
-
-/// The error for quaternion `k` of `d` (4 values each) that `normalize` refused: a non-finite
-/// element, or a zero (or overflowing) norm.
-fn quat_error(d: &[f64], k: usize) -> PyErr {
-    match (4 * k..4 * k + 4).find(|&i| !d[i].is_finite()) {
-        Some(i) => nonfinite("quat", i, d[i]),
-        None => PyValueError::new_err(format!(
-            "quat[{k}] has norm 0 (or overflows); valid: a nonzero finite quaternion"
-        )),
-    }
 }
 
 impl Rotation {
@@ -450,58 +438,6 @@ impl Rotation {
                 .collect())
         })?;
         Ok(Self::new(q, single))
-    }
-}
-
-/// The canonical quaternion of matrix `k` (9 values `v`, row-major): a rotation matrix to
-/// round-off is used as it is, others are projected to the nearest rotation (polar
-/// decomposition, notes ch1-2a §3.10), as scipy does.
-///
-/// # Errors
-/// A non-finite element (named by its flat index), a determinant ≤ 0 (no rotation).
-#[inline]
-fn matrix_quat(v: &[f64], k: usize) -> PyResult<Quaternion<f64>> {
-    if let Some(i) = v.iter().position(|x| !x.is_finite()) {
-        return Err(nonfinite("matrix", 9 * k + i, v[i]));
-    }
-    let m = Matrix3::from_row_slice(v);
-    let det = m.determinant();
-    if det.is_nan() || det <= 0.0 {
-        return Err(PyValueError::new_err(format!(
-            "matrix[{k}] has determinant {det:e}; valid: a rotation matrix (determinant > 0)"
-        )));
-    }
-    let m = if check_rotation_matrix(&m, ROTATION_TOL).is_ok() {
-        m
-    } else {
-        nearest_rotation(&m).map_err(|e| PyValueError::new_err(format!("matrix[{k}]: {e}")))?
-    };
-    Ok(Quaternion::from_rotation_matrix_unchecked(&m).canonical())
-}
-
-/// Rotations per block of [`Rotation::as_euler`]: the batch's angle buffer (24 bytes each)
-/// stays in the L2 cache.
-const EULER_BLOCK: usize = 2048;
-
-/// Writes the angles of `batch` (rotations `first`, …) times `f` into `out` (3 per rotation),
-/// with scipy's representative at gimbal lock, and appends the locked indices to `locks`.
-fn euler_block(
-    batch: &vectrix_rotation::EulerBatch,
-    first: usize,
-    f: f64,
-    out: &mut [f64],
-    locks: &mut Vec<usize>,
-) {
-    for (o, a) in out.chunks_exact_mut(3).zip(batch.angles()) {
-        o.copy_from_slice(&[a[0] * f, a[1] * f, a[2] * f]);
-    }
-    for (k, sol) in batch.gimbal_locks() {
-        // scipy's choice for both kinds: the angle applied last is 0, so the first is the
-        // determined combination α + sign·γ (F2.13.5, F2.13.8)
-        if let vectrix_rotation::EulerSolution::GimbalLock { middle, combination, .. } = sol {
-            out[3 * k..3 * k + 3].copy_from_slice(&[combination * f, middle * f, 0.0]);
-        }
-        locks.push(first + k);
     }
 }
 

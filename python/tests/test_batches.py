@@ -133,3 +133,31 @@ def test_a_bad_ball_quaternion_is_named_by_its_state():
     q[590, ball:ball + 4] = 0.0
     with pytest.raises(ValueError, match=r"aba \(state 450\).*quaternion norm"):
         m.aba(q, np.tile(c["v"], (600, 1)), np.tile(c["tau"], (600, 1)))
+
+
+SUMMARY = """
+import hashlib, numpy as np, vectrix
+q = np.random.default_rng(5).standard_normal((40_000, 4))
+r = vectrix.Rotation.from_quat(q)
+h = hashlib.sha256()
+for x in (r.as_quat(), r.as_matrix(), r.as_euler("ZYX"), r.apply(q[:, :3])):
+    h.update(np.ascontiguousarray(x).tobytes())
+print(h.hexdigest())
+"""
+
+
+def run_with_threads(value):
+    import os
+    import subprocess
+    import sys
+
+    env = dict(os.environ, VECTRIX_NUM_THREADS=value)
+    return subprocess.run([sys.executable, "-c", SUMMARY], env=env, capture_output=True, text=True, check=True)
+
+
+def test_the_thread_count_changes_no_bit_and_a_bad_setting_is_named():
+    one, three = run_with_threads("1"), run_with_threads("3")
+    assert one.stdout == three.stdout and len(one.stdout.strip()) == 64
+    bad = run_with_threads("two")
+    assert bad.stdout == one.stdout  # ignored: every core, the same bits
+    assert "VECTRIX_NUM_THREADS='two' is ignored" in bad.stderr and "positive integer" in bad.stderr

@@ -6,6 +6,7 @@ Numpy in and out; every loop runs in Rust with the GIL released. See docs/python
 from __future__ import annotations
 
 import json as _json
+import os as _os
 import warnings as _warnings
 
 import numpy as _np
@@ -40,6 +41,11 @@ __all__ = [
     "TransferFunction", "StateSpace", "sweep", "RunResult", "View",
 ]
 
+
+_threads = _os.environ.get("VECTRIX_NUM_THREADS")
+if _threads is not None and not (_threads.strip().isdigit() and int(_threads) > 0):
+    _warnings.warn(f"VECTRIX_NUM_THREADS={_threads!r} is ignored (batches use every core); valid: a positive "
+                   "integer, the threads vectrix's batches use", RuntimeWarning, stacklevel=2)
 
 Rotation = _Rotation  # the Rust class itself; helpers below are attached to it
 
