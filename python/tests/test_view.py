@@ -84,3 +84,23 @@ def test_view_after_overrides_shows_the_run_with_them(tmp_path):
     assert np.max(np.abs(x - (1 + 0.5 * np.cos(10 * t)))) < 6e-6  # ẋ ≤ 5: t's rounding 1e-6
     v.save(tmp_path / "view.html")
     assert (tmp_path / "view.html").read_text(encoding="utf-8") == v.html
+
+
+def test_ctrl_c_still_raises_keyboard_interrupt_after_a_view():
+    """The view's code is the command line's, whose own runs install a Ctrl-C handler; from
+    Python it must not: SIGINT after `view()` is still Python's KeyboardInterrupt."""
+    import subprocess
+    import sys
+
+    code = (
+        "import os, signal, sys, time, vectrix\n"
+        "vectrix.Scene.from_toml(sys.argv[1]).run().view()\n"
+        "try:\n"
+        "    os.kill(os.getpid(), signal.SIGINT)\n"
+        "    time.sleep(5)\n"
+        "    print('not interrupted')\n"
+        "except KeyboardInterrupt:\n"
+        "    print('KeyboardInterrupt')\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code, OSC], capture_output=True, text=True, timeout=120)
+    assert out.stdout.strip() == "KeyboardInterrupt", (out.stdout, out.stderr)
