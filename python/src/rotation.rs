@@ -186,12 +186,8 @@ impl Rotation {
     /// Rotation matrices 𝓡(q) (N, 3, 3) (active: x ↦ 𝓡x). Book: (2.15.14).
     fn as_matrix<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         self.map(py, "as_matrix", &[3, 3], |q, o| {
-            let m = q.rotation_matrix();
-            for r in 0..3 {
-                for c in 0..3 {
-                    o[3 * r + c] = m[(r, c)];
-                }
-            }
+            // row-major out: nalgebra stores columns, so the transpose's storage is 𝓡's rows
+            o.copy_from_slice(q.rotation_matrix().transpose().as_slice());
         })
     }
 
