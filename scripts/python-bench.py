@@ -6,7 +6,10 @@
     python scripts/python-bench.py            # prints a Markdown table
 
 Each figure is the best of 5 repetitions (wall time, time.perf_counter); ratios compare the
-two routes timed back to back. A scene run is timed from Python (Scene.run) and from Rust
+two routes timed back to back. vectrix uses every core for batches (set VECTRIX_NUM_THREADS=1
+for one thread); scipy's Rotation and Pinocchio run on one. The "memory floor" rows time numpy
+itself allocating and filling an array of the result's size: no conversion returning a fresh
+array of that size can be faster. A scene run is timed from Python (Scene.run) and from Rust
 (the work.wall_seconds the run itself measures, which excludes the Python call).
 """
 import json
@@ -47,6 +50,9 @@ def rotations():
     m = s.as_matrix()
     row("from_matrix, 10⁶", best(lambda: vectrix.Rotation.from_matrix(m)), best(lambda: SR.from_matrix(m)), "scipy")
     row("apply, 10⁶", best(lambda: r.apply(v)), best(lambda: s.apply(v)), "scipy")
+    for shape, what in (((1_000_000, 3, 3), "as_matrix"), ((1_000_000, 4), "as_quat/from_quat")):
+        t = best(lambda: np.empty(shape).fill(1.0))
+        print(f"| memory floor of {what}: numpy.empty{shape}.fill | {t * 1e3:.3f} ms | | |")
 
 
 def multibody():
@@ -100,7 +106,7 @@ def scene():
 
 
 if __name__ == "__main__":
-    print(f"load average before: {os.getloadavg()}")
+    print(f"load average before: {os.getloadavg()}; VECTRIX_NUM_THREADS={os.environ.get('VECTRIX_NUM_THREADS', 'unset')}")
     print("| what | vectrix | peer | speed-up |\n|---|---|---|---|")
     rotations()
     multibody()

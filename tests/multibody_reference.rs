@@ -173,6 +173,32 @@ fn section_7_11_aba_matches_pinocchio_on_every_joint_type() {
     });
 }
 
+/// `Model::aba_checked` (the batch path of the Python package: one work space reused for
+/// every state) equals Pinocchio's ABA on every case, visited twice in turn so that each call
+/// starts from the work space another state left, and refuses what `Model::aba` refuses.
+#[test]
+fn aba_checked_with_one_reused_scratch_matches_pinocchio() {
+    let d = data();
+    for (name, entry) in d["models"].as_object().unwrap() {
+        let m = model(entry);
+        let mut s = m.aba_scratch();
+        let mut vdot = vec![0.0; m.nv()];
+        let cases = entry["cases"].as_array().unwrap();
+        for c in cases.iter().chain(cases.iter().rev()) {
+            let (q, v, tau) = (vector(&c["q"]), vector(&c["v"]), vector(&c["tau"]));
+            m.aba_checked(&q, &v, &tau, None, &mut vdot, &mut s).unwrap();
+            let tol = SOLVE_TOL_PER_COND * condition(&matrix(&c["crba_m"]));
+            assert_rel_to_max(&format!("{name} v̇ (aba_checked)"), &vdot, &vector(&c["aba_vdot"]), tol);
+        }
+        let c = &cases[0];
+        let (mut q, v, tau) = (vector(&c["q"]), vector(&c["v"]), vector(&c["tau"]));
+        let short = &mut vec![0.0; m.nv() - 1];
+        assert!(m.aba_checked(&q, &v, &tau, None, short, &mut s).is_err(), "{name}: short v̇");
+        q[0] = f64::NAN;
+        assert!(m.aba_checked(&q, &v, &tau, None, &mut vdot, &mut s).is_err(), "{name}: NaN in q");
+    }
+}
+
 /// ∂τ/∂q, ∂τ/∂v and ∂τ/∂v̇ = M of RNEA equal Pinocchio's computeRNEADerivatives.
 #[test]
 fn rnea_derivatives_match_pinocchio() {

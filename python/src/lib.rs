@@ -11,9 +11,11 @@ use pyo3::prelude::*;
 mod lti;
 mod model;
 mod rotation;
+mod rotation_kernels;
 mod rotation_more;
 mod scene;
 mod util;
+mod view;
 
 /// The extension module `vectrix._vectrix`.
 #[pymodule]
@@ -27,6 +29,8 @@ fn _vectrix(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::Cancel>()?;
     m.add_class::<model::Model>()?;
+    m.add_class::<view::ViewSource>()?;
+    m.add_function(wrap_pyfunction!(view::view_iframe, m)?)?;
     lti::register(m)?;
     m.add("MAX_ELEMENTS", util::MAX_ELEMENTS)?;
     Ok(())

@@ -35,7 +35,7 @@ fn tf(
 fn matrix(py: Python<'_>, obj: &Bound<'_, PyAny>, name: &str) -> PyResult<DMatrix<f64>> {
     let r = real(py, obj, name)?;
     match r.shape.as_slice() {
-        [n, m] => Ok(DMatrix::from_row_slice(*n, *m, &r.data)),
+        [n, m] => Ok(DMatrix::from_row_slice(*n, *m, r.data()?)),
         s => Err(PyValueError::new_err(format!(
             "{name}: shape {}; valid: a 2-D matrix",
             crate::util::shape_str(s)

@@ -10,8 +10,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use vectrix_dynamics::{DynamicsError, Joint, Link, Model as RsModel};
 
-use crate::rotation::out;
-use crate::util::{nogil, par_fill, real};
+use crate::util::{fill_out, rows};
 
 /// A multibody model (book §7.11) in reduced coordinates q (nq), v (nv).
 #[pyclass(module = "vectrix._vectrix", frozen)]
@@ -79,24 +78,6 @@ fn link(d: &Bound<'_, PyDict>, k: usize) -> PyResult<Link> {
     Ok(l)
 }
 
-/// Reads a state array: (width,) single or (N, width) batch.
-fn states(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    name: &str,
-    width: usize,
-) -> PyResult<(Vec<f64>, usize, bool)> {
-    let r = real(py, obj, name)?;
-    match r.shape.as_slice() {
-        [w] if *w == width => Ok((r.data, 1, true)),
-        [n, w] if *w == width => Ok((r.data, *n, false)),
-        s => Err(PyValueError::new_err(format!(
-            "{name}: shape {}; valid: ({width},) or (N, {width})",
-            crate::util::shape_str(s)
-        ))),
-    }
-}
-
 /// Broadcast count of several batches (1 broadcasts).
 fn count(ns: &[(usize, &str)]) -> PyResult<usize> {
     let n = ns.iter().map(|x| x.0).max().unwrap_or(1);
@@ -113,43 +94,51 @@ fn row(d: &[f64], n_of: usize, w: usize, k: usize) -> &[f64] {
     &d[k * w..(k + 1) * w]
 }
 
+/// States per batch below which one thread does all: a tree algorithm costs about a
+/// microsecond per state, so 256 states (≈ 0.3 ms) pay for a thread's start.
+const STATES_PER_THREAD: usize = 256;
+
 impl Model {
-    /// f(q_k, x_k, y_k) → `width` values, for every state of the batch, in parallel.
+    /// f(q_k, x_k, y_k) → `width` values, for every state of the batch, in parallel, each
+    /// thread with its own work space from `scratch()`.
     #[allow(clippy::too_many_arguments)]
-    fn batch3<'py>(
+    fn batch3<'py, S>(
         &self,
         py: Python<'py>,
         what: &str,
         args: [(&Bound<'_, PyAny>, &str, usize); 3],
         tail: &[usize],
-        f: impl Fn(&RsModel, &[f64], &[f64], &[f64], &mut [f64]) -> Result<(), DynamicsError> + Sync,
+        scratch: impl Fn(&RsModel) -> S + Sync,
+        f: impl Fn(&RsModel, &[f64], &[f64], &[f64], &mut [f64], &mut S) -> Result<(), DynamicsError> + Sync,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let [a, b, c] = args;
-        let (da, na, sa) = states(py, a.0, a.1, a.2)?;
-        let (db, nb, sb) = states(py, b.0, b.1, b.2)?;
-        let (dc, nc, sc) = states(py, c.0, c.1, c.2)?;
+        let (ra, na, sa) = rows(py, a.0, a.1, a.2)?;
+        let (rb, nb, sb) = rows(py, b.0, b.1, b.2)?;
+        let (rc, nc, sc) = rows(py, c.0, c.1, c.2)?;
+        let (da, db, dc) = (ra.data()?, rb.data()?, rc.data()?);
         let n = count(&[(na, a.1), (nb, b.1), (nc, c.1)])?;
-        let width: usize = tail.iter().product();
+        let width: usize = tail.iter().product::<usize>().max(1);
         let m = &self.m;
         let err = std::sync::Mutex::new(None::<(usize, DynamicsError)>);
-        let v = nogil(py, what, || {
-            let mut v = vec![0.0; n * width];
-            par_fill(n, width, &mut v, |s, e, chunk| {
-                for (k, o) in (s..e).zip(chunk.chunks_mut(width.max(1))) {
-                    if let Err(x) = f(m, row(&da, na, a.2, k), row(&db, nb, b.2, k), row(&dc, nc, c.2, k), o)
-                        && let Ok(mut g) = err.lock()
+        let arr = fill_out(py, what, n, sa && sb && sc, tail, STATES_PER_THREAD, |s, e, chunk| {
+            let mut w = scratch(m);
+            for (k, o) in (s..e).zip(chunk.chunks_exact_mut(width)) {
+                if let Err(x) = f(m, row(da, na, a.2, k), row(db, nb, b.2, k), row(dc, nc, c.2, k), o, &mut w)
+                {
+                    // the first failing state of this thread; the smallest over the threads wins
+                    if let Ok(mut g) = err.lock()
                         && g.as_ref().is_none_or(|(j, _)| k < *j)
                     {
                         *g = Some((k, x));
                     }
+                    return;
                 }
-            });
-            Ok(v)
+            }
         })?;
         if let Some((k, e)) = err.into_inner().ok().flatten() {
             return Err(dyn_err(what, (n > 1).then_some(k), e));
         }
-        out(py, v, n, sa && sb && sc, tail)
+        Ok(arr)
     }
 }
 
@@ -229,10 +218,17 @@ impl Model {
         a: &Bound<'_, PyAny>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (nq, nv) = (self.m.nq(), self.m.nv());
-        self.batch3(py, "rnea", [(q, "q", nq), (v, "v", nv), (a, "a", nv)], &[nv], |m, q, v, a, o| {
-            o.copy_from_slice(&m.rnea(q, v, a, None)?.tau);
-            Ok(())
-        })
+        self.batch3(
+            py,
+            "rnea",
+            [(q, "q", nq), (v, "v", nv), (a, "a", nv)],
+            &[nv],
+            |_| (),
+            |m, q, v, a, o, _| {
+                o.copy_from_slice(&m.rnea(q, v, a, None)?.tau);
+                Ok(())
+            },
+        )
     }
 
     /// Forward dynamics v̇ = ABA(q, v, τ): (nv,) or (N, nv). Book: §7.11; RBDA Table 7.1.
@@ -244,19 +240,30 @@ impl Model {
         tau: &Bound<'_, PyAny>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (nq, nv) = (self.m.nq(), self.m.nv());
-        self.batch3(py, "aba", [(q, "q", nq), (v, "v", nv), (tau, "tau", nv)], &[nv], |m, q, v, t, o| {
-            o.copy_from_slice(&m.aba(q, v, t, None)?);
-            Ok(())
-        })
+        self.batch3(
+            py,
+            "aba",
+            [(q, "q", nq), (v, "v", nv), (tau, "tau", nv)],
+            &[nv],
+            RsModel::aba_scratch,
+            |m, q, v, t, o, w| m.aba_checked(q, v, t, None, o, w),
+        )
     }
 
     /// Mass matrix M(q) = CRBA(q): (nv, nv) or (N, nv, nv). Book: §7.11; RBDA Table 6.2.
     fn crba<'py>(&self, py: Python<'py>, q: &Bound<'_, PyAny>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (nq, nv) = (self.m.nq(), self.m.nv());
-        self.batch3(py, "crba", [(q, "q", nq), (q, "q", nq), (q, "q", nq)], &[nv, nv], |m, q, _, _, o| {
-            put(o, &m.crba(q)?);
-            Ok(())
-        })
+        self.batch3(
+            py,
+            "crba",
+            [(q, "q", nq), (q, "q", nq), (q, "q", nq)],
+            &[nv, nv],
+            |_| (),
+            |m, q, _, _, o, _| {
+                put(o, &m.crba(q)?);
+                Ok(())
+            },
+        )
     }
 
     /// Internal: RNEA derivatives packed per state as [τ, ∂τ/∂q, ∂τ/∂v, M] (row-major).
@@ -273,7 +280,8 @@ impl Model {
             "rnea_derivatives",
             [(q, "q", nq), (v, "v", nv), (a, "a", nv)],
             &[nv * (1 + 3 * nv)],
-            |m, q, v, a, o| {
+            |_| (),
+            |m, q, v, a, o, _| {
                 let d = m.rnea_derivatives(q, v, a, None)?;
                 o[..nv].copy_from_slice(&d.tau);
                 let s = nv * nv;
@@ -299,7 +307,8 @@ impl Model {
             "aba_derivatives",
             [(q, "q", nq), (v, "v", nv), (tau, "tau", nv)],
             &[nv * (1 + 3 * nv)],
-            |m, q, v, t, o| {
+            |_| (),
+            |m, q, v, t, o, _| {
                 let d = m.aba_derivatives(q, v, t, None)?;
                 o[..nv].copy_from_slice(&d.vdot);
                 let s = nv * nv;

@@ -7,15 +7,14 @@
 //!
 //! Book: §2.9–2.17 (rotation matrices, Euler angles, angle vector, Euler parameters, Gibbs).
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 use numpy::{IntoPyArray, PyArrayDyn, PyArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use vectrix_rotation::{
-    EulerAngles, EulerKind, EulerSequence, Quaternion, ROTATION_TOL, check_rotation_matrix, nearest_rotation,
-};
+use vectrix_rotation::{EulerAngles, EulerKind, EulerSequence, Quaternion};
 
-use crate::util::{nogil, par_fill, par_map, real, rows};
+use crate::rotation_kernels::{EULER_BLOCK, euler_block, matrix_quat, quat_error};
+use crate::util::{CHEAP, build, fill_out, nogil, real_unchecked, rows, rows_unchecked};
 
 pyo3::create_exception!(
     _vectrix,
@@ -91,7 +90,8 @@ impl Rotation {
         Self { q, single }
     }
 
-    /// Values of every rotation, `width` each, computed in parallel without the GIL.
+    /// Values of every rotation, `width` each, written into a new numpy array in parallel
+    /// without the GIL.
     fn map<'py>(
         &self,
         py: Python<'py>,
@@ -99,19 +99,13 @@ impl Rotation {
         tail: &[usize],
         f: impl Fn(&Quaternion<f64>, &mut [f64]) + Sync,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let width: usize = tail.iter().product();
-        let n = self.q.len();
+        let width: usize = tail.iter().product::<usize>().max(1);
         let q = &self.q;
-        let v = nogil(py, what, || {
-            let mut v = vec![0.0; n * width];
-            par_fill(n, width, &mut v, |s, e, chunk| {
-                for (k, o) in (s..e).zip(chunk.chunks_mut(width)) {
-                    f(&q[k], o);
-                }
-            });
-            Ok(v)
-        })?;
-        out(py, v, n, self.single, tail)
+        fill_out(py, what, q.len(), self.single, tail, CHEAP, |s, e, chunk| {
+            for (k, o) in (s..e).zip(chunk.chunks_exact_mut(width)) {
+                f(&q[k], o);
+            }
+        })
     }
 
     /// Pairs rotations of `self` and `other` with broadcasting of a single one.
@@ -133,21 +127,17 @@ impl Rotation {
     #[staticmethod]
     #[pyo3(signature = (quat, *, scalar_first = false))]
     fn from_quat(py: Python<'_>, quat: &Bound<'_, PyAny>, scalar_first: bool) -> PyResult<Self> {
-        let (d, n, single) = rows(py, quat, "quat", 4)?;
+        let (r, n, single) = rows_unchecked(py, quat, "quat", 4)?;
+        let d = r.data()?;
+        // one pass: normalise, and stop at the first quaternion that is zero or not finite
         let q = nogil(py, "from_quat", || {
-            let q = par_map(n, |k| {
+            build(n, |k| {
                 let v = &d[4 * k..4 * k + 4];
-                let q = if scalar_first { quat_from(v) } else { Quaternion::new(v[3], v[0], v[1], v[2]) };
-                q.normalize()
-            });
-            if let Some(k) = q.iter().position(Option::is_none) {
-                return Err(PyValueError::new_err(format!(
-                    "quat[{k}] has norm 0 (or overflows); valid: a nonzero finite quaternion"
-                )));
-            }
-            Ok(q.into_iter().flatten().collect::<Vec<_>>())
+                let x = if scalar_first { quat_from(v) } else { Quaternion::new(v[3], v[0], v[1], v[2]) };
+                x.normalize().ok_or(k)
+            })
+            .map_err(|k| quat_error(d, k))
         })?;
-        debug_assert_eq!(q.len(), n);
         Ok(Self::new(q, single))
     }
 
@@ -176,7 +166,7 @@ impl Rotation {
     /// determinant ≤ 0 is a ValueError (it is no rotation). Book: §2.10, F2.15.3.
     #[staticmethod]
     fn from_matrix(py: Python<'_>, matrix: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let r = real(py, matrix, "matrix")?;
+        let r = real_unchecked(py, matrix, "matrix")?;
         let (n, single) = match r.shape.as_slice() {
             [3, 3] => (1, true),
             [n, 3, 3] => (*n, false),
@@ -187,38 +177,17 @@ impl Rotation {
                 )));
             }
         };
-        let q = nogil(py, "from_matrix", || {
-            par_map(n, |k| -> PyResult<Quaternion<f64>> {
-                let m = Matrix3::from_row_slice(&r.data[9 * k..9 * k + 9]);
-                if m.determinant().is_nan() || m.determinant() <= 0.0 {
-                    return Err(PyValueError::new_err(format!(
-                        "matrix[{k}] has determinant {:e}; valid: a rotation matrix (determinant > 0)",
-                        m.determinant()
-                    )));
-                }
-                // a rotation matrix to round-off is used as it is; others are projected
-                let m = if check_rotation_matrix(&m, ROTATION_TOL).is_ok() {
-                    m
-                } else {
-                    nearest_rotation(&m).map_err(|e| PyValueError::new_err(format!("matrix[{k}]: {e}")))?
-                };
-                Ok(Quaternion::from_rotation_matrix_unchecked(&m).canonical())
-            })
-            .into_iter()
-            .collect::<PyResult<Vec<_>>>()
-        })?;
+        let d = r.data()?;
+        // one pass over the input: check, project when needed, convert
+        let q = nogil(py, "from_matrix", || build(n, |k| matrix_quat(&d[9 * k..9 * k + 9], k)))?;
         Ok(Self::new(q, single))
     }
 
     /// Rotation matrices 𝓡(q) (N, 3, 3) (active: x ↦ 𝓡x). Book: (2.15.14).
     fn as_matrix<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         self.map(py, "as_matrix", &[3, 3], |q, o| {
-            let m = q.rotation_matrix();
-            for r in 0..3 {
-                for c in 0..3 {
-                    o[3 * r + c] = m[(r, c)];
-                }
-            }
+            // row-major out: nalgebra stores columns, so the transpose's storage is 𝓡's rows
+            o.copy_from_slice(q.rotation_matrix().transpose().as_slice());
         })
     }
 
@@ -226,12 +195,13 @@ impl Rotation {
     #[staticmethod]
     #[pyo3(signature = (rotvec, degrees = false))]
     fn from_rotvec(py: Python<'_>, rotvec: &Bound<'_, PyAny>, degrees: bool) -> PyResult<Self> {
-        let (d, _, single) = rows(py, rotvec, "rotvec", 3)?;
+        let (r, _, single) = rows(py, rotvec, "rotvec", 3)?;
+        let d = r.data()?;
         let s = if degrees { std::f64::consts::PI / 180.0 } else { 1.0 };
         let q = nogil(py, "from_rotvec", || {
-            Ok(par_map(d.len() / 3, |k| {
-                Quaternion::from_angle_vector(&(Vector3::new(d[3 * k], d[3 * k + 1], d[3 * k + 2]) * s))
-            }))
+            build(d.len() / 3, |k| {
+                Ok(Quaternion::from_angle_vector(&(Vector3::new(d[3 * k], d[3 * k + 1], d[3 * k + 2]) * s)))
+            })
         })?;
         Ok(Self::new(q, single))
     }
@@ -249,7 +219,8 @@ impl Rotation {
     /// From modified Rodrigues parameters p = tan(θ/4) n̂ (3,) or (N, 3). Book: extends §2.17.
     #[staticmethod]
     fn from_mrp(py: Python<'_>, mrp: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let (d, _, single) = rows(py, mrp, "mrp", 3)?;
+        let (r, _, single) = rows(py, mrp, "mrp", 3)?;
+        let d = r.data()?;
         let q = nogil(py, "from_mrp", || {
             Ok(d.chunks(3).map(|v| Quaternion::from_mrp(&Vector3::new(v[0], v[1], v[2]))).collect())
         })?;
@@ -264,7 +235,8 @@ impl Rotation {
     /// From Gibbs vectors g = tan(θ/2) n̂ (3,) or (N, 3) (vectrix extra). Book: §2.17, (2.17.1).
     #[staticmethod]
     fn from_gibbs(py: Python<'_>, gibbs: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let (d, _, single) = rows(py, gibbs, "gibbs", 3)?;
+        let (r, _, single) = rows(py, gibbs, "gibbs", 3)?;
+        let d = r.data()?;
         let q = nogil(py, "from_gibbs", || {
             Ok(d.chunks(3).map(|v| Quaternion::from_gibbs(&Vector3::new(v[0], v[1], v[2]))).collect())
         })?;
@@ -288,12 +260,13 @@ impl Rotation {
     #[pyo3(signature = (seq, angles, degrees = false))]
     fn from_euler(py: Python<'_>, seq: &str, angles: &Bound<'_, PyAny>, degrees: bool) -> PyResult<Self> {
         let s = sequence(seq)?;
-        let (d, _, single) = rows(py, angles, "angles", 3)?;
+        let (r, _, single) = rows(py, angles, "angles", 3)?;
+        let d = r.data()?;
         let f = if degrees { std::f64::consts::PI / 180.0 } else { 1.0 };
         let q = nogil(py, "from_euler", || {
-            Ok(par_map(d.len() / 3, |k| {
-                EulerAngles::new(s, [d[3 * k] * f, d[3 * k + 1] * f, d[3 * k + 2] * f]).quaternion()
-            }))
+            build(d.len() / 3, |k| {
+                Ok(EulerAngles::new(s, [d[3 * k] * f, d[3 * k + 1] * f, d[3 * k + 2] * f]).quaternion())
+            })
         })?;
         Ok(Self::new(q, single))
     }
@@ -317,11 +290,38 @@ impl Rotation {
                 "gimbal_lock = {gimbal_lock:?}; valid: 'warn', 'raise', 'ignore'"
             )));
         }
+        let f = if degrees { 180.0 / std::f64::consts::PI } else { 1.0 };
         let q = &self.q;
-        let batch = nogil(py, "as_euler", || {
-            EulerAngles::from_quaternions(q, s).map_err(|e| PyValueError::new_err(format!("rotation: {e}")))
+        // (first error, gimbal-locked indices) gathered from the threads
+        let found = std::sync::Mutex::new((None::<(usize, String)>, Vec::<usize>::new()));
+        let arr = fill_out(py, "as_euler", q.len(), self.single, &[3], CHEAP, |s0, e0, chunk| {
+            let mut locks = Vec::new();
+            let mut err = None;
+            // blocks small enough that the batch's own angle buffer stays in cache
+            for (b, out) in (s0..e0).step_by(EULER_BLOCK).zip(chunk.chunks_mut(3 * EULER_BLOCK)) {
+                let e = (b + EULER_BLOCK).min(e0);
+                match EulerAngles::from_quaternions(&q[b..e], s) {
+                    Ok(batch) => euler_block(&batch, b, f, out, &mut locks),
+                    Err(x) => {
+                        err = Some((b, x.to_string()));
+                        break;
+                    }
+                }
+            }
+            if let Ok(mut g) = found.lock() {
+                if let Some((b, x)) = err
+                    && g.0.as_ref().is_none_or(|(j, _)| b < *j)
+                {
+                    g.0 = Some((b, x));
+                }
+                g.1.extend(locks);
+            }
         })?;
-        let locks: Vec<usize> = batch.gimbal_locks().iter().map(|(k, _)| *k).collect();
+        let (err, mut locks) = found.into_inner().unwrap_or_default();
+        if let Some((_, e)) = err {
+            return Err(PyValueError::new_err(format!("rotation: {e}")));
+        }
+        locks.sort_unstable();
         if !locks.is_empty() {
             let msg = format!(
                 "gimbal lock at {} of {} rotations (first: {}) for {seq}: only a combination of the first and last \
@@ -342,17 +342,7 @@ impl Rotation {
                 _ => {}
             }
         }
-        let f = if degrees { 180.0 / std::f64::consts::PI } else { 1.0 };
-        let mut angles = batch.angles().to_vec();
-        for (k, sol) in batch.gimbal_locks() {
-            // scipy's choice for both kinds: the angle applied last is 0, so the first is the
-            // determined combination α + sign·γ (F2.13.5, F2.13.8)
-            if let vectrix_rotation::EulerSolution::GimbalLock { middle, combination, .. } = sol {
-                angles[*k] = [*combination, *middle, 0.0];
-            }
-        }
-        let v: Vec<f64> = angles.iter().flat_map(|a| a.map(|x| x * f)).collect();
-        out(py, v, q.len(), self.single, &[3])
+        Ok(arr)
     }
 
     /// The gimbal-locked elements for `seq`: a list of (index, beta, combination, sign) where
@@ -384,7 +374,8 @@ impl Rotation {
         vectors: &Bound<'_, PyAny>,
         inverse: bool,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let (d, m, vsingle) = rows(py, vectors, "vectors", 3)?;
+        let (r, m, vsingle) = rows(py, vectors, "vectors", 3)?;
+        let d = r.data()?;
         let n = self.q.len();
         if n != m && n != 1 && m != 1 {
             return Err(PyValueError::new_err(format!(
@@ -393,20 +384,15 @@ impl Rotation {
         }
         let count = n.max(m);
         let q = &self.q;
-        let v = nogil(py, "apply", || {
-            let mut v = vec![0.0; 3 * count];
-            par_fill(count, 3, &mut v, |s, e, chunk| {
-                for (k, o) in (s..e).zip(chunk.chunks_mut(3)) {
-                    let r = q[if n == 1 { 0 } else { k }];
-                    let r = if inverse { r.conjugate() } else { r };
-                    let x = &d[3 * if m == 1 { 0 } else { k }..];
-                    let y = r.rotate(&Vector3::new(x[0], x[1], x[2]));
-                    o.copy_from_slice(y.as_slice());
-                }
-            });
-            Ok(v)
-        })?;
-        out(py, v, count, self.single && vsingle, &[3])
+        fill_out(py, "apply", count, self.single && vsingle, &[3], CHEAP, |s, e, chunk| {
+            for (k, o) in (s..e).zip(chunk.chunks_exact_mut(3)) {
+                let r = q[if n == 1 { 0 } else { k }];
+                let r = if inverse { r.conjugate() } else { r };
+                let x = &d[3 * if m == 1 { 0 } else { k }..];
+                let y = r.rotate(&Vector3::new(x[0], x[1], x[2]));
+                o.copy_from_slice(y.as_slice());
+            }
+        })
     }
 
     /// Composition `self * other`: apply `other` first, then `self` (scipy's order), q₁ ⊗ q₂.
@@ -419,7 +405,7 @@ impl Rotation {
         let (n, single) = self.pair(o)?;
         let (a, b) = (&self.q, &o.q);
         let q = nogil(py, "compose", || {
-            Ok(par_map(n, |k| a[if a.len() == 1 { 0 } else { k }] * b[if b.len() == 1 { 0 } else { k }]))
+            build(n, |k| Ok(a[if a.len() == 1 { 0 } else { k }] * b[if b.len() == 1 { 0 } else { k }]))
         })?;
         Ok(Self::new(q, single))
     }

@@ -24,9 +24,10 @@ fn davenport_axes(py: Python<'_>, axes: &Bound<'_, PyAny>) -> PyResult<[Vector3<
             crate::util::shape_str(&r.shape)
         )));
     }
+    let d = r.data()?;
     let mut n = [Vector3::zeros(); 3];
     for (k, a) in n.iter_mut().enumerate() {
-        let v = Vector3::new(r.data[3 * k], r.data[3 * k + 1], r.data[3 * k + 2]);
+        let v = Vector3::new(d[3 * k], d[3 * k + 1], d[3 * k + 2]);
         let len = v.norm();
         if !(len > 0.0 && len.is_finite()) {
             return Err(PyValueError::new_err(format!(
@@ -122,7 +123,8 @@ impl Rotation {
     ) -> PyResult<Self> {
         let n = davenport_axes(py, axes)?;
         let ext = extrinsic(order)?;
-        let (d, _, single) = rows(py, angles, "angles", 3)?;
+        let (r, _, single) = rows(py, angles, "angles", 3)?;
+        let d = r.data()?;
         let f = if degrees { std::f64::consts::PI / 180.0 } else { 1.0 };
         let q = nogil(py, "from_davenport", || {
             Ok(d.chunks(3)
@@ -234,8 +236,9 @@ impl Rotation {
         b: &Bound<'_, PyAny>,
         weights: Option<Bound<'_, PyAny>>,
     ) -> PyResult<(Self, f64)> {
-        let (da, na, _) = rows(py, a, "a", 3)?;
-        let (db, nb, _) = rows(py, b, "b", 3)?;
+        let (ra, na, _) = rows(py, a, "a", 3)?;
+        let (rb, nb, _) = rows(py, b, "b", 3)?;
+        let (da, db) = (ra.data()?, rb.data()?);
         if na != nb {
             return Err(PyValueError::new_err(format!(
                 "a has {na} vectors and b {nb}; valid: the same number"
@@ -306,7 +309,7 @@ impl Rotation {
         }
         let idx = real(py, key, "index")?;
         let mut v = Vec::with_capacity(idx.len());
-        for &x in &idx.data {
+        for &x in idx.data()? {
             let i = if x < 0.0 { x + n as f64 } else { x };
             if i.fract() != 0.0 || !(0.0..n as f64).contains(&i) {
                 return Err(PyIndexError::new_err(format!("index {x}; valid: integers -{n} ≤ k < {n}")));

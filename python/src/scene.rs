@@ -129,12 +129,21 @@ impl Scene {
         Ok(Self { scene, text, file })
     }
 
-    /// The scene with `overrides` applied (none: a clone).
+    /// The scene with `overrides` applied (none: `None`, use `self.scene`).
     pub(crate) fn with(
         &self,
         py: Python<'_>,
         overrides: &[(String, Bound<'_, PyAny>)],
     ) -> PyResult<Option<RsScene>> {
+        Ok(self.with_text(py, overrides)?.map(|(s, _, _)| s))
+    }
+
+    /// [`Scene::with`] with the scene's TOML text and file label as run.
+    pub(crate) fn with_text(
+        &self,
+        py: Python<'_>,
+        overrides: &[(String, Bound<'_, PyAny>)],
+    ) -> PyResult<Option<(RsScene, String, String)>> {
         if overrides.is_empty() {
             return Ok(None);
         }
@@ -145,9 +154,9 @@ impl Scene {
         }
         let text = toml::to_string(&doc).map_err(|e| PyValueError::new_err(format!("overrides: {e}")))?;
         let label = format!("{} (with overrides)", self.file);
-        nogil(py, "Scene overrides", || Ok(RsScene::from_toml(&text, &label)))?
-            .map(Some)
-            .map_err(|e| scene_err(py, &e))
+        let scene = nogil(py, "Scene overrides", || Ok(RsScene::from_toml(&text, &label)))?
+            .map_err(|e| scene_err(py, &e))?;
+        Ok(Some((scene, text, label)))
     }
 }
 
@@ -266,15 +275,17 @@ impl Scene {
         overrides: Vec<(String, Bound<'py, PyAny>)>,
         cancel: Option<Cancel>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let own = self.with(py, &overrides)?;
-        let (run, sig) = run_scene(py, own.as_ref().unwrap_or(&self.scene), cancel.as_ref())?;
+        let own = self.with_text(py, &overrides)?;
+        let scene = own.as_ref().map_or(&self.scene, |o| &o.0);
+        let (run, sig) = run_scene(py, scene, cancel.as_ref())?;
         let d = guard("Scene.run", || run_to_py(py, &run))?;
+        // what `RunResult.view()` needs, the rows left out (they are in `d`)
+        let (text, file) = own.map_or_else(|| (self.text.clone(), self.file.clone()), |o| (o.1, o.2));
+        let t_last = run.t.last().copied().unwrap_or(0.0);
+        d.set_item("view", crate::view::ViewSource::new(text, file, run))?;
         if let Some(sig) = sig {
             // Ctrl-C: `vectrix.Interrupted` (a KeyboardInterrupt) carrying what was computed
-            let e = crate::util::Interrupted::new_err(format!(
-                "{sig}: run stopped at t = {}",
-                run.t.last().copied().unwrap_or(0.0)
-            ));
+            let e = crate::util::Interrupted::new_err(format!("{sig}: run stopped at t = {t_last}"));
             e.value(py).setattr("partial", d)?;
             return Err(e);
         }

@@ -6,6 +6,7 @@ Numpy in and out; every loop runs in Rust with the GIL released. See docs/python
 from __future__ import annotations
 
 import json as _json
+import os as _os
 import warnings as _warnings
 
 import numpy as _np
@@ -37,9 +38,14 @@ from .sweep import sweep  # noqa: F401
 __all__ = [
     "Rotation", "Slerp", "Scene", "Model", "SceneError", "GimbalLockError", "GimbalLockWarning",
     "Interrupted", "Cancel", "tf", "ss", "zpk", "margins", "bode", "step", "root_locus",
-    "TransferFunction", "StateSpace", "sweep",
+    "TransferFunction", "StateSpace", "sweep", "RunResult", "View",
 ]
 
+
+_threads = _os.environ.get("VECTRIX_NUM_THREADS")
+if _threads is not None and not (_threads.strip().isdigit() and int(_threads) > 0):
+    _warnings.warn(f"VECTRIX_NUM_THREADS={_threads!r} is ignored (batches use every core); valid: a positive "
+                   "integer, the threads vectrix's batches use", RuntimeWarning, stacklevel=2)
 
 Rotation = _Rotation  # the Rust class itself; helpers below are attached to it
 
@@ -198,6 +204,7 @@ class RunResult:
         self.columns = d["columns"]
         self.units = d["units"]
         self.summary = _json.loads(d["summary_json"])
+        self._view = d.get("view")
 
     @property
     def complete(self):
@@ -211,6 +218,39 @@ class RunResult:
         import pandas as pd
 
         return pd.DataFrame(self.columns, index=pd.Index(self.t, name="t"))
+
+    def view(self, *, cancel=None):
+        """The run's 3-D view (a `View`; a notebook cell ending with it shows it inline): the
+        page `vectrix run` writes as view.html, made by the same code. It replays the scene once
+        at the view's instants (at most 1001, and 40 000 poses), so it costs about one more run;
+        a set `cancel` flag stops that replay early. Book: §7.11 (poses of the bodies)."""
+        if self._view is None:
+            raise ValueError("this run has no view source; valid: a RunResult from Scene.run")
+        html, bound = self._view.page(cancel)
+        return View(html, bound)
+
+
+class View:
+    """A run's self-contained 3-D view (issue 36): one HTML page with three.js inlined, the
+    poses as JSON, no network. In Jupyter it shows inline (IPython calls `_repr_html_`: the
+    page in a sandboxed `<iframe srcdoc=…>`, escaped, scripts allowed and nothing else);
+    `.html` is the page, `.save(path)` writes it, `.bound` is the size bound it keeps."""
+
+    def __init__(self, html, bound):
+        self.html = html
+        self.bound = bound
+
+    def _repr_html_(self):
+        return _vectrix.view_iframe(self.html)
+
+    def save(self, path):
+        """Writes the page to `path` (UTF-8): the same file as `vectrix run`'s view.html."""
+        from pathlib import Path
+
+        Path(path).write_text(self.html, encoding="utf-8")
+
+    def __repr__(self):
+        return f"<vectrix.View: {len(self.html)} bytes>"
 
 
 Model = _Model

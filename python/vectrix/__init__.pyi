@@ -123,6 +123,15 @@ class RunResult:
     def __getitem__(self, name: str) -> F64: ...
     def frame(self) -> Any:
         """A pandas DataFrame indexed by t."""
+    def view(self, *, cancel: Cancel | None = None) -> View:
+        """The run's self-contained 3-D view (view.html of `vectrix run`; book §7.11)."""
+
+class View:
+    """A run's 3-D view page: shown inline in Jupyter (`_repr_html_`, a sandboxed iframe)."""
+    html: str
+    bound: int
+    def _repr_html_(self) -> str: ...
+    def save(self, path: Any) -> None: ...
 
 class Scene:
     """A scene file (docs/scenes.md; book §4.11, §7.11)."""

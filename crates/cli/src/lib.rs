@@ -45,7 +45,7 @@ mod view;
 
 pub use run::Outcome;
 pub use sink::DEFAULT_MAX_OUTPUT_BYTES;
-pub use view::View;
+pub use view::{View, scene_page, scene_page_bound};
 
 /// Command-line arguments.
 #[derive(Debug, Parser)]

@@ -255,11 +255,8 @@ pub(crate) fn run(
     }
     let limits = estimate.limits(max_bytes).map_err(|m| located(&text, &file, m))?;
     let run = simulate(&scene, quiet)?.in_units(units)?;
-    let page = view.then(|| {
-        let data = crate::view::scene_view(&scene, (&text, &file), &run, units)
-            .unwrap_or_else(|why| crate::view::no_poses(name, &why));
-        crate::view::page(name, &data)
-    });
+    let page =
+        view.then(|| crate::view::scene_page(&scene, (&text, &file), &run, units, Some(interrupted())));
     let w = write_dir(dir, name, limits, |sink| {
         crate::report::write_scene(sink, "", &scene, &run, page.as_deref()).map(|_| ())
     })?;

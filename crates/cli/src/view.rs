@@ -16,6 +16,8 @@
 //! Book: §2.10 (orientation matrices and their quaternions, §2.12), §7.11 (poses of a tree of
 //! bodies), §14.2 (aircraft attitude by 3-2-1 Euler angles).
 
+use std::sync::atomic::AtomicBool;
+
 use nalgebra::{Matrix3, Rotation3, SymmetricEigen, UnitQuaternion, Vector3};
 use serde_json::{Value, json};
 use vectrix_scene::spec::{Attach, EffectSpec, LoopSpec, MassSpec};
@@ -158,6 +160,33 @@ fn hud(columns: &[String], units: &[String], rows: &[Vec<f64>], keep: &[bool]) -
     json!({ "names": &columns[..n], "units": &units[..n], "values": values })
 }
 
+/// The self-contained page (`view.html`) of a body-scene run, as `vectrix run` writes it: the
+/// scene `scene` read from `text` (its file `file`), its run `run` in `units` (of which only
+/// the end time, the completion and the number of declared columns are read: the poses come
+/// from a second pass at the view's instants, stopped early when `cancel` is set). At most
+/// [`MAX_FRAMES`] instants and [`MAX_POSES`] poses, so the page stays within
+/// [`scene_page_bound`] whatever the run's samples. A run whose poses cannot be had gets a
+/// page that says why.
+///
+/// Book: §2.10, §2.12 (attitudes as quaternions), §7.11 (poses of a tree of bodies).
+pub fn scene_page(
+    scene: &Scene,
+    source: (&str, &str),
+    run: &Run,
+    units: UnitSystem,
+    cancel: Option<&AtomicBool>,
+) -> String {
+    let name = &scene.spec().name;
+    let data = scene_view(scene, source, run, units, cancel).unwrap_or_else(|why| no_poses(name, &why));
+    page(name, &data)
+}
+
+/// An upper bound of the bytes of [`scene_page`] for `scene` (the bound `vectrix run` checks
+/// against `--max-output-bytes` before it runs).
+pub fn scene_page_bound(scene: &Scene) -> u64 {
+    crate::budget::scene_view(scene)
+}
+
 /// The view of a body scene whose run is `run` (in `units`): a second pass of `scene` at the
 /// view's instants, read from `text` (its file `file`), and the poses of every body.
 ///
@@ -168,6 +197,7 @@ pub(crate) fn scene_view(
     (text, file): (&str, &str),
     run: &Run,
     units: UnitSystem,
+    cancel: Option<&AtomicBool>,
 ) -> Result<Value, String> {
     let spec = scene.spec();
     let nb = spec.bodies.len();
@@ -183,7 +213,6 @@ pub(crate) fn scene_view(
     let src = SceneSource::new(text, file).map_err(|e| e.to_string())?;
     let pass = Scene::from_spec_in(s, &src).map_err(|e| e.to_string())?;
     let r = if t_end > 0.0 {
-        let cancel = Some(crate::run::interrupted());
         pass.run_with(RunControl { progress: &mut |_| {}, cancel }).map_err(|e| e.to_string())?
     } else {
         return Err("the run has no motion to show: it stopped at t = 0".into());

@@ -34,6 +34,17 @@ impl View {
         Ok(View { page })
     }
 
+    /// The view of a page made by [`super::scene_page`] (a run from a library, such as the
+    /// Python package's `RunResult.view()`).
+    pub fn from_page(page: String) -> View {
+        View { page }
+    }
+
+    /// The page itself (`view.html`).
+    pub fn page(&self) -> &str {
+        &self.page
+    }
+
     /// The page in a sandboxed iframe (scripts allowed, nothing else), 100 % wide, 520 px high.
     pub fn iframe(&self) -> String {
         format!(

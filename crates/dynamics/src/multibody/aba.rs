@@ -87,17 +87,37 @@ impl<T: Scalar> Model<T> {
         tau: &[T],
         f_ext: Option<&LinkWrenches<T>>,
     ) -> Result<Vec<T>, DynamicsError> {
+        let mut out = vec![T::zero(); self.nv];
+        self.aba_checked(q, v, tau, f_ext, &mut out, &mut self.aba_scratch())?;
+        Ok(out)
+    }
+
+    /// [`Model::aba`] into `vdot` with caller-provided scratch: the same checks and errors
+    /// without an allocation per call, for batches of user input (one scratch per thread).
+    ///
+    /// Book: §7.11; RBDA Table 7.1.
+    ///
+    /// # Errors
+    /// As [`Model::aba`], and [`DynamicsError::DimensionMismatch`] when `vdot` is not nv long.
+    pub fn aba_checked(
+        &self,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        vdot: &mut [T],
+        s: &mut AbaScratch<T>,
+    ) -> Result<(), DynamicsError> {
         self.check_q(q)?;
         self.check_v(v, "v")?;
         self.check_v(tau, "τ")?;
         self.check_wrenches(f_ext)?;
-        let mut out = vec![T::zero(); self.nv];
-        let mut s = self.aba_scratch();
-        self.aba_into(q, v, tau, f_ext, &mut out, &mut s)?;
-        if !crate::error::all_finite(&out) {
+        crate::error::check_len(vdot.len(), self.nv, "v̇")?;
+        self.aba_into(q, v, tau, f_ext, vdot, s)?;
+        if !crate::error::all_finite(vdot) {
             return Err(DynamicsError::Overflow { what: "forward dynamics v̇" });
         }
-        Ok(out)
+        Ok(())
     }
 
     /// [`Model::aba`] without input checks and with caller-provided scratch: the hot path.
