@@ -149,7 +149,7 @@ impl Scene {
     pub(crate) fn gaps(&self, y: &[f64]) -> Result<Vec<Gap>, String> {
         let b = &self.built;
         let nq = b.model.nq();
-        let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])?;
+        let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
         Ok(self.contact_gaps(&kin))
     }
 
@@ -310,7 +310,7 @@ impl Scene {
             }
         }
         let (q, v) = y.split_at_mut(nq);
-        let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
+        let kin = kinematics(&b.model, q, v)?;
         let hits = self.impacts(&kin, v, &contacts.resting);
         for &(c, closing_speed, opening_speed) in &hits {
             let (effect, kind) = (self.contacts[c], ContactEventKind::Impact);

@@ -140,7 +140,6 @@ fn check_rolling_start(b: &Built, src: &Src) -> Result<(), SceneError> {
 pub struct Scene {
     spec: SceneSpec,
     pub(crate) built: Built,
-    pub(crate) order: Vec<usize>,
     pub(crate) ground: Ground,
     pub(crate) needs: Needs,
     pub(crate) solver: Method,
@@ -268,7 +267,6 @@ impl Scene {
 
     fn build_plain(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
         let built = build(&spec, src)?;
-        let order = kin::tree_order(&built.bodies);
         let (solver, named) = run::solver(&spec, src)?;
         let outputs = outputs::parse(&spec, &built, src)?;
         run::check_bounds(&spec, &built, &outputs, src)?;
@@ -301,10 +299,8 @@ impl Scene {
                  joint, a rotor on a pin)",
             ));
         }
-        needs.qdot_is_v = built.model.nq() == built.model.nv()
-            && built.bodies.iter().all(|b| {
-                b.qi == b.vi && !matches!(b.joint, spec::JointSpec::Ball {} | spec::JointSpec::Free {})
-            });
+        // only ball joints (also of free joints) have more coordinates than speeds
+        needs.qdot_is_v = built.model.nq() == built.model.nv();
         check_rolling_start(&built, src)?;
         for (k, c) in spec.checks.iter().enumerate() {
             if !["energy", "momentum", "angular_momentum"].contains(&c.as_str()) {
@@ -317,7 +313,6 @@ impl Scene {
         let mut scene = Self {
             spec,
             built,
-            order,
             ground: Ground::new(),
             needs,
             solver,

@@ -17,7 +17,7 @@ use vectrix_units::{Dimension, UnitSystem};
 
 use super::build::Src;
 use super::contacts::{ContactEvent, ContactEventKind, Contacts, NextContact};
-use super::kin::{Kin, kinematics, normalize};
+use super::kin::{Kin, kinematics};
 use super::project::{ConstraintViolation, ProjectScratch};
 use super::rhs::RhsScratch;
 use super::spec::SceneSpec;
@@ -519,7 +519,7 @@ impl Scene {
         // outputs and invariants at a sample
         let mut record = |run: &mut Run, t: f64, y: &[f64]| -> Result<(), SceneError> {
             let mut y = y.to_vec();
-            normalize(&b.bodies, &mut y[..nq]);
+            b.model.normalize_quaternions(&mut y[..nq]);
             if let Some((i, x)) = y.iter().map(|x| x.abs()).enumerate().max_by(|a, b| a.1.total_cmp(&b.1))
                 && x > peak.get().0
             {
@@ -537,7 +537,7 @@ impl Scene {
                 None
             };
             let (q, v) = y.split_at(nq);
-            let kin = kinematics(&b.model, &b.bodies, &self.order, q, v).map_err(|e| fail(t, e))?;
+            let kin = kinematics(&b.model, q, v).map_err(|e| fail(t, e))?;
             let mut row = Vec::with_capacity(run.columns.len());
             self.row(&kin, q, v, lambda.as_ref(), &mut row);
             run.t.push(t);
@@ -829,7 +829,7 @@ impl Scene {
         if run.stop.is_none() {
             run.stop = self.untrusted(&run, peak);
         }
-        normalize(&self.built.bodies, &mut y[..self.built.model.nq()]);
+        self.built.model.normalize_quaternions(&mut y[..self.built.model.nq()]);
         run.final_state = y;
         run.work.wall_seconds = start.elapsed().as_secs_f64();
         run

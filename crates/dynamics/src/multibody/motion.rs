@@ -155,9 +155,7 @@ impl<T: Scalar> Model<T> {
         }
         out.clear();
         out.extend(
-            self.link_seg
-                .iter()
-                .map(|&k| LinkAcceleration { alpha: s.alpha[k], acceleration: s.acc[k] }),
+            self.link_seg.iter().map(|&k| LinkAcceleration { alpha: s.alpha[k], acceleration: s.acc[k] }),
         );
     }
 
@@ -174,7 +172,8 @@ impl<T: Scalar> Model<T> {
         self.poses_into(q, &mut world, &mut poses);
         self.bias_accelerations_into(&world, v, &mut MotionScratch::default(), &mut out);
         if !out.iter().all(|a| {
-            crate::error::all_finite(a.alpha.as_slice()) && crate::error::all_finite(a.acceleration.as_slice())
+            crate::error::all_finite(a.alpha.as_slice())
+                && crate::error::all_finite(a.acceleration.as_slice())
         }) {
             return Err(DynamicsError::Overflow { what: "bias accelerations" });
         }

@@ -16,7 +16,14 @@ fn gap(a: &Vector3<f64>, b: &Vector3<f64>) -> f64 {
 }
 
 fn link(parent: Option<usize>, joint: Joint, offset: [f64; 3]) -> Link {
-    Link::new(parent, joint, Vector3::from(offset), 1.0, Vector3::new(0.1, 0.0, 0.0), Matrix3::identity() * 0.1)
+    Link::new(
+        parent,
+        joint,
+        Vector3::from(offset),
+        1.0,
+        Vector3::new(0.1, 0.0, 0.0),
+        Matrix3::identity() * 0.1,
+    )
 }
 
 fn twists_and_bias(m: &Model, q: &[f64], v: &[f64]) -> (Vec<LinkTwist>, Vec<LinkAcceleration>) {
@@ -47,7 +54,9 @@ fn double_pendulum_closed_form() {
     assert!(gap(&tw[0].velocity, &Vector3::zeros()) <= tol);
     assert!(gap(&tw[1].omega, &Vector3::new(0.0, 0.0, a + b)) <= tol);
     assert!(gap(&tw[1].velocity, &(Vector3::z() * a).cross(&r2)) <= tol);
-    assert!(gap(&acc[0].alpha, &Vector3::zeros()) <= tol && gap(&acc[0].acceleration, &Vector3::zeros()) <= tol);
+    assert!(
+        gap(&acc[0].alpha, &Vector3::zeros()) <= tol && gap(&acc[0].acceleration, &Vector3::zeros()) <= tol
+    );
     assert!(gap(&acc[1].alpha, &Vector3::zeros()) <= tol);
     assert!(gap(&acc[1].acceleration, &(-r2 * (a * a))) <= tol, "{:?}", acc[1]);
 }
@@ -165,7 +174,11 @@ fn every_joint_against_derivatives_of_the_body_frame_route() {
     for (k, ((t, r), (a, dm))) in tw.iter().zip(&reference).zip(acc.iter().zip(&moving)).enumerate() {
         assert!(gap(&t.omega, &r.omega) <= tol && gap(&t.velocity, &r.velocity) <= tol, "link {k}");
         assert!(gap(&a.alpha, &dm.omega.map(|x| x.eps)) <= tol, "α of link {k}: {:?}", a.alpha);
-        assert!(gap(&a.acceleration, &dm.velocity.map(|x| x.eps)) <= tol, "a of link {k}: {:?}", a.acceleration);
+        assert!(
+            gap(&a.acceleration, &dm.velocity.map(|x| x.eps)) <= tol,
+            "a of link {k}: {:?}",
+            a.acceleration
+        );
     }
     let checked = m.bias_accelerations(&q, &v).unwrap();
     assert_eq!(checked, acc);
@@ -181,7 +194,10 @@ fn every_joint_against_derivatives_of_the_body_frame_route() {
 fn bias_accelerations_refuses_bad_input() {
     let m = tree();
     let q = m.neutral();
-    assert!(matches!(m.bias_accelerations(&q[1..], &vec![0.0; m.nv()]), Err(DynamicsError::DimensionMismatch { .. })));
+    assert!(matches!(
+        m.bias_accelerations(&q[1..], &vec![0.0; m.nv()]),
+        Err(DynamicsError::DimensionMismatch { .. })
+    ));
     let mut v = vec![0.0; m.nv()];
     v[2] = f64::NAN;
     assert!(matches!(m.bias_accelerations(&q, &v), Err(DynamicsError::NonFinite { .. })));
