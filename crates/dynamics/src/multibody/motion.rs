@@ -19,7 +19,8 @@ use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
 use super::kinematics::LinkTwist;
-use super::model::{Model, PosesScratch};
+use super::model::{Model, PosesScratch, Segment};
+use super::spatial::Xform;
 use crate::DynamicsError;
 
 /// The bias acceleration of a link: its angular acceleration α and the acceleration of its
@@ -62,24 +63,37 @@ impl<T: Scalar> Model<T> {
         s.omega.resize(n, Vector3::zeros());
         s.vel.resize(n, Vector3::zeros());
         for (i, seg) in self.segs.iter().enumerate() {
-            let x = &world[i];
-            // the parent's motion, and 𝓞_{J/G} of the joint frame (fixed in the parent)
-            let (w_p, v_p, e_j) = match seg.parent {
-                Some(p) => {
-                    let e_j = if seg.placement_is_shift { world[p].E } else { seg.placement.E * world[p].E };
-                    let (w_p, mut v_p) = (s.omega[p], s.vel[p]);
-                    // a parent that keeps the ground's orientation does not turn: ω_p = 0
-                    if !seg.parent_upright {
-                        v_p += w_p.cross(&(x.r - world[p].r));
-                    }
-                    (w_p, v_p, e_j)
+            if self.free_seg[i] {
+                // a free joint at the root carrying a leaf body ([`Model::aba_into`]'s free
+                // leaves): its sliders along the joint frame's axes and its ball in one step
+                if seg.parent.is_none() {
+                    let vv = &v[seg.vi..seg.vi + 6];
+                    let rate = Vector3::new(vv[0], vv[1], vv[2]);
+                    let vel = if seg.placement_is_shift { rate } else { seg.placement.E.tr_mul(&rate) };
+                    let w = world[i + 3].E.tr_mul(&Vector3::new(vv[3], vv[4], vv[5]));
+                    // the sliders' frames do not turn; nothing but the next slider hangs from
+                    // them, so their velocities (which no bias term reads, ω = 0) are the body's
+                    s.omega[i..i + 3].fill(Vector3::zeros());
+                    s.vel[i..i + 4].fill(vel);
+                    s.omega[i + 3] = w;
                 }
-                None => (Vector3::zeros(), Vector3::zeros(), seg.placement.E),
+                continue;
+            }
+            let x = &world[i];
+            let (w_p, mut v_p) = match seg.parent {
+                Some(p) => (s.omega[p], s.vel[p]),
+                None => (Vector3::zeros(), Vector3::zeros()),
             };
+            // a parent that keeps the ground's orientation does not turn: ω_p = 0
+            if let Some(p) = seg.parent
+                && !seg.parent_upright
+            {
+                v_p += w_p.cross(&(x.r - world[p].r));
+            }
             let vv = &v[seg.vi..];
             let (w, vel) = match &seg.elem {
-                Elem::Revolute(a) => (w_p + e_j.tr_mul(a) * vv[0], v_p),
-                Elem::Prismatic(a) => (w_p, v_p + e_j.tr_mul(a) * vv[0]),
+                Elem::Revolute(a) => (w_p + ground_axis(seg, world, a) * vv[0], v_p),
+                Elem::Prismatic(a) => (w_p, v_p + ground_axis(seg, world, a) * vv[0]),
                 Elem::Spherical => (w_p + x.E.tr_mul(&Vector3::new(vv[0], vv[1], vv[2])), v_p),
                 Elem::Fixed => (w_p, v_p),
             };
@@ -190,8 +204,16 @@ impl<T: Scalar> Model<T> {
     /// If q or `out` is shorter than [`Model::nq`] or `v` shorter than [`Model::nv`].
     pub fn qdot_into(&self, q: &[T], v: &[T], out: &mut [T]) {
         let half = T::lit(0.5);
-        for s in &self.segs {
+        for (i, s) in self.segs.iter().enumerate() {
             let (qi, vi) = (s.qi, s.vi);
+            // a free leaf's three sliders in one copy (its ball follows as any other)
+            if self.free_seg[i] && s.parent.is_none() {
+                out[qi..qi + 3].copy_from_slice(&v[vi..vi + 3]);
+                continue;
+            }
+            if self.free_seg[i] && s.elem != Elem::Spherical {
+                continue;
+            }
             match s.elem {
                 Elem::Revolute(_) | Elem::Prismatic(_) => out[qi] = v[vi],
                 Elem::Spherical => {
@@ -247,6 +269,19 @@ pub fn normalize_quaternion<T: Scalar>(e: &mut [T]) {
     let n = e.iter().fold(T::zero(), |acc, x| acc + *x * *x).sqrt();
     if n > T::zero() {
         e.iter_mut().for_each(|x| *x /= n);
+    }
+}
+
+/// Ground components of a segment's joint-frame axis: 𝓞_{J/G}ᵀ â with 𝓞_{J/G} = 𝓞_{J/P} 𝓞_{P/G}
+/// (exactly â behind a placement without rotation on the ground or an upright parent).
+#[inline(always)]
+fn ground_axis<T: Scalar>(seg: &Segment<T>, world: &[Xform<T>], a: &Vector3<T>) -> Vector3<T> {
+    match seg.parent {
+        None if seg.placement_is_shift => *a,
+        Some(_) if seg.placement_is_shift && seg.parent_upright => *a,
+        Some(p) if seg.placement_is_shift => world[p].E.tr_mul(a),
+        Some(p) => (seg.placement.E * world[p].E).tr_mul(a),
+        None => seg.placement.E.tr_mul(a),
     }
 }
 

@@ -202,3 +202,28 @@ fn bias_accelerations_refuses_bad_input() {
     v[2] = f64::NAN;
     assert!(matches!(m.bias_accelerations(&q, &v), Err(DynamicsError::NonFinite { .. })));
 }
+
+/// A lone free body (the free-leaf path: sliders and ball in one step) whose joint frame is
+/// turned by 𝓞_{J/G}: at the identity quaternion ω = 𝓞ᵀ ω_link and v = 𝓞ᵀ (ẋ, ẏ, ż) (joint-frame
+/// rates), and at v̇ = 0 nothing accelerates (a body on its own has no bias, §5).
+#[test]
+fn free_leaf_closed_form() {
+    let mut l = link(None, Joint::Free, [0.3, -0.1, 0.2]);
+    let turn = nalgebra::Rotation3::from_scaled_axis(Vector3::new(0.4, -0.7, 0.2)).into_inner();
+    l.orientation = turn;
+    let m = Model::new(&[l]).unwrap();
+    assert_eq!(m.free_leaves, vec![0], "the free-leaf path is the one under test");
+    let q = [1.0, 2.0, -1.0, 1.0, 0.0, 0.0, 0.0];
+    let v = [0.5, -1.5, 0.25, 2.0, -0.5, 1.0];
+    let (tw, acc) = twists_and_bias(&m, &q, &v);
+    let tol = 4.0 * f64::EPSILON;
+    assert!(gap(&tw[0].omega, &(turn.transpose() * Vector3::new(2.0, -0.5, 1.0))) <= tol, "{:?}", tw[0]);
+    assert!(gap(&tw[0].velocity, &(turn.transpose() * Vector3::new(0.5, -1.5, 0.25))) <= tol, "{:?}", tw[0]);
+    assert!(
+        gap(&acc[0].alpha, &Vector3::zeros()) == 0.0 && gap(&acc[0].acceleration, &Vector3::zeros()) == 0.0
+    );
+    // q̇: the joint-frame rates, and ½ (1, 0⃗) ⊗ (0, ω) = (0, ω/2) at the identity (§2.15)
+    let mut qd = [f64::NAN; 7];
+    m.qdot_into(&q, &v, &mut qd);
+    assert_eq!(qd, [0.5, -1.5, 0.25, 0.0, 1.0, -0.25, 0.5]);
+}
