@@ -204,16 +204,8 @@ impl<T: Scalar> Model<T> {
     /// If q or `out` is shorter than [`Model::nq`] or `v` shorter than [`Model::nv`].
     pub fn qdot_into(&self, q: &[T], v: &[T], out: &mut [T]) {
         let half = T::lit(0.5);
-        for (i, s) in self.segs.iter().enumerate() {
+        for s in &self.segs {
             let (qi, vi) = (s.qi, s.vi);
-            // a free leaf's three sliders in one copy (its ball follows as any other)
-            if self.free_seg[i] && s.parent.is_none() {
-                out[qi..qi + 3].copy_from_slice(&v[vi..vi + 3]);
-                continue;
-            }
-            if self.free_seg[i] && s.elem != Elem::Spherical {
-                continue;
-            }
             match s.elem {
                 Elem::Revolute(_) | Elem::Prismatic(_) => out[qi] = v[vi],
                 Elem::Spherical => {
