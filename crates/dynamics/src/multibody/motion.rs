@@ -3,8 +3,8 @@
 //! bias accelerations (v̇ = 0), q̇ from v, and the renormalization of ball-joint quaternions;
 //! all generic over the scalar (f64, or dual numbers for exact derivatives).
 //!
-//! Every joint is a sequence of elementary segments ([`super::joint`]); segment s with parent p
-//! moves, in ground components, by
+//! Every joint is a sequence of elementary segments (revolute, prismatic, spherical, fixed);
+//! segment s with parent p moves, in ground components, by
 //!   ω_s = ω_p + ω_rel,  v_s = v_p + ω_p × (r_s − r_p) + v_rel,
 //! where a pin about â turns by ω_rel = 𝓞_{J/G}ᵀ â θ̇, a slider along â moves by
 //! v_rel = 𝓞_{J/G}ᵀ â ṡ (𝓞_{J/G} = 𝓞_{J/P} 𝓞_{P/G}: the joint frame, fixed in the parent), and a
