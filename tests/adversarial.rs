@@ -26,12 +26,12 @@ mod cli;
 mod cli {
     pub const COVERED: &[&str] = &[];
 }
+#[path = "adversarial/aircraft_scene.rs"]
+mod aircraft_scene;
 #[path = "adversarial/dynamics.rs"]
 mod dynamics;
 #[path = "adversarial/flight.rs"]
 mod flight;
-#[path = "adversarial/flight_scene.rs"]
-mod flight_scene;
 #[path = "adversarial/frames.rs"]
 mod frames;
 #[path = "adversarial/kinematics.rs"]

@@ -321,12 +321,12 @@ fn section_14_7_doublet_response_and_mode_figures() {
     assert!(matches!(modes_svg("empty", &[]), Err(FlightError::Plot { .. })));
 }
 
-/// Flight scenes (§14.2 control inputs, §14.6–14.7 modes): an aircraft in a TOML file, trimmed,
-/// linearized and flown by the nonlinear and the linear model side by side.
-mod flight_scene {
+/// Aircraft scenes (§14.2 control inputs, §14.6–14.7 modes): the business jet as a free body
+/// with `aero` and `thrust` effects in a TOML file, trimmed, linearized with dual numbers and
+/// flown through control inputs by the one scene pipeline.
+mod aircraft_scene {
     use super::*;
-    use vectrix::scene::SceneError;
-    use vectrix::scene::flight::FlightScene;
+    use vectrix::scene::Scene;
 
     fn example(name: &str) -> String {
         let p = format!("{}/examples/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"));
@@ -338,154 +338,104 @@ mod flight_scene {
         text.replacen(from, to, 1)
     }
 
+    fn load(text: &str) -> Scene {
+        Scene::from_toml(text, "jet.toml").unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// The eigenvalues with |λ| > 1e-6 and Im λ ≥ 0 (one per mode), slowest first.
+    fn modes(scene: &Scene) -> Vec<[f64; 2]> {
+        let mut l: Vec<[f64; 2]> = scene
+            .linearize()
+            .unwrap()
+            .eigenvalues
+            .into_iter()
+            .filter(|z| z[0].hypot(z[1]) > 1e-6 && z[1] >= 0.0)
+            .collect();
+        l.sort_by(|a, b| a[0].hypot(a[1]).total_cmp(&b[0].hypot(b[1])));
+        l
+    }
+
     #[test]
-    fn section_14_7_business_jet_doublet_scene_modes_and_linear_agreement() {
-        let text = with(&example("business_jet_doublet"), "duration = 120.0", "duration = 30.0");
-        let text = with(&text, "samples = 1201", "samples = 301");
-        let scene = FlightScene::from_toml(&text, "business_jet_doublet.toml").unwrap();
-        // trim residual ≤ 1e-10 (issue 10), level: Θ = α (Fact 10.8.5 with γ = 0)
-        let trim = scene.linearization().trim;
+    fn section_14_7_business_jet_doublet_scene_modes() {
+        let text = with(&example("business_jet_doublet"), "duration = 120.0", "duration = 10.0");
+        let text = with(&text, "samples = 1200", "samples = 100");
+        let scene = load(&text);
+        // trim residual |v̇|∞ ≤ 1e-10 (issue 10)
+        let trim = scene.trim_report().expect("the example trims");
         assert!(trim.residual <= 1e-10, "{}", trim.residual);
-        assert_abs(trim.state.attitude.theta, trim.state.aero_angles().alpha, 4.0 * EPS);
-        let run = scene.run().unwrap();
-        // the five modes of Tables 14.1–14.2 at the book's printed precision (§14.7, §14.8)
-        let names: Vec<&str> = run.modes.iter().map(|m| m.name.as_str()).collect();
-        assert_eq!(names, ["short period", "phugoid", "Dutch roll", "roll", "spiral"]);
-        let book = [("-1.001", "2.649"), ("-0.0042", "0.0922"), ("-0.065", "1.687"), ("-0.501", "0")];
-        for (m, (re, im)) in run.modes.iter().zip(book) {
-            assert_printed(m.re, re);
+        // the five modes of Tables 14.1–14.2 at the book's printed precision (§14.7, §14.8):
+        // spiral, phugoid, roll, Dutch roll, short period by |λ|
+        let m = modes(&scene);
+        assert_eq!(m.len(), 5, "{m:?}");
+        assert_printed(m[0][0], "-0.00102");
+        assert_eq!(m[0][1], 0.0, "the spiral is real");
+        let book = [("-0.0042", "0.0922"), ("-0.501", "0"), ("-0.065", "1.687"), ("-1.001", "2.649")];
+        for (z, (re, im)) in m[1..].iter().zip(book) {
+            assert_printed(z[0], re);
             if im == "0" {
-                assert_eq!(m.im, 0.0, "the roll mode is real");
+                assert_eq!(z[1], 0.0, "the roll mode is real");
             } else {
-                assert_printed(m.im, im);
+                assert_printed(z[1], im);
             }
         }
-        assert_printed(run.modes[4].re, "-0.00102");
-        assert_eq!(run.poles.len(), 8);
-        // t = 0 is the trim; the doublet moves α and q, and the linear model follows the
-        // nonlinear one to a small fraction of the excursion during the short period
-        let alpha = run.outputs.iter().position(|o| o == "alpha").unwrap();
-        assert_eq!(run.nonlinear[alpha][0], trim.state.aero_angles().alpha);
-        assert!(run.max_excursion(alpha) > 0.03);
-        assert!(run.max_linear_error(alpha).unwrap() < 0.01 * run.max_excursion(alpha));
-        // the elevator output is trim + doublet: +0.01 on [1, 2), −0.01 on [2, 3)
-        let de = run.outputs.iter().position(|o| o == "elevator").unwrap();
-        let at = |t: f64| run.nonlinear[de][run.t.iter().position(|&s| (s - t).abs() < 1e-9).unwrap()];
-        assert_abs(at(1.5) - trim.controls.elevator, 0.01, 1e-15);
-        assert_abs(at(2.5) - trim.controls.elevator, -0.01, 1e-15);
-        assert_eq!(at(3.5), trim.controls.elevator);
-        // flown in the catalogue's units (the book's): u in ft/s, angles in rad
-        assert!(
-            run.to_csv().starts_with("t [s],u [ft/s],u_linear [ft/s],alpha [rad],alpha_linear [rad]"),
-            "{}",
-            run.to_csv().lines().next().unwrap_or("")
-        );
-        assert!(run.summary_json().contains("\"short period\""));
-        assert!(run.response_svg(alpha).unwrap().contains("<svg"));
-        assert!(run.modes_svg().unwrap().contains("<svg"));
+        let run = scene.run(&mut |_| {}).unwrap();
+        // level flight: Θ = α at the trim (Fact 10.8.5 with γ = 0), to rounding
+        let alpha = run.column("air:jet.alpha").unwrap();
+        let theta = run.column("euler321:jet.theta").unwrap();
+        assert_abs(theta[0], alpha[0], 4.0 * EPS);
+        // the ±0.01 rad doublet on [1, 3) moves α and q; before it the flight is steady
+        let q = run.column("omega_body:jet.y").unwrap();
+        let before = run.t.iter().position(|t| *t >= 1.0).unwrap();
+        for k in 0..=before {
+            assert!((alpha[k] - alpha[0]).abs() < 1e-9 && q[k].abs() < 1e-9, "t = {}", run.t[k]);
+        }
+        let swing = alpha.iter().map(|a| (a - alpha[0]).abs()).fold(0.0, nan_max);
+        // (the run equals the 12-state flight equations to 5e-12: tests/scene_aircraft.rs)
+        assert!(swing > 0.03 && swing < 0.04, "α excursion {swing}");
     }
 
     #[test]
-    fn linear_response_error_is_quadratic_in_the_input_amplitude() {
-        // The linearization is exact to first order, so |nonlinear − linear| scales as A²:
-        // a tenfold smaller doublet leaves a hundredfold smaller gap (the second-order terms,
-        // e.g. the induced drag of the short-period lift excursion, dominate it).
+    fn nonlinear_response_departs_from_linear_as_the_amplitude_squared() {
+        // The linearization is exact to first order, so the response δx(A) is A·x₁ + A²·x₂ + …:
+        // δx(2A) − 2 δx(A) = 2A² x₂ + …, a tenfold smaller doublet leaves a hundredfold
+        // smaller departure from superposition (the induced drag of the short-period lift
+        // excursion is the largest second-order term).
         let base = with(&example("business_jet_doublet"), "duration = 120.0", "duration = 20.0");
-        let base = with(&base, "samples = 1201", "samples = 201");
-        let gap = |a: &str| {
-            let text = with(&base, "amplitude = 0.01", &format!("amplitude = {a}"));
-            let run = FlightScene::from_toml(&text, "s.toml").unwrap().run().unwrap();
-            let q = run.outputs.iter().position(|o| o == "q").unwrap();
-            (run.max_linear_error(q).unwrap(), run.max_excursion(q))
+        let base = with(&base, "samples = 1200", "samples = 200");
+        let q_of = |a: f64| {
+            let text = with(&base, "amplitude = 0.01", &format!("amplitude = {a:?}"));
+            load(&text).run(&mut |_| {}).unwrap().column("velocity_body:jet.u").unwrap()
         };
-        let (g1, x1) = gap("0.004");
-        let (g2, x2) = gap("0.0004");
-        assert!((x1 / x2 - 10.0).abs() < 0.05, "excursion is linear in A: {}", x1 / x2);
+        let departure = |a: f64| {
+            let (one, two, zero) = (q_of(a), q_of(2.0 * a), q_of(0.0));
+            let d = (0..one.len()).map(|k| ((two[k] - zero[k]) - 2.0 * (one[k] - zero[k])).abs());
+            d.fold(0.0, nan_max)
+        };
+        let (g1, g2) = (departure(0.004), departure(0.0004));
         // slope 2 on a log–log scale; third-order terms shift it by a few hundredths here
         let slope = (g1 / g2).log10();
-        assert!((slope - 2.0).abs() < 0.05, "gap ratio {} (slope {slope})", g1 / g2);
+        assert!((slope - 2.0).abs() < 0.05, "departure ratio {} (slope {slope})", g1 / g2);
     }
 
     #[test]
-    fn level_turn_scene_couples_and_leaves_out_linear_positions() {
+    fn level_turn_scene_banks_as_a_coordinated_turn() {
         let text = with(&example("business_jet_turn_rudder"), "duration = 30.0", "duration = 10.0");
-        let text = with(&text, "samples = 601", "samples = 101");
-        let text = with(&text, "outputs = [", "outputs = [\"x\", \"y\", ");
-        let scene = FlightScene::from_toml(&text, "turn.toml").unwrap();
-        let trim = scene.linearization().trim;
-        assert!(trim.residual <= 1e-10);
+        let text = with(&text, "samples = 600", "samples = 100");
+        let scene = load(&text);
+        assert!(scene.trim_report().unwrap().residual <= 1e-10);
+        let run = scene.run(&mut |_| {}).unwrap();
         // coordinated turn: tan Φ ≈ V Ψ̇ / g (12.1, small α), right bank for a right turn
-        let v: f64 = 675.124;
-        let phi = trim.state.attitude.phi;
-        assert!((phi.tan() - v * 0.0523599 / 32.2).abs() < 0.01, "Φ = {phi}");
-        let run = scene.run().unwrap();
-        assert!(run.modes.iter().all(|m| m.name.starts_with("mode ")));
-        assert!(run.linear[0].is_none() && run.linear[1].is_none());
-        assert!(run.linear[2..].iter().all(Option::is_some));
-        // Ψ grows at the turn rate, less what the left-yawing rudder pulse took off (the linear
-        // model, reference Ψ̇t plus δΨ, agrees)
-        let psi = run.outputs.iter().position(|o| o == "psi").unwrap();
-        let last = run.nonlinear[psi].len() - 1;
-        let psi_end = run.nonlinear[psi][last];
-        let psi_lin = run.linear[psi].as_ref().unwrap()[last];
-        assert!(psi_end < 0.0523599 * 10.0 && psi_end > 0.0523599 * 10.0 - 0.05, "Ψ(10 s) = {psi_end}");
-        assert!((psi_end - psi_lin).abs() < 2e-3, "Ψ {psi_end} vs linear {psi_lin}");
-        assert!(!run.to_csv().lines().next().unwrap().contains("x_linear"));
-    }
-
-    fn invalid(text: &str) -> (usize, String, String) {
-        match FlightScene::from_toml(text, "bad.toml").unwrap_err() {
-            SceneError::Invalid { line, path, message, .. } => (line, path, message),
-            SceneError::Parse { line, message, .. } => (line, "<parse>".into(), message),
-            e => panic!("unexpected {e}"),
-        }
-    }
-
-    #[test]
-    fn bad_flight_scenes_are_typed_errors_with_line_and_valid_values() {
-        let ok = example("business_jet_doublet");
-        let line_of = |needle: &str| ok.lines().position(|l| l.contains(needle)).unwrap() + 1;
-        let (line, path, msg) = invalid(&with(&ok, "control = \"elevator\"", "control = \"flaps\""));
-        assert_eq!((line, path.as_str()), (line_of("control ="), "inputs[0].control"));
-        assert!(msg.contains("valid: elevator, aileron, rudder, thrust"), "{msg}");
-        let (_, path, msg) = invalid(&with(&ok, "\"theta\"", "\"pitch\""));
-        // the offending element itself (the fourth output)
-        assert_eq!(path, "outputs[3]");
-        assert!(msg.contains("unknown output `pitch`") && msg.contains("theta"), "{msg}");
-        let (_, path, msg) = invalid(&with(&ok, "width = 1.0\n", ""));
-        assert_eq!(path, "inputs[0].width");
-        assert!(msg.contains("needs `width`"), "{msg}");
-        let (_, _, msg) =
-            invalid(&with(&ok, "model = \"business_jet\"", "model = \"business_jet\"\nmass = -3.0"));
-        assert!(msg.contains("mass = -3") && msg.contains("> 0"), "{msg}");
-        let (_, path, msg) = invalid(&with(
-            &ok,
-            "model = \"business_jet\"",
-            "model = \"business_jet\"\ncoefficients = { cm_alfa = -1.0 }",
-        ));
-        assert_eq!(path, "aircraft.coefficients.cm_alfa");
-        assert!(msg.contains("unknown coefficient") && msg.contains("cm_alpha"), "{msg}");
-        let (_, _, msg) = invalid(&with(&ok, "model = \"business_jet\"", "model = \"cessna\""));
-        assert!(msg.contains("valid: business_jet"), "{msg}");
-        // unreachable trim: far too slow to carry the weight within the α limit
-        let (line, path, msg) = invalid(&with(&ok, "airspeed = 675.124", "airspeed = 60.0"));
-        assert_eq!((line, path.as_str()), (line_of("[trim]"), "trim"));
-        // the message names the condition left unmet (here the largest residual, U̇ = 0)
-        assert!(msg.contains("cannot trim") && msg.contains("= 0 ("), "{msg}");
-        let (_, _, msg) = invalid(
-            &with(&ok, "gamma = 0.0", "gamma = 0.0\nturn_rate = 0.1\n")
-                .replace("gamma = 0.0", "gamma = 0.05"),
-        );
-        assert!(msg.contains("not both"), "{msg}");
-        let (_, path, msg) = invalid(&with(&ok, "shape = \"doublet\"", "shape = \"sine\""));
-        assert_eq!(path, "inputs[0].shape");
-        assert!(msg.contains("valid: doublet, step, pulse"), "{msg}");
-        // unknown keys are refused at their line, with their item path
-        let (line, path, msg) = invalid(&with(&ok, "gamma = 0.0", "gama = 0.0"));
-        assert_eq!((line, path.as_str()), (line_of("gamma = 0.0"), "trim.gama"));
-        assert!(msg.contains("gama"), "{msg}");
-        let (_, path, _) = invalid(&with(&ok, "duration = 120.0", "duration = -1.0"));
-        assert_eq!(path, "duration");
+        let (v, rate, g) = (675.124 * 0.3048, 0.05235987755982988, 32.2 * 0.3048);
+        let phi = run.column("euler321:jet.phi").unwrap();
+        assert!((phi[0].tan() - v * rate / g).abs() < 0.01, "Φ = {}", phi[0]);
+        assert_abs(run.column("air:jet.beta").unwrap()[0], 0.0, 1e-12);
+        // Ψ grows at the turn rate, less what the left-yawing rudder pulse took off
+        let psi = run.column("euler321:jet.psi").unwrap();
+        let end = psi[psi.len() - 1] - psi[0];
+        assert!(end < rate * 10.0 && end > rate * 10.0 - 0.05, "Ψ(10 s) − Ψ(0) = {end}");
+        // before the pulse the turn is steady: ω = Ψ̇ ẑ in the ground frame
+        let wz = run.column("omega:jet.z").unwrap();
+        assert_abs(wz[0], rate, 1e-12);
     }
 }
 

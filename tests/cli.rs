@@ -135,67 +135,56 @@ fn tour_and_unknown_subcommand() {
     assert!(cli(&["frobnicate"]).is_err());
 }
 
-/// A flight scene (an `[aircraft]` table) through `run` and `check`: trim, modes, nonlinear
-/// and linear responses, one SVG per output and the pole map (§14.2, §14.7).
+/// An aircraft scene (a free body with `aero` and `thrust` effects) through `check`, `run`,
+/// `--units imperial` and `sweep`; a file in the old flight form is refused with its new form.
 #[test]
-fn run_and_check_flight_scene() {
+fn run_check_and_sweep_aircraft_scene() {
     let dir = temp_dir("flight");
     let text = std::fs::read_to_string(example("business_jet_doublet")).unwrap();
     let text = text.replacen("duration = 120.0", "duration = 10.0", 1).replacen(
-        "samples = 1201",
-        "samples = 101",
+        "samples = 1200",
+        "samples = 100",
         1,
     );
     let path = dir.join("jet.toml");
-    std::fs::write(&path, text).unwrap();
+    std::fs::write(&path, &text).unwrap();
     let p = path.display().to_string();
     let checked = cli(&["check", &p]).unwrap();
-    assert!(checked.contains("ok — flight scene `business_jet_doublet`"), "{checked}");
+    assert!(checked.contains("ok — scene `business_jet_doublet`"), "{checked}");
+    assert!(checked.contains("trimmed (") && checked.contains("effects[1].elevator"), "{checked}");
     let out_dir = dir.join("out").display().to_string();
     let printed = cli(&["run", &p, "--out", &out_dir, "--quiet"]).unwrap();
-    assert!(printed.contains("short period  λ = -1.00129 ± 2.64949j"), "{printed}");
+    assert!(printed.contains("trimmed ("), "{printed}");
     let dest = dir.join("out").join("business_jet_doublet");
-    for f in [
-        "trajectory.csv",
-        "summary.json",
-        "modes.svg",
-        "u.svg",
-        "alpha.svg",
-        "q.svg",
-        "theta.svg",
-        "elevator.svg",
-    ] {
-        assert!(dest.join(f).is_file(), "{f} missing");
-    }
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dest.join("summary.json")).unwrap()).unwrap();
-    assert_eq!(summary["modes"].as_array().unwrap().len(), 5);
     assert!(summary["trim"]["residual"].as_f64().unwrap() <= 1e-10);
+    assert_eq!(summary["trim"]["free"][2], "effects[2]");
     let csv = std::fs::read_to_string(dest.join("trajectory.csv")).unwrap();
     assert_eq!(csv.lines().count(), 102);
-    // outputs in SI by default (the aircraft flies in the book's ft and slug): u in m/s, exactly
-    // the trim airspeed's u component × 0.3048
-    assert!(csv.starts_with("t [s],u [m/s],u_linear [m/s]"), "{}", csv.lines().next().unwrap_or(""));
+    assert!(csv.starts_with("t [s],velocity_body:jet.u [m/s]"), "{}", csv.lines().next().unwrap_or(""));
     assert_eq!(summary["units"], "si");
     let imperial = cli(&["run", &p, "--out", &out_dir, "--quiet", "--units", "imperial"]).unwrap();
     assert!(imperial.contains("wrote"));
     let csv_ft = std::fs::read_to_string(dest.join("trajectory.csv")).unwrap();
-    assert!(csv_ft.starts_with("t [s],u [ft/s]"));
+    assert!(csv_ft.starts_with("t [s],velocity_body:jet.u [ft/s]"));
+    // u(0) is the file's 675.124 ft/s, in SI and back, to rounding
     let u0 = |c: &str| -> f64 { c.lines().nth(1).unwrap().split(',').nth(1).unwrap().parse().unwrap() };
-    assert!((u0(&csv) - u0(&csv_ft) * 0.3048).abs() <= 2.0 * f64::EPSILON * u0(&csv));
-    // sweeps take multibody scenes only, and say so
-    let e = cli(&["sweep", &p, "--param", "duration=1,2"]).unwrap_err();
-    assert!(e.contains("flight scene"), "{e}");
-    // a bad flight scene is reported with file, line and what is valid
-    std::fs::write(
-        &path,
-        std::fs::read_to_string(example("business_jet_doublet"))
-            .unwrap()
-            .replace("control = \"elevator\"", "control = \"flaps\""),
-    )
-    .unwrap();
-    let e = cli(&["check", &p]).unwrap_err();
-    assert!(e.contains("jet.toml:") && e.contains("valid: elevator, aileron, rudder, thrust"), "{e}");
+    assert!((u0(&csv_ft) - 675.124).abs() <= 1e-9, "{}", u0(&csv_ft));
+    assert!((u0(&csv) - u0(&csv_ft) * 0.3048).abs() <= 4.0 * f64::EPSILON * u0(&csv));
+    // an aircraft scene sweeps like any other: two doublet amplitudes, each run trimmed
+    let swept = cli(&["sweep", &p, "--param", "effects.1.elevator.amplitude=0.005,0.01", "--out", &out_dir]);
+    assert!(
+        swept.as_ref().is_ok_and(|s| s.contains("| 001 | effects.1.elevator.amplitude=0.01 | true |")),
+        "{swept:?}"
+    );
+    // the old flight form is refused at its table with the new form, and nothing is written
+    let old =
+        "name = \"old\"\nduration = 1.0\n[aircraft]\nmodel = \"business_jet\"\n[trim]\nairspeed = 675.124\n";
+    std::fs::write(&path, old).unwrap();
+    let e = cli(&["run", &p, "--out", &out_dir]).unwrap_err();
+    assert!(e.contains("jet.toml:3:2: aircraft:") && e.contains("[[bodies]]"), "{e}");
+    assert!(!dir.join("out").join("old").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -60,17 +60,17 @@ fn issue_33_repeated_output_is_refused_at_its_position() {
     assert!(e.starts_with(&format!("{p}:4:")), "{e}");
     assert!(e.contains("outputs[2]: output `energy` repeats outputs[0]; valid: each output once"), "{e}");
     assert!(!out.exists(), "nothing written");
-    // flight scenes too
+    // aircraft scenes too
     let jet = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/examples/scenes/business_jet_doublet.toml"
     ))
     .unwrap()
-    .replace("outputs = [\"u\",", "outputs = [\"u\", \"u\",");
+    .replace("outputs = [\"velocity_body:jet\",", "outputs = [\"velocity_body:jet\", \"velocity_body:jet\",");
     let f = dir.path().join("jet.toml");
     std::fs::write(&f, jet).unwrap();
     let e = cli(&["check", f.to_str().unwrap()]).unwrap_err();
-    assert!(e.contains("outputs[1]: output `u` repeats outputs[0]"), "{e}");
+    assert!(e.contains("outputs[1]: output `velocity_body:jet` repeats outputs[0]"), "{e}");
 }
 
 /// Finding 2: the `(samples + 1) × columns` bound did not cover the figures, and nothing

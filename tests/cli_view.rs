@@ -203,39 +203,43 @@ fn a_hostile_scene_name_is_refused_before_any_page() {
     assert!(!out.exists());
 }
 
-/// A flight scene's page shows the aircraft: in the elevator doublet the motion stays in the
-/// vertical plane (φ = ψ = 0), so at every instant the attitude is the pitch θ of the heads-up
-/// column `theta`, which the page's z-up frame M·𝓡·M (M = diag(1, −1, −1)) shows as a turn of
-/// −θ about y: (cos θ/2, 0, −sin θ/2, 0). Tolerance 2e-6: 7 significant digits.
+/// An aircraft scene's page shows the aircraft: in the elevator doublet the motion stays in the
+/// vertical plane (φ = ψ = 0), so at every instant the body's attitude (link to ground, the
+/// book's earth frame with z down) is the pitch θ of the heads-up column `euler321:jet.theta`:
+/// a turn of θ about y, (cos θ/2, 0, sin θ/2, 0). Tolerance 2e-6: 7 significant digits.
 #[test]
-fn a_flight_scene_view_shows_the_aircraft() {
+fn an_aircraft_scene_view_shows_the_aircraft() {
     let dir = tempfile::tempdir().unwrap();
     let text = std::fs::read_to_string("examples/scenes/business_jet_doublet.toml")
         .unwrap()
         .replace("duration = 120.0", "duration = 10.0")
-        .replace("samples = 1201", "samples = 101")
+        .replace("samples = 1200", "samples = 100")
         .replace(
-            "outputs = [\"u\", \"alpha\", \"q\", \"theta\", \"z\", \"elevator\"]",
-            "outputs = [\"theta\", \"u\"]",
+            "outputs = [\"velocity_body:jet\", \"air:jet\", \"omega_body:jet\", \"euler321:jet\", \"position:jet\"]",
+            "outputs = [\"euler321:jet\"]",
         );
     let p = dir.path().join("jet.toml");
     std::fs::write(&p, text).unwrap();
     let out = dir.path().join("out");
     cli(&["run", p.to_str().unwrap(), "--quiet", "--out", out.to_str().unwrap()]).unwrap();
     let d = data(&std::fs::read_to_string(out.join("business_jet_doublet/view.html")).unwrap());
-    assert_eq!(d["kind"], "flight");
     assert_eq!(d["bodies"][0]["shape"]["kind"], "aircraft");
-    assert_eq!(d["hud"]["names"], serde_json::json!(["theta", "u"]));
+    assert_eq!(
+        d["hud"]["names"],
+        serde_json::json!(["euler321:jet.psi", "euler321:jet.theta", "euler321:jet.phi"])
+    );
+    // up is against gravity: −z of the earth frame
+    assert_eq!(nums(&d["up"]), [0.0, 0.0, -1.0]);
     let t = nums(&d["t"]);
     assert_eq!(t.len(), 101);
     let hud = nums(&d["hud"]["values"]);
     let pose = nums(&d["pose"]);
     let mut largest = 0.0_f64;
     for k in 0..t.len() {
-        let theta = hud[2 * k];
+        let theta = hud[3 * k + 1];
         largest = nan_max(largest, theta.abs());
         let q = &pose[7 * k + 3..7 * k + 7];
-        let want = [(theta / 2.0).cos(), 0.0, -(theta / 2.0).sin(), 0.0];
+        let want = [(theta / 2.0).cos(), 0.0, (theta / 2.0).sin(), 0.0];
         for (g, w) in q.iter().zip(want) {
             assert!((g - w).abs() < 2e-6, "t = {}: {q:?} vs {want:?}", t[k]);
         }

@@ -1,5 +1,6 @@
 //! Fuzz targets for every file format vectrix reads (issue 22, item 4): scene files
-//! (`Scene::from_toml`), flight scene files (`FlightScene::from_toml`), the same files through
+//! (`Scene::from_toml`; aircraft scenes among them, and files in the old flight-scene form, which
+//! must always be refused with a located error), the same files through
 //! the command line (`vectrix check FILE`) and sweep parameters (`vectrix sweep FILE --param
 //! PATH=v1,v2`).
 //!
@@ -29,7 +30,6 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use toml::Value;
 use vectrix::scene::Scene;
-use vectrix::scene::flight::FlightScene;
 
 /// A case that runs longer than this is a hang (the loaders parse and validate only; the
 /// sweep runs a scene whose duration the mutations keep short).
@@ -70,7 +70,7 @@ fn guarded<T: Send + 'static>(
     }
 }
 
-/// The example scenes, split into multibody and flight scenes by their `[aircraft]` table.
+/// The example scenes, split into aircraft scenes (an `aero` effect) and the others.
 fn examples() -> (Vec<String>, Vec<String>) {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/scenes");
     let mut files: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
@@ -80,7 +80,7 @@ fn examples() -> (Vec<String>, Vec<String>) {
         .filter(|p| p.extension().is_some_and(|e| e == "toml"))
         .map(|p| std::fs::read_to_string(p).unwrap())
         .collect();
-    texts.into_iter().partition(|t| !t.contains("[aircraft]"))
+    texts.into_iter().partition(|t| !t.contains("type = \"aero\""))
 }
 
 /// Hostile numbers for value mutations.
@@ -341,11 +341,16 @@ fn check_position(file: &str, text: &str, message: &str) -> Result<(), TestCaseE
 /// Inputs each loader accepted (the structured generators must reach accepted scenes, or the
 /// "finite initial state" property is never exercised).
 static SCENES_ACCEPTED: AtomicUsize = AtomicUsize::new(0);
-static FLIGHTS_ACCEPTED: AtomicUsize = AtomicUsize::new(0);
+static AIRCRAFT_ACCEPTED: AtomicUsize = AtomicUsize::new(0);
 static SWEEPS_ACCEPTED: AtomicUsize = AtomicUsize::new(0);
 
-/// The multibody loader's contract on one input.
+/// The scene loader's contract on one input.
 fn scene_contract(text: String) -> Result<(), TestCaseError> {
+    loader_contract(text, &SCENES_ACCEPTED)
+}
+
+/// The scene loader's contract on one input, counting acceptances in `accepted`.
+fn loader_contract(text: String, accepted: &AtomicUsize) -> Result<(), TestCaseError> {
     let t = text.clone();
     let outcome = guarded("Scene::from_toml", move || {
         Scene::from_toml(&t, "fuzz.toml").map(|s| {
@@ -356,7 +361,7 @@ fn scene_contract(text: String) -> Result<(), TestCaseError> {
     })?;
     match outcome {
         Ok((y0, d)) => {
-            SCENES_ACCEPTED.fetch_add(1, Ordering::Relaxed);
+            accepted.fetch_add(1, Ordering::Relaxed);
             prop_assert!(
                 y0.iter().all(|x| x.is_finite()),
                 "accepted scene with a non-finite initial state {y0:?}"
@@ -370,19 +375,40 @@ fn scene_contract(text: String) -> Result<(), TestCaseError> {
     }
 }
 
-/// The flight loader's contract on one input.
-fn flight_contract(text: String) -> Result<(), TestCaseError> {
+/// A file in the old flight-scene form (an `[aircraft]` table, ft/slug/lbf): always refused.
+const OLD_FLIGHT_FORM: &str = r#"name = "business_jet_doublet"
+duration = 120.0
+samples = 1201
+accuracy = 1e-10
+outputs = ["u", "alpha", "q", "theta", "z", "elevator"]
+
+[aircraft]
+model = "business_jet"
+mass = 1000.0
+coefficients = { cm_alpha = -0.6 }
+
+[trim]
+airspeed = 675.124
+gamma = 0.0
+
+[[inputs]]
+control = "elevator"
+shape = "doublet"
+start = 1.0
+width = 1.0
+amplitude = 0.01
+"#;
+
+/// The loader's contract on a file in the old flight form: refused (never accepted under a
+/// new meaning), located, no panic; the message holds the file in the new form.
+fn old_form_contract(text: String) -> Result<(), TestCaseError> {
     let t = text.clone();
-    let outcome = guarded("FlightScene::from_toml", move || {
-        FlightScene::from_toml(&t, "fuzz.toml").map(|s| s.linearization().trim.state.to_array())
+    let outcome = guarded("Scene::from_toml (old flight form)", move || {
+        Scene::from_toml(&t, "fuzz.toml").map(|s| s.spec().name.clone())
     })?;
     match outcome {
-        Ok(x0) => {
-            FLIGHTS_ACCEPTED.fetch_add(1, Ordering::Relaxed);
-            prop_assert!(
-                x0.iter().all(|x| x.is_finite()),
-                "accepted flight scene with a non-finite trim state {x0:?}"
-            );
+        Ok(name) => {
+            prop_assert!(!text.contains("\n[aircraft]"), "accepted the old flight form as scene `{name}`");
             Ok(())
         }
         Err(e) => check_position("fuzz.toml", &text, &e.to_string()),
@@ -474,27 +500,44 @@ fn fuzz_scene_files_raw() {
     );
 }
 
-/// Structured mutations and byte noise on the flight example scenes.
+/// Structured mutations and byte noise on the aircraft example scenes (a free body with
+/// `aero` and `thrust` effects, trimmed when it loads).
 #[test]
-fn fuzz_flight_scene_files() {
-    let (_, flights) = examples();
-    run("flight scene (structured)", 256, mutated(flights.clone()), flight_contract);
-    let accepted = FLIGHTS_ACCEPTED.load(Ordering::Relaxed);
-    eprintln!("flight scene (structured): {accepted} accepted");
-    assert!(accepted > 0, "no mutant flight scene was accepted");
+fn fuzz_aircraft_scene_files() {
+    let (_, aircraft) = examples();
+    assert!(!aircraft.is_empty(), "no aircraft example scene");
+    let contract = |t: String| loader_contract(t, &AIRCRAFT_ACCEPTED);
+    run("aircraft scene (structured)", 256, mutated(aircraft.clone()), contract);
+    let accepted = AIRCRAFT_ACCEPTED.load(Ordering::Relaxed);
+    eprintln!("aircraft scene (structured): {accepted} accepted");
+    assert!(accepted > 0, "no mutant aircraft scene was accepted");
     run(
-        "flight scene (raw)",
+        "aircraft scene (raw)",
         256,
-        noisy(flights).prop_map(|b| String::from_utf8_lossy(&b).into_owned()),
-        flight_contract,
+        noisy(aircraft).prop_map(|b| String::from_utf8_lossy(&b).into_owned()),
+        contract,
+    );
+}
+
+/// Structured mutations and byte noise on a file in the old flight form: refused every time
+/// it still has its `[aircraft]` table, with a location inside the file.
+#[test]
+fn fuzz_old_flight_form() {
+    let old = vec![OLD_FLIGHT_FORM.to_string()];
+    run("old flight form (structured)", 256, mutated(old.clone()), old_form_contract);
+    run(
+        "old flight form (raw)",
+        256,
+        noisy(old).prop_map(|b| String::from_utf8_lossy(&b).into_owned()),
+        old_form_contract,
     );
 }
 
 /// `vectrix check` on raw bytes (invalid UTF-8 included) and on structured mutants.
 #[test]
 fn fuzz_cli_check() {
-    let (scenes, flights) = examples();
-    let all: Vec<String> = scenes.into_iter().chain(flights).collect();
+    let (scenes, aircraft) = examples();
+    let all: Vec<String> = scenes.into_iter().chain(aircraft).chain([OLD_FLIGHT_FORM.to_string()]).collect();
     let mut runner = runner(cases(256));
     let strategy = prop_oneof![noisy(all.clone()), mutated(all).prop_map(String::into_bytes)];
     if let Err(e) = runner.run(&strategy, cli_check_contract) {

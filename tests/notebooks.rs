@@ -474,6 +474,25 @@ fn stored_outputs_are_present() {
     assert!(missing.is_empty(), "run scripts/notebooks.sh:\n{}", missing.join("\n"));
 }
 
+/// Issue 36: the chapter 7, 9 and 14 notebooks show a run's 3-D view inline — a code cell that
+/// opens the run's `view.html` with `vectrix_cli::View` and displays it, with the HTML stored
+/// (evcxr's `text/html` result), so that a reader sees the view without running anything.
+#[test]
+fn chapters_7_9_14_show_a_view_inline() {
+    for name in ["07-dynamics", "09-lagrange", "14-flight-modes"] {
+        let nb = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("docs/notebooks/{name}.ipynb"));
+        let cells = code_cells_with_outputs(&nb);
+        let view = cells
+            .iter()
+            .find(|c| c.source.contains("View::open") && c.source.contains("evcxr_display()"))
+            .unwrap_or_else(|| panic!("{name}: no cell shows a view"));
+        assert!(
+            view.outputs.iter().any(|o| o.mimes.iter().any(|m| m == "text/html")),
+            "{name}: the view cell has no stored text/html"
+        );
+    }
+}
+
 /// The rule of [`stored_outputs_are_present`] on small cells.
 #[test]
 fn output_expectations_rule() {

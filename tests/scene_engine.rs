@@ -486,7 +486,7 @@ fn expected_names(message: &str) -> Vec<String> {
 
 /// The message of loading `text`, which must fail.
 fn message_of(text: &str) -> String {
-    match vectrix::scene::flight::AnyScene::from_toml(text, "probe.toml") {
+    match Scene::from_toml(text, "probe.toml") {
         Err(SceneError::Parse { message, .. }) | Err(SceneError::Invalid { message, .. }) => message,
         other => panic!("expected an error, got {other:?}"),
     }
@@ -603,27 +603,13 @@ fn issue_16_scene_reference_documents_every_key_and_variant() {
             "{base}checks = [\"zzz\"]\n[[bodies]]\nname = \"b\"\njoint = {free}\nmass = {sphere}\n"
         ))),
     );
-    // flight scenes
-    let flight =
-        "name = \"f\"\nduration = 1.0\n[aircraft]\nmodel = \"business_jet\"\n[trim]\nairspeed = 675.0\n";
-    need("flight key", expected_names(&message_of(&format!("zzz = 1\n{flight}"))));
+    // the aircraft: the aero effect's coefficient names
     need(
-        "aircraft key",
-        expected_names(&message_of(
-            &flight.replace("model = \"business_jet\"", "model = \"business_jet\"\nzzz = 1"),
-        )),
-    );
-    need(
-        "trim key",
-        expected_names(&message_of(&flight.replace("airspeed = 675.0", "airspeed = 675.0\nzzz = 1"))),
-    );
-    need(
-        "input key",
-        expected_names(&message_of(&format!(
-            "{flight}[[inputs]]\ncontrol = \"elevator\"\nshape = \"step\"\nstart = 0.0\namplitude = 0.01\nzzz = 1\n"
+        "aero coefficient",
+        valid(message_of(&scene(
+            "type = \"aero\"\nbody = \"b\"\naircraft = \"business_jet\"\ncoefficients = { zzz = 1.0 }",
         ))),
     );
-    need("flight output", vectrix::scene::flight::OUTPUT_NAMES.iter().map(|s| s.to_string()).collect());
     assert!(missing.is_empty(), "docs/scenes.md lacks: {missing:#?}");
 }
 

@@ -705,18 +705,29 @@ fn notebook_07_dynamics() {
     }
     show(chart.to_svg().expect("finite data"));
     // cell 7
+    // The run's 3-D view, inline (§ "The view" of docs/scenes.md): `vectrix run` writes one
+    // self-contained view.html, and `vectrix_cli::View` shows it in a sandboxed iframe (drag to
+    // orbit, scroll to zoom, space to play, digits for the speed).
+    let dir = std::env::temp_dir().join(format!("vectrix-notebook-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let file = dir.join("tennis_racket.toml");
+    std::fs::write(&file, racket_toml).expect("a writable temporary folder");
+    let args = ["vectrix", "run", file.to_str().expect("UTF-8"), "--quiet", "--out", dir.to_str().expect("UTF-8")];
+    vectrix_cli::run_with_args(args, &mut Vec::new()).unwrap_or_else(|e| panic!("{e}"));
+    vectrix_cli::View::open(dir.join("tennis_racket")).unwrap_or_else(|e| panic!("{e}")).evcxr_display();
+    // cell 8
     let (u1p, u2p) = restitution_1d(2.0, 3.0, 5.0, -1.0, 0.6).expect("approaching");
     println!("after the impact: u₁ = {}, u₂ = {}", Rounded(u1p), Rounded(u2p));
     println!("energy lost = {}", Rounded(collision_energy_loss(2.0, 3.0, 5.0, -1.0, 0.6).expect("valid masses and restitution")));
     println!("{}", restitution_1d(2.0, 3.0, -1.0, 5.0, 0.6).expect_err("separating"));
-    // cell 8
+    // cell 9
     let lb = 1.8;
     let rod = MassProperties::thin_rod_between(2.5, &Point::origin(), &Point::at(a.vector([lb, 0.0, 0.0]))).expect("valid rod");
     for lp in [0.3, 2.0 * lb / 3.0, 1.7] {
         let r = centre_of_percussion(&rod, &Point::at(a.vector([lp, 0.0, 0.0])), &a.j()).expect("blow off the centre");
         println!("struck at ℓ_P = {}: centre of percussion at x = {} (formula: {})", Rounded(lp), Rounded(tidy(r.position().resolve(&a).x, lb)), Rounded(tidy(lb / 2.0 + lb * lb / (12.0 * (lb / 2.0 - lp)), lb)));
     }
-    // cell 9
+    // cell 10
     let (h0, e) = (1.0, 0.5);
     let bounces = simulate_with_impacts(
         &Adaptive::dop853().rtol(1e-12).atol(1e-12),
@@ -1080,6 +1091,68 @@ fn notebook_09_lagrange() {
     };
     let svg = chart.to_svg().expect("finite data");
     println!("EVCXR_BEGIN_CONTENT image/svg+xml\n{svg}\nEVCXR_END_CONTENT");
+    // cell 9
+    let four_bar_toml = r#"
+    # A crank-rocker four-bar linkage in a vertical plane (§9.11): crank a = 1 m, coupler
+    # b = 3.5 m, rocker c = 3 m, ground d = 4 m, uniform bars of 1 kg. The tree is crank + coupler
+    # (a pin chain from O₂) and the rocker (a pin at O₄ = (4, 0, 0)); the loop pin joins the
+    # coupler's end to the rocker's end. s + l = 5 ≤ p + q = 6.5 with the crank shortest: the crank
+    # turns fully (Grashof), the rocker swings between 1.770 and 2.466 rad. The initial angles are
+    # rounded and the speeds only approximate, so `assemble = true` projects them onto the loop.
+    name = "four_bar"
+    duration = 5.0
+    samples = 2000
+    accuracy = 1e-10
+    assemble = true
+    outputs = ["coordinates:crank", "coordinates:coupler", "coordinates:rocker", "speeds:rocker", "energy", "reaction:coupler_rocker"]
+    checks = ["energy"]
+
+    [[bodies]]
+    name = "crank"
+    joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+    mass = { shape = "rod", mass = 1.0, length = 1.0 }
+    com = [0.5, 0.0, 0.0]
+    q = [0.3]
+    v = [6.0]
+
+    [[bodies]]
+    name = "coupler"
+    parent = "crank"
+    joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+    offset = [1.0, 0.0, 0.0]
+    mass = { shape = "rod", mass = 1.0, length = 3.5 }
+    com = [1.75, 0.0, 0.0]
+    q = [0.68]
+
+    [[bodies]]
+    name = "rocker"
+    joint = { type = "pin", axis = [0.0, 0.0, 1.0] }
+    offset = [4.0, 0.0, 0.0]
+    mass = { shape = "rod", mass = 1.0, length = 3.0 }
+    com = [1.5, 0.0, 0.0]
+    q = [1.8]
+
+    [[loops]]
+    type = "pin"
+    name = "coupler_rocker"
+    a = { body = "coupler", point = [3.5, 0.0, 0.0] }
+    b = { body = "rocker", point = [3.0, 0.0, 0.0] }
+    axis = [0.0, 0.0, 1.0]
+
+    [[effects]]
+    type = "uniform_gravity"
+    g = [0.0, -9.81, 0.0]
+    "#;
+    // The run's 3-D view, inline (§ "The view" of docs/scenes.md): `vectrix run` writes one
+    // self-contained view.html, and `vectrix_cli::View` shows it in a sandboxed iframe (drag to
+    // orbit, scroll to zoom, space to play, digits for the speed).
+    let dir = std::env::temp_dir().join(format!("vectrix-notebook-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let file = dir.join("four_bar.toml");
+    std::fs::write(&file, four_bar_toml).expect("a writable temporary folder");
+    let args = ["vectrix", "run", file.to_str().expect("UTF-8"), "--quiet", "--out", dir.to_str().expect("UTF-8")];
+    vectrix_cli::run_with_args(args, &mut Vec::new()).unwrap_or_else(|e| panic!("{e}"));
+    vectrix_cli::View::open(dir.join("four_bar")).unwrap_or_else(|e| panic!("{e}")).evcxr_display();
 }
 
 /// `docs/notebooks/10-aircraft-kinematics.ipynb`
@@ -1387,7 +1460,7 @@ fn notebook_14_flight_modes() {
     // cell 1
     // cell 2
     use std::f64::consts::PI;
-    use vectrix::scene::flight::FlightScene;
+    use vectrix::scene::Scene;
     use vectrix::flight::*;
     use vectrix::lti::{Complex64, logspace};
     use vectrix::plot::control;
@@ -1438,26 +1511,59 @@ fn notebook_14_flight_modes() {
     let text = r#"
     name = "doublet"
     duration = 10.0
-    samples = 201
-    outputs = ["alpha", "q"]
-    [aircraft]
-    model = "business_jet"
-    [trim]
-    airspeed = 675.124
-    [[inputs]]
-    control = "elevator"
-    shape = "doublet"
-    start = 1.0
-    width = 1.0
-    amplitude = 0.01
+    samples = 200
+    method = { name = "dop853", rtol = 1e-10 }
+    outputs = ["air:jet", "omega_body:jet"]
+    trim = { free = ["dq:jet.4", "effects[1].elevator", "effects[2]"] }
+    linearize = { steady = true }
+    [[bodies]]
+    name = "jet"
+    joint = { type = "free" }
+    mass = { shape = "aircraft", model = "business_jet" }
+    v = ["675.124 ft/s", 0.0, 0.0, 0.0, 0.0, 0.0]
+    [[effects]]
+    type = "uniform_gravity"
+    g = [0.0, 0.0, "32.2 ft/s^2"]
+    [[effects]]
+    type = "aero"
+    body = "jet"
+    aircraft = "business_jet"
+    elevator = { kind = "doublet", start = 1.0, width = 1.0, amplitude = 0.01 }
+    [[effects]]
+    type = "thrust"
+    body = "jet"
+    profile = { kind = "constant", value = 0.0 }
     "#;
-    let scene = FlightScene::from_toml(text, "doublet.toml").expect("valid scene");
-    let run = scene.run().expect("finite flight");
-    for m in &run.modes {
-        println!("{:<13} λ = {:+.4} ± {:.4}j", m.name, m.re, m.im);
+    let scene = Scene::from_toml(text, "doublet.toml").unwrap_or_else(|e| panic!("{e}"));
+    let trim = scene.trim_report().expect("the scene has [trim]");
+    for (name, change) in trim.free.iter().zip(&trim.change) {
+        println!("trim: {name} = {change:.6e}");
     }
-    println!("α: excursion {:.2e} rad, linear model off by ≤ {:.1e}", run.max_excursion(0), run.max_linear_error(0).expect("defined"));
-    show(run.response_svg(1).expect("drawable"));
+    let lin = scene.linearize().unwrap_or_else(|e| panic!("{e}"));
+    for m in lin.modes.iter().filter(|m| m.natural_frequency > 1e-6 && m.eigenvalue[1] >= 0.0) {
+        println!("λ = {:+.4} ± {:.4}j  ωn = {} rad/s", m.eigenvalue[0], m.eigenvalue[1], Rounded(m.natural_frequency));
+    }
+    let run = scene.run(&mut |_| {}).unwrap_or_else(|e| panic!("{e}"));
+    let alpha = run.column("air:jet.alpha").expect("declared output");
+    let q = run.column("omega_body:jet.y").expect("declared output");
+    show(
+        LineChart::new("Business jet after an elevator doublet (§14.2), as a body", "t [s]", "α − α₀, q [rad, rad/s]")
+            .with_series("α − α₀", run.t.iter().zip(&alpha).map(|(t, a)| (*t, a - alpha[0])).collect())
+            .with_series("q", run.t.iter().copied().zip(q).collect())
+            .to_svg()
+            .expect("finite data"),
+    );
+    // cell 7
+    // The run's 3-D view, inline (§ "The view" of docs/scenes.md): `vectrix run` writes one
+    // self-contained view.html, and `vectrix_cli::View` shows it in a sandboxed iframe (drag to
+    // orbit, scroll to zoom, space to play, digits for the speed).
+    let dir = std::env::temp_dir().join(format!("vectrix-notebook-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let file = dir.join("doublet.toml");
+    std::fs::write(&file, text).expect("a writable temporary folder");
+    let args = ["vectrix", "run", file.to_str().expect("UTF-8"), "--quiet", "--out", dir.to_str().expect("UTF-8")];
+    vectrix_cli::run_with_args(args, &mut Vec::new()).unwrap_or_else(|e| panic!("{e}"));
+    vectrix_cli::View::open(dir.join("doublet")).unwrap_or_else(|e| panic!("{e}")).evcxr_display();
 }
 
 /// `docs/notebooks/15-linear-systems.ipynb`

@@ -48,8 +48,10 @@ for (let k = 0; k < F; k++) for (let b = 0; b < B; b++) {
 if (box.isEmpty()) box.expandByPoint(new THREE.Vector3());
 const centre = box.getCenter(new THREE.Vector3()), extent = box.getSize(new THREE.Vector3());
 const L = F ? Math.max(extent.length(), ...D.bodies.map((b) => shapeSize(b.shape)), 1e-6) : 1;
-const flight = D.kind === 'flight';
-const S = flight ? D.bodies[0].shape.span : L; // size of markers and triads
+// a scene with an aircraft body: the camera follows the (first) aircraft, at its scale
+const air = D.bodies.findIndex(AIR);
+const flight = air >= 0;
+const S = flight ? D.bodies[air].shape.span : L; // size of markers and triads
 const up = V3(D.up).normalize();
 
 // ---- three.js scene ----
@@ -180,13 +182,13 @@ function resetCamera() {
   let dir = new THREE.Vector3(1, -1.4, 0.9).normalize();
   const flat = e.indexOf(Math.min(...e));
   if (!flight && big > 0.05 * L && e[flat] < 0.1 * big) { dir = new THREE.Vector3(); dir.setComponent(flat, 1); dir.addScaledVector(up, 0.35).normalize(); }
-  if (flight) dir = new THREE.Vector3(-1, -1.2, 0.5).normalize();
+  if (flight) dir = new THREE.Vector3(-1, -1.2, 0).projectOnPlane(up).addScaledVector(up, 0.5).normalize();
   const basis = basisOf(); // yaw/pitch relative to up
   view.pitch = Math.asin(Math.max(-0.99, Math.min(0.99, dir.dot(up))));
   view.yaw = Math.atan2(dir.dot(basis[1]), dir.dot(basis[0]));
-  view.target.copy(flight ? poseAt(now.t, 0).p : centre);
+  view.target.copy(flight ? poseAt(now.t, air).p : centre);
   view.dist = flight ? 3 * S : 1.9 * L;
-  view.follow = flight ? 0 : -1; $('follow').value = String(view.follow); view.followAt = null;
+  view.follow = flight ? air : -1; $('follow').value = String(view.follow); view.followAt = null;
 }
 function basisOf() { // two unit vectors perpendicular to up
   const a = Math.abs(up.x) < 0.9 ? new THREE.Vector3(1, 0, 0) : new THREE.Vector3(0, 1, 0);
@@ -255,10 +257,10 @@ function update(t) {
     view.followAt = c;
   }
   // the grid stays under the scene; in flight it is moved by whole cells under the aircraft
-  const base = flight && poses[0] ? poses[0].p.clone().projectOnPlane(up) : centre.clone().projectOnPlane(up);
-  if (flight) base.set(Math.round(base.x / (10 * cell)) * 10 * cell, Math.round(base.y / (10 * cell)) * 10 * cell, 0);
+  const base = flight && poses[air] ? poses[air].p.clone().projectOnPlane(up) : centre.clone().projectOnPlane(up);
+  if (flight) base.set(Math.round(base.x / (10 * cell)) * 10 * cell, Math.round(base.y / (10 * cell)) * 10 * cell, Math.round(base.z / (10 * cell)) * 10 * cell).projectOnPlane(up);
   grid.position.copy(base).addScaledVector(up, gridLevel);
-  if (flight && scene.userData.gravity && poses[0]) scene.userData.gravity.position.copy(poses[0].p).sub(centre);
+  if (flight && scene.userData.gravity && poses[air]) scene.userData.gravity.position.copy(poses[air].p).sub(centre);
   hudText(t);
   now.drawn = t;
 }

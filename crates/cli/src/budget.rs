@@ -12,13 +12,8 @@
 //!   legend entry and at most [`crate::report`]'s 40 point markers ([`SERIES`]);
 //! * summaries are bounded per column, output and invariant.
 //!
-//! Flight scenes print their numbers in Rust's plain decimal form, whose length depends on the
-//! magnitude: their bound uses [`FLIGHT_NUM`] per value (physical flight values are far
-//! shorter), and the sink's count is what holds.
-//!
 //! Book: — (reporting).
 
-use vectrix_scene::flight::FlightScene;
 use vectrix_scene::spec::EffectSpec;
 use vectrix_scene::{MAX_CONTACT_EVENTS, Scene};
 
@@ -27,8 +22,6 @@ use crate::sink::Limits;
 
 /// Bytes of one CSV value and its separator.
 pub(crate) const NUM: u64 = 25;
-/// Bytes of one flight CSV value and its separator (an estimate; see the module doc).
-const FLIGHT_NUM: u64 = 48;
 /// Bytes of one drawn point of a polyline.
 pub(crate) const POINT: u64 = 20;
 /// Bytes of a figure's frame: axes, grid, ticks and their labels, clip path.
@@ -162,7 +155,9 @@ pub(crate) fn scene(s: &Scene) -> Estimate {
     let summary = columns.iter().map(|c| c.len() as u64 + UNIT + 96).sum::<u64>()
         + spec.outputs.iter().map(|o| 2 * o.len() as u64 + 48).sum::<u64>()
         + (16 << 10);
-    e.summary(summary);
+    // the trim's unknowns: a name (an item path, bounded by the file) and a number each
+    let trim = s.trim_report().map_or(0, |t| t.free.iter().map(|f| 6 * f.len() as u64 + 2 * NUM + 16).sum());
+    e.summary(summary.saturating_add(trim));
     e.summary(mul(files, MANIFEST_LINE));
     e
 }
@@ -182,35 +177,6 @@ pub(crate) fn scene_view(s: &Scene) -> u64 {
         + spec.loops.len() * (vectrix_scene::MAX_NAME_CHARS + 16);
     let items = bodies + spec.loops.len() + spec.effects.len() + spec.frames.len();
     crate::view::page_bound(rows * bodies, rows, hud, text, items)
-}
-
-/// view.html of a flight-scene run: one aircraft's pose at the view's instants.
-pub(crate) fn flight_view(s: &FlightScene) -> u64 {
-    let spec = s.spec();
-    let rows = crate::view::frames(spec.samples, 1);
-    let hud = spec.outputs.len().min(crate::view::MAX_HUD_COLUMNS);
-    let text = spec.name.len() + spec.outputs.iter().map(|o| o.len() + UNIT as usize).sum::<usize>() + 64;
-    crate::view::page_bound(rows, rows, hud, text, 2)
-}
-
-/// Files of a flight-scene run (see [`crate::report::write_flight`]).
-pub(crate) fn flight(s: &FlightScene) -> Estimate {
-    let spec = s.spec();
-    let rows = spec.samples;
-    let mut e = Estimate::default();
-    let header = spec.outputs.iter().map(|o| 2 * (o.len() as u64 + UNIT + 12)).sum::<u64>() + 16;
-    e.data("trajectory.csv", csv(rows, 2 * spec.outputs.len() + 1, header, FLIGHT_NUM));
-    let name = spec.name.len() + 64;
-    let figures = spec
-        .outputs
-        .iter()
-        .map(|o| figure(name + 2 * o.len(), [(9, rows), (6, rows)]))
-        .fold(figure(name, []), u64::saturating_add)
-        .saturating_add(mul(32, SERIES));
-    e.data("figures", figures);
-    e.summary(spec.outputs.iter().map(|o| 2 * o.len() as u64 + 256).sum::<u64>() + (16 << 10));
-    e.summary(mul(spec.outputs.len() as u64 + 4, MANIFEST_LINE));
-    e
 }
 
 /// Files of a sweep: every run's folder, one overlay per output, sweep.csv. `labels` holds

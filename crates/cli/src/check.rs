@@ -5,33 +5,11 @@
 use std::io::Write;
 use std::path::Path;
 
-use vectrix_scene::flight::AnyScene;
-
 use crate::output::BoxError;
 
 /// Validates and prints what the scene declares and which invariants it implies.
 pub fn check(out: &mut impl Write, path: &Path) -> Result<(), BoxError> {
-    let scene = match crate::input::load(path)?.scene {
-        AnyScene::Bodies(s) => *s,
-        AnyScene::Flight(f) => {
-            let t = &f.linearization().trim;
-            writeln!(
-                out,
-                "{}: ok — flight scene `{}`, aircraft `{}`, trimmed at α = {:.4} rad, δe = {:.4} rad, thrust = {:.1} \
-                 (residual {:.1e}), {} inputs, duration {} s",
-                path.display(),
-                f.spec().name,
-                f.spec().aircraft.model,
-                t.state.aero_angles().alpha,
-                t.controls.elevator,
-                t.controls.thrust,
-                t.residual,
-                f.spec().inputs.len(),
-                f.spec().duration
-            )?;
-            return Ok(());
-        }
-    };
+    let scene = crate::input::load(path)?.scene;
     let spec = scene.spec();
     writeln!(
         out,
@@ -43,6 +21,9 @@ pub fn check(out: &mut impl Write, path: &Path) -> Result<(), BoxError> {
         scene.model().nq(),
         spec.duration
     )?;
+    if let Some(t) = scene.trim_report() {
+        writeln!(out, "{}", trim_line(t))?;
+    }
     let inv: Vec<&str> = scene.invariants().iter().map(|i| i.name()).collect();
     writeln!(
         out,
@@ -50,4 +31,16 @@ pub fn check(out: &mut impl Write, path: &Path) -> Result<(), BoxError> {
         if inv.is_empty() { "none".into() } else { inv.join(", ") }
     )?;
     Ok(())
+}
+
+/// One line that says what `[trim]` found: each unknown's change from the file's value (SI),
+/// the residual |v̇|∞ and the Newton iterations.
+pub(crate) fn trim_line(t: &vectrix_scene::TrimReport) -> String {
+    let found: Vec<String> = t.free.iter().zip(&t.change).map(|(f, c)| format!("{f} {c:+.6e}")).collect();
+    format!(
+        "trimmed ({} Newton iterations, residual |v̇|∞ = {:.1e}): {}",
+        t.iterations,
+        t.residual,
+        found.join(", ")
+    )
 }

@@ -10,7 +10,7 @@ use std::io::Read;
 use std::path::Path;
 
 use vectrix_scene::MAX_SCENE_BYTES;
-use vectrix_scene::flight::AnyScene;
+use vectrix_scene::Scene;
 
 use crate::output::BoxError;
 
@@ -21,7 +21,7 @@ pub(crate) struct Loaded {
     /// The path as shown in messages.
     pub file: String,
     /// The scene.
-    pub scene: AnyScene,
+    pub scene: Scene,
 }
 
 /// What kind of file system object `t` is, for a message.
@@ -102,7 +102,7 @@ pub(crate) fn read_scene(path: &Path) -> Result<String, BoxError> {
     })
 }
 
-/// Reads and validates a scene file of either kind, reporting errors with line and column.
+/// Reads and validates a scene file, reporting errors with line and column.
 ///
 /// # Errors
 /// As [`read_scene`], and the scene's own errors (`file:line:col`).
@@ -117,10 +117,8 @@ pub(crate) fn load(path: &Path) -> Result<Loaded, BoxError> {
         }
         _ => read_scene(path)?,
     };
-    let scene = AnyScene::from_toml(&text, &file)?;
-    if let AnyScene::Bodies(s) = &scene {
-        report_import(s.import_warnings(), STRICT.with(std::cell::Cell::get))?;
-    }
+    let scene = Scene::from_toml(&text, &file)?;
+    report_import(scene.import_warnings(), STRICT.with(std::cell::Cell::get))?;
     Ok(Loaded { text, file, scene })
 }
 

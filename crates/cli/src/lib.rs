@@ -128,7 +128,7 @@ pub enum Command {
         max_output_bytes: u64,
     },
     /// Linearizes a scene about its initial state (an equilibrium, or a steady motion when the
-    /// scene says `linearize = { steady = true }`; a flight scene about its trim) and writes
+    /// scene says `linearize = { steady = true }`; after `[trim]`, about the trimmed state) and writes
     /// out/<scene>/linearization.json (state, A, B, C, D, eigenvalues, modes), poles.svg and,
     /// with inputs and outputs, bode.svg.
     Linearize {

@@ -1,5 +1,5 @@
-//! `vectrix linearize SCENE`: the linear model of a scene about its initial state (a body scene:
-//! `Scene::linearize`; a flight scene: its trim linearization), written as
+//! `vectrix linearize SCENE`: the linear model of a scene about its initial state
+//! (`Scene::linearize`; after `[trim]`, about the trimmed state), written as
 //! `<out>/<name>/linearization.json`, `poles.svg` and, with inputs and outputs, `bode.svg`; the
 //! modes are printed.
 //!
@@ -10,8 +10,7 @@ use std::path::Path;
 
 use vectrix_lti::{StateSpace, logspace};
 use vectrix_plot::control;
-use vectrix_scene::flight::{AnyScene, OUTPUT_NAMES};
-use vectrix_scene::{EquilibriumResidual, LinearModel};
+use vectrix_scene::LinearModel;
 
 use crate::input::load;
 use crate::output::{BoxError, not_inside, write_files};
@@ -27,25 +26,7 @@ pub(crate) fn linearize(
     dir: &Path,
     max_bytes: u64,
 ) -> Result<(), BoxError> {
-    let model = match load(path)?.scene {
-        AnyScene::Bodies(s) => s.linearize()?,
-        AnyScene::Flight(f) => {
-            let lin = f.linearization();
-            let ss = &lin.state_space;
-            let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
-            let state = names(&OUTPUT_NAMES[..12]);
-            LinearModel::new(
-                f.spec().name.clone(),
-                state.clone(),
-                names(&OUTPUT_NAMES[16..]),
-                state,
-                (ss.a().clone(), ss.b().clone(), ss.c().clone(), ss.d().clone()),
-                false,
-                // the trim solve's own residual check has passed when the scene loaded
-                EquilibriumResidual { velocity: 0.0, acceleration: 0.0, ok: true },
-            )?
-        }
-    };
+    let model = load(path)?.scene.linearize()?;
     not_inside(path, dir, &model.scene)?;
     let files = render(&model)?;
     let dest = write_files(dir, &model.scene, Limits { max_bytes, reserve: 0 }, &files)?;

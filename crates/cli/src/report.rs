@@ -2,15 +2,13 @@
 //! one SVG per requested output (y label with quantity and unit, drawing that output's columns
 //! only) and, for every position output, the path of that body in the plane of its largest
 //! motion; last `summary.json` (what was asked, what was done, what it cost, how the invariants
-//! drifted, and which files a Ctrl-C or the byte budget left unwritten). Flight scenes write
-//! their own CSV and figures (`vectrix_scene::flight::FlightRun`).
+//! drifted, and which files a Ctrl-C or the byte budget left unwritten).
 //!
 //! Book: §8.3 (invariants), §4.11 (the work of an integration).
 
 use serde::Serialize;
 use vectrix_plot::{Chart, Curve, LineChart};
-use vectrix_scene::flight::FlightRun;
-use vectrix_scene::{ConstraintViolation, Drift, Invariant, Run, RunWork, Scene, Stop};
+use vectrix_scene::{ConstraintViolation, Drift, Invariant, Run, RunWork, Scene, Stop, TrimReport};
 
 use crate::output::{BoxError, file_stem};
 use crate::sink::{Halt, Sink};
@@ -51,6 +49,9 @@ struct Summary<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     max_constraint_drift: Option<ConstraintViolation>,
     work: RunWork,
+    /// What `[trim]` found: its unknowns, their change from the file's values, the residual.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trim: Option<&'a TrimReport>,
     /// The byte budget of the command's output (`--max-output-bytes`).
     max_output_bytes: u64,
     /// Set when writing stopped before every file was written: then `complete` is false.
@@ -220,6 +221,7 @@ pub(crate) fn summary_json(
         max_constraint_violation: run.max_constraint_violation,
         max_constraint_drift: run.max_constraint_drift,
         work: run.work,
+        trim: scene.trim_report(),
         max_output_bytes,
         output_stop,
     };
@@ -264,41 +266,6 @@ fn path_svg(run: &Run, o: &str, body: &str) -> Result<Option<String>, BoxError> 
         ..Chart::default()
     };
     Ok(Some(chart.to_svg()?))
-}
-
-/// Writes a flight-scene run: trajectory.csv (nonlinear and linear columns), one SVG per
-/// output, modes.svg, and last summary.json (trim, modes, linear-model error; with
-/// `output_stop` and `complete: false` when files are missing). Returns whether every file was
-/// written.
-///
-/// # Errors
-/// I/O and plot errors.
-pub(crate) fn write_flight(sink: &Sink, run: &FlightRun, view: Option<&str>) -> Result<bool, BoxError> {
-    let mut skipped: Vec<String> = Vec::new();
-    let mut put = |file: String, render: &dyn Fn() -> Result<String, BoxError>| -> Result<(), BoxError> {
-        if sink.halt().is_none() && sink.data(&file, render()?.as_bytes())? {
-            return Ok(());
-        }
-        skipped.push(file);
-        Ok(())
-    };
-    put("trajectory.csv".into(), &|| Ok(run.to_csv()))?;
-    let mut taken = vec!["trajectory".to_string(), "summary".to_string(), "modes".to_string()];
-    for (k, o) in run.outputs.iter().enumerate() {
-        put(format!("{}.svg", file_stem(o, &mut taken)), &|| Ok(run.response_svg(k)?))?;
-    }
-    put("modes.svg".into(), &|| Ok(run.modes_svg()?))?;
-    if let Some(page) = view {
-        put("view.html".into(), &|| Ok(page.to_string()))?;
-    }
-    let mut summary: serde_json::Value = serde_json::from_str(&run.summary_json())?;
-    summary["max_output_bytes"] = sink.max_bytes().into();
-    if let Some(h) = sink.halt().filter(|_| !skipped.is_empty()) {
-        summary["complete"] = false.into();
-        summary["output_stop"] = serde_json::to_value(OutputStop::new(h, &skipped, sink.max_bytes()))?;
-    }
-    sink.last("summary.json", serde_json::to_string_pretty(&summary)?.as_bytes())?;
-    Ok(skipped.is_empty())
 }
 
 #[cfg(test)]

@@ -12,7 +12,6 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use vectrix_scene::flight::{AnyScene, FlightScene};
 use vectrix_scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, SceneSource, StopReason};
 use vectrix_units::UnitSystem;
 
@@ -128,6 +127,9 @@ pub(crate) fn print_summary(out: &mut impl Write, scene: &Scene, run: &Run) -> s
         w.wall_seconds
     )?;
     writeln!(out, "  method             {}", run.method)?;
+    if let Some(t) = scene.trim_report() {
+        writeln!(out, "  {}", crate::check::trim_line(t))?;
+    }
     if let Some(s) = &run.stop {
         writeln!(out, "INCOMPLETE (requested t = 0 … {} s): {}", scene.spec().duration, s.message)?;
     }
@@ -234,12 +236,7 @@ pub(crate) fn run(
     let (text, file, scene) = match path {
         Some(p) => {
             let loaded = load(p)?;
-            match loaded.scene {
-                AnyScene::Bodies(s) => (loaded.text, loaded.file, *s),
-                AnyScene::Flight(f) => {
-                    return run_flight(out, (&loaded.text, &loaded.file, p), &f, opts);
-                }
-            }
+            (loaded.text, loaded.file, loaded.scene)
         }
         None => {
             let file = "<default scene>".to_string();
@@ -267,70 +264,6 @@ pub(crate) fn run(
         crate::report::write_scene(sink, "", &scene, &run, page.as_deref()).map(|_| ())
     })?;
     print_summary(out, &scene, &run)?;
-    print_written(out, &w, max_bytes)?;
-    Ok(outcome(run.stop.as_ref().map(|s| s.reason), w.halt))
-}
-
-/// `vectrix run` on a flight scene: trim, nonlinear and linear responses, modes.
-fn run_flight(
-    out: &mut impl Write,
-    (text, file, path): (&str, &str, &Path),
-    scene: &FlightScene,
-    opts: &Options<'_>,
-) -> Result<Outcome, BoxError> {
-    let &Options { dir, quiet, units, max_bytes, .. } = opts;
-    let name = &scene.spec().name;
-    not_inside(path, dir, name)?;
-    preflight(dir, name)?;
-    let view = opts.view && scene.spec().view;
-    let mut estimate = crate::budget::flight(scene);
-    if view {
-        estimate.data("view.html", crate::budget::flight_view(scene));
-    }
-    let limits = estimate.limits(max_bytes).map_err(|m| located(text, file, m))?;
-    let start = Instant::now();
-    let mut bar = Progress::new(name, quiet);
-    let run = scene.run_with(RunControl { progress: &mut |f| bar.update(f), cancel: Some(interrupted()) })?;
-    bar.finish();
-    let page = view.then(|| {
-        let data = crate::view::flight_view(scene, &run, units)
-            .unwrap_or_else(|why| crate::view::no_poses(name, &why));
-        crate::view::page(name, &data)
-    });
-    let run = run.in_units(units)?;
-    let w = write_dir(dir, &run.scene, limits, |sink| {
-        crate::report::write_flight(sink, &run, page.as_deref()).map(|_| ())
-    })?;
-    writeln!(
-        out,
-        "flight scene `{}`: t = 0 … {} s, {} rows, {} f-evals, {} steps, {:.3} s wall",
-        run.scene,
-        run.t.last().copied().unwrap_or(0.0),
-        run.t.len(),
-        run.fevals,
-        run.steps,
-        start.elapsed().as_secs_f64()
-    )?;
-    if let Some(s) = &run.stop {
-        writeln!(out, "INCOMPLETE (requested t = 0 … {} s): {}", scene.spec().duration, s.message)?;
-    }
-    for m in &run.modes {
-        writeln!(
-            out,
-            "  {:<13} λ = {:+.5} ± {:.5}j  ωn = {:.4} rad/s  ζ = {:.4}",
-            m.name, m.re, m.im, m.natural_frequency, m.damping_ratio
-        )?;
-    }
-    for (k, o) in run.outputs.iter().enumerate() {
-        match run.max_linear_error(k) {
-            Some(e) => writeln!(
-                out,
-                "  {o:<9} max excursion {:.3e}, linear model off by ≤ {e:.2e}",
-                run.max_excursion(k)
-            )?,
-            None => writeln!(out, "  {o:<9} max excursion {:.3e}", run.max_excursion(k))?,
-        }
-    }
     print_written(out, &w, max_bytes)?;
     Ok(outcome(run.stop.as_ref().map(|s| s.reason), w.halt))
 }

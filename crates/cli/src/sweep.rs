@@ -15,7 +15,6 @@ use std::sync::Mutex;
 
 use rayon::prelude::*;
 use vectrix_plot::LineChart;
-use vectrix_scene::flight::AnyScene;
 use vectrix_scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, StopReason, body_schema};
 use vectrix_units::UnitSystem;
 
@@ -172,19 +171,13 @@ pub(crate) fn sweep(
 ) -> Result<crate::run::Outcome, BoxError> {
     unique(params)?;
     let loaded = crate::input::load(path)?;
-    let base_scene = match loaded.scene {
-        AnyScene::Bodies(s) => *s,
-        AnyScene::Flight(_) => {
-            return Err(format!(
-                "{}: a flight scene (it has an [aircraft] table); sweeps take multibody scenes",
-                path.display()
-            )
-            .into());
-        }
-    };
+    let base_scene = loaded.scene;
     let (text, file) = (&loaded.text, &loaded.file);
     let src = SceneSource::new(text, file)?;
-    let doc: toml::Value = toml::from_str(text)?;
+    // quantity strings ("675.124 ft/s") become SI numbers first, as when the scene loaded: the
+    // swept values are SI numbers too
+    let mut doc: toml::Value = toml::from_str(text)?;
+    vectrix_scene::convert_quantities(&src, &mut doc, &vectrix_scene::body_schema)?;
     let params = params.iter().map(|p| parse_param(p, &doc)).collect::<Result<Vec<_>, _>>()?;
     let total = params.iter().try_fold(1usize, |n, (_, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
     if total > MAX_SWEEP_RUNS {

@@ -18,7 +18,6 @@
 
 use nalgebra::{Matrix3, Rotation3, SymmetricEigen, UnitQuaternion, Vector3};
 use serde_json::{Value, json};
-use vectrix_scene::flight::{FlightRun, FlightScene};
 use vectrix_scene::spec::{Attach, EffectSpec, LoopSpec, MassSpec};
 use vectrix_scene::{Run, RunControl, Scene, SceneSource};
 use vectrix_units::UnitSystem;
@@ -244,68 +243,6 @@ fn up(gravity: &Value) -> Value {
         }
         _ => json!([0, 0, 1]),
     }
-}
-
-/// The outputs a flight view needs for the aircraft's pose (NED position and 3-2-1 Euler
-/// angles).
-const FLIGHT_POSE: [&str; 6] = ["x", "y", "z", "phi", "theta", "psi"];
-
-/// The view of a flight scene whose run is `run` (in `units`): a second pass at the view's
-/// instants with the pose outputs added. The page's ground frame is NED turned to z up:
-/// (x, −y, −z), and the aircraft's attitude 𝓡 = R_z(ψ) R_y(θ) R_x(φ) (body to NED) is shown as
-/// M 𝓡 M with M = diag(1, −1, −1) (the glyph is drawn in M-flipped body axes).
-///
-/// Book: §14.2 (the aircraft's state), (11.5.1).
-///
-/// # Errors
-/// A message when the second pass fails; the page then says so.
-pub(crate) fn flight_view(scene: &FlightScene, run: &FlightRun, units: UnitSystem) -> Result<Value, String> {
-    let spec = scene.spec();
-    let mut s = spec.clone();
-    s.samples = frames(spec.samples, 1);
-    let declared = spec.outputs.len();
-    s.outputs.extend(FLIGHT_POSE.iter().map(|o| (*o).to_string()));
-    // a repeated output is refused: keep the declared ones, then the missing pose outputs
-    let mut seen = Vec::new();
-    s.outputs.retain(|o| {
-        let first = !seen.contains(o);
-        seen.push(o.clone());
-        first
-    });
-    if let Some(t_end) = run.t.last().filter(|_| run.stop.is_some()) {
-        s.duration = *t_end;
-    }
-    let text = toml::to_string(&s).map_err(|e| e.to_string())?;
-    let pass = FlightScene::from_toml(&text, "<view>").map_err(|e| e.to_string())?;
-    let cancel = Some(crate::run::interrupted());
-    let r = pass.run_with(RunControl { progress: &mut |_| {}, cancel }).map_err(|e| e.to_string())?;
-    let col = |o: &str| r.outputs.iter().position(|x| x == o).ok_or(format!("no {o} in the view's pass"));
-    let at: Vec<usize> = FLIGHT_POSE.iter().map(|o| col(o)).collect::<Result<_, _>>()?;
-    let m = Matrix3::from_diagonal(&Vector3::new(1.0, -1.0, -1.0));
-    let (t, pose, keep) = finite_samples(r.t.iter().enumerate().map(|(k, ti)| {
-        let x: Vec<f64> = at.iter().map(|&c| r.nonlinear[c][k]).collect();
-        let finite = x.iter().chain(r.nonlinear.iter().map(|c| &c[k])).all(|v| v.is_finite());
-        // (11.5.1): body to NED, 3-2-1
-        let rot = Rotation3::from_euler_angles(x[3], x[4], x[5]).into_inner();
-        let [w, qx, qy, qz] = quaternion(m * rot * m);
-        (*ti, finite.then(|| vec![x[0], -x[1], -x[2], w, qx, qy, qz]))
-    }));
-    let dropped = keep.iter().filter(|k| !**k).count();
-    let shown = r.clone().in_units(units).map_err(|e| e.to_string())?;
-    let rows: Vec<Vec<f64>> =
-        (0..shown.t.len()).map(|k| (0..declared).map(|c| shown.nonlinear[c][k]).collect()).collect();
-    let hud = hud(&shown.outputs[..declared], &shown.units[..declared], &rows, &keep);
-    let g = scene.aircraft().geometry;
-    let length = 0.8 * g.span;
-    Ok(json!({
-        "name": spec.name, "kind": "flight", "t": t, "duration": r7(spec.duration),
-        "complete": run.stop.is_none(),
-        "bodies": [{ "name": "aircraft", "shape": { "kind": "aircraft", "span": r7(g.span),
-            "length": r7(length) }, "com": [0, 0, 0], "parent": -1, "offset": [0, 0, 0] }],
-        "pose": pose, "links": [], "gravity": [0, 0, r7(-scene.aircraft().g)], "centres": [],
-        "frames": [], "trails": [0], "hud": hud, "dropped": dropped, "up": [0, 0, 1],
-        "length_unit": r.units[at[0]],
-    }))
 }
 
 /// The samples `(t, pose numbers)` whose time and numbers are all finite (`None` marks a

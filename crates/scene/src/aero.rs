@@ -46,6 +46,67 @@ pub(crate) fn unknown_aircraft(name: &str) -> String {
     format!("unknown aircraft `{name}`; valid: {}", AIRCRAFT.join(", "))
 }
 
+/// The names of [`vectrix_flight::Coefficients`]' fields, as a scene's `coefficients` table
+/// writes them.
+pub(crate) const COEFFICIENTS: [&str; 34] = [
+    "u_ref",
+    "cl0",
+    "cl_u",
+    "cl_alpha",
+    "cl_q",
+    "cl_alpha_dot",
+    "cl_de",
+    "cd_par",
+    "k_induced",
+    "cd_u",
+    "cm0",
+    "cm_u",
+    "cm_alpha",
+    "cm_q",
+    "cm_alpha_dot",
+    "cm_de",
+    "ce_beta",
+    "ce_beta_dot",
+    "ce_p",
+    "ce_r",
+    "ce_da",
+    "ce_dr",
+    "croll_beta",
+    "croll_beta_dot",
+    "croll_p",
+    "croll_r",
+    "croll_da",
+    "croll_dr",
+    "cn_beta",
+    "cn_beta_dot",
+    "cn_p",
+    "cn_r",
+    "cn_da",
+    "cn_dr",
+];
+
+/// Sets coefficient `name` of `c` (§13.3–13.5); `false` for a name not in [`COEFFICIENTS`].
+pub(crate) fn set_coefficient(c: &mut vectrix_flight::Coefficients, name: &str, v: f64) -> bool {
+    macro_rules! fields {
+        ($($f:ident)*) => {
+            match name {
+                $(stringify!($f) => c.$f = v,)*
+                _ => return false,
+            }
+        };
+    }
+    fields!(u_ref cl0 cl_u cl_alpha cl_q cl_alpha_dot cl_de cd_par k_induced cd_u cm0 cm_u cm_alpha cm_q
+        cm_alpha_dot cm_de ce_beta ce_beta_dot ce_p ce_r ce_da ce_dr croll_beta croll_beta_dot croll_p
+        croll_r croll_da croll_dr cn_beta cn_beta_dot cn_p cn_r cn_da cn_dr);
+    true
+}
+
+/// The error text for a coefficient name not in [`COEFFICIENTS`], with the nearest name.
+pub(crate) fn unknown_coefficient(name: &str) -> String {
+    let near = COEFFICIENTS.iter().min_by_key(|c| super::error::distance(name, c)).copied().unwrap_or("cl0");
+    format!("unknown coefficient `{name}` (did you mean `{near}`?); valid: {}", COEFFICIENTS.join(", "))
+}
+
 /// Whether the aircraft's coefficients make its forces depend on α̇ or β̇.
 pub(crate) fn has_rate_terms(ac: &Aircraft) -> bool {
     let c = &ac.coefficients;

@@ -117,7 +117,7 @@ fn key_offset(text: &str, key: &str) -> Option<usize> {
 }
 
 /// Edit distance (Levenshtein) between two short names.
-fn distance(a: &str, b: &str) -> usize {
+pub(crate) fn distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
     let mut row: Vec<usize> = (0..=b.len()).collect();
     for (i, ca) in a.chars().enumerate() {

@@ -21,17 +21,20 @@
 mod aero;
 mod build;
 mod contacts;
+mod effect_spec;
 mod error;
-pub mod flight;
 mod forces;
 mod impacts;
 pub mod import;
 mod invariants;
 mod jacobian;
 mod kin;
+mod limits;
 mod linearize;
 mod loops;
 mod many;
+mod migrate;
+mod outcome;
 mod outputs;
 mod profile;
 mod project;
@@ -51,18 +54,17 @@ pub use build::MAX_MAGNITUDE;
 pub use contacts::{ContactEvent, ContactEventKind, MAX_CONTACT_EVENTS, REST_TIME_REL};
 pub use error::{SceneError, unit_message};
 pub use invariants::Invariant;
+pub use limits::{DEFAULT_MAX_STEPS, MAX_SAMPLE_VALUES, MAX_SAMPLES};
 pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
 pub use many::MAX_ERRORS;
+pub use outcome::{Drift, InvariantValue, Run, RunControl, RunWork, Stop, StopReason};
 pub use project::{ASSEMBLY_TOL, CONSTRAINT_TOL, ConstraintViolation};
 pub use quantities::{
     Expect, Schema, Step, body_schema, convert as convert_quantities, key_of, render as render_path, tag,
 };
 pub use query::StateQuery;
 pub use rhs::SceneRhs;
-pub use run::{
-    DEFAULT_MAX_STEPS, DEFAULT_MAX_WALL_SECONDS, Drift, InvariantValue, MAX_SAMPLE_VALUES, MAX_SAMPLES,
-    MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE, Run, RunControl, RunWork, Stop, StopReason,
-};
+pub use run::{DEFAULT_MAX_WALL_SECONDS, MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE};
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
 pub use stiff::{MethodChoice, RADAU5_TOL_FACTOR, STIFF_RATIO, STIFF_RHO_DURATION};
@@ -185,6 +187,11 @@ impl Scene {
     /// # Errors
     /// As [`Scene::from_toml`].
     pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
+        if src.has_key("aircraft") {
+            // the old flight-scene form: refused with the file written in the new form
+            let doc: toml::Value = src.deserialize()?;
+            return Err(src.invalid("aircraft", migrate::message(&doc)));
+        }
         let spec: SceneSpec = src.deserialize_all(&body_schema).map_err(many::report)?;
         Self::build_reporting_all(spec, src)
     }
@@ -267,9 +274,9 @@ impl Scene {
 
     fn build_plain(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
         let built = build(&spec, src)?;
-        let (solver, named) = run::solver(&spec, src)?;
+        let (solver, named) = limits::solver(&spec, src)?;
         let outputs = outputs::parse(&spec, &built, src)?;
-        run::check_bounds(&spec, &built, &outputs, src)?;
+        limits::check_bounds(&spec, &built, &outputs, src)?;
         let invariants = invariants::derive(&built);
         let mut needs = Needs::default();
         for e in &built.effects {

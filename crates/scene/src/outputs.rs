@@ -27,6 +27,9 @@ pub(crate) enum Output {
     Velocity(usize),
     Omega(usize),
     OmegaBody(usize),
+    /// The velocity of the body's centre of mass in the body's own axes, (u, v, w) of (11.5.1)
+    /// for an aircraft: 𝓞 v_o + ω × c.
+    VelocityBody(usize),
     Coordinates(usize),
     Speeds(usize),
     /// Airspeed V, angle of attack α and sideslip β of the body's centre of mass in still air
@@ -44,7 +47,7 @@ pub(crate) enum Output {
 }
 
 const VALID: &str = "q, v, energy, momentum, angular_momentum, position:BODY, velocity:BODY, omega:BODY, \
-omega_body:BODY, coordinates:BODY, speeds:BODY, air:BODY, euler321:BODY, reaction:LOOP";
+omega_body:BODY, velocity_body:BODY, coordinates:BODY, speeds:BODY, air:BODY, euler321:BODY, reaction:LOOP";
 
 /// Parses the `outputs` list.
 pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output>, SceneError> {
@@ -104,6 +107,7 @@ pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output
                 ("velocity", Some(i)) => Output::Velocity(i),
                 ("omega", Some(i)) => Output::Omega(i),
                 ("omega_body", Some(i)) => Output::OmegaBody(i),
+                ("velocity_body", Some(i)) => Output::VelocityBody(i),
                 ("coordinates", Some(i)) => Output::Coordinates(i),
                 ("speeds", Some(i)) => Output::Speeds(i),
                 ("air", Some(i)) => Output::Air(i),
@@ -156,6 +160,9 @@ impl Scene {
                 Output::Velocity(i) => cols.extend(xyz(&format!("velocity:{}", name(*i)))),
                 Output::Omega(i) => cols.extend(xyz(&format!("omega:{}", name(*i)))),
                 Output::OmegaBody(i) => cols.extend(xyz(&format!("omega_body:{}", name(*i)))),
+                Output::VelocityBody(i) => {
+                    cols.extend(["u", "v", "w"].iter().map(|c| format!("velocity_body:{}.{c}", name(*i))))
+                }
                 Output::Coordinates(i) => cols.extend(
                     (0..dims(&b.bodies[*i].joint).0).map(|k| format!("coordinates:{}.{k}", name(*i))),
                 ),
@@ -213,7 +220,7 @@ impl Scene {
                 Output::Momentum => dims.extend([Dimension::MOMENTUM; 3]),
                 Output::AngularMomentum => dims.extend([Dimension::ANGULAR_MOMENTUM; 3]),
                 Output::Position(_) => dims.extend([Dimension::LENGTH; 3]),
-                Output::Velocity(_) => dims.extend([Dimension::VELOCITY; 3]),
+                Output::Velocity(_) | Output::VelocityBody(_) => dims.extend([Dimension::VELOCITY; 3]),
                 Output::Omega(_) | Output::OmegaBody(_) => dims.extend([Dimension::ANGULAR_VELOCITY; 3]),
                 Output::Coordinates(i) => dims.extend(joint_dims(*i, false)),
                 Output::Speeds(i) => dims.extend(joint_dims(*i, true)),
@@ -269,6 +276,9 @@ impl Scene {
                 Output::Velocity(i) => out.extend(kin.point(&(Some(*i), b.bodies[*i].com)).1.iter()),
                 Output::Omega(i) => out.extend(kin.omega[*i].iter()),
                 Output::OmegaBody(i) => out.extend((kin.poses[*i].0 * kin.omega[*i]).iter()),
+                Output::VelocityBody(i) => {
+                    out.extend(super::aero::air_velocity(kin, &b.bodies[*i], *i).0.iter())
+                }
                 Output::Coordinates(i) => {
                     let bd = &b.bodies[*i];
                     out.extend_from_slice(&q[bd.qi..bd.qi + dims(&bd.joint).0]);

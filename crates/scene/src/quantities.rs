@@ -141,6 +141,7 @@ const fn si(dims: &'static [Dimension]) -> Option<Expect> {
 const ONE: &[Dimension] = &[Dimension::DIMENSIONLESS];
 const TIME: &[Dimension] = &[Dimension::TIME];
 const LENGTH: &[Dimension] = &[Dimension::LENGTH];
+const AREA: &[Dimension] = &[Dimension::AREA];
 const MASS: &[Dimension] = &[Dimension::MASS];
 const ANGLE: &[Dimension] = &[Dimension::ANGLE];
 const VELOCITY: &[Dimension] = &[Dimension::VELOCITY];
@@ -244,6 +245,10 @@ fn effect_schema(kind: &str, rest: &[Option<&str>]) -> Option<Expect> {
         ("force" | "torque" | "thrust", [Some("profile"), tail @ ..]) => profile(tail),
         ("aero", [Some("elevator" | "aileron" | "rudder"), tail @ ..]) => profile(tail),
         ("aero", [Some("rho")]) => si(DENSITY),
+        ("aero", [Some("area")]) => si(AREA),
+        ("aero", [Some("chord" | "span")]) => si(LENGTH),
+        ("aero", [Some("coefficients"), Some("u_ref")]) => si(VELOCITY),
+        ("aero", [Some("coefficients"), Some(_)]) => si(ONE),
         ("thrust", [Some("angle")]) => si(ANGLE),
         ("contact_spheres", [Some("radius_a" | "radius_b")]) => si(LENGTH),
         ("contact_plane" | "rolling", [Some("radius")]) => si(LENGTH),

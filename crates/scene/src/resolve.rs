@@ -218,17 +218,40 @@ pub(crate) fn effect(
             e: restitution(*e)?,
             mu: nonneg(*friction, "friction", path, src)?,
         },
-        EffectSpec::Aero { body, aircraft, rho, elevator, aileron, rudder } => {
+        EffectSpec::Aero {
+            body,
+            aircraft,
+            rho,
+            area,
+            chord,
+            span,
+            coefficients,
+            elevator,
+            aileron,
+            rudder,
+        } => {
             let mut ac = super::aero::catalogue(aircraft)
                 .ok_or_else(|| src.invalid(key("aircraft"), super::aero::unknown_aircraft(aircraft)))?;
-            if let Some(rho) = rho {
-                if !(rho.is_finite() && *rho > 0.0) {
-                    return Err(
-                        src.invalid(key("rho"), format!("ρ = {rho} kg/m³; valid: a finite density > 0"))
-                    );
+            let positive = |v: &Option<f64>, name: &str, unit: &str| match v {
+                Some(x) if !(x.is_finite() && *x > 0.0) => {
+                    Err(src.invalid(key(name), format!("{name} = {x} {unit}; valid: a finite number > 0")))
                 }
-                ac.rho = *rho;
+                _ => Ok(*v),
+            };
+            ac.rho = positive(rho, "rho", "kg/m³")?.unwrap_or(ac.rho);
+            ac.geometry.area = positive(area, "area", "m²")?.unwrap_or(ac.geometry.area);
+            ac.geometry.chord = positive(chord, "chord", "m")?.unwrap_or(ac.geometry.chord);
+            ac.geometry.span = positive(span, "span", "m")?.unwrap_or(ac.geometry.span);
+            for (name, &v) in coefficients {
+                let at = key(&format!("coefficients.{name}"));
+                if !v.is_finite() {
+                    return Err(src.invalid(at, format!("{name} = {v}; valid: a finite number")));
+                }
+                if !super::aero::set_coefficient(&mut ac.coefficients, name, v) {
+                    return Err(src.invalid(at, super::aero::unknown_coefficient(name)));
+                }
             }
+            ac.check().map_err(|e| src.invalid(key("coefficients"), e.to_string()))?;
             Effect::Aero {
                 body: free(body, "body")?,
                 aircraft: Box::new(ac),

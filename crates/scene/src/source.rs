@@ -2,7 +2,7 @@
 //! spans (`toml::de::DeTable`), and every error is located by the *path* of the offending
 //! item (`bodies[2].joint.axis`) walked through that spanned tree: it points at the key or
 //! the array element itself, never at a textual match (which could land in a comment or on
-//! the first of two equal names). Body scenes and flight scenes share this one locator.
+//! the first of two equal names).
 //!
 //! Book: — (file format).
 
@@ -95,7 +95,7 @@ impl<'a> SceneSource<'a> {
         self.text
     }
 
-    /// Whether the document has the top-level key `key` (e.g. `aircraft`: a flight scene).
+    /// Whether the document has the top-level key `key` (e.g. `aircraft`: the old flight form).
     pub fn has_key(&self, key: &str) -> bool {
         self.doc.get_ref().iter().any(|(k, _)| k.get_ref() == key)
     }

@@ -5,6 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
+pub use super::effect_spec::{DipoleSpec, EffectSpec};
 pub use super::profile::Profile;
 
 /// A whole scene: bodies joined in a tree, the effects acting on them, the run and the outputs.
@@ -78,7 +79,7 @@ pub struct SceneSpec {
     pub view: bool,
 }
 
-fn zero_profile() -> Profile {
+pub(crate) fn zero_profile() -> Profile {
     Profile::Constant { value: 0.0 }
 }
 
@@ -340,194 +341,6 @@ pub struct TrimSpec {
     pub hold: std::collections::BTreeMap<String, f64>,
 }
 
-/// One effect. Only declared effects are assembled.
-///
-/// Book: ch. 6 (force elements §6.7–6.13), §7.13 (collisions), §7.x rolling.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum EffectSpec {
-    /// Uniform gravity g (ground components) on every body (6.11).
-    UniformGravity {
-        /// g [m/s²].
-        g: [f64; 3],
-    },
-    /// Central gravity toward a fixed point: f = −μ m r̂/|r|² (6.12.1).
-    CentralGravity {
-        /// μ = G M [m³/s²].
-        mu: f64,
-        /// The attracting point (ground components).
-        #[serde(default)]
-        centre: [f64; 3],
-    },
-    /// Mutual gravitation between every pair of bodies (centres of mass), constant G.
-    MutualGravitation {
-        /// Gravitational constant.
-        g: f64,
-    },
-    /// Translational spring f = −k(|r| − d) r̂ between two points (6.7.1).
-    Spring {
-        /// One end.
-        a: Attach,
-        /// Other end.
-        b: Attach,
-        /// Stiffness k [N/m].
-        k: f64,
-        /// Relaxed length d [m].
-        #[serde(default)]
-        length: f64,
-    },
-    /// Dashpot f = −c (d|r|/dt) r̂ between two points (6.8.1).
-    Dashpot {
-        /// One end.
-        a: Attach,
-        /// Other end.
-        b: Attach,
-        /// Damping c [N s/m].
-        c: f64,
-    },
-    /// Inerter f = −b (d²|r|/dt²) r̂ between two points (6.8); enters the mass matrix.
-    Inerter {
-        /// One end.
-        a: Attach,
-        /// Other end.
-        b: Attach,
-        /// Inertance b [kg].
-        inertance: f64,
-    },
-    /// Rotational spring on a one-angle joint: τ = −κ(θ − θ₀).
-    RotationalSpring {
-        /// The body whose joint it acts on (pin, collar or slot: the angle).
-        body: String,
-        /// κ [N m/rad].
-        kappa: f64,
-        /// θ₀ [rad].
-        #[serde(default)]
-        angle: f64,
-    },
-    /// Rotational dashpot on a one-angle joint: τ = −ξ θ̇.
-    RotationalDashpot {
-        /// The body.
-        body: String,
-        /// ξ [N m s/rad].
-        xi: f64,
-    },
-    /// Rotational inerter on a one-angle joint: τ = −β θ̈ (adds β to the joint's mass).
-    RotationalInerter {
-        /// The body.
-        body: String,
-        /// β [kg m²].
-        beta: f64,
-    },
-    /// Magnetic dipoles fixed in bodies, interacting pairwise (6.13.11), (6.13.18).
-    Dipoles {
-        /// The dipoles.
-        dipoles: Vec<DipoleSpec>,
-    },
-    /// Applied force along a fixed ground direction, magnitude a function of time.
-    Force {
-        /// Where it acts.
-        at: Attach,
-        /// Direction (ground components; scaled by the profile).
-        direction: [f64; 3],
-        /// Magnitude profile.
-        profile: Profile,
-    },
-    /// Applied torque about a fixed ground direction, magnitude a function of time.
-    Torque {
-        /// The body.
-        body: String,
-        /// Direction (ground components).
-        direction: [f64; 3],
-        /// Magnitude profile.
-        profile: Profile,
-    },
-    /// Impacts of two spheres (free bodies) with restitution e and Coulomb friction μ.
-    ContactSpheres {
-        /// First sphere.
-        a: String,
-        /// Second sphere.
-        b: String,
-        /// Radius of a.
-        radius_a: f64,
-        /// Radius of b.
-        radius_b: f64,
-        /// Coefficient of restitution e ∈ [0, 1].
-        restitution: f64,
-        /// Coulomb friction μ ≥ 0.
-        #[serde(default)]
-        friction: f64,
-    },
-    /// Impacts of a sphere (free body) on a fixed plane.
-    ContactPlane {
-        /// The sphere.
-        body: String,
-        /// Its radius.
-        radius: f64,
-        /// A point of the plane (ground components).
-        #[serde(default)]
-        point: [f64; 3],
-        /// Plane normal (ground components, toward the allowed side).
-        normal: [f64; 3],
-        /// e ∈ [0, 1].
-        restitution: f64,
-        /// μ ≥ 0.
-        #[serde(default)]
-        friction: f64,
-    },
-    /// The aerodynamic forces and moments of an aircraft on a free body (§11.1, §13.3–13.5):
-    /// lift, drag and side force from the body's airspeed, angle of attack α and sideslip β,
-    /// its angular velocity, α̇ and β̇, and the control deflections, with the aircraft's
-    /// coefficient model. The body's link axes are the aircraft's (x forward, y right wing,
-    /// z down); the air is at rest in the ground frame. α̇ and β̇ depend on the body's own
-    /// acceleration, so the right-hand side solves for them exactly (the accelerations are
-    /// affine in them).
-    Aero {
-        /// The aircraft body: on a free joint to the ground.
-        body: String,
-        /// The coefficient model from the catalogue: `business_jet` (Tables 14.1–14.2,
-        /// converted exactly to SI).
-        aircraft: String,
-        /// Air density ρ [kg/m³] (default: the catalogue's, 0.000588 slug/ft³ at 40,000 ft).
-        #[serde(default, skip_serializing_if = "Option::is_none")]
-        rho: Option<f64>,
-        /// Elevator δe [rad] (trailing edge down positive).
-        #[serde(default = "zero_profile")]
-        elevator: Profile,
-        /// Aileron δa [rad] (right aileron up positive).
-        #[serde(default = "zero_profile")]
-        aileron: Profile,
-        /// Rudder δr [rad] (trailing edge left positive).
-        #[serde(default = "zero_profile")]
-        rudder: Profile,
-    },
-    /// Engine thrust F_T on a body along a line tilted up by `angle` from the link x axis,
-    /// F_T [cos Φ_T, 0, −sin Φ_T] in link components (11.2.11), at the centre of mass.
-    Thrust {
-        /// The body.
-        body: String,
-        /// F_T(t) [N].
-        profile: Profile,
-        /// Thrust-line angle Φ_T [rad] above the link x axis (default 0).
-        #[serde(default)]
-        angle: f64,
-    },
-    /// Rolling without slip of a sphere or a disk (a free body, centre at its link origin)
-    /// on a fixed plane.
-    Rolling {
-        /// The body.
-        body: String,
-        /// `sphere` or `disk` (disk normal = link z axis).
-        shape: String,
-        /// Radius.
-        radius: f64,
-        /// A point of the plane.
-        #[serde(default)]
-        point: [f64; 3],
-        /// Plane normal (toward the body).
-        normal: [f64; 3],
-    },
-}
-
 /// A loop-closing joint between a point of body `a` and a point of body `b` (or the ground).
 ///
 /// Book: §9.11 (holonomic constraints), §6.10 (reactions of joints), §1.5 (joints).
@@ -597,16 +410,4 @@ impl LoopSpec {
             | Self::PointOnPlane { name, .. } => name,
         }
     }
-}
-
-/// A magnetic dipole m (link components) at the body's centre of mass.
-///
-/// Book: §6.13.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct DipoleSpec {
-    /// The body.
-    pub body: String,
-    /// Moment m (link components), in units where μ₀/4π = 1.
-    pub moment: [f64; 3],
 }
