@@ -121,11 +121,14 @@ fn csv(rows: usize, values: usize, header: u64, per_value: u64) -> u64 {
 
 /// Whether a scene can write contacts.csv.
 fn has_contacts(scene: &Scene) -> bool {
-    scene
-        .spec()
-        .effects
-        .iter()
-        .any(|e| matches!(e, EffectSpec::ContactSpheres { .. } | EffectSpec::ContactPlane { .. }))
+    scene.spec().effects.iter().any(|e| {
+        matches!(
+            e,
+            EffectSpec::ContactSpheres { .. }
+                | EffectSpec::ContactPlane { .. }
+                | EffectSpec::JointStop { .. }
+        )
+    })
 }
 
 /// Files one body-scene run writes (see [`crate::report::write_scene`]).

@@ -112,6 +112,9 @@ fn scenery(scene: &Scene) -> (Vec<Value>, Value, Vec<Value>, Vec<Value>) {
             LoopSpec::Pin { name, a, b, .. } => ("pin", name, a, b),
             LoopSpec::PointOnLine { name, a, b, .. } => ("point_on_line", name, a, b),
             LoopSpec::PointOnPlane { name, a, b, .. } => ("point_on_plane", name, a, b),
+            LoopSpec::Weld { name, a, b } => ("weld", name, a, b),
+            // a joint-coordinate coupling has no points to draw
+            LoopSpec::Coupler { .. } => continue,
         };
         links.push(json!({ "kind": kind, "name": name, "a": attach(a, &names), "b": attach(b, &names) }));
     }

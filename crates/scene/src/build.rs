@@ -98,6 +98,14 @@ pub(crate) enum Effect {
         e: f64,
         mu: f64,
     },
+    /// A joint stop: q[qi] ∈ [lower, upper] (±∞ for none), speed v[vi], restitution e.
+    JointStop {
+        qi: usize,
+        vi: usize,
+        lower: f64,
+        upper: f64,
+        e: f64,
+    },
     Plane {
         body: usize,
         r: f64,
@@ -313,7 +321,9 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             return Ok(None);
         }
         names.iter().position(|n| *n == name).map(Some).ok_or_else(|| {
-            src.invalid(path, format!("unknown body `{name}`; valid: ground, {}", names.join(", ")))
+            let joints = spec.joint_aliases.keys().map(String::as_str);
+            let hint = super::error::did_you_mean(name, names.iter().copied().chain(joints));
+            src.invalid(path, format!("unknown body `{name}`{hint}; valid: ground, {}", names.join(", ")))
         })
     };
     let body_of = |name: &str, path: &str| -> Result<usize, SceneError> {
@@ -502,7 +512,7 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
         .loops
         .iter()
         .enumerate()
-        .map(|(i, l)| loop_joint(l, &format!("loops[{i}]"), &index, &model, &q0, src))
+        .map(|(i, l)| loop_joint(l, &format!("loops[{i}]"), &index, (&model, &bodies), &q0, src))
         .collect::<Result<Vec<_>, _>>()?;
     for (i, l) in spec.loops.iter().enumerate() {
         check_name(l.name(), "loop name", false).map_err(|m| src.invalid(format!("loops[{i}].name"), m))?;

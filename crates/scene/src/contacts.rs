@@ -116,12 +116,17 @@ impl Scene {
     pub(crate) fn contact_effects(&self) -> Vec<usize> {
         let b = &self.built;
         (0..b.effects.len())
-            .filter(|&k| matches!(b.effects[k], Effect::Spheres { .. } | Effect::Plane { .. }))
+            .filter(|&k| {
+                matches!(
+                    b.effects[k],
+                    Effect::Spheres { .. } | Effect::Plane { .. } | Effect::JointStop { .. }
+                )
+            })
             .collect()
     }
 
-    /// Every declared contact's gap in declaration order (see [`Gap`]).
-    pub(crate) fn contact_gaps(&self, kin: &Kin) -> Vec<Gap> {
+    /// Every declared contact's gap in declaration order (see [`Gap`]); `kin` is at the state y.
+    pub(crate) fn contact_gaps(&self, kin: &Kin, y: &[f64]) -> Vec<Gap> {
         let c = |i: usize| kin.point(&(Some(i), self.built.bodies[i].com));
         self.built
             .effects
@@ -140,6 +145,9 @@ impl Scene {
                     let (gap, opening) = ((x - point).dot(n) - r, v.dot(n));
                     Some(Gap { gap, pos: n * x.dot(n), rate: n * opening, opening, size: *r })
                 }
+                Effect::JointStop { qi, vi, lower, upper, .. } => {
+                    Some(super::stops::stop_gap(y[*qi], y[self.built.model.nq() + vi], *lower, *upper))
+                }
                 _ => None,
             })
             .collect()
@@ -150,7 +158,7 @@ impl Scene {
         let b = &self.built;
         let nq = b.model.nq();
         let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
-        Ok(self.contact_gaps(&kin))
+        Ok(self.contact_gaps(&kin, y))
     }
 
     /// The first instant in (t₀, t₁] at which a contact in flight closes on the step's
@@ -311,7 +319,8 @@ impl Scene {
         }
         let (q, v) = y.split_at_mut(nq);
         let kin = kinematics(&b.model, q, v)?;
-        let hits = self.impacts(&kin, v, &contacts.resting);
+        let mut hits = self.impacts(&kin, v, &contacts.resting);
+        hits.extend(self.stop_impacts(q, v, &contacts.resting)?);
         for &(c, closing_speed, opening_speed) in &hits {
             let (effect, kind) = (self.contacts[c], ContactEventKind::Impact);
             contacts.record(ContactEvent { t, effect, kind, closing_speed, opening_speed });

@@ -190,6 +190,25 @@ pub enum EffectSpec {
         #[serde(default)]
         angle: f64,
     },
+    /// Stops of a one-coordinate joint (pin or sleeve) at `lower` ≤ q ≤ `upper`: unilateral
+    /// constraints with restitution e, through the same touch events, impacts and resting
+    /// contact as a sphere on a plane (URDF `<limit>`, MJCF `range`, with `[model] limits =
+    /// "contact"`). An impact sends the joint's speed from q̇ to −e q̇ by a generalized impulse
+    /// on its coordinate (§7.14); a stop held (bounces accumulated, or e = 0) pushes with the
+    /// generalized force that keeps q̈ = 0 until that force would have to pull.
+    JointStop {
+        /// The body whose joint is stopped.
+        body: String,
+        /// The lower stop [rad or m] (none: no lower stop).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        lower: Option<f64>,
+        /// The upper stop [rad or m] (none: no upper stop).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        upper: Option<f64>,
+        /// e ∈ [0, 1].
+        #[serde(default)]
+        restitution: f64,
+    },
     /// Rolling without slip of a sphere or a disk (a free body, centre at its link origin)
     /// on a fixed plane.
     Rolling {

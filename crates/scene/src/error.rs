@@ -116,6 +116,17 @@ fn key_offset(text: &str, key: &str) -> Option<usize> {
     None
 }
 
+/// " (did you mean `x`?)" for the candidate closest to `name` by edit distance, when it is
+/// close (at most a third of the name's letters, or 2, apart); otherwise "".
+pub(crate) fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
+    candidates
+        .into_iter()
+        .map(|c| (distance(name, c), c))
+        .min_by_key(|(d, _)| *d)
+        .filter(|(d, _)| *d <= (name.chars().count() / 3).max(2))
+        .map_or_else(String::new, |(_, c)| format!(" (did you mean `{c}`?)"))
+}
+
 /// Edit distance (Levenshtein) between two short names.
 pub(crate) fn distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();

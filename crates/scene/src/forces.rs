@@ -180,6 +180,7 @@ pub(crate) fn apply<T: Scalar>(
             | Effect::RotInerter { .. }
             | Effect::Spheres { .. }
             | Effect::Plane { .. }
+            | Effect::JointStop { .. }
             | Effect::Rolling { .. } => {}
         }
     }

@@ -78,6 +78,8 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
     for l in &b.loops {
         let ground = [l.a, l.b].into_iter().find(|x| x.0.is_none());
         match (ground, &l.kind) {
+            // a coupler acts through joint torques (as a rotational spring does)
+            (_, super::loops::LoopKind::Coupler { .. }) => external_force = true,
             (None, _) => {}
             (Some(g), super::loops::LoopKind::Ball) => points.push(g.1),
             (Some(_), _) => external_force = true,
@@ -117,6 +119,11 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
                 external_force = true;
             }
             Effect::Rolling { .. } => external_force = true,
+            // a stop acts through a joint torque (as a rotational spring does)
+            Effect::JointStop { e, .. } => {
+                conservative &= *e == 1.0;
+                external_force = true;
+            }
             Effect::Mutual { .. } | Effect::Dipoles { .. } => {}
         }
     }

@@ -31,6 +31,7 @@ mod jacobian;
 mod kin;
 mod limits;
 mod linearize;
+mod loop_spec;
 mod loops;
 mod many;
 mod migrate;
@@ -47,6 +48,7 @@ mod run;
 mod source;
 pub mod spec;
 mod stiff;
+mod stops;
 mod trim;
 
 pub use aero::AIRCRAFT;
@@ -285,7 +287,7 @@ impl Scene {
                 E::Uniform { .. } | E::RotSpring { .. } | E::RotDashpot { .. } => {}
                 E::Inerter { .. } | E::RotInerter { .. } => needs.inerters = true,
                 E::Rolling { .. } => needs.rolling = true,
-                E::Spheres { .. } | E::Plane { .. } => needs.impacts = true,
+                E::Spheres { .. } | E::Plane { .. } | E::JointStop { .. } => needs.impacts = true,
                 _ => needs.loads = true,
             }
             if matches!(e, E::RotSpring { .. } | E::RotDashpot { .. }) {
@@ -304,6 +306,15 @@ impl Scene {
                 "an aero effect with loops, rolling contacts or inerters is not supported (its α̇/β̇ solve runs on \
                  the tree's forward dynamics); valid: an aircraft in a tree of bodies (a slung load on a ball \
                  joint, a rotor on a pin)",
+            ));
+        }
+        if needs.constrained()
+            && let Some(k) = spec.effects.iter().position(|e| matches!(e, spec::EffectSpec::JointStop { .. }))
+        {
+            return Err(src.invalid(
+                format!("effects[{k}]"),
+                "a joint stop in a scene with loops, rolling contacts or inerters is not supported (its impulse \
+                 and holding force act on the tree alone); valid: joint stops on a tree of bodies",
             ));
         }
         // only ball joints (also of free joints) have more coordinates than speeds

@@ -45,6 +45,20 @@ pub(crate) enum LoopKind {
     Plane {
         n_b: Vector3<f64>,
     },
+    /// A weld: the points coincide and three pairs (u, w), u fixed in `b` (link frame) and
+    /// w fixed in `a` (link frame), stay perpendicular (u·w = 0), u being at q₀ the image in
+    /// `b` of the `a`-axis after w (y→z, z→x, x→y); with the points, 6 rows.
+    Weld {
+        pairs: [(Vector3<f64>, Vector3<f64>); 3],
+    },
+    /// q[qa] = ratio · q[qb] + offset (speeds va, vb): a linear joint-coordinate coupling.
+    Coupler {
+        qa: usize,
+        va: usize,
+        lead: Option<(usize, usize)>,
+        ratio: f64,
+        offset: f64,
+    },
 }
 
 impl Loop {
@@ -55,6 +69,8 @@ impl Loop {
             LoopKind::Pin { .. } => 5,
             LoopKind::Line { .. } => 2,
             LoopKind::Plane { .. } => 1,
+            LoopKind::Weld { .. } => 6,
+            LoopKind::Coupler { .. } => 1,
         }
     }
 }
@@ -75,6 +91,19 @@ fn omega(kin: &Kin, body: Option<usize>) -> Vector3<f64> {
     body.map_or_else(Vector3::zeros, |i| kin.omega[i])
 }
 
+/// d/dt[(ω_b − ω_a)·(k × e)] at v̇ = 0, k fixed in `b` and e in `a` (ground components), with
+/// k̇ = ω_b × k, ė = ω_a × e and the bias angular accelerations α: the bias of a pin's or a
+/// weld's turning rows.
+fn turn_bias(
+    k: &Vector3<f64>,
+    e: &Vector3<f64>,
+    (wa, wb): (&Vector3<f64>, &Vector3<f64>),
+    (aa, ab): (&Vector3<f64>, &Vector3<f64>),
+) -> f64 {
+    let kxe_dot = wb.cross(k).cross(e) + k.cross(&wa.cross(e));
+    (ab - aa).dot(&k.cross(e)) + (wb - wa).dot(&kxe_dot)
+}
+
 /// The scene's constraint rows at one state: G (m × nv), the bias Ġv, and the inerters'
 /// rank-one mass terms (g, ġv, b).
 pub(crate) struct Rows {
@@ -84,8 +113,8 @@ pub(crate) struct Rows {
 }
 
 impl Scene {
-    /// φ(q) of every loop (the position constraints), in loop order.
-    pub(crate) fn loop_phi(&self, kin: &Kin, out: &mut Vec<f64>) {
+    /// φ(q) of every loop (the position constraints), in loop order; `kin` is at q.
+    pub(crate) fn loop_phi(&self, kin: &Kin, q: &[f64], out: &mut Vec<f64>) {
         for l in &self.built.loops {
             let (pa, _) = kin.point(&l.a);
             let (pb, _) = kin.point(&l.b);
@@ -104,12 +133,22 @@ impl Scene {
                     out.push(d.dot(&eb.tr_mul(n2_b)));
                 }
                 LoopKind::Plane { n_b } => out.push(d.dot(&eb.tr_mul(n_b))),
+                LoopKind::Weld { pairs } => {
+                    out.extend(d.iter());
+                    // u_b · w_a for each pair, 0 at the welded pose
+                    out.extend(pairs.iter().map(|(u, w)| eb.tr_mul(u).dot(&ea.tr_mul(w))));
+                }
+                // q_a − m q_b − offset
+                LoopKind::Coupler { qa, lead, ratio, offset, .. } => {
+                    out.push(q[*qa] - lead.map_or(0.0, |(qb, _)| ratio * q[qb]) - offset);
+                }
             }
         }
     }
 
-    /// φ̇ = G v of every loop for the twists in `kin` (linear in them).
-    fn loop_rates(&self, kin: &Kin, out: &mut Vec<f64>) {
+    /// φ̇ = G v of every loop for the twists in `kin` (linear in them), `kin` holding the
+    /// unit velocity v = e_k.
+    fn loop_rates(&self, kin: &Kin, k: usize, out: &mut Vec<f64>) {
         for l in &self.built.loops {
             let (pa, va) = kin.point(&l.a);
             let (pb, vb) = kin.point(&l.b);
@@ -137,6 +176,18 @@ impl Scene {
                     let n = eb.tr_mul(n_b);
                     out.push(dv.dot(&n) + d.dot(&wb.cross(&n)));
                 }
+                LoopKind::Weld { pairs } => {
+                    out.extend(dv.iter());
+                    // d/dt(u_b·w_a) = (ω_b − ω_a)·(u_b × w_a)
+                    for (u, w) in pairs {
+                        out.push((wb - wa).dot(&eb.tr_mul(u).cross(&ea.tr_mul(w))));
+                    }
+                }
+                // d/dt(q_a − m q_b) at v = e_k: δ(k, a) − m δ(k, b)
+                LoopKind::Coupler { va, lead, ratio, .. } => {
+                    let e = |i: usize| if i == k { 1.0 } else { 0.0 };
+                    out.push(e(*va) - lead.map_or(0.0, |(_, vb)| ratio * e(vb)));
+                }
             }
         }
     }
@@ -158,12 +209,17 @@ impl Scene {
                     out.extend(da.iter());
                     let k = eb.tr_mul(axis_b);
                     for e in [e1_a, e2_a] {
-                        let e = ea.tr_mul(e);
-                        // d/dt[(ω_b − ω_a)·(k × e)] with k̇ = ω_b × k, ė = ω_a × e
-                        let kxe_dot = wb.cross(&k).cross(&e) + k.cross(&wa.cross(&e));
-                        out.push((ab - aa).dot(&k.cross(&e)) + (wb - wa).dot(&kxe_dot));
+                        out.push(turn_bias(&k, &ea.tr_mul(e), (&wa, &wb), (&aa, &ab)));
                     }
                 }
+                LoopKind::Weld { pairs } => {
+                    out.extend(da.iter());
+                    for (u, w) in pairs {
+                        out.push(turn_bias(&eb.tr_mul(u), &ea.tr_mul(w), (&wa, &wb), (&aa, &ab)));
+                    }
+                }
+                // q̈_a − m q̈_b = v̇_a − m v̇_b: no bias
+                LoopKind::Coupler { .. } => out.push(0.0),
                 LoopKind::Line { n1_b, n2_b } => {
                     for n in [n1_b, n2_b] {
                         let n = eb.tr_mul(n);
@@ -234,7 +290,7 @@ impl Scene {
         let nv = b.model.nv();
         let mut cols: Vec<Vec<f64>> = vec![Vec::new(); nv];
         for (k, u) in unit.iter().enumerate() {
-            self.loop_rates(u, &mut cols[k]);
+            self.loop_rates(u, k, &mut cols[k]);
         }
         if rolling {
             for e in &b.effects {

@@ -88,9 +88,13 @@ pub(crate) fn parse(spec: &SceneSpec, b: &Built, src: &Src) -> Result<Vec<Output
                 Some((kd, name)) => {
                     let i = b.bodies.iter().position(|x| x.name == name).ok_or_else(|| {
                         let names: Vec<&str> = b.bodies.iter().map(|x| x.name.as_str()).collect();
+                        let hint = super::error::did_you_mean(name, names.iter().copied());
                         src.invalid(
                             &path,
-                            format!("unknown body `{name}` in output `{o}`; valid: {}", names.join(", ")),
+                            format!(
+                                "unknown body `{name}`{hint} in output `{o}`; valid: {}",
+                                names.join(", ")
+                            ),
                         )
                     })?;
                     (kd, Some(i))
@@ -129,13 +133,23 @@ pub(crate) fn count_columns(outputs: &[Output], b: &Built) -> usize {
             Output::Coordinates(i) => dims(&b.bodies[*i].joint).0,
             Output::Speeds(i) => dims(&b.bodies[*i].joint).1,
             Output::Reaction { index, .. } if is_pin(b, *index) => 6,
+            Output::Reaction { index, .. } if coupled(b, *index).is_some() => 1,
             _ => 3,
         })
         .sum()
 }
 
+/// Whether a loop's reaction has a couple (a pin, a weld).
 fn is_pin(b: &Built, index: usize) -> bool {
-    matches!(b.loops[index].kind, LoopKind::Pin { .. })
+    matches!(b.loops[index].kind, LoopKind::Pin { .. } | LoopKind::Weld { .. })
+}
+
+/// The follower body of a coupler (whose joint's generalized force is its reaction).
+fn coupled(b: &Built, index: usize) -> Option<usize> {
+    match b.loops[index].kind {
+        LoopKind::Coupler { .. } => b.loops[index].a.0,
+        _ => None,
+    }
 }
 
 fn xyz(prefix: &str) -> Vec<String> {
@@ -177,6 +191,10 @@ impl Scene {
                 }
                 Output::Reaction { index, .. } => {
                     let p = format!("reaction:{}", b.loops[*index].name);
+                    if coupled(b, *index).is_some() {
+                        cols.push(p);
+                        continue;
+                    }
                     cols.extend(xyz(&p));
                     if is_pin(b, *index) {
                         cols.extend(["mx", "my", "mz"].iter().map(|c| format!("{p}.{c}")));
@@ -227,6 +245,11 @@ impl Scene {
                 Output::Air(_) => dims.extend([Dimension::VELOCITY, Dimension::ANGLE, Dimension::ANGLE]),
                 Output::Euler321(_) => dims.extend([Dimension::ANGLE; 3]),
                 Output::Reaction { index, .. } => {
+                    if let Some(i) = coupled(b, *index) {
+                        let pin = matches!(b.bodies[i].joint, JointSpec::Pin { .. });
+                        dims.push(if pin { Dimension::MOMENT } else { Dimension::FORCE });
+                        continue;
+                    }
                     dims.extend([Dimension::FORCE; 3]);
                     if is_pin(b, *index) {
                         dims.extend([Dimension::MOMENT; 3]);
@@ -300,6 +323,11 @@ impl Scene {
                 }
                 Output::Reaction { index, row } => {
                     let lam = |k: usize| lambda.and_then(|l| l.get(row + k).copied()).unwrap_or_else(T::zero);
+                    if coupled(b, *index).is_some() {
+                        // −Gᵀλ on the follower's coordinate: −λ
+                        out.push(-lam(0));
+                        continue;
+                    }
                     let (force, couple) = reaction(kin, &b.loops[*index], lam);
                     out.extend(force.iter());
                     if let Some(m) = couple {
@@ -330,5 +358,14 @@ fn reaction<T: Scalar>(kin: &Kin<T>, l: &Loop, lam: impl Fn(usize) -> T) -> (Vec
             (-(eb.tr_mul(&lift::<T>(n1_b)) * lam(0) + eb.tr_mul(&lift::<T>(n2_b)) * lam(1)), None)
         }
         LoopKind::Plane { n_b } => (-(eb.tr_mul(&lift::<T>(n_b)) * lam(0)), None),
+        // a turning row λ·(ω_b − ω_a)·(u × w) gives the couple λ(u × w) on `a`
+        LoopKind::Weld { pairs } => {
+            let couple = pairs.iter().enumerate().fold(Vector3::zeros(), |m, (j, (u, w))| {
+                m + eb.tr_mul(&lift::<T>(u)).cross(&ea.tr_mul(&lift::<T>(w))) * lam(3 + j)
+            });
+            (three, Some(couple))
+        }
+        // (reported by the caller as one generalized force)
+        LoopKind::Coupler { .. } => (Vector3::zeros(), None),
     }
 }

@@ -77,7 +77,7 @@ impl Scene {
         let b = &self.built;
         let kin = kinematics(&b.model, q, &vec![0.0; b.model.nv()])?;
         let mut phi = Vec::new();
-        self.loop_phi(&kin, &mut phi);
+        self.loop_phi(&kin, q, &mut phi);
         Ok((DVector::from_vec(phi), self.velocity_jacobian(&kin, false)?))
     }
 
@@ -87,7 +87,7 @@ impl Scene {
         let (q, v) = y.split_at(b.model.nq());
         let kin: Kin = kinematics(&b.model, q, v)?;
         let mut phi = Vec::new();
-        self.loop_phi(&kin, &mut phi);
+        self.loop_phi(&kin, q, &mut phi);
         let rate = self.velocity_jacobian(&kin, true)? * DVector::from_column_slice(v);
         let amax = |x: &[f64]| x.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
         let viol = ConstraintViolation { position: amax(&phi), velocity: amax(rate.as_slice()) };

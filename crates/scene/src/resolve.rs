@@ -47,7 +47,7 @@ pub(crate) fn loop_joint(
     l: &LoopSpec,
     path: &str,
     index: &Index,
-    model: &Model,
+    (model, bodies): (&Model, &[Body]),
     q0: &[f64],
     src: &Src,
 ) -> Result<super::loops::Loop, SceneError> {
@@ -56,7 +56,11 @@ pub(crate) fn loop_joint(
         LoopSpec::Ball { name, a, b }
         | LoopSpec::Pin { name, a, b, .. }
         | LoopSpec::PointOnLine { name, a, b, .. }
-        | LoopSpec::PointOnPlane { name, a, b, .. } => (name, a, b),
+        | LoopSpec::PointOnPlane { name, a, b, .. }
+        | LoopSpec::Weld { name, a, b } => (name, a, b),
+        LoopSpec::Coupler { name, body, leader, ratio, offset } => {
+            return coupler(name, (body, leader.as_deref()), (*ratio, *offset), path, index, bodies, src);
+        }
     };
     let at = |x: &Attach, k: &str| -> Result<At, SceneError> {
         Ok((index(&x.body, &format!("{path}.{k}.body"))?, v3(x.point)))
@@ -88,9 +92,83 @@ pub(crate) fn loop_joint(
             LoopKind::Line { n1_b, n2_b }
         }
         LoopSpec::PointOnPlane { normal, .. } => LoopKind::Plane { n_b: unit(*normal, "normal", path, src)? },
+        LoopSpec::Weld { .. } => {
+            // u_b: the a-axes after w (y→z, z→x, x→y) carried into b's link frame at q₀,
+            // 𝓞_{B/G} 𝓞_{A/G}ᵀ ê, so that every u_b·w_a is 0 at q₀
+            let poses = model.poses(q0).map_err(|e| src.invalid(path, e.to_string()))?;
+            let o = |x: Option<usize>| x.map_or_else(Matrix3::identity, |i| poses[i].0);
+            let to_b = o(b.0) * o(a.0).transpose();
+            let (x, y, z) = (Vector3::x(), Vector3::y(), Vector3::z());
+            LoopKind::Weld { pairs: [(to_b * y, z), (to_b * z, x), (to_b * x, y)] }
+        }
+        // (returned above; repeated so that the match needs no panic)
+        LoopSpec::Coupler { name, body, leader, ratio, offset } => {
+            return coupler(name, (body, leader.as_deref()), (*ratio, *offset), path, index, bodies, src);
+        }
     };
     Ok(Loop { name: name.clone(), kind, a, b })
 }
+/// A coupler with its bodies resolved to joint coordinates: both joints must have one
+/// coordinate (pin or sleeve), and differ.
+fn coupler(
+    name: &str,
+    (body, leader): (&str, Option<&str>),
+    (ratio, offset): (f64, f64),
+    path: &str,
+    index: &Index,
+    bodies: &[Body],
+    src: &Src,
+) -> Result<super::loops::Loop, SceneError> {
+    use super::loops::{Loop, LoopKind};
+    let one_coordinate = |who: &str, key: &str| -> Result<usize, SceneError> {
+        let at = format!("{path}.{key}");
+        let i = index(who, &at)?.ok_or_else(|| {
+            src.invalid(&at, "the ground has no joint; valid: a body on a pin or sleeve joint")
+        })?;
+        match bodies[i].joint {
+            JointSpec::Pin { .. } | JointSpec::Sleeve { .. } => Ok(i),
+            _ => Err(src.invalid(
+                &at,
+                format!("body `{who}`'s joint has more than one coordinate; valid: a body on a pin or sleeve joint"),
+            )),
+        }
+    };
+    for (x, what) in [(ratio, "ratio"), (offset, "offset")] {
+        if !x.is_finite() {
+            return Err(
+                src.invalid(format!("{path}.{what}"), format!("{what} = {x}; valid: a finite number"))
+            );
+        }
+    }
+    let ia = one_coordinate(body, "body")?;
+    let lead = match leader {
+        Some(l) => {
+            let ib = one_coordinate(l, "leader")?;
+            if ib == ia {
+                return Err(src.invalid(
+                    format!("{path}.leader"),
+                    "the leader is the body itself; valid: another body (or no leader to lock the joint)",
+                ));
+            }
+            Some(ib)
+        }
+        None => None,
+    };
+    let (ba, lead_at) = (&bodies[ia], lead.map(|i| (&bodies[i], i)));
+    Ok(Loop {
+        name: name.to_string(),
+        kind: LoopKind::Coupler {
+            qa: ba.qi,
+            va: ba.vi,
+            lead: lead_at.map(|(b, _)| (b.qi, b.vi)),
+            ratio,
+            offset,
+        },
+        a: (Some(ia), Vector3::zeros()),
+        b: (lead_at.map(|(_, i)| i), Vector3::zeros()),
+    })
+}
+
 type BodyOf<'a> = dyn Fn(&str, &str) -> Result<usize, SceneError> + 'a;
 
 pub(crate) fn effect(
@@ -209,6 +287,26 @@ pub(crate) fn effect(
                 e: restitution(*e)?,
                 mu: nonneg(*friction, "friction", path, src)?,
             }
+        }
+        EffectSpec::JointStop { body, lower, upper, restitution: e } => {
+            let i = body_of(body, &key("body"))?;
+            let b = &bodies[i];
+            if !matches!(b.joint, JointSpec::Pin { .. } | JointSpec::Sleeve { .. }) {
+                return Err(src.invalid(
+                    key("body"),
+                    format!("body `{body}`'s joint has more than one coordinate; valid: a body on a pin or sleeve joint"),
+                ));
+            }
+            let (lo, hi) = (lower.unwrap_or(f64::NEG_INFINITY), upper.unwrap_or(f64::INFINITY));
+            if (lower.is_none() && upper.is_none()) || lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
+                return Err(src.invalid(
+                    path,
+                    format!(
+                        "stops {lower:?} and {upper:?}; valid: `lower`, `upper` or both, with lower < upper"
+                    ),
+                ));
+            }
+            Effect::JointStop { qi: b.qi, vi: b.vi, lower: lo, upper: hi, e: restitution(*e)? }
         }
         EffectSpec::ContactPlane { body, radius, point, normal, restitution: e, friction } => Effect::Plane {
             body: alone(body, "body")?,

@@ -74,21 +74,35 @@ impl Scene {
 
     /// aₙ of plane contact c at (t, y) without its own normal force (the other resting
     /// contacts pushing): negative while the plane must push.
+    /// For a joint stop, the opening part s q̈ of its coordinate's acceleration.
     fn free_normal_accel(&self, t: f64, y: &[f64], resting: &[bool], c: usize) -> Result<f64, String> {
-        let Some(p) = self.plane(c) else { return Ok(0.0) };
+        let (plane, stop) = (self.plane(c), self.stop(c));
+        if plane.is_none() && stop.is_none() {
+            return Ok(0.0);
+        }
         let mut others = resting.to_vec();
         others[c] = false;
         let mut d = vec![0.0; y.len()];
         self.deriv_resting(t, y, &mut d, &mut RhsScratch::new(self), &others)?;
         let b = &self.built;
         let nq = b.model.nq();
+        let Some(p) = plane else {
+            let s = stop.ok_or("not a contact")?;
+            return Ok(super::stops::side(y[s.qi], s.lower, s.upper) * d[nq + s.vi]);
+        };
         let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
         Ok(self.centre_accel(&kin, p.body, &d[nq..]).dot(&p.n))
     }
 
     /// Normal speed of plane contact c's centre along n (positive: opening), its gap, and the
     /// gap's resolution: [`GAP_ULPS`] ulps of the lengths it is computed from.
+    /// For a joint stop: its opening speed, gap and resolution in q.
     fn normal_motion(&self, y: &[f64], c: usize) -> Result<(f64, f64, f64), String> {
+        if let Some(s) = self.stop(c) {
+            let g = super::stops::stop_gap(y[s.qi], y[self.built.model.nq() + s.vi], s.lower, s.upper);
+            let resolution = GAP_ULPS * f64::EPSILON * g.size;
+            return Ok((g.opening, g.gap, resolution));
+        }
         let Some(Effect::Plane { body, r, point, n, .. }) = self.built.effects.get(self.contacts[c]) else {
             return Err("not a plane contact".into());
         };
@@ -97,13 +111,21 @@ impl Scene {
         let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
         let (x, v) = kin.point(&(Some(*body), b.bodies[*body].com));
         let resolution = GAP_ULPS * f64::EPSILON * (x.norm() + point.norm() + r);
-        Ok((v.dot(n), self.contact_gaps(&kin)[c].gap, resolution))
+        Ok((v.dot(n), self.contact_gaps(&kin, y)[c].gap, resolution))
     }
 
     /// Puts plane contact c's sphere exactly on its plane with zero normal speed: the centre
     /// moves by −g n and its velocity loses its normal part (a free joint's translation and its
     /// rate are resolved in the joint frame).
+    /// A joint stop's coordinate is put on the stop, its opening speed removed.
     pub(crate) fn place_on_plane(&self, y: &mut [f64], c: usize, gap: f64, u_n: f64) {
+        if let Some(s) = self.stop(c) {
+            let nq = self.built.model.nq();
+            let side = super::stops::side(y[s.qi], s.lower, s.upper);
+            y[s.qi] -= side * gap;
+            y[nq + s.vi] -= side * u_n;
+            return;
+        }
         let Some(p) = self.plane(c) else { return };
         let b = &self.built.bodies[p.body];
         let nq = self.built.model.nq();
@@ -134,10 +156,11 @@ impl Scene {
             if contacts.resting[c] || g.gap > TOUCH_REL * g.size {
                 continue;
             }
-            let Some(p) = self.plane(c) else {
+            let plane = self.plane(c);
+            if plane.is_none() && self.stop(c).is_none() {
                 self.spheres_part(t, y, c, g, contacts, tau_min)?;
                 continue;
-            };
+            }
             let (u_n, gap, resolution) = self.normal_motion(y, c)?;
             let a_n = self.free_normal_accel(t, y, &contacts.resting, c)?;
             // the rebound flies for 2uₙ/(−aₙ) and rises uₙ²/(−2aₙ): shorter than tau_min, or
@@ -155,14 +178,14 @@ impl Scene {
                 ));
             }
             for (c2, r2) in contacts.resting.iter().enumerate() {
-                if let (true, Some(q)) = (*r2, self.plane(c2))
+                if let (true, Some(q), Some(p)) = (*r2, self.plane(c2), plane.as_ref())
                     && q.body == p.body
                     && q.n.dot(&p.n).abs() > 1e-12
                 {
                     return Err(format!(
                         "body `{}` comes to rest on two planes whose normals are not perpendicular \
                          (effects[{}] and effects[{}]) at t = {t:e} s; valid: perpendicular resting planes",
-                        self.built.bodies[p.body].name, self.contacts[c2], self.contacts[c]
+                        self.built.bodies[q.body].name, self.contacts[c2], self.contacts[c]
                     ));
                 }
             }
@@ -262,12 +285,24 @@ impl Scene {
     pub(crate) fn hold_resting(&self, t: f64, y: &mut [f64], contacts: &Contacts) -> Result<bool, String> {
         let mut moved = false;
         for c in (0..contacts.resting.len()).filter(|&c| contacts.resting[c]) {
+            if let Some(s) = self.stop(c) {
+                // a held stop drifts by the integration error of q̈ = 0: put it back
+                let nq = self.built.model.nq();
+                let g = super::stops::stop_gap(y[s.qi], y[nq + s.vi], s.lower, s.upper);
+                let a = self.free_normal_accel(t, y, &contacts.resting, c)?;
+                let tol = HOLD_TOL_EPS * f64::EPSILON;
+                if g.gap.abs() > tol * g.size || g.opening.abs() > tol * ((a.abs() * g.size).sqrt() + 1.0) {
+                    self.place_on_plane(y, c, g.gap, g.opening);
+                    moved = true;
+                }
+                continue;
+            }
             let Some(p) = self.plane(c) else { continue };
             let b = &self.built;
             let nq = b.model.nq();
             let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
             let (x_c, v_c) = kin.point(&(Some(p.body), b.bodies[p.body].com));
-            let gap = self.contact_gaps(&kin)[c].gap;
+            let gap = self.contact_gaps(&kin, y)[c].gap;
             let u_n = v_c.dot(&p.n);
             let a_n = self.free_normal_accel(t, y, &contacts.resting, c)?;
             // speeds are measured against √(|aₙ| r) and the speeds present

@@ -207,6 +207,7 @@ impl Scene {
                 kinematics_into(&b.model, q, v, &mut w.kin);
             }
             self.rest_forces(&w.kin, resting, vd);
+            self.stop_rest_forces(q, resting, vd)?;
         }
         Ok(None)
     }

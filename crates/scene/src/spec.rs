@@ -6,6 +6,8 @@
 use serde::{Deserialize, Serialize};
 
 pub use super::effect_spec::{DipoleSpec, EffectSpec};
+pub use crate::loop_spec::LoopSpec;
+
 pub use super::profile::Profile;
 
 /// A whole scene: bodies joined in a tree, the effects acting on them, the run and the outputs.
@@ -44,6 +46,11 @@ pub struct SceneSpec {
     /// bodies after the scene's own `bodies`, its loops after the scene's `loops`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub model: Option<ModelSpec>,
+    /// The joint names of the `model` that stand for their bodies (joint → body), filled when
+    /// the model is read and used for "did you mean" hints; never read from or written to a
+    /// file.
+    #[serde(skip)]
+    pub joint_aliases: std::collections::BTreeMap<String, String>,
     /// The bodies, each joined to its parent (or to the ground).
     #[serde(default)]
     pub bodies: Vec<BodySpec>,
@@ -178,6 +185,13 @@ pub struct ModelSpec {
     /// An MJCF file, relative to the scene file and inside its folder tree.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mjcf: Option<String>,
+    /// What the model's joint limits do: `"data"` (kept in the import report, the default, as
+    /// Pinocchio) or `"contact"` (each becomes a `joint_stop` effect, as MuJoCo's limits).
+    #[serde(default, skip_serializing_if = "LimitsMode::is_data")]
+    pub limits: LimitsMode,
+    /// The restitution e ∈ [0, 1] of the stops made from the limits (`limits = "contact"`).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub limit_restitution: f64,
     /// Refuse the model when any element or attribute does not map (instead of a warning).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub strict: bool,
@@ -341,73 +355,25 @@ pub struct TrimSpec {
     pub hold: std::collections::BTreeMap<String, f64>,
 }
 
-/// A loop-closing joint between a point of body `a` and a point of body `b` (or the ground).
+/// What a model's joint limits do (see [`ModelSpec::limits`]).
 ///
-/// Book: §9.11 (holonomic constraints), §6.10 (reactions of joints), §1.5 (joints).
-///
-/// # Conventions
-/// Points are link components of their body (ground components for `ground`); `axis` is in
-/// `a`'s link frame, `direction` and `normal` in `b`'s. The reaction reported as
-/// `reaction:NAME` is the force (and moment) the loop joint exerts on body `a`, ground
-/// components.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum LoopSpec {
-    /// The two points coincide (a spherical joint): 3 constraints.
-    Ball {
-        /// Name (outputs `reaction:NAME`).
-        name: String,
-        /// Point of the first body.
-        a: Attach,
-        /// Point of the second body.
-        b: Attach,
-    },
-    /// The two points coincide and the bodies turn relative to each other only about `axis`
-    /// (a revolute joint): 3 + 2 constraints (in a planar mechanism some are redundant, and
-    /// are dropped: their reactions are indeterminate and reported as 0).
-    Pin {
-        /// Name.
-        name: String,
-        /// Point of the first body.
-        a: Attach,
-        /// Point of the second body.
-        b: Attach,
-        /// The pin axis, `a`'s link components.
-        axis: [f64; 3],
-    },
-    /// Point `a` stays on the line through point `b` along `direction` (a slider): 2
-    /// constraints.
-    PointOnLine {
-        /// Name.
-        name: String,
-        /// The sliding point.
-        a: Attach,
-        /// A point of the line.
-        b: Attach,
-        /// The line's direction, `b`'s link components.
-        direction: [f64; 3],
-    },
-    /// Point `a` stays on the plane through point `b` with `normal`: 1 constraint.
-    PointOnPlane {
-        /// Name.
-        name: String,
-        /// The point.
-        a: Attach,
-        /// A point of the plane.
-        b: Attach,
-        /// The plane's normal, `b`'s link components.
-        normal: [f64; 3],
-    },
+/// Book: §7.13 (impacts).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LimitsMode {
+    /// Kept as data only.
+    #[default]
+    Data,
+    /// Joint stops (`joint_stop` effects).
+    Contact,
 }
 
-impl LoopSpec {
-    /// The loop's name.
-    pub fn name(&self) -> &str {
-        match self {
-            Self::Ball { name, .. }
-            | Self::Pin { name, .. }
-            | Self::PointOnLine { name, .. }
-            | Self::PointOnPlane { name, .. } => name,
-        }
+impl LimitsMode {
+    fn is_data(&self) -> bool {
+        *self == Self::Data
     }
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }

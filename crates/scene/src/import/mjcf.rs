@@ -18,10 +18,14 @@
 //!   derives them: `sphere`, `capsule`, `cylinder`, `ellipsoid`, `box` of `density` (1000) or
 //!   `mass`, placed by `pos`/`quat`/…/`fromto`. A mesh geom is never read: a body whose mass
 //!   would come from one is refused (give it an `<inertial>`).
-//! * `<equality><connect body1 body2 anchor>` → a ball loop; `<option gravity timestep>` →
-//!   [`ImportedModel::gravity`], [`ImportedModel::timestep`]; joint `range` → limits (data).
+//! * `<equality>`: `<connect body1 body2 anchor>` → a ball loop; `<weld body1 body2 anchor>`
+//!   → a weld loop holding the reference relative pose (anchor in body2's frame, as MuJoCo);
+//!   `<joint joint1 joint2 polycoef="c0 c1 0 0 0">` → a coupler q₁ = c₀ + c₁ q₂ (linear
+//!   polynomials only: a nonlinear one is left out with a warning).
+//! * `<option gravity timestep>` → [`ImportedModel::gravity`], [`ImportedModel::timestep`];
+//!   joint `range` → limits (data).
 //!
-//! Everything else (`<weld>`, actuators, sensors, contacts, tendons, sites, cameras, lights,
+//! Everything else (a weld's explicit `relpose`, `solref`/`solimp`, actuators, sensors, contacts, tendons, sites, cameras, lights,
 //! assets, damping, armature, `ref`, …) is listed in [`ImportedModel::warnings`].
 //!
 //! Book: §7.11 (trees), §1.5 (joints), §6.2 (mass properties of shapes, parallel axis).
@@ -61,7 +65,7 @@ struct Ctx<'a, 'i> {
     m: ImportedModel,
     mass: Vec<MassProps>,
     places: HashMap<String, Place>,
-    /// `<connect>` elements, read once every body is placed.
+    /// `<equality>` children (connect, weld, joint), read once every body is placed.
     pending: Vec<Node<'a, 'i>>,
 }
 

@@ -307,11 +307,7 @@ impl<'a, 'i> Ctx<'a, 'i> {
         self.t.use_el(e);
         for c in self.kids(e) {
             match c.tag_name().name() {
-                "connect" => self.pending.push(c),
-                "weld" => self.t.skip(
-                    c,
-                    "the scene has no six-constraint loop (weld) yet; only ball, pin and point loops",
-                ),
+                "connect" | "weld" | "joint" => self.pending.push(c),
                 _ => {}
             }
         }
@@ -319,13 +315,26 @@ impl<'a, 'i> Ctx<'a, 'i> {
     }
 
     /// `<connect>`: the anchor (body1's frame) is a point of both bodies at the reference
-    /// configuration: a ball loop.
+    /// configuration: a ball loop. `<weld>`: the anchor (body2's frame, MuJoCo's convention)
+    /// is a point of both, and the bodies keep the relative pose of the reference
+    /// configuration: a weld loop (an explicit `relpose` with a nonzero quaternion is not
+    /// read, and so is listed in the warnings).
     fn connect(&mut self, c: Node<'a, 'i>, k: usize) -> Result<(), SceneError> {
         self.t.use_el(c);
+        let weld = c.has_tag_name("weld");
         let b1 = self.t.req(c, "body1")?.to_string();
         let b2 = self.t.attr(c, "body2").unwrap_or("world").to_string();
         let anchor = Vector3::from(self.t.vec3(c, "anchor", [0.0; 3])?);
-        let name = self.t.attr(c, "name").map_or(format!("connect{k}"), str::to_string);
+        let tag = if weld { "weld" } else { "connect" };
+        let name = self.t.attr(c, "name").map_or(format!("{tag}{k}"), str::to_string);
+        if weld {
+            // relpose "pos quat" with quat = 0 (MuJoCo's default) means the reference pose
+            let rel = crate::import::xml::numbers(c.attribute("relpose").unwrap_or("0 1 0 0 0 0 0"))
+                .map_err(|m| self.t.err(c, format!("attribute `relpose`: {m}")))?;
+            if rel.len() == 7 && rel[3..].iter().all(|x| *x == 0.0) {
+                self.t.attr(c, "relpose");
+            }
+        }
         let place = |s: &Self, b: &str| -> Result<Place, SceneError> {
             if b == "world" {
                 return Ok(Place { host: None, local: id(), world: id() });
@@ -333,21 +342,69 @@ impl<'a, 'i> Ctx<'a, 'i> {
             s.places.get(b).copied().ok_or_else(|| s.t.err(c, format!("unknown body `{b}`")))
         };
         let (p1, p2) = (place(self, &b1)?, place(self, &b2)?);
-        let w = p1.world.0 * anchor + p1.world.1;
-        let in2 = p2.world.0.transpose() * (w - p2.world.1);
+        // the anchor in the world, then in the other body's frame
+        let (own, other) = if weld { (p2, p1) } else { (p1, p2) };
+        let w = own.world.0 * anchor + own.world.1;
+        let there = other.world.0.transpose() * (w - other.world.1);
+        let (x1, x2) = if weld { (there, anchor) } else { (anchor, there) };
         let at = |s: &Self, p: &Place, x: Vector3<f64>| Attach {
             body: p.host.map_or("ground".to_string(), |b| s.m.bodies[b].name.clone()),
             point: (p.local.0 * x + p.local.1).into(),
         };
-        let (a, b) = (at(self, &p1, anchor), at(self, &p2, in2));
-        self.m.loops.push(LoopSpec::Ball { name, a, b });
+        let (a, b) = (at(self, &p1, x1), at(self, &p2, x2));
+        if a.body == b.body {
+            return Err(self
+                .t
+                .err(c, format!("`{b1}` and `{b2}` are one rigid body; valid: two bodies that move apart")));
+        }
+        self.m.loops.push(if weld { LoopSpec::Weld { name, a, b } } else { LoopSpec::Ball { name, a, b } });
+        Ok(())
+    }
+
+    /// `<joint joint1 joint2 polycoef>`: q₁ = c₀ + c₁ q₂ (MuJoCo's y − y₀ = Σ cₖ (x − x₀)ᵏ
+    /// with the reference positions 0) as a coupler loop; a nonlinear polynomial does not map
+    /// and the element is left out with a warning.
+    fn joint_equality(&mut self, c: Node<'a, 'i>, k: usize) -> Result<(), SceneError> {
+        let coef = match c.attribute("polycoef") {
+            Some(text) => crate::import::xml::numbers(text)
+                .map_err(|m| self.t.err(c, format!("attribute `polycoef`: {m}")))?,
+            None => vec![0.0, 1.0, 0.0, 0.0, 0.0],
+        };
+        if coef.len() != 5 {
+            return Err(self.t.err(c, format!("attribute `polycoef` has {} numbers; valid: 5", coef.len())));
+        }
+        if coef[2..].iter().any(|x| *x != 0.0) {
+            self.t.skip(
+                c,
+                "a nonlinear joint coupling (polycoef c2, c3 or c4 nonzero); only q1 = c0 + c1 q2 maps",
+            );
+            return Ok(());
+        }
+        self.t.use_el(c);
+        self.t.attr(c, "polycoef");
+        let body_of = |s: &mut Self, key: &str| -> Result<Option<String>, SceneError> {
+            let Some(j) = s.t.attr(c, key) else { return Ok(None) };
+            let i = s.m.joint_names.iter().position(|n| n == j).ok_or_else(|| {
+                s.t.err(c, format!("unknown joint `{j}`; valid: a hinge or slide <joint> of this model"))
+            })?;
+            Ok(Some(s.m.bodies[i].name.clone()))
+        };
+        let body = body_of(self, "joint1")?.ok_or_else(|| self.t.err(c, "missing attribute `joint1`"))?;
+        let leader = body_of(self, "joint2")?;
+        let name = self.t.attr(c, "name").map_or(format!("joint{k}"), str::to_string);
+        let ratio = if leader.is_some() { coef[1] } else { 1.0 };
+        self.m.loops.push(LoopSpec::Coupler { name, body, leader, ratio, offset: coef[0] });
         Ok(())
     }
 
     /// Mass properties onto the bodies, then the loops (every body placed by now).
     pub(super) fn finish(&mut self) -> Result<(), SceneError> {
         for (k, c) in std::mem::take(&mut self.pending).into_iter().enumerate() {
-            self.connect(c, k + 1)?;
+            if c.has_tag_name("joint") {
+                self.joint_equality(c, k + 1)?;
+            } else {
+                self.connect(c, k + 1)?;
+            }
         }
         for (b, mp) in self.mass.iter().enumerate() {
             if mp.m > 0.0 {

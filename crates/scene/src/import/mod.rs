@@ -97,7 +97,7 @@ pub struct ImportedModel {
     pub name: String,
     /// One body per moving joint (named after its child link or body), parents first.
     pub bodies: Vec<BodySpec>,
-    /// Loop joints (MJCF `<equality><connect>`).
+    /// Loop joints (MJCF `<equality>` connect, weld and joint; URDF `<mimic>` as couplers).
     pub loops: Vec<LoopSpec>,
     /// For each body, the joint's name in the file (several bodies for a split joint: an MJCF
     /// body with several joints, a URDF planar joint).

@@ -12,6 +12,8 @@
 //! * `<inertial>`: `<origin>` places the centre of mass and turns the inertia axes;
 //!   `<mass value>`, `<inertia ixx … izz>` (J_{B/c} entries, products as −J_xy is already in
 //!   URDF's signs: ixy is the matrix entry). A link without `<inertial>` is massless.
+//! * `<mimic joint multiplier offset>` → a coupler loop `JOINT_mimic` (q = multiplier ·
+//!   q_joint + offset, a holonomic constraint with its multiplier, as Pinocchio's mimic joint).
 //! * `<limit>`: kept as data ([`ImportedModel::limits`]); they do not act.
 //! * The root link is the ground (its own mass properties act on nothing).
 //! * Bodies come in depth-first order from the root, children in file order: Pinocchio's
@@ -20,7 +22,7 @@
 //!   link in Pinocchio).
 //!
 //! Everything else (`<visual>`, `<collision>`, `<material>`, `<gazebo>`, `<transmission>`,
-//! `<dynamics>`, `<mimic>`, `<calibration>`, `<safety_controller>`, unknown attributes) is
+//! `<dynamics>`, `<calibration>`, `<safety_controller>`, unknown attributes) is
 //! listed in [`ImportedModel::warnings`].
 //!
 //! Book: §7.11 (trees), §1.5 (pin, sleeve, planar), §6.2 (parallel-axis theorem).
@@ -34,7 +36,7 @@ use super::mass::{MassProps, check_stated, rows, rpy};
 use super::xml::{Tracked, count_capped, error_at, parse};
 use super::{ImportedModel, JointLimit, LinkFrame, MAX_MODEL_LINKS};
 use crate::SceneError;
-use crate::spec::{BodySpec, JointSpec, MassSpec};
+use crate::spec::{BodySpec, JointSpec, LoopSpec, MassSpec};
 
 struct RawLink<'a, 'i> {
     node: Node<'a, 'i>,
@@ -52,6 +54,8 @@ struct RawJoint<'a, 'i> {
     xyz: Vector3<f64>,
     axis: Vector3<f64>,
     limit: Option<JointLimit>,
+    /// `<mimic joint multiplier offset>`: this joint's q = multiplier · q_joint + offset.
+    mimic: Option<(Node<'a, 'i>, String, f64, f64)>,
 }
 
 /// Reads a URDF document (`file` names it in messages).
@@ -122,6 +126,7 @@ pub fn load_urdf(text: &str, file: &str) -> Result<ImportedModel, SceneError> {
     let root_link = find_root(&t, &links, &parent_joint, &joints)?;
     let mut model = ImportedModel { name, ..ImportedModel::default() };
     emit(&t, &links, &joints, root_link, &mut model)?;
+    mimics(&t, &links, &joints, &mut model)?;
     model.warnings = t.warnings(root);
     Ok(model)
 }
@@ -225,7 +230,13 @@ fn read_joint<'a, 'i>(
         let (effort, velocity) = (t.num(l, "effort", f64::INFINITY)?, t.num(l, "velocity", f64::INFINITY)?);
         limit = Some(JointLimit { joint: name.clone(), body: String::new(), range, effort, velocity });
     }
-    Ok(RawJoint { node: n, name, kind, parent, child, rot, xyz, axis, limit })
+    let mut mimic = None;
+    if let Some(c) = n.children().find(|c| c.has_tag_name("mimic")) {
+        t.use_el(c);
+        let leader = t.req(c, "joint")?.to_string();
+        mimic = Some((c, leader, t.num(c, "multiplier", 1.0)?, t.num(c, "offset", 0.0)?));
+    }
+    Ok(RawJoint { node: n, name, kind, parent, child, rot, xyz, axis, limit, mimic })
 }
 
 /// The one link without a parent joint, every link reachable from it.
@@ -367,6 +378,54 @@ fn emit(
                 ),
             ));
         }
+    }
+    Ok(())
+}
+
+/// Every `<mimic>` as a coupler loop `JOINT_mimic`: the follower's body's coordinate is
+/// `multiplier` times the leader's plus `offset` (both revolute, continuous or prismatic).
+fn mimics(
+    t: &Tracked,
+    links: &[RawLink],
+    joints: &[RawJoint],
+    m: &mut ImportedModel,
+) -> Result<(), SceneError> {
+    const ONE: [&str; 3] = ["revolute", "continuous", "prismatic"];
+    for j in joints {
+        let Some((c, leader, ratio, offset)) = &j.mimic else { continue };
+        if !ONE.contains(&j.kind.as_str()) {
+            return Err(t.err(
+                *c,
+                format!(
+                    "joint `{}` is {}; valid: <mimic> on a revolute, continuous or prismatic joint",
+                    j.name, j.kind
+                ),
+            ));
+        }
+        let l = joints.iter().find(|x| &x.name == leader).ok_or_else(|| {
+            t.err(
+                *c,
+                format!(
+                    "unknown joint `{leader}`; valid: a revolute, continuous or prismatic joint of this file"
+                ),
+            )
+        })?;
+        if !ONE.contains(&l.kind.as_str()) || l.name == j.name {
+            return Err(t.err(
+                *c,
+                format!(
+                    "joint `{leader}` ({}) cannot lead; valid: another revolute, continuous or prismatic joint",
+                    l.kind
+                ),
+            ));
+        }
+        m.loops.push(LoopSpec::Coupler {
+            name: format!("{}_mimic", j.name),
+            body: links[j.child].name.clone(),
+            leader: Some(links[l.child].name.clone()),
+            ratio: *ratio,
+            offset: *offset,
+        });
     }
     Ok(())
 }
