@@ -24,14 +24,15 @@ pub(crate) struct Body {
     pub inertia: Matrix3<f64>,
     pub qi: usize,
     pub vi: usize,
-    /// The joint's unit axis (pin, sleeve, collar, slot; zero otherwise), joint frame.
-    pub axis: Vector3<f64>,
-    /// The slot's unit groove direction (zero otherwise), joint frame.
-    pub direction: Vector3<f64>,
 }
 
-/// A point of a body (or of the ground, `None`), link components.
-pub(crate) type At = (Option<usize>, Vector3<f64>);
+pub(crate) use super::kin::At;
+
+impl super::kin::QuaternionAt for Body {
+    fn quaternion_at(&self) -> Option<usize> {
+        quat_index(&self.joint).map(|k| self.qi + k)
+    }
+}
 
 /// Effects with names resolved.
 #[derive(Debug, Clone)]
@@ -407,17 +408,7 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
                 ));
             }
         }
-        let u = |a: &[f64; 3]| direction(*a).map(|(d, _)| d).unwrap_or_default();
-        let (axis, direction) = match &b.joint {
-            JointSpec::Pin { axis } | JointSpec::Sleeve { axis } | JointSpec::Collar { axis } => {
-                (u(axis), Vector3::zeros())
-            }
-            JointSpec::Slot { axis, direction } => (u(axis), u(direction)),
-            _ => (Vector3::zeros(), Vector3::zeros()),
-        };
         bodies.push(Body {
-            axis,
-            direction,
             name: b.name.clone(),
             parent,
             joint: b.joint.clone(),

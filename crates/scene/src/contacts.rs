@@ -157,7 +157,7 @@ impl Scene {
     pub(crate) fn gaps(&self, y: &[f64]) -> Result<Vec<Gap>, String> {
         let b = &self.built;
         let nq = b.model.nq();
-        let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])?;
+        let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
         Ok(self.contact_gaps(&kin, y))
     }
 
@@ -318,7 +318,7 @@ impl Scene {
             }
         }
         let (q, v) = y.split_at_mut(nq);
-        let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
+        let kin = kinematics(&b.model, q, v)?;
         let mut hits = self.impacts(&kin, v, &contacts.resting);
         hits.extend(self.stop_impacts(q, v, &contacts.resting)?);
         for &(c, closing_speed, opening_speed) in &hits {

@@ -8,10 +8,9 @@
 use nalgebra::DMatrix;
 use num_dual::Dual64;
 use vectrix_dynamics::Model;
-use vectrix_dynamics::multibody::PosesScratch;
 use vectrix_tensor::Scalar;
 
-use super::kin::{Kin, kinematics_into, normalize};
+use super::kin::{Kin, kinematics_into};
 use super::rhs::RhsScratch;
 use super::spec::JointSpec;
 use super::{Scene, SceneError};
@@ -97,17 +96,16 @@ impl Scene {
         body_axes: bool,
         w: &mut RhsScratch<T>,
     ) -> Result<(Vec<T>, Vec<T>), String> {
-        let b = &self.built;
         let (nq, nv) = (model.nq(), model.nv());
         let q0: Vec<T> = q0.iter().map(|x| T::lit(*x)).collect();
         let mut q = model.integrate(&q0, &x[..nv], T::one()).map_err(|e| e.to_string())?;
-        normalize(&b.bodies, &mut q);
+        model.normalize_quaternions(&mut q);
         let y = [q.as_slice(), &x[nv..]].concat();
         let mut out = vec![T::zero(); nq + nv];
         self.deriv_tree(model, 0.0, &y, Some(u), &mut out, w)?;
         let (q, v) = y.split_at(nq);
         let mut kin = Kin::empty();
-        kinematics_into(model, &b.bodies, &self.order, q, v, &mut kin, &mut PosesScratch::default());
+        kinematics_into(model, q, v, &mut kin);
         let mut row = Vec::new();
         self.row(&kin, q, v, None, &mut row);
         let mut vd = out[nq..].to_vec();

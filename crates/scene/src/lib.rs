@@ -144,7 +144,6 @@ fn check_rolling_start(b: &Built, src: &Src) -> Result<(), SceneError> {
 pub struct Scene {
     spec: SceneSpec,
     pub(crate) built: Built,
-    pub(crate) order: Vec<usize>,
     pub(crate) ground: Ground,
     pub(crate) needs: Needs,
     pub(crate) solver: Method,
@@ -277,7 +276,6 @@ impl Scene {
 
     fn build_plain(spec: SceneSpec, src: &Src) -> Result<Self, SceneError> {
         let built = build(&spec, src)?;
-        let order = kin::tree_order(&built.bodies);
         let (solver, named) = limits::solver(&spec, src)?;
         let outputs = outputs::parse(&spec, &built, src)?;
         limits::check_bounds(&spec, &built, &outputs, src)?;
@@ -319,10 +317,8 @@ impl Scene {
                  and holding force act on the tree alone); valid: joint stops on a tree of bodies",
             ));
         }
-        needs.qdot_is_v = built.model.nq() == built.model.nv()
-            && built.bodies.iter().all(|b| {
-                b.qi == b.vi && !matches!(b.joint, spec::JointSpec::Ball {} | spec::JointSpec::Free {})
-            });
+        // only ball joints (also of free joints) have more coordinates than speeds
+        needs.qdot_is_v = built.model.nq() == built.model.nv();
         check_rolling_start(&built, src)?;
         for (k, c) in spec.checks.iter().enumerate() {
             if !["energy", "momentum", "angular_momentum"].contains(&c.as_str()) {
@@ -335,7 +331,6 @@ impl Scene {
         let mut scene = Self {
             spec,
             built,
-            order,
             ground: Ground::new(),
             needs,
             solver,

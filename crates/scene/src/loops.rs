@@ -13,7 +13,7 @@ use nalgebra::{DMatrix, DVector, Vector3};
 
 use super::Scene;
 use super::build::{At, Effect};
-use super::kin::{Kin, bias_accelerations, twists};
+use super::kin::Kin;
 use vectrix_dynamics::DynamicsError;
 use vectrix_dynamics::constraints::{DEPENDENT_ROW_REL_TOL, KktFactor};
 
@@ -278,8 +278,7 @@ impl Scene {
             .map(|k| {
                 let mut e = vec![0.0; nv];
                 e[k] = 1.0;
-                let (omega, vel) = twists(&b.bodies, &self.order, &kin.poses, &e);
-                Kin { poses: kin.poses.clone(), omega, vel }
+                kin.with_velocities(&b.model, &e)
             })
             .collect()
     }
@@ -321,7 +320,7 @@ impl Scene {
         let nv = b.model.nv();
         let unit = self.unit_twists(kin);
         let g = self.jacobian_from(kin, &unit, true)?;
-        let (alpha, acc) = bias_accelerations(&b.bodies, &self.order, kin);
+        let (alpha, acc) = kin.bias_accelerations(&b.model);
         let mut bias = Vec::with_capacity(g.nrows());
         self.loop_bias(kin, &alpha, &acc, &mut bias);
         let mut inerters = Vec::new();

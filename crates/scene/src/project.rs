@@ -12,7 +12,7 @@ use std::cell::RefCell;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-use super::kin::{Kin, kinematics, normalize};
+use super::kin::{Kin, kinematics};
 use super::loops::{rows_of, select, select_v};
 use super::{Scene, SceneError};
 use vectrix_dynamics::DynamicsError;
@@ -68,14 +68,14 @@ impl Scene {
     pub(crate) fn constraint_scale(&self) -> f64 {
         let b = &self.built;
         let v0 = vec![0.0; b.model.nv()];
-        let Ok(kin) = kinematics(&b.model, &b.bodies, &self.order, &b.q0, &v0) else { return 1.0 };
+        let Ok(kin) = kinematics(&b.model, &b.q0, &v0) else { return 1.0 };
         b.loops.iter().flat_map(|l| [kin.point(&l.a).0.norm(), kin.point(&l.b).0.norm()]).fold(1.0, f64::max)
     }
 
     /// φ(q) of the loops and their rows of G (v does not enter).
     fn loop_terms(&self, q: &[f64]) -> Result<(DVector<f64>, DMatrix<f64>), String> {
         let b = &self.built;
-        let kin = kinematics(&b.model, &b.bodies, &self.order, q, &vec![0.0; b.model.nv()])?;
+        let kin = kinematics(&b.model, q, &vec![0.0; b.model.nv()])?;
         let mut phi = Vec::new();
         self.loop_phi(&kin, q, &mut phi);
         Ok((DVector::from_vec(phi), self.velocity_jacobian(&kin, false)?))
@@ -85,7 +85,7 @@ impl Scene {
     pub(crate) fn violation(&self, y: &[f64]) -> Result<(ConstraintViolation, Vec<f64>, Vec<f64>), String> {
         let b = &self.built;
         let (q, v) = y.split_at(b.model.nq());
-        let kin: Kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
+        let kin: Kin = kinematics(&b.model, q, v)?;
         let mut phi = Vec::new();
         self.loop_phi(&kin, q, &mut phi);
         let rate = self.velocity_jacobian(&kin, true)? * DVector::from_column_slice(v);
@@ -133,11 +133,11 @@ impl Scene {
                 .map_err(|e| failure.borrow_mut().take().unwrap_or_else(|| e.to_string()))?;
             w.pos = keep.into_inner();
             y[..nq].copy_from_slice(&p.q);
-            normalize(&b.bodies, &mut y[..nq]);
+            b.model.normalize_quaternions(&mut y[..nq]);
         }
         // velocities at the projected positions: loops and rolling contacts
         let (q, v) = y.split_at_mut(nq);
-        let kin = kinematics(&b.model, &b.bodies, &self.order, q, v)?;
+        let kin = kinematics(&b.model, q, v)?;
         let g = self.velocity_jacobian(&kin, true)?;
         if g.nrows() > 0 {
             let m = b.model.crba(q).map_err(|e| e.to_string())?;

@@ -55,9 +55,9 @@ impl Scene {
             return Err(fail(format!("state entry {k} is {}; valid: finite numbers", y[k])));
         }
         let mut y = y.to_vec();
-        super::kin::normalize(&b.bodies, &mut y[..nq]);
+        b.model.normalize_quaternions(&mut y[..nq]);
         let (q, v) = y.split_at(nq);
-        let kin = kinematics(&b.model, &b.bodies, &self.order, q, v).map_err(fail)?;
+        let kin = kinematics(&b.model, q, v).map_err(fail)?;
         let kinetic = self.kinetic(&kin, v);
         let q_angle = |dof: usize| self.angle_of_dof(q, dof);
         let potential = potential(&b.effects, &b.bodies, &kin, &self.ground, &q_angle);

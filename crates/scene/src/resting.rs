@@ -90,7 +90,7 @@ impl Scene {
             let s = stop.ok_or("not a contact")?;
             return Ok(super::stops::side(y[s.qi], s.lower, s.upper) * d[nq + s.vi]);
         };
-        let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])?;
+        let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
         Ok(self.centre_accel(&kin, p.body, &d[nq..]).dot(&p.n))
     }
 
@@ -108,7 +108,7 @@ impl Scene {
         };
         let b = &self.built;
         let nq = b.model.nq();
-        let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])?;
+        let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
         let (x, v) = kin.point(&(Some(*body), b.bodies[*body].com));
         let resolution = GAP_ULPS * f64::EPSILON * (x.norm() + point.norm() + r);
         Ok((v.dot(n), self.contact_gaps(&kin, y)[c].gap, resolution))
@@ -222,7 +222,7 @@ impl Scene {
         let mut d = vec![0.0; y.len()];
         self.deriv_resting(t, y, &mut d, &mut RhsScratch::new(self), &contacts.resting)?;
         let nq = self.built.model.nq();
-        let kin = kinematics(&self.built.model, &self.built.bodies, &self.order, &y[..nq], &y[nq..])?;
+        let kin = kinematics(&self.built.model, &y[..nq], &y[nq..])?;
         let a_rel = (self.centre_accel(&kin, a, &d[nq..]) - self.centre_accel(&kin, b, &d[nq..])).dot(&n);
         let closing = (-a_rel).max(0.0);
         let resolution = GAP_ULPS * f64::EPSILON * (kin.poses[a].1.norm() + kin.poses[b].1.norm() + g.size);
@@ -300,7 +300,7 @@ impl Scene {
             let Some(p) = self.plane(c) else { continue };
             let b = &self.built;
             let nq = b.model.nq();
-            let kin = kinematics(&b.model, &b.bodies, &self.order, &y[..nq], &y[nq..])?;
+            let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
             let (x_c, v_c) = kin.point(&(Some(p.body), b.bodies[p.body].com));
             let gap = self.contact_gaps(&kin, y)[c].gap;
             let u_n = v_c.dot(&p.n);

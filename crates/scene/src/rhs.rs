@@ -10,10 +10,10 @@ use vectrix_tensor::Scalar;
 
 use super::aero::AeroScratch;
 use super::forces::{Ground, Loads, apply};
-use super::kin::{Kin, kinematics_into, qdot};
+use super::kin::{Kin, kinematics_into};
 use super::{Scene, SceneError};
 use vectrix_dynamics::Model;
-use vectrix_dynamics::multibody::{AbaScratch, JointWrench, PosesScratch};
+use vectrix_dynamics::multibody::{AbaScratch, JointWrench};
 
 /// Work space of the right-hand side: everything an evaluation needs, allocated once per run,
 /// in the scalar of the evaluation (f64, or dual numbers for exact derivatives).
@@ -22,7 +22,6 @@ pub(crate) struct RhsScratch<T: Scalar = f64> {
     tau: Vec<T>,
     wrenches: Vec<JointWrench<T>>,
     kin: Kin<T>,
-    world: PosesScratch<T>,
     ground: Ground<T>,
     /// The independent constraint rows found last (see `loops::solve_dropping`).
     keep: Option<Vec<usize>>,
@@ -44,7 +43,6 @@ impl<T: Scalar> RhsScratch<T> {
             tau: vec![T::zero(); m.nv()],
             wrenches: vec![JointWrench::default(); scene.built.bodies.len()],
             kin: Kin::empty(),
-            world: PosesScratch::default(),
             ground: Ground::new(),
             keep: None,
             aero: AeroScratch::new(scene.built.bodies.len(), m.nv(), scene.rate_aircraft().count()),
@@ -198,7 +196,7 @@ impl Scene {
         let vd = &mut out[nq..];
         if self.needs.constrained() {
             if !self.needs.loads {
-                kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
+                kinematics_into(&b.model, q, v, &mut w.kin);
             }
             let (a, lambda) = self.constrained_solve(&w.kin, q, vd, &mut w.keep)?;
             vd.copy_from_slice(a.as_slice());
@@ -206,7 +204,7 @@ impl Scene {
         }
         if resting.contains(&true) {
             if !self.needs.loads {
-                kinematics_into(&b.model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
+                kinematics_into(&b.model, q, v, &mut w.kin);
             }
             self.rest_forces(&w.kin, resting, vd);
             self.stop_rest_forces(q, resting, vd)?;
@@ -234,10 +232,10 @@ impl Scene {
         if self.needs.qdot_is_v {
             qd.copy_from_slice(v);
         } else {
-            qdot(&b.bodies, q, v, qd);
+            model.qdot_into(q, v, qd);
         }
         let ext = if self.needs.loads {
-            kinematics_into(model, &b.bodies, &self.order, q, v, &mut w.kin, &mut w.world);
+            kinematics_into(model, q, v, &mut w.kin);
             w.tau.fill(T::zero());
             w.wrenches.fill(JointWrench::default());
             let q_angle = |dof: usize| self.angle_of_dof(q, dof);

@@ -14,7 +14,7 @@ use nalgebra::Vector3;
 use vectrix_ode::{AnyStepper, Method, OdeError};
 
 use super::contacts::{ContactEvent, ContactEventKind, Contacts, NextContact};
-use super::kin::{Kin, kinematics, normalize};
+use super::kin::{Kin, kinematics};
 use super::limits::breakpoints;
 use super::outcome::{Drift, InvariantValue, Run, RunControl, Stop, StopReason};
 use super::project::ProjectScratch;
@@ -340,7 +340,7 @@ impl Scene {
         let nq = b.model.nq();
         let fail = |e: String| SceneError::Run { t, message: e };
         let mut y = y.to_vec();
-        normalize(&b.bodies, &mut y[..nq]);
+        b.model.normalize_quaternions(&mut y[..nq]);
         if let Some((i, x)) = y.iter().map(|x| x.abs()).enumerate().max_by(|a, b| a.1.total_cmp(&b.1))
             && x > s.peak.0
         {
@@ -353,7 +353,7 @@ impl Scene {
         let lambda =
             if self.needs_multipliers() { Some(self.multipliers(t, &y).map_err(fail)?) } else { None };
         let (q, v) = y.split_at(nq);
-        let kin = kinematics(&b.model, &b.bodies, &self.order, q, v).map_err(fail)?;
+        let kin = kinematics(&b.model, q, v).map_err(fail)?;
         let mut row = Vec::with_capacity(run.columns.len());
         self.row(&kin, q, v, lambda.as_ref(), &mut row);
         run.t.push(t);
@@ -434,7 +434,7 @@ impl Scene {
         if run.stop.is_none() {
             run.stop = self.untrusted(&run, peak);
         }
-        normalize(&self.built.bodies, &mut y[..self.built.model.nq()]);
+        self.built.model.normalize_quaternions(&mut y[..self.built.model.nq()]);
         run.final_state = y;
         run.work.wall_seconds = start.elapsed().as_secs_f64();
         run

@@ -543,9 +543,10 @@ impl<T: Scalar> Model<T> {
 }
 
 /// Work space of [`Model::poses_into`]: the ground-to-segment transforms of one evaluation,
-/// kept between calls so that a right-hand side allocates nothing once it has grown.
+/// kept between calls so that a right-hand side allocates nothing once it has grown; after
+/// `poses_into` at q, [`Model::twists_into`] and [`Model::bias_accelerations_into`] read them.
 #[derive(Debug, Clone)]
-pub struct PosesScratch<T: Scalar = f64>(Vec<Xform<T>>);
+pub struct PosesScratch<T: Scalar = f64>(pub(crate) Vec<Xform<T>>);
 
 impl<T: Scalar> Default for PosesScratch<T> {
     fn default() -> Self {
