@@ -28,12 +28,6 @@ pub(crate) struct Body {
 
 pub(crate) use super::kin::At;
 
-impl super::kin::QuaternionAt for Body {
-    fn quaternion_at(&self) -> Option<usize> {
-        quat_index(&self.joint).map(|k| self.qi + k)
-    }
-}
-
 /// Effects with names resolved.
 #[derive(Debug, Clone)]
 pub(crate) enum Effect {

@@ -122,17 +122,3 @@ impl Kin {
         }
     }
 }
-
-/// Where a body's ball-joint quaternion sits in q, for [`normalize`].
-pub(crate) trait QuaternionAt {
-    /// Index of the first of the quaternion's four coordinates in q, if the joint has one.
-    fn quaternion_at(&self) -> Option<usize>;
-}
-
-/// Renormalizes every body's quaternion in q, as [`Model::normalize_quaternions`] does (kept
-/// for callers that hold the bodies rather than the model).
-pub(crate) fn normalize<T: Scalar>(bodies: &[impl QuaternionAt], q: &mut [T]) {
-    for k in bodies.iter().filter_map(QuaternionAt::quaternion_at) {
-        vectrix_dynamics::multibody::normalize_quaternion(&mut q[k..k + 4]);
-    }
-}

@@ -187,7 +187,7 @@ impl Scene {
             }
             // rebase: q ← q ⊕ δ, δ = 0 (quaternions stay unit)
             let mut qn = b.model.integrate(&q, &xt[..nv], 1.0).map_err(|e| fail(e.to_string()))?;
-            super::kin::normalize(&b.bodies, &mut qn);
+            b.model.normalize_quaternions(&mut qn);
             (q, u) = (qn, ut);
             x = [vec![0.0; nv], xt[nv..].to_vec()].concat();
             jac = if xt[..nv].iter().all(|d| *d == 0.0) {
