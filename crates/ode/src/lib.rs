@@ -49,6 +49,8 @@ pub mod harness;
 pub mod implicit;
 pub mod lie;
 mod method;
+mod progress;
+mod solver;
 mod state;
 mod work;
 
@@ -57,9 +59,11 @@ pub use error::OdeError;
 pub use explicit::{
     Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, HEUN, Pair, RK4, Solution, Tableau,
 };
-pub use implicit::{GaussLegendre, Radau5, RadauStepper, stormer_verlet};
+pub use implicit::{GaussLegendre, Radau5, RadauIIA, RadauStepper, stormer_verlet};
 pub use lie::{LieGroup, LieMethod, integrate_lie, quaternion_exact_step};
 pub use method::{AnyStepper, Method};
+pub use progress::Progress;
+pub use solver::Solver;
 pub use state::State;
 pub use work::Work;
 

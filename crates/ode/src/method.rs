@@ -34,7 +34,7 @@ impl Method {
     /// Its name as in scene files: `dopri5`, `dop853`, `radau5`.
     pub fn name(&self) -> &'static str {
         match self {
-            Self::Explicit(a) => match a.pair {
+            Self::Explicit(a) => match a.method {
                 crate::Pair::Dopri5 => "dopri5",
                 crate::Pair::Dop853 => "dop853",
             },

@@ -11,7 +11,7 @@ mod verlet;
 
 pub use gauss::GaussLegendre;
 pub use radau_stepper::{NoJacobian, RadauStepper};
-pub use radau5::Radau5;
+pub use radau5::{Radau5, RadauIIA};
 pub use verlet::stormer_verlet;
 
 /// (c₁ − 1, c₂ − 1) of Radau IIA 5, for its dense output.
