@@ -14,7 +14,7 @@ mod stepper;
 mod tableau;
 
 pub use adaptive::{Adaptive, Pair, Solution};
-pub(crate) use adaptive::{Steps, drive};
+pub(crate) use adaptive::{Steps, drive, initial_step};
 pub use dense::DenseStep;
 pub(crate) use dense::Form;
 pub use events::{Direction, Event, EventHit, bracket_zero};

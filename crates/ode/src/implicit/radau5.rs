@@ -4,7 +4,7 @@
 
 use std::time::Instant;
 
-use super::radau_stepper::{NoJacobian, RadauStepper};
+use super::radau_stepper::RadauStepper;
 use crate::OdeError;
 use crate::explicit::{Event, Solution, drive};
 use crate::solver::Solver;
@@ -65,78 +65,11 @@ impl Solver<RadauIIA> {
         self.method.max_newton = n;
         self
     }
+}
 
-    /// Solves y′ = f(t, y), y(t0) = y0 on [t0, t1] with a finite-difference Jacobian (n
-    /// f-evaluations each, reported in [`Work::fd_jacobian_fevals`]).
-    ///
-    /// # Errors
-    /// As [`Radau5::solve_with_jacobian_and_events`].
-    pub fn solve<S: State, F: FnMut(f64, &S) -> S>(
-        &self,
-        f: F,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, None::<NoJacobian<S>>, t0, y0, t1, &mut [])
-    }
-
-    /// Solves with the Jacobian `jac(t, y, out)` writing ∂f/∂y row-major (out[i·n + j] =
-    /// ∂fᵢ/∂yⱼ).
-    ///
-    /// # Errors
-    /// As [`Radau5::solve_with_jacobian_and_events`].
-    pub fn solve_with_jacobian<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        &self,
-        f: F,
-        jac: J,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, Some(jac), t0, y0, t1, &mut [])
-    }
-
-    /// [`Radau5::solve`] with events located on the collocation polynomial.
-    ///
-    /// # Errors
-    /// As [`Radau5::solve_with_jacobian_and_events`].
-    pub fn solve_with_events<S: State, F: FnMut(f64, &S) -> S>(
-        &self,
-        f: F,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, None::<NoJacobian<S>>, t0, y0, t1, events)
-    }
-
-    /// The general form: Jacobian supplied, events located on the dense output to
-    /// |Δt| ≤ 4ε·max(1, |t|) plus the interpolant's error (order 3 in h, of the order of the
-    /// tolerance).
-    ///
-    /// # Errors
-    /// Bad input: [`OdeError::InvalidInterval`], [`OdeError::NonPositiveTolerance`],
-    /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`]; during the run:
-    /// [`OdeError::RhsNotFinite`], [`OdeError::JacobianNotFinite`],
-    /// [`OdeError::SingularIterationMatrix`], [`OdeError::NewtonStalled`],
-    /// [`OdeError::StepSizeUnderflow`], [`OdeError::TooManySteps`],
-    /// [`OdeError::DimensionMismatch`]. Each of the stiff ones names t and the state.
-    pub fn solve_with_jacobian_and_events<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        &self,
-        f: F,
-        jac: J,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, Some(jac), t0, y0, t1, events)
-    }
-
+impl super::solve::Implicit for RadauIIA {
     fn run<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        &self,
+        cfg: &Solver<Self>,
         f: F,
         jac: Option<J>,
         t0: f64,
@@ -145,7 +78,7 @@ impl Solver<RadauIIA> {
         events: &mut [Event<'_, S>],
     ) -> Result<Solution<S>, OdeError> {
         let start = Instant::now();
-        let st = RadauStepper::new(self, f, jac, t0, y0.clone(), t1)?;
-        drive(st, start, y0, events, self.dense)
+        let st = RadauStepper::new(cfg, f, jac, t0, y0.clone(), t1)?;
+        drive(st, start, y0, events, cfg.dense)
     }
 }

@@ -5,7 +5,7 @@
 
 use faer::Mat;
 
-use super::radau_core::{C1, C2, Factors, T_MAT, TI_MAT, estimate, finite_difference, rms_scaled, transform};
+use super::radau_core::{C1, C2, Factors, T_MAT, TI_MAT, estimate, jacobian_into, rms_scaled, transform};
 use super::radau5::Radau5;
 use crate::explicit::{DenseStep, Steps};
 use crate::progress::Progress;
@@ -174,41 +174,15 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
 
     /// J = ∂f/∂y at the current point, refused if any entry is not finite.
     fn compute_jacobian(&mut self) -> Result<(), OdeError> {
-        let n = self.p.y.dim();
-        self.p.work.jacobians += 1;
-        match self.jac_fn.as_mut() {
-            Some(j) => {
-                let mut buf = vec![f64::NAN; n * n];
-                j(self.p.t, &self.p.y, &mut buf);
-                for r in 0..n {
-                    for c in 0..n {
-                        self.jm[(r, c)] = buf[r * n + c];
-                    }
-                }
-            }
-            None => finite_difference(
-                &mut self.f,
-                self.p.t,
-                &self.p.y,
-                &self.f_now,
-                &mut self.jm,
-                &mut self.p.work,
-            ),
-        }
-        for c in 0..n {
-            for r in 0..n {
-                let value = self.jm[(r, c)];
-                if !value.is_finite() {
-                    return Err(OdeError::JacobianNotFinite {
-                        t: self.p.t,
-                        row: r,
-                        col: c,
-                        value,
-                        state: self.p.y.as_slice().to_vec(),
-                    });
-                }
-            }
-        }
+        jacobian_into(
+            &mut self.f,
+            self.jac_fn.as_mut(),
+            self.p.t,
+            &self.p.y,
+            &self.f_now,
+            &mut self.jm,
+            &mut self.p.work,
+        )?;
         self.jac_fresh = true;
         self.need_jac = false;
         self.lu = None;
