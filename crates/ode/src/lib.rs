@@ -54,9 +54,10 @@ mod method;
 mod progress;
 mod solver;
 mod state;
+mod stiffness;
 mod work;
 
-pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow};
+pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow, STIFF_ACCURACY_TABLE, StiffRow};
 pub use error::OdeError;
 pub use explicit::{
     Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, HEUN, Pair, RK4, Solution, Tableau,
@@ -69,6 +70,7 @@ pub use method::{AnyStepper, Method};
 pub use progress::Progress;
 pub use solver::Solver;
 pub use state::State;
+pub use stiffness::{Choice, STIFF_CHECK_EVERY, STIFF_H_RHO, STIFF_MIN_STEPS};
 pub use work::Work;
 
 /// `use vectrix_ode::prelude::*;`
