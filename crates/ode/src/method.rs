@@ -1,9 +1,10 @@
 //! One stepping interface over the explicit pairs, RADAU5 and BDF, so that a caller that drives
 //! the integration itself (scenes: samples, impacts, budgets) can take either.
 
-use crate::explicit::{Adaptive, DenseStep, Stepper};
+use crate::explicit::{Adaptive, DenseStep, Stepper, Steps};
 use crate::implicit::{Bdf, BdfStepper, Radau5, RadauStepper};
-use crate::{OdeError, State, Work};
+use crate::progress::Progress;
+use crate::{OdeError, State};
 
 /// An adaptive method: an explicit pair ([`Adaptive`]) or a stiff one ([`Radau5`], [`Bdf`]).
 ///
@@ -60,7 +61,8 @@ impl Method {
     }
 }
 
-/// A run of any kind in progress, with the interface of [`Stepper`]: `J` writes ∂f/∂y
+/// A run of any kind in progress, with the interface of [`Stepper`] ([`Progress`] by `Deref`
+/// for t, y, the end, the work and `set_end`): `J` writes ∂f/∂y
 /// row-major for RADAU5 and BDF (finite differences when `None`; ignored by the explicit pairs).
 ///
 /// Book: §4.11.
@@ -87,6 +89,40 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt:
     }
 }
 
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref
+    for AnyStepper<S, F, J>
+{
+    type Target = Progress<S>;
+    fn deref(&self) -> &Progress<S> {
+        match self {
+            Self::Explicit(s) => s,
+            Self::Radau5(s) => s,
+            Self::Bdf(s) => s,
+        }
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut
+    for AnyStepper<S, F, J>
+{
+    fn deref_mut(&mut self) -> &mut Progress<S> {
+        match self {
+            Self::Explicit(s) => s,
+            Self::Radau5(s) => s,
+            Self::Bdf(s) => s,
+        }
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> for AnyStepper<S, F, J> {
+    fn step(&mut self) -> Result<(), OdeError> {
+        AnyStepper::step(self)
+    }
+    fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
+        AnyStepper::dense(self)
+    }
+}
+
 impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
     /// Starts a run of `method` (see [`Stepper::new`], [`RadauStepper::new`], [`BdfStepper::new`]).
     ///
@@ -98,46 +134,6 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
             Method::Radau5(r) => Self::Radau5(RadauStepper::new(r, f, jac, t0, y0, t_end)?),
             Method::Bdf(b) => Self::Bdf(BdfStepper::new(b, f, jac, t0, y0, t_end)?),
         })
-    }
-    /// The current time.
-    pub fn t(&self) -> f64 {
-        match self {
-            Self::Explicit(s) => s.t(),
-            Self::Radau5(s) => s.t(),
-            Self::Bdf(s) => s.t(),
-        }
-    }
-    /// The current state.
-    pub fn y(&self) -> &S {
-        match self {
-            Self::Explicit(s) => s.y(),
-            Self::Radau5(s) => s.y(),
-            Self::Bdf(s) => s.y(),
-        }
-    }
-    /// The start of the last accepted step.
-    pub fn step_start(&self) -> Option<f64> {
-        match self {
-            Self::Explicit(s) => s.step_start(),
-            Self::Radau5(s) => s.step_start(),
-            Self::Bdf(s) => s.step_start(),
-        }
-    }
-    /// `true` once the end time has been reached.
-    pub fn done(&self) -> bool {
-        match self {
-            Self::Explicit(s) => s.done(),
-            Self::Radau5(s) => s.done(),
-            Self::Bdf(s) => s.done(),
-        }
-    }
-    /// The work so far.
-    pub fn work(&self) -> Work {
-        match self {
-            Self::Explicit(s) => s.work(),
-            Self::Radau5(s) => s.work(),
-            Self::Bdf(s) => s.work(),
-        }
     }
     /// One accepted step.
     ///
@@ -170,25 +166,6 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
             Self::Explicit(s) => s.restart(t, y),
             Self::Radau5(s) => s.restart(t, y),
             Self::Bdf(s) => s.restart(t, y),
-        }
-    }
-    /// Moves the end time.
-    ///
-    /// # Errors
-    /// As [`Stepper::set_end`].
-    pub fn set_end(&mut self, t_end: f64) -> Result<(), OdeError> {
-        match self {
-            Self::Explicit(s) => s.set_end(t_end),
-            Self::Radau5(s) => s.set_end(t_end),
-            Self::Bdf(s) => s.set_end(t_end),
-        }
-    }
-    /// The end time.
-    pub fn end(&self) -> f64 {
-        match self {
-            Self::Explicit(s) => s.end(),
-            Self::Radau5(s) => s.end(),
-            Self::Bdf(s) => s.end(),
         }
     }
 }

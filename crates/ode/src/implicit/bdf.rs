@@ -5,13 +5,7 @@
 //! "The MATLAB ODE Suite", SIAM J. Sci. Comput. 18 (1997) (quasi-constant step size with the
 //! backward-difference array); Byrne & Hindmarsh, ACM TOMS 1 (1975).
 
-use std::time::Instant;
-
-use super::bdf_stepper::BdfStepper;
-use crate::OdeError;
-use crate::explicit::{Event, Solution, drive};
 use crate::solver::Solver;
-use crate::state::State;
 
 /// BDF: the backward differentiation formulas of orders 1 to 5 with variable order and
 /// quasi-constant step size, the form of Shampine & Reichelt (1997) that scipy's `BDF`
@@ -66,7 +60,7 @@ impl Solver<BdfFormula> {
     pub const fn new() -> Self {
         Self::with_method(BdfFormula { max_order: 5, max_newton: 4 })
     }
-    /// Highest order, 1 to 5 (a run refuses anything else with [`OdeError::InvalidSetting`]).
+    /// Highest order, 1 to 5 (a run refuses anything else with [`OdeError::InvalidSetting`](crate::OdeError::InvalidSetting)).
     pub fn max_order(mut self, k: usize) -> Self {
         self.method.max_order = k;
         self
@@ -79,17 +73,7 @@ impl Solver<BdfFormula> {
 }
 
 impl super::solve::Implicit for BdfFormula {
-    fn run<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        cfg: &Solver<Self>,
-        f: F,
-        jac: Option<J>,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError> {
-        let start = Instant::now();
-        let st = BdfStepper::new(cfg, f, jac, t0, y0.clone(), t1)?;
-        drive(st, start, y0, events, cfg.dense)
+    fn method(cfg: &Solver<Self>) -> crate::Method {
+        crate::Method::Bdf(*cfg)
     }
 }

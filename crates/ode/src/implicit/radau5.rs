@@ -2,13 +2,7 @@
 //! integrator for stiff problems, with dense output and events on the same terms as
 //! [`Adaptive`](crate::Adaptive).
 
-use std::time::Instant;
-
-use super::radau_stepper::RadauStepper;
-use crate::OdeError;
-use crate::explicit::{Event, Solution, drive};
 use crate::solver::Solver;
-use crate::state::State;
 
 /// RADAU5: the 3-stage Radau IIA collocation method (order 5, stiffly accurate, L-stable),
 /// solved by simplified Newton in the transformed variables that split the 3n×3n system
@@ -68,17 +62,7 @@ impl Solver<RadauIIA> {
 }
 
 impl super::solve::Implicit for RadauIIA {
-    fn run<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        cfg: &Solver<Self>,
-        f: F,
-        jac: Option<J>,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError> {
-        let start = Instant::now();
-        let st = RadauStepper::new(cfg, f, jac, t0, y0.clone(), t1)?;
-        drive(st, start, y0, events, cfg.dense)
+    fn method(cfg: &Solver<Self>) -> crate::Method {
+        crate::Method::Radau5(*cfg)
     }
 }

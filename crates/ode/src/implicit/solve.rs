@@ -5,7 +5,10 @@
 
 use super::radau_stepper::NoJacobian;
 use crate::OdeError;
-use crate::explicit::{Event, Solution};
+use std::time::Instant;
+
+use crate::AnyStepper;
+use crate::explicit::{Event, Solution, drive};
 use crate::solver::Solver;
 use crate::state::State;
 
@@ -21,18 +24,22 @@ mod sealed {
 ///
 /// Book: §4.11; HW §IV.8, §III.5.
 pub trait Implicit: Copy + sealed::Sealed {
-    /// Runs the method from (t0, y0) to t1 (the body of the solve functions).
+    /// The method as a [`Method`](crate::Method) (what the solve functions run).
     #[doc(hidden)]
-    #[allow(clippy::too_many_arguments)]
-    fn run<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        cfg: &Solver<Self>,
-        f: F,
-        jac: Option<J>,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError>;
+    fn method(cfg: &Solver<Self>) -> crate::Method;
+}
+
+/// The body of every solve function: the method's stepper driven to t1 by `drive`.
+fn run<M: Implicit, S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
+    cfg: &Solver<M>,
+    f: F,
+    jac: Option<J>,
+    (t0, y0, t1): (f64, &S, f64),
+    events: &mut [Event<'_, S>],
+) -> Result<Solution<S>, OdeError> {
+    let start = Instant::now();
+    let st = AnyStepper::new(&M::method(cfg), f, jac, t0, y0.clone(), t1)?;
+    drive(st, start, y0, events, cfg.dense)
 }
 
 impl<M: Implicit> Solver<M> {
@@ -48,7 +55,7 @@ impl<M: Implicit> Solver<M> {
         y0: &S,
         t1: f64,
     ) -> Result<Solution<S>, OdeError> {
-        M::run(self, f, None::<NoJacobian<S>>, t0, y0, t1, &mut [])
+        run(self, f, None::<NoJacobian<S>>, (t0, y0, t1), &mut [])
     }
 
     /// Solves with the Jacobian `jac(t, y, out)` writing ∂f/∂y row-major (out[i·n + j] =
@@ -64,7 +71,7 @@ impl<M: Implicit> Solver<M> {
         y0: &S,
         t1: f64,
     ) -> Result<Solution<S>, OdeError> {
-        M::run(self, f, Some(jac), t0, y0, t1, &mut [])
+        run(self, f, Some(jac), (t0, y0, t1), &mut [])
     }
 
     /// [`Solver::solve`] with events located on the method's dense output.
@@ -79,7 +86,7 @@ impl<M: Implicit> Solver<M> {
         t1: f64,
         events: &mut [Event<'_, S>],
     ) -> Result<Solution<S>, OdeError> {
-        M::run(self, f, None::<NoJacobian<S>>, t0, y0, t1, events)
+        run(self, f, None::<NoJacobian<S>>, (t0, y0, t1), events)
     }
 
     /// The general form: Jacobian supplied, events located on the dense output (RADAU5's
@@ -103,6 +110,6 @@ impl<M: Implicit> Solver<M> {
         t1: f64,
         events: &mut [Event<'_, S>],
     ) -> Result<Solution<S>, OdeError> {
-        M::run(self, f, Some(jac), t0, y0, t1, events)
+        run(self, f, Some(jac), (t0, y0, t1), events)
     }
 }
