@@ -167,7 +167,7 @@ cases! {
     // y′ = −1000(y − cos t); the stiff calibration gives finite rows and its problems finite
     // errors, also for a method that cannot finish (a step cap of 3 is a typed error).
     stiff_accuracy ["Accuracy::solve_with_choice", "Accuracy::stiff_solver", "StiffProblem::run",
-        "derive_stiff_accuracy"] {
+        "derive_stiff_accuracy", "robertson", "robertson_jacobian", "vdpol", "vdpol_jacobian"] {
         use vectrix::ode::harness::STIFF_PROBLEMS;
         use vectrix::ode::{Method as OdeMethod, Radau5};
         let f = |t: f64, y: &Vec<f64>| vec![-1000.0 * (y[0] - t.cos())];
@@ -187,6 +187,23 @@ cases! {
             assert!(e.is_finite() && e < 1e-3 && n > 0, "{}: {e:e}", p.name);
             refused(p.run(&OdeMethod::Radau5(Radau5::new().max_steps(3))), "max_steps(3)");
         }
+        // the harness right-hand sides at hostile states: finite or NaN/∞ out, never a panic,
+        // and their Jacobians of the right size
+        use vectrix::ode::harness::{robertson, robertson_jacobian, vdpol, vdpol_jacobian};
+        let mut j3 = [0.0; 9];
+        let mut j2 = [0.0; 4];
+        for x in hostile() {
+            let _ = robertson(0.0, &Vector3::new(x, x, x));
+            robertson_jacobian(0.0, &Vector3::new(x, 1.0, 1.0), &mut j3);
+            let _ = vdpol(0.0, &Vector2::new(x, x));
+            vdpol_jacobian(0.0, &Vector2::new(x, 1.0), &mut j2);
+        }
+        robertson_jacobian(0.0, &Vector3::new(1.0, 0.0, 0.0), &mut j3);
+        assert_eq!(j3, [-0.04, 0.0, 0.0, 0.04, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        vdpol_jacobian(0.0, &Vector2::new(2.0, 0.0), &mut j2);
+        assert_eq!(j2, [0.0, 1.0, -1e6, -3e6]);
+        assert_eq!(robertson(0.0, &Vector3::new(1.0, 0.0, 0.0)), Vector3::new(-0.04, 0.04, 0.0));
+        assert_eq!(vdpol(0.0, &Vector2::new(2.0, 0.0)), Vector2::new(0.0, -2e6));
         for d in vectrix::ode::harness::derive_stiff_accuracy() {
             assert!(d.rtol > 0.0 && d.rtol <= d.target && d.fevals > 0, "{d:?}");
         }

@@ -10,37 +10,10 @@
 use std::time::Instant;
 
 use nalgebra::{Vector2, Vector3};
+use vectrix_ode::harness::{
+    robertson, robertson_jacobian as robertson_jac, vdpol as vdp, vdpol_jacobian as vdp_jac,
+};
 use vectrix_ode::{Adaptive, Bdf, Radau5, Solution, State};
-
-fn robertson(_: f64, y: &Vector3<f64>) -> Vector3<f64> {
-    Vector3::new(
-        -0.04 * y[0] + 1e4 * y[1] * y[2],
-        0.04 * y[0] - 1e4 * y[1] * y[2] - 3e7 * y[1] * y[1],
-        3e7 * y[1] * y[1],
-    )
-}
-
-fn robertson_jac(_: f64, y: &Vector3<f64>, j: &mut [f64]) {
-    j.copy_from_slice(&[
-        -0.04,
-        1e4 * y[2],
-        1e4 * y[1],
-        0.04,
-        -1e4 * y[2] - 6e7 * y[1],
-        -1e4 * y[1],
-        0.0,
-        6e7 * y[1],
-        0.0,
-    ]);
-}
-
-fn vdp(_: f64, y: &Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(y[1], ((1.0 - y[0] * y[0]) * y[1] - y[0]) / 1e-6)
-}
-
-fn vdp_jac(_: f64, y: &Vector2<f64>, j: &mut [f64]) {
-    j.copy_from_slice(&[0.0, 1.0, (-2.0 * y[0] * y[1] - 1.0) / 1e-6, (1.0 - y[0] * y[0]) / 1e-6]);
-}
 
 /// Median wall time of repeated runs, and the last run.
 fn timed<S: State>(mut run: impl FnMut() -> Solution<S>) -> (f64, Solution<S>) {

@@ -36,6 +36,42 @@ fn mixed_error(got: &[f64], want: &[f64]) -> f64 {
     })
 }
 
+/// Robertson's chemical kinetics (HW II (IV.1.4)): y₁′ = −0.04y₁ + 10⁴y₂y₃,
+/// y₂′ = 0.04y₁ − 10⁴y₂y₃ − 3·10⁷y₂², y₃′ = 3·10⁷y₂², the standard non-mechanical stiff check.
+pub fn robertson(_: f64, y: &Vector3<f64>) -> Vector3<f64> {
+    Vector3::new(
+        -0.04 * y[0] + 1e4 * y[1] * y[2],
+        0.04 * y[0] - 1e4 * y[1] * y[2] - 3e7 * y[1] * y[1],
+        3e7 * y[1] * y[1],
+    )
+}
+
+/// ∂f/∂y of [`robertson`], row-major.
+pub fn robertson_jacobian(_: f64, y: &Vector3<f64>, j: &mut [f64]) {
+    j.copy_from_slice(&[
+        -0.04,
+        1e4 * y[2],
+        1e4 * y[1],
+        0.04,
+        -1e4 * y[2] - 6e7 * y[1],
+        -1e4 * y[1],
+        0.0,
+        6e7 * y[1],
+        0.0,
+    ]);
+}
+
+/// Van der Pol at μ = 1000 in the Test Set's scaled form VDPOL: y₁′ = y₂,
+/// y₂′ = ((1 − y₁²)y₂ − y₁)/ε with ε = 10⁻⁶ (HW II §IV.10; Mazzia & Magherini's Test Set).
+pub fn vdpol(_: f64, y: &Vector2<f64>) -> Vector2<f64> {
+    Vector2::new(y[1], ((1.0 - y[0] * y[0]) * y[1] - y[0]) / 1e-6)
+}
+
+/// ∂f/∂y of [`vdpol`], row-major.
+pub fn vdpol_jacobian(_: f64, y: &Vector2<f64>, j: &mut [f64]) {
+    j.copy_from_slice(&[0.0, 1.0, (-2.0 * y[0] * y[1] - 1.0) / 1e-6, (1.0 - y[0] * y[0]) / 1e-6]);
+}
+
 macro_rules! solve_any {
     ($m:expr, $f:expr, $y0:expr, $t1:expr) => {
         match $m {
@@ -46,7 +82,7 @@ macro_rules! solve_any {
     };
 }
 
-fn linear(m: &Method) -> Result<(f64, usize), OdeError> {
+fn linear_run(m: &Method) -> Result<(f64, usize), OdeError> {
     // y₁′ = −y₁, y₂′ = −10⁴(y₂ − y₁) − y₁ from (1, 1): y = e^{−t}(1, 1) exactly
     let f = |_: f64, y: &Vector2<f64>| Vector2::new(-y[0], -1e4 * (y[1] - y[0]) - y[0]);
     let sol = solve_any!(m, f, &Vector2::new(1.0, 1.0), 1.0)?;
@@ -54,24 +90,16 @@ fn linear(m: &Method) -> Result<(f64, usize), OdeError> {
     Ok((mixed_error(sol.last().as_slice(), &[w, w]), sol.work.fevals))
 }
 
-fn vdpol(m: &Method) -> Result<(f64, usize), OdeError> {
+fn vdpol_run(m: &Method) -> Result<(f64, usize), OdeError> {
     // VDPOL (ε = 1e-6, μ = 1000 in scaled time), y(0) = (2, 0), t = 2; the Test Set's end state
-    let f = |_: f64, y: &Vector2<f64>| Vector2::new(y[1], ((1.0 - y[0] * y[0]) * y[1] - y[0]) / 1e-6);
-    let sol = solve_any!(m, f, &Vector2::new(2.0, 0.0), 2.0)?;
+    let sol = solve_any!(m, vdpol, &Vector2::new(2.0, 0.0), 2.0)?;
     Ok((mixed_error(sol.last().as_slice(), &[1.706167732170483, -0.8928097010247975]), sol.work.fevals))
 }
 
-fn robertson(m: &Method) -> Result<(f64, usize), OdeError> {
+fn robertson_run(m: &Method) -> Result<(f64, usize), OdeError> {
     // Robertson to t = 40; reference scipy Radau at rtol = 1e-13 (tests/data/stiff_reference.json,
     // uncertainty 1.6e-11, scripts/stiff_reference.py)
-    let f = |_: f64, y: &Vector3<f64>| {
-        Vector3::new(
-            -0.04 * y[0] + 1e4 * y[1] * y[2],
-            0.04 * y[0] - 1e4 * y[1] * y[2] - 3e7 * y[1] * y[1],
-            3e7 * y[1] * y[1],
-        )
-    };
-    let sol = solve_any!(m, f, &Vector3::new(1.0, 0.0, 0.0), 40.0)?;
+    let sol = solve_any!(m, robertson, &Vector3::new(1.0, 0.0, 0.0), 40.0)?;
     let want = [0.7158270687194058, 9.185534764557781e-06, 0.28416374574583];
     Ok((mixed_error(sol.last().as_slice(), &want), sol.work.fevals))
 }
@@ -80,9 +108,9 @@ fn robertson(m: &Method) -> Result<(f64, usize), OdeError> {
 /// closed form, Van der Pol at μ = 1000 (VDPOL) against the Test Set, Robertson to t = 40
 /// against scipy Radau at rtol = 1e-13.
 pub const STIFF_PROBLEMS: [StiffProblem; 3] = [
-    StiffProblem { name: "linear stiff (−1, −1e4)", run: linear },
-    StiffProblem { name: "Van der Pol μ = 1000", run: vdpol },
-    StiffProblem { name: "Robertson t = 40", run: robertson },
+    StiffProblem { name: "linear stiff (−1, −1e4)", run: linear_run },
+    StiffProblem { name: "Van der Pol μ = 1000", run: vdpol_run },
+    StiffProblem { name: "Robertson t = 40", run: robertson_run },
 ];
 
 /// One derived row: for a global error ≤ `target`, `method` at rtol = atol = `rtol` reached

@@ -1,38 +1,16 @@
 //! Shared by the stiff integrator tests (radau5.rs, bdf.rs): Robertson's kinetics with its
-//! Jacobian, the stored scipy reference (tests/data/stiff_reference.json, made by
+//! Jacobian (from the harness), the stored scipy reference (tests/data/stiff_reference.json, made by
 //! scripts/stiff_reference.py) and NaN-propagating error measures.
 //!
 //! Book: §4.11; HW §IV.1 (Robertson, (1.4)).
 #![allow(dead_code)]
-
-use nalgebra::Vector3;
 
 /// max |x| that is NaN when any x is NaN (a plain `f64::max` fold would skip NaN).
 pub fn nan_max(xs: impl IntoIterator<Item = f64>) -> f64 {
     xs.into_iter().fold(0.0, |m, x| if x.is_nan() || m.is_nan() { f64::NAN } else { m.max(x) })
 }
 
-pub fn robertson(_: f64, y: &Vector3<f64>) -> Vector3<f64> {
-    Vector3::new(
-        -0.04 * y[0] + 1e4 * y[1] * y[2],
-        0.04 * y[0] - 1e4 * y[1] * y[2] - 3e7 * y[1] * y[1],
-        3e7 * y[1] * y[1],
-    )
-}
-
-pub fn robertson_jac(_: f64, y: &Vector3<f64>, j: &mut [f64]) {
-    j.copy_from_slice(&[
-        -0.04,
-        1e4 * y[2],
-        1e4 * y[1],
-        0.04,
-        -1e4 * y[2] - 6e7 * y[1],
-        -1e4 * y[1],
-        0.0,
-        6e7 * y[1],
-        0.0,
-    ]);
-}
+pub use vectrix_ode::harness::{robertson, robertson_jacobian as robertson_jac};
 
 /// (t_end, y(t_end), uncertainty) of a case of tests/data/stiff_reference.json.
 pub fn reference(name: &str) -> (f64, Vec<f64>, f64) {
