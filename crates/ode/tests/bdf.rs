@@ -15,7 +15,7 @@ use nalgebra::{Vector2, Vector3};
 use vectrix_ode::{Bdf, BdfStepper, Direction, Event, OdeError};
 
 mod support;
-use support::{nan_max, reference, rel_err, robertson, robertson_jac};
+use support::{nan_max, reference, rel_err, robertson, robertson_jac, vdpol, vdpol_jacobian};
 
 #[test]
 fn robertson_matches_the_stored_reference() {
@@ -48,17 +48,12 @@ fn van_der_pol_matches_the_published_test_set_reference() {
     // VDPOL of the Test Set for IVP Solvers (Mazzia & Magherini, Univ. Bari; HW II §IV.10):
     // y₁′ = y₂, y₂′ = ((1 − y₁²) y₂ − y₁)/ε, ε = 1e-6 (μ = 1000 in scaled time), y(0) = (2, 0),
     // t ∈ [0, 2]; reference end state y(2) = (1.706167732170483, −0.8928097010247975).
-    let eps = 1e-6;
-    let f = move |_: f64, y: &Vector2<f64>| Vector2::new(y[1], ((1.0 - y[0] * y[0]) * y[1] - y[0]) / eps);
-    let jac = move |_: f64, y: &Vector2<f64>, j: &mut [f64]| {
-        j.copy_from_slice(&[0.0, 1.0, (-2.0 * y[0] * y[1] - 1.0) / eps, (1.0 - y[0] * y[0]) / eps])
-    };
     let want = [1.706167732170483, -0.8928097010247975];
     for (rtol, bound) in [(1e-6, 1e-3), (1e-9, 1e-6)] {
         let sol = Bdf::new()
             .rtol(rtol)
             .atol(rtol)
-            .solve_with_jacobian(f, jac, 0.0, &Vector2::new(2.0, 0.0), 2.0)
+            .solve_with_jacobian(vdpol, vdpol_jacobian, 0.0, &Vector2::new(2.0, 0.0), 2.0)
             .unwrap();
         let err = rel_err(sol.last().as_slice(), &want);
         println!("VDPOL rtol {rtol:e}: relative error {err:e} ({})", sol.work);

@@ -10,7 +10,7 @@ pub fn nan_max(xs: impl IntoIterator<Item = f64>) -> f64 {
     xs.into_iter().fold(0.0, |m, x| if x.is_nan() || m.is_nan() { f64::NAN } else { m.max(x) })
 }
 
-pub use vectrix_ode::harness::{robertson, robertson_jacobian as robertson_jac};
+pub use vectrix_ode::harness::{robertson, robertson_jacobian as robertson_jac, vdpol, vdpol_jacobian};
 
 /// (t_end, y(t_end), uncertainty) of a case of tests/data/stiff_reference.json.
 pub fn reference(name: &str) -> (f64, Vec<f64>, f64) {
