@@ -42,13 +42,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
                 return Err(OdeError::TooManySteps { t, max_steps: self.cfg.max_steps });
             }
             if h < min_step || !h.is_finite() {
-                let state = self.p.y.as_slice().to_vec();
-                return Err(match failures {
-                    Some((Failure::Singular, _, _)) => OdeError::SingularIterationMatrix { t, h, state },
-                    Some((Failure::Newton, Some(e), _)) => e,
-                    Some((Failure::Newton, None, n)) => OdeError::NewtonStalled { t, h, failures: n, state },
-                    None => OdeError::StepSizeUnderflow { t, h },
-                });
+                return Err(self.give_up(t, h, failures));
             }
             // the last step lands on t_end (differences rescaled to the shorter step)
             let mut t_new = t + h;
@@ -93,17 +87,8 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
                         failures = Some((Failure::Singular, None, cnt));
                     }
                     // ten consecutive failures end the step (as RADAU5), whatever h is
-                    if let Some((kind, e, cnt)) = &failures
-                        && *cnt >= MAX_FAILURES
-                    {
-                        let state = self.p.y.as_slice().to_vec();
-                        return Err(match (kind, e) {
-                            (Failure::Singular, _) => OdeError::SingularIterationMatrix { t, h, state },
-                            (Failure::Newton, Some(e)) => e.clone(),
-                            (Failure::Newton, None) => {
-                                OdeError::NewtonStalled { t, h, failures: *cnt, state }
-                            }
-                        });
+                    if failures.as_ref().is_some_and(|f| f.2 >= MAX_FAILURES) {
+                        return Err(self.give_up(t, h, failures));
                     }
                     h *= 0.5;
                     self.rescale(0.5);
@@ -133,6 +118,18 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             }
             self.accept(t_new, h, nw.y, &nw.d, &scale, err_norm, safety);
             return Ok(());
+        }
+    }
+
+    /// The error that ends a step at (t, h): the last failure's kind (a singular matrix, Newton's
+    /// own error or its stalling), else the step-size floor; each names t and the state.
+    fn give_up(&self, t: f64, h: f64, failures: Option<(Failure, Option<OdeError>, usize)>) -> OdeError {
+        let state = self.p.y.as_slice().to_vec();
+        match failures {
+            Some((Failure::Singular, _, _)) => OdeError::SingularIterationMatrix { t, h, state },
+            Some((Failure::Newton, Some(e), _)) => e,
+            Some((Failure::Newton, None, n)) => OdeError::NewtonStalled { t, h, failures: n, state },
+            None => OdeError::StepSizeUnderflow { t, h },
         }
     }
 
