@@ -1,4 +1,4 @@
-//! Stiff problems (issue 34): RADAU5 of vectrix-ode with exact Jacobians, and DOP853 where it
+//! Stiff problems (issue 34): RADAU5 and BDF of vectrix-ode with exact Jacobians, and DOP853 where it
 //! finishes, on Robertson's kinetics (t = 0..1e5), Van der Pol μ = 1000 in the Test Set's scaled form VDPOL (ε = 1e-6, t = 0..2) and the
 //! damped spring chain of `tests/ode`'s `radau5.rs` (6 masses, k/m = 1e6, C = 1e-2 K,
 //! t = 0..0.02) at rtol = 1e-6 and 1e-9. The end-time errors against the references
@@ -10,37 +10,10 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use nalgebra::{SVector, Vector2, Vector3};
-use vectrix::ode::{Adaptive, Radau5};
-
-fn robertson(_: f64, y: &Vector3<f64>) -> Vector3<f64> {
-    Vector3::new(
-        -0.04 * y[0] + 1e4 * y[1] * y[2],
-        0.04 * y[0] - 1e4 * y[1] * y[2] - 3e7 * y[1] * y[1],
-        3e7 * y[1] * y[1],
-    )
-}
-
-fn robertson_jac(_: f64, y: &Vector3<f64>, j: &mut [f64]) {
-    j.copy_from_slice(&[
-        -0.04,
-        1e4 * y[2],
-        1e4 * y[1],
-        0.04,
-        -1e4 * y[2] - 6e7 * y[1],
-        -1e4 * y[1],
-        0.0,
-        6e7 * y[1],
-        0.0,
-    ]);
-}
-
-fn vdp(_: f64, y: &Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(y[1], 1e6 * ((1.0 - y[0] * y[0]) * y[1] - y[0]))
-}
-
-fn vdp_jac(_: f64, y: &Vector2<f64>, j: &mut [f64]) {
-    j.copy_from_slice(&[0.0, 1.0, 1e6 * (-2.0 * y[0] * y[1] - 1.0), 1e6 * (1.0 - y[0] * y[0])]);
-}
+use vectrix::ode::harness::{
+    robertson, robertson_jacobian as robertson_jac, vdpol as vdp, vdpol_jacobian as vdp_jac,
+};
+use vectrix::ode::{Adaptive, Bdf, Radau5};
 
 const N: usize = 6;
 type Chain = SVector<f64, 12>;
@@ -82,10 +55,18 @@ fn stiff(c: &mut Criterion) {
         g.bench_function(format!("robertson radau5 rtol {rtol:e}"), |b| {
             b.iter(|| r.solve_with_jacobian(robertson, robertson_jac, 0.0, black_box(&y0), 1e5).unwrap())
         });
+        let bdf = Bdf::new().rtol(rtol).atol(rtol * 1e-6);
+        g.bench_function(format!("robertson bdf rtol {rtol:e}"), |b| {
+            b.iter(|| bdf.solve_with_jacobian(robertson, robertson_jac, 0.0, black_box(&y0), 1e5).unwrap())
+        });
         let r = Radau5::new().rtol(rtol).atol(rtol);
         let y0 = Vector2::new(2.0, 0.0);
         g.bench_function(format!("vdp1000 radau5 rtol {rtol:e}"), |b| {
             b.iter(|| r.solve_with_jacobian(vdp, vdp_jac, 0.0, black_box(&y0), 2.0).unwrap())
+        });
+        let bdf = Bdf::new().rtol(rtol).atol(rtol);
+        g.bench_function(format!("vdp1000 bdf rtol {rtol:e}"), |b| {
+            b.iter(|| bdf.solve_with_jacobian(vdp, vdp_jac, 0.0, black_box(&y0), 2.0).unwrap())
         });
         let mut y0 = Chain::zeros();
         y0.as_mut_slice()[..N].copy_from_slice(&[1e-3, -2e-3, 0.5e-3, 1.5e-3, 0.0, -1e-3]);

@@ -1,7 +1,7 @@
 //! Stiff scenes: the example scenes `stiff_spring_pendulum` and `damped_chain` under the
 //! default accuracy pick RADAU5 by the stiffness test, with the exact (dual-number) Jacobian,
 //! and match their closed forms; a non-stiff scene keeps DOP853; `method = { name = "radau5" }`
-//! forces the implicit method.
+//! and `method = { name = "bdf" }` force an implicit method.
 //!
 //! Book: §4.11; §6.7 (springs), §6.8 (dashpots); HW = Hairer & Wanner, *Solving ODEs II*,
 //! §IV.1 (stiffness), §IV.8 (RADAU5); the elastic pendulum's linear modes: Lynch, "The
@@ -82,8 +82,12 @@ fn damped_chain_settles_to_the_static_stretch() {
     assert_eq!(choice.jacobian, "exact (dual numbers)");
     let r = run(&scene);
     assert!(r.stop.is_none(), "{:?}", r.stop);
-    // at rest each spring carries F = 10 N: xᵢ = i (1 + F/k), k = 1e4; the slowest mode
-    // (rate ≈ 11 /s) has decayed by e^{-22} from an amplitude of 3e-3 m by t = 2 s
+    assert_static_stretch(&r);
+}
+
+/// At rest each spring of `damped_chain` carries F = 10 N: xᵢ = i (1 + F/k), k = 1e4; the
+/// slowest mode (rate ≈ 11 /s) has decayed by e^{-22} from an amplitude of 3e-3 m by t = 2 s.
+fn assert_static_stretch(r: &Run) {
     for (i, c) in ["c1", "c2", "c3"].iter().enumerate() {
         let x = *r.column(&format!("coordinates:{c}.0")).expect("column").last().expect("rows");
         let want = (i + 1) as f64 * (1.0 + 10.0 / 1e4);
@@ -98,6 +102,21 @@ fn a_non_stiff_scene_keeps_the_explicit_method_and_says_why() {
     assert_eq!(choice.name, "dop853", "{choice}");
     assert!(choice.reason.contains("not stiff"), "{choice}");
     assert!(choice.reason.contains(&format!("stiff from {STIFF_RATIO}")), "{choice}");
+}
+
+#[test]
+fn method_bdf_is_forced_by_name_and_settles_the_damped_chain() {
+    let mut spec = example("damped_chain").spec().clone();
+    spec.method = Some(vectrix::scene::spec::MethodSpec { name: "bdf".into(), rtol: 1e-9 });
+    spec.accuracy = None;
+    let scene = Scene::from_spec(spec).expect("valid");
+    let choice = scene.method_choice();
+    assert_eq!(choice.name, "bdf", "{choice}");
+    assert_eq!(choice.jacobian, "exact (dual numbers)");
+    assert!(choice.to_string().contains("Jacobian exact"), "{choice}");
+    let r = run(&scene);
+    assert!(r.stop.is_none(), "{:?}", r.stop);
+    assert_static_stretch(&r);
 }
 
 #[test]

@@ -9,8 +9,8 @@ use crate::{OdeError, State};
 /// Book: §4.11; derived from the harness (`vectrix accuracy`, docs/accuracy.md).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Accuracy {
-    /// Global relative error of the end state, for non-stiff problems whose state components
-    /// are of order one (the scale of the reference problems; set `atol` yourself through
+    /// Global relative error of the end state, for problems whose state components are of
+    /// order one (stiff ones included: see [`Accuracy::solve_with_choice`]) (the scale of the reference problems; set `atol` yourself through
     /// [`Accuracy::solver`] for other scales).
     RelTol(f64),
 }
@@ -79,7 +79,8 @@ impl Accuracy {
         Ok(a.rtol(row.rtol).atol(row.rtol))
     }
 
-    /// Solves y′ = f(t, y) on [t0, t1] with the selected solver.
+    /// Solves y′ = f(t, y) on [t0, t1] with the selected solver, switching to the stiff table's
+    /// method where the problem turns out stiff ([`Accuracy::solve_with_choice`] says which).
     ///
     /// # Errors
     /// As [`Accuracy::row`] and [`Adaptive::solve`].
@@ -90,6 +91,82 @@ impl Accuracy {
         y0: &S,
         t1: f64,
     ) -> Result<Solution<S>, OdeError> {
-        self.solver()?.solve(f, t0, y0, t1)
+        Ok(self.solve_with_choice(f, t0, y0, t1)?.0)
+    }
+}
+
+/// One row of [`STIFF_ACCURACY_TABLE`]: for a global error ≤ `target` on a stiff problem, run
+/// `method` (`radau5` or `bdf`) at rtol = atol = `rtol` with finite-difference Jacobians.
+///
+/// Book: §4.11; HW §IV.8, §III.5.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StiffRow {
+    /// Global error reached on every stiff reference problem.
+    pub target: f64,
+    /// `radau5` or `bdf`.
+    pub method: &'static str,
+    /// The largest swept local tolerance that reached it.
+    pub rtol: f64,
+}
+
+/// The stiff half of the [`Accuracy`] table, copied from `harness::derive_stiff_accuracy`
+/// (deterministic: cost in f-evaluations; checked against it by `tests/stiff_accuracy.rs`).
+/// How it was derived: for every target 10⁻ᵏ and both stiff methods, the largest rtol of the
+/// sweep 10⁻²…10⁻¹³ whose end-time error was ≤ target on *all* stiff reference problems (a
+/// linear stiff system against its closed form, Van der Pol μ = 1000 against the Test Set,
+/// Robertson to t = 40 against scipy Radau at 1e-13); of the two methods the one with fewer
+/// f-evaluations (finite-difference Jacobian columns included) won.
+///
+/// Book: §4.11; HW §IV.10 (work–precision of stiff codes).
+pub const STIFF_ACCURACY_TABLE: [StiffRow; 8] = [
+    StiffRow { target: 1e-3, method: "bdf", rtol: 1e-5 },
+    StiffRow { target: 1e-4, method: "radau5", rtol: 1e-5 },
+    StiffRow { target: 1e-5, method: "radau5", rtol: 1e-5 },
+    StiffRow { target: 1e-6, method: "radau5", rtol: 1e-6 },
+    StiffRow { target: 1e-7, method: "radau5", rtol: 1e-7 },
+    StiffRow { target: 1e-8, method: "radau5", rtol: 1e-9 },
+    StiffRow { target: 1e-9, method: "radau5", rtol: 1e-10 },
+    StiffRow { target: 1e-10, method: "radau5", rtol: 1e-11 },
+];
+
+impl Accuracy {
+    /// The stiff method the table selects for this accuracy (rtol = atol from
+    /// [`STIFF_ACCURACY_TABLE`]).
+    ///
+    /// # Errors
+    /// [`OdeError::NonPositiveTolerance`]; [`OdeError::UnreachableAccuracy`] below the
+    /// strictest stiff target.
+    pub fn stiff_solver(&self) -> Result<crate::Method, OdeError> {
+        let Accuracy::RelTol(tol) = *self;
+        crate::error::check_tol("rtol", tol)?;
+        let row = STIFF_ACCURACY_TABLE.iter().find(|r| r.target <= tol).copied().ok_or(
+            OdeError::UnreachableAccuracy {
+                requested: tol,
+                best: STIFF_ACCURACY_TABLE.last().map_or(f64::INFINITY, |r| r.target),
+            },
+        )?;
+        Ok(match row.method {
+            "bdf" => crate::Method::Bdf(crate::Bdf::new().rtol(row.rtol).atol(row.rtol)),
+            _ => crate::Method::Radau5(crate::Radau5::new().rtol(row.rtol).atol(row.rtol)),
+        })
+    }
+
+    /// [`Accuracy::solve`] with the method it ran and why: DOP853 from the table, switched to
+    /// the stiff method of [`STIFF_ACCURACY_TABLE`] where the stiffness test of
+    /// [`STIFF_H_RHO`](crate::STIFF_H_RHO) fires (as LSODA switches; the test and its
+    /// constants are in the crate's `stiffness` module docs).
+    ///
+    /// # Errors
+    /// As [`Accuracy::row`], [`Accuracy::stiff_solver`] and the methods' `solve`.
+    pub fn solve_with_choice<S: State, F: FnMut(f64, &S) -> S>(
+        &self,
+        f: F,
+        t0: f64,
+        y0: &S,
+        t1: f64,
+    ) -> Result<(Solution<S>, crate::Choice), OdeError> {
+        let explicit = self.solver()?;
+        let stiff = self.stiff_solver()?.with_max_steps(explicit.max_steps);
+        crate::stiffness::solve_switching(&explicit, &stiff, f, t0, y0, t1)
     }
 }

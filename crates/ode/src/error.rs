@@ -155,6 +155,16 @@ pub enum OdeError {
         /// State at the start of the step.
         state: Vec<f64>,
     },
+    /// A method setting outside its valid range (BDF's `max_order`, a Newton cap of 0).
+    #[error("{name} = {value} is invalid; valid: {valid}")]
+    InvalidSetting {
+        /// The setting.
+        name: &'static str,
+        /// The offending value.
+        value: usize,
+        /// The valid range.
+        valid: &'static str,
+    },
     /// The Jacobian ∂f/∂y has a NaN or infinite entry.
     #[error(
         "Jacobian ∂f/∂y has {value} at row {row}, column {col} at t = {t}, state {}; every entry must be finite",

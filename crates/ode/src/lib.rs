@@ -4,8 +4,10 @@
 //!   adaptive Dormand–Prince pairs ([`Adaptive::dopri5`], [`Adaptive::dop853`]) with error
 //!   control, dense output and event location;
 //! * the stiff integrator RADAU5 ([`Radau5`]: Radau IIA 5 with Hairer–Wanner's control,
-//!   exact or finite-difference Jacobians, dense output and events), and [`AnyStepper`] to
-//!   drive either kind step by step;
+//!   exact or finite-difference Jacobians, dense output and events), the variable-order BDF
+//!   ([`Bdf`], orders 1–5, the same Jacobians, dense output and events), and [`AnyStepper`]
+//!   to drive any of them step by step; [`Solver`] holds the settings all adaptive methods
+//!   share and [`Progress`] where a step-by-step run stands;
 //! * Gauss–Legendre collocation ([`GaussLegendre`]: implicit midpoint, 2 and 3 stages, Newton
 //!   with faer) and Störmer–Verlet ([`stormer_verlet`]);
 //! * Lie-group methods for attitude ([`LieMethod`]: exponential Euler, RKMK4,
@@ -49,18 +51,26 @@ pub mod harness;
 pub mod implicit;
 pub mod lie;
 mod method;
+mod progress;
+mod solver;
 mod state;
+mod stiffness;
 mod work;
 
-pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow};
+pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow, STIFF_ACCURACY_TABLE, StiffRow};
 pub use error::OdeError;
 pub use explicit::{
     Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, HEUN, Pair, RK4, Solution, Tableau,
 };
-pub use implicit::{GaussLegendre, Radau5, RadauStepper, stormer_verlet};
+pub use implicit::{
+    Bdf, BdfFormula, BdfStepper, GaussLegendre, Implicit, Radau5, RadauIIA, RadauStepper, stormer_verlet,
+};
 pub use lie::{LieGroup, LieMethod, integrate_lie, quaternion_exact_step};
 pub use method::{AnyStepper, Method};
+pub use progress::Progress;
+pub use solver::Solver;
 pub use state::State;
+pub use stiffness::{Choice, STIFF_CHECK_EVERY, STIFF_H_RHO, STIFF_MIN_STEPS};
 pub use work::Work;
 
 /// `use vectrix_ode::prelude::*;`

@@ -1,19 +1,22 @@
-//! One stepping interface over the explicit pairs and RADAU5, so that a caller that drives
+//! One stepping interface over the explicit pairs, RADAU5 and BDF, so that a caller that drives
 //! the integration itself (scenes: samples, impacts, budgets) can take either.
 
-use crate::explicit::{Adaptive, DenseStep, Stepper};
-use crate::implicit::{Radau5, RadauStepper};
-use crate::{OdeError, State, Work};
+use crate::explicit::{Adaptive, DenseStep, Stepper, Steps};
+use crate::implicit::{Bdf, BdfStepper, Radau5, RadauStepper};
+use crate::progress::Progress;
+use crate::{OdeError, State};
 
-/// An adaptive method: an explicit pair ([`Adaptive`]) or the stiff RADAU5 ([`Radau5`]).
+/// An adaptive method: an explicit pair ([`Adaptive`]) or a stiff one ([`Radau5`], [`Bdf`]).
 ///
-/// Book: §4.11; HNW §II.4–II.10 (explicit pairs), HW §IV.8 (RADAU5).
+/// Book: §4.11; HNW §II.4–II.10 (explicit pairs), HW §IV.8 (RADAU5), §III.5 (BDF).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Method {
     /// DOPRI5 or DOP853.
     Explicit(Adaptive),
     /// Radau IIA 5.
     Radau5(Radau5),
+    /// Variable-order BDF (1–5).
+    Bdf(Bdf),
 }
 
 impl Method {
@@ -22,6 +25,7 @@ impl Method {
         match self {
             Self::Explicit(a) => a.max_steps,
             Self::Radau5(r) => r.max_steps,
+            Self::Bdf(b) => b.max_steps,
         }
     }
     /// The same method with another step bound.
@@ -29,16 +33,18 @@ impl Method {
         match self {
             Self::Explicit(a) => Self::Explicit(a.max_steps(n)),
             Self::Radau5(r) => Self::Radau5(r.max_steps(n)),
+            Self::Bdf(b) => Self::Bdf(b.max_steps(n)),
         }
     }
-    /// Its name as in scene files: `dopri5`, `dop853`, `radau5`.
+    /// Its name as in scene files: `dopri5`, `dop853`, `radau5`, `bdf`.
     pub fn name(&self) -> &'static str {
         match self {
-            Self::Explicit(a) => match a.pair {
+            Self::Explicit(a) => match a.method {
                 crate::Pair::Dopri5 => "dopri5",
                 crate::Pair::Dop853 => "dop853",
             },
             Self::Radau5(_) => "radau5",
+            Self::Bdf(_) => "bdf",
         }
     }
     /// (rtol, atol).
@@ -46,12 +52,18 @@ impl Method {
         match self {
             Self::Explicit(a) => (a.rtol, a.atol),
             Self::Radau5(r) => (r.rtol, r.atol),
+            Self::Bdf(b) => (b.rtol, b.atol),
         }
+    }
+    /// `true` for the stiff (implicit) methods, which use a Jacobian.
+    pub fn is_implicit(&self) -> bool {
+        !matches!(self, Self::Explicit(_))
     }
 }
 
-/// A run of either kind in progress, with the interface of [`Stepper`]: `J` writes ∂f/∂y
-/// row-major for RADAU5 (finite differences when `None`; ignored by the explicit pairs).
+/// A run of any kind in progress, with the interface of [`Stepper`] ([`Progress`] by `Deref`
+/// for t, y, the end, the work and `set_end`): `J` writes ∂f/∂y
+/// row-major for RADAU5 and BDF (finite differences when `None`; ignored by the explicit pairs).
 ///
 /// Book: §4.11.
 // one stepper per run, moved never: boxing either variant would only add an indirection
@@ -61,6 +73,8 @@ pub enum AnyStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f6
     Explicit(Stepper<S, F>),
     /// RADAU5.
     Radau5(RadauStepper<S, F, J>),
+    /// BDF.
+    Bdf(BdfStepper<S, F, J>),
 }
 
 impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug
@@ -70,12 +84,47 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt:
         match self {
             Self::Explicit(s) => s.fmt(f),
             Self::Radau5(s) => s.fmt(f),
+            Self::Bdf(s) => s.fmt(f),
         }
     }
 }
 
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref
+    for AnyStepper<S, F, J>
+{
+    type Target = Progress<S>;
+    fn deref(&self) -> &Progress<S> {
+        match self {
+            Self::Explicit(s) => s,
+            Self::Radau5(s) => s,
+            Self::Bdf(s) => s,
+        }
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut
+    for AnyStepper<S, F, J>
+{
+    fn deref_mut(&mut self) -> &mut Progress<S> {
+        match self {
+            Self::Explicit(s) => s,
+            Self::Radau5(s) => s,
+            Self::Bdf(s) => s,
+        }
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> for AnyStepper<S, F, J> {
+    fn step(&mut self) -> Result<(), OdeError> {
+        AnyStepper::step(self)
+    }
+    fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
+        AnyStepper::dense(self)
+    }
+}
+
 impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
-    /// Starts a run of `method` (see [`Stepper::new`], [`RadauStepper::new`]).
+    /// Starts a run of `method` (see [`Stepper::new`], [`RadauStepper::new`], [`BdfStepper::new`]).
     ///
     /// # Errors
     /// As those constructors.
@@ -83,42 +132,8 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
         Ok(match method {
             Method::Explicit(a) => Self::Explicit(Stepper::new(a, f, t0, y0, t_end)?),
             Method::Radau5(r) => Self::Radau5(RadauStepper::new(r, f, jac, t0, y0, t_end)?),
+            Method::Bdf(b) => Self::Bdf(BdfStepper::new(b, f, jac, t0, y0, t_end)?),
         })
-    }
-    /// The current time.
-    pub fn t(&self) -> f64 {
-        match self {
-            Self::Explicit(s) => s.t(),
-            Self::Radau5(s) => s.t(),
-        }
-    }
-    /// The current state.
-    pub fn y(&self) -> &S {
-        match self {
-            Self::Explicit(s) => s.y(),
-            Self::Radau5(s) => s.y(),
-        }
-    }
-    /// The start of the last accepted step.
-    pub fn step_start(&self) -> Option<f64> {
-        match self {
-            Self::Explicit(s) => s.step_start(),
-            Self::Radau5(s) => s.step_start(),
-        }
-    }
-    /// `true` once the end time has been reached.
-    pub fn done(&self) -> bool {
-        match self {
-            Self::Explicit(s) => s.done(),
-            Self::Radau5(s) => s.done(),
-        }
-    }
-    /// The work so far.
-    pub fn work(&self) -> Work {
-        match self {
-            Self::Explicit(s) => s.work(),
-            Self::Radau5(s) => s.work(),
-        }
     }
     /// One accepted step.
     ///
@@ -128,6 +143,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
         match self {
             Self::Explicit(s) => s.step(),
             Self::Radau5(s) => s.step(),
+            Self::Bdf(s) => s.step(),
         }
     }
     /// The interpolant of the last accepted step.
@@ -138,6 +154,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
         match self {
             Self::Explicit(s) => s.dense(),
             Self::Radau5(s) => s.dense(),
+            Self::Bdf(s) => s.dense(),
         }
     }
     /// Continues from (t, y) after a jump.
@@ -148,23 +165,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
         match self {
             Self::Explicit(s) => s.restart(t, y),
             Self::Radau5(s) => s.restart(t, y),
-        }
-    }
-    /// Moves the end time.
-    ///
-    /// # Errors
-    /// As [`Stepper::set_end`].
-    pub fn set_end(&mut self, t_end: f64) -> Result<(), OdeError> {
-        match self {
-            Self::Explicit(s) => s.set_end(t_end),
-            Self::Radau5(s) => s.set_end(t_end),
-        }
-    }
-    /// The end time.
-    pub fn end(&self) -> f64 {
-        match self {
-            Self::Explicit(s) => s.end(),
-            Self::Radau5(s) => s.end(),
+            Self::Bdf(s) => s.restart(t, y),
         }
     }
 }

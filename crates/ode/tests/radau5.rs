@@ -13,10 +13,8 @@ use std::f64::consts::PI;
 use nalgebra::{DVector, SVector, Vector2, Vector3};
 use vectrix_ode::{Direction, Event, OdeError, Radau5};
 
-/// max |x| that is NaN when any x is NaN (a plain `f64::max` fold would skip NaN).
-fn nan_max(xs: impl IntoIterator<Item = f64>) -> f64 {
-    xs.into_iter().fold(0.0, |m, x| if x.is_nan() || m.is_nan() { f64::NAN } else { m.max(x) })
-}
+mod support;
+use support::{nan_max, reference, rel_err, robertson, robertson_jac, vdpol, vdpol_jacobian};
 
 /// A chain of `N` equal masses m between two walls, N + 1 springs k and dampers c = αk in
 /// parallel (Rayleigh damping C = αK): ẍ = −(k/m)(L x) − (αk/m)(L ẋ), L = tridiag(−1, 2, −1).
@@ -102,43 +100,6 @@ fn stiff_damped_chain_matches_the_modal_solution() {
     }
 }
 
-fn robertson(_: f64, y: &Vector3<f64>) -> Vector3<f64> {
-    Vector3::new(
-        -0.04 * y[0] + 1e4 * y[1] * y[2],
-        0.04 * y[0] - 1e4 * y[1] * y[2] - 3e7 * y[1] * y[1],
-        3e7 * y[1] * y[1],
-    )
-}
-
-fn robertson_jac(_: f64, y: &Vector3<f64>, j: &mut [f64]) {
-    j.copy_from_slice(&[
-        -0.04,
-        1e4 * y[2],
-        1e4 * y[1],
-        0.04,
-        -1e4 * y[2] - 6e7 * y[1],
-        -1e4 * y[1],
-        0.0,
-        6e7 * y[1],
-        0.0,
-    ]);
-}
-
-/// (t_end, reference end state, its uncertainty) of a case in the stored reference file.
-fn reference(name: &str) -> (f64, Vec<f64>, f64) {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/data/stiff_reference.json");
-    let text = std::fs::read_to_string(path).unwrap();
-    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let case = v["cases"].as_array().unwrap().iter().find(|c| c["name"] == name).unwrap();
-    let y = case["y"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
-    (case["t_end"].as_f64().unwrap(), y, case["uncertainty"].as_f64().unwrap())
-}
-
-/// Largest componentwise relative error.
-fn rel_err(got: &[f64], want: &[f64]) -> f64 {
-    nan_max(got.iter().zip(want).map(|(g, w)| ((g - w) / w).abs()))
-}
-
 #[test]
 fn robertson_matches_the_stored_reference() {
     for name in ["robertson_40", "robertson_1e5"] {
@@ -168,17 +129,12 @@ fn van_der_pol_matches_the_published_test_set_reference() {
     // VDPOL of the Test Set for IVP Solvers (Mazzia & Magherini, Univ. Bari; HW II §IV.10):
     // y₁′ = y₂, y₂′ = ((1 − y₁²) y₂ − y₁)/ε, ε = 1e-6 (μ = 1000 in scaled time), y(0) = (2, 0),
     // t ∈ [0, 2]; reference end state y(2) = (1.706167732170483, −0.8928097010247975).
-    let eps = 1e-6;
-    let f = move |_: f64, y: &Vector2<f64>| Vector2::new(y[1], ((1.0 - y[0] * y[0]) * y[1] - y[0]) / eps);
-    let jac = move |_: f64, y: &Vector2<f64>, j: &mut [f64]| {
-        j.copy_from_slice(&[0.0, 1.0, (-2.0 * y[0] * y[1] - 1.0) / eps, (1.0 - y[0] * y[0]) / eps])
-    };
     let want = [1.706167732170483, -0.8928097010247975];
     for (rtol, bound) in [(1e-6, 1e-4), (1e-9, 1e-7)] {
         let sol = Radau5::new()
             .rtol(rtol)
             .atol(rtol)
-            .solve_with_jacobian(f, jac, 0.0, &Vector2::new(2.0, 0.0), 2.0)
+            .solve_with_jacobian(vdpol, vdpol_jacobian, 0.0, &Vector2::new(2.0, 0.0), 2.0)
             .unwrap();
         let err = rel_err(sol.last().as_slice(), &want);
         // the global error through a relaxation jump: within 100 × rtol

@@ -356,7 +356,7 @@ impl Scene {
         match named {
             Some(reason) => {
                 scene.choice.reason = reason;
-                if matches!(scene.solver, Method::Radau5(_)) {
+                if scene.solver.is_implicit() {
                     scene.choice.jacobian =
                         if scene.tree_only() { "exact (dual numbers)" } else { "finite differences" };
                 }

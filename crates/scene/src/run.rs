@@ -11,7 +11,7 @@ use std::sync::atomic::Ordering;
 use std::time::Instant;
 
 use nalgebra::Vector3;
-use vectrix_ode::{AnyStepper, Method, OdeError};
+use vectrix_ode::{AnyStepper, OdeError};
 
 use super::contacts::{ContactEvent, ContactEventKind, Contacts, NextContact};
 use super::kin::{Kin, kinematics};
@@ -168,7 +168,7 @@ impl Scene {
         let mut stop_at = 0;
         // implicit steps: ∂f/∂y from dual numbers for a tree; otherwise RADAU5's own finite
         // differences (through the same f, so they see the resting contacts too)
-        let exact = matches!(self.solver, Method::Radau5(_)) && self.tree_only() && !self.needs.impacts;
+        let exact = self.solver.is_implicit() && self.tree_only() && !self.needs.impacts;
         let jac = exact.then_some(|t: f64, y: &Vec<f64>, out: &mut [f64]| match self.jacobian(t, y) {
             Ok((j, _)) => {
                 let n = y.len();

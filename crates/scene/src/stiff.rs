@@ -10,7 +10,7 @@
 
 use nalgebra::DMatrix;
 use serde::Serialize;
-use vectrix_ode::{Accuracy, Method, Radau5};
+use vectrix_ode::{Accuracy, Bdf, Method, Radau5};
 
 use super::build::Src;
 use super::spec::SceneSpec;
@@ -28,7 +28,7 @@ pub const STIFF_RHO_DURATION: f64 = 1000.0;
 /// Book: §4.11.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MethodChoice {
-    /// `dopri5`, `dop853` or `radau5`.
+    /// `dopri5`, `dop853`, `radau5` or `bdf`.
     pub name: &'static str,
     /// Its relative (= absolute) local tolerance.
     pub rtol: f64,
@@ -41,14 +41,14 @@ pub struct MethodChoice {
 impl core::fmt::Display for MethodChoice {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(f, "{} at rtol = atol = {:e}", self.name, self.rtol)?;
-        if self.name == "radau5" {
+        if self.name == "radau5" || self.name == "bdf" {
             write!(f, ", Jacobian {}", self.jacobian)?;
         }
         write!(f, " ({})", self.reason)
     }
 }
 
-/// The method a scene names, if it names one (`dopri5`, `dop853`, `radau5`).
+/// The method a scene names, if it names one (`dopri5`, `dop853`, `radau5`, `bdf`).
 pub(crate) fn named(spec: &SceneSpec, src: &Src) -> Result<Option<(Method, String)>, SceneError> {
     let Some(m) = &spec.method else { return Ok(None) };
     if !(m.rtol > 0.0 && m.rtol < 1.0) {
@@ -58,10 +58,12 @@ pub(crate) fn named(spec: &SceneSpec, src: &Src) -> Result<Option<(Method, Strin
         "dopri5" => Method::Explicit(vectrix_ode::Adaptive::dopri5().rtol(m.rtol).atol(m.rtol)),
         "dop853" => Method::Explicit(vectrix_ode::Adaptive::dop853().rtol(m.rtol).atol(m.rtol)),
         "radau5" => Method::Radau5(Radau5::new().rtol(m.rtol).atol(m.rtol)),
+        "bdf" => Method::Bdf(Bdf::new().rtol(m.rtol).atol(m.rtol)),
         n => {
-            return Err(
-                src.invalid("method.name", format!("unknown method `{n}`; valid: dopri5, dop853, radau5"))
-            );
+            return Err(src.invalid(
+                "method.name",
+                format!("unknown method `{n}`; valid: dopri5, dop853, radau5, bdf"),
+            ));
         }
     };
     Ok(Some((method, "named in the scene's `method`".to_string())))

@@ -6,6 +6,8 @@ use std::time::Instant;
 use super::dense::DenseStep;
 use super::events::{Event, EventHit, crosses, locate};
 use super::stepper::Stepper;
+use crate::progress::Progress;
+use crate::solver::Solver;
 use crate::state::{State, eval};
 use crate::{OdeError, Work};
 
@@ -21,31 +23,16 @@ pub enum Pair {
     Dop853,
 }
 
-/// An adaptive solver: the pair, tolerances and limits. Built with [`Adaptive::dopri5`] or
-/// [`Adaptive::dop853`] and the setters; defaults rtol = 1e-6, atol = 1e-9.
+/// An adaptive explicit solver: the pair with its tolerances and limits ([`Solver`]). Built
+/// with [`Adaptive::dopri5`] or [`Adaptive::dop853`] and the setters; defaults rtol = 1e-6,
+/// atol = 1e-9.
 ///
 /// The local error is kept at ‖err/sk‖ ≤ 1 with sk = atol + rtol·max(|y|, |y₁|) per component
 /// (HNW (4.10)); the step size follows Hairer's controller (PI with β = 0.04 for DOPRI5,
 /// I-controller for DOP853).
 ///
 /// Book: §4.11; HNW §II.4.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Adaptive {
-    /// The embedded pair.
-    pub pair: Pair,
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance.
-    pub atol: f64,
-    /// Initial step (chosen by Hairer's `hinit` when `None`).
-    pub h0: Option<f64>,
-    /// Largest step (the whole interval when `None`).
-    pub h_max: Option<f64>,
-    /// Maximum number of steps.
-    pub max_steps: usize,
-    /// Record dense output for [`Solution::sample`].
-    pub dense: bool,
-}
+pub type Adaptive = Solver<Pair>;
 
 /// The result of an adaptive run: the accepted steps, events, work and (optionally) dense
 /// output.
@@ -89,47 +76,14 @@ impl<S: State> Solution<S> {
     }
 }
 
-impl Adaptive {
-    fn with(pair: Pair) -> Self {
-        Self { pair, rtol: 1e-6, atol: 1e-9, h0: None, h_max: None, max_steps: 1_000_000, dense: false }
-    }
+impl Solver<Pair> {
     /// Dormand–Prince 5(4).
-    pub fn dopri5() -> Self {
-        Self::with(Pair::Dopri5)
+    pub const fn dopri5() -> Self {
+        Self::with_method(Pair::Dopri5)
     }
     /// DOP853.
-    pub fn dop853() -> Self {
-        Self::with(Pair::Dop853)
-    }
-    /// Relative tolerance.
-    pub fn rtol(mut self, rtol: f64) -> Self {
-        self.rtol = rtol;
-        self
-    }
-    /// Absolute tolerance.
-    pub fn atol(mut self, atol: f64) -> Self {
-        self.atol = atol;
-        self
-    }
-    /// Initial step size.
-    pub fn h0(mut self, h0: f64) -> Self {
-        self.h0 = Some(h0);
-        self
-    }
-    /// Maximum step size.
-    pub fn h_max(mut self, h_max: f64) -> Self {
-        self.h_max = Some(h_max);
-        self
-    }
-    /// Maximum number of steps.
-    pub fn max_steps(mut self, n: usize) -> Self {
-        self.max_steps = n;
-        self
-    }
-    /// Record dense output.
-    pub fn dense(mut self, dense: bool) -> Self {
-        self.dense = dense;
-        self
+    pub const fn dop853() -> Self {
+        Self::with_method(Pair::Dop853)
     }
 
     /// Solves y′ = f(t, y), y(t0) = y0 on [t0, t1].
@@ -165,50 +119,69 @@ impl Adaptive {
         events: &mut [Event<'_, S>],
     ) -> Result<Solution<S>, OdeError> {
         let start = Instant::now();
-        let mut st = Stepper::new(self, f, t0, y0.clone(), t1)?;
-        // room for a typical run's accepted steps up front (no early reallocations)
-        let (mut ts, mut ys) = (Vec::with_capacity(256), Vec::with_capacity(256));
-        ts.push(t0);
-        ys.push(y0.clone());
-        let mut sol = Solution {
-            t: ts,
-            y: ys,
-            events: Vec::new(),
-            terminated: false,
-            work: Work::default(),
-            dense: Vec::new(),
-        };
-        let mut g_prev: Vec<f64> = events.iter_mut().map(|e| (e.g)(t0, y0)).collect();
-        let want_dense = self.dense || !events.is_empty();
-        while !st.done() {
-            st.step()?;
-            let (t, t_new) = (st.step_start().unwrap_or(t0), st.t());
-            let dense = if want_dense { Some(st.dense()?.clone()) } else { None };
-            // events: sign changes of g over [t, t_new], located on the dense output
-            if let Some(d) = &dense
-                && !events.is_empty()
-                && let Some(t_stop) = find_events(events, &mut g_prev, d, t, t_new, st.y(), &mut sol)
-            {
-                sol.t.push(t_stop);
-                sol.y.push(d.eval(t_stop));
-                sol.terminated = true;
-                if self.dense {
-                    sol.dense.push(d.clone());
-                }
-                break;
-            }
-            if self.dense
-                && let Some(d) = dense
-            {
-                sol.dense.push(d);
-            }
-            sol.t.push(t_new);
-            sol.y.push(st.y().clone());
-        }
-        sol.work = st.work();
-        sol.work.wall = start.elapsed();
-        Ok(sol)
+        let st = Stepper::new(self, f, t0, y0.clone(), t1)?;
+        drive(st, start, y0, events, self.dense)
     }
+}
+
+/// A stepper [`drive`] can run: one accepted step at a time and that step's interpolant.
+pub(crate) trait Steps<S: State>: core::ops::Deref<Target = Progress<S>> {
+    /// One accepted step.
+    fn step(&mut self) -> Result<(), OdeError>;
+    /// The interpolant of the last accepted step.
+    fn dense(&mut self) -> Result<&DenseStep<S>, OdeError>;
+}
+
+/// Runs a stepper to its end (or a terminal event): records the accepted steps, locates the
+/// events on each step's interpolant and keeps the interpolants when `keep_dense`.
+pub(crate) fn drive<S: State, St: Steps<S>>(
+    mut st: St,
+    start: Instant,
+    y0: &S,
+    events: &mut [Event<'_, S>],
+    keep_dense: bool,
+) -> Result<Solution<S>, OdeError> {
+    let t0 = st.t();
+    // room for a typical run's accepted steps up front (no early reallocations)
+    let (mut ts, mut ys) = (Vec::with_capacity(256), Vec::with_capacity(256));
+    ts.push(t0);
+    ys.push(y0.clone());
+    let mut sol = Solution {
+        t: ts,
+        y: ys,
+        events: Vec::new(),
+        terminated: false,
+        work: Work::default(),
+        dense: Vec::new(),
+    };
+    let mut g_prev: Vec<f64> = events.iter_mut().map(|e| (e.g)(t0, y0)).collect();
+    let want_dense = keep_dense || !events.is_empty();
+    while !st.done() {
+        st.step()?;
+        let (t, t_new) = (st.step_start().unwrap_or(t0), st.t());
+        let dense = if want_dense { Some(st.dense()?.clone()) } else { None };
+        // events: sign changes of g over [t, t_new], located on the dense output
+        if let Some(d) = &dense
+            && !events.is_empty()
+            && let Some(t_stop) = find_events(events, &mut g_prev, d, t, t_new, st.y(), &mut sol)
+        {
+            sol.t.push(t_stop);
+            sol.y.push(d.eval(t_stop));
+            sol.terminated = true;
+            if keep_dense {
+                sol.dense.push(d.clone());
+            }
+            break;
+        }
+        if keep_dense && let Some(d) = dense {
+            sol.dense.push(d);
+        }
+        sol.t.push(t_new);
+        sol.y.push(st.y().clone());
+    }
+    sol.work = st.work();
+    sol.work.wall = start.elapsed();
+    Ok(sol)
 }
 
 /// Records the events of one accepted step [t, t_new] (zeros of g located on its dense

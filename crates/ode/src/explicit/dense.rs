@@ -7,7 +7,8 @@ use crate::state::State;
 /// and q(θ) = c₄ + θ(c₅ + (1−θ)(c₆ + θc₇)) for DOP853 (order 7); for Radau IIA 5 the
 /// collocation polynomial y(t + θh) = c₀ + s(c₁ + (s − c₂ + 1)(c₂' + (s − c₁ + 1)c₃)) with
 /// s = θ − 1 through the step's end and its three stages (order 3 uniformly, exact at the
-/// collocation points).
+/// collocation points); for BDF the polynomial through the last k + 1 points in backward
+/// differences (Shampine & Reichelt 1997).
 ///
 /// Book: §4.11; HNW §II.6 (dense output), `contd5`/`contd8` of `dopri5.f`/`dop853.f`; HW
 /// §IV.8 and `contr5` of `radau5.f` (Radau IIA collocation polynomial).
@@ -22,12 +23,15 @@ pub struct DenseStep<S> {
 }
 
 /// Which polynomial the coefficients of a [`DenseStep`] describe.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Form {
     /// Hairer's Dormand–Prince form (5 coefficients for DOPRI5, 8 for DOP853).
     DormandPrince,
     /// RADAU5's collocation polynomial about the step's end (4 coefficients).
     Radau,
+    /// BDF's interpolating polynomial in backward differences D₀ … Dₖ on the grid of the
+    /// given step about the step's end.
+    Bdf(f64),
 }
 
 impl<S: State> DenseStep<S> {
@@ -37,6 +41,18 @@ impl<S: State> DenseStep<S> {
         let mut out = self.c[0].clone();
         let o = out.as_mut_slice();
         let c: Vec<&[f64]> = self.c.iter().map(State::as_slice).collect();
+        if let Form::Bdf(hp) = self.form {
+            // y(t) = D₀ + Σⱼ Dⱼ Πₘ₌₀ʲ⁻¹ (t − (tₙ − m·hp))/((m + 1)·hp), tₙ the step's end
+            let t_n = self.t + self.h;
+            let mut prod = 1.0;
+            for (m, cj) in c.iter().enumerate().skip(1) {
+                prod *= (t - (t_n - (m - 1) as f64 * hp)) / (m as f64 * hp);
+                for (oi, x) in o.iter_mut().zip(cj.iter()) {
+                    *oi += prod * x;
+                }
+            }
+            return out;
+        }
         if self.form == Form::Radau {
             let (c1m1, c2m1) = crate::implicit::radau_nodes_minus_one();
             let s = s - 1.0;

@@ -13,8 +13,8 @@ mod fixed;
 mod stepper;
 mod tableau;
 
-pub(crate) use adaptive::find_events;
 pub use adaptive::{Adaptive, Pair, Solution};
+pub(crate) use adaptive::{Steps, drive, initial_step};
 pub use dense::DenseStep;
 pub(crate) use dense::Form;
 pub use events::{Direction, Event, EventHit, bracket_zero};

@@ -9,7 +9,7 @@
 use super::adaptive::{Adaptive, Pair, initial_step};
 use super::dense::DenseStep;
 use super::{dop853, dopri5};
-use crate::error::{check_interval, check_step, check_tol};
+use crate::progress::Progress;
 use crate::state::{State, check_state, eval};
 use crate::{OdeError, Work};
 
@@ -41,27 +41,46 @@ use crate::{OdeError, Work};
 pub struct Stepper<S: State, F: FnMut(f64, &S) -> S> {
     cfg: Adaptive,
     f: F,
-    t: f64,
-    y: S,
-    t_end: f64,
-    h: f64,
-    h_max: f64,
+    /// t, y, the last step, h, the end time and the work (the accessors, by `Deref`).
+    p: Progress<S>,
     /// Stages of the last accepted step (k₁ = f at its start).
     k: Vec<S>,
     /// f(t, y) at the current point: the next step's first stage.
     f_now: S,
-    /// Start (t, y) of the last accepted step, if one was taken since the last restart.
-    prev: Option<(f64, S)>,
-    dense: Option<DenseStep<S>>,
-    work: Work,
     /// ln of the previous accepted step's error (at least 1e-4): the PI controller's memory.
     ln_fac_old: f64,
     last_rejected: bool,
 }
 
+impl<S: State, F: FnMut(f64, &S) -> S> core::ops::Deref for Stepper<S, F> {
+    type Target = Progress<S>;
+    fn deref(&self) -> &Progress<S> {
+        &self.p
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S> core::ops::DerefMut for Stepper<S, F> {
+    fn deref_mut(&mut self) -> &mut Progress<S> {
+        &mut self.p
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S> super::adaptive::Steps<S> for Stepper<S, F> {
+    fn step(&mut self) -> Result<(), OdeError> {
+        Stepper::step(self)
+    }
+    fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
+        Stepper::dense(self)
+    }
+}
+
 impl<S: State, F: FnMut(f64, &S) -> S> core::fmt::Debug for Stepper<S, F> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.debug_struct("Stepper").field("t", &self.t).field("h", &self.h).field("work", &self.work).finish()
+        f.debug_struct("Stepper")
+            .field("t", &self.p.t)
+            .field("h", &self.p.h)
+            .field("work", &self.p.work)
+            .finish()
     }
 }
 
@@ -74,19 +93,7 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`], and
     /// [`OdeError::RhsNotFinite`] or [`OdeError::DimensionMismatch`] from the first evaluations.
     pub fn new(cfg: &Adaptive, mut f: F, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
-        check_interval(t0, t_end)?;
-        check_tol("rtol", cfg.rtol)?;
-        check_tol("atol", cfg.atol)?;
-        let h_max = cfg.h_max.unwrap_or(t_end - t0);
-        check_step(h_max)?;
-        // A step cap that cannot cover [t0, t_end] within max_steps fails now, not after
-        // max_steps evaluations (h_max = 1e-300 would otherwise spin through them).
-        if (t_end - t0) / h_max > cfg.max_steps as f64 {
-            return Err(OdeError::TooManySteps { t: t0, max_steps: cfg.max_steps });
-        }
-        if let Some(h0) = cfg.h0 {
-            check_step(h0)?;
-        }
+        let h_max = cfg.check(t0, t_end)?;
         check_state(t0, &y0)?;
         let mut work = Work::default();
         let f_now = eval(&mut f, t0, &y0, t0, 1, &mut work.fevals)?;
@@ -97,58 +104,23 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
                 t0,
                 &y0,
                 &f_now,
-                order(cfg.pair),
+                order(cfg.method),
                 h_max,
                 (cfg.rtol, cfg.atol),
                 &mut work,
             )?,
         };
+        let mut p = Progress::new(t0, y0, t_end, h_max, cfg.h_max, work);
+        p.h = h;
         Ok(Self {
             cfg: *cfg,
             f,
-            t: t0,
-            y: y0,
-            t_end,
-            h,
-            h_max,
+            p,
             k: Vec::with_capacity(16),
             f_now,
-            prev: None,
-            dense: None,
-            work,
             ln_fac_old: 1e-4f64.ln(),
             last_rejected: false,
         })
-    }
-
-    /// The current time (the end of the last accepted step).
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// The current state.
-    pub fn y(&self) -> &S {
-        &self.y
-    }
-
-    /// The start of the last accepted step (`None` right after [`Stepper::new`] or a restart).
-    pub fn step_start(&self) -> Option<f64> {
-        self.prev.as_ref().map(|p| p.0)
-    }
-
-    /// `true` once the end time has been reached.
-    pub fn done(&self) -> bool {
-        self.t >= self.t_end
-    }
-
-    /// The work so far (wall time is not measured here).
-    pub fn work(&self) -> Work {
-        self.work
-    }
-
-    /// The step size the controller proposes next.
-    pub fn proposed_step(&self) -> f64 {
-        self.h
     }
 
     /// Takes one accepted step (rejected attempts are retried inside, smaller); the last step
@@ -162,16 +134,16 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
             return Ok(());
         }
         let tol = (self.cfg.rtol, self.cfg.atol);
-        let (ord, beta, fac_min, fac_max) = match self.cfg.pair {
+        let (ord, beta, fac_min, fac_max) = match self.cfg.method {
             Pair::Dopri5 => (5.0, 0.04, 0.2, 10.0),
             Pair::Dop853 => (8.0, 0.0, 0.333, 6.0),
         };
         let expo1 = 1.0 / ord - beta * 0.75;
         let safe = 0.9;
-        let (t, t1) = (self.t, self.t_end);
-        let mut h = self.h;
+        let (t, t1) = (self.p.t, self.p.t_end);
+        let mut h = self.p.h;
         loop {
-            if self.work.accepted + self.work.rejected >= self.cfg.max_steps {
+            if self.p.work.accepted + self.p.work.rejected >= self.cfg.max_steps {
                 return Err(OdeError::TooManySteps { t, max_steps: self.cfg.max_steps });
             }
             if 0.1 * h.abs() <= t.abs() * f64::EPSILON {
@@ -184,9 +156,13 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
             }
             self.k.clear();
             self.k.push(self.f_now.clone());
-            let (y1, err) = match self.cfg.pair {
-                Pair::Dopri5 => dopri5::step(&mut self.f, t, &self.y, h, &mut self.k, tol, &mut self.work)?,
-                Pair::Dop853 => dop853::step(&mut self.f, t, &self.y, h, &mut self.k, tol, &mut self.work)?,
+            let (y1, err) = match self.cfg.method {
+                Pair::Dopri5 => {
+                    dopri5::step(&mut self.f, t, &self.p.y, h, &mut self.k, tol, &mut self.p.work)?
+                }
+                Pair::Dop853 => {
+                    dop853::step(&mut self.f, t, &self.p.y, h, &mut self.k, tol, &mut self.p.work)?
+                }
             };
             // step-size factor: fac = err^{expo1} / fac_old^β / safe, clamped; as one exp of
             // logarithms (one ln and one exp a step instead of two powf, the controller's whole
@@ -195,30 +171,26 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
             if err <= 1.0 {
                 let fac = ((expo1 * ln_err - beta * self.ln_fac_old).exp() / safe)
                     .clamp(1.0 / fac_max, 1.0 / fac_min);
-                let mut h_new = (h / fac).min(self.h_max);
+                let mut h_new = (h / fac).min(self.p.h_max);
                 if self.last_rejected {
                     h_new = h_new.min(h);
                 }
                 self.ln_fac_old = ln_err.max(1e-4f64.ln());
-                self.work.accepted += 1;
                 self.last_rejected = false;
                 let t_new = if last { t1 } else { t + h };
                 // f(t + h, y₁): FSAL stage of DOPRI5, the next k₁ (and k₁₃) for DOP853
-                let f1 = match self.cfg.pair {
+                let f1 = match self.cfg.method {
                     Pair::Dopri5 => self.k[6].clone(),
-                    Pair::Dop853 => eval(&mut self.f, t_new, &y1, t, 13, &mut self.work.fevals)?,
+                    Pair::Dop853 => eval(&mut self.f, t_new, &y1, t, 13, &mut self.p.work.fevals)?,
                 };
-                let y0 = std::mem::replace(&mut self.y, y1);
-                self.prev = Some((t, y0));
+                self.p.advance(t_new, y1);
                 self.f_now = f1;
-                self.dense = None;
-                self.t = t_new;
                 // a step cut short to land on t1 keeps the controller's proposal
-                self.h = if last { h_new.max(self.h) } else { h_new };
+                self.p.h = if last { h_new.max(self.p.h) } else { h_new };
                 return Ok(());
             }
             h /= ((expo1 * ln_err).exp() / safe).min(1.0 / fac_min);
-            self.work.rejected += 1;
+            self.p.work.rejected += 1;
             self.last_rejected = true;
         }
     }
@@ -231,18 +203,25 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     /// [`OdeError::NoDenseOutput`] before the first step or right after a restart;
     /// [`OdeError::RhsNotFinite`] from DOP853's extra stages.
     pub fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
-        if self.dense.is_none() {
-            let Some((t0, y0)) = &self.prev else { return Err(OdeError::NoDenseOutput) };
-            let h = self.t - t0;
-            let d = match self.cfg.pair {
-                Pair::Dopri5 => dopri5::dense(*t0, y0, &self.y, h, &self.k),
-                Pair::Dop853 => {
-                    dop853::dense(&mut self.f, *t0, y0, &self.y, h, &mut self.k, &self.f_now, &mut self.work)?
-                }
+        if self.p.dense.is_none() {
+            let Some((t0, y0)) = &self.p.prev else { return Err(OdeError::NoDenseOutput) };
+            let h = self.p.t - t0;
+            let d = match self.cfg.method {
+                Pair::Dopri5 => dopri5::dense(*t0, y0, &self.p.y, h, &self.k),
+                Pair::Dop853 => dop853::dense(
+                    &mut self.f,
+                    *t0,
+                    y0,
+                    &self.p.y,
+                    h,
+                    &mut self.k,
+                    &self.f_now,
+                    &mut self.p.work,
+                )?,
             };
-            self.dense = Some(d);
+            self.p.dense = Some(d);
         }
-        self.dense.as_ref().ok_or(OdeError::NoDenseOutput)
+        self.p.dense.as_ref().ok_or(OdeError::NoDenseOutput)
     }
 
     /// Continues from (t, y) after a jump of the state or of the right-hand side (an impact,
@@ -253,43 +232,12 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     /// [`OdeError::NonFiniteState`], [`OdeError::InvalidInterval`] if t is past the end,
     /// [`OdeError::RhsNotFinite`], [`OdeError::DimensionMismatch`].
     pub fn restart(&mut self, t: f64, y: S) -> Result<(), OdeError> {
-        check_interval(t, self.t_end).or_else(|e| if t == self.t_end { Ok(()) } else { Err(e) })?;
-        check_state(t, &y)?;
-        if y.dim() != self.y.dim() {
-            return Err(OdeError::DimensionMismatch {
-                what: "restarted state",
-                got: y.dim(),
-                expected: self.y.dim(),
-            });
-        }
-        self.f_now = eval(&mut self.f, t, &y, t, 1, &mut self.work.fevals)?;
-        self.t = t;
-        self.y = y;
-        self.prev = None;
-        self.dense = None;
+        self.p.check_restart(t, &y)?;
+        self.f_now = eval(&mut self.f, t, &y, t, 1, &mut self.p.work.fevals)?;
+        self.p.t = t;
+        self.p.y = y;
         self.last_rejected = false;
         Ok(())
-    }
-
-    /// Moves the end time (e.g. to stop exactly at a known discontinuity of the right-hand
-    /// side, then [`Stepper::restart`] there).
-    ///
-    /// # Errors
-    /// [`OdeError::InvalidInterval`] unless t_end > [`Stepper::t`] and finite.
-    pub fn set_end(&mut self, t_end: f64) -> Result<(), OdeError> {
-        check_interval(self.t, t_end)?;
-        self.t_end = t_end;
-        // without a cap of the user's, the cap is the interval still to go (not the first
-        // interval's length: a first piece of 1e-13 s must not cap every later step)
-        if self.cfg.h_max.is_none() {
-            self.h_max = t_end - self.t;
-        }
-        Ok(())
-    }
-
-    /// The end time.
-    pub fn end(&self) -> f64 {
-        self.t_end
     }
 }
 

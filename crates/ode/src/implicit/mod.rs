@@ -1,17 +1,24 @@
 //! Implicit and symplectic methods: Gauss–Legendre collocation (implicit midpoint, 2 and
-//! 3 stages), Störmer–Verlet, and the adaptive stiff integrator Radau IIA 5 (RADAU5).
+//! 3 stages), Störmer–Verlet, and the adaptive stiff integrators Radau IIA 5 (RADAU5) and
+//! variable-order BDF.
 //!
 //! Book: §4.11; HLW ch. II, IV, VI; HW §IV.8.
 
+mod bdf;
+mod bdf_stepper;
 mod gauss;
 mod radau5;
 mod radau_core;
 mod radau_stepper;
+mod solve;
 mod verlet;
 
+pub use bdf::{Bdf, BdfFormula};
+pub use bdf_stepper::BdfStepper;
 pub use gauss::GaussLegendre;
 pub use radau_stepper::{NoJacobian, RadauStepper};
-pub use radau5::Radau5;
+pub use radau5::{Radau5, RadauIIA};
+pub use solve::Implicit;
 pub use verlet::stormer_verlet;
 
 /// (c₁ − 1, c₂ − 1) of Radau IIA 5, for its dense output.

@@ -2,12 +2,7 @@
 //! integrator for stiff problems, with dense output and events on the same terms as
 //! [`Adaptive`](crate::Adaptive).
 
-use std::time::Instant;
-
-use super::radau_stepper::{NoJacobian, RadauStepper};
-use crate::explicit::{Event, Solution, find_events};
-use crate::state::State;
-use crate::{OdeError, Work};
+use crate::solver::Solver;
 
 /// RADAU5: the 3-stage Radau IIA collocation method (order 5, stiffly accurate, L-stable),
 /// solved by simplified Newton in the transformed variables that split the 3n×3n system
@@ -37,195 +32,37 @@ use crate::{OdeError, Work};
 ///
 /// Book: §4.11; HW = Hairer & Wanner, *Solving Ordinary Differential Equations II*,
 /// §IV.5 (Radau IIA), §IV.8 (implementation, `radau5.f`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Radau5 {
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance.
-    pub atol: f64,
-    /// Initial step (1e-6 when `None`, as `radau5.f`).
-    pub h0: Option<f64>,
-    /// Largest step (the whole interval when `None`).
-    pub h_max: Option<f64>,
-    /// Maximum number of steps (accepted + rejected).
-    pub max_steps: usize,
+pub type Radau5 = Solver<RadauIIA>;
+
+/// RADAU5's own setting: the Newton iteration cap.
+///
+/// Book: §4.11; HW §IV.8.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RadauIIA {
     /// Most Newton iterations per step (`NIT` of `radau5.f`, 7).
     pub max_newton: usize,
-    /// Record dense output for [`Solution::sample`].
-    pub dense: bool,
 }
 
-impl Default for Radau5 {
+impl Default for Solver<RadauIIA> {
     fn default() -> Self {
         Self::new()
     }
 }
 
-impl Radau5 {
+impl Solver<RadauIIA> {
     /// The defaults: rtol = 1e-6, atol = 1e-9, 7 Newton iterations, 10⁶ steps.
-    pub fn new() -> Self {
-        Self {
-            rtol: 1e-6,
-            atol: 1e-9,
-            h0: None,
-            h_max: None,
-            max_steps: 1_000_000,
-            max_newton: 7,
-            dense: false,
-        }
-    }
-    /// Relative tolerance.
-    pub fn rtol(mut self, rtol: f64) -> Self {
-        self.rtol = rtol;
-        self
-    }
-    /// Absolute tolerance.
-    pub fn atol(mut self, atol: f64) -> Self {
-        self.atol = atol;
-        self
-    }
-    /// Initial step size.
-    pub fn h0(mut self, h0: f64) -> Self {
-        self.h0 = Some(h0);
-        self
-    }
-    /// Maximum step size.
-    pub fn h_max(mut self, h_max: f64) -> Self {
-        self.h_max = Some(h_max);
-        self
-    }
-    /// Maximum number of steps.
-    pub fn max_steps(mut self, n: usize) -> Self {
-        self.max_steps = n;
-        self
+    pub const fn new() -> Self {
+        Self::with_method(RadauIIA { max_newton: 7 })
     }
     /// Most Newton iterations per step.
     pub fn max_newton(mut self, n: usize) -> Self {
-        self.max_newton = n;
+        self.method.max_newton = n;
         self
     }
-    /// Record dense output.
-    pub fn dense(mut self, dense: bool) -> Self {
-        self.dense = dense;
-        self
-    }
+}
 
-    /// Solves y′ = f(t, y), y(t0) = y0 on [t0, t1] with a finite-difference Jacobian (n
-    /// f-evaluations each, reported in [`Work::fd_jacobian_fevals`]).
-    ///
-    /// # Errors
-    /// As [`Radau5::solve_with_jacobian_and_events`].
-    pub fn solve<S: State, F: FnMut(f64, &S) -> S>(
-        &self,
-        f: F,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, None::<NoJacobian<S>>, t0, y0, t1, &mut [])
-    }
-
-    /// Solves with the Jacobian `jac(t, y, out)` writing ∂f/∂y row-major (out[i·n + j] =
-    /// ∂fᵢ/∂yⱼ).
-    ///
-    /// # Errors
-    /// As [`Radau5::solve_with_jacobian_and_events`].
-    pub fn solve_with_jacobian<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        &self,
-        f: F,
-        jac: J,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, Some(jac), t0, y0, t1, &mut [])
-    }
-
-    /// [`Radau5::solve`] with events located on the collocation polynomial.
-    ///
-    /// # Errors
-    /// As [`Radau5::solve_with_jacobian_and_events`].
-    pub fn solve_with_events<S: State, F: FnMut(f64, &S) -> S>(
-        &self,
-        f: F,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, None::<NoJacobian<S>>, t0, y0, t1, events)
-    }
-
-    /// The general form: Jacobian supplied, events located on the dense output to
-    /// |Δt| ≤ 4ε·max(1, |t|) plus the interpolant's error (order 3 in h, of the order of the
-    /// tolerance).
-    ///
-    /// # Errors
-    /// Bad input: [`OdeError::InvalidInterval`], [`OdeError::NonPositiveTolerance`],
-    /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`]; during the run:
-    /// [`OdeError::RhsNotFinite`], [`OdeError::JacobianNotFinite`],
-    /// [`OdeError::SingularIterationMatrix`], [`OdeError::NewtonStalled`],
-    /// [`OdeError::StepSizeUnderflow`], [`OdeError::TooManySteps`],
-    /// [`OdeError::DimensionMismatch`]. Each of the stiff ones names t and the state.
-    pub fn solve_with_jacobian_and_events<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        &self,
-        f: F,
-        jac: J,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError> {
-        self.run(f, Some(jac), t0, y0, t1, events)
-    }
-
-    fn run<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
-        &self,
-        f: F,
-        jac: Option<J>,
-        t0: f64,
-        y0: &S,
-        t1: f64,
-        events: &mut [Event<'_, S>],
-    ) -> Result<Solution<S>, OdeError> {
-        let start = Instant::now();
-        let mut st = RadauStepper::new(self, f, jac, t0, y0.clone(), t1)?;
-        let mut sol = Solution {
-            t: vec![t0],
-            y: vec![y0.clone()],
-            events: Vec::new(),
-            terminated: false,
-            work: Work::default(),
-            dense: Vec::new(),
-        };
-        let mut g_prev: Vec<f64> = events.iter_mut().map(|e| (e.g)(t0, y0)).collect();
-        let want_dense = self.dense || !events.is_empty();
-        while !st.done() {
-            st.step()?;
-            let (t, t_new) = (st.step_start().unwrap_or(t0), st.t());
-            let dense = if want_dense { Some(st.dense()?.clone()) } else { None };
-            if let Some(d) = &dense
-                && !events.is_empty()
-                && let Some(t_stop) = find_events(events, &mut g_prev, d, t, t_new, st.y(), &mut sol)
-            {
-                sol.t.push(t_stop);
-                sol.y.push(d.eval(t_stop));
-                sol.terminated = true;
-                if self.dense {
-                    sol.dense.push(d.clone());
-                }
-                break;
-            }
-            if self.dense
-                && let Some(d) = dense
-            {
-                sol.dense.push(d);
-            }
-            sol.t.push(t_new);
-            sol.y.push(st.y().clone());
-        }
-        sol.work = st.work();
-        sol.work.wall = start.elapsed();
-        Ok(sol)
+impl super::solve::Implicit for RadauIIA {
+    fn method(cfg: &Solver<Self>) -> crate::Method {
+        crate::Method::Radau5(*cfg)
     }
 }

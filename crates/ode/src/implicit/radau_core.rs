@@ -70,25 +70,18 @@ impl Factors {
         let e2 = Mat::<c64>::from_fn(n, n, |i, j| {
             if i == j { c64::new(alphn - jac[(i, j)], betan) } else { c64::new(-jac[(i, j)], 0.0) }
         });
-        let (e1, e2) = (e1.partial_piv_lu(), e2.partial_piv_lu());
-        let ok1 = (0..n).all(|i| {
-            let u = e1.U()[(i, i)];
-            u.is_finite() && u != 0.0
-        });
+        let e2 = e2.partial_piv_lu();
         let ok2 = (0..n).all(|i| {
             let u = e2.U()[(i, i)];
             u.re.is_finite() && u.im.is_finite() && (u.re != 0.0 || u.im != 0.0)
         });
-        (ok1 && ok2).then_some(Self { e1, e2, fac1, alphn, betan, h })
+        let e1 = lu_real(e1)?;
+        ok2.then_some(Self { e1, e2, fac1, alphn, betan, h })
     }
 
     /// x ← E₁⁻¹ x.
     pub(crate) fn solve_real(&self, x: &mut [f64]) {
-        let mut m = Mat::<f64>::from_fn(x.len(), 1, |i, _| x[i]);
-        self.e1.solve_in_place(m.as_mut());
-        for (i, xi) in x.iter_mut().enumerate() {
-            *xi = m[(i, 0)];
-        }
+        solve_real(&self.e1, x);
     }
 
     /// One simplified-Newton correction in transformed variables (`SLVRAD`): given the
@@ -110,6 +103,28 @@ impl Factors {
             z2[i] = m[(i, 0)].re;
             z3[i] = m[(i, 0)].im;
         }
+    }
+}
+
+/// The LU factors of a real matrix with partial pivoting (faer); `None` when a pivot is zero
+/// or not finite (the matrix is singular to working precision).
+pub(crate) fn lu_real(m: Mat<f64>) -> Option<PartialPivLu<f64>> {
+    let n = m.nrows();
+    let lu = m.partial_piv_lu();
+    (0..n)
+        .all(|i| {
+            let u = lu.U()[(i, i)];
+            u.is_finite() && u != 0.0
+        })
+        .then_some(lu)
+}
+
+/// x ← M⁻¹ x from the factors of M.
+pub(crate) fn solve_real(lu: &PartialPivLu<f64>, x: &mut [f64]) {
+    let mut m = Mat::<f64>::from_fn(x.len(), 1, |i, _| x[i]);
+    lu.solve_in_place(m.as_mut());
+    for (i, xi) in x.iter_mut().enumerate() {
+        *xi = m[(i, 0)];
     }
 }
 
@@ -203,4 +218,51 @@ pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
         }
         yj.as_mut_slice()[j] = ysafe;
     }
+}
+
+/// J = ∂f/∂y at (t, y) into `jm`: from the caller's `jac` (row-major, entry (i, j) at i·n + j)
+/// or, without one, by [`finite_difference`] from f0 = f(t, y); refused if any entry is not
+/// finite. Counts one Jacobian in `work`.
+///
+/// # Errors
+/// [`OdeError::JacobianNotFinite`] naming t, the entry and the state.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn jacobian_into<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
+    f: &mut F,
+    jac: Option<&mut J>,
+    t: f64,
+    y: &S,
+    f0: &[f64],
+    jm: &mut Mat<f64>,
+    work: &mut Work,
+) -> Result<(), OdeError> {
+    let n = y.dim();
+    work.jacobians += 1;
+    match jac {
+        Some(j) => {
+            let mut buf = vec![f64::NAN; n * n];
+            j(t, y, &mut buf);
+            for r in 0..n {
+                for c in 0..n {
+                    jm[(r, c)] = buf[r * n + c];
+                }
+            }
+        }
+        None => finite_difference(f, t, y, f0, jm, work),
+    }
+    for c in 0..n {
+        for r in 0..n {
+            let value = jm[(r, c)];
+            if !value.is_finite() {
+                return Err(OdeError::JacobianNotFinite {
+                    t,
+                    row: r,
+                    col: c,
+                    value,
+                    state: y.as_slice().to_vec(),
+                });
+            }
+        }
+    }
+    Ok(())
 }

@@ -5,10 +5,10 @@
 
 use faer::Mat;
 
-use super::radau_core::{C1, C2, Factors, T_MAT, TI_MAT, estimate, finite_difference, rms_scaled, transform};
+use super::radau_core::{C1, C2, Factors, T_MAT, TI_MAT, estimate, jacobian_into, rms_scaled, transform};
 use super::radau5::Radau5;
-use crate::error::{check_interval, check_step, check_tol};
-use crate::explicit::DenseStep;
+use crate::explicit::{DenseStep, Steps};
+use crate::progress::Progress;
 
 #[path = "radau_restart.rs"]
 mod restart;
@@ -39,11 +39,8 @@ pub struct RadauStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut
     cfg: Radau5,
     f: F,
     jac_fn: Option<J>,
-    t: f64,
-    y: S,
-    t_end: f64,
-    h: f64,
-    h_max: f64,
+    /// t, y, the last step, h, the end time and the work (the accessors, by `Deref`).
+    p: Progress<S>,
     /// Tolerances transformed as in `radau5.f`: rtol' = 0.1·rtol^{2/3}, atol' = rtol'·atol/rtol.
     tol: (f64, f64),
     /// Newton stopping tolerance.
@@ -66,9 +63,32 @@ pub struct RadauStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut
     hacc: f64,
     erracc: f64,
     naccpt: usize,
-    prev: Option<(f64, S)>,
-    dense: Option<DenseStep<S>>,
-    work: Work,
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref
+    for RadauStepper<S, F, J>
+{
+    type Target = Progress<S>;
+    fn deref(&self) -> &Progress<S> {
+        &self.p
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut
+    for RadauStepper<S, F, J>
+{
+    fn deref_mut(&mut self) -> &mut Progress<S> {
+        &mut self.p
+    }
+}
+
+impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> for RadauStepper<S, F, J> {
+    fn step(&mut self) -> Result<(), OdeError> {
+        RadauStepper::step(self)
+    }
+    fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
+        RadauStepper::dense(self)
+    }
 }
 
 impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug
@@ -76,9 +96,9 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt:
 {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("RadauStepper")
-            .field("t", &self.t)
-            .field("h", &self.h)
-            .field("work", &self.work)
+            .field("t", &self.p.t)
+            .field("h", &self.p.h)
+            .field("work", &self.p.work)
             .finish()
     }
 }
@@ -102,19 +122,9 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
     /// [`OdeError::TooManySteps`] when h_max cannot cover the interval, and
     /// [`OdeError::RhsNotFinite`] or [`OdeError::DimensionMismatch`] from f(t0, y0).
     pub fn new(cfg: &Radau5, mut f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
-        check_interval(t0, t_end)?;
-        check_tol("rtol", cfg.rtol)?;
-        check_tol("atol", cfg.atol)?;
-        if cfg.max_newton == 0 {
+        let h_max = cfg.check(t0, t_end)?;
+        if cfg.method.max_newton == 0 {
             return Err(OdeError::NonPositiveTolerance { name: "max_newton", value: 0.0 });
-        }
-        let h_max = cfg.h_max.unwrap_or(t_end - t0);
-        check_step(h_max)?;
-        if (t_end - t0) / h_max > cfg.max_steps as f64 {
-            return Err(OdeError::TooManySteps { t: t0, max_steps: cfg.max_steps });
-        }
-        if let Some(h0) = cfg.h0 {
-            check_step(h0)?;
         }
         check_state(t0, &y0)?;
         let mut work = Work::default();
@@ -126,10 +136,6 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
             cfg: *cfg,
             f,
             jac_fn: jac,
-            t: t0,
-            t_end,
-            h: cfg.h0.unwrap_or(1e-6).min(h_max),
-            h_max,
             tol,
             fnewt: (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt())),
             f_now,
@@ -147,50 +153,20 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
             hacc: 0.0,
             erracc: 1e-2,
             naccpt: 0,
-            prev: None,
-            dense: None,
-            work,
-            y: y0,
+            p: Progress::new(t0, y0, t_end, h_max, cfg.h_max, work),
         };
+        st.p.h = cfg.h0.unwrap_or(1e-6).min(h_max);
         st.update_scal();
         Ok(st)
     }
 
     fn update_scal(&mut self) {
         let (rtol, atol) = self.tol;
-        for (s, y) in self.scal.iter_mut().zip(self.y.as_slice()) {
+        for (s, y) in self.scal.iter_mut().zip(self.p.y.as_slice()) {
             *s = atol + rtol * y.abs();
         }
     }
 
-    /// The current time (the end of the last accepted step).
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-    /// The current state.
-    pub fn y(&self) -> &S {
-        &self.y
-    }
-    /// The start of the last accepted step (`None` right after [`RadauStepper::new`] or a restart).
-    pub fn step_start(&self) -> Option<f64> {
-        self.prev.as_ref().map(|p| p.0)
-    }
-    /// `true` once the end time has been reached.
-    pub fn done(&self) -> bool {
-        self.t >= self.t_end
-    }
-    /// The work so far (wall time is not measured here).
-    pub fn work(&self) -> Work {
-        self.work
-    }
-    /// The step size the controller proposes next.
-    pub fn proposed_step(&self) -> f64 {
-        self.h
-    }
-    /// The end time.
-    pub fn end(&self) -> f64 {
-        self.t_end
-    }
     /// `true` when the Jacobian is supplied (exact), `false` for finite differences.
     pub fn exact_jacobian(&self) -> bool {
         self.jac_fn.is_some()
@@ -198,36 +174,15 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
 
     /// J = ∂f/∂y at the current point, refused if any entry is not finite.
     fn compute_jacobian(&mut self) -> Result<(), OdeError> {
-        let n = self.y.dim();
-        self.work.jacobians += 1;
-        match self.jac_fn.as_mut() {
-            Some(j) => {
-                let mut buf = vec![f64::NAN; n * n];
-                j(self.t, &self.y, &mut buf);
-                for r in 0..n {
-                    for c in 0..n {
-                        self.jm[(r, c)] = buf[r * n + c];
-                    }
-                }
-            }
-            None => {
-                finite_difference(&mut self.f, self.t, &self.y, &self.f_now, &mut self.jm, &mut self.work)
-            }
-        }
-        for c in 0..n {
-            for r in 0..n {
-                let value = self.jm[(r, c)];
-                if !value.is_finite() {
-                    return Err(OdeError::JacobianNotFinite {
-                        t: self.t,
-                        row: r,
-                        col: c,
-                        value,
-                        state: self.y.as_slice().to_vec(),
-                    });
-                }
-            }
-        }
+        jacobian_into(
+            &mut self.f,
+            self.jac_fn.as_mut(),
+            self.p.t,
+            &self.p.y,
+            &self.f_now,
+            &mut self.jm,
+            &mut self.p.work,
+        )?;
         self.jac_fresh = true;
         self.need_jac = false;
         self.lu = None;
@@ -249,18 +204,18 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
         let (mut newton_failures, mut singular) = (0usize, 0usize);
         let mut last_error: Option<OdeError> = None;
         loop {
-            if self.work.accepted + self.work.rejected >= self.cfg.max_steps {
-                return Err(OdeError::TooManySteps { t: self.t, max_steps: self.cfg.max_steps });
+            if self.p.work.accepted + self.p.work.rejected >= self.cfg.max_steps {
+                return Err(OdeError::TooManySteps { t: self.p.t, max_steps: self.cfg.max_steps });
             }
-            let t = self.t;
-            self.h = self.h.min(self.h_max);
-            let last = t + 1.0001 * self.h >= self.t_end;
+            let t = self.p.t;
+            self.p.h = self.p.h.min(self.p.h_max);
+            let last = t + 1.0001 * self.p.h >= self.p.t_end;
             if last {
-                self.h = self.t_end - t;
+                self.p.h = self.p.t_end - t;
             }
-            let h = self.h;
+            let h = self.p.h;
             if 0.1 * h <= t.abs() * f64::EPSILON || h <= f64::MIN_POSITIVE {
-                let state = self.y.as_slice().to_vec();
+                let state = self.p.y.as_slice().to_vec();
                 return Err(if singular > 0 {
                     OdeError::SingularIterationMatrix { t, h, state }
                 } else if newton_failures > 0 {
@@ -273,7 +228,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
                 self.compute_jacobian()?;
             }
             if self.lu.as_ref().is_none_or(|l| l.h != h) {
-                self.work.factorizations += 1;
+                self.p.work.factorizations += 1;
                 self.lu = Factors::new(&self.jm, h);
                 if self.lu.is_none() {
                     singular += 1;
@@ -281,10 +236,10 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
                         return Err(OdeError::SingularIterationMatrix {
                             t,
                             h,
-                            state: self.y.as_slice().to_vec(),
+                            state: self.p.y.as_slice().to_vec(),
                         });
                     }
-                    self.h *= 0.5;
+                    self.p.h *= 0.5;
                     self.reject = true;
                     continue;
                 }
@@ -301,7 +256,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
                     }
                 }
                 Newton::Slow(fac) => {
-                    self.h *= fac;
+                    self.p.h *= fac;
                     self.reject = true;
                     self.need_jac |= !self.jac_fresh;
                 }
@@ -315,10 +270,10 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
                             t,
                             h,
                             failures: newton_failures,
-                            state: self.y.as_slice().to_vec(),
+                            state: self.p.y.as_slice().to_vec(),
                         }));
                     }
-                    self.h *= 0.5;
+                    self.p.h *= 0.5;
                     self.reject = true;
                     self.need_jac |= !self.jac_fresh;
                 }
@@ -329,7 +284,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
     /// Starting stage increments Z: zero on the first step, else the previous step's
     /// collocation polynomial extrapolated (HW (IV.8.5)).
     fn starting_values(&self, h: f64) -> [Vec<f64>; 3] {
-        let n = self.y.dim();
+        let n = self.p.y.dim();
         if self.first {
             return [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
         }
@@ -345,8 +300,8 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
     /// Simplified Newton on the transformed stage equations (HW §IV.8, `RADCOR` label 40):
     /// at most `max_newton` iterations; the contraction θ decides whether to go on.
     fn newton(&mut self, h: f64, z: &mut [Vec<f64>; 3], w: &mut [Vec<f64>; 3]) -> Newton {
-        let n = self.y.dim();
-        let nit = self.cfg.max_newton;
+        let n = self.p.y.dim();
+        let nit = self.cfg.method.max_newton;
         let nodes = [C1, C2, 1.0];
         self.faccon = self.faccon.max(f64::EPSILON).powf(0.8);
         self.theta = THET;
@@ -355,11 +310,18 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
         let Some(lu) = self.lu.as_ref() else { return Newton::Failed(None) };
         for newt in 1..=nit {
             for k in 0..3 {
-                let mut ys = self.y.clone();
+                let mut ys = self.p.y.clone();
                 for (o, zi) in ys.as_mut_slice().iter_mut().zip(&z[k]) {
                     *o += zi;
                 }
-                match eval(&mut self.f, self.t + nodes[k] * h, &ys, self.t, k + 1, &mut self.work.fevals) {
+                match eval(
+                    &mut self.f,
+                    self.p.t + nodes[k] * h,
+                    &ys,
+                    self.p.t,
+                    k + 1,
+                    &mut self.p.work.fevals,
+                ) {
                     Ok(v) => fz[k].copy_from_slice(v.as_slice()),
                     Err(e) => return Newton::Failed(Some(e)),
                 }
@@ -367,7 +329,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
             let [z1, z2, z3] = z;
             transform(&TI_MAT, [&fz[0], &fz[1], &fz[2]], [z1, z2, z3]);
             lu.solve_newton([z1, z2, z3], [&w[0], &w[1], &w[2]]);
-            self.work.newton_iterations += 1;
+            self.p.work.newton_iterations += 1;
             let dyno = ((0..3).map(|k| rms_scaled(&z[k], &self.scal).powi(2)).sum::<f64>() / 3.0).sqrt();
             if !dyno.is_finite() {
                 return Newton::Failed(None);
@@ -411,20 +373,20 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
         let err = estimate(
             &mut self.f,
             lu,
-            (self.t, &self.y, &self.f_now),
+            (self.p.t, &self.p.y, &self.f_now),
             [&z[0], &z[1], &z[2]],
             &self.scal,
             self.first || self.reject,
-            &mut self.work,
+            &mut self.p.work,
         )?;
-        let nit = self.cfg.max_newton as f64;
+        let nit = self.cfg.method.max_newton as f64;
         let fac = SAFE.min(SAFE * (1.0 + 2.0 * nit) / (newt as f64 + 2.0 * nit));
         let mut quot = (err.powf(0.25) / fac).clamp(FACR, FACL);
         let mut hnew = h / quot;
         if err >= 1.0 {
             self.reject = true;
-            self.h = if self.first { 0.1 * h } else { hnew };
-            self.work.rejected += 1;
+            self.p.h = if self.first { 0.1 * h } else { hnew };
+            self.p.work.rejected += 1;
             self.need_jac |= !self.jac_fresh;
             return Ok(false);
         }
@@ -437,9 +399,9 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
         self.hacc = h;
         self.erracc = err.max(1e-2);
         // the step's end and the collocation polynomial through it (`RADCOR` after 'accepted')
-        let n = self.y.dim();
+        let n = self.p.y.dim();
         let (c1m1, c2m1, c1mc2) = (C1 - 1.0, C2 - 1.0, C1 - C2);
-        let mut y1 = self.y.clone();
+        let mut y1 = self.p.y.clone();
         for (i, o) in y1.as_mut_slice().iter_mut().enumerate() {
             *o += z[2][i];
             let (z1, z2, z3) = (z[0][i], z[1][i], z[2][i]);
@@ -451,19 +413,15 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
             self.cont[1][i] = c2;
             self.cont[2][i] = c2 - acont3;
         }
-        let t_new = if last { self.t_end } else { self.t + h };
-        let f1 = eval(&mut self.f, t_new, &y1, self.t, 4, &mut self.work.fevals)?;
+        let t_new = if last { self.p.t_end } else { self.p.t + h };
+        let f1 = eval(&mut self.f, t_new, &y1, self.p.t, 4, &mut self.p.work.fevals)?;
         debug_assert_eq!(f1.dim(), n);
         self.f_now.copy_from_slice(f1.as_slice());
-        let y0 = std::mem::replace(&mut self.y, y1);
-        self.prev = Some((self.t, y0));
-        self.t = t_new;
-        self.dense = None;
-        self.work.accepted += 1;
+        self.p.advance(t_new, y1);
         self.update_scal();
         self.first = false;
         self.hold = h;
-        hnew = hnew.min(self.h_max);
+        hnew = hnew.min(self.p.h_max);
         if self.reject {
             hnew = hnew.min(h);
         }
@@ -471,9 +429,9 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
         self.jac_fresh = false;
         let qt = hnew / h;
         if self.theta <= THET && (1.0..=1.2).contains(&qt) && !last {
-            self.h = h; // same h, same J and LU
+            self.p.h = h; // same h, same J and LU
         } else {
-            self.h = hnew;
+            self.p.h = hnew;
             self.need_jac = self.theta > THET;
         }
         Ok(true)
