@@ -246,3 +246,36 @@ fn an_aircraft_scene_view_shows_the_aircraft() {
     }
     assert!(largest > 1e-4, "the doublet pitches the jet: largest |θ| = {largest}");
 }
+
+/// A `cylinder` mass (solid, axis along the link z axis) has the closed-form inertia
+/// J_x = J_y = m(3r² + h²)/12, J_z = m r²/2 (the free body's mass matrix, relative 1e-15) and
+/// is drawn as a cylinder of its radius and length.
+#[test]
+fn a_cylinder_has_its_closed_form_inertia_and_is_drawn_with_its_dimensions() {
+    let text = "name = \"can\"\nduration = 1.0\nsamples = 10\n[[bodies]]\nname = \"can\"\njoint = { type = \"free\" }\n\
+mass = { shape = \"cylinder\", mass = 2.0, radius = 0.3, length = 1.2 }\nv = [0.0, 0.0, 0.0, 0.1, 0.2, 3.0]\n";
+    let scene = vectrix::scene::Scene::from_toml(text, "can.toml").unwrap();
+    let m = scene.query(0.0, &scene.initial_state()).unwrap().mass_matrix;
+    let (mass, r, h) = (2.0_f64, 0.3_f64, 1.2_f64);
+    let want = [
+        mass,
+        mass,
+        mass,
+        mass * (3.0 * r * r + h * h) / 12.0,
+        mass * (3.0 * r * r + h * h) / 12.0,
+        mass * r * r / 2.0,
+    ];
+    for (k, w) in want.iter().enumerate() {
+        assert!((m[(k, k)] - w).abs() <= 1e-15 * w, "M[{k}][{k}] = {} vs {w}", m[(k, k)]);
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("can.toml");
+    std::fs::write(&p, text).unwrap();
+    let out = dir.path().join("out");
+    cli(&["run", p.to_str().unwrap(), "--quiet", "--out", out.to_str().unwrap()]).unwrap();
+    let d = data(&std::fs::read_to_string(out.join("can/view.html")).unwrap());
+    assert_eq!(
+        d["bodies"][0]["shape"],
+        serde_json::json!({ "kind": "cylinder", "radius": 0.3, "length": 1.2 })
+    );
+}

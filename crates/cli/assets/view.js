@@ -35,6 +35,7 @@ function shapeSize(s) {
   switch (s.kind) {
     case 'box': return Math.max(...s.sides);
     case 'sphere': case 'disk': return 2 * s.radius;
+    case 'cylinder': return Math.max(2 * s.radius, s.length);
     case 'rod': return s.length;
     case 'aircraft': return s.span;
     default: return 0;
@@ -106,6 +107,8 @@ function bodyMesh(b, color) {
       mesh.rotation.z = -Math.PI / 2; break; // cylinder axis y → link x
     case 'disk': mesh = new THREE.Mesh(new THREE.CylinderGeometry(s.radius, s.radius, 0.06 * s.radius, 48), m);
       mesh.rotation.x = Math.PI / 2; break; // cylinder axis y → link z
+    case 'cylinder': mesh = new THREE.Mesh(new THREE.CylinderGeometry(s.radius, s.radius, s.length, 48), m);
+      mesh.rotation.x = Math.PI / 2; break; // axis y → link z
     case 'particle': mesh = new THREE.Mesh(new THREE.SphereGeometry(0.025 * L, 20, 10), m); break;
     case 'massless': mesh = new THREE.Mesh(new THREE.SphereGeometry(0.012 * L, 12, 6), new THREE.MeshBasicMaterial({ color, wireframe: true })); break;
     case 'aircraft': { // fuselage along x, wing along y, fins; drawn in M-flipped body axes (z up)

@@ -70,6 +70,9 @@ fn shape(m: &MassSpec) -> Value {
         MassSpec::Box { sides, .. } => json!({ "kind": "box", "sides": sides.map(r7) }),
         MassSpec::Rod { length, .. } => json!({ "kind": "rod", "length": r7(*length) }),
         MassSpec::Disk { radius, .. } => json!({ "kind": "disk", "radius": r7(*radius) }),
+        MassSpec::Cylinder { radius, length, .. } => {
+            json!({ "kind": "cylinder", "radius": r7(*radius), "length": r7(*length) })
+        }
         // an aircraft body: the glyph of the flight view, in the link's own aircraft axes
         // (z down), sized by the catalogue's span
         MassSpec::Aircraft { model } => {

@@ -212,6 +212,11 @@ fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), (&'static str, String
             let (m, l) = (pos(*mass, "mass")?, pos(*length, "length")?);
             (m, Matrix3::from_diagonal(&Vector3::new(0.0, m * l * l / 12.0, m * l * l / 12.0)))
         }
+        MassSpec::Cylinder { mass, radius, length } => {
+            let (m, r, h) = (pos(*mass, "mass")?, pos(*radius, "radius")?, pos(*length, "length")?);
+            let jt = m * (3.0 * r * r + h * h) / 12.0;
+            (m, Matrix3::from_diagonal(&Vector3::new(jt, jt, m * r * r / 2.0)))
+        }
         MassSpec::Disk { mass, radius } => {
             let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
             (m, Matrix3::from_diagonal(&Vector3::new(m * r * r / 4.0, m * r * r / 4.0, m * r * r / 2.0)))

@@ -289,6 +289,16 @@ pub enum MassSpec {
         /// Radius [m].
         radius: f64,
     },
+    /// Solid circular cylinder with its axis along the link z axis: J_z = m r²/2,
+    /// J_x = J_y = m (3 r² + h²)/12.
+    Cylinder {
+        /// Mass [kg].
+        mass: f64,
+        /// Radius [m].
+        radius: f64,
+        /// Length h along the link z axis [m].
+        length: f64,
+    },
     /// The airframe of a catalogue aircraft: its mass and inertia (11.3.6) in SI, about the
     /// centre of mass, in the aircraft axes (x forward, y right, z down).
     Aircraft {
