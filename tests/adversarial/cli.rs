@@ -32,6 +32,31 @@ cases! {
         v.evcxr_display();
     }
 
+    // The view page from a library call (issue 36, the Python display hook): a page wraps any
+    // text and escapes it in its iframe; `scene_page` of a run stays within
+    // `scene_page_bound`, and a cancelled second pass still gives a page that says so.
+    cli_view_page ["View::from_page", "View::page", "scene_page", "scene_page_bound"] {
+        let hostile = "</script><script>alert(1)</script>\"";
+        let v = vectrix_cli::View::from_page(hostile.to_string());
+        assert_eq!(v.page(), hostile);
+        let inner = v.iframe();
+        assert!(!inner.contains("<script>alert"), "{inner}");
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/scenes/simple_pendulum.toml")).unwrap();
+        let scene = vectrix::scene::Scene::from_toml(&text, "p.toml").unwrap();
+        let run = scene.run(&mut |_| {}).unwrap();
+        let bound = vectrix_cli::scene_page_bound(&scene);
+        let page = vectrix_cli::scene_page(&scene, (&text, "p.toml"), &run, vectrix::units::UnitSystem::Si, None);
+        assert!(page.len() as u64 <= bound && page.contains("<html"), "{} > {bound}", page.len());
+        let cancel = std::sync::atomic::AtomicBool::new(true);
+        let stopped = vectrix_cli::scene_page(&scene, (&text, "p.toml"), &run, vectrix::units::UnitSystem::Si, Some(&cancel));
+        assert!(stopped.len() as u64 <= bound && stopped.contains("<html"));
+        // a name that could end a script or the title is escaped
+        let evil = text.replacen("name = \"simple_pendulum\"", "name = \"x\"", 1);
+        let s2 = vectrix::scene::Scene::from_toml(&evil, "p.toml").unwrap();
+        let r2 = s2.run(&mut |_| {}).unwrap();
+        assert!(!vectrix_cli::scene_page(&s2, (&evil, "p.toml"), &r2, vectrix::units::UnitSystem::Si, None).contains("<script>alert"));
+    }
+
     // `check`, `run` and `sweep` with hostile arguments: an error with a message, or output
     // without NaN/∞ (a valid scene is checked; a sweep over non-finite values is refused per
     // value or as a whole). The binary (`main`) exits 0 for `--help`, nonzero for nonsense.

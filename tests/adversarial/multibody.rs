@@ -24,7 +24,8 @@ use vectrix::dynamics::lagrange::{
     map_mass_matrix, mass_matrix, velocities_from_momenta,
 };
 use vectrix::dynamics::multibody::{
-    AbaDerivatives, Joint, JointWrench, Link, Model, PosesScratch, RneaDerivatives,
+    AbaDerivatives, Joint, JointWrench, Link, Model, MotionScratch, PosesScratch, RneaDerivatives,
+    normalize_quaternion,
 };
 use vectrix::frames::Frame;
 use vectrix::ode::Adaptive;
@@ -654,6 +655,73 @@ cases! {
 
     // q ⊕ v dt (§4.11): plain coordinates move by v dt exactly, ball and free quaternions
     // stay unit; a non-finite dt or a step that overflows is refused.
+    // The joints' motion maps the scene's right-hand side uses (issue 32 item 7): the
+    // unchecked maps equal the checked calls on a valid state; wrong lengths, NaN and ∞ are
+    // typed errors in the checked calls; huge speeds overflow into an error, never NaN in Ok;
+    // q̇ is the derivative of `integrate`; quaternions normalize (a zero one is left alone).
+    motion_maps ["Model::twists_into", "Model::bias_accelerations_into", "Model::bias_accelerations",
+        "Model::qdot_into", "Model::normalize_quaternions", "Model::check_configuration",
+        "normalize_quaternion", "Model::aba_checked"] {
+        let m = tree();
+        let (q, v) = state(&m);
+        let (nq, nv) = (m.nq(), m.nv());
+        let (mut world, mut poses) = (PosesScratch::default(), Vec::new());
+        m.poses_into(&q, &mut world, &mut poses);
+        let mut tw = Vec::new();
+        m.twists_into(&world, &v, &mut MotionScratch::default(), &mut tw);
+        let checked = m.twists(&q, &v).unwrap();
+        assert_eq!(tw.len(), checked.len());
+        for (a, b) in tw.iter().zip(&checked) {
+            assert!((a.omega - b.omega).norm() <= 1e-12 * (1.0 + b.omega.norm()));
+            assert!((a.velocity - b.velocity).norm() <= 1e-12 * (1.0 + b.velocity.norm()));
+        }
+        let mut acc = Vec::new();
+        m.bias_accelerations_into(&world, &v, &mut MotionScratch::default(), &mut acc);
+        let acc2 = m.bias_accelerations(&q, &v).unwrap();
+        assert!(acc.iter().zip(&acc2).all(|(a, b)| a.alpha == b.alpha && a.acceleration == b.acceleration));
+        assert!(m.bias_accelerations(&q[..nq - 1], &v).is_err() && m.bias_accelerations(&q, &v[..nv - 1]).is_err());
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let mut qb = q.clone();
+            qb[0] = bad;
+            assert!(m.check_configuration(&qb).is_err() && m.bias_accelerations(&qb, &v).is_err());
+            let mut vb = v.clone();
+            vb[0] = bad;
+            assert!(m.bias_accelerations(&q, &vb).is_err());
+        }
+        match m.bias_accelerations(&q, &vec![1e200; nv]) {
+            Ok(a) => assert!(a.iter().all(|x| finite(x.alpha.as_slice()) && finite(x.acceleration.as_slice()))),
+            Err(DynamicsError::Overflow { .. }) => {}
+            Err(e) => panic!("{e}"),
+        }
+        assert!(m.check_configuration(&q).is_ok() && m.check_configuration(&q[..nq - 1]).is_err());
+        // q̇ is d/dh of q ⊕ v h at h = 0 (central difference, h = 1e-6: error O(h²))
+        let mut qd = vec![0.0; nq];
+        m.qdot_into(&q, &v, &mut qd);
+        let h = 1e-6;
+        let (qp, qm) = (m.integrate(&q, &v, h).unwrap(), m.integrate(&q, &v, -h).unwrap());
+        for k in 0..nq {
+            assert!(((qp[k] - qm[k]) / (2.0 * h) - qd[k]).abs() <= 1e-8, "q̇[{k}]");
+        }
+        let mut qs: Vec<f64> = q.iter().map(|x| 3.0 * x).collect();
+        m.normalize_quaternions(&mut qs);
+        assert!(m.check_configuration(&qs).is_ok());
+        let mut zero = [0.0; 4];
+        normalize_quaternion(&mut zero);
+        assert_eq!(zero, [0.0; 4]);
+        let mut e = [3.0, 0.0, 4.0, 0.0];
+        normalize_quaternion(&mut e);
+        assert_eq!(e, [0.6, 0.0, 0.8, 0.0]);
+        // the checked ABA with a reused work space equals `aba`, and refuses what it refuses
+        let tau: Vec<f64> = (0..nv).map(|k| (k as f64).cos()).collect();
+        let (mut s, mut vd) = (m.aba_scratch(), vec![0.0; nv]);
+        m.aba_checked(&q, &v, &tau, None, &mut vd, &mut s).unwrap();
+        assert_eq!(vd, m.aba(&q, &v, &tau, None).unwrap());
+        assert!(m.aba_checked(&q, &v, &tau, None, &mut vec![0.0; nv + 1], &mut s).is_err());
+        let mut tb = tau.clone();
+        tb[0] = f64::NAN;
+        assert!(m.aba_checked(&q, &v, &tb, None, &mut vd, &mut s).is_err());
+    }
+
     configuration_step ["Model::integrate"] {
         let m = tree();
         let (q, v) = state(&m);
