@@ -218,5 +218,9 @@ pub fn model_scene_toml(file_name: &str, is_mjcf: bool) -> String {
         stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).take(64).collect();
     let key = if is_mjcf { "mjcf" } else { "urdf" };
     let quoted = toml::Value::String(file_name.to_string());
-    format!("name = \"{name}\"\nduration = 2.0\n\n[model]\n{key} = {quoted}\ngravity = true\n")
+    // the neutral configuration is projected onto the model's loops (a gear with an offset, a
+    // weld): a model alone starts assembled, as MuJoCo's solver pulls its equalities closed
+    format!(
+        "name = \"{name}\"\nduration = 2.0\nassemble = true\n\n[model]\n{key} = {quoted}\ngravity = true\n"
+    )
 }
