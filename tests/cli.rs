@@ -168,9 +168,10 @@ fn run_check_and_sweep_aircraft_scene() {
     assert!(imperial.contains("wrote"));
     let csv_ft = std::fs::read_to_string(dest.join("trajectory.csv")).unwrap();
     assert!(csv_ft.starts_with("t [s],velocity_body:jet.u [ft/s]"));
-    // u(0) is the file's 675.124 ft/s, in SI and back, to rounding
+    // u(0) is the file's 400 kt (1852/3600 m/s per knot, 0.3048 m per foot, both exact), to rounding
     let u0 = |c: &str| -> f64 { c.lines().nth(1).unwrap().split(',').nth(1).unwrap().parse().unwrap() };
-    assert!((u0(&csv_ft) - 675.124).abs() <= 1e-9, "{}", u0(&csv_ft));
+    let kt400_ft = 400.0 * 1852.0 / 3600.0 / 0.3048;
+    assert!((u0(&csv_ft) - kt400_ft).abs() <= 1e-9, "{}", u0(&csv_ft));
     assert!((u0(&csv) - u0(&csv_ft) * 0.3048).abs() <= 4.0 * f64::EPSILON * u0(&csv));
     // an aircraft scene sweeps like any other: two doublet amplitudes, each run trimmed
     let swept = cli(&["sweep", &p, "--param", "effects.1.elevator.amplitude=0.005,0.01", "--out", &out_dir]);

@@ -14,8 +14,8 @@ import numpy as np
 import vectrix
 
 SCENE = Path(__file__).resolve().parents[2] / "examples/scenes/business_jet_doublet.toml"
-# U0 = 400 kt as Table 14.1 prints it, 675.124 ft/s (the example scene's speed), in m/s
-U0 = 675.124 * 0.3048
+# U0 = 400 kt (Table 14.1; the example scene's speed), in m/s (the knot is exactly 1852/3600 m/s)
+U0 = 400 * 1852.0 / 3600.0
 # the doublet off (the trimmed flight itself), 60 s in 600 intervals
 STEADY = {"effects.1.elevator.amplitude": 0.0, "duration": 60.0, "samples": 600}
 
