@@ -722,6 +722,73 @@ cases! {
         assert!(m.aba_checked(&q, &v, &tb, None, &mut vd, &mut s).is_err());
     }
 
+    // a joint's own layout (Table 1.3) is the layout the model gives it: for every joint, even
+    // with a zero or non-finite axis (which the model refuses), the counts are those of a model
+    // built with a good axis, and the indices fall inside the coordinates
+    joint_layout ["Joint::nq", "Joint::nv", "Joint::quaternion_index", "Joint::angle_index", "Joint::layout"] {
+        let (x, y, z0, nan) = (Vector3::x(), Vector3::y(), Vector3::zeros(), Vector3::repeat(f64::NAN));
+        for axis in [x, z0, nan] {
+            let joints = [
+                (Joint::Pin { axis }, Joint::Pin { axis: x }),
+                (Joint::Sleeve { axis }, Joint::Sleeve { axis: x }),
+                (Joint::Collar { axis }, Joint::Collar { axis: x }),
+                (Joint::Slot { axis, direction: y }, Joint::Slot { axis: x, direction: y }),
+                (Joint::Ball, Joint::Ball),
+                (Joint::Weld, Joint::Weld),
+                (Joint::Free, Joint::Free),
+            ];
+            for (j, good) in joints {
+                let link = Link::new(None, good, Vector3::zeros(), 1.0, Vector3::zeros(), Matrix3::identity());
+                let m = Model::new(&[link]).unwrap();
+                assert_eq!((j.nq(), j.nv()), (m.nq(), m.nv()), "{j:?}");
+                assert!(j.quaternion_index().is_none_or(|k| k + 4 <= j.nq()), "{j:?}");
+                assert!(j.angle_index().is_none_or(|k| k < j.nv()), "{j:?}");
+                let (lq, lv) = j.layout();
+                assert!(lq.starts_with("q = [") && lv.starts_with("v = ["), "{j:?}");
+                // a bad axis is refused by the model, not by the layout queries
+                if axis != x && !matches!(j, Joint::Ball | Joint::Weld | Joint::Free) {
+                    let bad = Link::new(None, j, Vector3::zeros(), 1.0, Vector3::zeros(), Matrix3::identity());
+                    assert!(Model::new(&[bad]).is_err(), "{j:?}");
+                }
+            }
+        }
+    }
+
+    // the compiled q̇ map gives exactly what `qdot_into` gives, on the test tree (pin, slot, ball)
+    // and on a free body carrying a collar (runs of 3 and 2 copies, a quaternion), on NaN and huge
+    // entries too (they pass through as the unplanned map passes them; the checked calls refuse them)
+    qdot_plan ["Model::qdot_plan", "QdotPlan::apply"] {
+        let free = Model::new(&[
+            Link::new(None, Joint::Free, Vector3::zeros(), 1.0, Vector3::zeros(), Matrix3::identity()),
+            Link::new(Some(0), Joint::Collar { axis: Vector3::z() }, Vector3::x(), 1.0, Vector3::zeros(), Matrix3::identity()),
+        ])
+        .unwrap();
+        for m in [free, tree()] {
+        let m = &m;
+        let (q, v) = state(m);
+        let plan = m.qdot_plan();
+        let (mut a, mut b) = (vec![0.0; m.nq()], vec![0.0; m.nq()]);
+        m.qdot_into(&q, &v, &mut a);
+        plan.apply(&q, &v, &mut b);
+        assert_eq!(a, b);
+        for bad in [f64::NAN, f64::INFINITY, 1e300] {
+            let (mut qb, mut vb) = (q.clone(), v.clone());
+            qb[1] = bad;
+            vb[0] = bad;
+            m.qdot_into(&qb, &vb, &mut a);
+            plan.apply(&qb, &vb, &mut b);
+            assert_eq!(format!("{a:?}"), format!("{b:?}"));
+            assert!(m.check_configuration(&qb).is_err() || bad.is_finite());
+        }
+        // longer buffers are fine (only the model's coordinates are written)
+        let mut long = vec![7.0; m.nq() + 2];
+        plan.apply(&q, &v, &mut long);
+        m.qdot_into(&q, &v, &mut a);
+        assert_eq!(&long[..m.nq()], &a[..]);
+        assert_eq!(&long[m.nq()..], &[7.0, 7.0]);
+        }
+    }
+
     configuration_step ["Model::integrate"] {
         let m = tree();
         let (q, v) = state(&m);

@@ -179,7 +179,7 @@ fn effort_table(out: &mut impl Write, points: &[Point]) -> Result<(), BoxError> 
 /// Rigid body: drift off SO(3) (|q| − 1 or |RR̄| − 1), of T and of |H| at the finest run.
 fn drift_table(out: &mut impl Write, points: &[Point]) -> Result<(), BoxError> {
     writeln!(out, "### Rigid body: drift at the most accurate run of each method (t = 20)\n")?;
-    writeln!(out, "| method | error of ω | steps or rtol | off SO(3) | ΔT/T | Δ|H|/|H| |")?;
+    writeln!(out, "| method | error of ω | steps or rtol | off SO(3) | ΔT/T | Δ\\|H\\|/\\|H\\| |")?;
     writeln!(out, "|---|---|---|---|---|---|")?;
     for m in methods(points, "rigid body") {
         let best = points

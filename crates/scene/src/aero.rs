@@ -24,8 +24,8 @@ use vectrix_tensor::Scalar;
 use vectrix_units::UnitSystem;
 
 use super::Scene;
-use super::build::{Body, Effect};
 use super::kin::{Kin, lift, lift33};
+use super::parts::{Body, Effect};
 
 /// The aircraft of the catalogue, by the name a scene gives in `aircraft = "…"` (an `aero`
 /// effect) and `model = "…"` (an `aircraft` mass).

@@ -3,267 +3,15 @@
 //!
 //! Book: §7.11 (trees), §6.1–6.2 (mass properties), §1.5 (joints).
 
-use nalgebra::{Matrix3, Rotation3, Unit, Vector3};
+use nalgebra::{Matrix3, Rotation3, Unit};
 
 use super::SceneError;
+use super::mass::mass_props;
+use super::parts::{Body, Effect, Src, v3};
 use super::resolve::{direction, effect, loop_joint};
-use super::source::{SceneSource, check_name};
-use super::spec::{JointSpec, MassSpec, Profile, SceneSpec};
-use vectrix_dynamics::multibody::{Joint, Link, Model};
-
-/// A body after validation: indices, offsets and mass properties in link components.
-#[derive(Debug, Clone)]
-pub(crate) struct Body {
-    pub name: String,
-    pub parent: Option<usize>,
-    pub joint: JointSpec,
-    /// 𝓞_{J/P}: joint frame relative to the parent link frame.
-    pub orient: Matrix3<f64>,
-    pub mass: f64,
-    pub com: Vector3<f64>,
-    pub inertia: Matrix3<f64>,
-    pub qi: usize,
-    pub vi: usize,
-}
-
-pub(crate) use super::kin::At;
-
-/// Effects with names resolved.
-#[derive(Debug, Clone)]
-pub(crate) enum Effect {
-    /// Enters the model as its base acceleration (no per-body work in the right-hand side).
-    Uniform {
-        g: Vector3<f64>,
-    },
-    Central {
-        mu: f64,
-        centre: Vector3<f64>,
-    },
-    Mutual {
-        g: f64,
-    },
-    Spring {
-        a: At,
-        b: At,
-        k: f64,
-        d: f64,
-    },
-    Dashpot {
-        a: At,
-        b: At,
-        c: f64,
-    },
-    Inerter {
-        a: At,
-        b: At,
-        b_in: f64,
-    },
-    RotSpring {
-        dof: usize,
-        kappa: f64,
-        angle: f64,
-    },
-    RotDashpot {
-        dof: usize,
-        xi: f64,
-    },
-    RotInerter {
-        dof: usize,
-        beta: f64,
-    },
-    Dipoles {
-        list: Vec<(usize, Vector3<f64>)>,
-    },
-    Force {
-        at: At,
-        dir: Vector3<f64>,
-        profile: Profile,
-    },
-    Torque {
-        body: usize,
-        dir: Vector3<f64>,
-        profile: Profile,
-    },
-    Spheres {
-        a: usize,
-        b: usize,
-        ra: f64,
-        rb: f64,
-        e: f64,
-        mu: f64,
-    },
-    /// A joint stop: q[qi] ∈ [lower, upper] (±∞ for none), speed v[vi], restitution e.
-    JointStop {
-        qi: usize,
-        vi: usize,
-        lower: f64,
-        upper: f64,
-        e: f64,
-    },
-    Plane {
-        body: usize,
-        r: f64,
-        point: Vector3<f64>,
-        n: Vector3<f64>,
-        e: f64,
-        mu: f64,
-    },
-    Rolling {
-        body: usize,
-        disk: bool,
-        r: f64,
-        point: Vector3<f64>,
-        n: Vector3<f64>,
-    },
-    /// An aircraft's aerodynamics on a free body (see [`super::aero`]).
-    Aero {
-        body: usize,
-        aircraft: Box<vectrix_flight::Aircraft>,
-        /// δe, δa, δr.
-        controls: Box<[Profile; 3]>,
-    },
-    /// Thrust along the tilted x axis of a body, at its centre of mass.
-    Thrust {
-        body: usize,
-        profile: Profile,
-        angle: f64,
-    },
-}
-
-/// Errors are located by item path in the spanned document.
-pub(crate) type Src<'a> = SceneSource<'a>;
-
-/// (nq, nv) of a joint.
-pub(crate) fn dims(j: &JointSpec) -> (usize, usize) {
-    match j {
-        JointSpec::Pin { .. } | JointSpec::Sleeve { .. } => (1, 1),
-        JointSpec::Collar { .. } | JointSpec::Slot { .. } => (2, 2),
-        JointSpec::Ball {} => (4, 3),
-        JointSpec::Weld {} => (0, 0),
-        JointSpec::Free {} => (7, 6),
-    }
-}
-
-/// The q and v layouts of a joint, as documented in docs/scenes.md.
-pub(crate) fn layout(j: &JointSpec) -> (&'static str, &'static str) {
-    match j {
-        JointSpec::Pin { .. } => ("q = [θ] rad", "v = [θ̇] rad/s"),
-        JointSpec::Sleeve { .. } => ("q = [s] m", "v = [ṡ] m/s"),
-        JointSpec::Collar { .. } | JointSpec::Slot { .. } => ("q = [s m, θ rad]", "v = [ṡ m/s, θ̇ rad/s]"),
-        JointSpec::Ball {} => {
-            ("q = [η, ε₁, ε₂, ε₃] (unit quaternion)", "v = [ω₁, ω₂, ω₃] rad/s in the link frame")
-        }
-        JointSpec::Weld {} => ("q = [] (no coordinates)", "v = []"),
-        JointSpec::Free {} => (
-            "q = [x, y, z m, η, ε₁, ε₂, ε₃]",
-            "v = [ẋ, ẏ, ż m/s in the joint frame, ω₁, ω₂, ω₃ rad/s in the link frame]",
-        ),
-    }
-}
-
-/// Index of the quaternion among a joint's coordinates, if it has one.
-pub(crate) fn quat_index(j: &JointSpec) -> Option<usize> {
-    match j {
-        JointSpec::Ball {} => Some(0),
-        JointSpec::Free {} => Some(3),
-        _ => None,
-    }
-}
-
-/// Index of the rotation angle among a joint's velocity coordinates, if it has one angle.
-pub(crate) fn angle_dof(j: &JointSpec) -> Option<usize> {
-    match j {
-        JointSpec::Pin { .. } => Some(0),
-        JointSpec::Collar { .. } | JointSpec::Slot { .. } => Some(1),
-        _ => None,
-    }
-}
-
-pub(crate) fn v3(a: [f64; 3]) -> Vector3<f64> {
-    Vector3::new(a[0], a[1], a[2])
-}
-
-/// Mass m and J_{B/c} (link components) of a mass spec; on error the offending key and why.
-///
-/// Book: §6.1–6.2 (inertia of shapes); an inertia matrix must be symmetric and positive
-/// semidefinite with principal moments obeying the triangle inequality J₁ ≤ J₂ + J₃ (§6.4).
-fn mass_props(m: &MassSpec) -> Result<(f64, Matrix3<f64>), (&'static str, String)> {
-    let pos = |x: f64, what: &'static str| {
-        if x > 0.0 && x.is_finite() {
-            Ok(x)
-        } else {
-            Err((what, format!("{what} = {x}; valid: a finite number > 0")))
-        }
-    };
-    let (mass, j) = match m {
-        MassSpec::Particle { mass } => (pos(*mass, "mass")?, Matrix3::zeros()),
-        MassSpec::Massless {} => (0.0, Matrix3::zeros()),
-        MassSpec::Sphere { mass, radius } => {
-            let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
-            (m, Matrix3::identity() * (0.4 * m * r * r))
-        }
-        MassSpec::Box { mass, sides } => {
-            let m = pos(*mass, "mass")?;
-            let [a, b, c] = [pos(sides[0], "sides")?, pos(sides[1], "sides")?, pos(sides[2], "sides")?];
-            let d = Vector3::new(b * b + c * c, a * a + c * c, a * a + b * b) * (m / 12.0);
-            (m, Matrix3::from_diagonal(&d))
-        }
-        MassSpec::Rod { mass, length } => {
-            let (m, l) = (pos(*mass, "mass")?, pos(*length, "length")?);
-            (m, Matrix3::from_diagonal(&Vector3::new(0.0, m * l * l / 12.0, m * l * l / 12.0)))
-        }
-        MassSpec::Cylinder { mass, radius, length } => {
-            let (m, r, h) = (pos(*mass, "mass")?, pos(*radius, "radius")?, pos(*length, "length")?);
-            let jt = m * (3.0 * r * r + h * h) / 12.0;
-            (m, Matrix3::from_diagonal(&Vector3::new(jt, jt, m * r * r / 2.0)))
-        }
-        MassSpec::Disk { mass, radius } => {
-            let (m, r) = (pos(*mass, "mass")?, pos(*radius, "radius")?);
-            (m, Matrix3::from_diagonal(&Vector3::new(m * r * r / 4.0, m * r * r / 4.0, m * r * r / 2.0)))
-        }
-        MassSpec::Aircraft { model } => {
-            let ac = super::aero::catalogue(model).ok_or(("model", super::aero::unknown_aircraft(model)))?;
-            (ac.airframe.mass(), ac.airframe.inertia_matrix())
-        }
-        MassSpec::Value { mass, principal, matrix } => {
-            let m = pos(*mass, "mass")?;
-            let (key, j) = match (principal, matrix) {
-                (Some(p), None) => ("principal", Matrix3::from_diagonal(&v3(*p))),
-                (None, Some(r)) => ("matrix", Matrix3::from_fn(|i, j| r[i][j])),
-                _ => return Err(("mass", "give exactly one of `principal` or `matrix`".into())),
-            };
-            check_inertia(&j).map_err(|msg| (key, msg))?;
-            (m, j)
-        }
-    };
-    if !j.iter().all(|x| x.is_finite()) {
-        return Err((
-            "mass",
-            "the inertia overflows; valid: mass and size whose product m·l² is finite".into(),
-        ));
-    }
-    Ok((mass, j))
-}
-
-/// A given inertia matrix must be symmetric and positive semidefinite with principal moments
-/// obeying the triangle inequality (a physical body, §6.4).
-fn check_inertia(j: &Matrix3<f64>) -> Result<(), String> {
-    let scale = j.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let tol = 64.0 * f64::EPSILON * scale;
-    if (j - j.transpose()).iter().any(|x| x.abs() > tol) {
-        return Err("the inertia matrix is not symmetric; valid: rows of a symmetric matrix".into());
-    }
-    let mut p: Vec<f64> = j.symmetric_eigenvalues().iter().copied().collect();
-    p.sort_by(f64::total_cmp);
-    if p[0] < -tol || p[2] > p[0] + p[1] + tol {
-        return Err(format!(
-            "principal moments {:?} are not those of a body; valid: each ≥ 0 and the largest ≤ the sum of the \
-             other two (§6.4)",
-            p
-        ));
-    }
-    Ok(())
-}
+use super::source::check_name;
+use super::spec::{JointSpec, MassSpec, SceneSpec};
+use vectrix_dynamics::multibody::{Link, Model};
 
 /// Checks every number of the spec is finite (TOML admits `inf` and `nan`).
 /// The largest magnitude a number of a scene may have (SI): products of two such numbers stay
@@ -328,121 +76,134 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
     let body_of = |name: &str, path: &str| -> Result<usize, SceneError> {
         index(name, path)?.ok_or_else(|| src.invalid(path, "the ground cannot move; valid: a body name"))
     };
-    let mut bodies = Vec::new();
+    let mut bodies = Vec::with_capacity(spec.bodies.len());
     let (mut nq, mut nv) = (0, 0);
-    for (i, b) in spec.bodies.iter().enumerate() {
-        let path = format!("bodies[{i}]");
-        check_name(&b.name, "body name", false).map_err(|m| src.invalid(format!("{path}.name"), m))?;
-        if b.name == "ground" || names[..i].contains(&b.name.as_str()) {
-            return Err(src.invalid(
-                format!("{path}.name"),
-                format!(
-                    "body name `{}` is reserved or repeated; valid: a new name other than `ground`",
-                    b.name
-                ),
-            ));
-        }
-        let parent = index(&b.parent, &format!("{path}.parent"))?;
-        if parent == Some(i) {
-            return Err(src.invalid(
-                format!("{path}.parent"),
-                "a body cannot be its own parent; joints must form a tree",
-            ));
-        }
-        let orient = match (&b.frame, &b.orientation) {
-            // issue 35 (import): a joint frame turned in its parent, 𝓞_{J/P} = Rᵀ
-            (None, Some(rows)) => {
-                super::import::orientation(rows).map_err(|m| src.invalid(format!("{path}.orientation"), m))?
-            }
-            (Some(_), Some(_)) => {
-                return Err(src.invalid(
-                    format!("{path}.orientation"),
-                    "both `frame` and `orientation`; valid: one of them",
-                ));
-            }
-            (None, None) => Matrix3::identity(),
-            (Some(f), None) => {
-                let k = spec.frames.iter().position(|x| &x.name == f).ok_or_else(|| {
-                    src.invalid(
-                        format!("{path}.frame"),
-                        format!("unknown frame `{f}`; declare it in [[frames]]"),
-                    )
-                })?;
-                let fr = &spec.frames[k];
-                let axis =
-                    direction(fr.axis).filter(|(_, n)| *n > 1e-12).map(|(d, _)| Unit::new_unchecked(d));
-                let axis = axis.ok_or_else(|| {
-                    src.invalid(format!("frames[{k}].axis"), "zero axis; valid: a nonzero vector")
-                })?;
-                // 𝓞_{J/G} = 𝓡ᵀ of the active rotation of the ground axes
-                Rotation3::from_axis_angle(&axis, fr.angle).matrix().transpose()
-            }
-        };
-        let (mass, inertia) =
-            mass_props(&b.mass).map_err(|(k, m)| src.invalid(format!("{path}.mass.{k}"), m))?;
-        if matches!(b.mass, MassSpec::Massless {}) && !spec.bodies.iter().any(|c| c.parent == b.name) {
-            return Err(src.invalid(
-                format!("{path}.mass"),
-                format!(
-                    "`{}` is massless and carries no body: its motion is undetermined; valid: a massless link \
-                     only between its parent and another body (a gimbal ring, an arm), else give it a mass",
-                    b.name
-                ),
-            ));
-        }
-        let (jq, jv) = dims(&b.joint);
-        // a joint's axis and groove must be directions: refused at the key itself
-        let axes: Vec<(&str, &[f64; 3])> = match &b.joint {
-            JointSpec::Pin { axis } | JointSpec::Sleeve { axis } | JointSpec::Collar { axis } => {
-                vec![("axis", axis)]
-            }
-            JointSpec::Slot { axis, direction } => vec![("axis", axis), ("direction", direction)],
-            _ => vec![],
-        };
-        for (key, a) in axes {
-            if !direction(*a).is_some_and(|(_, n)| n > 1e-12) {
-                return Err(src.invalid(
-                    format!("bodies[{i}].joint.{key}"),
-                    format!("{key} = {a:?} has no direction; valid: a nonzero vector"),
-                ));
-            }
-        }
-        bodies.push(Body {
-            name: b.name.clone(),
-            parent,
-            joint: b.joint.clone(),
-            orient,
-            mass,
-            com: v3(b.com),
-            inertia,
-            qi: nq,
-            vi: nv,
-        });
-        nq += jq;
-        nv += jv;
+    for i in 0..spec.bodies.len() {
+        let b = body(spec, i, (nq, nv), &index, src)?;
+        (nq, nv) = (nq + b.joint.nq(), nv + b.joint.nv());
+        bodies.push(b);
     }
+    let mut model = model_of(spec, &bodies, src)?;
+    let (q0, v0) = initial_state(spec, &bodies, &model, src)?;
+    let effects = spec
+        .effects
+        .iter()
+        .enumerate()
+        .map(|(i, e)| effect(e, &format!("effects[{i}]"), &bodies, &index, &body_of, src))
+        .collect::<Result<Vec<_>, _>>()?;
+    for e in &effects {
+        if let Effect::Uniform { g } = e {
+            model.gravity += g;
+        }
+    }
+    let loops = spec
+        .loops
+        .iter()
+        .enumerate()
+        .map(|(i, l)| loop_joint(l, &format!("loops[{i}]"), &index, (&model, &bodies), &q0, src))
+        .collect::<Result<Vec<_>, _>>()?;
+    check_loop_names(spec, &names, src)?;
+    Ok(Built { model, bodies, effects, loops, q0, v0 })
+}
+
+/// Body `i` of the spec, validated, its coordinates starting at (qi, vi).
+fn body(
+    spec: &SceneSpec,
+    i: usize,
+    (qi, vi): (usize, usize),
+    index: &super::resolve::Index,
+    src: &Src,
+) -> Result<Body, SceneError> {
+    let b = &spec.bodies[i];
+    let path = format!("bodies[{i}]");
+    check_name(&b.name, "body name", false).map_err(|m| src.invalid(format!("{path}.name"), m))?;
+    if b.name == "ground" || spec.bodies[..i].iter().any(|x| x.name == b.name) {
+        return Err(src.invalid(
+            format!("{path}.name"),
+            format!("body name `{}` is reserved or repeated; valid: a new name other than `ground`", b.name),
+        ));
+    }
+    let parent = index(&b.parent, &format!("{path}.parent"))?;
+    if parent == Some(i) {
+        return Err(
+            src.invalid(format!("{path}.parent"), "a body cannot be its own parent; joints must form a tree")
+        );
+    }
+    let orient = joint_orientation(spec, i, src)?;
+    let (mass, inertia) = mass_props(&b.mass).map_err(|(k, m)| src.invalid(format!("{path}.mass.{k}"), m))?;
+    if matches!(b.mass, MassSpec::Massless {}) && !spec.bodies.iter().any(|c| c.parent == b.name) {
+        return Err(src.invalid(
+            format!("{path}.mass"),
+            format!(
+                "`{}` is massless and carries no body: its motion is undetermined; valid: a massless link \
+                 only between its parent and another body (a gimbal ring, an arm), else give it a mass",
+                b.name
+            ),
+        ));
+    }
+    // a joint's axis and groove must be directions: refused at the key itself
+    let axes: Vec<(&str, &[f64; 3])> = match &b.joint {
+        JointSpec::Pin { axis } | JointSpec::Sleeve { axis } | JointSpec::Collar { axis } => {
+            vec![("axis", axis)]
+        }
+        JointSpec::Slot { axis, direction } => vec![("axis", axis), ("direction", direction)],
+        _ => vec![],
+    };
+    for (key, a) in axes {
+        if !direction(*a).is_some_and(|(_, n)| n > 1e-12) {
+            return Err(src.invalid(
+                format!("{path}.joint.{key}"),
+                format!("{key} = {a:?} has no direction; valid: a nonzero vector"),
+            ));
+        }
+    }
+    let joint = super::parts::joint_of(&b.joint);
+    Ok(Body { name: b.name.clone(), parent, joint, orient, mass, com: v3(b.com), inertia, qi, vi })
+}
+
+/// 𝓞_{J/P} of body `i`'s joint frame: from its `orientation` rows (issue 35, imported models),
+/// a named frame of `[[frames]]`, or the identity.
+fn joint_orientation(spec: &SceneSpec, i: usize, src: &Src) -> Result<Matrix3<f64>, SceneError> {
+    let (b, path) = (&spec.bodies[i], format!("bodies[{i}]"));
+    match (&b.frame, &b.orientation) {
+        // issue 35 (import): a joint frame turned in its parent, 𝓞_{J/P} = Rᵀ
+        (None, Some(rows)) => {
+            super::import::orientation(rows).map_err(|m| src.invalid(format!("{path}.orientation"), m))
+        }
+        (Some(_), Some(_)) => {
+            Err(src
+                .invalid(format!("{path}.orientation"), "both `frame` and `orientation`; valid: one of them"))
+        }
+        (None, None) => Ok(Matrix3::identity()),
+        (Some(f), None) => {
+            let k = spec.frames.iter().position(|x| &x.name == f).ok_or_else(|| {
+                src.invalid(format!("{path}.frame"), format!("unknown frame `{f}`; declare it in [[frames]]"))
+            })?;
+            let fr = &spec.frames[k];
+            let axis = direction(fr.axis).filter(|(_, n)| *n > 1e-12).map(|(d, _)| Unit::new_unchecked(d));
+            let axis = axis.ok_or_else(|| {
+                src.invalid(format!("frames[{k}].axis"), "zero axis; valid: a nonzero vector")
+            })?;
+            // 𝓞_{J/G} = 𝓡ᵀ of the active rotation of the ground axes
+            Ok(Rotation3::from_axis_angle(&axis, fr.angle).matrix().transpose())
+        }
+    }
+}
+
+/// The multibody model of the validated bodies; its refusals (a cycle, a joint's geometry)
+/// located at the body's key.
+fn model_of(spec: &SceneSpec, bodies: &[Body], src: &Src) -> Result<Model, SceneError> {
     let links: Vec<Link> = spec
         .bodies
         .iter()
-        .zip(&bodies)
+        .zip(bodies)
         .map(|(s, b)| {
-            let joint = match s.joint {
-                JointSpec::Pin { axis } => Joint::Pin { axis: v3(axis) },
-                JointSpec::Sleeve { axis } => Joint::Sleeve { axis: v3(axis) },
-                JointSpec::Collar { axis } => Joint::Collar { axis: v3(axis) },
-                JointSpec::Slot { axis, direction } => {
-                    Joint::Slot { axis: v3(axis), direction: v3(direction) }
-                }
-                JointSpec::Ball {} => Joint::Ball,
-                JointSpec::Weld {} => Joint::Weld,
-                JointSpec::Free {} => Joint::Free,
-            };
-            let mut l = Link::new(b.parent, joint, v3(s.offset), b.mass, b.com, b.inertia);
+            let mut l = Link::new(b.parent, b.joint, v3(s.offset), b.mass, b.com, b.inertia);
             l.orientation = b.orient;
             l
         })
         .collect();
-    let model = Model::new(&links).map_err(|e| {
+    Model::new(&links).map_err(|e| {
         use vectrix_dynamics::DynamicsError as D;
         // a cycle is in the parents; a bad axis or geometry in the joint
         let (i, key) = match &e {
@@ -459,16 +220,26 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             _ => format!("{e} (joints must form a tree)"),
         };
         src.invalid(format!("bodies[{i}].{key}"), message)
-    })?;
+    })
+}
+
+/// The initial state (q₀, v₀): the model's neutral configuration with each body's `q` and `v`
+/// written over it, quaternions normalized.
+fn initial_state(
+    spec: &SceneSpec,
+    bodies: &[Body],
+    model: &Model,
+    src: &Src,
+) -> Result<(Vec<f64>, Vec<f64>), SceneError> {
     let mut q0 = model.neutral();
     let mut v0 = vec![0.0; model.nv()];
-    for (i, (s, b)) in spec.bodies.iter().zip(&bodies).enumerate() {
-        let (jq, jv) = dims(&b.joint);
+    for (i, (s, b)) in spec.bodies.iter().zip(bodies).enumerate() {
+        let (jq, jv) = (b.joint.nq(), b.joint.nv());
         if let Some(q) = &s.q {
             if q.len() != jq {
                 return Err(src.invalid(
                     format!("bodies[{i}].q"),
-                    format!("{} values; valid: {jq} for this joint ({})", q.len(), layout(&b.joint).0),
+                    format!("{} values; valid: {jq} for this joint ({})", q.len(), b.joint.layout().0),
                 ));
             }
             q0[b.qi..b.qi + jq].copy_from_slice(q);
@@ -477,13 +248,13 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             if v.len() != jv {
                 return Err(src.invalid(
                     format!("bodies[{i}].v"),
-                    format!("{} values; valid: {jv} for this joint ({})", v.len(), layout(&b.joint).1),
+                    format!("{} values; valid: {jv} for this joint ({})", v.len(), b.joint.layout().1),
                 ));
             }
             v0[b.vi..b.vi + jv].copy_from_slice(v);
         }
         // a quaternion must be nonzero; it is normalized
-        if let Some(k) = quat_index(&b.joint) {
+        if let Some(k) = b.joint.quaternion_index() {
             let qq = &mut q0[b.qi + k..b.qi + k + 4];
             let n = qq.iter().map(|x| x * x).sum::<f64>().sqrt();
             if !(n > 1e-150 && n.is_finite()) {
@@ -495,24 +266,11 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             qq.iter_mut().for_each(|x| *x /= n);
         }
     }
-    let effects = spec
-        .effects
-        .iter()
-        .enumerate()
-        .map(|(i, e)| effect(e, &format!("effects[{i}]"), &bodies, &index, &body_of, src))
-        .collect::<Result<Vec<_>, _>>()?;
-    let mut model = model;
-    for e in &effects {
-        if let Effect::Uniform { g } = e {
-            model.gravity += g;
-        }
-    }
-    let loops = spec
-        .loops
-        .iter()
-        .enumerate()
-        .map(|(i, l)| loop_joint(l, &format!("loops[{i}]"), &index, (&model, &bodies), &q0, src))
-        .collect::<Result<Vec<_>, _>>()?;
+    Ok((q0, v0))
+}
+
+/// Loop names are valid, unique, and name no body.
+fn check_loop_names(spec: &SceneSpec, names: &[&str], src: &Src) -> Result<(), SceneError> {
     for (i, l) in spec.loops.iter().enumerate() {
         check_name(l.name(), "loop name", false).map_err(|m| src.invalid(format!("loops[{i}].name"), m))?;
         if spec.loops[..i].iter().any(|x| x.name() == l.name()) || names.contains(&l.name()) {
@@ -522,5 +280,5 @@ pub(crate) fn build(spec: &SceneSpec, src: &Src) -> Result<Built, SceneError> {
             ));
         }
     }
-    Ok(Built { model, bodies, effects, loops, q0, v0 })
+    Ok(())
 }

@@ -32,8 +32,8 @@ use serde::Serialize;
 use vectrix_ode::explicit::{DenseStep, bracket_zero};
 
 use super::Scene;
-use super::build::Effect;
 use super::kin::{Kin, kinematics};
+use super::parts::Effect;
 
 /// Segments every step is first cut into when its contacts are scanned.
 pub(crate) const SCAN_SEGMENTS: usize = 4;
@@ -61,6 +61,24 @@ pub(crate) struct Gap {
     pub opening: f64,
     /// The contact's size (r_a + r_b, or r).
     pub size: f64,
+}
+
+/// +1 when the nearer stop is the lower one (the gap opens with q̇ > 0), −1 for the upper.
+pub(crate) fn side(q: f64, lower: f64, upper: f64) -> f64 {
+    if q - lower <= upper - q { 1.0 } else { -1.0 }
+}
+
+/// The gap of a stop at (q, q̇): min(q − lower, upper − q), following q itself.
+pub(crate) fn stop_gap(q: f64, v: f64, lower: f64, upper: f64) -> Gap {
+    let finite = |x: f64| if x.is_finite() { x.abs() } else { 0.0 };
+    Gap {
+        gap: (q - lower).min(upper - q),
+        pos: Vector3::new(q, 0.0, 0.0),
+        rate: Vector3::new(v, 0.0, 0.0),
+        opening: side(q, lower, upper) * v,
+        // the scale of the tolerances: 1 rad (or m), or the stops' own size
+        size: 1.0_f64.max(finite(lower)).max(finite(upper)),
+    }
 }
 
 /// What happened at a contact.
@@ -146,7 +164,7 @@ impl Scene {
                     Some(Gap { gap, pos: n * x.dot(n), rate: n * opening, opening, size: *r })
                 }
                 Effect::JointStop { qi, vi, lower, upper, .. } => {
-                    Some(super::stops::stop_gap(y[*qi], y[self.built.model.nq() + vi], *lower, *upper))
+                    Some(stop_gap(y[*qi], y[self.built.model.nq() + vi], *lower, *upper))
                 }
                 _ => None,
             })

@@ -254,3 +254,30 @@ pub struct DipoleSpec {
     /// Moment m (link components), in units where μ₀/4π = 1.
     pub moment: [f64; 3],
 }
+
+impl EffectSpec {
+    /// The effect's profiles with their keys (`profile`, or an aircraft's `elevator`,
+    /// `aileron`, `rudder`), in input order: each is one input of a linearization or trim.
+    pub(crate) fn profiles(&self) -> Vec<(&'static str, &Profile)> {
+        use EffectSpec as E;
+        match self {
+            E::Force { profile, .. } | E::Torque { profile, .. } | E::Thrust { profile, .. } => {
+                vec![("profile", profile)]
+            }
+            E::Aero { elevator, aileron, rudder, .. } => {
+                vec![("elevator", elevator), ("aileron", aileron), ("rudder", rudder)]
+            }
+            _ => vec![],
+        }
+    }
+
+    /// [`Self::profiles`], mutable.
+    pub(crate) fn profiles_mut(&mut self) -> Vec<&mut Profile> {
+        use EffectSpec as E;
+        match self {
+            E::Force { profile, .. } | E::Torque { profile, .. } | E::Thrust { profile, .. } => vec![profile],
+            E::Aero { elevator, aileron, rudder, .. } => vec![elevator, aileron, rudder],
+            _ => vec![],
+        }
+    }
+}

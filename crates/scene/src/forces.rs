@@ -9,8 +9,8 @@ use vectrix_frames::Frame;
 use vectrix_statics::{CentralGravity, Dashpot, Spring, dipole_interaction, dipole_potential};
 use vectrix_tensor::Scalar;
 
-use super::build::{Body, Effect};
 use super::kin::{Kin, lift};
+use super::parts::{Body, Effect};
 use vectrix_dynamics::multibody::JointWrench;
 
 /// World vector ↔ frame-free vector through the ground frame, in the scalar of an evaluation.
@@ -45,6 +45,16 @@ impl<T: Scalar> Loads<'_, T> {
             self.wrenches[i].moment += e * (p - r).cross(f);
         }
     }
+    /// Force f (ground) at body i's centre of mass, `com` its link components: the link
+    /// wrench is (𝓞 f, com × 𝓞 f), without going through the ground point.
+    #[inline]
+    pub fn force_at_centre(&mut self, i: usize, com: &Vector3<f64>, f: &Vector3<T>) {
+        let fl = self.kin.poses[i].0 * f;
+        self.wrenches[i].force += fl;
+        if *com != Vector3::zeros() {
+            self.wrenches[i].moment += lift::<T>(com).cross(&fl);
+        }
+    }
     /// Pure torque (ground components) on body i.
     pub fn torque(&mut self, i: usize, m: &Vector3<T>) {
         let e = self.kin.poses[i].0;
@@ -54,7 +64,7 @@ impl<T: Scalar> Loads<'_, T> {
 
 /// Ground position of a body's centre of mass.
 pub(crate) fn centre<T: Scalar>(kin: &Kin<T>, b: &Body, i: usize) -> Vector3<T> {
-    kin.point(&(Some(i), b.com)).0
+    kin.position(&(Some(i), b.com))
 }
 
 /// Adds every declared force effect at time t (uniform gravity is the model's; impacts,
@@ -87,29 +97,12 @@ pub(crate) fn apply<T: Scalar>(
                 for (i, b) in bodies.iter().enumerate() {
                     let x = centre(loads.kin, b, i);
                     let f = g.res(&cg.force(c(b.mass), &g.vec(&(x - lift(x0)))).map_err(err)?);
-                    loads.force(Some(i), &x, &f);
+                    loads.force_at_centre(i, &b.com, &f);
                 }
             }
-            Effect::Mutual { g: gc } => {
-                for i in 0..bodies.len() {
-                    for j in i + 1..bodies.len() {
-                        let (xi, xj) = (centre(loads.kin, &bodies[i], i), centre(loads.kin, &bodies[j], j));
-                        let pair = vectrix_statics::mutual_gravitation(
-                            c(*gc),
-                            c(bodies[i].mass),
-                            c(bodies[j].mass),
-                            &g.vec(&(xi - xj)),
-                        )
-                        .map_err(err)?;
-                        let f = g.res(&pair.on_y);
-                        loads.force(Some(i), &xi, &f);
-                        loads.force(Some(j), &xj, &(-f));
-                    }
-                }
-            }
+            Effect::Mutual { g: gc } => mutual(bodies, g, c(*gc), loads)?,
             Effect::Spring { a, b, k, d } => {
-                let (pa, _) = loads.kin.point(a);
-                let (pb, _) = loads.kin.point(b);
+                let (pa, pb) = (loads.kin.position(a), loads.kin.position(b));
                 let f =
                     g.res(&Spring::new(c(*k), c(*d)).map_err(err)?.force(&g.vec(&(pb - pa))).map_err(err)?);
                 loads.force(b.0, &pb, &f);
@@ -131,27 +124,9 @@ pub(crate) fn apply<T: Scalar>(
                 loads.tau[*dof] -= c(*kappa) * (q_angle(*dof) - c(*angle))
             }
             Effect::RotDashpot { dof, xi } => loads.tau[*dof] -= c(*xi) * v[*dof],
-            Effect::Dipoles { list } => {
-                for (x, (bi, mi)) in list.iter().enumerate() {
-                    for (bj, mj) in &list[x + 1..] {
-                        let (ei, ej) = (loads.kin.poses[*bi].0, loads.kin.poses[*bj].0);
-                        let (zi, zj) =
-                            (centre(loads.kin, &bodies[*bi], *bi), centre(loads.kin, &bodies[*bj], *bj));
-                        let p = dipole_interaction(
-                            &g.vec(&(ei.transpose() * lift::<T>(mi))),
-                            &g.vec(&(ej.transpose() * lift::<T>(mj))),
-                            &g.vec(&(zi - zj)),
-                        )
-                        .map_err(err)?;
-                        loads.force(Some(*bi), &zi, &g.res(&p.force_on_z));
-                        loads.force(Some(*bj), &zj, &g.res(&p.force_on_y));
-                        loads.torque(*bi, &g.res(&p.torque_on_z));
-                        loads.torque(*bj, &g.res(&p.torque_on_y));
-                    }
-                }
-            }
+            Effect::Dipoles { list } => dipoles(list, bodies, g, loads)?,
             Effect::Force { at, dir, profile } => {
-                let (p, _) = loads.kin.point(at);
+                let p = loads.kin.position(at);
                 let f = lift::<T>(dir) * magnitude(profile.eval(t));
                 loads.force(at.0, &p, &f);
             }
@@ -164,7 +139,7 @@ pub(crate) fn apply<T: Scalar>(
                 let f_t = magnitude(profile.eval(t));
                 let e = loads.kin.poses[*body].0;
                 let f = e.tr_mul(&Vector3::new(c(angle.cos()), T::zero(), c(-angle.sin()))) * f_t;
-                loads.force(Some(*body), &centre(loads.kin, &bodies[*body], *body), &f);
+                loads.force_at_centre(*body, &bodies[*body].com, &f);
             }
             Effect::Aero { body, aircraft, controls } => {
                 // at α̇ = β̇ = 0; the rate terms are solved after ABA (`aero::aero_rates`)
@@ -182,6 +157,58 @@ pub(crate) fn apply<T: Scalar>(
             | Effect::Plane { .. }
             | Effect::JointStop { .. }
             | Effect::Rolling { .. } => {}
+        }
+    }
+    Ok(())
+}
+
+/// Newton's gravitation between every pair of bodies (centres of mass), constant `gc`.
+///
+/// Book: (6.12.1) (gravitation).
+fn mutual<T: Scalar>(bodies: &[Body], g: &Ground<T>, gc: T, loads: &mut Loads<T>) -> Result<(), String> {
+    let err = |e: vectrix_statics::StaticsError| e.to_string();
+    for i in 0..bodies.len() {
+        for j in i + 1..bodies.len() {
+            let (xi, xj) = (centre(loads.kin, &bodies[i], i), centre(loads.kin, &bodies[j], j));
+            let pair = vectrix_statics::mutual_gravitation(
+                gc,
+                T::lit(bodies[i].mass),
+                T::lit(bodies[j].mass),
+                &g.vec(&(xi - xj)),
+            )
+            .map_err(err)?;
+            let f = g.res(&pair.on_y);
+            loads.force_at_centre(i, &bodies[i].com, &f);
+            loads.force_at_centre(j, &bodies[j].com, &(-f));
+        }
+    }
+    Ok(())
+}
+
+/// The forces and torques between every pair of magnetic dipoles (moments fixed in their
+/// bodies, at the centres of mass).
+///
+/// Book: (6.13.11), (6.13.18) (dipoles).
+fn dipoles<T: Scalar>(
+    list: &[(usize, Vector3<f64>)],
+    bodies: &[Body],
+    g: &Ground<T>,
+    loads: &mut Loads<T>,
+) -> Result<(), String> {
+    for (x, (bi, mi)) in list.iter().enumerate() {
+        for (bj, mj) in &list[x + 1..] {
+            let (ei, ej) = (loads.kin.poses[*bi].0, loads.kin.poses[*bj].0);
+            let (zi, zj) = (centre(loads.kin, &bodies[*bi], *bi), centre(loads.kin, &bodies[*bj], *bj));
+            let p = dipole_interaction(
+                &g.vec(&(ei.transpose() * lift::<T>(mi))),
+                &g.vec(&(ej.transpose() * lift::<T>(mj))),
+                &g.vec(&(zi - zj)),
+            )
+            .map_err(|e| e.to_string())?;
+            loads.force_at_centre(*bi, &bodies[*bi].com, &g.res(&p.force_on_z));
+            loads.force_at_centre(*bj, &bodies[*bj].com, &g.res(&p.force_on_y));
+            loads.torque(*bi, &g.res(&p.torque_on_z));
+            loads.torque(*bj, &g.res(&p.torque_on_y));
         }
     }
     Ok(())

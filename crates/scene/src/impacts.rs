@@ -7,8 +7,8 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::Scene;
-use super::build::Effect;
 use super::kin::Kin;
+use super::parts::Effect;
 
 /// Tangential speed below which friction does nothing.
 const STICK_EPS: f64 = 1e-12;

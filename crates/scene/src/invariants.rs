@@ -8,10 +8,11 @@ use nalgebra::Vector3;
 use serde::Serialize;
 
 use super::Scene;
-use super::build::{Built, Effect};
+use super::build::Built;
 use super::forces::{Ground, centre, potential};
 use super::kin::{Kin, lift, lift33};
-use super::spec::JointSpec;
+use super::parts::Effect;
+use vectrix_dynamics::multibody::Joint;
 use vectrix_tensor::Scalar;
 
 /// A conservation law implied by the declared effects.
@@ -57,8 +58,8 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
     for body in &b.bodies {
         if body.parent.is_none() {
             match body.joint {
-                JointSpec::Free {} => {}
-                JointSpec::Ball {} => points.push(Vector3::zeros()), // pivot at the ground origin + offset below
+                Joint::Free => {}
+                Joint::Ball => points.push(Vector3::zeros()), // pivot at the ground origin + offset below
                 _ => external_force = true,
             }
         }
@@ -67,7 +68,7 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
     if let Ok(p) = b.model.poses(&b.q0) {
         let mut k = 0;
         for (i, body) in b.bodies.iter().enumerate() {
-            if body.parent.is_none() && matches!(body.joint, JointSpec::Ball {}) {
+            if body.parent.is_none() && matches!(body.joint, Joint::Ball) {
                 points[k] = p[i].1;
                 k += 1;
             }
@@ -86,46 +87,9 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
         }
     }
     for e in &b.effects {
-        match e {
-            Effect::Uniform { g } => uniform = Some(uniform.unwrap_or_default() + g),
-            Effect::Central { centre, .. } => points.push(*centre),
-            Effect::Spring { a, b: bb, .. } | Effect::Inerter { a, b: bb, .. } => {
-                for end in [a, bb] {
-                    if end.0.is_none() {
-                        points.push(end.1);
-                    }
-                }
-            }
-            Effect::Dashpot { a, b: bb, .. } => {
-                conservative = false;
-                for end in [a, bb] {
-                    if end.0.is_none() {
-                        points.push(end.1);
-                    }
-                }
-            }
-            Effect::RotSpring { .. } | Effect::RotInerter { .. } => external_force = true,
-            Effect::RotDashpot { .. } => {
-                conservative = false;
-                external_force = true;
-            }
-            Effect::Force { .. } | Effect::Torque { .. } | Effect::Aero { .. } | Effect::Thrust { .. } => {
-                conservative = false;
-                external_force = true;
-            }
-            Effect::Spheres { e, mu, .. } => conservative &= *e == 1.0 && *mu == 0.0,
-            Effect::Plane { e, mu, .. } => {
-                conservative &= *e == 1.0 && *mu == 0.0;
-                external_force = true;
-            }
-            Effect::Rolling { .. } => external_force = true,
-            // a stop acts through a joint torque (as a rotational spring does)
-            Effect::JointStop { e, .. } => {
-                conservative &= *e == 1.0;
-                external_force = true;
-            }
-            Effect::Mutual { .. } | Effect::Dipoles { .. } => {}
-        }
+        let t = effect_terms(e, &mut points, &mut uniform);
+        conservative &= t.0;
+        external_force |= t.1;
     }
     let mut out = Vec::new();
     if conservative {
@@ -153,6 +117,47 @@ pub(crate) fn derive(b: &Built) -> Vec<Invariant> {
         Some(_) => out.push(Invariant::AngularMomentum { about: about.into() }),
     }
     out
+}
+
+/// What one effect implies: (conservative, a force on the system not through one fixed
+/// point); the fixed points its external forces pass through and the uniform field it adds.
+fn effect_terms(
+    e: &Effect,
+    points: &mut Vec<Vector3<f64>>,
+    uniform: &mut Option<Vector3<f64>>,
+) -> (bool, bool) {
+    let ground_ends = |ends: [&super::parts::At; 2], points: &mut Vec<Vector3<f64>>| {
+        points.extend(ends.into_iter().filter(|end| end.0.is_none()).map(|end| end.1))
+    };
+    match e {
+        Effect::Uniform { g } => {
+            *uniform = Some(uniform.unwrap_or_default() + g);
+            (true, false)
+        }
+        Effect::Central { centre, .. } => {
+            points.push(*centre);
+            (true, false)
+        }
+        Effect::Spring { a, b, .. } | Effect::Inerter { a, b, .. } => {
+            ground_ends([a, b], points);
+            (true, false)
+        }
+        Effect::Dashpot { a, b, .. } => {
+            ground_ends([a, b], points);
+            (false, false)
+        }
+        Effect::RotSpring { .. } | Effect::RotInerter { .. } => (true, true),
+        Effect::RotDashpot { .. } => (false, true),
+        Effect::Force { .. } | Effect::Torque { .. } | Effect::Aero { .. } | Effect::Thrust { .. } => {
+            (false, true)
+        }
+        Effect::Spheres { e, mu, .. } => (*e == 1.0 && *mu == 0.0, false),
+        Effect::Plane { e, mu, .. } => (*e == 1.0 && *mu == 0.0, true),
+        Effect::Rolling { .. } => (true, true),
+        // a stop acts through a joint torque (as a rotational spring does)
+        Effect::JointStop { e, .. } => (*e == 1.0, true),
+        Effect::Mutual { .. } | Effect::Dipoles { .. } => (true, false),
+    }
 }
 
 impl Scene {

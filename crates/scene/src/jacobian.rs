@@ -12,8 +12,8 @@ use vectrix_tensor::Scalar;
 
 use super::kin::{Kin, kinematics_into};
 use super::rhs::RhsScratch;
-use super::spec::JointSpec;
 use super::{Scene, SceneError};
+use vectrix_dynamics::multibody::Joint;
 
 /// g's value, ∂g/∂x and ∂g/∂u.
 type DualColumns = (Vec<f64>, DMatrix<f64>, DMatrix<f64>);
@@ -123,7 +123,7 @@ impl Scene {
     /// Book: §5.x (transport theorem), §12.5 (steady turning flight).
     pub(crate) fn body_axis_rates<T: Scalar>(&self, kin: &Kin<T>, vd: &mut [T]) {
         for (i, b) in self.built.bodies.iter().enumerate() {
-            if !matches!(b.joint, JointSpec::Free {}) || b.parent.is_some() {
+            if !matches!(b.joint, Joint::Free) || b.parent.is_some() {
                 continue;
             }
             let e = kin.poses[i].0;

@@ -55,6 +55,16 @@ pub(crate) fn kinematics_into<T: Scalar>(model: &Model<T>, q: &[T], v: &[T], kin
     kin.set_velocities(model, v);
 }
 
+/// The poses alone at q into a reused [`Kin`] (no twists: its velocities are left empty), for
+/// loads that read positions only (gravitation, springs, applied forces); unchecked, in any
+/// scalar.
+pub(crate) fn poses_into<T: Scalar>(model: &Model<T>, q: &[T], kin: &mut Kin<T>) {
+    model.poses_into(q, &mut kin.world, &mut kin.poses);
+    kin.omega.clear();
+    kin.vel.clear();
+    kin.v.clear();
+}
+
 impl<T: Scalar> Kin<T> {
     /// An empty buffer for [`kinematics_into`].
     pub fn empty() -> Self {
@@ -78,6 +88,18 @@ impl<T: Scalar> Kin<T> {
         self.vel.extend(self.twists.iter().map(|t| t.velocity));
         self.v.clear();
         self.v.extend_from_slice(&v[..model.nv()]);
+    }
+
+    /// Ground position of a point fixed in a body (or in the ground); needs the poses only.
+    #[inline]
+    pub fn position(&self, at: &At) -> Vector3<T> {
+        match at.0 {
+            None => lift(&at.1),
+            Some(i) => {
+                let (e, r) = self.poses[i];
+                r + e.tr_mul(&lift::<T>(&at.1))
+            }
+        }
     }
 
     /// Ground position and velocity of a point fixed in a body (or in the ground).

@@ -34,9 +34,12 @@ mod linearize;
 mod loop_spec;
 mod loops;
 mod many;
+mod mass;
 mod migrate;
+mod needs;
 mod outcome;
 mod outputs;
+mod parts;
 mod profile;
 mod project;
 mod quantities;
@@ -45,6 +48,7 @@ mod resolve;
 mod resting;
 mod rhs;
 mod run;
+mod sampling;
 mod source;
 pub mod spec;
 mod stiff;
@@ -66,15 +70,18 @@ pub use quantities::{
 };
 pub use query::StateQuery;
 pub use rhs::SceneRhs;
-pub use run::{DEFAULT_MAX_WALL_SECONDS, MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE};
+pub use run::DEFAULT_MAX_WALL_SECONDS;
+pub use sampling::{MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE};
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
 pub use stiff::{MethodChoice, RADAU5_TOL_FACTOR, STIFF_RATIO, STIFF_RHO_DURATION};
 pub use trim::{TRIM_TOL, TrimReport};
 
-use build::{Built, Src, build};
+use build::{Built, build};
 use forces::Ground;
+use needs::Needs;
 use outputs::Output;
+use parts::Src;
 use vectrix_ode::Method;
 
 use vectrix_dynamics::Model;
@@ -85,35 +92,12 @@ use vectrix_dynamics::Model;
 /// Book: §7.8 (Euler's equation), §8.x (torque-free motion, energy and |H| conserved).
 pub const DEFAULT_SCENE: &str = include_str!("default.toml");
 
-/// Which parts of the right-hand side the declared effects need.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Needs {
-    /// Poses and twists for force elements (none: ABA alone, gravity as base acceleration).
-    pub loads: bool,
-    pub inerters: bool,
-    pub rolling: bool,
-    pub impacts: bool,
-    pub loops: bool,
-    /// Every joint's coordinates are its velocities (pins, sleeves, collars, slots, welds: no
-    /// ball or free joint), numbered alike: q̇ = v is a copy.
-    pub qdot_is_v: bool,
-    /// An aero effect's forces depend on α̇ or β̇ (solved after ABA, see `aero`).
-    pub aero_rates: bool,
-}
-
-impl Needs {
-    /// Whether accelerations need the multiplier system (inerters, rolling, loops).
-    pub fn constrained(&self) -> bool {
-        self.inerters || self.rolling || self.loops
-    }
-}
-
 /// A rolling body must start touching its plane: |(c − p)·n − r| small (for a disk, the
 /// lowest rim point).
 fn check_rolling_start(b: &Built, src: &Src) -> Result<(), SceneError> {
     let Ok(poses) = b.model.poses(&b.q0) else { return Ok(()) };
     for e in &b.effects {
-        if let build::Effect::Rolling { body, disk, r, point, n } = e {
+        if let parts::Effect::Rolling { body, disk, r, point, n } = e {
             let (el, rl) = poses[*body];
             let c = rl + el.transpose() * b.bodies[*body].com;
             let reach = if *disk {
@@ -146,6 +130,8 @@ pub struct Scene {
     pub(crate) built: Built,
     pub(crate) ground: Ground,
     pub(crate) needs: Needs,
+    /// The model's v ↦ q̇ map, compiled once (the joints' own definition, see `rhs`).
+    pub(crate) qdot: vectrix_dynamics::multibody::QdotPlan,
     pub(crate) solver: Method,
     /// The integrator chosen and why (named, accuracy table, or the stiffness test).
     pub(crate) choice: MethodChoice,
@@ -280,45 +266,7 @@ impl Scene {
         let outputs = outputs::parse(&spec, &built, src)?;
         limits::check_bounds(&spec, &built, &outputs, src)?;
         let invariants = invariants::derive(&built);
-        let mut needs = Needs::default();
-        for e in &built.effects {
-            use build::Effect as E;
-            match e {
-                E::Uniform { .. } | E::RotSpring { .. } | E::RotDashpot { .. } => {}
-                E::Inerter { .. } | E::RotInerter { .. } => needs.inerters = true,
-                E::Rolling { .. } => needs.rolling = true,
-                E::Spheres { .. } | E::Plane { .. } | E::JointStop { .. } => needs.impacts = true,
-                _ => needs.loads = true,
-            }
-            if matches!(e, E::RotSpring { .. } | E::RotDashpot { .. }) {
-                needs.loads = true;
-            }
-        }
-        needs.loops = !built.loops.is_empty();
-        needs.aero_rates = built.effects.iter().any(|e| match e {
-            build::Effect::Aero { aircraft, .. } => aero::has_rate_terms(aircraft),
-            _ => false,
-        });
-        if needs.aero_rates && needs.constrained() {
-            let k = spec.effects.iter().position(|e| matches!(e, spec::EffectSpec::Aero { .. })).unwrap_or(0);
-            return Err(src.invalid(
-                format!("effects[{k}]"),
-                "an aero effect with loops, rolling contacts or inerters is not supported (its α̇/β̇ solve runs on \
-                 the tree's forward dynamics); valid: an aircraft in a tree of bodies (a slung load on a ball \
-                 joint, a rotor on a pin)",
-            ));
-        }
-        if needs.constrained()
-            && let Some(k) = spec.effects.iter().position(|e| matches!(e, spec::EffectSpec::JointStop { .. }))
-        {
-            return Err(src.invalid(
-                format!("effects[{k}]"),
-                "a joint stop in a scene with loops, rolling contacts or inerters is not supported (its impulse \
-                 and holding force act on the tree alone); valid: joint stops on a tree of bodies",
-            ));
-        }
-        // only ball joints (also of free joints) have more coordinates than speeds
-        needs.qdot_is_v = built.model.nq() == built.model.nv();
+        let needs = Needs::of(&spec, &built, src)?;
         check_rolling_start(&built, src)?;
         for (k, c) in spec.checks.iter().enumerate() {
             if !["energy", "momentum", "angular_momentum"].contains(&c.as_str()) {
@@ -328,10 +276,12 @@ impl Scene {
                 ));
             }
         }
+        let qdot = built.model.qdot_plan();
         let mut scene = Self {
             spec,
             built,
             ground: Ground::new(),
+            qdot,
             needs,
             solver,
             choice: MethodChoice {

@@ -7,7 +7,7 @@
 use vectrix_ode::Method;
 
 use super::SceneError;
-use super::build::Src;
+use super::parts::Src;
 use super::spec::SceneSpec;
 
 /// Default bound on the steps of a run (accepted + rejected).

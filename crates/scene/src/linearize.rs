@@ -20,9 +20,8 @@
 use nalgebra::{Complex, DMatrix, DVector};
 use serde::Serialize;
 
-use super::build::dims;
-use super::spec::JointSpec;
 use super::{Scene, SceneError};
+use vectrix_dynamics::multibody::Joint;
 
 /// The moving coordinates of a steady motion are cyclic when ∂v̇/∂x changes along the motion
 /// by less than this fraction of its largest entry (the derivatives are exact: a cyclic
@@ -197,7 +196,7 @@ impl Scene {
         let mut state = Vec::new();
         for prefix in ["dq", "v"] {
             for body in &self.built.bodies {
-                for k in 0..super::build::dims(&body.joint).1 {
+                for k in 0..body.joint.nv() {
                     state.push(format!("{prefix}:{}.{k}", body.name));
                 }
             }
@@ -291,8 +290,8 @@ impl Scene {
                 // a ball or free joint's rates are resolved in the turning body: an applied
                 // torque turns with it, so a steady precession is periodic in them
                 let turning = b.bodies.iter().any(|body| {
-                    matches!(body.joint, JointSpec::Ball {} | JointSpec::Free {})
-                        && (body.vi..body.vi + dims(&body.joint).1).any(|j| v0[j] != 0.0)
+                    matches!(body.joint, Joint::Ball | Joint::Free)
+                        && (body.vi..body.vi + body.joint.nv()).any(|j| v0[j] != 0.0)
                 });
                 let hint = if turning {
                     "; a ball or free joint resolves ω in the turning body, where an applied torque turns with \

@@ -12,8 +12,8 @@
 use nalgebra::{DMatrix, DVector, Vector3};
 
 use super::Scene;
-use super::build::{At, Effect};
 use super::kin::Kin;
+use super::parts::{At, Effect};
 use vectrix_dynamics::DynamicsError;
 use vectrix_dynamics::constraints::{DEPENDENT_ROW_REL_TOL, KktFactor};
 

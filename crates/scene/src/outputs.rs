@@ -7,11 +7,13 @@ use nalgebra::{DVector, Vector3};
 
 use super::Scene;
 use super::SceneError;
-use super::build::{Built, Src, dims};
+use super::build::Built;
 use super::forces::centre;
 use super::kin::{Kin, lift};
 use super::loops::{Loop, LoopKind, orient};
-use super::spec::{JointSpec, SceneSpec};
+use super::parts::Src;
+use super::spec::SceneSpec;
+use vectrix_dynamics::multibody::Joint;
 use vectrix_tensor::Scalar;
 use vectrix_units::Dimension;
 
@@ -130,8 +132,8 @@ pub(crate) fn count_columns(outputs: &[Output], b: &Built) -> usize {
             Output::Q => b.model.nq(),
             Output::V => b.model.nv(),
             Output::Energy => 1,
-            Output::Coordinates(i) => dims(&b.bodies[*i].joint).0,
-            Output::Speeds(i) => dims(&b.bodies[*i].joint).1,
+            Output::Coordinates(i) => b.bodies[*i].joint.nq(),
+            Output::Speeds(i) => b.bodies[*i].joint.nv(),
             Output::Reaction { index, .. } if is_pin(b, *index) => 6,
             Output::Reaction { index, .. } if coupled(b, *index).is_some() => 1,
             _ => 3,
@@ -177,11 +179,11 @@ impl Scene {
                 Output::VelocityBody(i) => {
                     cols.extend(["u", "v", "w"].iter().map(|c| format!("velocity_body:{}.{c}", name(*i))))
                 }
-                Output::Coordinates(i) => cols.extend(
-                    (0..dims(&b.bodies[*i].joint).0).map(|k| format!("coordinates:{}.{k}", name(*i))),
-                ),
+                Output::Coordinates(i) => {
+                    cols.extend((0..b.bodies[*i].joint.nq()).map(|k| format!("coordinates:{}.{k}", name(*i))))
+                }
                 Output::Speeds(i) => {
-                    cols.extend((0..dims(&b.bodies[*i].joint).1).map(|k| format!("speeds:{}.{k}", name(*i))))
+                    cols.extend((0..b.bodies[*i].joint.nv()).map(|k| format!("speeds:{}.{k}", name(*i))))
                 }
                 Output::Air(i) => {
                     cols.extend(["airspeed", "alpha", "beta"].iter().map(|c| format!("air:{}.{c}", name(*i))))
@@ -216,14 +218,14 @@ impl Scene {
             };
             let one = Dimension::DIMENSIONLESS;
             match &b.bodies[i].joint {
-                JointSpec::Pin { .. } => vec![a],
-                JointSpec::Sleeve { .. } => vec![l],
-                JointSpec::Collar { .. } | JointSpec::Slot { .. } => vec![l, a],
-                JointSpec::Ball {} if speed => vec![a; 3],
-                JointSpec::Ball {} => vec![one; 4],
-                JointSpec::Free {} if speed => vec![l, l, l, a, a, a],
-                JointSpec::Free {} => vec![l, l, l, one, one, one, one],
-                JointSpec::Weld {} => vec![],
+                Joint::Pin { .. } => vec![a],
+                Joint::Sleeve { .. } => vec![l],
+                Joint::Collar { .. } | Joint::Slot { .. } => vec![l, a],
+                Joint::Ball if speed => vec![a; 3],
+                Joint::Ball => vec![one; 4],
+                Joint::Free if speed => vec![l, l, l, a, a, a],
+                Joint::Free => vec![l, l, l, one, one, one, one],
+                Joint::Weld => vec![],
             }
         };
         let all = |speed: bool| -> Vec<Dimension> {
@@ -246,7 +248,7 @@ impl Scene {
                 Output::Euler321(_) => dims.extend([Dimension::ANGLE; 3]),
                 Output::Reaction { index, .. } => {
                     if let Some(i) = coupled(b, *index) {
-                        let pin = matches!(b.bodies[i].joint, JointSpec::Pin { .. });
+                        let pin = matches!(b.bodies[i].joint, Joint::Pin { .. });
                         dims.push(if pin { Dimension::MOMENT } else { Dimension::FORCE });
                         continue;
                     }
@@ -304,11 +306,11 @@ impl Scene {
                 }
                 Output::Coordinates(i) => {
                     let bd = &b.bodies[*i];
-                    out.extend_from_slice(&q[bd.qi..bd.qi + dims(&bd.joint).0]);
+                    out.extend_from_slice(&q[bd.qi..bd.qi + bd.joint.nq()]);
                 }
                 Output::Speeds(i) => {
                     let bd = &b.bodies[*i];
-                    out.extend_from_slice(&v[bd.vi..bd.vi + dims(&bd.joint).1]);
+                    out.extend_from_slice(&v[bd.vi..bd.vi + bd.joint.nv()]);
                 }
                 Output::Air(i) => {
                     let (vel, _) = super::aero::air_velocity(kin, &b.bodies[*i], *i);

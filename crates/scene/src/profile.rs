@@ -6,7 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::SceneError;
-use super::build::Src;
+use super::source::SceneSource as Src;
 
 /// A scalar function of time for applied forces and torques and for control deflections.
 ///
@@ -198,33 +198,6 @@ impl Profile {
                 Err(src.invalid(format!("{path}.width"), format!("width = {width}; valid: a width > 0")))
             }
             _ => Ok(()),
-        }
-    }
-}
-
-impl super::spec::EffectSpec {
-    /// The effect's profiles with their keys (`profile`, or an aircraft's `elevator`,
-    /// `aileron`, `rudder`), in input order: each is one input of a linearization or trim.
-    pub(crate) fn profiles(&self) -> Vec<(&'static str, &Profile)> {
-        use super::spec::EffectSpec as E;
-        match self {
-            E::Force { profile, .. } | E::Torque { profile, .. } | E::Thrust { profile, .. } => {
-                vec![("profile", profile)]
-            }
-            E::Aero { elevator, aileron, rudder, .. } => {
-                vec![("elevator", elevator), ("aileron", aileron), ("rudder", rudder)]
-            }
-            _ => vec![],
-        }
-    }
-
-    /// [`Self::profiles`], mutable.
-    pub(crate) fn profiles_mut(&mut self) -> Vec<&mut Profile> {
-        use super::spec::EffectSpec as E;
-        match self {
-            E::Force { profile, .. } | E::Torque { profile, .. } | E::Thrust { profile, .. } => vec![profile],
-            E::Aero { elevator, aileron, rudder, .. } => vec![elevator, aileron, rudder],
-            _ => vec![],
         }
     }
 }

@@ -7,9 +7,9 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::build::Effect;
 use super::forces::{Loads, apply, potential};
 use super::kin::kinematics;
+use super::parts::Effect;
 use super::{Scene, SceneError};
 use vectrix_dynamics::multibody::JointWrench;
 

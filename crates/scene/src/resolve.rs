@@ -6,9 +6,9 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::SceneError;
-use super::build::{At, Body, Effect, Src, angle_dof, v3};
-use super::spec::{Attach, EffectSpec, JointSpec, LoopSpec};
-use vectrix_dynamics::multibody::Model;
+use super::parts::{At, Body, Effect, Src, v3};
+use super::spec::{Attach, EffectSpec, LoopSpec};
+use vectrix_dynamics::multibody::{Joint, Model};
 
 fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> {
     if x >= 0.0 {
@@ -40,7 +40,7 @@ pub(crate) fn direction(x: [f64; 3]) -> Option<(Vector3<f64>, f64)> {
     Some((w / n, s * n))
 }
 
-type Index<'a> = dyn Fn(&str, &str) -> Result<Option<usize>, SceneError> + 'a;
+pub(crate) type Index<'a> = dyn Fn(&str, &str) -> Result<Option<usize>, SceneError> + 'a;
 
 /// A loop-closing joint with names resolved and its geometry in the bodies' link frames.
 pub(crate) fn loop_joint(
@@ -126,7 +126,7 @@ fn coupler(
             src.invalid(&at, "the ground has no joint; valid: a body on a pin or sleeve joint")
         })?;
         match bodies[i].joint {
-            JointSpec::Pin { .. } | JointSpec::Sleeve { .. } => Ok(i),
+            Joint::Pin { .. } | Joint::Sleeve { .. } => Ok(i),
             _ => Err(src.invalid(
                 &at,
                 format!("body `{who}`'s joint has more than one coordinate; valid: a body on a pin or sleeve joint"),
@@ -171,45 +171,57 @@ fn coupler(
 
 type BodyOf<'a> = dyn Fn(&str, &str) -> Result<usize, SceneError> + 'a;
 
-pub(crate) fn effect(
-    e: &EffectSpec,
-    path: &str,
-    bodies: &[Body],
-    index: &Index,
-    body_of: &BodyOf,
-    src: &Src,
-) -> Result<Effect, SceneError> {
-    let key = |k: &str| format!("{path}.{k}");
-    let at = |a: &Attach, k: &str| -> Result<At, SceneError> {
-        Ok((index(&a.body, &format!("{path}.{k}.body"))?, v3(a.point)))
-    };
-    let dof = |name: &str| -> Result<usize, SceneError> {
-        let b = &bodies[body_of(name, &key("body"))?];
-        angle_dof(&b.joint).map(|k| b.vi + k).ok_or_else(|| {
-            src.invalid(
-                key("body"),
+/// What resolving one effect needs: its path, the bodies, name lookups and the source.
+struct Ctx<'a> {
+    path: &'a str,
+    bodies: &'a [Body],
+    index: &'a Index<'a>,
+    body_of: &'a BodyOf<'a>,
+    src: &'a Src<'a>,
+}
+
+impl Ctx<'_> {
+    fn key(&self, k: &str) -> String {
+        format!("{}.{k}", self.path)
+    }
+
+    /// A point fixed in a body (or the ground) from an `{ body, point }` table at key `k`.
+    fn at(&self, a: &Attach, k: &str) -> Result<At, SceneError> {
+        Ok(((self.index)(&a.body, &format!("{}.{k}.body", self.path))?, v3(a.point)))
+    }
+
+    /// The velocity index of the one joint angle of body `name`.
+    fn dof(&self, name: &str) -> Result<usize, SceneError> {
+        let b = &self.bodies[(self.body_of)(name, &self.key("body"))?];
+        b.joint.angle_index().map(|k| b.vi + k).ok_or_else(|| {
+            self.src.invalid(
+                self.key("body"),
                 format!(
                     "body `{name}` has no single joint angle; valid: a body on a pin, collar or slot joint"
                 ),
             )
         })
-    };
-    let free = |name: &str, k: &str| -> Result<usize, SceneError> {
-        let i = body_of(name, &key(k))?;
-        if !matches!(bodies[i].joint, JointSpec::Free {}) || bodies[i].parent.is_some() {
-            return Err(src.invalid(
-                key(k),
+    }
+
+    /// Body `name` (at key `k`), which must be on a free joint to the ground.
+    fn free(&self, name: &str, k: &str) -> Result<usize, SceneError> {
+        let i = (self.body_of)(name, &self.key(k))?;
+        if !matches!(self.bodies[i].joint, Joint::Free) || self.bodies[i].parent.is_some() {
+            return Err(self.src.invalid(
+                self.key(k),
                 format!("body `{name}` must be on a free joint to the ground for impacts, rolling and aero effects"),
             ));
         }
         Ok(i)
-    };
-    // impacts and resting contact act on the sphere alone: it may carry no other body
-    let alone = |name: &str, k: &str| -> Result<usize, SceneError> {
-        let i = free(name, k)?;
-        if let Some(child) = bodies.iter().find(|c| c.parent == Some(i)) {
-            return Err(src.invalid(
-                key(k),
+    }
+
+    /// A contact's sphere: free, and carrying no other body (impacts and resting contact act
+    /// on the sphere alone).
+    fn alone(&self, name: &str, k: &str) -> Result<usize, SceneError> {
+        let i = self.free(name, k)?;
+        if let Some(child) = self.bodies.iter().find(|c| c.parent == Some(i)) {
+            return Err(self.src.invalid(
+                self.key(k),
                 format!(
                     "body `{name}` carries body `{}`; valid: a contact's sphere on a free joint that carries no \
                      other body",
@@ -218,160 +230,183 @@ pub(crate) fn effect(
             ));
         }
         Ok(i)
-    };
-    let restitution = |x: f64| {
+    }
+
+    fn restitution(&self, x: f64) -> Result<f64, SceneError> {
         if (0.0..=1.0).contains(&x) {
             Ok(x)
         } else {
-            Err(src.invalid(key("restitution"), format!("e = {x}; valid: 0 ≤ e ≤ 1")))
+            Err(self.src.invalid(self.key("restitution"), format!("e = {x}; valid: 0 ≤ e ≤ 1")))
         }
-    };
+    }
+
+    fn nonneg(&self, x: f64, what: &str) -> Result<f64, SceneError> {
+        nonneg(x, what, self.path, self.src)
+    }
+}
+
+/// One effect of the file with its names resolved and its numbers checked.
+pub(crate) fn effect(
+    e: &EffectSpec,
+    path: &str,
+    bodies: &[Body],
+    index: &Index,
+    body_of: &BodyOf,
+    src: &Src,
+) -> Result<Effect, SceneError> {
+    let c = Ctx { path, bodies, index, body_of, src };
     for (key, p) in e.profiles() {
-        p.check(&format!("{path}.{key}"), src)?;
+        p.check(&c.key(key), src)?;
     }
     Ok(match e {
         EffectSpec::UniformGravity { g } => Effect::Uniform { g: v3(*g) },
         EffectSpec::CentralGravity { mu, centre } => {
-            Effect::Central { mu: nonneg(*mu, "mu", path, src)?, centre: v3(*centre) }
+            Effect::Central { mu: c.nonneg(*mu, "mu")?, centre: v3(*centre) }
         }
-        EffectSpec::MutualGravitation { g } => Effect::Mutual { g: nonneg(*g, "g", path, src)? },
+        EffectSpec::MutualGravitation { g } => Effect::Mutual { g: c.nonneg(*g, "g")? },
         EffectSpec::Spring { a, b, k, length } => Effect::Spring {
-            a: at(a, "a")?,
-            b: at(b, "b")?,
-            k: nonneg(*k, "k", path, src)?,
-            d: nonneg(*length, "length", path, src)?,
+            a: c.at(a, "a")?,
+            b: c.at(b, "b")?,
+            k: c.nonneg(*k, "k")?,
+            d: c.nonneg(*length, "length")?,
         },
-        EffectSpec::Dashpot { a, b, c } => {
-            Effect::Dashpot { a: at(a, "a")?, b: at(b, "b")?, c: nonneg(*c, "c", path, src)? }
+        EffectSpec::Dashpot { a, b, c: damping } => {
+            Effect::Dashpot { a: c.at(a, "a")?, b: c.at(b, "b")?, c: c.nonneg(*damping, "c")? }
         }
-        EffectSpec::Inerter { a, b, inertance } => Effect::Inerter {
-            a: at(a, "a")?,
-            b: at(b, "b")?,
-            b_in: nonneg(*inertance, "inertance", path, src)?,
-        },
+        EffectSpec::Inerter { a, b, inertance } => {
+            Effect::Inerter { a: c.at(a, "a")?, b: c.at(b, "b")?, b_in: c.nonneg(*inertance, "inertance")? }
+        }
         EffectSpec::RotationalSpring { body, kappa, angle } => {
-            Effect::RotSpring { dof: dof(body)?, kappa: nonneg(*kappa, "kappa", path, src)?, angle: *angle }
+            Effect::RotSpring { dof: c.dof(body)?, kappa: c.nonneg(*kappa, "kappa")?, angle: *angle }
         }
         EffectSpec::RotationalDashpot { body, xi } => {
-            Effect::RotDashpot { dof: dof(body)?, xi: nonneg(*xi, "xi", path, src)? }
+            Effect::RotDashpot { dof: c.dof(body)?, xi: c.nonneg(*xi, "xi")? }
         }
         EffectSpec::RotationalInerter { body, beta } => {
-            Effect::RotInerter { dof: dof(body)?, beta: nonneg(*beta, "beta", path, src)? }
+            Effect::RotInerter { dof: c.dof(body)?, beta: c.nonneg(*beta, "beta")? }
         }
         EffectSpec::Dipoles { dipoles } => Effect::Dipoles {
             list: dipoles
                 .iter()
                 .enumerate()
-                .map(|(k, d)| Ok((body_of(&d.body, &key(&format!("dipoles[{k}].body")))?, v3(d.moment))))
+                .map(|(k, d)| Ok((body_of(&d.body, &c.key(&format!("dipoles[{k}].body")))?, v3(d.moment))))
                 .collect::<Result<_, SceneError>>()?,
         },
         EffectSpec::Force { at: a, direction, profile } => {
-            Effect::Force { at: at(a, "at")?, dir: v3(*direction), profile: profile.clone() }
+            Effect::Force { at: c.at(a, "at")?, dir: v3(*direction), profile: profile.clone() }
         }
         EffectSpec::Torque { body, direction, profile } => Effect::Torque {
-            body: body_of(body, &key("body"))?,
+            body: body_of(body, &c.key("body"))?,
             dir: v3(*direction),
             profile: profile.clone(),
         },
         EffectSpec::ContactSpheres { a, b, radius_a, radius_b, restitution: e, friction } => {
             if a == b {
                 return Err(
-                    src.invalid(key("b"), format!("`{b}` is both spheres; valid: two different bodies"))
+                    src.invalid(c.key("b"), format!("`{b}` is both spheres; valid: two different bodies"))
                 );
             }
             Effect::Spheres {
-                a: alone(a, "a")?,
-                b: alone(b, "b")?,
-                ra: nonneg(*radius_a, "radius_a", path, src)?,
-                rb: nonneg(*radius_b, "radius_b", path, src)?,
-                e: restitution(*e)?,
-                mu: nonneg(*friction, "friction", path, src)?,
+                a: c.alone(a, "a")?,
+                b: c.alone(b, "b")?,
+                ra: c.nonneg(*radius_a, "radius_a")?,
+                rb: c.nonneg(*radius_b, "radius_b")?,
+                e: c.restitution(*e)?,
+                mu: c.nonneg(*friction, "friction")?,
             }
         }
         EffectSpec::JointStop { body, lower, upper, restitution: e } => {
-            let i = body_of(body, &key("body"))?;
-            let b = &bodies[i];
-            if !matches!(b.joint, JointSpec::Pin { .. } | JointSpec::Sleeve { .. }) {
-                return Err(src.invalid(
-                    key("body"),
-                    format!("body `{body}`'s joint has more than one coordinate; valid: a body on a pin or sleeve joint"),
-                ));
-            }
-            let (lo, hi) = (lower.unwrap_or(f64::NEG_INFINITY), upper.unwrap_or(f64::INFINITY));
-            if (lower.is_none() && upper.is_none()) || lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
-                return Err(src.invalid(
-                    path,
-                    format!(
-                        "stops {lower:?} and {upper:?}; valid: `lower`, `upper` or both, with lower < upper"
-                    ),
-                ));
-            }
-            Effect::JointStop { qi: b.qi, vi: b.vi, lower: lo, upper: hi, e: restitution(*e)? }
+            joint_stop(&c, body, (*lower, *upper), *e)?
         }
         EffectSpec::ContactPlane { body, radius, point, normal, restitution: e, friction } => Effect::Plane {
-            body: alone(body, "body")?,
-            r: nonneg(*radius, "radius", path, src)?,
+            body: c.alone(body, "body")?,
+            r: c.nonneg(*radius, "radius")?,
             point: v3(*point),
             n: unit(*normal, "normal", path, src)?,
-            e: restitution(*e)?,
-            mu: nonneg(*friction, "friction", path, src)?,
+            e: c.restitution(*e)?,
+            mu: c.nonneg(*friction, "friction")?,
         },
-        EffectSpec::Aero {
-            body,
-            aircraft,
-            rho,
-            area,
-            chord,
-            span,
-            coefficients,
-            elevator,
-            aileron,
-            rudder,
-        } => {
-            let mut ac = super::aero::catalogue(aircraft)
-                .ok_or_else(|| src.invalid(key("aircraft"), super::aero::unknown_aircraft(aircraft)))?;
-            let positive = |v: &Option<f64>, name: &str, unit: &str| match v {
-                Some(x) if !(x.is_finite() && *x > 0.0) => {
-                    Err(src.invalid(key(name), format!("{name} = {x} {unit}; valid: a finite number > 0")))
-                }
-                _ => Ok(*v),
-            };
-            ac.rho = positive(rho, "rho", "kg/m³")?.unwrap_or(ac.rho);
-            ac.geometry.area = positive(area, "area", "m²")?.unwrap_or(ac.geometry.area);
-            ac.geometry.chord = positive(chord, "chord", "m")?.unwrap_or(ac.geometry.chord);
-            ac.geometry.span = positive(span, "span", "m")?.unwrap_or(ac.geometry.span);
-            for (name, &v) in coefficients {
-                let at = key(&format!("coefficients.{name}"));
-                if !v.is_finite() {
-                    return Err(src.invalid(at, format!("{name} = {v}; valid: a finite number")));
-                }
-                if !super::aero::set_coefficient(&mut ac.coefficients, name, v) {
-                    return Err(src.invalid(at, super::aero::unknown_coefficient(name)));
-                }
-            }
-            ac.check().map_err(|e| src.invalid(key("coefficients"), e.to_string()))?;
-            Effect::Aero {
-                body: free(body, "body")?,
-                aircraft: Box::new(ac),
-                controls: Box::new([elevator.clone(), aileron.clone(), rudder.clone()]),
-            }
-        }
+        EffectSpec::Aero { .. } => aero(&c, e)?,
         EffectSpec::Thrust { body, profile, angle } => {
-            Effect::Thrust { body: body_of(body, &key("body"))?, profile: profile.clone(), angle: *angle }
+            Effect::Thrust { body: body_of(body, &c.key("body"))?, profile: profile.clone(), angle: *angle }
         }
         EffectSpec::Rolling { body, shape, radius, point, normal } => {
             let disk = match shape.as_str() {
                 "disk" => true,
                 "sphere" => false,
-                s => return Err(src.invalid(key("shape"), format!("shape `{s}`; valid: sphere, disk"))),
+                s => return Err(src.invalid(c.key("shape"), format!("shape `{s}`; valid: sphere, disk"))),
             };
             Effect::Rolling {
-                body: free(body, "body")?,
+                body: c.free(body, "body")?,
                 disk,
-                r: nonneg(*radius, "radius", path, src)?,
+                r: c.nonneg(*radius, "radius")?,
                 point: v3(*point),
                 n: unit(*normal, "normal", path, src)?,
             }
         }
+    })
+}
+
+/// A joint stop on a pin or sleeve: `lower`, `upper` or both, lower < upper.
+fn joint_stop(
+    c: &Ctx,
+    body: &str,
+    (lower, upper): (Option<f64>, Option<f64>),
+    e: f64,
+) -> Result<Effect, SceneError> {
+    let b = &c.bodies[(c.body_of)(body, &c.key("body"))?];
+    if !matches!(b.joint, Joint::Pin { .. } | Joint::Sleeve { .. }) {
+        return Err(c.src.invalid(
+            c.key("body"),
+            format!(
+                "body `{body}`'s joint has more than one coordinate; valid: a body on a pin or sleeve joint"
+            ),
+        ));
+    }
+    let (lo, hi) = (lower.unwrap_or(f64::NEG_INFINITY), upper.unwrap_or(f64::INFINITY));
+    if (lower.is_none() && upper.is_none()) || lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
+        return Err(c.src.invalid(
+            c.path,
+            format!("stops {lower:?} and {upper:?}; valid: `lower`, `upper` or both, with lower < upper"),
+        ));
+    }
+    Ok(Effect::JointStop { qi: b.qi, vi: b.vi, lower: lo, upper: hi, e: c.restitution(e)? })
+}
+
+/// An aircraft's aerodynamics on a free body: the catalogue's aircraft with the file's
+/// overrides (ρ, reference area, chord, span, coefficients) and its control profiles.
+fn aero(c: &Ctx, e: &EffectSpec) -> Result<Effect, SceneError> {
+    let EffectSpec::Aero { body, aircraft, rho, area, chord, span, coefficients, elevator, aileron, rudder } =
+        e
+    else {
+        return Err(c.src.invalid(c.path, "an aero effect was expected here"));
+    };
+    let src = c.src;
+    let mut ac = super::aero::catalogue(aircraft)
+        .ok_or_else(|| src.invalid(c.key("aircraft"), super::aero::unknown_aircraft(aircraft)))?;
+    let positive = |v: &Option<f64>, name: &str, unit: &str| match v {
+        Some(x) if !(x.is_finite() && *x > 0.0) => {
+            Err(src.invalid(c.key(name), format!("{name} = {x} {unit}; valid: a finite number > 0")))
+        }
+        _ => Ok(*v),
+    };
+    ac.rho = positive(rho, "rho", "kg/m³")?.unwrap_or(ac.rho);
+    ac.geometry.area = positive(area, "area", "m²")?.unwrap_or(ac.geometry.area);
+    ac.geometry.chord = positive(chord, "chord", "m")?.unwrap_or(ac.geometry.chord);
+    ac.geometry.span = positive(span, "span", "m")?.unwrap_or(ac.geometry.span);
+    for (name, &v) in coefficients {
+        let at = c.key(&format!("coefficients.{name}"));
+        if !v.is_finite() {
+            return Err(src.invalid(at, format!("{name} = {v}; valid: a finite number")));
+        }
+        if !super::aero::set_coefficient(&mut ac.coefficients, name, v) {
+            return Err(src.invalid(at, super::aero::unknown_coefficient(name)));
+        }
+    }
+    ac.check().map_err(|e| src.invalid(c.key("coefficients"), e.to_string()))?;
+    Ok(Effect::Aero {
+        body: c.free(body, "body")?,
+        aircraft: Box::new(ac),
+        controls: Box::new([elevator.clone(), aileron.clone(), rudder.clone()]),
     })
 }

@@ -8,9 +8,9 @@ use nalgebra::Vector3;
 use vectrix_ode::explicit::{DenseStep, bracket_zero};
 
 use super::Scene;
-use super::build::Effect;
 use super::contacts::{ContactEvent, ContactEventKind, Contacts, Gap, SCAN_SEGMENTS};
 use super::kin::{Kin, kinematics};
+use super::parts::Effect;
 use super::rhs::RhsScratch;
 
 /// A resting sphere is moved back onto its plane when its gap or normal speed drifts past
@@ -88,7 +88,7 @@ impl Scene {
         let nq = b.model.nq();
         let Some(p) = plane else {
             let s = stop.ok_or("not a contact")?;
-            return Ok(super::stops::side(y[s.qi], s.lower, s.upper) * d[nq + s.vi]);
+            return Ok(super::contacts::side(y[s.qi], s.lower, s.upper) * d[nq + s.vi]);
         };
         let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
         Ok(self.centre_accel(&kin, p.body, &d[nq..]).dot(&p.n))
@@ -99,7 +99,7 @@ impl Scene {
     /// For a joint stop: its opening speed, gap and resolution in q.
     fn normal_motion(&self, y: &[f64], c: usize) -> Result<(f64, f64, f64), String> {
         if let Some(s) = self.stop(c) {
-            let g = super::stops::stop_gap(y[s.qi], y[self.built.model.nq() + s.vi], s.lower, s.upper);
+            let g = super::contacts::stop_gap(y[s.qi], y[self.built.model.nq() + s.vi], s.lower, s.upper);
             let resolution = GAP_ULPS * f64::EPSILON * g.size;
             return Ok((g.opening, g.gap, resolution));
         }
@@ -121,7 +121,7 @@ impl Scene {
     pub(crate) fn place_on_plane(&self, y: &mut [f64], c: usize, gap: f64, u_n: f64) {
         if let Some(s) = self.stop(c) {
             let nq = self.built.model.nq();
-            let side = super::stops::side(y[s.qi], s.lower, s.upper);
+            let side = super::contacts::side(y[s.qi], s.lower, s.upper);
             y[s.qi] -= side * gap;
             y[nq + s.vi] -= side * u_n;
             return;
@@ -288,7 +288,7 @@ impl Scene {
             if let Some(s) = self.stop(c) {
                 // a held stop drifts by the integration error of q̈ = 0: put it back
                 let nq = self.built.model.nq();
-                let g = super::stops::stop_gap(y[s.qi], y[nq + s.vi], s.lower, s.upper);
+                let g = super::contacts::stop_gap(y[s.qi], y[nq + s.vi], s.lower, s.upper);
                 let a = self.free_normal_accel(t, y, &contacts.resting, c)?;
                 let tol = HOLD_TOL_EPS * f64::EPSILON;
                 if g.gap.abs() > tol * g.size || g.opening.abs() > tol * ((a.abs() * g.size).sqrt() + 1.0) {

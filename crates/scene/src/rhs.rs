@@ -10,7 +10,7 @@ use vectrix_tensor::Scalar;
 
 use super::aero::AeroScratch;
 use super::forces::{Ground, Loads, apply};
-use super::kin::{Kin, kinematics_into};
+use super::kin::{Kin, kinematics_into, poses_into};
 use super::{Scene, SceneError};
 use vectrix_dynamics::Model;
 use vectrix_dynamics::multibody::{AbaScratch, JointWrench};
@@ -86,28 +86,43 @@ impl SceneRhs<'_> {
                 ),
             });
         }
-        finite_state(t, y).map_err(|message| SceneError::Run { t, message })?;
-        self.scene
-            .deriv_into(t, y, out, &mut self.scratch)
-            .map_err(|message| SceneError::Run { t, message })?;
+        // the checks' fast path inline; the search for the offending entry only on failure
+        if !(t.is_finite() && all_finite(y)) {
+            finite_state(t, y).map_err(|message| SceneError::Run { t, message })?;
+        }
+        let scene = self.scene;
+        // the shortest path the scene allows: ABA alone, the tree with its loads, or everything
+        let done = if scene.needs.plain() {
+            scene.deriv_plain(y, out, &mut self.scratch)
+        } else if !(scene.needs.constrained() || scene.needs.impacts) {
+            scene.deriv_tree(&scene.built.model, t, y, None, out, &mut self.scratch)
+        } else {
+            scene.deriv_into(t, y, out, &mut self.scratch)
+        };
+        done.map_err(|message| SceneError::Run { t, message })?;
+        if all_finite(out) {
+            return Ok(());
+        }
         finite_derivative(out).map_err(|message| SceneError::Run { t, message })
     }
 }
 
 /// Whether every entry is finite, without a branch per entry: x · 0 is 0 for a finite x and
 /// NaN for ±∞ and NaN, so the sum is 0 exactly when all are finite (the hot path of every
-/// public evaluation; the search for the offending entry runs only on failure).
-#[inline]
+/// public evaluation; the search for the offending entry runs only on failure). Two lanes, so
+/// that the pairs go through one packed multiply and add.
+#[inline(always)]
 fn all_finite(y: &[f64]) -> bool {
-    let mut acc = [0.0f64; 4];
-    let mut chunks = y.chunks_exact(4);
-    for c in &mut chunks {
-        for k in 0..4 {
-            acc[k] += c[k] * 0.0;
-        }
+    let (mut a, mut b) = (0.0f64, 0.0f64);
+    let mut pairs = y.chunks_exact(2);
+    for p in &mut pairs {
+        a += p[0] * 0.0;
+        b += p[1] * 0.0;
     }
-    let tail: f64 = chunks.remainder().iter().map(|x| x * 0.0).sum();
-    acc.iter().sum::<f64>() + tail == 0.0
+    if let [x] = pairs.remainder() {
+        a += x * 0.0;
+    }
+    a + b == 0.0
 }
 
 /// The public evaluators take user states: a non-finite t or y is refused before the
@@ -195,7 +210,7 @@ impl Scene {
         let (q, v) = y.split_at(nq);
         let vd = &mut out[nq..];
         if self.needs.constrained() {
-            if !self.needs.loads {
+            if !self.needs.twists {
                 kinematics_into(&b.model, q, v, &mut w.kin);
             }
             let (a, lambda) = self.constrained_solve(&w.kin, q, vd, &mut w.keep)?;
@@ -203,7 +218,7 @@ impl Scene {
             return Ok(Some(lambda));
         }
         if resting.contains(&true) {
-            if !self.needs.loads {
+            if !self.needs.twists {
                 kinematics_into(&b.model, q, v, &mut w.kin);
             }
             self.rest_forces(&w.kin, resting, vd);
@@ -232,10 +247,16 @@ impl Scene {
         if self.needs.qdot_is_v {
             qd.copy_from_slice(v);
         } else {
-            model.qdot_into(q, v, qd);
+            self.qdot.apply(q, v, qd);
         }
         let ext = if self.needs.loads {
-            kinematics_into(model, q, v, &mut w.kin);
+            // the kinematics the declared loads read: twists (dashpots, aero), poses (the
+            // others but rotational springs and dashpots, which read q and v), or none
+            if self.needs.twists {
+                kinematics_into(model, q, v, &mut w.kin);
+            } else if self.needs.poses {
+                poses_into(model, q, &mut w.kin);
+            }
             w.tau.fill(T::zero());
             w.wrenches.fill(JointWrench::default());
             let q_angle = |dof: usize| self.angle_of_dof(q, dof);
@@ -250,6 +271,23 @@ impl Scene {
             self.aero_rates(model, q, v, &w.tau, &w.kin, &w.wrenches, vd, &mut w.aba, &mut w.aero)?;
         }
         Ok(())
+    }
+
+    /// y′ of a scene with no loads, constraints or contacts to apply (a free body, a chain under
+    /// uniform gravity): q̇ from the joints and v̇ by ABA alone, as [`Scene::deriv_tree`] gives it
+    /// then, without its branches.
+    #[inline]
+    pub(crate) fn deriv_plain(&self, y: &[f64], out: &mut [f64], w: &mut RhsScratch) -> Result<(), String> {
+        let model = &self.built.model;
+        let nq = model.nq();
+        let (q, v) = y.split_at(nq);
+        let (qd, vd) = out.split_at_mut(nq);
+        if self.needs.qdot_is_v {
+            qd.copy_from_slice(v);
+        } else {
+            self.qdot.apply(q, v, qd);
+        }
+        model.aba_into(q, v, &w.tau, None, vd, &mut w.aba).map_err(|e| e.to_string())
     }
 
     /// M + Σ b g gᵀ (+ rotational inerters): the mass matrix with the inerters, for
@@ -273,7 +311,7 @@ impl Scene {
         self.built
             .bodies
             .iter()
-            .find(|b| dof >= b.vi && dof < b.vi + super::build::dims(&b.joint).1)
+            .find(|b| dof >= b.vi && dof < b.vi + b.joint.nv())
             .map_or(T::zero(), |b| q[b.qi + (dof - b.vi)])
     }
 }

@@ -12,7 +12,7 @@ use nalgebra::DMatrix;
 use serde::Serialize;
 use vectrix_ode::{Accuracy, Bdf, Method, Radau5};
 
-use super::build::Src;
+use super::parts::Src;
 use super::spec::SceneSpec;
 use super::{Scene, SceneError};
 

@@ -10,11 +10,11 @@
 //!
 //! Book: §7.13 (restitution (7.13.18)), §7.14 (impulses), §7.11 (M(q) by CRBA).
 
-use nalgebra::{DMatrix, DVector, Vector3};
+use nalgebra::{DMatrix, DVector};
 
 use super::Scene;
-use super::build::Effect;
-use super::contacts::Gap;
+use super::contacts::stop_gap;
+use super::parts::Effect;
 
 /// A joint stop's data: coordinate and speed indices, stops, restitution.
 #[derive(Debug, Clone, Copy)]
@@ -24,24 +24,6 @@ pub(crate) struct Stop {
     pub lower: f64,
     pub upper: f64,
     pub e: f64,
-}
-
-/// +1 when the nearer stop is the lower one (the gap opens with q̇ > 0), −1 for the upper.
-pub(crate) fn side(q: f64, lower: f64, upper: f64) -> f64 {
-    if q - lower <= upper - q { 1.0 } else { -1.0 }
-}
-
-/// The gap of a stop at (q, q̇): min(q − lower, upper − q), following q itself.
-pub(crate) fn stop_gap(q: f64, v: f64, lower: f64, upper: f64) -> Gap {
-    let finite = |x: f64| if x.is_finite() { x.abs() } else { 0.0 };
-    Gap {
-        gap: (q - lower).min(upper - q),
-        pos: Vector3::new(q, 0.0, 0.0),
-        rate: Vector3::new(v, 0.0, 0.0),
-        opening: side(q, lower, upper) * v,
-        // the scale of the tolerances: 1 rad (or m), or the stops' own size
-        size: 1.0_f64.max(finite(lower)).max(finite(upper)),
-    }
 }
 
 impl Scene {

@@ -198,29 +198,7 @@ impl Scene {
         }
         let residual = norm(&jac.vdot);
         if !steady(residual) {
-            let names = self.state_names();
-            let stay: Vec<String> = jac
-                .vdot
-                .iter()
-                .enumerate()
-                .filter(|(_, a)| !steady(a.abs()))
-                .map(|(i, a)| match names.get(nv + i) {
-                    Some(n) if i < nv => format!("{n} (v̇ = {a:e})"),
-                    _ => {
-                        let (c, target) = holds[i - nv];
-                        format!("{} held at {target:e} (off by {a:e})", self.columns()[c])
-                    }
-                })
-                .collect();
-            return Err(self.invalid(
-                "trim.free",
-                format!(
-                    "the state cannot be made steady by {}: after {iterations} Newton steps {} remain; valid: \
-                     unknowns that can cancel every acceleration (as many as the accelerations they must cancel)",
-                    free.join(", "),
-                    stay.join(", ")
-                ),
-            ));
+            return Err(self.not_steady(free, iterations, &jac.vdot, &holds));
         }
         Ok((
             self.spec_with(&q, &x[nv..], &u),
@@ -228,11 +206,45 @@ impl Scene {
         ))
     }
 
+    /// The error of a trim that left accelerations (or held columns) off target: which, and by
+    /// how much, after `iterations` Newton steps.
+    fn not_steady(
+        &self,
+        free: &[String],
+        iterations: usize,
+        vdot: &[f64],
+        holds: &[(usize, f64)],
+    ) -> SceneError {
+        let nv = self.built.model.nv();
+        let names = self.state_names();
+        let stay: Vec<String> = vdot
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| a.abs() > TRIM_TOL || a.is_nan())
+            .map(|(i, a)| match names.get(nv + i) {
+                Some(n) if i < nv => format!("{n} (v̇ = {a:e})"),
+                _ => {
+                    let (c, target) = holds[i - nv];
+                    format!("{} held at {target:e} (off by {a:e})", self.columns()[c])
+                }
+            })
+            .collect();
+        self.invalid(
+            "trim.free",
+            format!(
+                "the state cannot be made steady by {}: after {iterations} Newton steps {} remain; valid: \
+                 unknowns that can cancel every acceleration (as many as the accelerations they must cancel)",
+                free.join(", "),
+                stay.join(", ")
+            ),
+        )
+    }
+
     /// This scene's spec with the initial coordinates q, speeds v and input magnitudes added.
     fn spec_with(&self, q: &[f64], v: &[f64], u: &[f64]) -> SceneSpec {
         let mut spec = self.spec().clone();
         for (body, b) in spec.bodies.iter_mut().zip(&self.built.bodies) {
-            let (nq, nv) = super::build::dims(&b.joint);
+            let (nq, nv) = (b.joint.nq(), b.joint.nv());
             body.q = (nq > 0).then(|| q[b.qi..b.qi + nq].to_vec());
             body.v = (nv > 0).then(|| v[b.vi..b.vi + nv].to_vec());
         }

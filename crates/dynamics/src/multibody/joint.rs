@@ -59,6 +59,78 @@ pub enum Joint {
     Free,
 }
 
+impl Joint {
+    /// Number of coordinates q of the joint (Table 1.3 and the conventions above): pin and
+    /// sleeve 1, collar and slot 2, ball 4 (a unit quaternion), weld 0, free 7.
+    ///
+    /// Book: §1.5, Table 1.3.
+    pub fn nq(&self) -> usize {
+        match self {
+            Joint::Pin { .. } | Joint::Sleeve { .. } => 1,
+            Joint::Collar { .. } | Joint::Slot { .. } => 2,
+            Joint::Ball => 4,
+            Joint::Weld => 0,
+            Joint::Free => 7,
+        }
+    }
+
+    /// Number of velocity coordinates v of the joint (its degrees of freedom): pin and sleeve
+    /// 1, collar and slot 2, ball 3, weld 0, free 6.
+    ///
+    /// Book: §1.5, Table 1.3.
+    pub fn nv(&self) -> usize {
+        match self {
+            Joint::Ball => 3,
+            Joint::Free => 6,
+            j => j.nq(),
+        }
+    }
+
+    /// Index of the unit quaternion (η, ε₁, ε₂, ε₃) among the joint's coordinates q: 0 for a
+    /// ball, 3 for a free joint (after x, y, z), `None` for the others.
+    ///
+    /// Book: §2.15 (Euler parameters).
+    pub fn quaternion_index(&self) -> Option<usize> {
+        match self {
+            Joint::Ball => Some(0),
+            Joint::Free => Some(3),
+            _ => None,
+        }
+    }
+
+    /// Index of the joint's one rotation angle θ among its coordinates (q and v align there):
+    /// 0 for a pin, 1 for a collar or slot (after s), `None` for the others.
+    ///
+    /// Book: §1.5, Table 1.3.
+    pub fn angle_index(&self) -> Option<usize> {
+        match self {
+            Joint::Pin { .. } => Some(0),
+            Joint::Collar { .. } | Joint::Slot { .. } => Some(1),
+            _ => None,
+        }
+    }
+
+    /// The coordinates q and velocities v of the joint in words, with units, as the
+    /// conventions above state them (for messages that say what a joint expects).
+    ///
+    /// Book: §1.5, Table 1.3.
+    pub fn layout(&self) -> (&'static str, &'static str) {
+        match self {
+            Joint::Pin { .. } => ("q = [θ] rad", "v = [θ̇] rad/s"),
+            Joint::Sleeve { .. } => ("q = [s] m", "v = [ṡ] m/s"),
+            Joint::Collar { .. } | Joint::Slot { .. } => ("q = [s m, θ rad]", "v = [ṡ m/s, θ̇ rad/s]"),
+            Joint::Ball => {
+                ("q = [η, ε₁, ε₂, ε₃] (unit quaternion)", "v = [ω₁, ω₂, ω₃] rad/s in the link frame")
+            }
+            Joint::Weld => ("q = [] (no coordinates)", "v = []"),
+            Joint::Free => (
+                "q = [x, y, z m, η, ε₁, ε₂, ε₃]",
+                "v = [ẋ, ẏ, ż m/s in the joint frame, ω₁, ω₂, ω₃ rad/s in the link frame]",
+            ),
+        }
+    }
+}
+
 /// One rigid link of a tree: its parent (`None` = the inertial ground), the joint into it,
 /// where the joint frame sits in the parent link, and the link's mass properties.
 ///
@@ -246,4 +318,34 @@ pub(crate) fn elems(joint: &Joint, link: usize) -> Result<Vec<Elem<f64>>, Dynami
 pub(crate) fn coordinate_axis(elem: &Elem<f64>) -> Option<(usize, bool)> {
     let (Elem::Revolute(a) | Elem::Prismatic(a)) = elem else { return None };
     (0..3).find(|&k| a[(k + 1) % 3] == 0.0 && a[(k + 2) % 3] == 0.0).map(|k| (k, a[k] < 0.0))
+}
+
+#[cfg(test)]
+mod layout_tests {
+    use super::*;
+
+    /// The joint's own counts are those of the elementary joints the model builds it from (one
+    /// definition of a joint's coordinates).
+    #[test]
+    fn joint_counts_are_those_of_its_elementary_joints() {
+        let (x, y) = (Vector3::x(), Vector3::y());
+        let joints = [
+            Joint::Pin { axis: x },
+            Joint::Sleeve { axis: x },
+            Joint::Collar { axis: x },
+            Joint::Slot { axis: x, direction: y },
+            Joint::Ball,
+            Joint::Weld,
+            Joint::Free,
+        ];
+        for j in joints {
+            let e = elems(&j, 0).unwrap();
+            assert_eq!(j.nq(), e.iter().map(Elem::nq).sum::<usize>(), "{j:?}");
+            assert_eq!(j.nv(), e.iter().map(Elem::nv).sum::<usize>(), "{j:?}");
+            let sph = e.iter().position(|x| *x == Elem::Spherical);
+            assert_eq!(j.quaternion_index(), sph.map(|k| e[..k].iter().map(Elem::nq).sum()), "{j:?}");
+            let rev = e.iter().position(|x| matches!(x, Elem::Revolute(_)));
+            assert_eq!(j.angle_index(), rev.map(|k| e[..k].iter().map(Elem::nv).sum()), "{j:?}");
+        }
+    }
 }

@@ -24,5 +24,5 @@ pub use derivatives::{AbaDerivatives, DerivativeScratch, RneaDerivatives};
 pub use joint::{Joint, Link, Pose};
 pub use kinematics::LinkTwist;
 pub use model::{MAX_CHAIN_LINKS, Model, PosesScratch};
-pub use motion::{LinkAcceleration, MotionScratch, normalize_quaternion};
+pub use motion::{LinkAcceleration, MotionScratch, QdotPlan, normalize_quaternion};
 pub use rnea::{InverseDynamics, JointWrench, LinkWrenches, Scratch};

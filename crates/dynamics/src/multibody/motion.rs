@@ -249,6 +249,79 @@ impl<T: Scalar> Model<T> {
     }
 }
 
+/// The map v ↦ q̇ of a model, compiled once for a hot path ([`Model::qdot_plan`]): runs of
+/// one-coordinate segments (pins, sliders) whose q̇ is a copy of v, and ball joints whose
+/// q̇ = ½ q ⊗ (0, ω). [`QdotPlan::apply`] gives exactly what [`Model::qdot_into`] gives.
+///
+/// Book: (4.11.x) quaternion kinematics, Euler parameters (§2.15).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct QdotPlan {
+    /// (first q index, first v index, length) of each run of copied coordinates.
+    copies: Vec<(usize, usize, usize)>,
+    /// (q index, v index) of each quaternion.
+    quaternions: Vec<(usize, usize)>,
+    nq: usize,
+    nv: usize,
+}
+
+impl QdotPlan {
+    /// q̇ from (q, v) into `out`, as [`Model::qdot_into`] computes it.
+    ///
+    /// Book: (4.11.x) quaternion kinematics.
+    ///
+    /// # Panics
+    /// If q or `out` is shorter than the model's nq or `v` shorter than its nv.
+    #[inline]
+    pub fn apply<T: Scalar>(&self, q: &[T], v: &[T], out: &mut [T]) {
+        let (q, v, out) = (&q[..self.nq], &v[..self.nv], &mut out[..self.nq]);
+        for &(qi, vi, n) in &self.copies {
+            let (o, x) = (&mut out[qi..qi + n], &v[vi..vi + n]);
+            // the short runs of a free joint or a collar without a call to memcpy
+            match (o, x) {
+                ([o0], [x0]) => *o0 = *x0,
+                ([o0, o1], [x0, x1]) => (*o0, *o1) = (*x0, *x1),
+                ([o0, o1, o2], [x0, x1, x2]) => (*o0, *o1, *o2) = (*x0, *x1, *x2),
+                (o, x) => o.copy_from_slice(x),
+            }
+        }
+        let half = T::lit(0.5);
+        for &(qi, vi) in &self.quaternions {
+            let Some(&[e0, e1, e2, e3]) = q.get(qi..qi + 4).and_then(|e| <&[T; 4]>::try_from(e).ok()) else {
+                continue;
+            };
+            let Some(&[p, r, w]) = v.get(vi..vi + 3).and_then(|x| <&[T; 3]>::try_from(x).ok()) else {
+                continue;
+            };
+            if let Some(o) = out.get_mut(qi..qi + 4) {
+                o[0] = half * (-e1 * p - e2 * r - e3 * w);
+                o[1] = half * (e0 * p + e2 * w - e3 * r);
+                o[2] = half * (e0 * r + e3 * p - e1 * w);
+                o[3] = half * (e0 * w + e1 * r - e2 * p);
+            }
+        }
+    }
+}
+
+impl<T: Scalar> Model<T> {
+    /// The model's v ↦ q̇ map compiled for repeated use ([`QdotPlan`]).
+    ///
+    /// Book: (4.11.x) quaternion kinematics.
+    pub fn qdot_plan(&self) -> QdotPlan {
+        let mut plan = QdotPlan { nq: self.nq(), nv: self.nv(), ..QdotPlan::default() };
+        for s in &self.segs {
+            match s.elem {
+                Elem::Revolute(_) | Elem::Prismatic(_) => match plan.copies.last_mut() {
+                    Some((qi, vi, n)) if *qi + *n == s.qi && *vi + *n == s.vi => *n += 1,
+                    _ => plan.copies.push((s.qi, s.vi, 1)),
+                },
+                Elem::Spherical => plan.quaternions.push((s.qi, s.vi)),
+                Elem::Fixed => {}
+            }
+        }
+        plan
+    }
+}
+
 /// Divides the Euler parameters (η, ε₁, ε₂, ε₃) by their norm √(η² + ε·ε); a zero quaternion
 /// is left as it is.
 ///

@@ -36,8 +36,8 @@ use std::path::Path;
 use nalgebra::{Matrix3, Vector3};
 use roxmltree::{Document, Node, NodeId};
 
+use super::files::{confined, read_model};
 use super::mass::{MassProps, axis_angle, quat};
-use super::scene::{confined, read_model};
 use super::xml::{Tracked, count_capped, error_at, parse};
 use super::{ImportedModel, MAX_INCLUDES, MAX_MODEL_LINKS};
 use crate::SceneError;

@@ -13,6 +13,7 @@
 //!
 //! Book: §7.11 (trees of bodies and joints), §1.5 (joints), §6.1–6.2 (mass properties).
 
+mod files;
 mod mass;
 pub mod mjcf;
 mod scene;
