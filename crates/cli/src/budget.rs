@@ -165,6 +165,12 @@ pub(crate) fn scene(s: &Scene) -> Estimate {
     e
 }
 
+/// An upper bound of the bytes of [`crate::view::scene_page`] for `scene` (the bound `vectrix
+/// run` checks against `--max-output-bytes` before it runs).
+pub fn scene_page_bound(scene: &Scene) -> u64 {
+    scene_view(scene)
+}
+
 /// view.html of a body-scene run (see [`crate::view`]): at most [`crate::view::frames`]
 /// instants of every body's pose and of the first heads-up columns, whatever `samples` is.
 pub(crate) fn scene_view(s: &Scene) -> u64 {

@@ -33,6 +33,7 @@ mod accuracy;
 mod budget;
 mod check;
 mod input;
+mod interrupt;
 mod linearize;
 mod output;
 mod report;
@@ -43,9 +44,10 @@ mod sweep_merge;
 mod tour;
 mod view;
 
+pub use budget::scene_page_bound;
 pub use run::Outcome;
 pub use sink::DEFAULT_MAX_OUTPUT_BYTES;
-pub use view::{View, scene_page, scene_page_bound};
+pub use view::{View, scene_page};
 
 /// Command-line arguments.
 #[derive(Debug, Parser)]
@@ -249,7 +251,7 @@ where
 /// incomplete), 130 interrupted (Ctrl-C, SIGTERM, SIGHUP).
 pub fn main() -> ExitCode {
     // Ctrl-C and SIGTERM stop a run cleanly from the first instant on (the handler sets a flag)
-    run::interrupted();
+    interrupt::interrupted();
     let mut out = std::io::stdout().lock();
     match run_with_args(std::env::args_os(), &mut out) {
         Ok(Outcome::Complete) => ExitCode::SUCCESS,

@@ -46,8 +46,7 @@ const MAX_NAMED: usize = 8;
 /// Attempts at claiming the destination against concurrent writers before giving up.
 const CLAIM_ATTEMPTS: usize = 16;
 
-/// Boxed error of the command line.
-pub(crate) type BoxError = Box<dyn std::error::Error + Send + Sync>;
+pub(crate) use crate::sink::BoxError;
 
 /// A fresh temporary sibling `<parent>/.<name>.tmp-<pid>-<n>-<nanos>`, created here (never
 /// reused), holding the marker with this process as its writer.

@@ -7,8 +7,6 @@
 
 use std::io::Write;
 use std::path::Path;
-use std::sync::OnceLock;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
@@ -16,25 +14,9 @@ use vectrix_scene::{DEFAULT_SCENE, InvariantValue, Run, RunControl, Scene, Scene
 use vectrix_units::UnitSystem;
 
 use crate::input::load;
+use crate::interrupt::interrupted;
 use crate::output::{BoxError, Written, not_inside, preflight, write_dir};
 use crate::sink::Halt;
-
-/// Set by Ctrl-C, SIGTERM or SIGHUP: the run in progress stops after its current step, and
-/// writing that began before stops after the current file (see [`crate::sink`]).
-pub(crate) fn interrupted() -> &'static AtomicBool {
-    static FLAG: AtomicBool = AtomicBool::new(false);
-    static HANDLER: OnceLock<()> = OnceLock::new();
-    HANDLER.get_or_init(|| {
-        // a second signal ends the process at once (its temporary folder, marked with this
-        // process, is removed by the next run into the same folder)
-        let _ = ctrlc::set_handler(|| {
-            if FLAG.swap(true, Ordering::SeqCst) {
-                std::process::exit(130);
-            }
-        });
-    });
-    &FLAG
-}
 
 /// A progress bar that appears after half a second, with an ETA from the elapsed time and
 /// the fraction done (elapsed·(1 − f)/f), not from the rate of the last updates.

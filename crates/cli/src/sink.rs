@@ -15,7 +15,8 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-use crate::output::BoxError;
+/// Boxed error of the command line.
+pub(crate) type BoxError = Box<dyn std::error::Error + Send + Sync>;
 
 /// Default bound on the bytes one command writes (`--max-output-bytes`): 1 GiB.
 pub const DEFAULT_MAX_OUTPUT_BYTES: u64 = 1 << 30;
@@ -67,7 +68,7 @@ pub(crate) struct Sink {
 impl Sink {
     /// A sink writing below `root`, watching the process's interrupt flag.
     pub fn new(root: &Path, limits: Limits) -> Self {
-        let flag = crate::run::interrupted();
+        let flag = crate::interrupt::interrupted();
         let cancel = (!flag.load(Ordering::SeqCst)).then_some(flag);
         Self::with_cancel(root, limits, cancel)
     }

@@ -18,9 +18,10 @@ use vectrix_plot::LineChart;
 use vectrix_scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, StopReason, body_schema};
 use vectrix_units::UnitSystem;
 
+use crate::interrupt::interrupted;
 use crate::output::{BoxError, file_stem, not_inside, preflight, write_dir};
 use crate::report::{columns_of, y_label};
-use crate::run::{Progress, interrupted, located, outcome, print_written};
+use crate::run::{Progress, located, outcome, print_written};
 
 /// Most runs one sweep may ask for (the product of the value counts).
 pub const MAX_SWEEP_RUNS: usize = 10_000;

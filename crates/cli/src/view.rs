@@ -168,7 +168,7 @@ fn hud(columns: &[String], units: &[String], rows: &[Vec<f64>], keep: &[bool]) -
 /// the end time, the completion and the number of declared columns are read: the poses come
 /// from a second pass at the view's instants, stopped early when `cancel` is set). At most
 /// [`MAX_FRAMES`] instants and [`MAX_POSES`] poses, so the page stays within
-/// [`scene_page_bound`] whatever the run's samples. A run whose poses cannot be had gets a
+/// [`crate::scene_page_bound`] whatever the run's samples. A run whose poses cannot be had gets a
 /// page that says why.
 ///
 /// Book: §2.10, §2.12 (attitudes as quaternions), §7.11 (poses of a tree of bodies).
@@ -182,12 +182,6 @@ pub fn scene_page(
     let name = &scene.spec().name;
     let data = scene_view(scene, source, run, units, cancel).unwrap_or_else(|why| no_poses(name, &why));
     page(name, &data)
-}
-
-/// An upper bound of the bytes of [`scene_page`] for `scene` (the bound `vectrix run` checks
-/// against `--max-output-bytes` before it runs).
-pub fn scene_page_bound(scene: &Scene) -> u64 {
-    crate::budget::scene_view(scene)
 }
 
 /// The view of a body scene whose run is `run` (in `units`): a second pass of `scene` at the
