@@ -244,11 +244,7 @@ impl Scene {
         let nq = model.nq();
         let (q, v) = y.split_at(nq);
         let (qd, vd) = out.split_at_mut(nq);
-        if self.needs.qdot_is_v {
-            qd.copy_from_slice(v);
-        } else {
-            self.qdot.apply(q, v, qd);
-        }
+        self.qdot_into(q, v, qd);
         let ext = if self.needs.loads {
             // the kinematics the declared loads read: twists (dashpots, aero), poses (the
             // others but rotational springs and dashpots, which read q and v), or none
@@ -282,12 +278,18 @@ impl Scene {
         let nq = model.nq();
         let (q, v) = y.split_at(nq);
         let (qd, vd) = out.split_at_mut(nq);
+        self.qdot_into(q, v, qd);
+        model.aba_into(q, v, &w.tau, None, vd, &mut w.aba).map_err(|e| e.to_string())
+    }
+
+    /// q̇ from (q, v): a copy when every coordinate is its own speed, else the joints' map.
+    #[inline(always)]
+    fn qdot_into<T: Scalar>(&self, q: &[T], v: &[T], qd: &mut [T]) {
         if self.needs.qdot_is_v {
             qd.copy_from_slice(v);
         } else {
             self.qdot.apply(q, v, qd);
         }
-        model.aba_into(q, v, &w.tau, None, vd, &mut w.aba).map_err(|e| e.to_string())
     }
 
     /// M + Σ b g gᵀ (+ rotational inerters): the mass matrix with the inerters, for
