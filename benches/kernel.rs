@@ -124,7 +124,8 @@ fn dyadic_and_resolve(c: &mut Criterion) {
     });
     // Resolution x|_B = F_Bᵀ x: vectrix through a frame; nalgebra the same transpose product.
     let bf = d.a.rotated_by_rotor(&Rotor::from_axis_angle(&d.a.vector([1.0, 2.0, 3.0]), 0.7).unwrap());
-    let axes = *bf.hidden_axes();
+    // F_B's columns in the first frame A (whose axes are the kernel's reference basis): 𝓡_{B/A}
+    let axes = bf.rotation_rel(&d.a);
     g.bench_function("resolve/vectrix", |b| {
         let bf = black_box(&bf);
         b.iter(|| black_box(&d.xs).iter().fold(Vector3::zeros(), |acc, x| acc + x.resolve(bf)))

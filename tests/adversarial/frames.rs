@@ -7,9 +7,9 @@ use nalgebra::{DMatrix, Matrix3, RowVector3, Vector3};
 use vectrix::frames::{
     Components, Frame, NonstandardFrame, Resolve, change_frame_covector, change_frame_dyadic,
     change_frame_tensor, change_frame_vector, gradient, gradient_central_difference,
-    gradient_of_inverse_power, gradient_of_norm, resolve_dyadic_mixed,
+    gradient_of_inverse_power, gradient_of_norm, max_abs_diff_in, resolve_dyadic_mixed,
 };
-use vectrix::tensor::{Dyadic, Rotor};
+use vectrix::tensor::{Dyadic, Rotor, Tensor};
 
 use crate::harness::{err_or, finite, hostile, hostile3, none_or, refused};
 
@@ -36,7 +36,7 @@ cases! {
         "Frame::rotation_dyadic_rel"] {
         let a = Frame::new();
         assert!(orthonormal(&a) && orthonormal(&Frame::<f64>::identity()));
-        assert_eq!(a.cast::<f32>().i().hidden().x, 1.0f32);
+        assert_eq!(a.cast::<f32>().i().resolve(&Frame::<f32>::identity()).x, 1.0f32);
         assert!(a.axis(0).is_none() && a.axis(4).is_none() && a.axis(usize::MAX).is_none());
         assert_eq!(a.axis(1), Some(a.i()));
         for x in hostile3() {
@@ -55,7 +55,7 @@ cases! {
         // 𝓡_{B/A} = 𝓞_{B/A}ᵀ, both orthonormal.
         let (o, r) = (b.orientation_rel(&a), b.rotation_rel(&a));
         assert!((o.transpose() - r).nan_amax() <= 4.0 * EPS);
-        assert!((*b.rotation_dyadic_rel(&a).apply(&a.i()).hidden() - *b.i().hidden()).nan_amax() <= 8.0 * EPS);
+        assert!((b.rotation_dyadic_rel(&a).apply(&a.i()).resolve(&a) - b.i().resolve(&a)).nan_amax() <= 8.0 * EPS);
         for s in hostile() {
             let rotor = Rotor::from_parts_unchecked(s, vectrix::tensor::Bivector::zero());
             let f = a.rotated_by_rotor(&rotor);
@@ -102,6 +102,42 @@ cases! {
         refused(change_frame_tensor(&DMatrix::zeros(0, 0), 1, 1, &a, &b), "change_frame_tensor(empty)");
     }
 
+    // A tensor's cap and the comparison of two tensors' components live with the frames
+    // (issue 38, item 5): caps below the size, mismatched types, NaN/∞ and overflowing
+    // differences are typed errors; otherwise the worst entry of (X − Y)|_A, finite and ≥ 0.
+    tensor_caps_and_comparison ["Frame::tensor_with_limit", "max_abs_diff_in"] {
+        let (a, b) = (Frame::new(), tilted());
+        for limit in [0, 1, 8] {
+            refused(a.tensor_with_limit(2, 0, &DMatrix::zeros(9, 1), limit), "tensor_with_limit(below the size)");
+        }
+        refused(a.tensor_with_limit(1000, 0, &DMatrix::zeros(9, 1), usize::MAX), "tensor_with_limit(3^1000)");
+        refused(a.tensor_with_limit(2, 0, &DMatrix::zeros(8, 1), 9), "tensor_with_limit(wrong shape)");
+        for limit in [9, 81, usize::MAX] {
+            err_or(a.tensor_with_limit(2, 0, &DMatrix::zeros(9, 1), limit), "tensor_with_limit", |t| {
+                t.max_components() == limit && t.is_finite()
+            });
+        }
+        let x = b.tensor(1, 0, &DMatrix::from_row_slice(3, 1, &[1.0, -2.0, 3.0])).unwrap();
+        refused(max_abs_diff_in(&x, &Tensor::identity(), &a), "max_abs_diff_in(types differ)");
+        for s in hostile() {
+            // Tensor::scalar is a plain constructor: NaN and ∞ enter, and are refused here
+            let t = Tensor::scalar(s);
+            let one = Tensor::scalar(1.0);
+            err_or(max_abs_diff_in(&t, &one, &b), "max_abs_diff_in", |d| *d == (s - 1.0).abs());
+            if !s.is_finite() {
+                refused(max_abs_diff_in(&t, &one, &b), "max_abs_diff_in(non-finite)");
+            }
+            for y in hostile3() {
+                let ty = Tensor::from_vector(&a.vector(y));
+                // components up to ±f64::MAX: a finite worst entry, or Overflow when the
+                // difference (or its rotation into B) leaves the finite range, never ∞
+                err_or(max_abs_diff_in(&x, &ty, &b), "max_abs_diff_in(vectors)", |d| d.is_finite() && *d >= 0.0);
+                let neg = Tensor::from_vector(&a.vector([-f64::MAX, 0.0, 0.0]));
+                err_or(max_abs_diff_in(&ty, &neg, &b), "max_abs_diff_in(huge)", |d| d.is_finite() && *d >= 0.0);
+            }
+        }
+    }
+
     // Nonstandard frames (§2.23): reciprocal axes satisfy a_i · a^j = δ_ij; degenerate,
     // non-finite or ill-conditioned axes and invalid condition limits are refused.
     nonstandard_frames ["NonstandardFrame::from_axes", "NonstandardFrame::from_frame", "NonstandardFrame::axis",
@@ -135,7 +171,7 @@ cases! {
                 let scale = x.iter().fold(1e-300f64, |m, c| nan_max(m, c.abs()));
                 assert!((n.contravariant(&v) - Vector3::from(x)).nan_amax() <= 16.0 * EPS * scale);
                 let cov = n.covariant(&v);
-                assert!((*n.vector_from_covariant([cov.x, cov.y, cov.z]).hidden() - v.hidden()).nan_amax() <= 32.0 * EPS * scale);
+                assert!((n.vector_from_covariant([cov.x, cov.y, cov.z]).resolve(&a) - v.resolve(&a)).nan_amax() <= 32.0 * EPS * scale);
                 let m = Matrix3::from_diagonal(&Vector3::from(x));
                 err_or(n.dyadic(&m, Components::Contravariant, Components::Covariant), "NonstandardFrame::dyadic", |d| {
                     (n.resolve_dyadic(d, Components::Contravariant, Components::Covariant) - m).nan_amax() <= 64.0 * EPS * scale

@@ -2,7 +2,9 @@
 //! partial evaluation, coform, slot permutation, the special tensors, Kronecker resolution.
 
 use nalgebra::{DMatrix, Matrix3};
+use vectrix::frames::max_abs_diff_in;
 use vectrix::prelude::*;
+use vectrix::tensor::DEFAULT_MAX_COMPONENTS;
 
 use crate::common::*;
 use crate::support::{NanAmax, assert_abs, assert_rel};
@@ -317,13 +319,23 @@ fn tensor_order_above_the_limit_is_an_error() {
     // error, never an allocation failure.
     let err = Tensor::<f64>::zeros(10, 10).unwrap_err();
     assert!(matches!(err, TensorError::TooLarge { order: 20, .. }), "{err}");
-    assert!(err.to_string().contains("set_max_components"));
+    assert!(err.to_string().contains("with_max_components"));
     let (t8, t7) = (Tensor::<f64>::zeros(8, 0).unwrap(), Tensor::<f64>::zeros(0, 7).unwrap());
     assert!(matches!(t8.otimes(&t7), Err(TensorError::TooLarge { order: 15, .. })));
     assert!(matches!(Tensor::<f64>::zeros(usize::MAX, 1), Err(TensorError::TooLarge { .. })));
-    // The cap is configurable; raising it admits order 15 (only checked, not allocated).
-    assert!(Tensor::<f64>::components_for(15, Tensor::<f64>::max_components()).is_err());
+    // The cap is carried by each tensor (default 3^14); raising it on an operand admits
+    // order 15 for its products (only checked here, not allocated).
+    assert_eq!(t8.max_components(), DEFAULT_MAX_COMPONENTS);
+    assert!(Tensor::<f64>::components_for(15, t8.max_components()).is_err());
     assert_eq!(Tensor::<f64>::components_for(15, 3usize.pow(15)), Ok(3usize.pow(15)));
+    let t8_raised = t8.clone().with_max_components(3usize.pow(15)).unwrap();
+    assert_eq!(t8_raised.otimes(&Tensor::scalar(1.0)).unwrap().max_components(), 3usize.pow(15));
+    // lowered on both operands, a product above it is refused: 3^8 components against a cap of 3^7
+    let (t4, t4c) = (
+        Tensor::<f64>::zeros(4, 0).unwrap().with_max_components(3usize.pow(7)).unwrap(),
+        Tensor::<f64>::zeros(0, 4).unwrap().with_max_components(3usize.pow(7)).unwrap(),
+    );
+    assert!(matches!(t4.otimes(&t4c), Err(TensorError::TooLarge { order: 8, limit: 2187, .. })));
     assert!(matches!(
         Tensor::<f64>::components_for(3, 26),
         Err(TensorError::TooLarge { needed: 27, limit: 26, .. })
@@ -422,7 +434,7 @@ fn problem_3_10_1_false_as_stated_contracted_associativity() {
     let both = |s: &[(usize, usize)]| {
         let left = t1.contracted_product(&t2, s).unwrap().contracted_product(&t3, s).unwrap();
         let right = t1.contracted_product(&t2.contracted_product(&t3, s).unwrap(), s).unwrap();
-        left.max_abs_diff(&right).unwrap()
+        max_abs_diff_in(&left, &right, &a).unwrap()
     };
     assert!(both(&[(3, 1), (4, 2)]) <= 1e2 * TOL);
     // Over all 72 two-pair sets S on (4, 4) products, exactly 18 satisfy the claim.

@@ -71,7 +71,7 @@ fn notebook_02_geometry() {
     println!("𝓞_(B/A) x|_A = {}", Rounded(&(o_ba * x.resolve(&a))));
     println!("|x|_A| = {}, |x|_B| = {}", Rounded(x.resolve(&a).norm()), Rounded(x.resolve(&b).norm()));
     println!("x·y from A: {}, from B: {}", Rounded(x.resolve(&a).dot(&y.resolve(&a))), Rounded(x.resolve(&b).dot(&y.resolve(&b))));
-    assert!((x.resolve(&b) - o_ba * x.resolve(&a)).amax() < 1e-14);
+    assert!((x.resolve(&b) - o_ba * x.resolve(&a)).iter().all(|e| e.abs() < 1e-14));
     // cell 5
     let p = Dyadic::projector_along(&x).expect("x ≠ 0");
     println!("P_x|_A =\n{}", Rounded(&p.resolve(&a)));
@@ -79,13 +79,13 @@ fn notebook_02_geometry() {
     let m = x.outer(&y) + x.cross_dyad();
     println!("tr M = {} in A, {} in B", Rounded(m.resolve(&a).trace()), Rounded(m.resolve(&b).trace()));
     println!("det M = {} in A, {} in B", Rounded(m.resolve(&a).determinant()), Rounded(m.resolve(&b).determinant()));
-    assert!((m.resolve(&b) - o_ba * m.resolve(&a) * o_ba.transpose()).amax() < 1e-13);
+    assert!((m.resolve(&b) - o_ba * m.resolve(&a) * o_ba.transpose()).iter().all(|e| e.abs() < 1e-13));
     // cell 6
     let b2 = Frame::from_axes(&-a.k(), &a.j(), &a.i(), ORTHONORMAL_TOL).expect("orthonormal, right-handed");
     println!("𝓞_(B/A) =\n{}", Rounded(&b2.orientation_rel(&a)));
     println!("𝓡_(B/A) =\n{}", Rounded(&b2.rotation_rel(&a)));
     let turned = a.rotated_by_rotor(&Rotor::from_axis_angle(&a.j(), FRAC_PI_2).expect("nonzero axis"));
-    println!("A turned 90° about ĵ_A gives the same frame: {}", (turned.orientation_rel(&a) - b2.orientation_rel(&a)).amax() < 1e-15);
+    println!("A turned 90° about ĵ_A gives the same frame: {}", (turned.orientation_rel(&a) - b2.orientation_rel(&a)).iter().all(|e| e.abs() < 1e-15));
     // A left-handed triple is not a frame: the error says why.
     println!("{}", Frame::from_axes(&a.k(), &a.j(), &a.i(), ORTHONORMAL_TOL).expect_err("left-handed"));
     // cell 7
@@ -109,7 +109,7 @@ fn notebook_02_geometry() {
     let q_ca = compose_quaternion(&q_cb, &q_ba);
     println!("q_(C/A) = {}", Rounded(&q_ca.to_vector4()));
     println!("eigenangle = {}°, Gibbs vector = {}", Rounded(q_ca.axis_angle().angle().to_degrees()), Rounded(&q_ca.gibbs().expect("θ < π")));
-    assert!(q_ca.to_vector4().add_scalar(-0.5).amax() < 1e-15);
+    assert!(q_ca.to_vector4().add_scalar(-0.5).iter().all(|e| e.abs() < 1e-15));
     // cell 9
     let d = RigidDisplacement::new(
         Rotation::from_axis_angle(&a.vector([1.0, 2.0, 2.0]), 1.7).expect("nonzero axis"),
@@ -175,14 +175,19 @@ fn notebook_03_tensors() {
     println!("E resolved in a rotated frame B (3 × 9, Kronecker order):\n{}", Rounded(&e.resolve(&b)));
     let z = a.vector([0.3, -1.2, 2.0]);
     let zx = e.contracted_product(&Tensor::from_vector(&z), &[(2, 2)]).expect("valid slots").to_dyadic().expect("a (1,1) tensor");
-    println!("(E ⊗ z) contracted on slots (2, 2) = z^× ? {}", (zx.resolve(&a) - z.cross_dyad().resolve(&a)).amax() < 1e-15);
+    println!("(E ⊗ z) contracted on slots (2, 2) = z^× ? {}", (zx.resolve(&a) - z.cross_dyad().resolve(&a)).iter().all(|e| e.abs() < 1e-15));
     // cell 4
+    /// max(a, b), NaN when either is NaN: a worst error folded with it cannot hide a NaN
+    /// (`f64::max` drops one, and nalgebra's `amax` keeps it only when it is the last entry).
+    fn nan_max(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+    }
     let steel = Isotropic::from_young_poisson(200e9, 0.3).expect("valid constants");
     println!("μ = {} GPa, λ = {} GPa, K = {} GPa", Rounded(steel.mu() / 1e9), Rounded(steel.lambda() / 1e9), Rounded(steel.bulk() / 1e9));
     let strain = a.dyadic(&Matrix3::new(1e-3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0));
     println!("σ|_A [MPa] =\n{}", Rounded(&(steel.stress(&strain).resolve(&a) / 1e6)));
     let back = steel.strain(&steel.stress(&strain));
-    println!("compliance undoes Hooke's law: max |ε − 𝒦⁻¹𝒦ε| = {:.1e}", (back.resolve(&a) - strain.resolve(&a)).amax());
+    println!("compliance undoes Hooke's law: max |ε − 𝒦⁻¹𝒦ε| = {:.1e}", (back.resolve(&a) - strain.resolve(&a)).iter().fold(0.0, |m, e| nan_max(m, e.abs())));
     // cell 5
     let (mut s11, mut s22) = (Vec::new(), Vec::new());
     for k in 0..=20 {
@@ -361,6 +366,15 @@ fn notebook_04_kinematics() {
     println!("ω_(D/A)|_D = {} rad/s", Rounded(&d_a.omega().resolve(&fd)));
     println!("α_(D/A)|_D = {} rad/s²", Rounded(&d_a.alpha().resolve(&fd)));
     // cell 8
+    /// max(a, b), NaN when either is NaN: a worst error folded with it cannot hide a NaN
+    /// (`f64::max` drops one, and nalgebra's `amax` keeps it only when it is the last entry).
+    fn nan_max(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+    }
+    /// max |mᵢⱼ|, NaN when any entry is NaN.
+    fn max_abs(m: &Matrix3<f64>) -> f64 {
+        m.iter().fold(0.0, |w, x| nan_max(w, x.abs()))
+    }
     let r_0 = EulerAngles::new(EulerSequence::S321, [0.3, -0.4, 0.8]).rotation_matrix();
     let w = Vector3::new(0.5, -0.3, 0.9);
     let t1 = 4.0;
@@ -372,7 +386,7 @@ fn notebook_04_kinematics() {
         Propagator::QuaternionExact,
     ] {
         match propagate_attitude(method, &r_0, |_| w, 0.0, t1, 100) {
-            Ok(r) => println!("{method:?}: max error {:.2e}", (r - exact).amax()),
+            Ok(r) => println!("{method:?}: max error {:.2e}", max_abs(&(r - exact))),
             Err(e) => println!("{method:?}: {e}"),
         }
     }
@@ -385,7 +399,7 @@ fn notebook_04_kinematics() {
     ] {
         let pts: Vec<(f64, f64)> = [10, 20, 40, 80, 160]
             .iter()
-            .map(|&n| (n as f64, (propagate_attitude(method, &r_0, |_| w, 0.0, t1, n).expect("valid interval") - exact).amax()))
+            .map(|&n| (n as f64, max_abs(&(propagate_attitude(method, &r_0, |_| w, 0.0, t1, n).expect("valid interval") - exact))))
             .collect();
         chart = chart.with_series(name, pts);
     }
@@ -645,6 +659,11 @@ fn notebook_07_dynamics() {
     let bar_thdd = bar.aba(&[0.01], &[0.0], &[0.0], None).expect("finite")[0];
     println!("thin bar ℓ₀ = 1 m: small-swing period = {} s", Rounded(2.0 * PI / (-bar_thdd / 0.01f64.sin()).sqrt()));
     // cell 5
+    /// max(a, b), NaN when either is NaN: a worst error folded with it cannot hide a NaN
+    /// (`f64::max` drops one, and nalgebra's `amax` keeps it only when it is the last entry).
+    fn nan_max(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+    }
     let wire = {
         let rod = Link::new(None, Joint::Pin { axis: Vector3::z() }, Vector3::zeros(), 0.0, Vector3::zeros(), Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 1.0)));
         let bead = Link::new(Some(0), Joint::Sleeve { axis: Vector3::x() }, Vector3::zeros(), 1.0, Vector3::zeros(), Matrix3::zeros());
@@ -667,7 +686,7 @@ fn notebook_07_dynamics() {
     let u = 1.0 / y_end[1];
     let tail = 2f64.sqrt() * (u + u.powi(5) / 10.0 + u.powi(9) / 24.0 + 5.0 * u.powi(13) / 208.0);
     println!("θ(30) = {}, x(30) = {}, θ∞ = θ(30) + tail = {}", Rounded(y_end[0]), Rounded(y_end[1]), Rounded(y_end[0] + tail));
-    let worst = sol.y.iter().map(|y| ((1.0 + y[1] * y[1]) * y[2] - 2.0).abs()).fold(0.0, f64::max);
+    let worst = sol.y.iter().map(|y| ((1.0 + y[1] * y[1]) * y[2] - 2.0).abs()).fold(0.0, nan_max);
     println!("largest drift of the angular momentum (J + mx²)θ̇ = 2: {worst:.1e}");
     show(
         LineChart::new("Example 7.15.3: bead on a free wire", "t [s]", "θ [rad], θ̇ [rad/s]")
@@ -919,6 +938,11 @@ fn notebook_09_lagrange() {
     println!("θ̈(θ = 1, θ̇ = 0) = {} (−g/ℓ sin θ = {})", Rounded(qdd[0]), Rounded(-9.81 * 1f64.sin()));
     println!("M(q) = {}", Rounded(&mass_matrix(&free, &[1.0], &[0.0], 0.0).expect("finite")));
     // cell 4
+    /// max(a, b), NaN when either is NaN: a worst error folded with it cannot hide a NaN
+    /// (`f64::max` drops one, and nalgebra's `amax` keeps it only when it is the last entry).
+    fn nan_max(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+    }
     /// Samples (t, value) of one signal.
     type Samples = Vec<(f64, f64)>;
     /// θ(t) and E(t) from θ = 1, θ̇ = 0, by the 4th-order Gauss–Legendre method (symplectic).
@@ -938,7 +962,7 @@ fn notebook_09_lagrange() {
     }
     let (theta_free, e_free) = simulate(&free, 10.0, 500);
     let (theta_damped, e_damped) = simulate(&damped, 10.0, 500);
-    let drift = e_free.iter().map(|(_, e)| (e - e_free[0].1).abs()).fold(0.0, f64::max);
+    let drift = e_free.iter().map(|(_, e)| (e - e_free[0].1).abs()).fold(0.0, nan_max);
     println!("undamped energy drift over 10 s (500 steps): {drift:.1e} J");
     println!("damped energy: {} J → {} J", Rounded(e_damped[0].1), Rounded(e_damped[e_damped.len() - 1].1));
     show(
@@ -1015,7 +1039,7 @@ fn notebook_09_lagrange() {
         )
         .expect("integration succeeds");
     let e0 = e_double[0].1;
-    println!("relative energy drift over 20 s: {:.1e}", e_double.iter().map(|(_, e)| ((e - e0) / e0).abs()).fold(0.0, f64::max));
+    println!("relative energy drift over 20 s: {:.1e}", e_double.iter().map(|(_, e)| ((e - e0) / e0).abs()).fold(0.0, nan_max));
     let mut fig = Chart { title: "Double pendulum released from (2, 2.5): path of the lower mass over 20 s".into(), x_label: "x [m]".into(), y_label: "y [m]".into(), equal_aspect: true, ..Chart::default() };
     fig.curves.push(Curve::new("lower mass", tip, 0));
     fig.markers.push(Marker { at: (0.0, 0.0), shape: Shape::Plus, color: 6, label: Some("pivot".into()) });
@@ -1068,7 +1092,7 @@ fn notebook_09_lagrange() {
         let th2 = std::f64::consts::TAU * f64::from(k) / 180.0;
         q = assemble(&linkage, th2, &q).expect("a Grashof crank-rocker assembles at every crank angle");
         let freudenstein = linkage.d / linkage.a * q[2].cos() - linkage.d / linkage.c * q[0].cos() + k3 - (q[0] - q[2]).cos();
-        worst = worst.max(freudenstein.abs());
+        worst = nan_max(worst, freudenstein.abs());
         curve.push(coupler_point(&linkage, &q));
     }
     println!("largest Freudenstein residual over a full turn of the crank: {worst:.1e}");
@@ -1258,6 +1282,15 @@ fn notebook_11_aircraft_dynamics() {
     // An impossible airframe is refused, not simulated: J_xx > J_yy + J_zz.
     println!("{}", Airframe::new(5000.0, 90000.0, 25000.0, 30000.0, 0.0).expect_err("triangle inequality"));
     // cell 4
+    /// max(a, b), NaN when either is NaN: a worst error folded with it cannot hide a NaN
+    /// (`f64::max` drops one, and nalgebra's `amax` keeps it only when it is the last entry).
+    fn nan_max(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+    }
+    /// min(a, b), NaN when either is NaN (`f64::min` drops one).
+    fn nan_min(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.min(b) }
+    }
     let jet = business_jet();
     let level = trim(&jet, TrimSpec::Straight { airspeed: BUSINESS_JET_U0, gamma: 0.0 }, TrimLimits::default()).expect("the jet trims");
     let at_trim = jet.dynamics(&level.state, &level.controls).expect("finite").to_array();
@@ -1280,8 +1313,8 @@ fn notebook_11_aircraft_dynamics() {
         .expect("a smooth flight");
     let speed: Vec<(f64, f64)> = flight.t.iter().zip(&flight.y).map(|(t, y)| (*t, AircraftState::from_array((*y).into()).aero_angles().airspeed)).collect();
     let path: Vec<(f64, f64)> = flight.y.iter().map(|y| (y[0] / 1000.0, -y[2])).collect();
-    let top = path.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
-    println!("highest point {} ft above the start; airspeed between {} and {} ft/s", Rounded(top), Rounded(speed.iter().map(|p| p.1).fold(f64::INFINITY, f64::min)), Rounded(speed.iter().map(|p| p.1).fold(0.0, f64::max)));
+    let top = path.iter().map(|p| p.1).fold(f64::NEG_INFINITY, nan_max);
+    println!("highest point {} ft above the start; airspeed between {} and {} ft/s", Rounded(top), Rounded(speed.iter().map(|p| p.1).fold(f64::INFINITY, nan_min)), Rounded(speed.iter().map(|p| p.1).fold(0.0, nan_max)));
     let mut fig = Chart { title: "Business jet after a held elevator step: flight path (phugoid)".into(), x_label: "range x [1000 ft]".into(), y_label: "height −z [ft]".into(), ..Chart::default() };
     fig.curves.push(Curve::new("nonlinear 12-state model", path, 0));
     show(fig.to_svg().expect("finite drawing"));
@@ -1336,12 +1369,17 @@ fn notebook_12_steady_flight() {
             .expect("finite data"),
     );
     // cell 7
+    /// max(a, b), NaN when either is NaN: a worst error folded with it cannot hide a NaN
+    /// (`f64::max` drops one, and nalgebra's `amax` keeps it only when it is the last entry).
+    fn nan_max(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+    }
     let lin = linearize(&jet, &level).expect("finite derivatives");
     println!("largest coupling entry between the blocks: {:.1e}", lin.coupling());
     let lon = lin.longitudinal().expect("decoupled");
     let table = business_jet_longitudinal().state_space().expect("valid derivatives");
     println!("longitudinal A from the nonlinear model =\n{}", Rounded(lon.a()));
-    println!("max |A − A(Table 14.1)| = {:.1e}", (lon.a() - table.a()).amax());
+    println!("max |A − A(Table 14.1)| = {:.1e}", (lon.a() - table.a()).iter().fold(0.0, |m, e| nan_max(m, e.abs())));
     // cell 8
     let (period, radius) = (83.0, 4100.0);
     let ac = Frame::new();
@@ -1747,11 +1785,16 @@ fn notebook_16_frequency_response() {
     let r4 = lead.bode(&[4.0]).expect("finite");
     println!("lead at ω = 4: {} dB, {}°", Rounded(r4.magnitude_db[0]), Rounded(r4.phase_deg[0]));
     // cell 4
+    /// max(a, b), NaN when either is NaN: a worst error folded with it cannot hide a NaN
+    /// (`f64::max` drops one, and nalgebra's `amax` keeps it only when it is the last entry).
+    fn nan_max(a: f64, b: f64) -> f64 {
+        if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) }
+    }
     let w = logspace(-1.0, 1.0, 400).expect("valid range");
     let zetas = [0.1, 0.3, 0.5, 0.7, 1.0];
     let family: Vec<(String, FrequencyResponse)> = zetas.iter().map(|z| (format!("ζ = {z}"), tf(&[1.0], &[1.0, 2.0 * z, 1.0]).bode(&w).expect("finite"))).collect();
     for (name, r) in &family {
-        let peak = r.magnitude_db.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let peak = r.magnitude_db.iter().copied().fold(f64::NEG_INFINITY, nan_max);
         println!("{name}: peak {} dB (|G| = {})", Rounded(peak), Rounded(10f64.powf(peak / 20.0)));
     }
     {

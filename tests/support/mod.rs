@@ -147,8 +147,8 @@ fn max_abs_diff(got: &[f64], want: &[f64]) -> f64 {
 // `f64::max(NaN, x)` is x, and nalgebra's `amax` keeps a NaN entry only when it is the last
 // one, so a worst error folded with either passes `worst <= tol` although an entry is NaN.
 // The folds below return NaN when any entry is NaN, so every comparison with them fails.
-// `nan_blind_folds_are_refused` in `tests/textbook_index.rs` rejects the NaN-blind forms by
-// pattern.
+// `nan_blind_folds_are_refused` in `tests/textbook_index/nan_folds.rs` rejects the NaN-blind
+// forms by pattern.
 
 /// max(a, b), NaN when either is NaN: the drop-in for `f64::max` in a worst-error fold
 /// (`.fold(0.0, nan_max)`, `worst = nan_max(worst, err)`).

@@ -1,6 +1,7 @@
 //! Standard frames (book §2.4): F_A = [î_A ĵ_A k̂_A].
 
 use nalgebra::{Matrix3, Vector3};
+use vectrix_tensor::frames_access::Hidden;
 use vectrix_tensor::{Covector, Dyadic, Rotor, Scalar, Vector};
 
 use crate::FrameError;
@@ -241,13 +242,5 @@ impl<T: Scalar> Frame<T> {
     #[inline]
     pub fn rotation_dyadic_rel(&self, a: &Frame<T>) -> Dyadic<T> {
         Dyadic::from_hidden(self.axes * a.axes.transpose())
-    }
-
-    /// Reserved for crates that must pass the hidden basis to a peer (benches).
-    ///
-    /// Book: §2.4 (not part of the book: implementation detail).
-    #[doc(hidden)]
-    pub fn hidden_axes(&self) -> &Matrix3<T> {
-        &self.axes
     }
 }

@@ -12,6 +12,7 @@
 
 use nalgebra::Vector3;
 use num_dual::Dual64;
+use vectrix_tensor::frames_access::Hidden;
 use vectrix_tensor::{Covector, Vector};
 
 use crate::FrameError;

@@ -2,7 +2,10 @@
 //!
 //! A frame F_A = [î_A ĵ_A k̂_A] is three orthonormal right-handed physical vectors (book §2.4).
 //! This crate is the only layer that sees the kernel's hidden basis: it turns frame-free
-//! objects into numbers (`x.resolve(&a)`) and numbers into objects (`a.vector([..])`).
+//! objects into numbers (`x.resolve(&a)`) and numbers into objects (`a.vector([..])`). It reads
+//! the components through `vectrix_tensor::frames_access`, which exists only with the feature
+//! `frames-access` that this crate alone enables (vectrix-tensor's docs, "Sealed components").
+//! Comparisons of components live here too ([`max_abs_diff_in`]): they depend on the frame.
 //!
 //! # Conventions (proved by the example below)
 //!
@@ -48,7 +51,7 @@ pub use frame::{Frame, ORTHONORMAL_TOL};
 pub use gradient::{gradient, gradient_central_difference, gradient_of_inverse_power, gradient_of_norm};
 pub use nonstandard::{Components, MAX_CONDITION, NonstandardFrame, resolve_dyadic_mixed};
 pub use resolve::{Resolve, change_frame_covector, change_frame_dyadic, change_frame_vector};
-pub use tensor_resolve::change_frame_tensor;
+pub use tensor_resolve::{change_frame_tensor, max_abs_diff_in};
 
 /// `use vectrix_frames::prelude::*;`
 ///

@@ -17,6 +17,7 @@
 //! condition number.
 
 use nalgebra::{LU, Matrix3, U3, Vector3};
+use vectrix_tensor::frames_access::Hidden;
 use vectrix_tensor::{Dyadic, Scalar, Vector};
 
 use crate::{Frame, FrameError};

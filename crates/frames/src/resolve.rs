@@ -1,6 +1,7 @@
 //! Resolution of kernel objects in a frame (book §2.4, §2.6, §3.6).
 
 use nalgebra::{Matrix3, RowVector3, Vector3};
+use vectrix_tensor::frames_access::Hidden;
 use vectrix_tensor::{Covector, Dyadic, Scalar, Vector};
 
 use crate::Frame;

@@ -15,6 +15,7 @@
 
 use nalgebra::Vector3;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use vectrix_tensor::frames_access::Hidden;
 use vectrix_tensor::{Scalar, Vector};
 
 use crate::{Frame, ORTHONORMAL_TOL};

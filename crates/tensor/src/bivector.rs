@@ -23,20 +23,6 @@ impl<T: Scalar> Bivector<T> {
         Self { c: Vector3::zeros() }
     }
 
-    /// Reserved for `vectrix-frames` (see [`Vector::from_hidden`]).
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn from_hidden(c: Vector3<T>) -> Self {
-        Self { c }
-    }
-
-    /// Reserved for `vectrix-frames` (see [`Vector::hidden`]).
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn hidden(&self) -> &Vector3<T> {
-        &self.c
-    }
-
     /// The dual 𝒥n⃗ of a vector: the plane perpendicular to n⃗, oriented by the right-hand rule
     /// (book (3.8.x), duality by the pseudoscalar 𝒥).
     #[inline]
@@ -85,7 +71,7 @@ impl<T: Scalar> Bivector<T> {
         let (x, y, z) = (self.c.x, self.c.y, self.c.z);
         let o = T::zero();
         // (x∧y)[a][b] = ε_abc (x×y)_c
-        Tensor { p: 2, q: 0, data: vec![o, z, -y, -z, o, x, y, -x, o] }
+        Tensor { p: 2, q: 0, data: vec![o, z, -y, -z, o, x, y, -x, o], limit: crate::DEFAULT_MAX_COMPONENTS }
     }
 
     /// The compressed bivector of a dense (2, 0) tensor, which must be alternating within

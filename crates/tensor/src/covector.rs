@@ -23,24 +23,6 @@ impl<T: Scalar> Covector<T> {
         Self { c: Vector3::zeros() }
     }
 
-    /// Reserved for `vectrix-frames` (see [`Vector::from_hidden`]).
-    ///
-    /// Book: §2.1; DESIGN §1.5.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn from_hidden(c: Vector3<T>) -> Self {
-        Self { c }
-    }
-
-    /// Reserved for `vectrix-frames` (see [`Vector::hidden`]).
-    ///
-    /// Book: §2.1; DESIGN §1.5.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn hidden(&self) -> &Vector3<T> {
-        &self.c
-    }
-
     /// Coform back to the vector: (x⃗′)′ = x⃗ (Fact 2.1.2).
     ///
     /// Book: (2.1.6), Fact 2.1.2.

@@ -32,24 +32,6 @@ impl<T: Scalar> Dyadic<T> {
         Self { m: Matrix3::identity() }
     }
 
-    /// Reserved for `vectrix-frames` (see [`Vector::from_hidden`]).
-    ///
-    /// Book: §2.6; DESIGN §1.5.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn from_hidden(m: Matrix3<T>) -> Self {
-        Self { m }
-    }
-
-    /// Reserved for `vectrix-frames` (see [`Vector::hidden`]).
-    ///
-    /// Book: §2.6; DESIGN §1.5.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn hidden(&self) -> &Matrix3<T> {
-        &self.m
-    }
-
     /// M⃗ x⃗.
     ///
     /// Book: Fact 2.6.2, (2.6.17).
@@ -144,11 +126,13 @@ impl<T: Scalar> Dyadic<T> {
     pub fn vee(&self) -> Vector<T> {
         let m = &self.m;
         let h = T::lit(0.5);
-        Vector::from_hidden(nalgebra::Vector3::new(
-            (m[(2, 1)] - m[(1, 2)]) * h,
-            (m[(0, 2)] - m[(2, 0)]) * h,
-            (m[(1, 0)] - m[(0, 1)]) * h,
-        ))
+        Vector {
+            c: nalgebra::Vector3::new(
+                (m[(2, 1)] - m[(1, 2)]) * h,
+                (m[(0, 2)] - m[(2, 0)]) * h,
+                (m[(1, 0)] - m[(0, 1)]) * h,
+            ),
+        }
     }
 
     /// Projector along x⃗: P = x̂x̂′ (2.7). `None` for x⃗ = 0⃗.

@@ -222,7 +222,7 @@ impl<T: Scalar> Isotropic<T> {
             let (k, l, m, n) = (idx / 27, (idx / 9) % 3, (idx / 3) % 3, idx % 3);
             self.mu * (d(k, m) * d(l, n) + d(k, l) * d(m, n)) + self.lambda * d(k, n) * d(l, m)
         });
-        Tensor { p: 2, q: 2, data: data.collect() }
+        Tensor { p: 2, q: 2, data: data.collect(), limit: crate::DEFAULT_MAX_COMPONENTS }
     }
 
     /// Stress σ = 2μ ε + λ (tr ε) I (3.4.11), the closed form of Hooke's law; evaluated as

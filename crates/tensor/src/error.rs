@@ -58,16 +58,16 @@ pub enum TensorError {
         /// Covector slots of the tensor.
         q: usize,
     },
-    /// The tensor's storage would exceed the configured limit.
+    /// The tensor's storage would exceed the cap it carries (`Tensor::max_components`).
     #[error(
-        "a tensor of order {order} needs 3^{order} = {needed} components, above the limit of {limit}; raise the limit with Tensor::set_max_components or lower the order"
+        "a tensor of order {order} needs 3^{order} = {needed} components, above the limit of {limit}; raise the operand's cap with Tensor::with_max_components (or build with Tensor::zeros_with_limit) or lower the order"
     )]
     TooLarge {
         /// Requested order p + q.
         order: usize,
         /// Components needed (saturating).
         needed: u128,
-        /// Current limit.
+        /// The cap that refused it.
         limit: usize,
     },
     /// Two tensors or arrays whose shapes do not fit together.

@@ -9,6 +9,20 @@
 //! Every type is generic over [`Scalar`] (default `f64`; also `f32` and num-dual's dual
 //! numbers).
 //!
+//! # Sealed components
+//!
+//! The hidden components are read and written only by `vectrix-frames` (DESIGN §1.5), through
+//! the traits of a module that exists only with the non-default cargo feature `frames-access`,
+//! which only `vectrix-frames` enables. Rust has no friend crates, and nothing the kernel
+//! hands out (a key, a token) can be kept from the other crates of the same build; so the
+//! seal is the feature, the module's absence from every re-export and from the docs, and the
+//! source scan `tests/adversarial/sealed.rs`, which fails when any file outside
+//! `crates/tensor` and `crates/frames` names the module or the feature. Everyone else gets
+//! numbers with `x.resolve(&frame)` and builds objects with `frame.vector([..])`.
+//!
+//! The kernel keeps no process-wide mutable state: the cap on a tensor's stored components is
+//! carried by each tensor ([`Tensor::max_components`]).
+//!
 //! Bad input: every public function returns a correct value or a typed error (never a panic,
 //! hang, NaN or ∞ inside `Ok`); the contract — which functions return `Result`, how overflow
 //! and tolerances are reported — is `docs/robustness.md` in the repository.
@@ -22,6 +36,9 @@ mod dyadic;
 mod elasticity;
 mod error;
 mod f64;
+#[cfg(feature = "frames-access")]
+#[doc(hidden)]
+pub mod frames_access;
 mod multivector;
 mod pauli;
 mod rotor;

@@ -34,14 +34,14 @@ impl<'de, T: Scalar + Deserialize<'de>> Deserialize<'de> for Vector<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let c = <[T; 3]>::deserialize(d)?;
         finite(&c, "a vector")?;
-        Ok(Vector::from_hidden(Vector3::from(c)))
+        Ok(Vector { c: Vector3::from(c) })
     }
 }
 
 /// M⃗|_{F₀} as three rows.
 impl<T: Scalar + Serialize> Serialize for Dyadic<T> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let m = self.hidden();
+        let m = &self.m;
         let row = |r: usize| [m[(r, 0)], m[(r, 1)], m[(r, 2)]];
         [row(0), row(1), row(2)].serialize(s)
     }
@@ -52,6 +52,6 @@ impl<'de, T: Scalar + Deserialize<'de>> Deserialize<'de> for Dyadic<T> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let rows = <[[T; 3]; 3]>::deserialize(d)?;
         finite(rows.as_flattened(), "a dyadic")?;
-        Ok(Dyadic::from_hidden(Matrix3::from_fn(|r, c| rows[r][c])))
+        Ok(Dyadic { m: Matrix3::from_fn(|r, c| rows[r][c]) })
     }
 }

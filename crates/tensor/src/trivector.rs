@@ -57,7 +57,7 @@ impl<T: Scalar> Trivector<T> {
         let data = (0..27)
             .map(|k| T::lit(f64::from(crate::tensor::levi_civita_symbol(k / 9, (k / 3) % 3, k % 3))) * self.t)
             .collect();
-        Tensor { p: 3, q: 0, data }
+        Tensor { p: 3, q: 0, data, limit: crate::DEFAULT_MAX_COMPONENTS }
     }
 
     /// The compressed trivector of a dense (3, 0) tensor, which must be alternating within

@@ -28,25 +28,6 @@ impl<T: Scalar> Vector<T> {
         Self { c: Vector3::zeros() }
     }
 
-    /// Components in the hidden reference basis. Reserved for `vectrix-frames`, the only
-    /// layer allowed to see that basis (DESIGN §1.5); every other caller resolves in a frame.
-    ///
-    /// Book: §1.3 (physical vectors have no components); DESIGN §1.5.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn from_hidden(c: Vector3<T>) -> Self {
-        Self { c }
-    }
-
-    /// See [`Vector::from_hidden`]: reserved for `vectrix-frames` and peer benches.
-    ///
-    /// Book: §1.3; DESIGN §1.5.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn hidden(&self) -> &Vector3<T> {
-        &self.c
-    }
-
     /// Dot product x⃗·y⃗ = |x||y|cos θ (2.1.1).
     ///
     /// Book: (2.1.1), (2.4.25).
@@ -223,15 +204,6 @@ impl<T: Scalar> Vector<T> {
         let theta = (n_hat.dot(&x.cross(&y)) + T::zero()).atan2(x.dot(&y) + T::zero());
         // Anti-parallel: atan2(−0, −1) = −π; the book's rule (2.3.1) gives +π.
         Some(wrap_angle(theta))
-    }
-
-    /// Components x|_B = 𝓞 x|_A style map applied in the hidden basis; for frames only.
-    ///
-    /// Book: (2.10.31); DESIGN §1.5.
-    #[doc(hidden)]
-    #[inline(always)]
-    pub fn map_hidden(&self, f: impl FnOnce(&Vector3<T>) -> Vector3<T>) -> Vector<T> {
-        Vector { c: f(&self.c) }
     }
 
     /// `true` when every component is finite.

@@ -140,11 +140,11 @@ impl<T: Scalar> Tensor<T> {
         let (p, q) = if contravariant { (k, 0) } else { (0, k) };
         if k > 3 {
             // (3.8.28): no nonzero alternating tensor of order > 3 in 3-D.
-            return Tensor::zeros(p, q);
+            return Tensor::zeros_with_limit(p, q, self.joint_limit(other));
         }
         let product = self.otimes(other)?;
         let scale = T::lit(1.0 / (factorial(k1) * factorial(k2)));
-        let mut sum = Tensor::zeros(p, q)?;
+        let mut sum = Tensor::zeros_with_limit(p, q, self.joint_limit(other))?;
         for (perm, sign) in permutations(k) {
             let one_based: Vec<usize> = perm.iter().map(|i| i + 1).collect();
             let t = product.permute(&one_based)?;

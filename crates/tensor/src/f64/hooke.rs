@@ -72,7 +72,12 @@ mod tests {
     #[test]
     fn f64_hooke_kernel_matches_the_generic_code_bitwise() {
         let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        let random = Tensor { p: 2, q: 2, data: (0..81).map(|_| xorshift(&mut seed)).collect() };
+        let random = Tensor {
+            p: 2,
+            q: 2,
+            data: (0..81).map(|_| xorshift(&mut seed)).collect(),
+            limit: crate::DEFAULT_MAX_COMPONENTS,
+        };
         let iso = Isotropic::from_lame(1.2, 0.8).unwrap().stiffness();
         let eps = hard_strains();
         for k in [iso, random] {

@@ -43,7 +43,8 @@ impl<T: Scalar> Tensor<T> {
     /// [`TensorError::TooLarge`] when the product's 3^(k₁+k₂) components exceed the cap.
     pub fn otimes(&self, other: &Tensor<T>) -> Result<Tensor<T>, TensorError> {
         let (p, q) = (self.p + other.p, self.q + other.q);
-        let n = Self::checked_len(p, q)?;
+        let limit = self.joint_limit(other);
+        let n = Self::checked_len(p, q, limit)?;
         let (na1, nc1) = (3usize.pow(self.p as u32), 3usize.pow(self.q as u32));
         let (na2, nc2) = (3usize.pow(other.p as u32), 3usize.pow(other.q as u32));
         let mut data = Vec::with_capacity(n);
@@ -57,7 +58,7 @@ impl<T: Scalar> Tensor<T> {
                 }
             }
         }
-        Ok(Tensor { p, q, data })
+        Ok(Tensor { p, q, data, limit })
     }
 
     /// Contraction (T)_(i₁,j₁),(i₂,j₂),… (3.2.2–3): each pair joins the i-th vector slot
@@ -69,7 +70,7 @@ impl<T: Scalar> Tensor<T> {
     /// # Errors
     /// [`TensorError::Shape`] for an index outside its group or a slot used twice.
     pub fn contract(&self, pairs: &[(usize, usize)]) -> Result<Tensor<T>, TensorError> {
-        fused(self, &Tensor::scalar(T::one()), pairs)
+        fused(self, &Tensor { limit: self.limit, ..Tensor::scalar(T::one()) }, pairs)
     }
 
     /// The contracted product (T₁⊗T₂)_S (3.3.5), computed in one fused loop that never
@@ -148,7 +149,7 @@ impl<T: Scalar> Tensor<T> {
             args.iter().filter_map(|a| if let Arg::Vector(y) = a { Some(*y) } else { None }).collect();
         let covs: Vec<_> =
             args.iter().filter_map(|a| if let Arg::Covector(x) = a { Some(*x) } else { None }).collect();
-        let t2 = Tensor::from_factors(&vecs, &covs)?;
+        let t2 = Tensor::from_factors_with_limit(&vecs, &covs, self.limit)?;
         // (3.3.5): a covector fills vector slot s ↔ pair (s, q + its index); a vector fills
         // covector slot s ↔ pair (p + its index, s).
         let (mut iv, mut ic) = (0, 0);
@@ -229,7 +230,8 @@ fn fused<T: Scalar>(
         .chain((0..q).filter(|&j| !used_c[j]).map(covector_slot))
         .collect();
     let r = pairs.len();
-    let n_out = Tensor::<T>::checked_len(p - r, q - r)?;
+    let limit = a.joint_limit(b);
+    let n_out = Tensor::<T>::checked_len(p - r, q - r, limit)?;
     // Offsets of every summation combination, computed once.
     let mut offs = vec![(0usize, 0usize)];
     for s in &sums {
@@ -258,5 +260,5 @@ fn fused<T: Scalar>(
             ob -= 2 * free[k].b;
         }
     }
-    Ok(Tensor { p: p - r, q: q - r, data })
+    Ok(Tensor { p: p - r, q: q - r, data, limit })
 }

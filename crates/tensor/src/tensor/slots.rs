@@ -22,7 +22,7 @@ impl<T: Scalar> Tensor<T> {
         for c in 0..cols {
             data.extend((0..rows).map(|r| self.data[r * cols + c]));
         }
-        Tensor { p: self.q, q: self.p, data }
+        Tensor { p: self.q, q: self.p, data, limit: self.limit }
     }
 
     /// Slot permutation T_σ (3.7.14): T_σ(a₁, …, a_n) = T(a_σ(1), …, a_σ(n)), with σ a
@@ -75,16 +75,6 @@ impl<T: Scalar> Tensor<T> {
                 off -= 2 * stride[k];
             }
         }
-        Ok(Tensor { p: self.p, q: self.q, data })
-    }
-
-    /// The component at the multi-index `idx` (0-based digits, vector slots first) in the
-    /// hidden basis. For the frames layer and for tests of the layout.
-    #[doc(hidden)]
-    pub fn hidden_at(&self, idx: &[usize]) -> Option<T> {
-        if idx.len() != self.order() || idx.iter().any(|&i| i > 2) {
-            return None;
-        }
-        Some(self.data[idx.iter().fold(0, |o, &i| 3 * o + i)])
+        Ok(Tensor { p: self.p, q: self.q, data, limit: self.limit })
     }
 }

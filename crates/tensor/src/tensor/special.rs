@@ -1,6 +1,6 @@
 //! The special tensors of §3.3: metric, cometric, identity, ε tensor, U4.
 
-use super::Tensor;
+use super::{DEFAULT_MAX_COMPONENTS, Tensor};
 use crate::Scalar;
 
 /// Kronecker δ as a scalar.
@@ -33,7 +33,7 @@ impl<T: Scalar> Tensor<T> {
                 f(&idx)
             })
             .collect();
-        Tensor { p, q, data }
+        Tensor { p, q, data, limit: DEFAULT_MAX_COMPONENTS }
     }
 
     /// The metric G = Σ ê′_i⊗ê′_i, type (0, 2) (3.3.9): G(x⃗, y⃗) = x⃗·y⃗ (3.1.9). It lowers a
