@@ -136,7 +136,7 @@ impl Generator {
     fn new(m: &DMatrix<f64>) -> Self {
         let k = balance_exponents(m);
         let n = m.nrows();
-        let mb = faer::Mat::from_fn(n, n, |i, j| crate::poly::mul_pow2(m[(i, j)], k[j] - k[i]));
+        let mb = faer::Mat::from_fn(n, n, |i, j| crate::axis::mul_pow2(m[(i, j)], k[j] - k[i]));
         Self { m: mb, d: k.iter().map(|&ki| crate::axis::pow2(ki)).collect() }
     }
 
