@@ -8,6 +8,7 @@
 #![warn(missing_docs)]
 
 mod axis;
+mod convert;
 mod equilibria;
 mod error;
 mod expm;
