@@ -3,7 +3,9 @@
 //!
 //! Book: (15.8.3)–(15.8.4); 15.20.30, 15.20.39–45.
 
-use super::{Generator, Readout, TimeResponse, check_grid, check_size, finite_response, matvec};
+use super::{
+    Generator, Readout, TimeResponse, check_grid, check_size, check_x0_len, finite_response, matvec,
+};
 use crate::error::LtiError;
 use crate::ss::StateSpace;
 use nalgebra::DMatrix;
@@ -93,13 +95,7 @@ fn check_arguments(
             found: format!("{}", u.len()),
         });
     }
-    if x0.len() != sys.n_states() {
-        return Err(LtiError::DimensionMismatch {
-            what: "x0",
-            expected: format!("{} states", sys.n_states()),
-            found: format!("{}", x0.len()),
-        });
-    }
+    check_x0_len(sys, x0)?;
     crate::error::check_finite("u", u)?;
     crate::error::check_finite("x0", x0)?;
     if !(delay.is_finite() && delay >= 0.0) {

@@ -284,12 +284,8 @@ pub fn response(
     finite_response(TimeResponse { t: t.to_vec(), y, x, impulse_weight })
 }
 
-/// Free response y = Ce^{At}x₀ (15.5.3, (15.8.4) with u = 0).
-///
-/// # Errors
-/// [`LtiError::DimensionMismatch`] when x₀ has the wrong length; grid, size and overflow
-/// errors as [`response`].
-pub fn initial(sys: &StateSpace, x0: &[f64], t: &[f64]) -> Result<TimeResponse, LtiError> {
+/// [`LtiError::DimensionMismatch`] unless the initial state x₀ has one entry per state.
+fn check_x0_len(sys: &StateSpace, x0: &[f64]) -> Result<(), LtiError> {
     if x0.len() != sys.n_states() {
         return Err(LtiError::DimensionMismatch {
             what: "x0",
@@ -297,6 +293,16 @@ pub fn initial(sys: &StateSpace, x0: &[f64], t: &[f64]) -> Result<TimeResponse, 
             found: format!("{}", x0.len()),
         });
     }
+    Ok(())
+}
+
+/// Free response y = Ce^{At}x₀ (15.5.3, (15.8.4) with u = 0).
+///
+/// # Errors
+/// [`LtiError::DimensionMismatch`] when x₀ has the wrong length; grid, size and overflow
+/// errors as [`response`].
+pub fn initial(sys: &StateSpace, x0: &[f64], t: &[f64]) -> Result<TimeResponse, LtiError> {
+    check_x0_len(sys, x0)?;
     crate::error::check_finite("x0", x0)?;
     // The free response from x₀ equals the impulse response of (A, x₀, C, 0) (§15.9).
     let b = DMatrix::from_column_slice(x0.len(), 1, x0);
