@@ -153,57 +153,10 @@ fn bounds(spec: &TrimSpec, lim: &TrimLimits) -> Vec<(f64, f64)> {
 /// stalls (e.g. the elevator at its limit cannot zero the pitching moment).
 pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, FlightError> {
     ac.check()?;
-    let (v, names): (f64, &[&str]) = match spec {
-        TrimSpec::Straight { airspeed, gamma } => {
-            if !(gamma.is_finite() && gamma.abs() < 1.5) {
-                return Err(FlightError::OutOfRange { what: "γ", value: gamma, valid: "|γ| < 1.5 rad" });
-            }
-            (airspeed, &NAMES_STRAIGHT)
-        }
-        TrimSpec::LevelTurn { airspeed, turn_rate } => {
-            if !turn_rate.is_finite() {
-                return Err(FlightError::NonFinite { what: "turn rate" });
-            }
-            (airspeed, &NAMES_TURN)
-        }
-    };
-    if !(v.is_finite() && v > 0.0) {
-        return Err(FlightError::OutOfRange { what: "airspeed", value: v, valid: "a finite V > 0" });
-    }
-    // Each limit bounds a box [−l, l] (thrust [0, l]): it must be a number > 0 (+∞ = no limit),
-    // else the box is empty or NaN and clamping into it is meaningless.
-    for (what, l) in [
-        ("α limit", limits.alpha),
-        ("surface limit", limits.surface),
-        ("thrust limit", limits.thrust),
-        ("bank limit", limits.bank),
-    ] {
-        if l.is_nan() || l <= 0.0 {
-            return Err(FlightError::OutOfRange { what, value: l, valid: "a limit > 0 (+∞ for none)" });
-        }
-    }
+    let (v, names) = check_spec(&spec, &limits)?;
     let bnd = bounds(&spec, &limits);
     let n = bnd.len();
-    // initial guess: level-flight lift coefficient for α, drag for thrust
-    let w = ac.airframe.mass() * ac.g;
-    let qs = ac.dynamic_pressure(v) * ac.geometry.area;
-    let c = &ac.coefficients;
-    let cl = w / qs;
-    let alpha0 = if c.cl_alpha != 0.0 { (cl - c.cl0) / c.cl_alpha } else { 0.0 };
-    let thrust0 = qs * (c.cd_par + c.k_induced * cl * cl);
-    let mut z = vec![0.0; n];
-    z[0] = alpha0;
-    z[n - 1] = thrust0;
-    if let TrimSpec::Straight { gamma, .. } = spec {
-        z[2] = thrust0 + w * gamma.sin();
-    }
-    if let TrimSpec::LevelTurn { turn_rate, .. } = spec {
-        z[2] = (v * turn_rate / ac.g).atan();
-        z[1] = alpha0;
-    }
-    for (zi, (lo, hi)) in z.iter_mut().zip(&bnd) {
-        *zi = zi.clamp(*lo, *hi);
-    }
+    let mut z = initial_guess(ac, &spec, v, &bnd);
     let tol = 1e-12;
     let mut lambda = 1e-6;
     let mut r = DVector::from_vec(residual(ac, &spec, &z)?);
@@ -214,24 +167,13 @@ pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, F
             let (state, controls) = assemble(&spec, &z);
             return Ok(Trim { state, controls, residual: rmax, iterations: it });
         }
-        // exact Jacobian, one dual pass per unknown
-        let mut jac = DMatrix::zeros(n, n);
-        for j in 0..n {
-            let zd: Vec<Dual64> = z
-                .iter()
-                .enumerate()
-                .map(|(k, &zk)| Dual64::new(zk, if k == j { 1.0 } else { 0.0 }))
-                .collect();
-            let rd = residual(ac, &spec, &zd)?;
-            for i in 0..n {
-                jac[(i, j)] = rd[i].eps;
-            }
-        }
+        let jac = jacobian(ac, &spec, &z, n)?;
         let jt = jac.transpose();
         let jtj = &jt * &jac;
         let g = &jt * &r;
         let mut improved = false;
         for _ in 0..30 {
+            // damped normal equations (JᵀJ + λ(I + diag JᵀJ)) s = −Jᵀr, the step projected into the box
             let mut m = jtj.clone();
             for k in 0..n {
                 m[(k, k)] += lambda * (1.0 + jtj[(k, k)]);
@@ -261,6 +203,80 @@ pub fn trim(ac: &Aircraft, spec: TrimSpec, limits: TrimLimits) -> Result<Trim, F
         }
     }
     Err(fail(&r, names, max_iter))
+}
+
+/// The spec's airspeed and the names of its conditions, after checking the spec and the limits.
+fn check_spec(spec: &TrimSpec, limits: &TrimLimits) -> Result<(f64, &'static [&'static str]), FlightError> {
+    let (v, names): (f64, &'static [&'static str]) = match *spec {
+        TrimSpec::Straight { airspeed, gamma } => {
+            if !(gamma.is_finite() && gamma.abs() < 1.5) {
+                return Err(FlightError::OutOfRange { what: "γ", value: gamma, valid: "|γ| < 1.5 rad" });
+            }
+            (airspeed, &NAMES_STRAIGHT)
+        }
+        TrimSpec::LevelTurn { airspeed, turn_rate } => {
+            if !turn_rate.is_finite() {
+                return Err(FlightError::NonFinite { what: "turn rate" });
+            }
+            (airspeed, &NAMES_TURN)
+        }
+    };
+    if !(v.is_finite() && v > 0.0) {
+        return Err(FlightError::OutOfRange { what: "airspeed", value: v, valid: "a finite V > 0" });
+    }
+    // Each limit bounds a box [−l, l] (thrust [0, l]): it must be a number > 0 (+∞ = no limit),
+    // else the box is empty or NaN and clamping into it is meaningless.
+    for (what, l) in [
+        ("α limit", limits.alpha),
+        ("surface limit", limits.surface),
+        ("thrust limit", limits.thrust),
+        ("bank limit", limits.bank),
+    ] {
+        if l.is_nan() || l <= 0.0 {
+            return Err(FlightError::OutOfRange { what, value: l, valid: "a limit > 0 (+∞ for none)" });
+        }
+    }
+    Ok((v, names))
+}
+
+/// The starting point: α from the level-flight lift coefficient, thrust from the drag (plus
+/// the weight component on a climb), the bank of a coordinated turn; clamped into the box.
+fn initial_guess(ac: &Aircraft, spec: &TrimSpec, v: f64, bnd: &[(f64, f64)]) -> Vec<f64> {
+    let n = bnd.len();
+    let w = ac.airframe.mass() * ac.g;
+    let qs = ac.dynamic_pressure(v) * ac.geometry.area;
+    let c = &ac.coefficients;
+    let cl = w / qs;
+    let alpha0 = if c.cl_alpha != 0.0 { (cl - c.cl0) / c.cl_alpha } else { 0.0 };
+    let thrust0 = qs * (c.cd_par + c.k_induced * cl * cl);
+    let mut z = vec![0.0; n];
+    z[0] = alpha0;
+    z[n - 1] = thrust0;
+    if let TrimSpec::Straight { gamma, .. } = *spec {
+        z[2] = thrust0 + w * gamma.sin();
+    }
+    if let TrimSpec::LevelTurn { turn_rate, .. } = *spec {
+        z[2] = (v * turn_rate / ac.g).atan();
+        z[1] = alpha0;
+    }
+    for (zi, (lo, hi)) in z.iter_mut().zip(bnd) {
+        *zi = zi.clamp(*lo, *hi);
+    }
+    z
+}
+
+/// ∂r/∂z at z, exact: one dual-number pass of the residual per unknown.
+fn jacobian(ac: &Aircraft, spec: &TrimSpec, z: &[f64], n: usize) -> Result<DMatrix<f64>, FlightError> {
+    let mut jac = DMatrix::zeros(n, n);
+    for j in 0..n {
+        let zd: Vec<Dual64> =
+            z.iter().enumerate().map(|(k, &zk)| Dual64::new(zk, if k == j { 1.0 } else { 0.0 })).collect();
+        let rd = residual(ac, spec, &zd)?;
+        for i in 0..n {
+            jac[(i, j)] = rd[i].eps;
+        }
+    }
+    Ok(jac)
 }
 
 fn fail(r: &DVector<f64>, names: &[&str], iterations: usize) -> FlightError {

@@ -85,6 +85,13 @@ pub(crate) fn pow2(k: i32) -> f64 {
     }
 }
 
+/// x·2ᵏ exactly (0 or ±∞ beyond the range), in two steps so that 2ᵏ itself never overflows
+/// before the product is formed.
+pub(crate) fn mul_pow2(x: f64, k: i32) -> f64 {
+    let h = k / 2;
+    x * pow2(h) * pow2(k - h)
+}
+
 /// p(jω) for descending real coefficients `c`: for ω ≤ 1 the value itself, for ω > 1 the value
 /// divided by (jω)ⁿ, i.e. the reversed polynomial Σ cₖ zᵏ (k from the leading coefficient) at
 /// z = 1/(jω). Horner's rule on the even and odd parts in x = −ω² (or x = −1/ω²).

@@ -181,7 +181,7 @@ fn expm_into(a: &[f64], n: usize, mut out: MatMut<'_, f64>) -> Result<(), LtiErr
     if e > 0 && ns * crate::axis::pow2(e.min(1023)) > THETA13 {
         // a norm that may overflow ‖A‖₁ itself: choose s from the exponents, A/2ˢ in two steps
         let s = (ns.log2() + e as f64 - THETA13.log2()).ceil().max(0.0) as i32;
-        let a1: Vec<f64> = a.iter().map(|&x| crate::poly::mul_pow2(x, -s)).collect();
+        let a1: Vec<f64> = a.iter().map(|&x| crate::axis::mul_pow2(x, -s)).collect();
         let mut r = Mat::<f64>::zeros(n, n);
         expm_core(&a1, n, norm1(&a1, n), r.as_mut());
         let mut tmp = Mat::<f64>::zeros(n, n);
@@ -318,7 +318,7 @@ fn is_upper_triangular(a: &[f64], n: usize) -> bool {
 /// e⁰ = 1 to 0.
 fn exact_triangular_band(mut r: MatMut<'_, f64>, a_cols: &[f64], n: usize, k: i32) {
     let a = MatRef::from_column_major_slice(a_cols, n, n);
-    let scaled = |x: f64| crate::poly::mul_pow2(x, -k);
+    let scaled = |x: f64| crate::axis::mul_pow2(x, -k);
     for i in 0..n {
         // (e^T)ᵢᵢ = e^{tᵢᵢ}
         r[(i, i)] = scaled(a[(i, i)]).exp();

@@ -8,6 +8,7 @@
 #![warn(missing_docs)]
 
 mod axis;
+mod convert;
 mod equilibria;
 mod error;
 mod expm;
@@ -22,6 +23,7 @@ mod realroots;
 mod rlocus;
 mod routh;
 mod sdof;
+mod sensitivity;
 #[cfg(feature = "serde")]
 mod serde_impl;
 mod shift;
@@ -40,12 +42,13 @@ pub use laplace::{
     CLUSTER_RTOL, FinalValue, Illegal, PartialFractions, PfTerm, RealTerm, TimeFunction, cluster_roots,
     final_value,
 };
-pub use margins::{GainCrossover, Margins, PhaseCrossover, StabilityPoint, sensitivity_integral, wrap_deg};
+pub use margins::{GainCrossover, Margins, PhaseCrossover, StabilityPoint, wrap_deg};
 pub use num_complex::Complex64;
 pub use poly::{Polynomial, TRIM_RTOL};
 pub use rlocus::{RootLocus, departure_angles, root_locus};
 pub use routh::{RouthArray, routh, stable_gain_intervals};
 pub use sdof::{Mode, Sdof, SdofKind, SdofOutput, modes};
+pub use sensitivity::sensitivity_integral;
 pub use shift::{leads, time_shift};
 pub use ss::StateSpace;
 pub use stability::{AXIS_RTOL, StabilityClass, stability_of_matrix, stability_of_polynomial};

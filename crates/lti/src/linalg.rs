@@ -34,7 +34,7 @@ pub(crate) fn balance_exponents(a: &DMatrix<f64>) -> Vec<i32> {
         return k;
     }
     let e = big.log2().floor() as i32;
-    let mut b = a.map(|x| crate::poly::mul_pow2(x, -e));
+    let mut b = a.map(|x| crate::axis::mul_pow2(x, -e));
     const LIMIT: i32 = 900;
     for _sweep in 0..100 {
         let mut changed = false;
@@ -63,8 +63,8 @@ pub(crate) fn balance_exponents(a: &DMatrix<f64>) -> Vec<i32> {
                 changed = true;
                 k[i] += s;
                 for j in 0..n {
-                    b[(i, j)] = crate::poly::mul_pow2(b[(i, j)], -s);
-                    b[(j, i)] = crate::poly::mul_pow2(b[(j, i)], s);
+                    b[(i, j)] = crate::axis::mul_pow2(b[(i, j)], -s);
+                    b[(j, i)] = crate::axis::mul_pow2(b[(j, i)], s);
                 }
             }
         }
@@ -87,7 +87,7 @@ pub fn balance(a: &DMatrix<f64>) -> Result<DMatrix<f64>, LtiError> {
     }
     crate::error::check_finite("balance argument", a.iter())?;
     let k = balance_exponents(a);
-    let b = DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| crate::poly::mul_pow2(a[(i, j)], k[j] - k[i]));
+    let b = DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| crate::axis::mul_pow2(a[(i, j)], k[j] - k[i]));
     if b.iter().all(|x| x.is_finite()) { Ok(b) } else { Err(LtiError::Overflow { what: "balanced matrix" }) }
 }
 
@@ -131,10 +131,10 @@ fn eigenvalues_balanced(a: &DMatrix<f64>, hessenberg: bool) -> Result<Vec<Comple
         return Ok(vec![Complex64::new(0.0, 0.0); a.nrows()]);
     }
     let e = big.log2().floor() as i32;
-    let scaled = a.map(|x| crate::poly::mul_pow2(x, -e));
+    let scaled = a.map(|x| crate::axis::mul_pow2(x, -e));
     let k = balance_exponents(&scaled);
     let n = scaled.nrows();
-    let b = DMatrix::from_fn(n, n, |i, j| crate::poly::mul_pow2(scaled[(i, j)], k[j] - k[i]));
+    let b = DMatrix::from_fn(n, n, |i, j| crate::axis::mul_pow2(scaled[(i, j)], k[j] - k[i]));
     let small = (n <= SMALL)
         .then(|| {
             let mut w = crate::hqr::Work::from_fn(n, |i, j| b[(i, j)]);
@@ -158,7 +158,7 @@ fn eigenvalues_balanced(a: &DMatrix<f64>, hessenberg: bool) -> Result<Vec<Comple
     let scale = b.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
     let ev: Vec<Complex64> = tidy_conjugates(ev, scale)
         .into_iter()
-        .map(|z| Complex64::new(crate::poly::mul_pow2(z.re, e), crate::poly::mul_pow2(z.im, e)))
+        .map(|z| Complex64::new(crate::axis::mul_pow2(z.re, e), crate::axis::mul_pow2(z.im, e)))
         .collect();
     if ev.iter().all(|z| z.re.is_finite() && z.im.is_finite()) {
         Ok(ev)
@@ -231,10 +231,10 @@ pub fn singular_values(a: &DMatrix<f64>) -> Result<Vec<f64>, LtiError> {
         return Ok(s);
     }
     let e = big.log2().floor() as i32;
-    let scaled = to_faer(&a.map(|x| crate::poly::mul_pow2(x, -e)));
+    let scaled = to_faer(&a.map(|x| crate::axis::mul_pow2(x, -e)));
     let mut s = scaled.singular_values().map_err(|_| LtiError::NoConvergence { what: "SVD" })?;
     for x in s.iter_mut() {
-        *x = crate::poly::mul_pow2(*x, e);
+        *x = crate::axis::mul_pow2(*x, e);
     }
     if s.iter().any(|x| !x.is_finite()) {
         return Err(LtiError::Overflow { what: "singular values" });

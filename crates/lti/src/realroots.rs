@@ -241,7 +241,7 @@ pub(crate) fn positive_roots(p: &[f64]) -> Option<Vec<f64>> {
     let n = q.len() - 1;
     let k = ((q[0].abs().log2() - q[n].abs().log2()) / n as f64).round() as i32;
     let scaled: Vec<f64> =
-        q.iter().enumerate().map(|(i, &c)| crate::poly::mul_pow2(c, k * i as i32)).collect();
+        q.iter().enumerate().map(|(i, &c)| crate::axis::mul_pow2(c, k * i as i32)).collect();
     let (q, m0) = if k != 0 && scaled.iter().zip(&q).all(|(s, c)| s.is_finite() && (*s != 0.0) == (*c != 0.0))
     {
         (scaled, [crate::axis::pow2(k.clamp(-1074, 1023)), 0.0, 0.0, 1.0])

@@ -3,9 +3,8 @@
 //! Book: §15.11 (zeros and poles, Def 15.11.2), §15.14, (15.14.7); delay (15.10.2);
 //! feedback (15.18.4).
 
-use crate::error::{LtiError, check_finite};
+use crate::error::LtiError;
 use crate::poly::{Conditions, Polynomial};
-use crate::zpk::Zpk;
 use num_complex::Complex64;
 use std::fmt;
 
@@ -60,7 +59,7 @@ impl TransferFunction {
     }
 
     /// The same N/D with another delay (internal: τ already valid).
-    fn with_delay_unchecked(mut self, tau: f64) -> Self {
+    pub(crate) fn with_delay_unchecked(mut self, tau: f64) -> Self {
         self.delay = tau;
         self
     }
@@ -240,15 +239,6 @@ impl TransferFunction {
         }
     }
 
-    /// Zero–pole–gain form G = k∏(s − zᵢ)/∏(s − pᵢ)·e^{−τs}.
-    ///
-    /// # Errors
-    /// [`LtiError::NoConvergence`] if a root computation fails.
-    pub fn to_zpk(&self) -> Result<Zpk, LtiError> {
-        let k = if self.num.is_zero() { 0.0 } else { self.num.leading() / self.den.leading() };
-        Zpk::new(self.zeros()?, self.poles()?, k)?.with_delay(self.delay)
-    }
-
     /// −G.
     pub fn neg(&self) -> Self {
         Self {
@@ -341,7 +331,7 @@ impl TransferFunction {
         }
         // a = m·2ᵉ with m ∈ [1, 2): cₖa⁻ᵏ = (cₖm⁻ᵏ)·2^{−ke}
         let e = crate::axis::exponent(a);
-        let m = crate::poly::mul_pow2(a, -e);
+        let m = crate::axis::mul_pow2(a, -e);
         let parts = |p: &Polynomial| -> Vec<(f64, i32)> {
             let n = p.degree();
             p.coeffs()
@@ -352,7 +342,7 @@ impl TransferFunction {
                     // underflow to 0 when multiplied by m⁻ᵏ
                     let ec = if c == 0.0 { 0 } else { crate::axis::exponent(c) };
                     let k = (n - i) as i32;
-                    (crate::poly::mul_pow2(c, -ec) * m.powi(-k), ec - k * e)
+                    (crate::axis::mul_pow2(c, -ec) * m.powi(-k), ec - k * e)
                 })
                 .collect()
         };
@@ -365,7 +355,7 @@ impl TransferFunction {
         // N and D multiplied by 2^shift; None where a nonzero coefficient would underflow to 0
         // or overflow (the ratio N/D is kept, but not the polynomial)
         let build = |v: &[(f64, i32)], shift: i32| -> Option<Polynomial> {
-            let c: Vec<f64> = v.iter().map(|&(c, k)| crate::poly::mul_pow2(c, k + shift)).collect();
+            let c: Vec<f64> = v.iter().map(|&(c, k)| crate::axis::mul_pow2(c, k + shift)).collect();
             let exact = c.iter().zip(v).all(|(x, (c0, _))| x.is_finite() && (*x != 0.0 || *c0 == 0.0));
             exact.then(|| Polynomial::from_vec(c))
         };
@@ -384,33 +374,6 @@ impl TransferFunction {
             return Err(LtiError::Overflow { what: "time-scaled delay" });
         }
         Ok(Self::from_polynomials(num, den)?.with_delay_unchecked(tau))
-    }
-
-    /// Cancels zero–pole pairs closer than `tol·max(1, |p|)` (Matlab `minreal`); the result is
-    /// rebuilt from the remaining roots with the same high-frequency gain.
-    ///
-    /// Book: (15.14.15), 15.20.37, 15.20.38.
-    ///
-    /// # Errors
-    /// [`LtiError::InvalidArgument`] for a non-finite or negative tolerance;
-    /// [`LtiError::NoConvergence`] if a root computation fails.
-    pub fn minreal(&self, tol: f64) -> Result<Self, LtiError> {
-        check_finite("tolerance", [&tol])?;
-        if tol < 0.0 {
-            return Err(LtiError::InvalidArgument { what: "tolerance", reason: format!("{tol} < 0") });
-        }
-        if self.num.is_zero() {
-            return Ok(Self {
-                num: Polynomial::constant(0.0),
-                den: Polynomial::constant(1.0),
-                delay: self.delay,
-                roots: RootCache::default(),
-            });
-        }
-        let zpk = self.to_zpk()?.minreal(tol);
-        let mut g = zpk.to_tf()?;
-        g.delay = self.delay;
-        Ok(g)
     }
 }
 

@@ -4,8 +4,6 @@
 //! Book: (15.18.1)–(15.18.6), 16.8.3; notes §3.4–3.5.
 
 use crate::error::LtiError;
-use crate::poly::Polynomial;
-use crate::tf::TransferFunction;
 use num_complex::Complex64;
 
 /// Zero–pole–gain form G(s) = k∏(s − zᵢ)/∏(s − pᵢ)·e^{−τs}.
@@ -212,16 +210,6 @@ impl Zpk {
             }
         }
         Self { zeros, poles, gain: self.gain, delay: self.delay }
-    }
-
-    /// Back to N/D with N = k∏(s − zᵢ), D = ∏(s − pᵢ).
-    ///
-    /// # Errors
-    /// [`LtiError::NonFinite`] (cannot happen for a validated Zpk).
-    pub fn to_tf(&self) -> Result<TransferFunction, LtiError> {
-        let num = Polynomial::from_roots(&self.zeros)?.scaled(self.gain);
-        let den = Polynomial::from_roots(&self.poles)?;
-        TransferFunction::from_polynomials(num, den)?.with_delay(self.delay)
     }
 }
 

@@ -147,6 +147,31 @@ pub struct Chart {
     pub arrows: Vec<Arrow>,
 }
 
+/// The plot area of a panel in pixels, left edge px and width pw, top py and height ph, with
+/// the two axes that map data onto it.
+struct Area {
+    px: f64,
+    pw: f64,
+    py: f64,
+    ph: f64,
+    ax: Axis,
+    ay: Axis,
+}
+
+impl Area {
+    /// Pixel coordinates of a data point (y grows downward), clamped to ±[`PIXEL_CLAMP`].
+    fn to_px(&self, (x, y): (f64, f64)) -> (f64, f64) {
+        let sx = self.px + self.ax.frac(x) * self.pw;
+        let sy = self.py + (1.0 - self.ay.frac(y)) * self.ph;
+        (sx.clamp(-PIXEL_CLAMP, PIXEL_CLAMP), sy.clamp(-PIXEL_CLAMP, PIXEL_CLAMP))
+    }
+
+    /// Whether a pixel lies in the plot area (edges included).
+    fn contains(&self, x: f64, y: f64) -> bool {
+        (self.px..=self.px + self.pw).contains(&x) && (self.py..=self.py + self.ph).contains(&y)
+    }
+}
+
 fn usable(v: f64, log: bool) -> bool {
     v.is_finite() && (!log || v > 0.0)
 }
@@ -201,22 +226,33 @@ impl Chart {
         Ok(if ux > uy { (xr, widen(yr, ux, h, "y")?) } else { (widen(xr, uy, w, "x")?, yr) })
     }
 
-    /// Draws the panel into `svg` with its top-left corner at (0, `y0`).
+    /// Draws the panel into `svg` with its top-left corner at (0, `y0`): frame and title, grid
+    /// and ticks, reference lines, curves, arrows, markers, then the legend (in that order, so
+    /// later layers draw on top).
     pub(crate) fn render(&self, svg: &mut Svg, y0: f64, id: &str) -> Result<(), PlotError> {
-        let (px, pw) = (LEFT, WIDTH - LEFT - RIGHT);
-        let (py, ph) = (y0 + TOP, PANEL_HEIGHT - TOP - BOTTOM);
+        let (pw, ph) = (WIDTH - LEFT - RIGHT, PANEL_HEIGHT - TOP - BOTTOM);
         let (ax, ay) = self.axes(pw, ph)?;
-        let to_px = |(x, y): (f64, f64)| {
-            let sx = px + ax.frac(x) * pw;
-            let sy = py + (1.0 - ay.frac(y)) * ph;
-            (sx.clamp(-PIXEL_CLAMP, PIXEL_CLAMP), sy.clamp(-PIXEL_CLAMP, PIXEL_CLAMP))
-        };
+        let area = Area { px: LEFT, pw, py: y0 + TOP, ph, ax, ay };
+        let Area { px, py, .. } = area;
         svg.clip_rect(id, px, py, pw, ph);
         svg.rect(px, py, pw, ph, "white", "#333333");
         svg.text(px + 0.5 * pw, y0 + 22.0, &self.title, 15.0, "middle", 0.0);
-        // Grid and ticks.
+        self.draw_grid(svg, &area);
+        self.draw_reference_lines(svg, &area);
+        for c in &self.curves {
+            self.draw_curve(svg, &area, c, id);
+        }
+        self.draw_arrows(svg, &area);
+        self.draw_markers(svg, &area);
+        self.draw_legend(svg, &area);
+        Ok(())
+    }
+
+    /// Grid lines, tick labels (and the offset of near-constant data), axis labels.
+    fn draw_grid(&self, svg: &mut Svg, area: &Area) {
+        let Area { px, pw, py, ph, ref ax, ref ay } = *area;
         for t in ax.ticks() {
-            let (x, _) = to_px((t.value, if ay.log { ay.lo } else { 0.0 }));
+            let (x, _) = area.to_px((t.value, if ay.log { ay.lo } else { 0.0 }));
             let major = t.label.is_some();
             svg.line(x, py, x, py + ph, if major { "#d0d0d0" } else { "#ececec" }, 1.0, None);
             if let Some(l) = &t.label {
@@ -228,7 +264,7 @@ impl Chart {
             svg.text(px, py - 6.0, &format!("offset {}", crate::axis::offset_label(off)), 11.0, "start", 0.0);
         }
         for t in ay.ticks() {
-            let (_, y) = to_px((if ax.log { ax.lo } else { 0.0 }, t.value));
+            let (_, y) = area.to_px((if ax.log { ax.lo } else { 0.0 }, t.value));
             let major = t.label.is_some();
             svg.line(px, y, px + pw, y, if major { "#d0d0d0" } else { "#ececec" }, 1.0, None);
             if let Some(l) = &t.label {
@@ -237,10 +273,14 @@ impl Chart {
         }
         svg.text(px + 0.5 * pw, py + ph + 40.0, &self.x_label, 13.0, "middle", 0.0);
         svg.text(18.0, py + 0.5 * ph, &self.y_label, 13.0, "middle", -90.0);
-        // Reference lines.
+    }
+
+    /// The dashed horizontal and vertical reference lines that fall inside the plot area.
+    fn draw_reference_lines(&self, svg: &mut Svg, area: &Area) {
+        let Area { px, pw, py, ph, ref ax, ref ay } = *area;
         for r in &self.hlines {
             if usable(r.value, self.log_y) {
-                let (_, y) = to_px((if ax.log { ax.lo } else { 0.0 }, r.value));
+                let (_, y) = area.to_px((if ax.log { ax.lo } else { 0.0 }, r.value));
                 if (py..=py + ph).contains(&y) {
                     svg.line(px, y, px + pw, y, "#777777", 1.0, Some("6 4"));
                     if let Some(l) = &r.label {
@@ -251,7 +291,7 @@ impl Chart {
         }
         for r in &self.vlines {
             if usable(r.value, self.log_x) {
-                let (x, _) = to_px((r.value, if ay.log { ay.lo } else { 0.0 }));
+                let (x, _) = area.to_px((r.value, if ay.log { ay.lo } else { 0.0 }));
                 if (px..=px + pw).contains(&x) {
                     svg.line(x, py, x, py + ph, "#777777", 1.0, Some("6 4"));
                     if let Some(l) = &r.label {
@@ -260,50 +300,55 @@ impl Chart {
                 }
             }
         }
-        // Curves, split at unusable points.
-        for c in &self.curves {
-            let (color, dash) = c.style();
-            // Thinning: a point within THIN_PX of the last one kept is dropped (the last point of
-            // every piece is kept). The dropped points and the path through them lie in that
-            // disk, so the drawn line stays within THIN_PX of the full polyline everywhere:
-            // exact to a pixel, with a file size that follows the drawing, not the sample count.
-            let mut piece: Vec<(f64, f64)> = Vec::new();
-            let mut pending: Option<(f64, f64)> = None;
+    }
+
+    /// One curve, split at unusable points, thinned to the pixel, with its point markers.
+    fn draw_curve(&self, svg: &mut Svg, area: &Area, c: &Curve, id: &str) {
+        let (color, dash) = c.style();
+        // Thinning: a point within THIN_PX of the last one kept is dropped (the last point of
+        // every piece is kept). The dropped points and the path through them lie in that
+        // disk, so the drawn line stays within THIN_PX of the full polyline everywhere:
+        // exact to a pixel, with a file size that follows the drawing, not the sample count.
+        let mut piece: Vec<(f64, f64)> = Vec::new();
+        let mut pending: Option<(f64, f64)> = None;
+        for &(x, y) in &c.points {
+            if usable(x, self.log_x) && usable(y, self.log_y) {
+                let p = area.to_px((x, y));
+                match piece.last() {
+                    Some(l) if (p.0 - l.0).hypot(p.1 - l.1) < THIN_PX => pending = Some(p),
+                    _ => {
+                        piece.push(p);
+                        pending = None;
+                    }
+                }
+            } else {
+                piece.extend(pending.take());
+                svg.polyline(&piece, color, 2.0, dash, Some(id));
+                piece.clear();
+            }
+        }
+        piece.extend(pending.take());
+        svg.polyline(&piece, color, 2.0, dash, Some(id));
+        if c.markers {
             for &(x, y) in &c.points {
                 if usable(x, self.log_x) && usable(y, self.log_y) {
-                    let p = to_px((x, y));
-                    match piece.last() {
-                        Some(l) if (p.0 - l.0).hypot(p.1 - l.1) < THIN_PX => pending = Some(p),
-                        _ => {
-                            piece.push(p);
-                            pending = None;
-                        }
-                    }
-                } else {
-                    piece.extend(pending.take());
-                    svg.polyline(&piece, color, 2.0, dash, Some(id));
-                    piece.clear();
-                }
-            }
-            piece.extend(pending.take());
-            svg.polyline(&piece, color, 2.0, dash, Some(id));
-            if c.markers {
-                for &(x, y) in &c.points {
-                    if usable(x, self.log_x) && usable(y, self.log_y) {
-                        let (sx, sy) = to_px((x, y));
-                        if (px..=px + pw).contains(&sx) && (py..=py + ph).contains(&sy) {
-                            svg.circle(sx, sy, 3.0, color, color);
-                        }
+                    let (sx, sy) = area.to_px((x, y));
+                    if area.contains(sx, sy) {
+                        svg.circle(sx, sy, 3.0, color, color);
                     }
                 }
             }
         }
+    }
+
+    /// Arrow heads whose tip lies inside the plot area.
+    fn draw_arrows(&self, svg: &mut Svg, area: &Area) {
         for a in &self.arrows {
-            let (fx, fy) = to_px(a.from);
-            let (tx, ty) = to_px(a.to);
+            let (fx, fy) = area.to_px(a.from);
+            let (tx, ty) = area.to_px(a.to);
             let (dx, dy) = (tx - fx, ty - fy);
             let len = dx.hypot(dy);
-            if len > 0.0 && (px..=px + pw).contains(&tx) && (py..=py + ph).contains(&ty) {
+            if len > 0.0 && area.contains(tx, ty) {
                 let (ux, uy) = (dx / len, dy / len);
                 let (l, w) = (10.0, 4.5);
                 svg.polygon(
@@ -316,12 +361,16 @@ impl Chart {
                 );
             }
         }
+    }
+
+    /// Point markers (with their labels) inside the plot area.
+    fn draw_markers(&self, svg: &mut Svg, area: &Area) {
         for m in &self.markers {
             if !(usable(m.at.0, self.log_x) && usable(m.at.1, self.log_y)) {
                 continue;
             }
-            let (x, y) = to_px(m.at);
-            if !((px..=px + pw).contains(&x) && (py..=py + ph).contains(&y)) {
+            let (x, y) = area.to_px(m.at);
+            if !area.contains(x, y) {
                 continue;
             }
             let color = PALETTE[m.color % PALETTE.len()];
@@ -338,11 +387,14 @@ impl Chart {
                 svg.text(x + 7.0, y - 7.0, l, 10.0, "start", 0.0);
             }
         }
-        // Legend, right of the plot area, in curve order.
-        let mut ly = py + 8.0;
+    }
+
+    /// The legend, right of the plot area, in curve order.
+    fn draw_legend(&self, svg: &mut Svg, area: &Area) {
+        let mut ly = area.py + 8.0;
         for c in self.curves.iter().filter(|c| c.name.is_some()) {
             let (color, dash) = c.style();
-            let lx = px + pw + 12.0;
+            let lx = area.px + area.pw + 12.0;
             svg.line(lx, ly, lx + 22.0, ly, color, 2.0, dash);
             if c.markers {
                 svg.circle(lx + 11.0, ly, 3.0, color, color);
@@ -350,7 +402,6 @@ impl Chart {
             svg.text(lx + 28.0, ly + 4.0, c.name.as_deref().unwrap_or(""), 11.0, "start", 0.0);
             ly += 18.0;
         }
-        Ok(())
     }
 
     /// Renders the panel alone as an SVG document.

@@ -3,7 +3,8 @@
 use vectrix_tensor::{Dyadic, Scalar, Vector};
 
 use crate::StaticsError;
-use crate::spring::{ForcePair, check_coeff, check_vec, unit_sep};
+use crate::check::{check_coeff, check_vec, finite_or_overflow, unit_sep};
+use crate::force_pair::ForcePair;
 
 /// d/dt|r⃗| = r̂·ṙ⃗ for r⃗ ≠ 0⃗.
 fn rate_of_length<T: Scalar>(r_hat: &Vector<T>, v: &Vector<T>) -> T {
@@ -39,7 +40,7 @@ impl<T: Scalar> Dashpot<T> {
     pub fn force(&self, r_y_w: &Vector<T>, v_y_w: &Vector<T>) -> Result<Vector<T>, StaticsError> {
         let (r_hat, _) = unit_sep(r_y_w, "dashpot")?;
         check_vec(v_y_w, "dashpot relative velocity")?;
-        crate::gravity::finite_or_overflow(r_hat * (-self.c * rate_of_length(&r_hat, v_y_w)), "dashpot force")
+        finite_or_overflow(r_hat * (-self.c * rate_of_length(&r_hat, v_y_w)), "dashpot force")
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (6.8.2).
@@ -98,7 +99,7 @@ impl<T: Scalar> RotationalDashpot<T> {
         z: &Vector<T>,
     ) -> Result<(Vector<T>, Vector<T>), StaticsError> {
         let z = z.unit().ok_or(StaticsError::ZeroVector { what: "pin axis ẑ" })?;
-        let m = crate::gravity::finite_or_overflow(z * (-self.xi * omega_b1_b2.dot(&z)), "dashpot torque")?;
+        let m = finite_or_overflow(z * (-self.xi * omega_b1_b2.dot(&z)), "dashpot torque")?;
         Ok((m, -m))
     }
 }
@@ -142,7 +143,7 @@ impl<T: Scalar> Inerter<T> {
         let rv = r_hat.dot(v_y_w);
         // d²|r|/dt² = r̂·a + (|v|² − (r̂·v)²)/|r|
         let len_dd = r_hat.dot(a_y_w) + (v_y_w.norm_squared() - rv * rv) / len;
-        crate::gravity::finite_or_overflow(r_hat * (-self.b * len_dd), "inerter force")
+        finite_or_overflow(r_hat * (-self.b * len_dd), "inerter force")
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (7.12.4).
@@ -201,7 +202,7 @@ impl<T: Scalar> RotationalInerter<T> {
     /// [`StaticsError::ZeroVector`] for ẑ = 0⃗.
     pub fn torques(&self, theta_ddot: T, z: &Vector<T>) -> Result<(Vector<T>, Vector<T>), StaticsError> {
         let z = z.unit().ok_or(StaticsError::ZeroVector { what: "pin axis ẑ" })?;
-        let m = crate::gravity::finite_or_overflow(z * (-self.beta * theta_ddot), "inerter torque")?;
+        let m = finite_or_overflow(z * (-self.beta * theta_ddot), "inerter torque")?;
         Ok((m, -m))
     }
 }

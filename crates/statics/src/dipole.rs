@@ -7,7 +7,7 @@
 use vectrix_tensor::{Dyadic, Scalar, Vector};
 
 use crate::StaticsError;
-use crate::spring::{check_vec, unit_sep};
+use crate::check::{check_vec, finite_or_overflow, unit_sep};
 
 /// The dipole field dyadic 𝒥⃗(r⃗) = (3r̂r̂′ − I⃗)/|r⃗|³ (6.13.8), traceless (divergence-free field).
 ///
@@ -29,7 +29,7 @@ pub fn dipole_field_dyadic<T: Scalar>(r_z_y: &Vector<T>) -> Result<Dyadic<T>, St
 /// [`StaticsError::CoincidentPoints`]; [`StaticsError::NonFinite`].
 pub fn dipole_field<T: Scalar>(m_y: &Vector<T>, r_z_y: &Vector<T>) -> Result<Vector<T>, StaticsError> {
     check_vec(m_y, "dipole moment")?;
-    crate::gravity::finite_or_overflow(dipole_field_dyadic(r_z_y)?.apply(m_y), "dipole field")
+    finite_or_overflow(dipole_field_dyadic(r_z_y)?.apply(m_y), "dipole field")
 }
 
 /// Forces and torques between the dipoles m⃗_z at z and m⃗_y at y.
@@ -75,11 +75,11 @@ pub fn dipole_interaction<T: Scalar>(
     let tau_z = (m_z.cross(&r_hat) * (three * a) - m_z.cross(m_y)) * inv3;
     let tau_y = (m_y.cross(&(-r_hat)) * (-three * b) - m_y.cross(m_z)) * inv3;
     Ok(DipolePair {
-        force_on_z: crate::gravity::finite_or_overflow(f, "dipole force")?,
+        force_on_z: finite_or_overflow(f, "dipole force")?,
         force_on_y: -f,
-        torque_on_z: crate::gravity::finite_or_overflow(tau_z, "dipole torque")?,
-        torque_on_y: crate::gravity::finite_or_overflow(tau_y, "dipole torque")?,
-        force_pair_torque: crate::gravity::finite_or_overflow(r_z_y.cross(&f), "dipole force-pair torque")?,
+        torque_on_z: finite_or_overflow(tau_z, "dipole torque")?,
+        torque_on_y: finite_or_overflow(tau_y, "dipole torque")?,
+        force_pair_torque: finite_or_overflow(r_z_y.cross(&f), "dipole force-pair torque")?,
     })
 }
 

@@ -3,8 +3,9 @@
 
 use vectrix_tensor::{Scalar, Vector};
 
+use crate::check::{check_coeff, check_vec, finite_or_overflow, unit_sep};
+use crate::force_pair::ForcePair;
 use crate::mass::{check_mass, check_point};
-use crate::spring::{ForcePair, check_coeff, check_vec, unit_sep};
 use crate::{MassProperties, Point, StaticsError, Wrench};
 
 /// The universal gravitational constant G = 6.67430 × 10⁻¹¹ N·m²/kg² (CODATA 2018).
@@ -231,13 +232,4 @@ pub fn centre_of_gravity<T: Scalar>(
         return Err(StaticsError::Overflow { what: "centre of gravity (zero or overflowing weight)" });
     }
     Ok(c)
-}
-
-/// `Ok(v)` when every component is finite, else [`StaticsError::Overflow`]: finite inputs whose
-/// true result exceeds the largest finite number (|r⃗| = 1e-200 in an inverse-square law).
-pub(crate) fn finite_or_overflow<T: Scalar>(
-    v: Vector<T>,
-    what: &'static str,
-) -> Result<Vector<T>, StaticsError> {
-    if v.is_finite() { Ok(v) } else { Err(StaticsError::Overflow { what }) }
 }

@@ -39,9 +39,11 @@
 #![warn(missing_docs)]
 
 mod basis;
+mod check;
 mod damper;
 mod dipole;
 mod error;
+mod force_pair;
 mod freebody;
 mod gravity;
 mod inertia;
@@ -58,6 +60,7 @@ mod wrench;
 pub use damper::{Dashpot, Inerter, RotationalDashpot, RotationalInerter};
 pub use dipole::{DipolePair, dipole_field, dipole_field_dyadic, dipole_interaction, dipole_potential};
 pub use error::StaticsError;
+pub use force_pair::ForcePair;
 pub use freebody::{BodyId, Determinacy, FREE_BODY_REL_TOL, FreeBodyProblem, FreeBodySolution, UnknownId};
 pub use gravity::{
     CentralGravity, GRAVITATIONAL_CONSTANT, UniformGravity, centre_of_gravity, gravity_between,
@@ -71,7 +74,7 @@ pub use mass::MassProperties;
 pub use point::Point;
 pub use principal::PrincipalAxes;
 pub use spatial::SpatialInertia;
-pub use spring::{ForcePair, RotationalSpring, Spring};
+pub use spring::{RotationalSpring, Spring};
 pub use wrench::{AppliedForce, Wrench};
 
 /// `use vectrix_statics::prelude::*;`

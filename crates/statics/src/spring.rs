@@ -3,54 +3,8 @@
 use vectrix_tensor::{Scalar, Vector};
 
 use crate::StaticsError;
-
-/// A force on y and its third-law partner on w: f⃗_{y/w} and f⃗_{w/y} = −f⃗_{y/w}, both along
-/// r⃗_{y/w} (Fact 6.9.1).
-///
-/// Book: Fact 6.9.1, (6.7.2), (6.8.2), (7.12.2), (7.12.4).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ForcePair<T: Scalar = f64> {
-    /// f⃗_{y/w}: the force on y due to w.
-    pub on_y: Vector<T>,
-    /// f⃗_{w/y} = −f⃗_{y/w}: the force on w due to y.
-    pub on_w: Vector<T>,
-}
-
-impl<T: Scalar> ForcePair<T> {
-    /// The pair (f⃗, −f⃗).
-    ///
-    /// Book: §6.7, Fact 6.9.1.
-    #[inline]
-    pub fn from_force_on_y(f_y_w: Vector<T>) -> Self {
-        Self { on_y: f_y_w, on_w: -f_y_w }
-    }
-}
-
-pub(crate) fn check_coeff<T: Scalar>(
-    x: T,
-    what: &'static str,
-    valid: &'static str,
-) -> Result<T, StaticsError> {
-    let v = x.re();
-    if !v.is_finite() || v < 0.0 {
-        return Err(StaticsError::OutOfRange { what, value: v, valid });
-    }
-    Ok(x)
-}
-
-pub(crate) fn check_vec<T: Scalar>(x: &Vector<T>, what: &'static str) -> Result<(), StaticsError> {
-    if x.is_finite() { Ok(()) } else { Err(StaticsError::NonFinite { what }) }
-}
-
-/// The unit vector r̂ of a separation, or [`StaticsError::CoincidentPoints`].
-pub(crate) fn unit_sep<T: Scalar>(r: &Vector<T>, what: &'static str) -> Result<(Vector<T>, T), StaticsError> {
-    check_vec(r, what)?;
-    let n = r.norm();
-    match r.unit() {
-        Some(u) => Ok((u, n)),
-        None => Err(StaticsError::CoincidentPoints { what, distance: n.re() }),
-    }
-}
+use crate::check::{check_coeff, check_vec, finite_or_overflow, unit_sep};
+use crate::force_pair::ForcePair;
 
 /// A linear spring of stiffness k ≥ 0 and relaxed length d ≥ 0 between y and w.
 ///
@@ -104,7 +58,7 @@ impl<T: Scalar> Spring<T> {
         }
         let (r_hat, len) = unit_sep(r_y_w, "spring with relaxed length d > 0")?;
         // (6.7.1)
-        crate::gravity::finite_or_overflow(r_hat * (-self.k * (len - self.d)), "spring force")
+        finite_or_overflow(r_hat * (-self.k * (len - self.d)), "spring force")
     }
 
     /// The pair f⃗_{y/w}, f⃗_{w/y} = −f⃗_{y/w} (6.7.2).
@@ -164,7 +118,7 @@ impl<T: Scalar> RotationalSpring<T> {
     /// [`StaticsError::ZeroVector`] for ẑ = 0⃗.
     pub fn torque_at_angle(&self, theta: T, z: &Vector<T>) -> Result<Vector<T>, StaticsError> {
         let z = z.unit().ok_or(StaticsError::ZeroVector { what: "pin axis ẑ" })?;
-        crate::gravity::finite_or_overflow(z * (-self.kappa * (theta - self.theta0)), "spring torque")
+        finite_or_overflow(z * (-self.kappa * (theta - self.theta0)), "spring torque")
     }
 
     /// The torque on B₁ from body-fixed vectors x̂₁ (in B₁) and x̂₂ (in B₂) perpendicular to ẑ:

@@ -182,56 +182,24 @@ pub fn propagate_attitude(
     let a = Frame::new();
     let rot = Rotation::from_rotation_matrix_in(&a, r0, ROTATION_TOL).map_err(rotation_err)?;
     let q0 = rot.quaternion_in(&a);
+    let omega = &mut omega_body;
     match method {
-        Propagator::EulerRk4 { sequence, tol } => {
-            let EulerSolution::Regular { principal, .. } = rot.euler_in(&a, sequence) else {
-                return Err(KinematicsError::GimbalLock {
-                    sequence: format!("{:?}", sequence.axes().map(|x| x.index())),
-                    det: 0.0,
-                    condition: f64::INFINITY,
-                    tol,
-                    singular_at: "the initial attitude",
-                });
-            };
-            let f = |t: f64, y: &SVector<f64, 3>| {
-                let ea = EulerAngles::new(sequence, [y.x, y.y, y.z]);
-                euler_rates_from_omega_body(&ea, &omega_body(t), tol).map(Vector3::from)
-            };
-            let y = run(f, |y| y, Vector3::from(principal.angles), t0, h, n)?;
-            Ok(EulerAngles::new(sequence, [y.x, y.y, y.z]).rotation_matrix())
-        }
+        Propagator::EulerRk4 { sequence, tol } => euler_rk4(&a, &rot, sequence, tol, omega, (t0, h, n)),
         Propagator::AngleVectorRk4 => {
-            let f = |t: f64, y: &Vector3<f64>| angle_vector_rate_body(y, &omega_body(t));
+            let f = |t: f64, y: &Vector3<f64>| angle_vector_rate_body(y, &omega(t));
             let y = run(f, |y| rewrap_angle_vector(&y), q0.angle_vector(), t0, h, n)?;
             to_matrix(&Quaternion::from_angle_vector(&y))
         }
         Propagator::QuaternionRk4 { renormalize } => {
-            let f = |t: f64, y: &Vector4<f64>| quaternion_rate_body(&quat(y), &omega_body(t));
+            let f = |t: f64, y: &Vector4<f64>| quaternion_rate_body(&quat(y), &omega(t));
             let project = |y: Vector4<f64>| if renormalize { y / y.norm() } else { y };
             let y = run(f, project, q0.to_vector4(), t0, h, n)?;
             // without renormalization the drift of |q| is part of the result: do not hide it
             Ok(quat(&y).rotation_matrix())
         }
-        Propagator::GibbsRk4 => {
-            let g0 = q0.try_gibbs().map_err(rotation_err)?;
-            let f = |t: f64, y: &Vector3<f64>| {
-                // g = tan(θ/2)n̂ is infinite at θ = π (§4.12): stop with a typed error before overflow
-                if y.norm() > GIBBS_LIMIT {
-                    return Err(KinematicsError::SingularRateMap {
-                        representation: "Gibbs vector",
-                        detail: format!(
-                            "|g| = {:e} > {GIBBS_LIMIT:e}: the attitude approaches θ = π, where g is undefined; use quaternions or MRPs",
-                            y.norm()
-                        ),
-                    });
-                }
-                gibbs_rate_body(y, &omega_body(t))
-            };
-            let y = run(f, |y| y, g0, t0, h, n)?;
-            to_matrix(&Quaternion::from_gibbs(&y))
-        }
+        Propagator::GibbsRk4 => gibbs_rk4(&q0, omega, (t0, h, n)),
         Propagator::MrpRk4 => {
-            let f = |t: f64, y: &Vector3<f64>| mrp_rate_body(y, &omega_body(t));
+            let f = |t: f64, y: &Vector3<f64>| mrp_rate_body(y, &omega(t));
             // shadow set: p ← −p/|p|² when |p| > 1 (same attitude, |p| ≤ 1)
             let project = |p: Vector3<f64>| {
                 let p2 = p.norm_squared();
@@ -240,34 +208,18 @@ pub fn propagate_attitude(
             let y = run(f, project, q0.mrp(), t0, h, n)?;
             to_matrix(&Quaternion::from_mrp(&y))
         }
-        Propagator::PoissonRk4 { renormalize } => {
-            let f = |t: f64, y: &SVector<f64, 9>| {
-                let r = Matrix3::from_column_slice(y.as_slice());
-                let rd = r * omega_body(t).cross_matrix();
-                Ok(SVector::<f64, 9>::from_column_slice(rd.as_slice()))
-            };
-            let project = |y: SVector<f64, 9>| {
-                if !renormalize {
-                    return y;
-                }
-                let r = Matrix3::from_column_slice(y.as_slice());
-                let r = vectrix_rotation::nearest_rotation(&r).unwrap_or(r);
-                SVector::<f64, 9>::from_column_slice(r.as_slice())
-            };
-            let y = run(f, project, SVector::<f64, 9>::from_column_slice(r0.as_slice()), t0, h, n)?;
-            Ok(Matrix3::from_column_slice(y.as_slice()))
-        }
+        Propagator::PoissonRk4 { renormalize } => poisson_rk4(r0, renormalize, omega, (t0, h, n)),
         Propagator::QuaternionExact => {
             let mut q = q0.to_vector4();
             for i in 0..n {
                 // ω at the midpoint: exact for constant ω, second order otherwise
-                q = quaternion_exact_step(&q, &omega_body(t0 + (i as f64 + 0.5) * h), h);
+                q = quaternion_exact_step(&q, &omega(t0 + (i as f64 + 0.5) * h), h);
             }
             to_matrix(&quat(&q))
         }
         Propagator::RotorLie(m) => {
             let f = |t: f64, _: &vectrix_tensor::Rotor| {
-                let w = omega_body(t);
+                let w = omega(t);
                 a.vector([w.x, w.y, w.z])
             };
             let (r, _) = integrate_lie(m, f, t0, &rot.rotor(), t1, n, |_, _| {}).map_err(|e| {
@@ -277,11 +229,89 @@ pub fn propagate_attitude(
             Ok(rot.rotation_matrix_in(&a))
         }
         Propagator::MatrixLie(m) => {
-            let f = |t: f64, _: &So3| omega_body(t);
+            let f = |t: f64, _: &So3| omega(t);
             let (r, _) = integrate_lie(m, f, t0, &So3(*r0), t1, n, |_, _| {}).map_err(|e| {
                 KinematicsError::SingularRateMap { representation: "SO(3)", detail: e.to_string() }
             })?;
             Ok(r.0)
         }
     }
+}
+
+/// [`Propagator::EulerRk4`]: RK4 on the Euler-angle rates (4.10.11) from the principal
+/// solution of the initial attitude `rot` (resolved in `a`); `(t0, h, n)` is the grid.
+fn euler_rk4(
+    a: &Frame,
+    rot: &Rotation,
+    sequence: EulerSequence,
+    tol: f64,
+    omega_body: &mut impl FnMut(f64) -> Vector3<f64>,
+    (t0, h, n): (f64, f64, usize),
+) -> Result<Matrix3<f64>, KinematicsError> {
+    let EulerSolution::Regular { principal, .. } = rot.euler_in(a, sequence) else {
+        // a gimbal-locked start has no principal solution to integrate from
+        return Err(KinematicsError::GimbalLock {
+            sequence: format!("{:?}", sequence.axes().map(|x| x.index())),
+            det: 0.0,
+            condition: f64::INFINITY,
+            tol,
+            singular_at: "the initial attitude",
+        });
+    };
+    let f = |t: f64, y: &SVector<f64, 3>| {
+        let ea = EulerAngles::new(sequence, [y.x, y.y, y.z]);
+        euler_rates_from_omega_body(&ea, &omega_body(t), tol).map(Vector3::from)
+    };
+    let y = run(f, |y| y, Vector3::from(principal.angles), t0, h, n)?;
+    Ok(EulerAngles::new(sequence, [y.x, y.y, y.z]).rotation_matrix())
+}
+
+/// [`Propagator::GibbsRk4`]: RK4 on ġ = ½(I + ggᵀ + g^×)ω_B (4.12.4), stopped with a typed
+/// error before g overflows near θ = π; `(t0, h, n)` is the grid.
+fn gibbs_rk4(
+    q0: &Quaternion,
+    omega_body: &mut impl FnMut(f64) -> Vector3<f64>,
+    (t0, h, n): (f64, f64, usize),
+) -> Result<Matrix3<f64>, KinematicsError> {
+    let g0 = q0.try_gibbs().map_err(rotation_err)?;
+    let f = |t: f64, y: &Vector3<f64>| {
+        // g = tan(θ/2)n̂ is infinite at θ = π (§4.12): stop with a typed error before overflow
+        if y.norm() > GIBBS_LIMIT {
+            return Err(KinematicsError::SingularRateMap {
+                representation: "Gibbs vector",
+                detail: format!(
+                    "|g| = {:e} > {GIBBS_LIMIT:e}: the attitude approaches θ = π, where g is undefined; use quaternions or MRPs",
+                    y.norm()
+                ),
+            });
+        }
+        gibbs_rate_body(y, &omega_body(t))
+    };
+    let y = run(f, |y| y, g0, t0, h, n)?;
+    to_matrix(&Quaternion::from_gibbs(&y))
+}
+
+/// [`Propagator::PoissonRk4`]: RK4 on 𝓡̇ = 𝓡ω^× (4.3.17) over the nine entries of 𝓡,
+/// optionally projected onto SO(3) after every step; `(t0, h, n)` is the grid.
+fn poisson_rk4(
+    r0: &Matrix3<f64>,
+    renormalize: bool,
+    omega_body: &mut impl FnMut(f64) -> Vector3<f64>,
+    (t0, h, n): (f64, f64, usize),
+) -> Result<Matrix3<f64>, KinematicsError> {
+    let f = |t: f64, y: &SVector<f64, 9>| {
+        let r = Matrix3::from_column_slice(y.as_slice());
+        let rd = r * omega_body(t).cross_matrix();
+        Ok(SVector::<f64, 9>::from_column_slice(rd.as_slice()))
+    };
+    let project = |y: SVector<f64, 9>| {
+        if !renormalize {
+            return y;
+        }
+        let r = Matrix3::from_column_slice(y.as_slice());
+        let r = vectrix_rotation::nearest_rotation(&r).unwrap_or(r);
+        SVector::<f64, 9>::from_column_slice(r.as_slice())
+    };
+    let y = run(f, project, SVector::<f64, 9>::from_column_slice(r0.as_slice()), t0, h, n)?;
+    Ok(Matrix3::from_column_slice(y.as_slice()))
 }

@@ -6,8 +6,9 @@
 //!
 //! Book: §4.11; HNW §II.4 (step-size control), §II.6 (dense output).
 
-use super::adaptive::{Adaptive, Pair, initial_step};
 use super::dense::DenseStep;
+use super::drive::Steps;
+use super::pair::{Adaptive, Pair, initial_step, order};
 use super::{dop853, dopri5};
 use crate::progress::Progress;
 use crate::state::{State, check_state, eval};
@@ -65,7 +66,7 @@ impl<S: State, F: FnMut(f64, &S) -> S> core::ops::DerefMut for Stepper<S, F> {
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S> super::adaptive::Steps<S> for Stepper<S, F> {
+impl<S: State, F: FnMut(f64, &S) -> S> Steps<S> for Stepper<S, F> {
     fn step(&mut self) -> Result<(), OdeError> {
         Stepper::step(self)
     }
@@ -238,13 +239,5 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
         self.p.y = y;
         self.last_rejected = false;
         Ok(())
-    }
-}
-
-/// Classical order of the propagated solution.
-fn order(p: Pair) -> f64 {
-    match p {
-        Pair::Dopri5 => 5.0,
-        Pair::Dop853 => 8.0,
     }
 }

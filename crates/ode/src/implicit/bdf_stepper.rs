@@ -8,8 +8,7 @@ use faer::Mat;
 use faer::linalg::solvers::PartialPivLu;
 
 use super::bdf::Bdf;
-use super::radau_core::{jacobian_into, lu_real, rms_scaled, solve_real};
-use super::radau_stepper::NoJacobian;
+use super::radau_core::{NoJacobian, jacobian_into, lu_real, rms_scaled, solve_real};
 use crate::explicit::{DenseStep, Steps};
 use crate::progress::Progress;
 use crate::state::{State, check_state, eval};

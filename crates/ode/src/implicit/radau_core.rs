@@ -220,6 +220,11 @@ pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
     }
 }
 
+/// The Jacobian closure's type when none is given (finite differences are used instead).
+///
+/// Book: §4.11; HW §IV.8.
+pub type NoJacobian<S> = fn(f64, &S, &mut [f64]);
+
 /// J = ∂f/∂y at (t, y) into `jm`: from the caller's `jac` (row-major, entry (i, j) at i·n + j)
 /// or, without one, by [`finite_difference`] from f0 = f(t, y); refused if any entry is not
 /// finite. Counts one Jacobian in `work`.

@@ -5,7 +5,9 @@
 
 use faer::Mat;
 
-use super::radau_core::{C1, C2, Factors, T_MAT, TI_MAT, estimate, jacobian_into, rms_scaled, transform};
+use super::radau_core::{
+    C1, C2, Factors, NoJacobian, T_MAT, TI_MAT, estimate, jacobian_into, rms_scaled, transform,
+};
 use super::radau5::Radau5;
 use crate::explicit::{DenseStep, Steps};
 use crate::progress::Progress;
@@ -24,9 +26,6 @@ const FACL: f64 = 5.0;
 const FACR: f64 = 0.125;
 /// Consecutive failed Newton iterations (or singular matrices) before giving up.
 const MAX_FAILURES: usize = 10;
-
-/// The Jacobian closure's type when none is given (finite differences are used instead).
-pub type NoJacobian<S> = fn(f64, &S, &mut [f64]);
 
 /// A RADAU5 integration in progress, with the interface of
 /// [`Stepper`](crate::explicit::Stepper): [`RadauStepper::step`] takes one accepted step,

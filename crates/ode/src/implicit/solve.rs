@@ -3,7 +3,7 @@
 //!
 //! Book: §4.11; HW §IV.8 (RADAU5), §III.5 and Shampine & Reichelt 1997 (BDF).
 
-use super::radau_stepper::NoJacobian;
+use super::radau_core::NoJacobian;
 use crate::OdeError;
 use std::time::Instant;
 

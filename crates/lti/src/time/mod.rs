@@ -27,6 +27,9 @@ use crate::ss::StateSpace;
 use crate::tf::TransferFunction;
 use nalgebra::DMatrix;
 
+mod lsim;
+pub use lsim::{Hold, lsim};
+
 /// The most values (time samples, or samples × signals of a simulation) a grid or a response
 /// may hold: 2²⁶ ≈ 6.7·10⁷ f64, 512 MiB. Larger requests are a typed error
 /// ([`LtiError::TooLarge`]) rather than an aborted allocation.
@@ -136,7 +139,7 @@ impl Generator {
     fn new(m: &DMatrix<f64>) -> Self {
         let k = balance_exponents(m);
         let n = m.nrows();
-        let mb = faer::Mat::from_fn(n, n, |i, j| crate::poly::mul_pow2(m[(i, j)], k[j] - k[i]));
+        let mb = faer::Mat::from_fn(n, n, |i, j| crate::axis::mul_pow2(m[(i, j)], k[j] - k[i]));
         Self { m: mb, d: k.iter().map(|&ki| crate::axis::pow2(ki)).collect() }
     }
 
@@ -281,168 +284,31 @@ pub fn response(
     finite_response(TimeResponse { t: t.to_vec(), y, x, impulse_weight })
 }
 
+/// [`LtiError::DimensionMismatch`] unless the initial state x₀ has one entry per state.
+fn check_x0_len(sys: &StateSpace, x0: &[f64]) -> Result<(), LtiError> {
+    if x0.len() != sys.n_states() {
+        return Err(LtiError::DimensionMismatch {
+            what: "x0",
+            expected: format!("{} states", sys.n_states()),
+            found: format!("{}", x0.len()),
+        });
+    }
+    Ok(())
+}
+
 /// Free response y = Ce^{At}x₀ (15.5.3, (15.8.4) with u = 0).
 ///
 /// # Errors
 /// [`LtiError::DimensionMismatch`] when x₀ has the wrong length; grid, size and overflow
 /// errors as [`response`].
 pub fn initial(sys: &StateSpace, x0: &[f64], t: &[f64]) -> Result<TimeResponse, LtiError> {
-    if x0.len() != sys.n_states() {
-        return Err(LtiError::DimensionMismatch {
-            what: "x0",
-            expected: format!("{} states", sys.n_states()),
-            found: format!("{}", x0.len()),
-        });
-    }
+    check_x0_len(sys, x0)?;
     crate::error::check_finite("x0", x0)?;
     // The free response from x₀ equals the impulse response of (A, x₀, C, 0) (§15.9).
     let b = DMatrix::from_column_slice(x0.len(), 1, x0);
     let d = DMatrix::zeros(sys.n_outputs(), 1);
     let free = StateSpace::new(sys.a().clone(), b, sys.c().clone(), d)?;
     response(&free, InputKind::Impulse, 0, 1.0, 0.0, t)
-}
-
-/// How samples of an arbitrary input are held between grid points.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Hold {
-    /// Zero-order hold: u constant over each step.
-    Zoh,
-    /// First-order hold: u linear between samples (exact for ramps and piecewise-linear u).
-    Foh,
-}
-
-/// Response to sampled inputs `u[k]` (one value per time, single input channel `input`)
-/// held by `hold`, delayed by `delay`, from initial state `x0` (Matlab `lsim`).
-///
-/// Over each step the held input is a line v(τ) = v₀ + v̇τ, generated exactly by the augmented
-/// state (x, v, v̇) with the balanced generator of [`response`]. A delay that is not a multiple
-/// of h splits every step at the same fraction, so the result stays exact for the held input.
-///
-/// Book: (15.8.3)–(15.8.4); 15.20.30, 15.20.39–45.
-///
-/// # Errors
-/// Grid, index, dimension, size and overflow errors as [`response`] and [`initial`]; u must
-/// have one sample per time.
-pub fn lsim(
-    sys: &StateSpace,
-    input: usize,
-    u: &[f64],
-    t: &[f64],
-    x0: &[f64],
-    hold: Hold,
-    delay: f64,
-) -> Result<TimeResponse, LtiError> {
-    if input >= sys.n_inputs() {
-        return Err(LtiError::IndexOutOfRange { what: "input", index: input, len: sys.n_inputs() });
-    }
-    if u.len() != t.len() {
-        return Err(LtiError::DimensionMismatch {
-            what: "u",
-            expected: format!("{} samples (one per time)", t.len()),
-            found: format!("{}", u.len()),
-        });
-    }
-    if x0.len() != sys.n_states() {
-        return Err(LtiError::DimensionMismatch {
-            what: "x0",
-            expected: format!("{} states", sys.n_states()),
-            found: format!("{}", x0.len()),
-        });
-    }
-    crate::error::check_finite("u", u)?;
-    crate::error::check_finite("x0", x0)?;
-    if !(delay.is_finite() && delay >= 0.0) {
-        return Err(LtiError::InvalidArgument { what: "delay", reason: format!("{delay}; need ≥ 0") });
-    }
-    let h = check_grid(t)?;
-    let n = sys.n_states();
-    let (p, nt) = (sys.n_outputs(), t.len());
-    check_size("time response", n + p, nt)?;
-    // Delayed, held input as a function of time: v(t) = u_held(t − delay), zero before t₀.
-    let held = |tau: f64| -> f64 {
-        let s = tau - delay - t[0];
-        if s < 0.0 || h == 0.0 {
-            return if s >= 0.0 { u[0] } else { 0.0 };
-        }
-        let k = ((s / h) + 1e-12).floor() as usize;
-        if k + 1 >= u.len() {
-            return u[u.len() - 1];
-        }
-        match hold {
-            Hold::Zoh => u[k],
-            Hold::Foh => {
-                let f = (s - k as f64 * h) / h;
-                u[k] + f * (u[k + 1] - u[k])
-            }
-        }
-    };
-    // Augmented generator z = (x, v, v̇) over a piece on which v is linear.
-    let mut m = DMatrix::<f64>::zeros(n + 2, n + 2);
-    m.view_mut((0, 0), (n, n)).copy_from(sys.a());
-    for i in 0..n {
-        m[(i, n)] = sys.b()[(i, input)];
-    }
-    m[(n, n + 1)] = 1.0;
-    let generator = Generator::new(&m);
-    let readout = Readout::new(sys, input, &generator.d);
-    // The input on step k: a whole number of steps of delay (the common case, exact sample
-    // values) or a breakpoint at fraction f of every step.
-    let steps = if h > 0.0 { delay / h } else { 0.0 };
-    let shift = steps.round();
-    let whole = h == 0.0 || (steps - shift).abs() <= 1e-12 * steps.max(1.0);
-    let pieces: Vec<(f64, Vec<f64>)> = if h == 0.0 || nt < 2 {
-        Vec::new()
-    } else if whole {
-        vec![(h, generator.transition(h)?)]
-    } else {
-        let f = steps - steps.floor();
-        vec![(f * h, generator.transition(f * h)?), ((1.0 - f) * h, generator.transition((1.0 - f) * h)?)]
-    };
-    let shift = shift as usize;
-    // v(t_k⁺) and v̇ on [t_k, t_{k+1}) for a whole-step delay
-    let line = |k: usize| -> (f64, f64) {
-        if k < shift {
-            return (0.0, 0.0);
-        }
-        let i = k - shift;
-        let slope = match hold {
-            Hold::Foh if i + 1 < nt => (u[i + 1] - u[i]) / h,
-            _ => 0.0,
-        };
-        (u[i], slope)
-    };
-    let mut y = vec![vec![0.0; nt]; p];
-    let mut x = vec![vec![0.0; nt]; n];
-    let mut w = generator.balanced(&[x0, &[0.0, 0.0]].concat());
-    let mut wn = vec![0.0; n + 2];
-    for k in 0..nt {
-        let vk = if whole { line(k).0 } else { held(t[k]) };
-        for i in 0..n {
-            x[i][k] = w[i] * generator.d[i];
-        }
-        readout.write(&w, vk, k, &mut y);
-        if k + 1 == nt {
-            break;
-        }
-        let mut tau = t[k];
-        for (len, phi) in &pieces {
-            // on [τ, τ + len): v linear from v(τ⁺) with slope v̇
-            let (v0, slope) = if whole {
-                line(k)
-            } else {
-                let eps = 1e-9 * len;
-                let (a, b) = (held(tau + eps), held(tau + len - eps));
-                let slope = if hold == Hold::Foh { (b - a) / (len - 2.0 * eps) } else { 0.0 };
-                (a - slope * eps, slope)
-            };
-            w[n] = v0 / generator.d[n];
-            w[n + 1] = slope / generator.d[n + 1];
-            matvec(phi, &w, &mut wn);
-            std::mem::swap(&mut w, &mut wn);
-            tau += len;
-        }
-    }
-    finite_response(TimeResponse { t: t.to_vec(), y, x, impulse_weight: vec![0.0; p] })
 }
 
 impl TransferFunction {
