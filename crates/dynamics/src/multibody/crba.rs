@@ -7,9 +7,11 @@ use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
-use super::model::{Model, Segment};
-use super::rnea::LinkWrenches;
+use super::model::Model;
+use super::segment::Segment;
 use super::spatial::{BodyInertia, Xform, join};
+
+use super::wrench::LinkWrenches;
 use crate::DynamicsError;
 
 /// A Cholesky pivot below this multiple of n ε × max Mᵢᵢ (ε of the scalar) counts as
@@ -23,6 +25,8 @@ pub struct CrbaScratch<T: Scalar = f64> {
     /// One motion-subspace column per velocity coordinate, ground coordinates.
     S: Vec<Vector6<T>>,
     Ic: Vec<BodyInertia<T>>,
+    /// Each coordinate's ancestor coordinates (the entries of its column of H).
+    tree: Ancestors,
 }
 
 /// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
@@ -60,6 +64,7 @@ impl<T: Scalar> Model<T> {
             world: vec![Xform::identity(); n],
             S: vec![Vector6::zeros(); self.nv],
             Ic: vec![BodyInertia::zero(); n],
+            tree: Ancestors::new(&self.parent_col),
         }
     }
 
@@ -119,18 +124,18 @@ impl<T: Scalar> Model<T> {
         let n = self.nv;
         let hs = h.as_mut_slice();
         // inward: Iᶜ_i is complete when i is reached (descendants come later in the order);
-        // for each column b of joint i, F = Iᶜ_i S_b, then H_cb = H_bc = S_c·F for b and every
-        // coordinate c above it; Iᶜ_p += Iᶜ_i (same coordinates: a plain sum)
+        // for each column b of joint i, F = Iᶜ_i S_b, then H_bb = S_b·F and H_ab = H_ba = S_a·F
+        // for every coordinate a above b (its ancestors, flattened in `tree`); Iᶜ_p += Iᶜ_i
+        // (same coordinates: a plain sum)
         for i in (0..self.segs.len()).rev() {
             let seg = &self.segs[i];
             for b in seg.vi..seg.vi + seg.elem.nv() {
                 let F = s.Ic[i].apply6(&s.S[b]);
-                let mut c = Some(b);
-                while let Some(a) = c {
-                    let hab = s.S[a].dot(&F);
+                hs[b + b * n] = dot6(&s.S[b], &F);
+                for &a in s.tree.ancestors(b) {
+                    let hab = dot6(&s.S[a], &F);
                     hs[a + b * n] = hab;
                     hs[b + a * n] = hab;
-                    c = self.parent_col[a];
                 }
             }
             if let Some(p) = seg.parent {
@@ -191,4 +196,44 @@ pub(crate) fn mass_cholesky<T: Scalar>(m: DMatrix<T>) -> Result<Cholesky<T, Dyn>
         }
     }
     Ok(chol)
+}
+
+/// a·b of two 6-vectors, written out.
+#[inline(always)]
+pub(crate) fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
+}
+
+/// Each coordinate's ancestor coordinates, nearest first, flattened: the (row, column) pairs
+/// of a tree's mass matrix that can be nonzero. O(n·depth) numbers, so the work space holds
+/// them (as large as H), not the model.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Ancestors {
+    /// `anc[start[c]..start[c + 1]]`: the ancestors of coordinate c.
+    start: Vec<usize>,
+    anc: Vec<usize>,
+}
+
+impl Ancestors {
+    /// From each coordinate's nearest ancestor.
+    pub fn new(parent_col: &[Option<usize>]) -> Self {
+        let mut start = Vec::with_capacity(parent_col.len() + 1);
+        let mut anc = Vec::new();
+        for c in 0..parent_col.len() {
+            start.push(anc.len());
+            let mut a = parent_col[c];
+            while let Some(p) = a {
+                anc.push(p);
+                a = parent_col[p];
+            }
+        }
+        start.push(anc.len());
+        Self { start, anc }
+    }
+
+    /// The ancestors of coordinate c, nearest first.
+    #[inline(always)]
+    pub fn ancestors(&self, c: usize) -> &[usize] {
+        &self.anc[self.start[c]..self.start[c + 1]]
+    }
 }

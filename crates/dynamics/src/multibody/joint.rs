@@ -221,7 +221,7 @@ impl<T: Scalar> Elem<T> {
             Elem::Revolute(a) => {
                 // passive rotation about a by θ: E = 𝓡(a, θ)ᵀ = c 1 − s a^× + (1 − c) a aᵀ
                 // (Rodrigues (2.11.1), transposed)
-                let (s, c) = q[0].sin_cos();
+                let (s, c) = q[0].fast_sin_cos();
                 let (o, z0) = (T::one(), T::zero());
                 // about a coordinate axis (±x̂, ±ŷ, ±ẑ): the same matrix with its zeros and
                 // ones exact, and 30 fewer operations

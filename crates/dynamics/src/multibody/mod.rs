@@ -6,6 +6,7 @@
 //! Book: §1.5 (joints), §7.11 (chains of rigid bodies).
 
 mod aba;
+mod articulated;
 mod configuration;
 mod crba;
 mod derivatives;
@@ -15,8 +16,10 @@ mod model;
 mod motion;
 mod planar;
 mod rnea;
+mod segment;
 mod singular;
 mod spatial;
+mod wrench;
 
 pub use aba::AbaScratch;
 pub use crba::CrbaScratch;
@@ -25,4 +28,5 @@ pub use joint::{Joint, Link, Pose};
 pub use kinematics::LinkTwist;
 pub use model::{MAX_CHAIN_LINKS, Model, PosesScratch};
 pub use motion::{LinkAcceleration, MotionScratch, QdotPlan, normalize_quaternion};
-pub use rnea::{InverseDynamics, JointWrench, LinkWrenches, Scratch};
+pub use rnea::{InverseDynamics, Scratch};
+pub use wrench::{JointWrench, LinkWrenches};

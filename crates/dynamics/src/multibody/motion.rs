@@ -19,7 +19,8 @@ use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
 use super::kinematics::LinkTwist;
-use super::model::{Model, PosesScratch, Segment};
+use super::model::{Model, PosesScratch};
+use super::segment::Segment;
 use super::spatial::Xform;
 use crate::DynamicsError;
 

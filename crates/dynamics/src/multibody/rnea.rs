@@ -6,28 +6,9 @@ use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
 use super::model::Model;
-use super::spatial::{Xform, cross_force, cross_motion};
+use super::spatial::{Xform, cross_force};
+use super::wrench::{JointWrench, LinkWrenches};
 use crate::DynamicsError;
-
-/// The wrench a joint transmits from the parent to the link: force and moment about the link
-/// frame origin (the joint point), components in the link frame. Also the form of external
-/// wrenches on links ([`LinkWrenches`]).
-///
-/// Book: §7.11, (7.11.20)–(7.11.22) (ℱ_int, the joint reaction wrenches).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct JointWrench<T: Scalar = f64> {
-    /// Force on the link from its parent, resolved in the link frame.
-    pub force: Vector3<T>,
-    /// Moment on the link from its parent about the joint point, resolved in the link frame.
-    pub moment: Vector3<T>,
-}
-
-impl<T: Scalar> Default for JointWrench<T> {
-    /// The zero wrench.
-    fn default() -> Self {
-        Self { force: Vector3::zeros(), moment: Vector3::zeros() }
-    }
-}
 
 /// Result of inverse dynamics: generalized forces τ and the joint reaction wrenches.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,10 +18,6 @@ pub struct InverseDynamics<T: Scalar = f64> {
     /// For each link (user order), the wrench its joint transmits.
     pub wrenches: Vec<JointWrench<T>>,
 }
-
-/// External wrenches on links for the tree algorithms: force and moment about the link frame
-/// origin, both resolved in the link frame.
-pub type LinkWrenches<T = f64> = [JointWrench<T>];
 
 impl<T: Scalar> Model<T> {
     /// Inverse dynamics τ = ID(q, v, v̇) by the recursive Newton–Euler algorithm: an outward
@@ -120,21 +97,24 @@ impl<T: Scalar> Model<T> {
                 Some(p) => ((s.w[p], s.v[p]), (s.aw[p], s.av[p])),
                 None => ((Vector3::zeros(), Vector3::zeros()), (Vector3::zeros(), a0)),
             };
-            let (mut w, mut vel) = x.motion(&wp, &vp);
-            let (mut aw, mut av) = x.motion(&ap, &lp);
+            let (mut w, mut vel) = seg.turn.motion(&x, &wp, &vp);
+            let (mut aw, mut av) = seg.turn.motion(&x, &ap, &lp);
             let (sw, sv) = joint_motion(&seg.elem, &v[seg.vi..]);
             let (saw, sav) = joint_motion(&seg.elem, &vdot[seg.vi..]);
             w += sw;
             vel += sv;
-            let (cw, cv) = cross_motion(&w, &vel, &sw, &sv);
+            let (cw, cv) = joint_bias(&seg.elem, &w, &vel, &sw, &sv);
             aw += saw + cw;
             av += sav + cv;
-            // ℱ_i = 𝒥𝒜 + 𝒱 ×f 𝒥𝒱 − ℱ_ext
-            let (hn, hf) = seg.inertia.apply(&w, &vel);
-            let (in_, if_) = seg.inertia.apply(&aw, &av);
-            let (gn, gf) = cross_force(&w, &vel, &hn, &hf);
-            s.n[i] = in_ + gn;
-            s.f[i] = if_ + gf;
+            // ℱ_i = 𝒥𝒜 + 𝒱 ×f 𝒥𝒱 − ℱ_ext (zero for a massless segment)
+            (s.n[i], s.f[i]) = if seg.massless {
+                (Vector3::zeros(), Vector3::zeros())
+            } else {
+                let (hn, hf) = seg.inertia.apply(&w, &vel);
+                let (in_, if_) = seg.inertia.apply(&aw, &av);
+                let (gn, gf) = cross_force(&w, &vel, &hn, &hf);
+                (in_ + gn, if_ + gf)
+            };
             s.x[i] = x;
             (s.w[i], s.v[i], s.aw[i], s.av[i]) = (w, vel, aw, av);
         }
@@ -149,7 +129,7 @@ impl<T: Scalar> Model<T> {
             let seg = &self.segs[i];
             project_force(&seg.elem, &s.n[i], &s.f[i], &mut tau[seg.vi..]);
             if let Some(p) = seg.parent {
-                let (np, fp) = s.x[i].force_to_parent(&s.n[i], &s.f[i]);
+                let (np, fp) = seg.turn.force_to_parent(&s.x[i], &s.n[i], &s.f[i]);
                 s.n[p] += np;
                 s.f[p] += fp;
             }
@@ -164,6 +144,24 @@ pub(crate) fn joint_motion<T: Scalar>(elem: &Elem<T>, qd: &[T]) -> (Vector3<T>, 
         Elem::Revolute(a) => (a * qd[0], Vector3::zeros()),
         Elem::Prismatic(a) => (Vector3::zeros(), a * qd[0]),
         Elem::Spherical => (Vector3::new(qd[0], qd[1], qd[2]), Vector3::zeros()),
+        Elem::Fixed => (Vector3::zeros(), Vector3::zeros()),
+    }
+}
+
+/// The bias acceleration 𝒱 ×m S q̇ = (ω × ω_S, ω × v_S + v × ω_S) of a joint's motion
+/// (ω_S, v_S) = S q̇ in a segment moving with (ω, v), by joint type: a pin or ball has v_S = 0,
+/// a slider ω_S = 0 (the same numbers as the full product, without its exact zeros).
+#[inline(always)]
+pub(crate) fn joint_bias<T: Scalar>(
+    elem: &Elem<T>,
+    w: &Vector3<T>,
+    v: &Vector3<T>,
+    sw: &Vector3<T>,
+    sv: &Vector3<T>,
+) -> (Vector3<T>, Vector3<T>) {
+    match elem {
+        Elem::Revolute(_) | Elem::Spherical => (w.cross(sw), v.cross(sw)),
+        Elem::Prismatic(_) => (Vector3::zeros(), w.cross(sv)),
         Elem::Fixed => (Vector3::zeros(), Vector3::zeros()),
     }
 }

@@ -5,23 +5,22 @@
 use vectrix_tensor::Scalar;
 
 use super::{Planar, PlanarJoint, PlanarScratch, PlanarSeg, PlanarWork, rot, to_parent};
-use crate::multibody::model::Model;
-use crate::multibody::rnea::LinkWrenches;
 use crate::multibody::singular::pivot_tol;
+use crate::multibody::wrench::LinkWrenches;
 
-impl<T: Scalar> Model<T> {
+impl<T: Scalar> Planar<T> {
     /// ABA on planar spatial vectors (see the module docs), every quantity resolved in the
     /// ground plane's axes (û, ŵ) about the segment's origin, so that moving a quantity from a
     /// child to its parent is a shift by the offset d between their origins, X = [[1, 0],
-    /// [k×d, 1]], with no rotation. The passes are those of [`Model::aba_into`]:
+    /// [k×d, 1]], with no rotation. The passes are those of `Model::aba_into`:
     /// pass 1 twists, bias accelerations c = 𝒱 ×m Sq̇ and bias forces 𝒱 ×f I𝒱; pass 2
     /// Iᵃ = Iᴬ − UD⁻¹Uᵀ, pᵃ = pᴬ + Iᵃc + UD⁻¹u to the parent through Xᵀ; pass 3
     /// q̈ = D⁻¹(u − Uᵀ(X𝒜_p + c)).
     ///
-    /// Returns `false` for a model that is not planar and, having written nothing the caller
-    /// keeps, when a joint's articulated inertia D is at the rounding level (an inert
-    /// coordinate): the spatial passes then decide it exactly as documented on [`Model::aba`].
-    pub(crate) fn planar_aba(
+    /// Returns `false`, having written nothing the caller keeps, when a joint's articulated
+    /// inertia D is at the rounding level (an inert coordinate): the spatial passes then decide
+    /// it exactly as documented on `Model::aba`. Gravity is `work.gravity`.
+    pub(crate) fn aba(
         &self,
         q: &[T],
         v: &[T],
@@ -30,7 +29,7 @@ impl<T: Scalar> Model<T> {
         vdot: &mut [T],
         work: &mut PlanarWork<T>,
     ) -> bool {
-        let Some(pl) = &self.planar else { return false };
+        let pl = self;
         let n = pl.segs.len();
         // (a no-op for the work space of this model, `PlanarWork::new(n)`)
         work.trig.resize(3 * n, T::zero());
@@ -40,11 +39,12 @@ impl<T: Scalar> Model<T> {
         // the origin (gravity by the fictitious acceleration of the base)
         s[n] = PlanarScratch::default();
         s[n].cs = [T::one(), z];
-        s[n].a = [z, -self.gravity.dot(&pl.u), -self.gravity.dot(&pl.w)];
+        let g = work.gravity;
+        s[n].a = [z, -g.dot(&pl.u), -g.dot(&pl.w)];
         joint_sin_cos(pl, q, trig, s);
         twists(pl, q, v, s);
         if let Some(fe) = f_ext {
-            for (l, &k) in self.link_seg.iter().enumerate() {
+            for (l, &k) in pl.link_seg.iter().enumerate() {
                 let e = &mut s[k];
                 let f = rot(&e.cs, &[fe[l].force.dot(&pl.u), fe[l].force.dot(&pl.w)]);
                 e.pa[0] -= fe[l].moment.dot(&pl.axis);
@@ -54,86 +54,85 @@ impl<T: Scalar> Model<T> {
         }
         if !pl.static_scale {
             // a slider moves the centres: ρ from this configuration, as the spatial passes
-            for (e, seg) in s.iter_mut().zip(&self.segs) {
+            for (e, seg) in s.iter_mut().zip(&pl.segs) {
                 e.reach = seg.own_reach;
             }
         }
-        if !self.articulated_inertias(pl, tau, s) {
+        if !articulated_inertias(pl, tau, s) {
             return false;
         }
         accelerations(pl, s, vdot);
         true
     }
+}
 
-    /// Pass 2 (inward). A segment's contribution to its parent waits in registers and is
-    /// added when the parent comes next (a chain), else stored before the next one is made;
-    /// either way each parent sums its own part and its children's in the same order. The
-    /// roots' contributions (to the ground) are dropped. `false` at an inert coordinate.
-    #[inline(always)]
-    fn articulated_inertias(&self, pl: &Planar<T>, tau: &[T], s: &mut [PlanarScratch<T>]) -> bool {
-        let n = pl.segs.len();
-        let z = T::zero();
-        let tol = pivot_tol::<T>();
-        let none = usize::MAX;
-        let (mut pend, mut pend_ia, mut pend_pa) = (none, [z; 6], [z; 3]);
-        for (i, ps) in pl.segs.iter().enumerate().rev() {
-            let e = &mut s[i];
-            let (mut ia_i, mut pa_i) = (e.ia, e.pa);
-            if pend == i {
-                for (x, y) in ia_i.iter_mut().zip(pend_ia) {
-                    *x += y;
-                }
-                for (x, y) in pa_i.iter_mut().zip(pend_pa) {
-                    *x += y;
-                }
-                pend = none;
+/// Pass 2 (inward). A segment's contribution to its parent waits in registers and is
+/// added when the parent comes next (a chain), else stored before the next one is made;
+/// either way each parent sums its own part and its children's in the same order. The
+/// roots' contributions (to the ground) are dropped. `false` at an inert coordinate.
+#[inline(always)]
+fn articulated_inertias<T: Scalar>(pl: &Planar<T>, tau: &[T], s: &mut [PlanarScratch<T>]) -> bool {
+    let n = pl.segs.len();
+    let z = T::zero();
+    let tol = pivot_tol::<T>();
+    let none = usize::MAX;
+    let (mut pend, mut pend_ia, mut pend_pa) = (none, [z; 6], [z; 3]);
+    for (i, ps) in pl.segs.iter().enumerate().rev() {
+        let e = &mut s[i];
+        let (mut ia_i, mut pa_i) = (e.ia, e.pa);
+        if pend == i {
+            for (x, y) in ia_i.iter_mut().zip(pend_ia) {
+                *x += y;
             }
-            let dd = e.d;
-            let ex = [-dd[1], dd[0]];
-            // (Iᵃ, pᵃ) and what goes to the parent through X = [[1, 0], [ê, 1]], ê = â×d:
-            // Xᵀ I X = [[A + 2ê·b + êᵀCê, (b + Cê)ᵀ], [b + Cê, C]]; it carries (a, b) =
-            // (A + 2ê·b + êᵀCê, b + Cê) in its first row
-            let step = match ps.joint {
-                PlanarJoint::Revolute => {
-                    let scale = if pl.static_scale {
-                        ps.scale
-                    } else {
-                        let seg = &self.segs[i];
-                        seg.sub_trace + 2.0 * seg.sub_mass * e.reach * e.reach
-                    };
-                    pin_inward(e, ps, ia_i, pa_i, tau, tol * scale)
-                }
-                PlanarJoint::Prismatic => slider_inward(e, ps, ia_i, pa_i, tau, tol * ps.scale),
-                PlanarJoint::Fixed => {
-                    let (a, b) = to_parent(&ia_i, ex);
-                    Some((ia_i, pa_i, a, b))
-                }
-            };
-            let Some((ia, pa, a, b)) = step else { return false };
-            // forces n_p = n + ê·f
-            let nf = pa[0] + ex[0] * pa[1] + ex[1] * pa[2];
-            if !pl.static_scale && self.segs[i].sub_mass > 0.0 && ps.parent < n {
-                let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
-                let pe = &mut s[ps.parent];
-                pe.reach = pe.reach.max(reach);
+            for (x, y) in pa_i.iter_mut().zip(pend_pa) {
+                *x += y;
             }
-            if pend != none {
-                let pe = &mut s[pend];
-                for (x, y) in pe.ia.iter_mut().zip(pend_ia) {
-                    *x += y;
-                }
-                for (x, y) in pe.pa.iter_mut().zip(pend_pa) {
-                    *x += y;
-                }
-            }
-            (pend, pend_ia, pend_pa) = if ps.parent < n {
-                (ps.parent, [a, b[0], b[1], ia[3], ia[4], ia[5]], [nf, pa[1], pa[2]])
-            } else {
-                (none, [z; 6], [z; 3])
-            };
+            pend = none;
         }
-        true
+        let dd = e.d;
+        let ex = [-dd[1], dd[0]];
+        // (Iᵃ, pᵃ) and what goes to the parent through X = [[1, 0], [ê, 1]], ê = â×d:
+        // Xᵀ I X = [[A + 2ê·b + êᵀCê, (b + Cê)ᵀ], [b + Cê, C]]; it carries (a, b) =
+        // (A + 2ê·b + êᵀCê, b + Cê) in its first row
+        let step = match ps.joint {
+            PlanarJoint::Revolute => {
+                let scale = if pl.static_scale {
+                    ps.scale
+                } else {
+                    ps.sub_trace + 2.0 * ps.sub_mass * e.reach * e.reach
+                };
+                pin_inward(e, ps, ia_i, pa_i, tau, tol * scale)
+            }
+            PlanarJoint::Prismatic => slider_inward(e, ps, ia_i, pa_i, tau, tol * ps.scale),
+            PlanarJoint::Fixed => {
+                let (a, b) = to_parent(&ia_i, ex);
+                Some((ia_i, pa_i, a, b))
+            }
+        };
+        let Some((ia, pa, a, b)) = step else { return false };
+        // forces n_p = n + ê·f
+        let nf = pa[0] + ex[0] * pa[1] + ex[1] * pa[2];
+        if !pl.static_scale && ps.sub_mass > 0.0 && ps.parent < n {
+            let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
+            let pe = &mut s[ps.parent];
+            pe.reach = pe.reach.max(reach);
+        }
+        if pend != none {
+            let pe = &mut s[pend];
+            for (x, y) in pe.ia.iter_mut().zip(pend_ia) {
+                *x += y;
+            }
+            for (x, y) in pe.pa.iter_mut().zip(pend_pa) {
+                *x += y;
+            }
+        }
+        (pend, pend_ia, pend_pa) = if ps.parent < n {
+            (ps.parent, [a, b[0], b[1], ia[3], ia[4], ia[5]], [nf, pa[1], pa[2]])
+        } else {
+            (none, [z; 6], [z; 3])
+        };
     }
+    true
 }
 
 /// The joint angles' (cos, sin) first, all at once, into `cs` (`Scalar::fast_sin_cos_slices`:
@@ -217,7 +216,7 @@ fn twists<T: Scalar>(pl: &Planar<T>, q: &[T], v: &[T], s: &mut [PlanarScratch<T>
     }
 }
 
-/// (Iᵃ, pᵃ, a, b) of one step of pass 2 (see [`Model::planar_aba`]).
+/// (Iᵃ, pᵃ, a, b) of one step of pass 2 (see [`Planar::aba`]).
 type Inward<T> = ([T; 6], [T; 3], T, [T; 2]);
 
 /// Pass 2 at a pin: S = (σ, 0, 0), so U = σ(column 0), D = a0, and Iᵃ's row and column 0

@@ -13,7 +13,7 @@ use nalgebra::Vector3;
 use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
-use super::model::Segment;
+use super::segment::Segment;
 
 mod aba;
 #[cfg(test)]
@@ -56,6 +56,11 @@ pub(crate) struct PlanarSeg<T: Scalar> {
     pub m: T,
     pub h: [T; 2],
     pub i_o: T,
+    /// The segment's own |c| and its subtree's mass and Σ tr J_c (the rounding scales of a
+    /// tree with sliders, whose ρ depends on the configuration).
+    pub own_reach: f64,
+    pub sub_mass: f64,
+    pub sub_trace: f64,
 }
 
 /// The planar reduction of a model: the axis â, an in-plane basis (û, ŵ) with û × ŵ = â
@@ -69,6 +74,8 @@ pub(crate) struct Planar<T: Scalar> {
     pub u: Vector3<T>,
     pub w: Vector3<T>,
     pub segs: Vec<PlanarSeg<T>>,
+    /// For each user link, its segment (where its external wrench acts).
+    pub link_seg: Vec<usize>,
 }
 
 impl Planar<f64> {
@@ -77,7 +84,7 @@ impl Planar<f64> {
     /// â); every pin about ±â exactly, every slider ⊥ â exactly, welds allowed; no ball.
     /// Exact tests: an axis off by rounding keeps the spatial passes (whose answer then
     /// differs from a planar one by that rounding only).
-    pub fn detect(segs: &[Segment<f64>]) -> Option<Self> {
+    pub fn detect(segs: &[Segment<f64>], link_seg: &[usize]) -> Option<Self> {
         let axis = segs.iter().find_map(|s| match s.elem {
             Elem::Revolute(a) => Some(a),
             _ => None,
@@ -110,6 +117,9 @@ impl Planar<f64> {
                 m: b.m,
                 h: plane(&b.h),
                 i_o: axis.dot(&(b.I * axis)),
+                own_reach: s.own_reach,
+                sub_mass: s.sub_mass,
+                sub_trace: s.sub_trace,
             });
         }
         // ρ of every pin's subtree, tips to base (children come after their parents):
@@ -129,7 +139,7 @@ impl Planar<f64> {
                 _ => s.sub_trace + 2.0 * s.sub_mass * rho * rho,
             };
         }
-        Some(Planar { static_scale, axis, u, w, segs: out })
+        Some(Planar { static_scale, axis, u, w, segs: out, link_seg: link_seg.to_vec() })
     }
 
     /// The same reduction over another scalar (numbers converted exactly).
@@ -155,8 +165,12 @@ impl Planar<f64> {
                     m: U::lit(s.m),
                     h: c2(s.h),
                     i_o: U::lit(s.i_o),
+                    own_reach: s.own_reach,
+                    sub_mass: s.sub_mass,
+                    sub_trace: s.sub_trace,
                 })
                 .collect(),
+            link_seg: self.link_seg.clone(),
         }
     }
 }
@@ -239,12 +253,18 @@ impl<T: Scalar> Default for PlanarScratch<T> {
 pub(crate) struct PlanarWork<T: Scalar> {
     pub seg: Vec<PlanarScratch<T>>,
     pub trig: Vec<T>,
+    /// The model's gravity g for this evaluation (ground components), set by the caller.
+    pub gravity: Vector3<T>,
 }
 
 impl<T: Scalar> PlanarWork<T> {
     /// The work space of a planar model of `n` segments.
     pub fn new(n: usize) -> Self {
-        Self { seg: vec![PlanarScratch::default(); n + 1], trig: vec![T::zero(); 3 * n] }
+        Self {
+            seg: vec![PlanarScratch::default(); n + 1],
+            trig: vec![T::zero(); 3 * n],
+            gravity: Vector3::zeros(),
+        }
     }
 }
 

@@ -3,22 +3,23 @@
 //! joints, pins through a point mass, massless links between coaxial joints).
 #![allow(non_snake_case)]
 
-use nalgebra::{Matrix3, Matrix6, Matrix6x3, Vector3, Vector6};
+use nalgebra::{Matrix3, Matrix6x3, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
-use super::joint::Elem;
+use super::articulated::Articulated;
 use super::model::Model;
 use super::planar::PlanarWork;
-use super::rnea::{JointWrench, LinkWrenches, joint_motion};
-use super::singular::{null_component, pivot_tol, psd_pinv3};
-use super::spatial::{Xform, cross_force, cross_motion, join, split};
+use super::spatial::Xform;
+use super::wrench::{JointWrench, LinkWrenches};
 use crate::DynamicsError;
+
+mod passes;
 
 /// Work space of the articulated-body algorithm.
 #[derive(Debug, Clone)]
 pub struct AbaScratch<T: Scalar = f64> {
     x: Vec<Xform<T>>,
-    IA: Vec<Matrix6<T>>,
+    IA: Vec<Articulated<T>>,
     pA: Vec<Vector6<T>>,
     c: Vec<Vector6<T>>,
     U: Vec<Matrix6x3<T>>,
@@ -39,7 +40,7 @@ impl<T: Scalar> Model<T> {
         let n = self.segs.len();
         AbaScratch {
             x: vec![Xform::identity(); n],
-            IA: vec![Matrix6::zeros(); n],
+            IA: vec![Articulated::zero(); n],
             pA: vec![Vector6::zeros(); n],
             c: vec![Vector6::zeros(); n],
             U: vec![Matrix6x3::zeros(); n],
@@ -139,8 +140,12 @@ impl<T: Scalar> Model<T> {
     /// [`Model::aba`] with external wrenches, without input checks and with caller-provided
     /// scratch: the hot path of a scene's right-hand side.
     ///
+    /// The three passes are pass 1 (outward: twists, bias accelerations and forces), pass 2
+    /// (inward: articulated inertias by their 3×3 blocks, moved to the parent by a rotation
+    /// and a shift) and pass 3 (outward: accelerations), in `passes`.
+    ///
     /// # Errors
-    /// [`DynamicsError::SingularMassMatrix`] as [`Model::aba`].
+    /// [`DynamicsError::InertJointForce`] as [`Model::aba`].
     pub fn aba_into(
         &self,
         q: &[T],
@@ -151,171 +156,27 @@ impl<T: Scalar> Model<T> {
         s: &mut AbaScratch<T>,
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
-        if let Some(pl) = &mut s.pl
+        if let (Some(planar), Some(pl)) = (&self.planar, &mut s.pl)
             && pl.seg.len() == n + 1
-            && self.planar_aba(q, v, tau, f_ext, vdot, pl)
         {
-            return Ok(());
+            pl.gravity = self.gravity;
+            if planar.aba(q, v, tau, f_ext, vdot, pl) {
+                return Ok(());
+            }
         }
         for (k, &l) in self.free_links.iter().enumerate() {
             self.free_leaf_accelerations(k, q, v, tau, f_ext.map(|fe| &fe[l]), vdot);
         }
-        // pass 1 (outward): twists, bias accelerations c = 𝒱 ×m S q̇, bias forces 𝒱 ×f 𝒥𝒱
-        for (i, seg) in self.segs.iter().enumerate() {
-            if self.free_seg[i] {
-                continue;
-            }
-            let x = self.seg_xform(i, q);
-            let (wp, vp) = match seg.parent {
-                Some(p) => (s.w[p], s.v[p]),
-                None => (Vector3::zeros(), Vector3::zeros()),
-            };
-            let (mut wi, mut vi) = x.motion(&wp, &vp);
-            let (sw, sv) = joint_motion(&seg.elem, &v[seg.vi..]);
-            wi += sw;
-            vi += sv;
-            let (cw, cv) = cross_motion(&wi, &vi, &sw, &sv);
-            let (hn, hf) = seg.inertia.apply(&wi, &vi);
-            let (bn, bf) = cross_force(&wi, &vi, &hn, &hf);
-            s.x[i] = x;
-            s.c[i] = join(&cw, &cv);
-            s.IA[i] = seg.inertia.matrix();
-            s.pA[i] = join(&bn, &bf);
-            s.reach[i] = seg.own_reach;
-            (s.w[i], s.v[i]) = (wi, vi);
-        }
+        self.aba_outward(q, v, s);
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
                 if !self.free_seg[k] {
-                    s.pA[k] -= join(&fe[l].moment, &fe[l].force);
+                    s.pA[k] -= super::spatial::join(&fe[l].moment, &fe[l].force);
                 }
             }
         }
-        // pass 2 (inward): U = IᴬS, D = SᵀU, u = τ − SᵀpA; Iᵃ = Iᴬ − U D⁻¹Uᵀ,
-        // pᵃ = pᴬ + Iᵃc + U D⁻¹u, accumulated into the parent through Xᵀ
-        for i in (0..n).rev() {
-            if self.free_seg[i] {
-                continue;
-            }
-            let seg = &self.segs[i];
-            let IA = s.IA[i];
-            let pA = s.pA[i];
-            // rounding scale of the joint's block of Iᴬ: the subtree's composite inertia bounds
-            // it (Iᴬ ≼ Iᶜ) and has no cancellation: its mass M for a slider, Σ tr J_c + 2Mρ² for
-            // a pin or a ball
-            let angular_scale = seg.sub_trace + 2.0 * seg.sub_mass * s.reach[i] * s.reach[i];
-            let (Ia, pa) = match seg.elem {
-                Elem::Revolute(a) | Elem::Prismatic(a) => {
-                    let revolute = matches!(seg.elem, Elem::Revolute(_));
-                    let sv = if revolute { join(&a, &Vector3::zeros()) } else { join(&Vector3::zeros(), &a) };
-                    let U = IA * sv;
-                    let D = sv.dot(&U);
-                    let u = tau[seg.vi] - sv.dot(&pA);
-                    let scale = if revolute { angular_scale } else { seg.sub_mass };
-                    if D.re() > pivot_tol::<T>() * scale {
-                        s.U[i].set_column(0, &U);
-                        s.Dinv[i][(0, 0)] = D.recip();
-                        s.u[i][0] = u;
-                        let Ia = IA - U * (U.transpose() / D);
-                        let pa = pA + Ia * s.c[i] + U * (u / D);
-                        (Ia, pa)
-                    } else {
-                        // singular: D = 0 means IᴬS = 0, the coordinate carries no inertia; its
-                        // force must vanish (else q̈ = ∞), and it gets q̈ = 0
-                        let tolerance = pivot_tol::<T>() * self.force_scale(i, tau, s);
-                        if u.re().abs() > tolerance {
-                            return Err(DynamicsError::InertJointForce {
-                                coordinate: seg.vi,
-                                force: u.re(),
-                                tolerance,
-                            });
-                        }
-                        s.U[i] = Matrix6x3::zeros();
-                        s.Dinv[i] = Matrix3::zeros();
-                        s.u[i] = Vector3::zeros();
-                        (IA, pA + IA * s.c[i])
-                    }
-                }
-                Elem::Spherical => {
-                    let U: Matrix6x3<T> = IA.fixed_columns::<3>(0).into_owned();
-                    let D: Matrix3<T> = U.fixed_rows::<3>(0).into_owned();
-                    let u =
-                        Vector3::new(tau[seg.vi], tau[seg.vi + 1], tau[seg.vi + 2]) - pA.fixed_rows::<3>(0);
-                    // fast path: Cholesky with every pivot above the rounding level
-                    let fast = D.cholesky().filter(|c| {
-                        let l = c.l_dirty();
-                        (0..3).all(|k| (l[(k, k)] * l[(k, k)]).re() > pivot_tol::<T>() * angular_scale)
-                    });
-                    let Dinv = match fast {
-                        Some(c) => c.inverse(),
-                        None => {
-                            // slow path: rank-revealing pseudo-inverse; no force along the
-                            // inert directions (a particle cannot take a torque about its radius)
-                            let (pinv, null, _) = psd_pinv3(&D, pivot_tol::<T>() * angular_scale);
-                            let along = null_component(&null, &u);
-                            let tolerance = pivot_tol::<T>() * self.force_scale(i, tau, s);
-                            if along > tolerance {
-                                return Err(DynamicsError::InertJointForce {
-                                    coordinate: seg.vi,
-                                    force: along,
-                                    tolerance,
-                                });
-                            }
-                            pinv
-                        }
-                    };
-                    s.U[i] = U;
-                    s.Dinv[i] = Dinv;
-                    s.u[i] = u;
-                    let Ia = IA - U * Dinv * U.transpose();
-                    (Ia, pA + Ia * s.c[i] + U * (Dinv * u))
-                }
-                Elem::Fixed => (IA, pA + IA * s.c[i]),
-            };
-            if let Some(p) = seg.parent {
-                let add = s.x[i].inertia_to_parent(&Ia);
-                s.IA[p] += add;
-                s.pA[p] += s.x[i].force6_to_parent(&pa);
-                if seg.sub_mass > 0.0 {
-                    // ρ_p ≥ ρ_i + |r_i| (‖·‖₁ ≥ ‖·‖₂)
-                    let r = &s.x[i].r;
-                    let reach = s.reach[i] + r.x.re().abs() + r.y.re().abs() + r.z.re().abs();
-                    s.reach[p] = s.reach[p].max(reach);
-                }
-            }
-        }
-        // pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈
-        let a0 = join(&Vector3::zeros(), &(-self.gravity));
-        for i in 0..n {
-            if self.free_seg[i] {
-                continue;
-            }
-            let seg = &self.segs[i];
-            let ap = match seg.parent {
-                Some(p) => s.a[p],
-                None => a0,
-            };
-            let (aw, av) = split(&ap);
-            let (xw, xv) = s.x[i].motion(&aw, &av);
-            let a_prime = join(&xw, &xv) + s.c[i];
-            let a = match seg.elem {
-                Elem::Revolute(ax) | Elem::Prismatic(ax) => {
-                    let qdd = s.Dinv[i][(0, 0)] * (s.u[i][0] - s.U[i].column(0).dot(&a_prime));
-                    vdot[seg.vi] = qdd;
-                    match seg.elem {
-                        Elem::Revolute(_) => a_prime + join(&(ax * qdd), &Vector3::zeros()),
-                        _ => a_prime + join(&Vector3::zeros(), &(ax * qdd)),
-                    }
-                }
-                Elem::Spherical => {
-                    let qdd = s.Dinv[i] * (s.u[i] - s.U[i].transpose() * a_prime);
-                    vdot[seg.vi..seg.vi + 3].copy_from_slice(qdd.as_slice());
-                    a_prime + join(&qdd, &Vector3::zeros())
-                }
-                Elem::Fixed => a_prime,
-            };
-            s.a[i] = a;
-        }
+        self.aba_inward(tau, s)?;
+        self.aba_accelerations(vdot, s);
         Ok(())
     }
 
@@ -362,34 +223,6 @@ impl<T: Scalar> Model<T> {
         vdot[vi..vi + 3].copy_from_slice(a_j.as_slice());
         vdot[vi + 3..vi + 6].copy_from_slice(alpha.as_slice());
     }
-
-    /// The size of the forces that meet at segment i before the eliminations of pass 2 cancel
-    /// them (slow path only): over i and its subtree k, max of |τₖ| + ‖Iᴬₖ‖(‖cₖ‖ + |𝒱ₖ|²) +
-    /// ‖pᴬₖ‖ + ‖UₖDₖ⁺uₖ‖, times (1 + ρᵢ) for the lever arms. A generalized force along an inert
-    /// direction is rounding noise when it is below 64 ε times this.
-    fn force_scale(&self, i: usize, tau: &[T], s: &AbaScratch<T>) -> f64 {
-        let mut mag = 0.0f64;
-        for k in i..self.segs.len() {
-            // k in the subtree of i: its ancestors (which have smaller indices) reach i
-            let mut j = k;
-            while j > i {
-                match self.segs[j].parent {
-                    Some(p) => j = p,
-                    None => break,
-                }
-            }
-            if j != i {
-                continue;
-            }
-            let seg = &self.segs[k];
-            let t: f64 = (0..seg.elem.nv()).map(|a| tau[seg.vi + a].re().abs()).sum();
-            let v2 = (s.w[k].norm_squared() + s.v[k].norm_squared()).re();
-            let inertial = s.IA[k].norm().re() * (s.c[k].norm().re() + v2);
-            let udu = if k > i { (s.U[k] * (s.Dinv[k] * s.u[k])).norm().re() } else { 0.0 };
-            mag = mag.max(t + inertial + s.pA[k].norm().re() + udu);
-        }
-        mag * (1.0 + s.reach[i])
-    }
 }
 
 #[cfg(test)]
@@ -398,7 +231,7 @@ mod tests {
 
     use super::super::joint::{Joint, Link};
     use super::super::model::Model;
-    use super::super::rnea::JointWrench;
+    use super::super::wrench::JointWrench;
 
     /// A free body with its centre off the joint point, a tilted joint frame, gravity, joint
     /// forces and an external wrench; and, for the generic three passes, the same body with a

@@ -5,14 +5,18 @@
 //! Book: §7.11; §12–§15 (linearization about a state).
 #![allow(non_snake_case)]
 
-use nalgebra::{DMatrix, Matrix3, Vector3, Vector6};
+use nalgebra::{DMatrix, Vector6};
 use vectrix_tensor::Scalar;
 
-use super::crba::{mass_cholesky, world_subspace};
+use super::crba::mass_cholesky;
 use super::model::Model;
-use super::rnea::LinkWrenches;
-use super::spatial::{BodyInertia, Xform, cross_force6, cross_motion6, join, split};
+use super::spatial::{BodyInertia, Xform};
+use super::wrench::LinkWrenches;
 use crate::DynamicsError;
+
+mod passes;
+
+use passes::Variation;
 
 /// Derivatives of inverse dynamics τ = RNEA(q, v, v̇), computed by
 /// [`Model::rnea_derivatives`] (and inside [`Model::aba_derivatives`]).
@@ -97,53 +101,6 @@ impl<T: Scalar> AbaDerivatives<T> {
             dvdot_dv: DMatrix::zeros(n, n),
             dvdot_dtau: DMatrix::zeros(n, n),
         }
-    }
-}
-
-/// The composite "velocity variation" Bᶜ = [[P, 0], [−2 f^×, 0]] of a subtree (see
-/// [`RneaDerivatives`]).
-#[derive(Debug, Clone, Copy)]
-struct Variation<T: Scalar> {
-    P: Matrix3<T>,
-    f: Vector3<T>,
-}
-
-impl<T: Scalar> Variation<T> {
-    fn zero() -> Self {
-        Self { P: Matrix3::zeros(), f: Vector3::zeros() }
-    }
-
-    /// B of one body of ground inertia `y` moving with twist (ω, v):
-    /// P = Ī̇ − n^× with Ī̇ = ω^×Ī − Īω^× − h vᵀ − v hᵀ + 2(v·h)1, (n, f) = I(ω, v).
-    fn of_body(y: &BodyInertia<T>, w: &Vector3<T>, v: &Vector3<T>) -> Self {
-        let (n, f) = y.apply(w, v);
-        let wx = w.cross_matrix();
-        let hv = y.h * v.transpose();
-        let two_vh = (v.dot(&y.h)) * T::lit(2.0);
-        let mut P = wx * y.I - y.I * wx - hv - hv.transpose() - n.cross_matrix();
-        P[(0, 0)] += two_vh;
-        P[(1, 1)] += two_vh;
-        P[(2, 2)] += two_vh;
-        Self { P, f }
-    }
-
-    fn add(&mut self, o: &Self) {
-        self.P += o.P;
-        self.f += o.f;
-    }
-
-    /// B·(ω, v) = (P ω, −2 f × ω).
-    #[inline(always)]
-    fn apply(&self, m: &Vector6<T>) -> Vector6<T> {
-        let (w, _) = split(m);
-        join(&(self.P * w), &(self.f.cross(&w) * T::lit(-2.0)))
-    }
-
-    /// The angular half of Bᵀ·(ω, v) = (Pᵀω + 2 f × v, 0).
-    #[inline(always)]
-    fn apply_transpose_angular(&self, m: &Vector6<T>) -> Vector3<T> {
-        let (w, v) = split(m);
-        self.P.tr_mul(&w) + self.f.cross(&v) * T::lit(2.0)
     }
 }
 
@@ -310,120 +267,14 @@ impl<T: Scalar> Model<T> {
         out: &mut RneaDerivatives<T>,
         s: &mut DerivativeScratch<T>,
     ) {
-        let minus_g = join(&Vector3::zeros(), &(-self.gravity));
-        // outward pass, ground coordinates: placement, J, v, a (with −g), composite seeds
-        for (i, seg) in self.segs.iter().enumerate() {
-            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]));
-            let (ov_p, oa_p) = match seg.parent {
-                Some(p) => (s.ov[p], s.oa[p]),
-                None => (Vector6::zeros(), minus_g),
-            };
-            world_subspace(seg, &w, &mut s.J[seg.vi..]);
-            let cols = seg.vi..seg.vi + seg.elem.nv();
-            let (mut jv, mut ja) = (Vector6::zeros(), Vector6::zeros());
-            for c in cols.clone() {
-                jv += s.J[c] * v[c];
-                ja += s.J[c] * vdot[c];
-            }
-            // vᵢ = vλ + J q̇, aᵢ = aλ + J q̈ + vᵢ × J q̇
-            let ov = ov_p + jv;
-            let oa = oa_p + ja + cross_motion6(&ov, &jv);
-            // dVdq = vλ × J, dAdq = aλ × J + vλ × dVdq, dAdv = vᵢ × J + dVdq
-            for c in cols {
-                let Jc = s.J[c];
-                let dV = cross_motion6(&ov_p, &Jc);
-                s.dAdq[c] = cross_motion6(&oa_p, &Jc) + cross_motion6(&ov_p, &dV);
-                s.dAdv[c] = cross_motion6(&ov, &Jc) + dV;
-                s.dVdq[c] = dV;
-            }
-            // fᵢ = Iᵢaᵢ + vᵢ ×* Iᵢvᵢ − f_ext, and Bᵢ
-            if seg.massless {
-                s.Yc[i] = BodyInertia::zero();
-                s.Bc[i] = Variation::zero();
-                s.Fc[i] = Vector6::zeros();
-            } else {
-                let Y = BodyInertia::from_centre_in_ground(seg.inertia.m, &seg.com, &seg.j_c, &w.E, &w.r);
-                let (ow, ovl) = split(&ov);
-                let h = Y.apply6(&ov);
-                s.Fc[i] = Y.apply6(&oa) + cross_force6(&ov, &h);
-                s.Bc[i] = Variation::of_body(&Y, &ow, &ovl);
-                s.Yc[i] = Y;
-            }
-            s.world[i] = w;
-            s.ov[i] = ov;
-            s.oa[i] = oa;
-        }
-        if let Some(fe) = f_ext {
-            // a wrench (n, f) about the link origin in link components, to ground about the
-            // ground origin: f_G = Eᵀf, n_G = Eᵀn + p × f_G
-            for (l, &k) in self.link_seg.iter().enumerate() {
-                let w = &s.world[k];
-                let f = w.E.tr_mul(&fe[l].force);
-                let n = w.E.tr_mul(&fe[l].moment) + w.r.cross(&f);
-                s.Fc[k] -= join(&n, &f);
-            }
-        }
-        let n = self.nv;
+        self.derivatives_outward(q, v, vdot, f_ext, s);
         out.dtau_dq.fill(T::zero());
         out.dtau_dv.fill(T::zero());
         out.mass_matrix.fill(T::zero());
-        let (dq, dv, mm) =
-            (out.dtau_dq.as_mut_slice(), out.dtau_dv.as_mut_slice(), out.mass_matrix.as_mut_slice());
-        // inward pass
-        for i in (0..self.segs.len()).rev() {
-            let seg = &self.segs[i];
-            let nvi = seg.elem.nv();
-            let (Yc, Bc, Fc) = (s.Yc[i], s.Bc[i], s.Fc[i]);
-            for b in seg.vi..seg.vi + nvi {
-                let Jb = s.J[b];
-                let YJ = Yc.apply6(&Jb);
-                let BtJ = Bc.apply_transpose_angular(&Jb);
-                let mut dFdq = Bc.apply(&s.dVdq[b]) + Yc.apply6(&s.dAdq[b]);
-                let dFdv = Bc.apply(&Jb) + Yc.apply6(&s.dAdv[b]);
-                out.tau[b] = Jb.dot(&Fc);
-                // the joint's own columns a (a ball's three): ∂τₐ/∂q_b, ∂τₐ/∂q̇_b, Mₐb
-                for a in seg.vi..seg.vi + nvi {
-                    let Ja = &s.J[a];
-                    mm[a + b * n] = Ja.dot(&YJ);
-                    dq[a + b * n] = Ja.dot(&dFdq);
-                    dv[a + b * n] = Ja.dot(&dFdv);
-                }
-                // for the ancestors' rows, ∂Fᶜ/∂q_b gains the rigid-motion term J_b ×* Fᶜᵢ
-                dFdq += cross_force6(&Jb, &Fc);
-                let (BtJw, dFdq, dFdv) = (BtJ, dFdq, dFdv);
-                let mut c = self.parent_col[seg.vi];
-                while let Some(a) = c {
-                    let (Ja, dV, dAq, dAv) = (&s.J[a], &s.dVdq[a], &s.dAdq[a], &s.dAdv[a]);
-                    // ancestor row a, descendant column b
-                    dq[a + b * n] = dot6(Ja, &dFdq);
-                    dv[a + b * n] = dot6(Ja, &dFdv);
-                    let m = dot6(Ja, &YJ);
-                    mm[a + b * n] = m;
-                    mm[b + a * n] = m;
-                    // descendant row b, ancestor column a (Bᵀ J has no linear half)
-                    dq[b + a * n] = dot6(&YJ, dAq) + BtJw.x * dV[0] + BtJw.y * dV[1] + BtJw.z * dV[2];
-                    dv[b + a * n] = dot6(&YJ, dAv) + BtJw.x * Ja[0] + BtJw.y * Ja[1] + BtJw.z * Ja[2];
-                    c = self.parent_col[a];
-                }
-            }
-            if let Some(p) = seg.parent {
-                s.Yc[p].add(&Yc);
-                s.Bc[p].add(&Bc);
-                s.Fc[p] += Fc;
-            }
-        }
+        self.derivatives_inward(out.partials(), s);
     }
 }
 
-/// a·b of two 6-vectors, written out (the hot loop of the inward pass).
-#[inline(always)]
-fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
-}
-
-/// M⁻¹ = L⁻ᵀ L⁻¹ from the Cholesky factor L (lower; its strict upper part is ignored), into
-/// `out`, with `w` (n × n) holding L⁻¹ and `wt` its transpose: forward substitution of each
-/// unit vector from its own row on (L⁻¹ is lower triangular), then M⁻¹ = (L⁻¹)ᵀL⁻¹.
 fn inverse_from_cholesky<T: Scalar>(
     l: &DMatrix<T>,
     out: &mut DMatrix<T>,
@@ -480,5 +331,4 @@ impl Model<f64> {
 }
 
 #[cfg(test)]
-#[path = "derivatives_tests.rs"]
 mod tests;

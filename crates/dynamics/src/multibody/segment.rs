@@ -1,0 +1,150 @@
+//! The elementary segments a tree is expanded into: one per link, plus a massless intermediate
+//! for each extra elementary joint of a compound joint (collar, slot, free), with the numbers
+//! every tree algorithm reads (placement, joint, coordinates, inertia) and the flags of their
+//! exact shortcuts.
+//!
+//! Book: §1.5 (joints), §7.11 (chains).
+
+use nalgebra::{Matrix3, Vector3};
+use vectrix_tensor::Scalar;
+
+use super::joint::Elem;
+use super::spatial::{BodyInertia, Xform};
+
+/// One elementary segment (a link, or a massless intermediate of a compound joint).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Segment<T: Scalar> {
+    pub parent: Option<usize>,
+    pub placement: Xform<T>,
+    pub elem: Elem<T>,
+    pub qi: usize,
+    pub vi: usize,
+    pub inertia: BodyInertia<T>,
+    /// The same body as mass m (in `inertia`), centre c and J_c, link components.
+    pub com: Vector3<T>,
+    pub j_c: Matrix3<T>,
+    /// Zero mass and zero inertia (intermediate segments of compound joints, massless links).
+    pub massless: bool,
+    /// Scales for ABA's singularity tests (real numbers, configuration-independent): the
+    /// total mass of the subtree, Σ tr J_c over its bodies, and |c| of the own body (0 when
+    /// massless).
+    pub sub_mass: f64,
+    pub sub_trace: f64,
+    pub own_reach: f64,
+    /// The placement has no rotation (𝓞_{J/P} = 1 exactly): composing with it is a shift.
+    pub placement_is_shift: bool,
+    /// A pin or slider along a coordinate axis: (axis index, negative direction).
+    pub coord_axis: Option<(usize, bool)>,
+    /// The parent's orientation is the ground's exactly, whatever q (every segment from the
+    /// ground to the parent is a slider or a weld behind a placement without rotation: the
+    /// sliders of a free joint): composing with the parent is then a shift.
+    pub parent_upright: bool,
+    /// The kind of rotation of the joint-to-parent transform.
+    pub turn: Turn,
+}
+
+impl Segment<f64> {
+    /// The same segment with every number converted exactly from f64.
+    pub(crate) fn cast<U: Scalar>(&self) -> Segment<U> {
+        Segment {
+            parent: self.parent,
+            placement: self.placement.cast(),
+            elem: self.elem.cast(),
+            qi: self.qi,
+            vi: self.vi,
+            inertia: self.inertia.cast(),
+            com: self.com.map(U::lit),
+            j_c: self.j_c.map(U::lit),
+            massless: self.massless,
+            sub_mass: self.sub_mass,
+            sub_trace: self.sub_trace,
+            own_reach: self.own_reach,
+            placement_is_shift: self.placement_is_shift,
+            coord_axis: self.coord_axis,
+            parent_upright: self.parent_upright,
+            turn: self.turn,
+        }
+    }
+}
+
+/// The rotation E of a segment's joint-to-parent transform (`Model::seg_xform`), by kind, so
+/// that the passes rotate vectors and inertias with only the products it needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Turn {
+    /// E = 1 exactly (a slider or a weld behind a placement without rotation).
+    None,
+    /// A turn about a coordinate axis (a pin along ±x̂, ±ŷ, ±ẑ behind a placement without
+    /// rotation): E differs from 1 only in rows and columns (i1, i2), where it is [[c, s],
+    /// [−s, c]].
+    Plane(usize, usize),
+    /// Any other E.
+    General,
+}
+
+impl Turn {
+    /// The kind of a segment's rotation (exact tests on the model's numbers: the transforms
+    /// of `Model::seg_xform` have these zeros and ones exactly).
+    pub fn of(elem: &Elem<f64>, placement_is_shift: bool, coord_axis: Option<(usize, bool)>) -> Self {
+        if !placement_is_shift {
+            return Turn::General;
+        }
+        match (elem, coord_axis) {
+            (Elem::Prismatic(_) | Elem::Fixed, _) => Turn::None,
+            (Elem::Revolute(_), Some((axis, _))) => {
+                let (i1, i2) = [(1, 2), (2, 0), (0, 1)][axis];
+                Turn::Plane(i1, i2)
+            }
+            _ => Turn::General,
+        }
+    }
+
+    /// E v.
+    #[inline(always)]
+    pub fn rotate<T: Scalar>(self, e: &Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
+        match self {
+            Turn::None => *v,
+            Turn::Plane(i1, i2) => {
+                let (c, s) = (e[(i1, i1)], e[(i1, i2)]);
+                let mut out = *v;
+                out[i1] = c * v[i1] + s * v[i2];
+                out[i2] = c * v[i2] - s * v[i1];
+                out
+            }
+            Turn::General => e * v,
+        }
+    }
+
+    /// Eᵀ v.
+    #[inline(always)]
+    pub fn rotate_back<T: Scalar>(self, e: &Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
+        match self {
+            Turn::None => *v,
+            Turn::Plane(i1, i2) => {
+                let (c, s) = (e[(i1, i1)], e[(i1, i2)]);
+                let mut out = *v;
+                out[i1] = c * v[i1] - s * v[i2];
+                out[i2] = s * v[i1] + c * v[i2];
+                out
+            }
+            Turn::General => e.tr_mul(v),
+        }
+    }
+
+    /// A motion vector from P to C through `x` of this kind: ω_C = Eω, v_C = E(v − r×ω).
+    #[inline(always)]
+    pub fn motion<T: Scalar>(self, x: &Xform<T>, w: &Vector3<T>, v: &Vector3<T>) -> (Vector3<T>, Vector3<T>) {
+        (self.rotate(&x.E, w), self.rotate(&x.E, &(v - x.r.cross(w))))
+    }
+
+    /// A force vector from C to P (Xᵀ): f_P = Eᵀf, n_P = Eᵀn + r×f_P.
+    #[inline(always)]
+    pub fn force_to_parent<T: Scalar>(
+        self,
+        x: &Xform<T>,
+        n: &Vector3<T>,
+        f: &Vector3<T>,
+    ) -> (Vector3<T>, Vector3<T>) {
+        let fp = self.rotate_back(&x.E, f);
+        (self.rotate_back(&x.E, n) + x.r.cross(&fp), fp)
+    }
+}
