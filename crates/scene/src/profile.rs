@@ -6,7 +6,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::SceneError;
-use super::build::Src;
+use super::source::SceneSource as Src;
 
 /// A scalar function of time for applied forces and torques and for control deflections.
 ///
