@@ -62,7 +62,11 @@ pub fn crates() -> Vec<Crate> {
         // scenes (aircraft_scene.rs).
         Crate {
             dir: "scene",
-            covered: joined(&[crate::scene::COVERED, crate::scene_format::COVERED, crate::aircraft_scene::COVERED]),
+            covered: joined(&[
+                crate::scene::COVERED,
+                crate::scene_format::COVERED,
+                crate::aircraft_scene::COVERED,
+            ]),
             enforce: Enforce::All,
         },
         Crate { dir: "lti", covered: crate::lti::COVERED, enforce: Enforce::All },

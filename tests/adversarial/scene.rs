@@ -12,8 +12,8 @@ use std::sync::atomic::AtomicBool;
 use nalgebra::{DMatrix, DVector};
 use vectrix::scene::spec::{LoopSpec, Profile};
 use vectrix::scene::{
-    EquilibriumResidual, InvariantValue, LinearModel, RunControl, Scene, SceneError, SceneSource, body_schema,
-    check_name,
+    EquilibriumResidual, InvariantValue, LinearModel, RunControl, Scene, SceneError, SceneSource,
+    body_schema, check_name,
 };
 use vectrix::units::UnitSystem;
 
