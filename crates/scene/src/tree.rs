@@ -89,8 +89,9 @@ impl Node {
                 }
             },
             DeValue::Float(f) => match f.as_str().parse::<f64>() {
-                // `1e400` reads as ∞: only `inf` may be infinite
-                Ok(x) if x.is_finite() || f.as_str().contains("inf") => NodeValue::Float(x),
+                // `1e400` reads as ∞: only `inf` may be infinite (`nan` is a number of TOML's,
+                // refused later where it stands)
+                Ok(x) if !x.is_infinite() || f.as_str().contains("inf") => NodeValue::Float(x),
                 _ => {
                     return Err((
                         span,
