@@ -48,6 +48,8 @@ mod plot;
 mod rotation;
 #[path = "adversarial/scene.rs"]
 mod scene;
+#[path = "adversarial/scene_format.rs"]
+mod scene_format;
 #[path = "adversarial/sealed.rs"]
 mod sealed;
 #[path = "adversarial/statics.rs"]

@@ -58,10 +58,15 @@ pub fn crates() -> Vec<Crate> {
             covered: joined(&[crate::dynamics::COVERED, crate::multibody::COVERED]),
             enforce: Enforce::All,
         },
-        // scenes (scene.rs) and aircraft scenes (aircraft_scene.rs).
+        // scenes (scene.rs), the format's paths and document (scene_format.rs) and aircraft
+        // scenes (aircraft_scene.rs).
         Crate {
             dir: "scene",
-            covered: joined(&[crate::scene::COVERED, crate::aircraft_scene::COVERED]),
+            covered: joined(&[
+                crate::scene::COVERED,
+                crate::scene_format::COVERED,
+                crate::aircraft_scene::COVERED,
+            ]),
             enforce: Enforce::All,
         },
         Crate { dir: "lti", covered: crate::lti::COVERED, enforce: Enforce::All },

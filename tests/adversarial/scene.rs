@@ -12,8 +12,8 @@ use std::sync::atomic::AtomicBool;
 use nalgebra::{DMatrix, DVector};
 use vectrix::scene::spec::{LoopSpec, Profile};
 use vectrix::scene::{
-    EquilibriumResidual, InvariantValue, LinearModel, RunControl, Scene, SceneError, SceneSource, Step,
-    body_schema, check_name, convert_quantities, key_of, render_path, tag,
+    EquilibriumResidual, InvariantValue, LinearModel, RunControl, Scene, SceneError, SceneSource,
+    body_schema, check_name,
 };
 use vectrix::units::UnitSystem;
 
@@ -21,7 +21,7 @@ use crate::harness::{err_or, finite, refused};
 
 /// The double pendulum of two unit point masses on unit rods, hanging at rest (an
 /// equilibrium) or released from `q`.
-fn double_pendulum(q: [f64; 2], extra: &str) -> String {
+pub(crate) fn double_pendulum(q: [f64; 2], extra: &str) -> String {
     format!(
         r#"name = "dp"
 duration = 0.5
@@ -73,7 +73,7 @@ const HOSTILE_TOML: [&str; 14] = [
 ];
 
 /// A refusal names the file, line and column: `dp.toml:L:C: …`.
-fn located(e: &SceneError) -> bool {
+pub(crate) fn located(e: &SceneError) -> bool {
     let s = e.to_string();
     let mut parts = s.splitn(4, ':');
     parts.next() == Some("dp.toml")
@@ -537,43 +537,5 @@ cases! {
         }
         assert!(check_name(&"x".repeat(64), "name", false).is_ok() && check_name(&"x".repeat(65), "name", false).is_err());
         assert!(check_name(&"x".repeat(1_000_000), "name", false).is_err());
-    }
-
-    // Quantity strings (§15.19): paths render as errors name them, tags and keys are read
-    // from hostile paths without panicking, and conversion turns "30 deg" into π/6 and
-    // refuses strings of another dimension at their location.
-    scene_quantities ["render", "key_of", "tag", "convert", "body_schema"] {
-        let p = [Step::Key("bodies".into()), Step::Index(2), Step::Key("q".into()), Step::Index(0)];
-        assert_eq!(render_path(&p), "bodies[2].q[0]");
-        assert_eq!(render_path(&[]), "");
-        assert_eq!(render_path(&[Step::Index(usize::MAX)]), format!("[{}]", usize::MAX));
-        assert_eq!((key_of(&p[0]), key_of(&p[1])), (Some("bodies"), None));
-        let text = double_pendulum([0.4, -0.3], "");
-        let mut doc: toml::Value = toml::from_str(&text).unwrap();
-        let joint = [Step::Key("bodies".into()), Step::Index(0), Step::Key("joint".into())];
-        assert_eq!(tag(&doc, &joint, "type"), Some("pin"));
-        assert_eq!(tag(&doc, &[Step::Key("bodies".into()), Step::Index(usize::MAX)], "type"), None);
-        assert_eq!(tag(&doc, &[Step::Index(0)], "type"), None);
-        assert_eq!(tag(&doc, &[], "name"), Some("dp"));
-        let q0 = [Step::Key("bodies".into()), Step::Index(0), Step::Key("q".into()), Step::Index(0)];
-        assert!(body_schema(&q0, &doc).is_some());
-        assert!(body_schema(&[], &doc).is_none() && body_schema(&[Step::Index(3)], &doc).is_none());
-        let src = SceneSource::new(&text, "dp.toml").unwrap();
-        assert_eq!(convert_quantities(&src, &mut doc, &body_schema).unwrap(), 0);
-        let with_units = text.replacen("q = [0.4]", "q = [\"30 deg\"]", 1).replacen("mass = 1.0", "mass = \"1000 g\"", 1);
-        let src = SceneSource::new(&with_units, "dp.toml").unwrap();
-        let mut doc: toml::Value = toml::from_str(&with_units).unwrap();
-        assert_eq!(convert_quantities(&src, &mut doc, &body_schema).unwrap(), 2);
-        let q = doc["bodies"][0]["q"][0].as_float().unwrap();
-        assert!((q - std::f64::consts::FRAC_PI_6).abs() <= f64::EPSILON && doc["bodies"][0]["mass"]["mass"].as_float() == Some(1.0));
-        for bad in ["1 m", "1e400 deg", "NaN deg", "", "1 deg deg", "1 deg/0"] {
-            let t = text.replacen("q = [0.4]", &format!("q = [{bad:?}]"), 1);
-            let src = SceneSource::new(&t, "dp.toml").unwrap();
-            let mut doc: toml::Value = toml::from_str(&t).unwrap();
-            match convert_quantities(&src, &mut doc, &body_schema) {
-                Ok(_) => assert!(doc["bodies"][0]["q"][0].as_float().is_some_and(f64::is_finite), "{bad}"),
-                Err(e) => assert!(located(&e), "{bad}: {e}"),
-            }
-        }
     }
 }

@@ -107,8 +107,9 @@ pub enum Command {
         /// The scene file (TOML).
         #[arg(required = true)]
         scene: Option<PathBuf>,
-        /// `PATH=v1,v2,…` with PATH a dotted path into the file (`effects.0.k`,
-        /// `bodies.1.mass.mass`, `duration`); several give the Cartesian product.
+        /// `PATH=v1,v2,…` with PATH an item path into the file, as errors name items
+        /// (`effects[0].k`, `bodies[1].mass.mass`, `duration`; `effects.0.k` too); several give
+        /// the Cartesian product.
         #[arg(long, required = true)]
         param: Vec<String>,
         /// `K/N`: run only the K-th of N slices (runs i with i mod N = K − 1, numbered as in

@@ -15,7 +15,9 @@ use std::sync::Mutex;
 
 use rayon::prelude::*;
 use vectrix_plot::LineChart;
-use vectrix_scene::{Run, RunControl, Scene, SceneSource, SceneSpec, Step, StopReason, body_schema};
+use vectrix_scene::{
+    ItemPath, Node, PathSeg, Run, RunControl, Scene, SceneSource, SceneSpec, StopReason, body_schema,
+};
 use vectrix_units::UnitSystem;
 
 use crate::interrupt::interrupted;
@@ -26,20 +28,29 @@ use crate::run::{Progress, located, outcome, print_written};
 /// Most runs one sweep may ask for (the product of the value counts).
 pub const MAX_SWEEP_RUNS: usize = 10_000;
 
-/// The steps of a dotted path: `effects.0.k` → key, index, key (so `effects.00.k` is the
-/// same parameter).
-fn steps(path: &str) -> Vec<Step> {
-    path.split('.')
-        .map(|s| s.parse::<usize>().map_or_else(|_| Step::Key(s.to_string()), Step::Index))
-        .collect()
+/// The item of a parameter path: `effects[0].k`, or dotted with indices as numbers
+/// (`effects.0.k`, so `effects.00.k` is the same parameter).
+///
+/// # Errors
+/// A message when the path is not an item path.
+fn item_of(path: &str) -> Result<ItemPath, String> {
+    let p = ItemPath::parse(path).map_err(|e| format!("--param: {e}"))?;
+    let steps = p.segments().iter().map(|s| match s.key().map(str::parse::<usize>) {
+        Some(Ok(i)) => PathSeg::Index(i),
+        _ => s.clone(),
+    });
+    Ok(ItemPath::from(steps.collect::<Vec<_>>()))
 }
 
-/// One parameter: its dotted path and values; a value may be a quantity string (`2 lbf/ft`),
-/// converted by the scene schema's dimension for that key.
-fn parse_param(p: &str, doc: &toml::Value) -> Result<(String, Vec<f64>), String> {
+/// One parameter: its path (as given, and as an item) and values; a value may be a quantity
+/// string (`2 lbf/ft`), converted by the scene schema's dimension for that key.
+fn parse_param(p: &str, doc: &Node) -> Result<(String, ItemPath, Vec<f64>), String> {
     let (path, values) = p.split_once('=').ok_or_else(|| format!("`{p}`: expected PATH=v1,v2,…"))?;
-    let steps = steps(path);
-    let expect = body_schema(&steps, doc);
+    if path.is_empty() {
+        return Err(format!("`{p}`: expected PATH=v1,v2,…"));
+    }
+    let item = item_of(path)?;
+    let expect = body_schema(&item, doc);
     let vals = values
         .split(',')
         .map(|v| match (v.trim().parse::<f64>(), expect) {
@@ -54,50 +65,10 @@ fn parse_param(p: &str, doc: &toml::Value) -> Result<(String, Vec<f64>), String>
             (Err(_), None) => Err(format!("`{v}` in `{p}` is not a finite number")),
         })
         .collect::<Result<Vec<_>, _>>()?;
-    if vals.is_empty() || path.is_empty() {
+    if vals.is_empty() {
         return Err(format!("`{p}`: expected PATH=v1,v2,…"));
     }
-    Ok((path.to_string(), vals))
-}
-
-/// The scene-file path of a dotted parameter path: `effects.0.k` → `effects[0].k`.
-fn item_path(dotted: &str) -> String {
-    let mut out = String::new();
-    for seg in dotted.split('.') {
-        if seg.parse::<usize>().is_ok() {
-            out.push_str(&format!("[{seg}]"));
-        } else {
-            if !out.is_empty() {
-                out.push('.');
-            }
-            out.push_str(seg);
-        }
-    }
-    out
-}
-
-/// Sets the number at a dotted path (`effects.0.k`) of a TOML document; an integer stays an
-/// integer (a fractional value for it is an error).
-fn set(doc: &mut toml::Value, path: &str, x: f64) -> Result<(), String> {
-    let mut cur = doc;
-    for seg in path.split('.') {
-        cur = match cur {
-            toml::Value::Table(t) => t.get_mut(seg).ok_or_else(|| format!("`{path}`: no key `{seg}`"))?,
-            toml::Value::Array(a) => {
-                let i: usize = seg.parse().map_err(|_| format!("`{path}`: `{seg}` must be an index"))?;
-                let n = a.len();
-                a.get_mut(i).ok_or_else(|| format!("`{path}`: index {i} out of 0..{n}"))?
-            }
-            _ => return Err(format!("`{path}`: `{seg}` is below a value")),
-        };
-    }
-    *cur = match cur {
-        toml::Value::Integer(_) if x.fract() == 0.0 && x.abs() < 9.0e15 => toml::Value::Integer(x as i64),
-        toml::Value::Integer(_) => return Err(format!("`{path}` is an integer; {x} is not")),
-        toml::Value::Float(_) => toml::Value::Float(x),
-        _ => return Err(format!("`{path}` is not a number")),
-    };
-    Ok(())
+    Ok((path.to_string(), item, vals))
 }
 
 /// One finished run of the sweep.
@@ -148,10 +119,10 @@ pub(crate) fn parse_shard(s: &str) -> Result<(usize, usize), String> {
 /// Refuses a parameter given twice (`--param duration=1,2 --param duration=3`): every run
 /// would use the last value while the table named the others.
 fn unique(params: &[String]) -> Result<(), String> {
-    let paths: Vec<(&str, Vec<Step>)> = params
+    let paths: Vec<(&str, ItemPath)> = params
         .iter()
-        .map(|p| (p.as_str(), steps(p.split_once('=').map_or(p.as_str(), |(a, _)| a))))
-        .collect();
+        .map(|p| Ok((p.as_str(), item_of(p.split_once('=').map_or(p.as_str(), |(a, _)| a))?)))
+        .collect::<Result<_, String>>()?;
     for (k, (p, s)) in paths.iter().enumerate() {
         if let Some((q, _)) = paths[..k].iter().find(|(_, t)| t == s) {
             return Err(format!(
@@ -177,16 +148,15 @@ pub(crate) fn sweep(
     let src = SceneSource::new(text, file)?;
     // quantity strings ("675.124 ft/s") become SI numbers first, as when the scene loaded: the
     // swept values are SI numbers too
-    let mut doc: toml::Value = toml::from_str(text)?;
-    vectrix_scene::convert_quantities(&src, &mut doc, &vectrix_scene::body_schema)?;
+    let doc = src.document(&body_schema)?;
     let params = params.iter().map(|p| parse_param(p, &doc)).collect::<Result<Vec<_>, _>>()?;
-    let total = params.iter().try_fold(1usize, |n, (_, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
+    let total = params.iter().try_fold(1usize, |n, (_, _, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
     if total > MAX_SWEEP_RUNS {
         return Err(format!("the sweep asks for {total} runs; valid: at most {MAX_SWEEP_RUNS}").into());
     }
     // Cartesian product of the values
     let mut combos: Vec<Vec<(String, f64)>> = vec![vec![]];
-    for (p, vals) in &params {
+    for (p, _, vals) in &params {
         combos = combos
             .into_iter()
             .flat_map(|c| vals.iter().map(move |v| [c.clone(), vec![(p.clone(), *v)]].concat()))
@@ -204,10 +174,11 @@ pub(crate) fn sweep(
         .map(|(_, combo)| -> Result<Scene, BoxError> {
             let mut d = doc.clone();
             for (p, v) in combo {
-                set(&mut d, p, *v).map_err(|m| src.invalid(item_path(p), m))?;
+                let item = params.iter().find(|(q, _, _)| q == p).map(|(_, item, _)| item);
+                let item = item.ok_or_else(|| format!("--param `{p}` has no item path"))?;
+                d.set_number(item, *v).map_err(|m| src.invalid(item, m))?;
             }
-            let spec: SceneSpec =
-                d.try_into().map_err(|e: toml::de::Error| src.invalid("", e.to_string()))?;
+            let spec: SceneSpec = src.read_document(&d)?;
             Ok(Scene::from_spec_in(spec, &src)?)
         })
         .collect::<Result<_, _>>()?;
@@ -310,11 +281,11 @@ fn describe(label: &[(String, f64)]) -> String {
 }
 
 /// sweep.csv: one row per run.
-fn sweep_csv(params: &[(String, Vec<f64>)], done: &[Done]) -> String {
+fn sweep_csv(params: &[(String, ItemPath, Vec<f64>)], done: &[Done]) -> String {
     let checks: Vec<&str> =
         done.first().map(|d| d.run.drift.iter().map(|x| x.invariant.name()).collect()).unwrap_or_default();
     let mut s = String::from("run");
-    for (p, _) in params {
+    for (p, _, _) in params {
         s.push_str(&format!(",{p}"));
     }
     s.push_str(",complete,rows,fevals,accepted,rejected,wall_seconds");

@@ -51,33 +51,34 @@ pub enum SceneError {
 }
 
 impl SceneError {
-    /// A [`SceneError::Parse`] from a TOML error, located in `text` (shared by every kind of
-    /// scene file: multibody here, flight in `vectrix-flight`).
+    /// A [`SceneError::Parse`] from a TOML syntax error, located in `text` (the parser's span;
+    /// the start of the file when the span does not fit `text`).
     pub fn from_toml(e: &toml::de::Error, text: &str, file: &str) -> Self {
         let message = e.message().trim();
-        let mut at = e.span().map_or(0, |s| s.start);
-        if let (Some(key), Some(span)) = (unknown_key(message), e.span())
-            && let Some(table) = text.get(span.clone())
-        {
-            // the parser points at the table holding the key (an inline table's `{`): find the
-            // key itself in it
-            at = key_offset(table, key).map_or(span.start, |k| span.start + k);
-        }
+        let at = e.span().map_or(0, |s| s.start);
         let message = if message == "duplicate key" {
             // name the key (the span is the repeated key)
             let key = e.span().and_then(|s| text.get(s)).unwrap_or("").trim();
             format!("duplicate key `{key}`; valid: each key once in its table")
         } else {
-            plain_words(message)
+            message.to_string()
         };
-        let (line, column) = super::source::line_col(text, at);
+        let (line, column) = line_col(text, at);
         Self::Parse { file: file.into(), line, column, message }
     }
 }
 
-/// The key of serde's "unknown field `k`, expected …" message.
-pub(crate) fn unknown_key(message: &str) -> Option<&str> {
-    message.strip_prefix("unknown field `")?.split('`').next()
+/// 1-based (line, column) of byte `offset` in `src` (columns count characters; an offset past
+/// the end or inside a character is taken back to the character boundary before it).
+pub(crate) fn line_col(src: &str, offset: usize) -> (usize, usize) {
+    let mut offset = offset.min(src.len());
+    while !src.is_char_boundary(offset) {
+        offset -= 1;
+    }
+    let before = &src[..offset];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
 }
 
 /// A quantity-string error in the words of a scene file: the units library's byte positions
@@ -93,38 +94,21 @@ pub fn unit_message(e: &vectrix_units::UnitError) -> String {
     format!("{}{}", &m[..k], &tail[end..])
 }
 
-/// The variant and the valid ones of serde's "unknown variant `v`, expected one of `a`, `b`"
-/// (or "expected `a` or `b`"), the valid ones as "`a`, `b`".
-pub(crate) fn unknown_variant(message: &str) -> Option<(&str, String)> {
-    let rest = message.strip_prefix("unknown variant `")?;
-    let (variant, tail) = rest.split_once('`')?;
-    let valid: Vec<String> = tail.split('`').skip(1).step_by(2).map(|v| format!("`{v}`")).collect();
-    Some((variant, valid.join(", ")))
-}
-
-/// Byte offset of the bare key `key` (followed by `=`) in `text`.
-fn key_offset(text: &str, key: &str) -> Option<usize> {
-    let mut from = 0;
-    while let Some(k) = text[from..].find(key).map(|k| from + k) {
-        let before = text[..k].chars().next_back();
-        let after = text[k + key.len()..].trim_start();
-        if before.is_none_or(|c| !(c.is_alphanumeric() || c == '_' || c == '-')) && after.starts_with('=') {
-            return Some(k);
-        }
-        from = k + key.len();
-    }
-    None
-}
-
 /// " (did you mean `x`?)" for the candidate closest to `name` by edit distance, when it is
-/// close (at most a third of the name's letters, or 2, apart); otherwise "".
+/// close (see [`closest`]); otherwise "".
 pub(crate) fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
+    closest(name, candidates).map_or_else(String::new, |c| format!(" (did you mean `{c}`?)"))
+}
+
+/// The candidate closest to `name` by edit distance, when it is close: at most a third of the
+/// name's letters, or 2, apart.
+pub(crate) fn closest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     candidates
         .into_iter()
         .map(|c| (distance(name, c), c))
         .min_by_key(|(d, _)| *d)
         .filter(|(d, _)| *d <= (name.chars().count() / 3).max(2))
-        .map_or_else(String::new, |(_, c)| format!(" (did you mean `{c}`?)"))
+        .map(|(_, c)| c)
 }
 
 /// Edit distance (Levenshtein) between two short names.
@@ -141,47 +125,4 @@ pub(crate) fn distance(a: &str, b: &str) -> usize {
         }
     }
     row[b.len()]
-}
-
-/// A parser message in the scene's words: serde's Rust type names become what a scene
-/// writer would type, and an unknown key gets the closest valid one ("did you mean").
-pub(crate) fn plain_words(message: &str) -> String {
-    let mut m = message.trim().to_string();
-    for (rust, plain) in [
-        ("expected usize", "valid: a whole number ≥ 0 (no decimal point)"),
-        ("expected u64", "valid: a whole number ≥ 0 (no decimal point)"),
-        ("expected f64", "valid: a number"),
-        ("expected a sequence", "valid: an array [ … ]"),
-        ("expected a string", "valid: a string in quotes"),
-        ("expected a boolean", "valid: true or false"),
-    ] {
-        if let Some(k) = m.find(rust) {
-            let head = m[..k].trim_end().trim_end_matches(',');
-            m = format!("{head}; {plain}{}", &m[k + rust.len()..]);
-        }
-    }
-    if let Some(key) = m.strip_prefix("missing field `").and_then(|r| r.split('`').next()) {
-        m = format!("the required key `{key}` is missing; valid: a table that gives `{key}`");
-    }
-    if let Some(struct_at) = m.find("expected struct ") {
-        let head = m[..struct_at].trim_end().trim_end_matches(',');
-        m = format!("{head}; valid: a table {{ … }}");
-    }
-    if let Some(key) = unknown_key(message) {
-        // "unknown field `k`, expected `a`" or "…, expected one of `a`, `b`"
-        let valid: Vec<&str> = message.split('`').skip(3).step_by(2).collect();
-        m = format!(
-            "unknown key `{key}`; valid: {}",
-            valid.iter().map(|v| format!("`{v}`")).collect::<Vec<_>>().join(", ")
-        );
-        if valid.is_empty() {
-            m = format!("unknown key `{key}`; valid: none here");
-        } else if let Some(best) = valid.iter().copied().min_by_key(|v| distance(key, v))
-            && valid.len() > 1
-            && distance(key, best) <= (key.chars().count() / 3).max(2)
-        {
-            m.push_str(&format!(" (did you mean `{best}`?)"));
-        }
-    }
-    m
 }

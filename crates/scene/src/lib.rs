@@ -21,8 +21,10 @@
 mod aero;
 mod build;
 mod contacts;
+mod de;
 mod effect_spec;
 mod error;
+mod fault;
 mod forces;
 mod impacts;
 pub mod import;
@@ -31,6 +33,7 @@ mod jacobian;
 mod kin;
 mod limits;
 mod linearize;
+mod load;
 mod loop_spec;
 mod loops;
 mod many;
@@ -40,6 +43,7 @@ mod needs;
 mod outcome;
 mod outputs;
 mod parts;
+mod path;
 mod profile;
 mod project;
 mod quantities;
@@ -53,6 +57,7 @@ mod source;
 pub mod spec;
 mod stiff;
 mod stops;
+mod tree;
 mod trim;
 
 pub use aero::AIRCRAFT;
@@ -64,10 +69,9 @@ pub use limits::{DEFAULT_MAX_STEPS, MAX_SAMPLE_VALUES, MAX_SAMPLES};
 pub use linearize::{EQUILIBRIUM_TOL, EquilibriumResidual, LinearMode, LinearModel, MARGINAL_REL};
 pub use many::MAX_ERRORS;
 pub use outcome::{Drift, InvariantValue, Run, RunControl, RunWork, Stop, StopReason};
+pub use path::{AsItemPath, ItemPath, PathError, PathSeg};
 pub use project::{ASSEMBLY_TOL, CONSTRAINT_TOL, ConstraintViolation};
-pub use quantities::{
-    Expect, Schema, Step, body_schema, convert as convert_quantities, key_of, render as render_path, tag,
-};
+pub use quantities::{Expect, Schema, body_schema, convert as convert_quantities, tag};
 pub use query::StateQuery;
 pub use rhs::SceneRhs;
 pub use run::DEFAULT_MAX_WALL_SECONDS;
@@ -75,6 +79,7 @@ pub use sampling::{MAX_TRUSTED_DRIFT, MAX_TRUSTED_STATE};
 pub use source::{MAX_NAME_CHARS, MAX_SCENE_BYTES, SceneSource, check_name};
 pub use spec::SceneSpec;
 pub use stiff::{MethodChoice, RADAU5_TOL_FACTOR, STIFF_RATIO, STIFF_RHO_DURATION};
+pub use tree::{Entry, Node, NodeValue};
 pub use trim::{TRIM_TOL, TrimReport};
 
 use build::{Built, build};
@@ -141,9 +146,9 @@ pub struct Scene {
     pub(crate) loop_scale: f64,
     /// The contact effects' indices in `built.effects`, in declaration order.
     pub(crate) contacts: Vec<usize>,
-    /// The file name and text the scene was read from, to locate refusals after loading
-    /// ([`Scene::invalid`]).
-    source: (String, String),
+    /// The file name, text and document the scene was read from, to locate refusals after
+    /// loading ([`Scene::invalid`]) without parsing the file again.
+    source: (String, String, Node),
     /// What `[trim]` found, when the file declares it.
     trim: Option<TrimReport>,
     /// What the `[model]` file had that does not map (issue 35).
@@ -177,8 +182,7 @@ impl Scene {
     pub fn from_source(src: &SceneSource) -> Result<Self, SceneError> {
         if src.has_key("aircraft") {
             // the old flight-scene form: refused with the file written in the new form
-            let doc: toml::Value = src.deserialize()?;
-            return Err(src.invalid("aircraft", migrate::message(&doc)));
+            return Err(src.invalid("aircraft", migrate::message(&src.tree().to_toml())));
         }
         let spec: SceneSpec = src.deserialize_all(&body_schema).map_err(many::report)?;
         Self::build_reporting_all(spec, src)
@@ -196,7 +200,7 @@ impl Scene {
         let mut last = first;
         while errors.len() < MAX_ERRORS {
             let SceneError::Invalid { path, .. } = &last else { break };
-            if !many::patch_spec(&mut spec, path, &mut removed) {
+            if !many::patch_spec(&mut spec, &ItemPath::parse_prefix(path), &mut removed) {
                 break;
             }
             match Self::build(spec.clone(), src) {
@@ -294,7 +298,7 @@ impl Scene {
             invariants,
             loop_scale: 1.0,
             contacts: Vec::new(),
-            source: (src.file().to_string(), src.text().to_string()),
+            source: (src.file().to_string(), src.text().to_string(), src.tree().clone()),
             trim: None,
             import_warnings: Vec::new(),
         };
@@ -358,17 +362,8 @@ impl Scene {
     /// A refusal after loading (a run, a linearization), located at the item `path` of the
     /// file the scene was read from, as a load-time refusal is.
     pub(crate) fn invalid(&self, path: &str, message: impl Into<String>) -> SceneError {
-        let (file, text) = &self.source;
-        match SceneSource::new(text, file) {
-            Ok(src) => src.invalid(path, message),
-            Err(_) => SceneError::Invalid {
-                file: file.clone(),
-                line: 1,
-                column: 1,
-                path: path.into(),
-                message: message.into(),
-            },
-        }
+        let (file, text, tree) = &self.source;
+        SceneSource::with_tree(text, file, tree.clone()).invalid(path, message)
     }
 
     /// The scene as declared.

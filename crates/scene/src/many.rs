@@ -7,11 +7,11 @@
 //!
 //! Book: — (file format).
 
-use toml::Value;
-
 use super::SceneError;
+use super::path::{AsItemPath, ItemPath, PathSeg};
 use super::source::SceneSource;
 use super::spec::{EffectSpec, SceneSpec};
+use super::tree::{Entry, Node, NodeValue};
 
 /// At most this many errors are reported for one file.
 pub const MAX_ERRORS: usize = 20;
@@ -27,50 +27,72 @@ pub(crate) fn report(mut errors: Vec<SceneError>) -> SceneError {
 }
 
 /// The item path of a located error.
-fn path_of(e: &SceneError) -> Option<&str> {
+fn path_of(e: &SceneError) -> Option<ItemPath> {
     match e {
-        SceneError::Invalid { path, .. } => Some(path),
+        SceneError::Invalid { path, .. } => Some(path.item_path().into_owned()),
         _ => None,
     }
 }
 
-/// The first key and index of a path: `effects[3].k` → (`effects`, Some(3)).
-fn head(path: &str) -> (&str, Option<usize>) {
-    let first = path.split('.').next().unwrap_or("");
-    match first.split_once('[') {
-        Some((key, rest)) => (key, rest.split(']').next().and_then(|i| i.parse().ok())),
-        None => (first, None),
-    }
+/// A value for the stand-ins, located at `span` (where the item it stands in for was).
+fn node(value: NodeValue, span: &std::ops::Range<usize>) -> Node {
+    Node::new(value, span.clone())
+}
+
+/// A table of `entries`, located at `span`.
+fn table(entries: Vec<(&str, Node)>, span: &std::ops::Range<usize>) -> Node {
+    let entries = entries
+        .into_iter()
+        .map(|(key, node)| Entry { key: key.to_string(), key_span: span.clone(), node })
+        .collect();
+    Node::new(NodeValue::Table(entries), span.clone())
+}
+
+/// A harmless stand-in for element `i` of the list `key` (`None`: the list has none), keeping
+/// the old element's name: a weld of no mass, zero gravity, the identity frame, a loop of the
+/// ground with itself.
+fn stand_in(key: &str, i: usize, old: &Node) -> Option<Node> {
+    let at = &old.span;
+    let s = |x: &str| node(NodeValue::String(x.to_string()), at);
+    let f = |x: f64| node(NodeValue::Float(x), at);
+    let mut entries = match key {
+        "bodies" => vec![
+            ("joint", table(vec![("type", s("weld"))], at)),
+            ("mass", table(vec![("shape", s("massless"))], at)),
+        ],
+        "effects" => {
+            let g = node(NodeValue::Array(vec![f(0.0), f(0.0), f(0.0)]), at);
+            return Some(table(vec![("type", s("uniform_gravity")), ("g", g)], at));
+        }
+        "frames" => {
+            vec![("axis", node(NodeValue::Array(vec![f(0.0), f(0.0), f(1.0)]), at)), ("angle", f(0.0))]
+        }
+        "loops" => {
+            let ground = || table(vec![("body", s("ground"))], at);
+            vec![("type", s("ball")), ("a", ground()), ("b", ground())]
+        }
+        _ => return None,
+    };
+    let name = old.get("name").cloned().unwrap_or_else(|| s(&format!("_{i}")));
+    entries.push(("name", name));
+    Some(table(entries, at))
 }
 
 /// Sets aside the item at `path` of a document that failed to deserialize, so that the next
 /// attempt finds the next error; `false` when nothing can be set aside (stop).
-pub(crate) fn patch_document(doc: &mut Value, path: &str) -> bool {
-    let Some(root) = doc.as_table_mut() else { return false };
-    let (key, index) = head(path);
-    if key.is_empty() {
-        return false;
-    }
-    let stand_in = |i: usize, old: Option<&Value>| -> Option<Value> {
-        let name = old.and_then(|o| o.get("name")).cloned().unwrap_or_else(|| Value::String(format!("_{i}")));
-        let text = match key {
-            "bodies" => "joint = { type = \"weld\" }\nmass = { shape = \"massless\" }",
-            "effects" => "type = \"uniform_gravity\"\ng = [0.0, 0.0, 0.0]",
-            "frames" => "axis = [0.0, 0.0, 1.0]\nangle = 0.0",
-            "loops" => "type = \"ball\"\na = { body = \"ground\" }\nb = { body = \"ground\" }",
-            _ => return None,
-        };
-        let mut t: toml::Table = toml::from_str(text).ok()?;
-        if key != "effects" {
-            t.insert("name".into(), name);
-        }
-        Some(Value::Table(t))
-    };
-    match (index, root.get_mut(key)) {
-        (Some(i), Some(Value::Array(a))) if i < a.len() => {
-            let replacement = match &a[i] {
-                Value::String(_) => Some(Value::String(format!("_{i}"))),
-                old => stand_in(i, Some(old)),
+pub(crate) fn patch_document(doc: &mut Node, path: &ItemPath) -> bool {
+    let Some((key, index)) = path.head() else { return false };
+    let key = key.to_string();
+    let NodeValue::Table(root) = &mut doc.value else { return false };
+    let at = doc.span.clone();
+    let entry = root.iter().position(|e| e.key == key);
+    match (index, entry) {
+        (Some(i), Some(k)) => {
+            let NodeValue::Array(a) = &mut root[k].node.value else { return false };
+            let Some(old) = a.get(i) else { return false };
+            let replacement = match &old.value {
+                NodeValue::String(_) => Some(node(NodeValue::String(format!("_{i}")), &old.span)),
+                _ => stand_in(&key, i, old),
             };
             match replacement {
                 Some(r) if a[i] != r => {
@@ -80,29 +102,37 @@ pub(crate) fn patch_document(doc: &mut Value, path: &str) -> bool {
                 _ => false,
             }
         }
-        (_, Some(_)) => {
+        (None, Some(k)) => {
             // a top-level value or table: its default (required keys) or nothing
-            let default = match key {
-                "name" => Some(Value::String("x".into())),
-                "duration" => Some(Value::Float(1.0)),
+            let default = match key.as_str() {
+                "name" => Some(NodeValue::String("x".into())),
+                "duration" => Some(NodeValue::Float(1.0)),
                 "bodies" => return false,
                 _ => None,
             };
             match default {
-                Some(d) if root.get(key) != Some(&d) => {
-                    root.insert(key.into(), d);
+                Some(d) if root[k].node.value != d => {
+                    root[k].node.value = d;
                     true
                 }
                 Some(_) => false,
-                None => root.remove(key).is_some(),
+                None => {
+                    root.remove(k);
+                    true
+                }
             }
         }
+        (Some(_), None) => false,
         // an unknown or missing top-level key
-        (_, None) => match key {
-            "name" => root.insert("name".into(), Value::String("x".into())).is_none(),
-            "duration" => root.insert("duration".into(), Value::Float(1.0)).is_none(),
-            _ => false,
-        },
+        (None, None) => {
+            let value = match key.as_str() {
+                "name" => NodeValue::String("x".into()),
+                "duration" => NodeValue::Float(1.0),
+                _ => return false,
+            };
+            root.push(Entry { key, key_span: at.start..at.start, node: node(value, &(at.start..at.start)) });
+            true
+        }
     }
 }
 
@@ -121,15 +151,16 @@ impl Removed {
 
     /// The error with its path's first index renumbered to the file's, and located there.
     pub fn renumber(&self, e: SceneError, src: &SceneSource) -> SceneError {
-        let Some(path) = path_of(&e).map(str::to_string) else { return e };
-        let (key, Some(i)) = head(&path) else { return e };
+        let Some(path) = path_of(&e) else { return e };
+        let Some((key, Some(i))) = path.head() else { return e };
         let j = self.original(key, i);
         if i == j {
             return e;
         }
         let SceneError::Invalid { message, .. } = e else { return e };
-        let rest = path.split_once(']').map_or("", |(_, r)| r);
-        src.invalid(format!("{key}[{j}]{rest}"), message)
+        let mut segs = path.segments().to_vec();
+        segs[1] = PathSeg::Index(j);
+        src.invalid(ItemPath::from(segs), message)
     }
 
     fn remove(&mut self, key: &'static str, i: usize) {
@@ -143,8 +174,8 @@ impl Removed {
 
 /// Sets aside the item at `path` of a spec that failed to validate; `false` when nothing can
 /// be set aside (an error inside a body, or one that is not an item's).
-pub(crate) fn patch_spec(spec: &mut SceneSpec, path: &str, removed: &mut Removed) -> bool {
-    let (key, index) = head(path);
+pub(crate) fn patch_spec(spec: &mut SceneSpec, path: &ItemPath, removed: &mut Removed) -> bool {
+    let Some((key, index)) = path.head() else { return false };
     let take = |len: usize| index.filter(|i| *i < len);
     match key {
         "effects" => match take(spec.effects.len()) {

@@ -7,13 +7,16 @@
 //!
 //! Book: §15.19 (dimensions and units).
 
-use toml::Value;
 use vectrix_units::{Dimension, Quantity, UnitSystem};
 
+use super::path::{ItemPath, PathSeg};
+use super::tree::{Node, NodeValue};
 use super::{SceneError, SceneSource};
 
 /// The dimensions a numeric position accepts (the first is the one named in messages) and
 /// the unit system its bare numbers are in.
+///
+/// Book: §15.19.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Expect {
     /// Accepted dimensions; a quantity is converted with the first that matches.
@@ -22,75 +25,65 @@ pub struct Expect {
     pub system: UnitSystem,
 }
 
-/// One step of an item path.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Step {
-    /// A table key.
-    Key(String),
-    /// An array index.
-    Index(usize),
-}
-
-/// Renders a path the way errors name items: `bodies[2].q[0]`.
-pub fn render(path: &[Step]) -> String {
-    let mut s = String::new();
-    for p in path {
-        match p {
-            Step::Key(k) => {
-                if !s.is_empty() {
-                    s.push('.');
-                }
-                s.push_str(k);
-            }
-            Step::Index(i) => s.push_str(&format!("[{i}]")),
-        }
-    }
-    s
-}
-
 /// The schema of a kind of scene file: the expected dimensions of the number at `path`, given
 /// the whole document (to read a joint's or an effect's `type`).
-pub type Schema<'a> = dyn Fn(&[Step], &Value) -> Option<Expect> + 'a;
+pub type Schema<'a> = dyn Fn(&ItemPath, &Node) -> Option<Expect> + 'a;
 
-/// Converts every quantity string at a numeric position of `doc` into its number; returns how
-/// many were converted.
+/// Converts every quantity string at a numeric position of `doc` (a document of `src`) into
+/// its number; returns how many were converted.
+///
+/// Book: §15.19.
 ///
 /// # Errors
 /// [`SceneError::Invalid`] located at the offending character of the string: unknown unit,
 /// malformed quantity, a dimension other than the key's, overflow.
-pub fn convert(src: &SceneSource, doc: &mut Value, schema: &Schema) -> Result<usize, SceneError> {
+pub fn convert(src: &SceneSource, doc: &mut Node, schema: &Schema) -> Result<usize, SceneError> {
+    // the schema reads tags (`type`), which are never numbers: a copy of the document as it
+    // was answers for every position
     let root = doc.clone();
+    convert_on(src, doc, &root, schema)
+}
+
+/// [`convert`] with the document the schema reads given (`root`: `doc` before conversion, or
+/// any document with the same tags).
+pub(crate) fn convert_on(
+    src: &SceneSource,
+    doc: &mut Node,
+    root: &Node,
+    schema: &Schema,
+) -> Result<usize, SceneError> {
     let mut count = 0;
-    walk(src, doc, &mut Vec::new(), &root, schema, &mut count)?;
+    walk(src, doc, &mut ItemPath::root(), root, schema, &mut count)?;
     Ok(count)
 }
 
 fn walk(
     src: &SceneSource,
-    v: &mut Value,
-    path: &mut Vec<Step>,
-    root: &Value,
+    v: &mut Node,
+    path: &mut ItemPath,
+    root: &Node,
     schema: &Schema,
     count: &mut usize,
 ) -> Result<(), SceneError> {
-    match v {
-        Value::Table(t) => {
-            for (k, x) in t.iter_mut() {
-                path.push(Step::Key(k.clone()));
-                walk(src, x, path, root, schema, count)?;
+    match &mut v.value {
+        NodeValue::Table(t) => {
+            for e in t.iter_mut() {
+                path.push(PathSeg::Key(e.key.clone()));
+                walk(src, &mut e.node, path, root, schema, count)?;
                 path.pop();
             }
         }
-        Value::Array(a) => {
+        NodeValue::Array(a) => {
             for (i, x) in a.iter_mut().enumerate() {
-                path.push(Step::Index(i));
+                path.push(PathSeg::Index(i));
                 walk(src, x, path, root, schema, count)?;
                 path.pop();
             }
         }
-        Value::String(s) => {
+        NodeValue::String(s) => {
             if let Some(expect) = schema(path, root) {
-                *v = Value::Float(quantity(src, s, &render(path), expect)?);
+                let x = quantity(src, s, v.span.clone(), path, expect)?;
+                v.value = NodeValue::Float(x);
                 *count += 1;
             }
         }
@@ -99,11 +92,17 @@ fn walk(
     Ok(())
 }
 
-/// The number a quantity string stands for, or an error located inside the string.
-fn quantity(src: &SceneSource, text: &str, path: &str, expect: Expect) -> Result<f64, SceneError> {
+/// The number a quantity string (whose literal spans `literal`) stands for, or an error
+/// located inside the string.
+fn quantity(
+    src: &SceneSource,
+    text: &str,
+    literal: std::ops::Range<usize>,
+    path: &ItemPath,
+    expect: Expect,
+) -> Result<f64, SceneError> {
     let fail = |e: vectrix_units::UnitError| {
-        let literal = src.value_span(path);
-        let at = e.span_in_source(src.text(), literal);
+        let at = e.span_in_source(src.text(), literal.clone());
         let expected = expect.dims[0];
         let name = expected.name().map(|n| format!("{n}, ")).unwrap_or_default();
         src.invalid_at(
@@ -123,15 +122,10 @@ fn quantity(src: &SceneSource, text: &str, path: &str, expect: Expect) -> Result
 }
 
 /// Reads the `type` (or another tag) of the table at `path` in `root`.
-pub fn tag<'v>(root: &'v Value, path: &[Step], key: &str) -> Option<&'v str> {
-    let mut cur = root;
-    for p in path {
-        cur = match p {
-            Step::Key(k) => cur.get(k.as_str())?,
-            Step::Index(i) => cur.get(*i)?,
-        };
-    }
-    cur.get(key)?.as_str()
+///
+/// Book: — (file format).
+pub fn tag<'v>(root: &'v Node, path: &ItemPath, key: &str) -> Option<&'v str> {
+    root.at(path)?.get(key)?.as_str()
 }
 
 const fn si(dims: &'static [Dimension]) -> Option<Expect> {
@@ -160,15 +154,12 @@ const STIFFNESS: &[Dimension] = &[Dimension::STIFFNESS];
 const DAMPING: &[Dimension] = &[Dimension::DAMPING];
 const DENSITY: &[Dimension] = &[Dimension::new(1, -3, 0, 0)];
 
-/// The key of a path step (`None` for an index).
-pub fn key_of(s: &Step) -> Option<&str> {
-    if let Step::Key(k) = s { Some(k.as_str()) } else { None }
-}
-
 /// The schema of body scenes (docs/scenes.md lists the unit of every key).
-pub fn body_schema(path: &[Step], root: &Value) -> Option<Expect> {
-    use Step::{Index as I, Key as K};
-    let keys: Vec<Option<&str>> = path.iter().map(key_of).collect();
+///
+/// Book: §15.19.
+pub fn body_schema(path: &ItemPath, root: &Node) -> Option<Expect> {
+    let seg = path.segments();
+    let keys: Vec<Option<&str>> = seg.iter().map(PathSeg::key).collect();
     match keys.as_slice() {
         [Some("duration")] | [Some("max_wall_seconds")] => si(TIME),
         [Some("accuracy")] | [Some("method"), Some("rtol")] => si(ONE),
@@ -182,8 +173,8 @@ pub fn body_schema(path: &[Step], root: &Value) -> Option<Expect> {
         [Some("bodies"), None, Some("mass"), Some("principal"), None] => si(INERTIA),
         [Some("bodies"), None, Some("mass"), Some("matrix"), None, None] => si(INERTIA),
         [Some("bodies"), None, Some(qv @ ("q" | "v")), None] => {
-            let (I(b), I(j)) = (&path[1], &path[3]) else { return None };
-            let joint = tag(root, &[K("bodies".into()), I(*b), K("joint".into())], "type")?;
+            let (Some(b), Some(j)) = (seg[1].index(), seg[3].index()) else { return None };
+            let joint = tag(root, &ItemPath::root().key("bodies").index(b).key("joint"), "type")?;
             let speed = *qv == "v";
             let (lin, ang) = if speed { (VELOCITY, ANGULAR_VELOCITY) } else { (LENGTH, ANGLE) };
             let d = match (joint, j) {
@@ -203,8 +194,8 @@ pub fn body_schema(path: &[Step], root: &Value) -> Option<Expect> {
         [Some("loops"), None, Some("a" | "b"), Some("point"), None] => si(LENGTH),
         [Some("loops"), None, Some("axis" | "direction" | "normal"), None] => si(ONE),
         [Some("effects"), None, rest @ ..] => {
-            let I(e) = &path[1] else { return None };
-            let kind = tag(root, &[K("effects".into()), I(*e)], "type")?;
+            let e = seg[1].index()?;
+            let kind = tag(root, &ItemPath::root().key("effects").index(e), "type")?;
             effect_schema(kind, rest)
         }
         _ => None,

@@ -1,73 +1,41 @@
-//! Where things are in a scene file. The document is parsed once with the TOML parser's
-//! spans (`toml::de::DeTable`), and every error is located by the *path* of the offending
-//! item (`bodies[2].joint.axis`) walked through that spanned tree: it points at the key or
-//! the array element itself, never at a textual match (which could land in a comment or on
-//! the first of two equal names).
+//! Where things are in a scene file. The document is parsed once, with the TOML parser's
+//! spans (`toml::de::DeTable`), into the span-carrying tree of `tree`; the spec is
+//! deserialized from that tree (`de`), and every error is located by the *path* of the
+//! offending item (`bodies[2].joint.axis`, an [`ItemPath`]) walked through it: it points at the
+//! key or the array element itself, never at a textual match (which could land in a comment or
+//! on the first of two equal names).
 //!
 //! Book: — (file format).
 
 use serde::de::DeserializeOwned;
-use toml::Spanned;
-use toml::de::{DeTable, DeValue};
 
 use super::SceneError;
+use super::de::from_node;
+use super::error::line_col;
+use super::fault::{Fault, fault};
+use super::path::{AsItemPath, ItemPath, PathSeg};
+use super::tree::Node;
 
 /// Largest scene file read, in bytes (a scene is a page of text; this bounds the parser's
 /// work and memory on hostile input).
 pub const MAX_SCENE_BYTES: usize = 4 << 20;
 
-/// A scene file's text, its name for messages, and its spanned syntax tree.
+/// A scene file's text, its name for messages, and its document (the one parse, with spans).
 ///
 /// Book: — (file format).
 #[derive(Debug)]
 pub struct SceneSource<'a> {
     file: &'a str,
     text: &'a str,
-    doc: Spanned<DeTable<'a>>,
-}
-
-/// One step of an item path: a table key or an array index.
-#[derive(Debug, Clone, PartialEq, Eq)]
-enum Seg<'p> {
-    Key(&'p str),
-    Index(usize),
-}
-
-/// Splits `bodies[2].joint.axis` into `bodies`, `[2]`, `joint`, `axis`.
-fn segments(path: &str) -> Vec<Seg<'_>> {
-    let mut out = Vec::new();
-    for part in path.split('.').filter(|p| !p.is_empty()) {
-        let (key, mut rest) = part.split_once('[').map_or((part, ""), |(k, r)| (k, r));
-        if !key.is_empty() {
-            out.push(Seg::Key(key));
-        }
-        while let Some((index, after)) = rest.split_once(']') {
-            if let Ok(i) = index.parse() {
-                out.push(Seg::Index(i));
-            }
-            rest = after.strip_prefix('[').unwrap_or(after);
-        }
-    }
-    out
-}
-
-/// The string value of `key` in the table at `path` of `root`.
-fn tag_at<'v>(root: &'v toml::Value, path: &str, key: &str) -> Option<&'v str> {
-    let mut cur = root;
-    for seg in segments(path) {
-        cur = match seg {
-            Seg::Key(k) => cur.get(k)?,
-            Seg::Index(i) => cur.get(i)?,
-        };
-    }
-    cur.get(key)?.as_str()
+    doc: Node,
 }
 
 impl<'a> SceneSource<'a> {
-    /// Parses `text` (named `file` in messages) into its spanned tree.
+    /// Parses `text` (named `file` in messages) into its spanned document.
     ///
     /// # Errors
-    /// [`SceneError::Parse`] with line and column for a TOML syntax error or a file larger
+    /// [`SceneError::Parse`] with line and column for a TOML syntax error, a number that does
+    /// not fit its type (an integer beyond i64, a float literal beyond f64), or a file larger
     /// than [`MAX_SCENE_BYTES`].
     pub fn new(text: &'a str, file: &'a str) -> Result<Self, SceneError> {
         if text.len() > MAX_SCENE_BYTES {
@@ -81,8 +49,17 @@ impl<'a> SceneSource<'a> {
                 ),
             });
         }
-        let doc = DeTable::parse(text).map_err(|e| SceneError::from_toml(&e, text, file))?;
+        let parsed = toml::de::DeTable::parse(text).map_err(|e| SceneError::from_toml(&e, text, file))?;
+        let doc = Node::from_document(&parsed).map_err(|(span, message)| {
+            let (line, column) = line_col(text, span.start);
+            SceneError::Parse { file: file.into(), line, column, message }
+        })?;
         Ok(Self { file, text, doc })
+    }
+
+    /// The source of `text` whose document is `doc` (parsed before, by [`SceneSource::new`]).
+    pub(crate) fn with_tree(text: &'a str, file: &'a str, doc: Node) -> Self {
+        Self { file, text, doc }
     }
 
     /// The file name used in messages.
@@ -95,181 +72,86 @@ impl<'a> SceneSource<'a> {
         self.text
     }
 
+    /// The document as parsed (quantity strings not yet converted).
+    pub fn tree(&self) -> &Node {
+        &self.doc
+    }
+
     /// Whether the document has the top-level key `key` (e.g. `aircraft`: the old flight form).
     pub fn has_key(&self, key: &str) -> bool {
-        self.doc.get_ref().iter().any(|(k, _)| k.get_ref() == key)
+        self.doc.entry(key).is_some()
     }
 
-    /// Deserializes the whole document into `T`; errors (unknown or missing keys, wrong
-    /// types) are located by the parser.
+    /// Deserializes the whole document into `T` (quantity strings as they are); errors
+    /// (unknown or missing keys, wrong types) are located at their item.
     ///
     /// # Errors
-    /// [`SceneError::Parse`].
+    /// [`SceneError::Invalid`] at the item at fault, [`SceneError::Parse`] for the document as
+    /// a whole (a wrong target type).
     pub fn deserialize<T: DeserializeOwned>(&self) -> Result<T, SceneError> {
-        toml::from_str(self.text).map_err(|e| SceneError::from_toml(&e, self.text, self.file))
+        self.read_document(&self.doc)
     }
 
-    /// Deserializes the document into `T` after converting its quantity strings by `schema`
-    /// (see [`super::quantities`]). Without quantity strings the TOML parser locates serde's
-    /// errors; with them, errors are located by the item path serde reports.
+    /// Deserializes `T` from `doc`, a document derived from this file (quantities converted, a
+    /// sweep's numbers set): errors are located in this file.
     ///
     /// # Errors
-    /// [`SceneError::Parse`] (shape: unknown or missing keys, wrong types) and
-    /// [`SceneError::Invalid`] (a quantity string that is wrong where it stands).
-    pub fn deserialize_with<T: DeserializeOwned>(
-        &self,
-        schema: &super::quantities::Schema,
-    ) -> Result<T, SceneError> {
-        self.read_document(self.document(schema)?)
+    /// As [`SceneSource::deserialize`].
+    pub fn read_document<T: DeserializeOwned>(&self, doc: &Node) -> Result<T, SceneError> {
+        self.read::<T>(doc).map_err(|(e, _)| e)
     }
 
-    /// Every shape error of the document (unknown or missing keys, wrong types) in one pass,
-    /// up to [`super::MAX_ERRORS`]: after each, the item at fault is set aside (see
-    /// `many::patch_document`) and the rest is read again.
-    pub(crate) fn deserialize_all<T: DeserializeOwned>(
-        &self,
-        schema: &super::quantities::Schema,
-    ) -> Result<T, Vec<SceneError>> {
-        let mut doc = self.document(schema).map_err(|e| vec![e])?;
-        let (mut errors, mut suggested) = (Vec::new(), Vec::<String>::new());
-        loop {
-            match self.read_document::<T>(doc.clone()) {
-                Ok(t) if errors.is_empty() => return Ok(t),
-                Ok(_) => return Err(errors),
-                Err(e) => {
-                    let (path, message) = match &e {
-                        SceneError::Invalid { path, message, .. } => (path.clone(), message.clone()),
-                        _ => (String::new(), String::new()),
-                    };
-                    // a misspelt key explains the missing one it suggests: report it once
-                    let parent = path.rsplit_once('.').map_or("", |(p, _)| p);
-                    if let Some(meant) =
-                        message.split("(did you mean `").nth(1).and_then(|r| r.split('`').next())
-                    {
-                        suggested.push(if parent.is_empty() {
-                            meant.to_string()
-                        } else {
-                            format!("{parent}.{meant}")
-                        });
-                    }
-                    if !(message.starts_with("the required key") && suggested.contains(&path)) {
-                        errors.push(e);
-                    }
-                    if errors.len() >= super::many::MAX_ERRORS
-                        || !super::many::patch_document(&mut doc, &path)
-                    {
-                        return Err(errors);
-                    }
-                }
-            }
-        }
-    }
-
-    /// The document as a TOML value with its quantity strings converted by `schema`.
-    fn document(&self, schema: &super::quantities::Schema) -> Result<toml::Value, SceneError> {
-        let mut doc: toml::Value =
-            toml::from_str(self.text).map_err(|e| SceneError::from_toml(&e, self.text, self.file))?;
-        super::quantities::convert(self, &mut doc, schema)?;
-        Ok(doc)
-    }
-
-    /// Deserializes a converted document; a shape error names its item path and is located at
-    /// the key (unknown keys) or the value (wrong values).
-    fn read_document<T: DeserializeOwned>(&self, doc: toml::Value) -> Result<T, SceneError> {
-        let root = doc.clone();
-        serde_path_to_error::deserialize(doc).map_err(|e| {
-            let mut path = String::new();
-            for seg in e.path().iter() {
-                match seg {
-                    serde_path_to_error::Segment::Seq { index } => path.push_str(&format!("[{index}]")),
-                    serde_path_to_error::Segment::Map { key } => {
-                        if !path.is_empty() {
-                            path.push('.');
-                        }
-                        path.push_str(key);
-                    }
-                    _ => {}
-                }
-            }
-            let join = |path: &str, key: &str| {
-                if path.is_empty() { key.to_string() } else { format!("{path}.{key}") }
-            };
-            let full = e.inner().to_string();
-            // the TOML value deserializer appends a line "in `a.b`": the path says that better
-            let message = full.split("\nin `").next().unwrap_or(&full).trim().to_string();
-            let mut plain = super::error::plain_words(&message);
-            let last = path.rsplit('.').next().unwrap_or("").to_string();
-            if let Some(key) = super::error::unknown_key(&message) {
-                // an unknown key: point at it
-                if last != key {
-                    path = join(&path, key);
-                }
-            } else if let Some(key) =
-                message.strip_prefix("missing field `").and_then(|r| r.split('`').next())
-            {
-                // a missing key: named by its path, located at its table
-                path = join(&path, key);
-            } else if let Some((variant, valid)) = super::error::unknown_variant(&message) {
-                // an unknown `type`, `shape` or `kind` of a tagged table: point at the tag
-                let tag = if ["type", "shape", "kind"].contains(&last.as_str()) {
-                    last.clone()
-                } else {
-                    let tag = ["type", "shape", "kind"]
-                        .into_iter()
-                        .find(|t| tag_at(&root, &path, t) == Some(variant));
-                    let tag = tag.unwrap_or("type").to_string();
-                    path = join(&path, &tag);
-                    tag
-                };
-                plain = format!("unknown {tag} `{variant}`; valid: {valid}");
-            }
-            // an unknown key at the key; a wrong value (type, range, tag) at the value
-            let (line, column) = if super::error::unknown_key(&message).is_some() || path.is_empty() {
-                self.locate(&path)
-            } else {
-                line_col(self.text, self.value_span(&path).start)
-            };
-            if path.is_empty() {
-                SceneError::Parse { file: self.file.into(), line, column, message: plain }
-            } else {
-                SceneError::Invalid { file: self.file.into(), line, column, path, message: plain }
-            }
+    /// [`SceneSource::read_document`] with the located fault (for reporting every error).
+    pub(crate) fn read<T: DeserializeOwned>(&self, doc: &Node) -> Result<T, (SceneError, Fault)> {
+        from_node::<T>(doc).map_err(|e| {
+            let f = fault(&e, doc, &|changed: &Node| from_node::<T>(changed).err());
+            (self.error_of(&f), f)
         })
+    }
+
+    /// The located error of a fault: an unknown key at the key, anything else at the value (a
+    /// missing key at its table), the document as a whole at its start.
+    fn error_of(&self, f: &Fault) -> SceneError {
+        let message = f.message.clone();
+        if f.path.is_empty() {
+            let (line, column) = self.locate(&f.path);
+            return SceneError::Parse { file: self.file.into(), line, column, message };
+        }
+        let at = if f.at_key { self.span(&f.path).start } else { self.value_span(&f.path).start };
+        self.invalid_at(at, &f.path, message)
+    }
+
+    /// The node at each step of `path` that exists, with the byte range of its key (or, for an
+    /// array element, of the element).
+    fn walk(&self, path: &ItemPath) -> Vec<(&Node, std::ops::Range<usize>)> {
+        let mut out = Vec::new();
+        let mut cur = &self.doc;
+        for seg in path.segments() {
+            let next = match seg {
+                PathSeg::Key(k) => cur.entry(k).map(|e| (&e.node, e.key_span.clone())),
+                PathSeg::Index(i) => cur.as_array().and_then(|a| a.get(*i)).map(|n| (n, n.span.clone())),
+            };
+            let Some((n, at)) = next else { break };
+            out.push((n, at));
+            cur = n;
+        }
+        out
     }
 
     /// Byte range of the *value* at `path` (a string literal with its quotes), or of the
     /// nearest existing ancestor.
-    pub fn value_span(&self, path: &str) -> std::ops::Range<usize> {
-        let mut best = 0..0;
-        let mut table: Option<&DeTable<'a>> = Some(self.doc.get_ref());
-        let mut array: Option<&[Spanned<DeValue<'a>>]> = None;
-        for seg in segments(path) {
-            let next = match (seg, table, array) {
-                (Seg::Key(k), Some(t), _) => t.iter().find(|(key, _)| key.get_ref() == k).map(|(_, v)| v),
-                (Seg::Index(i), _, Some(a)) => a.get(i),
-                _ => None,
-            };
-            let Some(v) = next else { break };
-            best = v.span();
-            table = v.get_ref().as_table();
-            array = v.get_ref().as_array().map(|a| &a[..]);
-        }
-        best
+    pub fn value_span(&self, path: impl AsItemPath) -> std::ops::Range<usize> {
+        self.walk(&path.item_path()).last().map_or(0..0, |(n, _)| n.span.clone())
     }
 
     /// A [`SceneError::Invalid`] for the item `path`, located at byte `offset` of the file.
-    pub fn invalid_at(
-        &self,
-        offset: usize,
-        path: impl Into<String>,
-        message: impl Into<String>,
-    ) -> SceneError {
+    pub fn invalid_at(&self, offset: usize, path: impl AsItemPath, message: impl Into<String>) -> SceneError {
         let (line, column) = line_col(self.text, offset);
         SceneError::Invalid {
             file: self.file.into(),
             line,
             column,
-            path: path.into(),
+            path: path.item_path().to_string(),
             message: message.into(),
         }
     }
@@ -277,51 +159,20 @@ impl<'a> SceneSource<'a> {
     /// Byte range of the item at `path`: the key of a table entry, the element of an array;
     /// the deepest existing ancestor when the path goes further than the file (a key left
     /// to its default), the start of the file for the empty path.
-    pub fn span(&self, path: &str) -> std::ops::Range<usize> {
-        let mut best = 0..0;
-        let mut cur: &DeValue<'a>;
-        let mut table: Option<&DeTable<'a>> = Some(self.doc.get_ref());
-        let mut array: Option<&[Spanned<DeValue<'a>>]> = None;
-        for seg in segments(path) {
-            let next: Option<(&Spanned<DeValue<'a>>, std::ops::Range<usize>)> = match (seg, table, array) {
-                (Seg::Key(k), Some(t), _) => {
-                    t.iter().find(|(key, _)| key.get_ref() == k).map(|(key, v)| (v, key.span()))
-                }
-                (Seg::Index(i), _, Some(a)) => a.get(i).map(|v| (v, v.span())),
-                _ => None,
-            };
-            let Some((v, at)) = next else { break };
-            best = at;
-            cur = v.get_ref();
-            table = cur.as_table();
-            array = cur.as_array().map(|a| &a[..]);
-        }
-        best
+    pub fn span(&self, path: impl AsItemPath) -> std::ops::Range<usize> {
+        self.walk(&path.item_path()).pop().map_or(0..0, |(_, at)| at)
     }
 
     /// 1-based (line, column) of the item at `path` (see [`SceneSource::span`]).
-    pub fn locate(&self, path: &str) -> (usize, usize) {
+    pub fn locate(&self, path: impl AsItemPath) -> (usize, usize) {
         line_col(self.text, self.span(path).start)
     }
 
     /// A [`SceneError::Invalid`] at the item `path`.
-    pub fn invalid(&self, path: impl Into<String>, message: impl Into<String>) -> SceneError {
-        let path = path.into();
-        let (line, column) = self.locate(&path);
-        SceneError::Invalid { file: self.file.into(), line, column, path, message: message.into() }
+    pub fn invalid(&self, path: impl AsItemPath, message: impl Into<String>) -> SceneError {
+        let path = path.item_path();
+        self.invalid_at(self.span(&*path).start, &*path, message)
     }
-}
-
-/// 1-based (line, column) of byte `offset` in `src` (columns count characters).
-pub(crate) fn line_col(src: &str, offset: usize) -> (usize, usize) {
-    let mut offset = offset.min(src.len());
-    while !src.is_char_boundary(offset) {
-        offset -= 1;
-    }
-    let before = &src[..offset];
-    let line = before.matches('\n').count() + 1;
-    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, col)
 }
 
 /// Longest name (scene, body, frame), in characters.
@@ -358,16 +209,6 @@ pub fn check_name(name: &str, what: &str, allow_dot: bool) -> Result<(), String>
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn paths_split_into_keys_and_indices() {
-        assert_eq!(
-            segments("bodies[2].joint.axis"),
-            vec![Seg::Key("bodies"), Seg::Index(2), Seg::Key("joint"), Seg::Key("axis")]
-        );
-        assert_eq!(segments("a[1][0]"), vec![Seg::Key("a"), Seg::Index(1), Seg::Index(0)]);
-        assert_eq!(segments(""), vec![]);
-    }
 
     #[test]
     fn spans_point_at_the_key_not_at_a_comment_or_the_first_equal_name() {
