@@ -135,8 +135,7 @@ fn inside(
             let named = |(_, n, k): &&(ItemPath, &Node, Option<&str>)| {
                 n.as_str() == Some(variant.as_str()) && k.is_some()
             };
-            let tagged =
-                pre.iter().filter(named).find(|(_, _, k)| k.is_some_and(|k| TAGS.iter().any(|t| *t == k)));
+            let tagged = pre.iter().filter(named).find(|(_, _, k)| k.is_some_and(|k| TAGS.contains(&k)));
             tagged.or_else(|| pre.iter().find(named)).map(|(p, _, _)| p.clone())
         }
         Kind::Invalid { found, .. } => {

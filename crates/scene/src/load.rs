@@ -46,7 +46,8 @@ impl SceneSource<'_> {
             match self.read::<T>(&doc) {
                 Ok(t) if errors.is_empty() => return Ok(t),
                 Ok(_) => return Err(errors),
-                Err((e, fault)) => {
+                Err(b) => {
+                    let (e, fault) = *b;
                     if let Some(s) = fault.suggested {
                         suggested.push(s);
                     }

@@ -98,14 +98,15 @@ impl<'a> SceneSource<'a> {
     /// # Errors
     /// As [`SceneSource::deserialize`].
     pub fn read_document<T: DeserializeOwned>(&self, doc: &Node) -> Result<T, SceneError> {
-        self.read::<T>(doc).map_err(|(e, _)| e)
+        self.read::<T>(doc).map_err(|b| b.0)
     }
 
-    /// [`SceneSource::read_document`] with the located fault (for reporting every error).
-    pub(crate) fn read<T: DeserializeOwned>(&self, doc: &Node) -> Result<T, (SceneError, Fault)> {
+    /// [`SceneSource::read_document`] with the located fault (for reporting every error; boxed,
+    /// the pair being large beside a parsed value).
+    pub(crate) fn read<T: DeserializeOwned>(&self, doc: &Node) -> Result<T, Box<(SceneError, Fault)>> {
         from_node::<T>(doc).map_err(|e| {
             let f = fault(&e, doc, &|changed: &Node| from_node::<T>(changed).err());
-            (self.error_of(&f), f)
+            Box::new((self.error_of(&f), f))
         })
     }
 
