@@ -27,18 +27,6 @@ use std::path::{Path, PathBuf};
 mod lexer;
 use lexer::{Tok, Token, lex};
 
-/// Crates other engineers are still splitting under issue 38 while this check lands; each is
-/// named with the reason it is exempt. Remove an entry when its crate is clean.
-const UNDER_REPAIR: [(&str, &str); 3] = [
-    ("scene", "the scene layer has its own issue; its module circles and long files are being split there"),
-    ("cli", "the command line is being split with the scene layer (run, sink, view form a circle today)"),
-    (
-        "dynamics",
-        "multibody `model` ↔ `planar` and its long files and functions (`planar_aba`) are being split \
-         into a planar model type built from a `Model` (issue 38 item 3, another engineer)",
-    ),
-];
-
 /// Generated coefficient tables may be long (file length only): a file whose name ends so.
 const GENERATED_TABLE_SUFFIX: &str = "_coefficients.rs";
 /// Longest file, in lines (`wc -l`).
@@ -132,14 +120,13 @@ fn checker_measures_functions() {
     assert_eq!(long_functions(&too_long), [("long".to_string(), 3, MAX_FN_LINES + 1)]);
 }
 
-/// The crates under `crates/` that the house rules apply to (all but [`UNDER_REPAIR`]).
+/// The crates under `crates/` (every one: the house rules have no exemptions).
 fn checked_crates() -> Vec<String> {
     let mut out: Vec<String> = fs::read_dir(root().join("crates"))
         .expect("crates/ exists")
         .filter_map(|e| e.ok())
         .filter(|e| e.path().join("src").is_dir())
         .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|name| !UNDER_REPAIR.iter().any(|(c, _)| *c == name.as_str()))
         .collect();
     out.sort();
     assert!(out.len() >= 5, "expected the library crates under crates/, found {out:?}");

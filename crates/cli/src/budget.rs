@@ -191,7 +191,7 @@ pub(crate) fn scene_view(s: &Scene) -> u64 {
 /// Files of a sweep: every run's folder, one overlay per output, sweep.csv. `labels` holds
 /// the length of each run's legend suffix (`effects.0.k=2`), `params` and `checks` count the
 /// columns of sweep.csv.
-pub(crate) fn sweep(scenes: &[Scene], labels: &[usize], params: usize) -> Estimate {
+pub(crate) fn sweep(scenes: &[&Scene], labels: &[usize], params: usize) -> Estimate {
     let mut e = Estimate::default();
     for s in scenes {
         let mut one = scene(s);

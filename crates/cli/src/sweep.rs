@@ -134,6 +134,11 @@ fn unique(params: &[String]) -> Result<(), String> {
     Ok(())
 }
 
+/// The runs of a sweep, in the order of the unsharded sweep: each run's global number, its
+/// parameter values and its scene, every one validated before any is run (errors point into
+/// the user's file).
+type Planned = Vec<(usize, Vec<(String, f64)>, Scene)>;
+
 /// `vectrix sweep`.
 pub(crate) fn sweep(
     out: &mut impl Write,
@@ -150,38 +155,8 @@ pub(crate) fn sweep(
     // swept values are SI numbers too
     let doc = src.document(&body_schema)?;
     let params = params.iter().map(|p| parse_param(p, &doc)).collect::<Result<Vec<_>, _>>()?;
-    let total = params.iter().try_fold(1usize, |n, (_, _, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
-    if total > MAX_SWEEP_RUNS {
-        return Err(format!("the sweep asks for {total} runs; valid: at most {MAX_SWEEP_RUNS}").into());
-    }
-    // Cartesian product of the values
-    let mut combos: Vec<Vec<(String, f64)>> = vec![vec![]];
-    for (p, _, vals) in &params {
-        combos = combos
-            .into_iter()
-            .flat_map(|c| vals.iter().map(move |v| [c.clone(), vec![(p.clone(), *v)]].concat()))
-            .collect();
-    }
-    // a shard keeps the global run numbers of its slice
-    let mine: Vec<usize> =
-        (0..combos.len()).filter(|i| opts.shard.is_none_or(|(k, n)| i % n == k - 1)).collect();
-    let combos: Vec<(usize, Vec<(String, f64)>)> =
-        combos.into_iter().enumerate().filter(|(i, _)| mine.binary_search(i).is_ok()).collect();
-    let total = combos.len();
-    // every run's scene is validated before any is run; errors point into the user's file
-    let scenes: Vec<Scene> = combos
-        .iter()
-        .map(|(_, combo)| -> Result<Scene, BoxError> {
-            let mut d = doc.clone();
-            for (p, v) in combo {
-                let item = params.iter().find(|(q, _, _)| q == p).map(|(_, item, _)| item);
-                let item = item.ok_or_else(|| format!("--param `{p}` has no item path"))?;
-                d.set_number(item, *v).map_err(|m| src.invalid(item, m))?;
-            }
-            let spec: SceneSpec = src.read_document(&d)?;
-            Ok(Scene::from_spec_in(spec, &src)?)
-        })
-        .collect::<Result<_, _>>()?;
+    let planned = plan(&params, &doc, &src, opts.shard)?;
+    let total = planned.len();
     let name = match opts.shard {
         Some((k, n)) => format!("{}-sweep-shard-{k}-of-{n}", base_scene.spec().name),
         None => format!("{}-sweep", base_scene.spec().name),
@@ -189,45 +164,12 @@ pub(crate) fn sweep(
     let dir = opts.dir;
     not_inside(path, dir, &name)?;
     preflight(dir, &name)?;
-    let labels: Vec<usize> = combos.iter().map(|(_, c)| describe(c).len()).collect();
+    let scenes: Vec<&Scene> = planned.iter().map(|(_, _, s)| s).collect();
+    let labels: Vec<usize> = planned.iter().map(|(_, c, _)| describe(c).len()).collect();
     let limits = crate::budget::sweep(&scenes, &labels, params.len())
         .limits(opts.max_output_bytes)
         .map_err(|m| located(text, file, format!("{total} runs: {m}")))?;
-    let progress = Mutex::new((Progress::new(&name, opts.quiet), 0usize));
-    let results: Vec<Result<Done, String>> = scenes
-        .into_par_iter()
-        .zip(combos)
-        .map(|(scene, (index, label))| {
-            let run = scene
-                .run_with(RunControl { progress: &mut |_| {}, cancel: Some(interrupted()) })
-                .and_then(|r| r.in_units(opts.units))
-                .map_err(|e| format!("run {index} ({}): {e}", describe(&label)))?;
-            if let Ok(mut p) = progress.lock() {
-                p.1 += 1;
-                let f = p.1 as f64 / total as f64;
-                p.0.update(f);
-            }
-            Ok(Done { index, label, scene, run, written: true })
-        })
-        .collect();
-    if let Ok(p) = progress.into_inner() {
-        p.0.finish();
-    }
-    let mut done = Vec::new();
-    let mut failed = Vec::new();
-    for r in results {
-        match r {
-            Ok(d) => done.push(d),
-            Err(e) => failed.push(e),
-        }
-    }
-    if let Some(first) = failed.first() {
-        return Err(format!(
-            "{} of {total} sweep runs failed (nothing written); first: {first}",
-            failed.len()
-        )
-        .into());
-    }
+    let mut done = run_all(planned, &name, opts)?;
     let w = write_dir(dir, &name, limits, |sink| {
         // each run's folder (CSV, summary, figures) on all cores too: serial, the writing was
         // a tenth of a two-core sweep's wall time
@@ -254,8 +196,95 @@ pub(crate) fn sweep(
         sink.last("sweep.csv", sweep_csv(&params, &done).as_bytes())?;
         Ok(())
     })?;
+    print_table(out, &done)?;
+    print_written(out, &w, opts.max_output_bytes)?;
+    // an interrupted run first, else the first run that stopped, says how the sweep ended
+    let reasons = || done.iter().filter_map(|d| d.run.stop.as_ref().map(|s| s.reason));
+    let stop = reasons().find(|r| *r == StopReason::Interrupted).or_else(|| reasons().next());
+    Ok(outcome(stop, w.halt))
+}
+
+/// The Cartesian product of the parameters' values, the shard's slice of it (keeping the
+/// global run numbers) and each run's scene: the document with the run's numbers set.
+fn plan(
+    params: &[(String, ItemPath, Vec<f64>)],
+    doc: &Node,
+    src: &SceneSource<'_>,
+    shard: Option<(usize, usize)>,
+) -> Result<Planned, BoxError> {
+    let total = params.iter().try_fold(1usize, |n, (_, _, v)| n.checked_mul(v.len())).unwrap_or(usize::MAX);
+    if total > MAX_SWEEP_RUNS {
+        return Err(format!("the sweep asks for {total} runs; valid: at most {MAX_SWEEP_RUNS}").into());
+    }
+    let mut combos: Vec<Vec<(String, f64)>> = vec![vec![]];
+    for (p, _, vals) in params {
+        combos = combos
+            .into_iter()
+            .flat_map(|c| vals.iter().map(move |v| [c.clone(), vec![(p.clone(), *v)]].concat()))
+            .collect();
+    }
+    combos
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| shard.is_none_or(|(k, n)| i % n == k - 1))
+        .map(|(index, combo)| -> Result<_, BoxError> {
+            let mut d = doc.clone();
+            for (p, v) in &combo {
+                let item = params.iter().find(|(q, _, _)| q == p).map(|(_, item, _)| item);
+                let item = item.ok_or_else(|| format!("--param `{p}` has no item path"))?;
+                d.set_number(item, *v).map_err(|m| src.invalid(item, m))?;
+            }
+            let spec: SceneSpec = src.read_document(&d)?;
+            let scene = Scene::from_spec_in(spec, src)?;
+            Ok((index, combo, scene))
+        })
+        .collect()
+}
+
+/// Every planned run on all cores, with a progress line; an error when any run failed
+/// (nothing is written then), naming how many and the first.
+fn run_all(planned: Planned, name: &str, opts: &Options<'_>) -> Result<Vec<Done>, BoxError> {
+    let total = planned.len();
+    let progress = Mutex::new((Progress::new(name, opts.quiet), 0usize));
+    let results: Vec<Result<Done, String>> = planned
+        .into_par_iter()
+        .map(|(index, label, scene)| {
+            let run = scene
+                .run_with(RunControl { progress: &mut |_| {}, cancel: Some(interrupted()) })
+                .and_then(|r| r.in_units(opts.units))
+                .map_err(|e| format!("run {index} ({}): {e}", describe(&label)))?;
+            if let Ok(mut p) = progress.lock() {
+                p.1 += 1;
+                let f = p.1 as f64 / total as f64;
+                p.0.update(f);
+            }
+            Ok(Done { index, label, scene, run, written: true })
+        })
+        .collect();
+    if let Ok(p) = progress.into_inner() {
+        p.0.finish();
+    }
+    let (mut done, mut failed) = (Vec::new(), Vec::new());
+    for r in results {
+        match r {
+            Ok(d) => done.push(d),
+            Err(e) => failed.push(e),
+        }
+    }
+    if let Some(first) = failed.first() {
+        return Err(format!(
+            "{} of {total} sweep runs failed (nothing written); first: {first}",
+            failed.len()
+        )
+        .into());
+    }
+    Ok(done)
+}
+
+/// The table of runs on standard output.
+fn print_table(out: &mut impl Write, done: &[Done]) -> std::io::Result<()> {
     writeln!(out, "| run | parameters | complete | wall [s] | f-evals | drift |\n|---|---|---|---|---|---|")?;
-    for d in &done {
+    for d in done {
         let drift: Vec<String> =
             d.run.drift.iter().map(|x| format!("{} {:.1e}", x.invariant.name(), x.max_rel)).collect();
         writeln!(
@@ -269,11 +298,7 @@ pub(crate) fn sweep(
             drift.join("; ")
         )?;
     }
-    print_written(out, &w, opts.max_output_bytes)?;
-    // an interrupted run first, else the first run that stopped, says how the sweep ended
-    let reasons = || done.iter().filter_map(|d| d.run.stop.as_ref().map(|s| s.reason));
-    let stop = reasons().find(|r| *r == StopReason::Interrupted).or_else(|| reasons().next());
-    Ok(outcome(stop, w.halt))
+    Ok(())
 }
 
 fn describe(label: &[(String, f64)]) -> String {
