@@ -9,7 +9,7 @@
 //! one log–log panel per problem (error against time, one line per method) from the sitting's
 //! JSON files. Both are run by `sh scripts/peers/stiff.sh`.
 //!
-//! Run: `cargo run --release -p vectrix-ode --example stiff_work -- run`.
+//! Run: `cargo run --release -p vectrix-ode --example stiff_work -- run [--only chain] [--method RADAU5]`.
 
 mod figure;
 mod problems;
@@ -78,15 +78,32 @@ fn point<const D: usize>(
     );
 }
 
-fn sweep<const D: usize>(p: &Problem<D>) {
+/// Which problem and method to run (`--only`, `--method`; all when `None`).
+struct Filter {
+    problem: Option<String>,
+    method: Option<String>,
+}
+
+impl Filter {
+    fn wants(&self, problem: &str, method: &str) -> bool {
+        self.problem.as_deref().is_none_or(|p| p == problem)
+            && self.method.as_deref().is_none_or(|m| m == method)
+    }
+}
+
+fn sweep<const D: usize>(p: &Problem<D>, only: &Filter) {
     for rtol in RTOLS {
         let atol = rtol * p.atol_per_rtol;
-        let r = Radau5::new().rtol(rtol).atol(atol);
-        point(p, "RADAU5", rtol, timed(|| r.solve_with_jacobian(p.f, p.jac, 0.0, &p.y0, p.t_end)));
-        let b = Bdf::new().rtol(rtol).atol(atol);
-        point(p, "BDF", rtol, timed(|| b.solve_with_jacobian(p.f, p.jac, 0.0, &p.y0, p.t_end)));
+        if only.wants(p.id, "RADAU5") {
+            let r = Radau5::new().rtol(rtol).atol(atol);
+            point(p, "RADAU5", rtol, timed(|| r.solve_with_jacobian(p.f, p.jac, 0.0, &p.y0, p.t_end)));
+        }
+        if only.wants(p.id, "BDF") {
+            let b = Bdf::new().rtol(rtol).atol(atol);
+            point(p, "BDF", rtol, timed(|| b.solve_with_jacobian(p.f, p.jac, 0.0, &p.y0, p.t_end)));
+        }
     }
-    for rtol in DOP853_RTOLS {
+    for rtol in DOP853_RTOLS.into_iter().filter(|_| only.wants(p.id, "DOP853")) {
         let a = Adaptive::dop853().rtol(rtol).atol(rtol * p.atol_per_rtol).max_steps(DOP853_MAX_STEPS);
         point(p, "DOP853", rtol, timed(|| a.solve(p.f, 0.0, &p.y0, p.t_end)));
     }
@@ -101,59 +118,74 @@ fn reference(name: &str) -> Vec<f64> {
     case["y"].as_array().expect("y").iter().map(|x| x.as_f64().expect("number")).collect()
 }
 
-fn run() {
+fn run(only: &Filter) {
     let mut y0 = SVector::<f64, 12>::zeros();
     y0.as_mut_slice()[..N].copy_from_slice(&X0);
     let exact = chain_exact(CHAIN_T);
     let amplitude = X0.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    sweep(&Problem {
-        id: "chain",
-        f: chain,
-        jac: chain_jacobian,
-        y0,
-        t_end: CHAIN_T,
-        atol_per_rtol: 1e-3,
-        err: Box::new(move |y| abs_err(&y.as_slice()[..N], &exact, amplitude)),
-    });
+    sweep(
+        &Problem {
+            id: "chain",
+            f: chain,
+            jac: chain_jacobian,
+            y0,
+            t_end: CHAIN_T,
+            atol_per_rtol: 1e-3,
+            err: Box::new(move |y| abs_err(&y.as_slice()[..N], &exact, amplitude)),
+        },
+        only,
+    );
     let want = reference("spring_pendulum");
-    sweep(&Problem {
-        id: "pendulum",
-        f: pendulum,
-        jac: pendulum_jacobian,
-        y0: pendulum_y0(),
-        t_end: PEND_T,
-        atol_per_rtol: 1.0,
-        err: Box::new(move |y| abs_err(&y.as_slice()[..2], &want[..2], PEND_L0)),
-    });
+    sweep(
+        &Problem {
+            id: "pendulum",
+            f: pendulum,
+            jac: pendulum_jacobian,
+            y0: pendulum_y0(),
+            t_end: PEND_T,
+            atol_per_rtol: 1.0,
+            err: Box::new(move |y| abs_err(&y.as_slice()[..2], &want[..2], PEND_L0)),
+        },
+        only,
+    );
     let want = damper_exact(DAMP_T);
-    sweep(&Problem {
-        id: "damper",
-        f: damper,
-        jac: damper_jacobian,
-        y0: SVector::<f64, 2>::new(DAMP_THETA0, DAMP_OMEGA0),
-        t_end: DAMP_T,
-        atol_per_rtol: 1.0,
-        err: Box::new(move |y| abs_err(&[y[0]], &[want], DAMP_THETA0)),
-    });
+    sweep(
+        &Problem {
+            id: "damper",
+            f: damper,
+            jac: damper_jacobian,
+            y0: SVector::<f64, 2>::new(DAMP_THETA0, DAMP_OMEGA0),
+            t_end: DAMP_T,
+            atol_per_rtol: 1.0,
+            err: Box::new(move |y| abs_err(&[y[0]], &[want], DAMP_THETA0)),
+        },
+        only,
+    );
     let want = reference("robertson_1e5");
-    sweep(&Problem {
-        id: "robertson",
-        f: robertson,
-        jac: robertson_jacobian,
-        y0: SVector::<f64, 3>::new(1.0, 0.0, 0.0),
-        t_end: 1e5,
-        atol_per_rtol: 1e-6,
-        err: Box::new(move |y| rel_err(y.as_slice(), &want)),
-    });
-    sweep(&Problem {
-        id: "vdp",
-        f: vdpol,
-        jac: vdpol_jacobian,
-        y0: SVector::<f64, 2>::new(2.0, 0.0),
-        t_end: 2.0,
-        atol_per_rtol: 1.0,
-        err: Box::new(|y| rel_err(y.as_slice(), &VDPOL_END)),
-    });
+    sweep(
+        &Problem {
+            id: "robertson",
+            f: robertson,
+            jac: robertson_jacobian,
+            y0: SVector::<f64, 3>::new(1.0, 0.0, 0.0),
+            t_end: 1e5,
+            atol_per_rtol: 1e-6,
+            err: Box::new(move |y| rel_err(y.as_slice(), &want)),
+        },
+        only,
+    );
+    sweep(
+        &Problem {
+            id: "vdp",
+            f: vdpol,
+            jac: vdpol_jacobian,
+            y0: SVector::<f64, 2>::new(2.0, 0.0),
+            t_end: 2.0,
+            atol_per_rtol: 1.0,
+            err: Box::new(|y| rel_err(y.as_slice(), &VDPOL_END)),
+        },
+        only,
+    );
 }
 
 fn arg(args: &[String], key: &str) -> Option<String> {
@@ -163,13 +195,15 @@ fn arg(args: &[String], key: &str) -> Option<String> {
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     match args.get(1).map(String::as_str) {
-        None | Some("run") => run(),
+        None | Some("run") => run(&Filter { problem: arg(&args, "--only"), method: arg(&args, "--method") }),
         Some("plot") => figure::plot(
             &arg(&args, "--data").unwrap_or_else(|| "docs/accuracy/stiff-data".into()),
             &arg(&args, "--svg").unwrap_or_else(|| "docs/accuracy".into()),
         ),
         Some(other) => {
-            eprintln!("usage: stiff_work [run | plot --data DIR --svg DIR] (got {other})");
+            eprintln!(
+                "usage: stiff_work [run [--only PROBLEM] [--method RADAU5|BDF|DOP853] | plot --data DIR --svg DIR] (got {other})"
+            );
             std::process::exit(2);
         }
     }
