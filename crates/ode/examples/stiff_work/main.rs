@@ -52,14 +52,20 @@ struct Problem<const D: usize> {
     y0: SVector<f64, D>,
     t_end: f64,
     atol_per_rtol: f64,
-    err: Box<dyn Fn(&SVector<f64, D>) -> f64>,
+    err: ErrorOf<D>,
 }
+
+/// The error measure of an end state.
+type ErrorOf<const D: usize> = Box<dyn Fn(&SVector<f64, D>) -> f64>;
+
+/// A run's outcome: the solution, or the typed error that stopped it.
+type Outcome<const D: usize> = Result<Solution<SVector<f64, D>>, OdeError>;
 
 fn point<const D: usize>(
     p: &Problem<D>,
     tool: &str,
     rtol: f64,
-    (secs, sol): (f64, Result<Solution<SVector<f64, D>>, OdeError>),
+    (secs, sol): (f64, Outcome<D>),
 ) {
     let (err, w, note) = match &sol {
         Ok(s) => ((p.err)(s.last()), s.work, String::new()),
