@@ -56,6 +56,26 @@ fn style(series: &str) -> (Shape, Stroke, &'static str) {
     }
 }
 
+/// One palette index per method on every panel. vectrix-plot has seven colours and moves a
+/// curve's dash one step along solid → dashed → dotted → dash-dot each time the index wraps;
+/// indices 14–16 give the dashed peers the dash-dot style, unused by any other series, so no
+/// two series of a panel share both colour and dash (diffsol and MuJoCo never share a panel).
+fn colour(series: &str) -> Option<usize> {
+    Some(match series {
+        "vectrix RADAU5" => 0,
+        "vectrix BDF" => 1,
+        "vectrix DOP853" => 2,
+        "scipy Radau" => 3,
+        "scipy BDF" => 4,
+        "scipy LSODA" => 5,
+        "diffsol bdf" | "MuJoCo implicitfast" => 6,
+        "MuJoCo RK4" => 14,
+        "diffsol esdirk34" => 15,
+        "diffsol tr_bdf2" => 16,
+        _ => return None,
+    })
+}
+
 /// (problem, series, error, seconds) of every point with a finite, positive error.
 fn points(data: &Path) -> Vec<(String, String, f64, f64)> {
     let mut out = Vec::new();
@@ -104,7 +124,8 @@ pub fn plot(data: &str, svg_dir: &str) {
             log_y: true,
             ..Chart::default()
         };
-        for (color, name) in series.iter().enumerate() {
+        for (i, name) in series.iter().enumerate() {
+            let color = colour(name).unwrap_or(21 + i);
             let mut line: Vec<(f64, f64)> =
                 pts.iter().filter(|p| p.0 == id && p.1 == *name).map(|p| (p.2, p.3)).collect();
             line.sort_by(|a, b| b.0.total_cmp(&a.0));

@@ -61,12 +61,7 @@ type ErrorOf<const D: usize> = Box<dyn Fn(&SVector<f64, D>) -> f64>;
 /// A run's outcome: the solution, or the typed error that stopped it.
 type Outcome<const D: usize> = Result<Solution<SVector<f64, D>>, OdeError>;
 
-fn point<const D: usize>(
-    p: &Problem<D>,
-    tool: &str,
-    rtol: f64,
-    (secs, sol): (f64, Outcome<D>),
-) {
+fn point<const D: usize>(p: &Problem<D>, tool: &str, rtol: f64, (secs, sol): (f64, Outcome<D>)) {
     let (err, w, note) = match &sol {
         Ok(s) => ((p.err)(s.last()), s.work, String::new()),
         Err(e) => (f64::INFINITY, Default::default(), format!(",\"note\":{:?}", e.to_string())),
