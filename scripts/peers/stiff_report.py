@@ -160,8 +160,9 @@ def tables(pts, meta):
                 verdict, rs = ("— (vectrix only)" if v else "**not met**"), "—"
             lines.append(f"| {title} | {e:.0e} | {vs} | {ds} | {rs} | {verdict} |")
     lines.append("")
-    lines.append("**Work at rtol = 10⁻⁶ and 10⁻⁹** (MuJoCo: the largest dt that reaches each error "
-                 "decade; f-evals include Jacobian evaluations only where a tool counts them so; "
+    lines.append("**Work at rtol = 10⁻⁶ and 10⁻⁹** (MuJoCo: the largest dt that reaches each of the two "
+                 "errors; f-evals are right-hand-side evaluations, none spent on Jacobians (every tool "
+                 "has the exact one); LU: factorizations (RADAU5: pairs of a real and a complex one); "
                  "— where a tool does not report the count):")
     lines.append("")
     lines.append("| problem | method | rtol / dt | end error | steps | f-evals | LU | Newton its | time [s] |")
