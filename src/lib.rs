@@ -25,6 +25,7 @@ pub use vectrix_lti as lti;
 pub use vectrix_ode as ode;
 pub use vectrix_plot as plot;
 pub use vectrix_rotation as rotation;
+#[cfg(feature = "scene")]
 pub use vectrix_scene as scene;
 pub use vectrix_statics as statics;
 pub use vectrix_tensor as tensor;
@@ -41,6 +42,7 @@ pub mod prelude {
     pub use vectrix_ode::prelude::*;
     pub use vectrix_plot::prelude::*;
     pub use vectrix_rotation::prelude::*;
+    #[cfg(feature = "scene")]
     pub use vectrix_scene::{Scene, SceneError};
     pub use vectrix_statics::prelude::*;
     pub use vectrix_tensor::prelude::*;

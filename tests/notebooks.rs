@@ -409,7 +409,7 @@ fn generated_code_is_current() {
 
 /// At least one notebook per chapter 2–16 (`02-…` to `16-…`, a chapter may have a second one
 /// such as `15-units`), and no other; each opening with the lean `:dep` cell the
-/// README promises, with markdown citing the book's sections and at least one SVG figure.
+/// README promises (plus the `scene` feature in the notebooks that run scene files), with markdown citing the book's sections and at least one SVG figure.
 #[test]
 fn notebooks_are_guided_tours() {
     let list = notebooks();
@@ -424,9 +424,14 @@ fn notebooks_are_guided_tours() {
     for nb in list {
         let cells = code_cells(&nb);
         let first = cells.first().map(String::as_str).unwrap_or("");
+        // the lean dependency, or the lean one with scene files when the notebook runs a scene
+        let lean = ":dep vectrix = { path = \"../..\", default-features = false }";
+        let with_scenes =
+            ":dep vectrix = { path = \"../..\", default-features = false, features = [\"scene\"] }";
+        let runs_scenes = cells.iter().any(|c| c.contains("vectrix::scene") || c.contains("Scene::"));
         assert!(
-            first.contains(":dep vectrix = { path = \"../..\", default-features = false }"),
-            "{}: first code cell must be the lean :dep",
+            first.contains(if runs_scenes { with_scenes } else { lean }),
+            "{}: first code cell must be the lean :dep (with `features = [\"scene\"]` exactly when a cell runs a scene)",
             nb.display()
         );
         let text = fs::read_to_string(&nb).unwrap_or_default();
