@@ -31,6 +31,10 @@ pub(crate) fn check_vec<T: Scalar>(x: &Vector<T>, what: &'static str) -> Result<
 pub(crate) fn unit_sep<T: Scalar>(r: &Vector<T>, what: &'static str) -> Result<(Vector<T>, T), StaticsError> {
     check_vec(r, what)?;
     let n = r.norm();
+    // the comfortable range as `Vector::unit` has it, without its second norm (same bits)
+    if n.re() > 1e-150 && n.re() < 1e150 {
+        return Ok((*r / n, n));
+    }
     match r.unit() {
         Some(u) => Ok((u, n)),
         None => Err(StaticsError::CoincidentPoints { what, distance: n.re() }),
