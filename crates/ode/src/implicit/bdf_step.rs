@@ -34,7 +34,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
         if h > self.p.h_max {
             self.rescale(self.p.h_max / h);
             h = self.p.h_max;
-            self.lu = None;
+            self.lu_c = None;
         }
         let mut failures: Option<(Failure, Option<OdeError>, usize)> = None;
         loop {
@@ -49,7 +49,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             if t_new >= self.p.t_end {
                 t_new = self.p.t_end;
                 self.rescale((t_new - t) / h);
-                self.lu = None;
+                self.lu_c = None;
             }
             h = t_new - t;
             let k = self.order;
@@ -92,7 +92,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
                     }
                     h *= 0.5;
                     self.rescale(0.5);
-                    self.lu = None;
+                    self.lu_c = None;
                     self.p.work.rejected += 1;
                     continue;
                 }
@@ -190,7 +190,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
         let factor = if factor.is_finite() && factor > 0.0 { factor } else { 1.0 };
         self.p.h = h * factor;
         self.rescale(factor);
-        self.lu = None;
+        self.lu_c = None;
     }
 
     /// The polynomial interpolating the last k + 1 accepted points (the differences of the

@@ -4,11 +4,9 @@
 //!
 //! Book: §4.11; HW §III.5, §V.5; Shampine & Reichelt 1997; Byrne & Hindmarsh 1975.
 
-use faer::Mat;
-use faer::linalg::solvers::PartialPivLu;
-
 use super::bdf::Bdf;
-use super::radau_core::{NoJacobian, jacobian_into, lu_real, rms_scaled, solve_real};
+use super::lu::DenseLu;
+use super::radau_core::{NoJacobian, jacobian_into, rms_scaled};
 use crate::explicit::{DenseStep, Steps};
 use crate::progress::Progress;
 use crate::state::{State, check_state, eval};
@@ -77,10 +75,14 @@ pub struct BdfStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [
     d: Vec<Vec<f64>>,
     order: usize,
     n_equal_steps: usize,
-    /// ∂f/∂y, and whether it was evaluated during the current step.
-    jm: Mat<f64>,
-    /// LU of I − cJ and its c.
-    lu: Option<(PartialPivLu<f64>, f64)>,
+    /// ∂f/∂y, row-major (entry (i, j) at i·n + j).
+    jm: Vec<f64>,
+    /// LU of I − cJ, factorized in place (buffers allocated once), and its c; `None` when
+    /// stale or refused.
+    lu: DenseLu<f64>,
+    lu_c: Option<f64>,
+    /// Newton's correction Δ, allocated once.
+    dy: Vec<f64>,
     newton_tol: f64,
 }
 
@@ -186,7 +188,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             )?,
         };
         let n = y0.dim();
-        let mut jm = Mat::zeros(n, n);
+        let mut jm = vec![0.0; n * n];
         jacobian_into(&mut f, jac.as_mut(), t0, &y0, f0.as_slice(), &mut jm, &mut work)?;
         let mut d = vec![vec![0.0; n]; MAX_ORDER + 3];
         d[0].copy_from_slice(y0.as_slice());
@@ -204,7 +206,9 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             order: 1,
             n_equal_steps: 0,
             jm,
-            lu: None,
+            lu: DenseLu::new(n),
+            lu_c: None,
+            dy: vec![0.0; n],
             newton_tol: (10.0 * f64::EPSILON / cfg.rtol).max(0.03f64.min(cfg.rtol.sqrt())),
         })
     }
@@ -235,7 +239,10 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
         let mut ys = self.p.y.clone();
         let mut dy_norm_old: Option<f64> = None;
         let mut out = Newton { converged: false, iterations: 0, y: Vec::new(), d: Vec::new(), error: None };
-        let Some((lu, _)) = self.lu.as_ref() else { return out };
+        if self.lu_c.is_none() {
+            return out;
+        }
+        let dy = &mut self.dy;
         for k in 0..cap {
             out.iterations = k + 1;
             ys.as_mut_slice().copy_from_slice(&y);
@@ -248,9 +255,11 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             };
             self.p.work.newton_iterations += 1;
             // Δ = (I − cJ)⁻¹ (c f − ψ − d)
-            let mut dy: Vec<f64> = (0..n).map(|i| c * fy.as_slice()[i] - psi[i] - d[i]).collect();
-            solve_real(lu, &mut dy);
-            let dy_norm = rms_scaled(&dy, scale);
+            for (i, dyi) in dy.iter_mut().enumerate() {
+                *dyi = c * fy.as_slice()[i] - psi[i] - d[i];
+            }
+            self.lu.solve(dy);
+            let dy_norm = rms_scaled(dy, scale);
             if !dy_norm.is_finite() {
                 break;
             }
@@ -285,26 +294,25 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             eval(&mut self.f, t, &ys, self.p.t, 1, &mut self.p.work.fevals)?.as_slice().to_vec()
         };
         jacobian_into(&mut self.f, self.jac_fn.as_mut(), t, &ys, &f0, &mut self.jm, &mut self.p.work)?;
-        self.lu = None;
+        self.lu_c = None;
         Ok(())
     }
 
     /// Factorizes I − cJ unless the factors for this c are at hand (or, after an error-test
     /// rejection, the previous ones are kept as scipy does); `false` when singular.
     fn factorize(&mut self, c: f64) -> bool {
-        if self.lu.is_some() {
+        if self.lu_c.is_some() {
             return true;
         }
-        let n = self.jm.nrows();
-        let m =
-            Mat::<f64>::from_fn(
-                n,
-                n,
-                |i, j| if i == j { 1.0 - c * self.jm[(i, j)] } else { -c * self.jm[(i, j)] },
-            );
+        let (n, jm) = (self.lu.dim(), &self.jm);
         self.p.work.factorizations += 1;
-        self.lu = lu_real(m).map(|lu| (lu, c));
-        self.lu.is_some()
+        // I − cJ
+        let ok = self
+            .lu
+            .factor_with(|i, j| if i == j { 1.0 - c * jm[i * n + j] } else { -c * jm[i * n + j] })
+            .is_ok();
+        self.lu_c = ok.then_some(c);
+        ok
     }
 }
 

@@ -1,0 +1,267 @@
+//! The dense LU factorisation with partial pivoting that the stiff integrators refactorise
+//! every few steps: PA = LU factored in place into a buffer allocated once per run, solved in
+//! place, for real and complex matrices.
+//!
+//! At the sizes of the reference problems (n = 2 … 50) the arithmetic of an n×n LU is a few
+//! hundred to a few ten thousand flops, and a general-purpose library's fixed cost per call
+//! (scratch allocation, dispatch, a result `Mat` per solve) is as large as the work itself:
+//! profiling RADAU5 on the n = 12 chain put a fifth of the run in the allocator. So small
+//! matrices use the textbook unblocked algorithm below, large ones faer's blocked LU.
+//!
+//! Book: §4.11; Golub & Van Loan, *Matrix Computations* (4th ed.), Algorithm 3.4.1 (Gaussian
+//! elimination with partial pivoting, outer-product form) and §3.4.4–3.4.6 (stability);
+//! HW §IV.8 (the iteration matrices of RADAU5, `DECOMR`/`DECOMC` with `DEC`/`DECC` of
+//! `decsol.f`).
+
+use core::ops::{Add, Div, Mul, Sub, SubAssign};
+
+use faer::c64;
+use faer::linalg::solvers::{PartialPivLu, Solve};
+use faer::{Mat, traits::ComplexField};
+
+/// Largest n factored by the unblocked algorithm; larger matrices go to faer.
+///
+/// Why 64: below it the whole matrix (64² complex entries = 64 KiB) stays in L1/L2 cache, the
+/// unblocked algorithm's n³/3 multiply–adds run at close to the speed of a blocked one, and
+/// the fixed cost it saves (allocation and dispatch per factorisation and per solve, measured
+/// at 30–35 % of RADAU5's time at n = 2–4 and about 20 % at n = 12) dominates; above it
+/// faer's blocked, vectorised LU wins on arithmetic and its allocations are amortised over
+/// O(n³) work. The stiff problems of the sitting have n ≤ 12, far from the boundary, so the
+/// exact value is not critical.
+pub const UNBLOCKED_MAX_N: usize = 64;
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f64 {}
+    impl Sealed for faer::c64 {}
+}
+
+/// The entries [`DenseLu`] works with: `f64` (RADAU5's real system, BDF) and `faer::c64`
+/// (RADAU5's complex system ((α + iβ)/h)I − J). Sealed.
+///
+/// Book: HW §IV.8.
+pub trait LuScalar:
+    ComplexField
+    + Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + SubAssign
+    + sealed::Sealed
+{
+    /// The additive identity.
+    const ZERO: Self;
+    /// |x| for real x, |Re x| + |Im x| for complex x: the size compared in the pivot search
+    /// (`IDAMAX`-style for real, `DECC` of `decsol.f` for complex).
+    fn size(self) -> f64;
+    /// `true` when every part is finite.
+    fn finite(self) -> bool;
+}
+
+impl LuScalar for f64 {
+    const ZERO: Self = 0.0;
+    fn size(self) -> f64 {
+        self.abs()
+    }
+    fn finite(self) -> bool {
+        self.is_finite()
+    }
+}
+
+impl LuScalar for c64 {
+    const ZERO: Self = c64::new(0.0, 0.0);
+    fn size(self) -> f64 {
+        self.re.abs() + self.im.abs()
+    }
+    fn finite(self) -> bool {
+        self.re.is_finite() && self.im.is_finite()
+    }
+}
+
+/// A matrix refused by [`DenseLu::factor`]: singular to working precision (a zero pivot) or
+/// with a NaN or infinite entry in its factors.
+///
+/// Book: Golub & Van Loan, Algorithm 3.4.1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("LU factorisation refused: pivot {index} is zero or the factors are not finite")]
+pub struct SingularPivot {
+    /// The elimination step (column) where a zero or non-finite pivot or entry appeared.
+    pub index: usize,
+}
+
+/// PA = LU of an n×n matrix, factored in place: the matrix, its factors and the pivots live
+/// in buffers allocated by [`DenseLu::new`] and reused by every [`DenseLu::factor`] and
+/// [`DenseLu::solve`]. For n ≤ [`UNBLOCKED_MAX_N`] neither allocates; above, faer's blocked
+/// LU is used (and allocates, amortised over its O(n³) work).
+///
+/// L is unit lower triangular, U upper triangular, both stored in one row-major array
+/// (L below the diagonal); the pivots are LAPACK's: at step k rows k and `piv[k]` were
+/// swapped.
+///
+/// ```
+/// use vectrix_ode::implicit::DenseLu;
+/// // A = [[0, 2], [1, 1]]: the zero in the corner needs the row swap
+/// let mut lu = DenseLu::<f64>::new(2);
+/// lu.factor(&[0.0, 2.0, 1.0, 1.0]).unwrap();
+/// let mut x = [4.0, 3.0]; // b
+/// lu.solve(&mut x); // x = A⁻¹b = (1, 2)
+/// assert!((x[0] - 1.0).abs() < 1e-15 && (x[1] - 2.0).abs() < 1e-15);
+/// ```
+///
+/// Book: Golub & Van Loan, Algorithm 3.4.1; HW §IV.8 (`DEC`/`SOL`, `DECC`/`SOLC`).
+#[derive(Debug, Clone)]
+pub struct DenseLu<T: LuScalar> {
+    n: usize,
+    /// The matrix, then L\U in place, row-major (entry (i, j) at i·n + j).
+    a: Vec<T>,
+    /// Row interchanges: at step k, rows k and piv[k].
+    piv: Vec<usize>,
+    /// faer's factors, for n > [`UNBLOCKED_MAX_N`].
+    blocked: Option<PartialPivLu<T>>,
+}
+
+impl<T: LuScalar> DenseLu<T> {
+    /// Buffers for n×n matrices (n² entries and n pivots), allocated once.
+    pub fn new(n: usize) -> Self {
+        Self { n, a: vec![T::ZERO; n * n], piv: (0..n).collect(), blocked: None }
+    }
+
+    /// n.
+    pub fn dim(&self) -> usize {
+        self.n
+    }
+
+    /// Factors the row-major matrix `a` (n² entries, (i, j) at i·n + j).
+    ///
+    /// # Errors
+    /// [`SingularPivot`] as [`DenseLu::factor_with`].
+    ///
+    /// # Panics
+    /// If `a.len()` ≠ n² (a programming error, not a numerical one).
+    pub fn factor(&mut self, a: &[T]) -> Result<(), SingularPivot> {
+        assert_eq!(a.len(), self.n * self.n, "DenseLu::factor: matrix of the wrong size");
+        let n = self.n;
+        self.factor_with(|i, j| a[i * n + j])
+    }
+
+    /// Writes A with entries `entry(i, j)` into the stored buffer and factors it in place
+    /// (Golub & Van Loan Alg. 3.4.1 for n ≤ [`UNBLOCKED_MAX_N`], faer above).
+    ///
+    /// # Degenerate inputs
+    /// A pivot that is exactly zero (A singular to working precision after the row
+    /// interchanges) or any non-finite entry of L or U refuses the matrix; the factors are
+    /// then unusable until the next successful `factor`.
+    ///
+    /// # Errors
+    /// [`SingularPivot`] naming the column where elimination stopped.
+    pub fn factor_with(&mut self, mut entry: impl FnMut(usize, usize) -> T) -> Result<(), SingularPivot> {
+        let n = self.n;
+        if n > UNBLOCKED_MAX_N {
+            return self.factor_blocked(entry);
+        }
+        for i in 0..n {
+            for j in 0..n {
+                self.a[i * n + j] = entry(i, j);
+            }
+        }
+        for k in 0..n {
+            self.eliminate(k)?;
+        }
+        // a NaN or ∞ off the diagonal of U or in L does not show in the pivots
+        match self.a.iter().position(|v| !v.finite()) {
+            Some(p) => Err(SingularPivot { index: p % n }),
+            None => Ok(()),
+        }
+    }
+
+    /// Step k of Alg. 3.4.1: choose the pivot, swap rows, form column k of L and update the
+    /// trailing (n−k−1)×(n−k−1) block by the outer product.
+    fn eliminate(&mut self, k: usize) -> Result<(), SingularPivot> {
+        let n = self.n;
+        // pivot: the largest |a_ik|, i ≥ k (the first on ties; NaN never wins)
+        let mut p = k;
+        let mut big = self.a[k * n + k].size();
+        for i in k + 1..n {
+            let s = self.a[i * n + k].size();
+            if s > big || big.is_nan() {
+                (p, big) = (i, s);
+            }
+        }
+        self.piv[k] = p;
+        if p != k {
+            for j in 0..n {
+                self.a.swap(k * n + j, p * n + j);
+            }
+        }
+        let pivot = self.a[k * n + k];
+        // singular branch: a zero pivot means every candidate was zero (A is singular to
+        // working precision); a non-finite one means A or the update overflowed
+        if big == 0.0 || !pivot.finite() {
+            return Err(SingularPivot { index: k });
+        }
+        let (upper, lower) = self.a.split_at_mut((k + 1) * n);
+        let row_k = &upper[k * n..];
+        for row_i in lower.chunks_exact_mut(n) {
+            // ℓ_ik = a_ik / a_kk;  a_ij ← a_ij − ℓ_ik a_kj, j > k
+            let l = row_i[k] / pivot;
+            row_i[k] = l;
+            if l.size() != 0.0 {
+                for (aij, akj) in row_i[k + 1..].iter_mut().zip(&row_k[k + 1..]) {
+                    *aij -= l * *akj;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// faer's blocked LU of the matrix given entrywise (n > [`UNBLOCKED_MAX_N`]), refused
+    /// when a diagonal entry of U is zero or not finite (as before this module existed).
+    fn factor_blocked(&mut self, entry: impl FnMut(usize, usize) -> T) -> Result<(), SingularPivot> {
+        self.blocked = None;
+        let lu = Mat::<T>::from_fn(self.n, self.n, entry).partial_piv_lu();
+        let u = lu.U();
+        if let Some(k) = (0..self.n).find(|&k| {
+            let d = u[(k, k)];
+            !d.finite() || d.size() == 0.0
+        }) {
+            return Err(SingularPivot { index: k });
+        }
+        self.blocked = Some(lu);
+        Ok(())
+    }
+
+    /// x ← A⁻¹x from the last successful factorisation: x ← Px, then Ly = x (forward, L unit
+    /// lower), then Ux = y (backward). No allocation for n ≤ [`UNBLOCKED_MAX_N`].
+    ///
+    /// # Panics
+    /// If `x.len()` ≠ n (a programming error).
+    pub fn solve(&self, x: &mut [T]) {
+        let n = self.n;
+        assert_eq!(x.len(), n, "DenseLu::solve: right-hand side of the wrong size");
+        if let Some(lu) = &self.blocked {
+            let mut m = Mat::<T>::from_fn(n, 1, |i, _| x[i]);
+            lu.solve_in_place(m.as_mut());
+            for (i, xi) in x.iter_mut().enumerate() {
+                *xi = m[(i, 0)];
+            }
+            return;
+        }
+        // x ← P x, the interchanges in the order they were made
+        for (k, &p) in self.piv.iter().enumerate() {
+            x.swap(k, p);
+        }
+        // L y = x: yᵢ = xᵢ − Σ_{j<i} ℓᵢⱼ yⱼ
+        for i in 1..n {
+            let row = &self.a[i * n..i * n + i];
+            let s = row.iter().zip(&x[..i]).fold(T::ZERO, |s, (l, y)| s + *l * *y);
+            x[i] -= s;
+        }
+        // U x = y: xᵢ = (yᵢ − Σ_{j>i} uᵢⱼ xⱼ)/uᵢᵢ
+        for i in (0..n).rev() {
+            let row = &self.a[i * n..(i + 1) * n];
+            let s = row[i + 1..].iter().zip(&x[i + 1..]).fold(T::ZERO, |s, (u, xj)| s + *u * *xj);
+            x[i] = (x[i] - s) / row[i];
+        }
+    }
+}
