@@ -173,3 +173,23 @@ fn buffers_reusable_after_a_refusal() {
     lu.solve(&mut x);
     assert!((x[0] - 1.0).abs() <= 4.0 * f64::EPSILON && (x[1] - 2.0).abs() <= 4.0 * f64::EPSILON, "{x:?}");
 }
+
+#[test]
+fn tiny_pivots_are_not_singular() {
+    // diag(1e-300, 1), real and complex: a small but normal pivot is a valid matrix (its
+    // reciprocal 1e300 is finite); only pivots below about 2⁻¹⁰²⁴ are refused
+    let mut lu = DenseLu::<f64>::new(2);
+    lu.factor(&[1e-300, 0.0, 0.0, 1.0]).unwrap();
+    let mut x = [1e-300, 2.0];
+    lu.solve(&mut x);
+    // x₀ = 1e-300 · (1/1e-300): the reciprocal rounds once more than a division
+    assert!((x[0] - 1.0).abs() <= 2.0 * f64::EPSILON && x[1] == 2.0, "{x:?}");
+    let mut lc = DenseLu::<c64>::new(2);
+    let (z, one) = (c64::new(0.0, 0.0), c64::new(1.0, 0.0));
+    lc.factor(&[c64::new(0.0, 1e-300), z, z, one]).unwrap();
+    let mut x = [c64::new(1e-300, 0.0), one];
+    lc.solve(&mut x);
+    // 1e-300 / (1e-300 i) = −i
+    assert!((x[0] - c64::new(0.0, -1.0)).norm() <= 2.0 * f64::EPSILON, "{:?}", x[0]);
+    assert!(lu.factor(&[1e-320, 0.0, 0.0, 1.0]).is_err(), "subnormal pivot 1e-320 accepted");
+}

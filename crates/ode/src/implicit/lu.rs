@@ -13,7 +13,7 @@
 //! HW §IV.8 (the iteration matrices of RADAU5, `DECOMR`/`DECOMC` with `DEC`/`DECC` of
 //! `decsol.f`).
 
-use core::ops::{Add, Div, Mul, Sub, SubAssign};
+use core::ops::{Add, Div, Mul, MulAssign, Sub, SubAssign};
 
 use faer::c64;
 use faer::linalg::solvers::{PartialPivLu, Solve};
@@ -48,6 +48,7 @@ pub trait LuScalar:
     + Mul<Output = Self>
     + Div<Output = Self>
     + SubAssign
+    + MulAssign
     + sealed::Sealed
 {
     /// The additive identity.
@@ -57,6 +58,9 @@ pub trait LuScalar:
     fn size(self) -> f64;
     /// `true` when every part is finite.
     fn finite(self) -> bool;
+    /// 1/x, without intermediate overflow for complex x (Smith's algorithm); not finite when
+    /// |x| is below about 2⁻¹⁰²⁴.
+    fn recip(self) -> Self;
 }
 
 impl LuScalar for f64 {
@@ -67,6 +71,9 @@ impl LuScalar for f64 {
     fn finite(self) -> bool {
         self.is_finite()
     }
+    fn recip(self) -> Self {
+        1.0 / self
+    }
 }
 
 impl LuScalar for c64 {
@@ -76,6 +83,20 @@ impl LuScalar for c64 {
     }
     fn finite(self) -> bool {
         self.re.is_finite() && self.im.is_finite()
+    }
+    fn recip(self) -> Self {
+        // Smith (1962): 1/(a + ib) = (1 − i r)/(a + b r), r = b/a, for |a| ≥ |b| (and the
+        // mirror case), so that a² + b² is never formed
+        let (a, b) = (self.re, self.im);
+        if a.abs() >= b.abs() {
+            let r = b / a;
+            let d = a + b * r;
+            c64::new(1.0 / d, -r / d)
+        } else {
+            let r = a / b;
+            let d = a * r + b;
+            c64::new(r / d, -1.0 / d)
+        }
     }
 }
 
@@ -95,9 +116,11 @@ pub struct SingularPivot {
 /// [`DenseLu::solve`]. For n ≤ [`UNBLOCKED_MAX_N`] neither allocates; above, faer's blocked
 /// LU is used (and allocates, amortised over its O(n³) work).
 ///
-/// L is unit lower triangular, U upper triangular, both stored in one row-major array
-/// (L below the diagonal); the pivots are LAPACK's: at step k rows k and `piv[k]` were
-/// swapped.
+/// L is unit lower triangular, U upper triangular, both stored in one column-major array
+/// (L below the diagonal) as LAPACK's `dgetf2`, so that the elimination and both triangular
+/// solves run down contiguous columns as independent multiply–adds (`axpy`), not as
+/// dot products whose additions wait for each other; the pivots are LAPACK's too: at step k
+/// rows k and `piv[k]` were swapped.
 ///
 /// ```
 /// use vectrix_ode::implicit::DenseLu;
@@ -113,10 +136,12 @@ pub struct SingularPivot {
 #[derive(Debug, Clone)]
 pub struct DenseLu<T: LuScalar> {
     n: usize,
-    /// The matrix, then L\U in place, row-major (entry (i, j) at i·n + j).
+    /// The matrix, then L\U in place, column-major (entry (i, j) at j·n + i).
     a: Vec<T>,
     /// Row interchanges: at step k, rows k and piv[k].
     piv: Vec<usize>,
+    /// 1/uₖₖ: the multipliers and the back substitution multiply instead of dividing.
+    dinv: Vec<T>,
     /// faer's factors, for n > [`UNBLOCKED_MAX_N`].
     blocked: Option<PartialPivLu<T>>,
 }
@@ -124,7 +149,7 @@ pub struct DenseLu<T: LuScalar> {
 impl<T: LuScalar> DenseLu<T> {
     /// Buffers for n×n matrices (n² entries and n pivots), allocated once.
     pub fn new(n: usize) -> Self {
-        Self { n, a: vec![T::ZERO; n * n], piv: (0..n).collect(), blocked: None }
+        Self { n, a: vec![T::ZERO; n * n], piv: (0..n).collect(), dinv: vec![T::ZERO; n], blocked: None }
     }
 
     /// n.
@@ -150,7 +175,8 @@ impl<T: LuScalar> DenseLu<T> {
     ///
     /// # Degenerate inputs
     /// A pivot that is exactly zero (A singular to working precision after the row
-    /// interchanges) or any non-finite entry of L or U refuses the matrix; the factors are
+    /// interchanges), one whose reciprocal overflows (|uₖₖ| < 2⁻¹⁰²⁴, for n ≤
+    /// [`UNBLOCKED_MAX_N`]) or any non-finite entry of L or U refuses the matrix; the factors are
     /// then unusable until the next successful `factor`.
     ///
     /// # Errors
@@ -160,9 +186,9 @@ impl<T: LuScalar> DenseLu<T> {
         if n > UNBLOCKED_MAX_N {
             return self.factor_blocked(entry);
         }
-        for i in 0..n {
-            for j in 0..n {
-                self.a[i * n + j] = entry(i, j);
+        for j in 0..n {
+            for i in 0..n {
+                self.a[j * n + i] = entry(i, j);
             }
         }
         for k in 0..n {
@@ -170,20 +196,21 @@ impl<T: LuScalar> DenseLu<T> {
         }
         // a NaN or ∞ off the diagonal of U or in L does not show in the pivots
         match self.a.iter().position(|v| !v.finite()) {
-            Some(p) => Err(SingularPivot { index: p % n }),
+            Some(p) => Err(SingularPivot { index: p / n }),
             None => Ok(()),
         }
     }
 
     /// Step k of Alg. 3.4.1: choose the pivot, swap rows, form column k of L and update the
-    /// trailing (n−k−1)×(n−k−1) block by the outer product.
+    /// trailing (n−k−1)×(n−k−1) block by the outer product, column by column.
     fn eliminate(&mut self, k: usize) -> Result<(), SingularPivot> {
         let n = self.n;
         // pivot: the largest |a_ik|, i ≥ k (the first on ties; NaN never wins)
+        let col_k = &self.a[k * n..(k + 1) * n];
         let mut p = k;
-        let mut big = self.a[k * n + k].size();
-        for i in k + 1..n {
-            let s = self.a[i * n + k].size();
+        let mut big = col_k[k].size();
+        for (i, v) in col_k.iter().enumerate().skip(k + 1) {
+            let s = v.size();
             if s > big || big.is_nan() {
                 (p, big) = (i, s);
             }
@@ -191,24 +218,28 @@ impl<T: LuScalar> DenseLu<T> {
         self.piv[k] = p;
         if p != k {
             for j in 0..n {
-                self.a.swap(k * n + j, p * n + j);
+                self.a.swap(j * n + k, j * n + p);
             }
         }
         let pivot = self.a[k * n + k];
+        let r = pivot.recip();
         // singular branch: a zero pivot means every candidate was zero (A is singular to
-        // working precision); a non-finite one means A or the update overflowed
-        if big == 0.0 || !pivot.finite() {
+        // working precision); a non-finite one means A or the update overflowed; a pivot so
+        // small (< 2⁻¹⁰²⁴) that its reciprocal overflows is refused with them
+        if big == 0.0 || !pivot.finite() || !r.finite() {
             return Err(SingularPivot { index: k });
         }
-        let (upper, lower) = self.a.split_at_mut((k + 1) * n);
-        let row_k = &upper[k * n..];
-        for row_i in lower.chunks_exact_mut(n) {
-            // ℓ_ik = a_ik / a_kk;  a_ij ← a_ij − ℓ_ik a_kj, j > k
-            let l = row_i[k] / pivot;
-            row_i[k] = l;
-            if l.size() != 0.0 {
-                for (aij, akj) in row_i[k + 1..].iter_mut().zip(&row_k[k + 1..]) {
-                    *aij -= l * *akj;
+        self.dinv[k] = r;
+        let (left, right) = self.a.split_at_mut((k + 1) * n);
+        // ℓ_ik = a_ik / a_kk, i > k
+        let l = &mut left[k * n + k + 1..];
+        l.iter_mut().for_each(|v| *v *= r);
+        // a_ij ← a_ij − ℓ_ik a_kj, i, j > k: column j minus a_kj times column k of L
+        for col_j in right.chunks_exact_mut(n) {
+            let akj = col_j[k];
+            if akj.size() != 0.0 {
+                for (aij, lik) in col_j[k + 1..].iter_mut().zip(l.iter()) {
+                    *aij -= *lik * akj;
                 }
             }
         }
@@ -251,17 +282,22 @@ impl<T: LuScalar> DenseLu<T> {
         for (k, &p) in self.piv.iter().enumerate() {
             x.swap(k, p);
         }
-        // L y = x: yᵢ = xᵢ − Σ_{j<i} ℓᵢⱼ yⱼ
-        for i in 1..n {
-            let row = &self.a[i * n..i * n + i];
-            let s = row.iter().zip(&x[..i]).fold(T::ZERO, |s, (l, y)| s + *l * *y);
-            x[i] -= s;
+        // L y = x, by columns: once yⱼ is final, xᵢ −= ℓᵢⱼ yⱼ for i > j
+        for j in 0..n {
+            let yj = x[j];
+            let col = &self.a[j * n + j + 1..(j + 1) * n];
+            for (xi, lij) in x[j + 1..].iter_mut().zip(col) {
+                *xi -= *lij * yj;
+            }
         }
-        // U x = y: xᵢ = (yᵢ − Σ_{j>i} uᵢⱼ xⱼ)/uᵢᵢ
-        for i in (0..n).rev() {
-            let row = &self.a[i * n..(i + 1) * n];
-            let s = row[i + 1..].iter().zip(&x[i + 1..]).fold(T::ZERO, |s, (u, xj)| s + *u * *xj);
-            x[i] = (x[i] - s) / row[i];
+        // U x = y, by columns from the last: xⱼ = yⱼ/uⱼⱼ, then yᵢ −= uᵢⱼ xⱼ for i < j
+        for j in (0..n).rev() {
+            let xj = x[j] * self.dinv[j];
+            x[j] = xj;
+            let col = &self.a[j * n..j * n + j];
+            for (xi, uij) in x[..j].iter_mut().zip(col) {
+                *xi -= *uij * xj;
+            }
         }
     }
 }
