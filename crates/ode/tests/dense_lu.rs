@@ -3,14 +3,15 @@
 //! Claims checked: on well-conditioned matrices the computed x of Ax = b has a residual of
 //! the order of the unit round-off, ‖Ax − b‖ ≤ 1e-13·‖A‖‖x‖ (backward stability of GEPP,
 //! G&VL Theorem 3.4.4 with the growth factor of random matrices), for real and complex
-//! entries, n = 1 … 20, on the unblocked path and on faer's above [`UNBLOCKED_MAX_N`]; singular
+//! entries, n = 1 … 20, on the unblocked path and on faer's above
+//! [`LuScalar::UNBLOCKED_MAX_N`] (48 real, 16 complex: complex n = 17 … 20 run on faer's); singular
 //! matrices (a zero pivot) and matrices with NaN or ∞ are refused with the column; the
 //! buffers are reusable after a refusal.
 //!
 //! Book: §4.11; Golub & Van Loan, *Matrix Computations*, Alg. 3.4.1, §3.4.6; HW §IV.8.
 
 use faer::c64;
-use vectrix_ode::implicit::{DenseLu, LuScalar, SingularPivot, UNBLOCKED_MAX_N};
+use vectrix_ode::implicit::{DenseLu, LuScalar, SingularPivot};
 
 /// 1e-13 = 450 ε: the residual bound, generous for n ≤ 20 (the backward error of GEPP is a
 /// small multiple of n·ε·ρ with growth factor ρ of order one on these matrices); a real
@@ -102,19 +103,20 @@ fn golub_van_loan_alg_3_4_1_complex_residual_n_1_to_20() {
 #[test]
 fn blocked_path_above_the_threshold_real_and_complex() {
     // n > UNBLOCKED_MAX_N goes to faer's blocked LU: same contract
-    let n = UNBLOCKED_MAX_N + 3;
+    let n = <f64 as LuScalar>::UNBLOCKED_MAX_N + 3;
     let mut rng = Rng(42);
     let a = test_matrix(n, &mut rng, Rng::next, n as f64 + 1.0);
     let x: Vec<f64> = (0..n).map(|_| rng.next()).collect();
     let (res, _) = relative_residual(&a, &x, f64::abs);
     assert!(res <= RESIDUAL, "real n = {n}: {res:e}");
     let c = |r: &mut Rng| c64::new(r.next(), r.next());
+    let n = <c64 as LuScalar>::UNBLOCKED_MAX_N + 3;
     let a = test_matrix(n, &mut rng, c, c64::new(n as f64 + 2.0, 1.0));
     let x: Vec<c64> = (0..n).map(|_| c(&mut rng)).collect();
     let (res, _) = relative_residual(&a, &x, |z: c64| z.norm());
     assert!(res <= RESIDUAL, "complex n = {n}: {res:e}");
-    let mut lu = DenseLu::<f64>::new(n);
-    assert!(lu.factor(&vec![0.0; n * n]).is_err(), "zero matrix on the blocked path");
+    let mut lu = DenseLu::<c64>::new(n);
+    assert!(lu.factor(&vec![c64::new(0.0, 0.0); n * n]).is_err(), "zero matrix on the blocked path");
 }
 
 #[test]

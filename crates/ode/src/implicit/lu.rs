@@ -19,17 +19,6 @@ use faer::c64;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{Mat, traits::ComplexField};
 
-/// Largest n factored by the unblocked algorithm; larger matrices go to faer.
-///
-/// Why 64: below it the whole matrix (64² complex entries = 64 KiB) stays in L1/L2 cache, the
-/// unblocked algorithm's n³/3 multiply–adds run at close to the speed of a blocked one, and
-/// the fixed cost it saves (allocation and dispatch per factorisation and per solve, measured
-/// at 30–35 % of RADAU5's time at n = 2–4 and about 20 % at n = 12) dominates; above it
-/// faer's blocked, vectorised LU wins on arithmetic and its allocations are amortised over
-/// O(n³) work. The stiff problems of the sitting have n ≤ 12, far from the boundary, so the
-/// exact value is not critical.
-pub const UNBLOCKED_MAX_N: usize = 64;
-
 mod sealed {
     pub trait Sealed {}
     impl Sealed for f64 {}
@@ -53,6 +42,14 @@ pub trait LuScalar:
 {
     /// The additive identity.
     const ZERO: Self;
+    /// Largest n factored by the unblocked algorithm of [`DenseLu`]; larger matrices go to
+    /// faer's blocked LU. Measured (factor + one solve, faer including its allocations,
+    /// single thread, 2-core Xeon under load 3.5, 2026-12-05): real, the unblocked LU is 9×
+    /// faster at n = 4, 2.6× at 12, 1.5× at 24–40, even at 48 and 0.7–0.9× from 56 on, so
+    /// 48; complex (faer's kernels are vectorised over the real and imaginary parts, ours are
+    /// scalar `c64` arithmetic), 9× at 4, 2× at 8, 1.3–4× at 12, even at 16 and 0.65–0.8×
+    /// from 24 on, so 16. The stiff problems of the sitting have n ≤ 12.
+    const UNBLOCKED_MAX_N: usize;
     /// |x| for real x, |Re x| + |Im x| for complex x: the size compared in the pivot search
     /// (`IDAMAX`-style for real, `DECC` of `decsol.f` for complex).
     fn size(self) -> f64;
@@ -65,6 +62,7 @@ pub trait LuScalar:
 
 impl LuScalar for f64 {
     const ZERO: Self = 0.0;
+    const UNBLOCKED_MAX_N: usize = 48;
     fn size(self) -> f64 {
         self.abs()
     }
@@ -78,6 +76,7 @@ impl LuScalar for f64 {
 
 impl LuScalar for c64 {
     const ZERO: Self = c64::new(0.0, 0.0);
+    const UNBLOCKED_MAX_N: usize = 16;
     fn size(self) -> f64 {
         self.re.abs() + self.im.abs()
     }
@@ -113,8 +112,8 @@ pub struct SingularPivot {
 
 /// PA = LU of an n×n matrix, factored in place: the matrix, its factors and the pivots live
 /// in buffers allocated by [`DenseLu::new`] and reused by every [`DenseLu::factor`] and
-/// [`DenseLu::solve`]. For n ≤ [`UNBLOCKED_MAX_N`] neither allocates; above, faer's blocked
-/// LU is used (and allocates, amortised over its O(n³) work).
+/// [`DenseLu::solve`]. For n ≤ [`LuScalar::UNBLOCKED_MAX_N`] neither allocates; above,
+/// faer's blocked LU is used (and allocates, amortised over its O(n³) work).
 ///
 /// L is unit lower triangular, U upper triangular, both stored in one column-major array
 /// (L below the diagonal) as LAPACK's `dgetf2`, so that the elimination and both triangular
@@ -142,7 +141,7 @@ pub struct DenseLu<T: LuScalar> {
     piv: Vec<usize>,
     /// 1/uₖₖ: the multipliers and the back substitution multiply instead of dividing.
     dinv: Vec<T>,
-    /// faer's factors, for n > [`UNBLOCKED_MAX_N`].
+    /// faer's factors, for n > [`LuScalar::UNBLOCKED_MAX_N`].
     blocked: Option<PartialPivLu<T>>,
 }
 
@@ -171,19 +170,19 @@ impl<T: LuScalar> DenseLu<T> {
     }
 
     /// Writes A with entries `entry(i, j)` into the stored buffer and factors it in place
-    /// (Golub & Van Loan Alg. 3.4.1 for n ≤ [`UNBLOCKED_MAX_N`], faer above).
+    /// (Golub & Van Loan Alg. 3.4.1 for n ≤ [`LuScalar::UNBLOCKED_MAX_N`], faer above).
     ///
     /// # Degenerate inputs
     /// A pivot that is exactly zero (A singular to working precision after the row
     /// interchanges), one whose reciprocal overflows (|uₖₖ| < 2⁻¹⁰²⁴, for n ≤
-    /// [`UNBLOCKED_MAX_N`]) or any non-finite entry of L or U refuses the matrix; the factors are
-    /// then unusable until the next successful `factor`.
+    /// [`LuScalar::UNBLOCKED_MAX_N`]) or any non-finite entry of L or U refuses the matrix;
+    /// the factors are then unusable until the next successful `factor`.
     ///
     /// # Errors
     /// [`SingularPivot`] naming the column where elimination stopped.
     pub fn factor_with(&mut self, mut entry: impl FnMut(usize, usize) -> T) -> Result<(), SingularPivot> {
         let n = self.n;
-        if n > UNBLOCKED_MAX_N {
+        if n > T::UNBLOCKED_MAX_N {
             return self.factor_blocked(entry);
         }
         for j in 0..n {
@@ -246,7 +245,7 @@ impl<T: LuScalar> DenseLu<T> {
         Ok(())
     }
 
-    /// faer's blocked LU of the matrix given entrywise (n > [`UNBLOCKED_MAX_N`]), refused
+    /// faer's blocked LU of the matrix given entrywise (n > [`LuScalar::UNBLOCKED_MAX_N`]), refused
     /// when a diagonal entry of U is zero or not finite (as before this module existed).
     fn factor_blocked(&mut self, entry: impl FnMut(usize, usize) -> T) -> Result<(), SingularPivot> {
         self.blocked = None;
@@ -263,7 +262,7 @@ impl<T: LuScalar> DenseLu<T> {
     }
 
     /// x ← A⁻¹x from the last successful factorisation: x ← Px, then Ly = x (forward, L unit
-    /// lower), then Ux = y (backward). No allocation for n ≤ [`UNBLOCKED_MAX_N`].
+    /// lower), then Ux = y (backward). No allocation for n ≤ [`LuScalar::UNBLOCKED_MAX_N`].
     ///
     /// # Panics
     /// If `x.len()` ≠ n (a programming error).

@@ -250,9 +250,10 @@ pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
 /// Book: §4.11; HW §IV.8.
 pub type NoJacobian<S> = fn(f64, &S, &mut [f64]);
 
-/// J = ∂f/∂y at (t, y) into `jm` (row-major, n² entries): from the caller's `jac` (row-major, entry (i, j) at i·n + j)
-/// or, without one, by [`finite_difference`] from f0 = f(t, y); refused if any entry is not
-/// finite. Counts one Jacobian in `work`.
+/// J = ∂f/∂y at (t, y) into `jm` (n² entries, row-major: (i, j) at i·n + j), written by the
+/// caller's `jac` directly or, without one, by [`finite_difference`] from f0 = f(t, y);
+/// refused if any entry is not finite (entries `jac` leaves unwritten stay NaN). Counts one
+/// Jacobian in `work`.
 ///
 /// # Errors
 /// [`OdeError::JacobianNotFinite`] naming t, the entry and the state.
