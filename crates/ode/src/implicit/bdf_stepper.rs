@@ -81,8 +81,10 @@ pub struct BdfStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [
     /// stale or refused.
     lu: DenseLu<f64>,
     lu_c: Option<f64>,
-    /// Newton's correction Δ, allocated once.
-    dy: Vec<f64>,
+    /// The buffers of a step, allocated once (lent to each step by `step`).
+    ws: Scratch,
+    /// The state at a Newton iterate.
+    ys: S,
     newton_tol: f64,
 }
 
@@ -125,14 +127,35 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> f
     }
 }
 
-/// The outcome of one Newton solve of the BDF equation.
+/// The outcome of one Newton solve of the BDF equation (its y and d are in [`Scratch`]).
 struct Newton {
     converged: bool,
     iterations: usize,
-    y: Vec<f64>,
-    /// d = yₙ₊₁ − y⁽⁰⁾ = ∇ᵏ⁺¹yₙ₊₁.
-    d: Vec<f64>,
     error: Option<OdeError>,
+}
+
+/// The vectors of one BDF step, n each, allocated once per run.
+#[derive(Default)]
+struct Scratch {
+    /// Predictor y⁽⁰⁾ = Σⱼ₌₀ᵏ Dⱼ.
+    y_pred: Vec<f64>,
+    /// ψ = Σⱼ₌₁ᵏ γⱼDⱼ/γₖ.
+    psi: Vec<f64>,
+    /// atol + rtol·|y|: at the predictor for Newton, at the new y for the error test.
+    scale: Vec<f64>,
+    /// Newton's iterate y and d = y − y⁽⁰⁾ = ∇ᵏ⁺¹yₙ₊₁, and its correction Δ.
+    y: Vec<f64>,
+    d: Vec<f64>,
+    dy: Vec<f64>,
+    /// The local error (1/(k+1))·d.
+    err: Vec<f64>,
+}
+
+impl Scratch {
+    fn new(n: usize) -> Self {
+        let v = || vec![0.0; n];
+        Self { y_pred: v(), psi: v(), scale: v(), y: v(), d: v(), dy: v(), err: v() }
+    }
 }
 
 /// How a step attempt ended when it was not accepted.
@@ -188,6 +211,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             )?,
         };
         let n = y0.dim();
+        let y0_copy = y0.clone();
         let mut jm = vec![0.0; n * n];
         jacobian_into(&mut f, jac.as_mut(), t0, &y0, f0.as_slice(), &mut jm, &mut work)?;
         let mut d = vec![vec![0.0; n]; MAX_ORDER + 3];
@@ -208,7 +232,8 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             jm,
             lu: DenseLu::new(n),
             lu_c: None,
-            dy: vec![0.0; n],
+            ws: Scratch::new(n),
+            ys: y0_copy,
             newton_tol: (10.0 * f64::EPSILON / cfg.rtol).max(0.03f64.min(cfg.rtol.sqrt())),
         })
     }
@@ -232,21 +257,21 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
     /// Simplified Newton on γₖ(y − y⁽⁰⁾) + ψ = h f(t, y) as scipy's `solve_bdf_system`:
     /// (I − cJ)Δ = c f(y) − ψ/γₖ·… − d with c = h/γₖ; stops on the rate test of
     /// Shampine & Reichelt (a rate ≥ 1 or one too slow for the remaining iterations fails).
-    fn newton(&mut self, t_new: f64, y_pred: &[f64], c: f64, psi: &[f64], scale: &[f64]) -> Newton {
+    fn newton(&mut self, t_new: f64, c: f64, ws: &mut Scratch) -> Newton {
+        let Scratch { y_pred, psi, scale, y, d, dy, .. } = ws;
         let n = y_pred.len();
         let cap = self.cfg.method.max_newton;
-        let (mut y, mut d) = (y_pred.to_vec(), vec![0.0; n]);
-        let mut ys = self.p.y.clone();
+        y.copy_from_slice(y_pred);
+        d.fill(0.0);
         let mut dy_norm_old: Option<f64> = None;
-        let mut out = Newton { converged: false, iterations: 0, y: Vec::new(), d: Vec::new(), error: None };
+        let mut out = Newton { converged: false, iterations: 0, error: None };
         if self.lu_c.is_none() {
             return out;
         }
-        let dy = &mut self.dy;
         for k in 0..cap {
             out.iterations = k + 1;
-            ys.as_mut_slice().copy_from_slice(&y);
-            let fy = match eval(&mut self.f, t_new, &ys, self.p.t, 1, &mut self.p.work.fevals) {
+            self.ys.as_mut_slice().copy_from_slice(y);
+            let fy = match eval(&mut self.f, t_new, &self.ys, self.p.t, 1, &mut self.p.work.fevals) {
                 Ok(v) => v,
                 Err(e) => {
                     out.error = Some(e);
@@ -279,8 +304,6 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             }
             dy_norm_old = Some(dy_norm);
         }
-        out.y = y;
-        out.d = d;
         out
     }
 
