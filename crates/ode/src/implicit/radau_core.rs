@@ -60,6 +60,8 @@ pub(crate) struct Factors {
     pub betan: f64,
     /// The step size they were factorized for; `None` when stale or refused.
     h: Option<f64>,
+    /// γ, α, β of [`eigenvalues`], computed once (two cube roots).
+    gab: (f64, f64, f64),
     /// Scratch: the complex right-hand side z₂ + i z₃, and the two vectors of the estimate.
     zc: Vec<c64>,
     f2: Vec<f64>,
@@ -76,6 +78,7 @@ impl Factors {
             alphn: 0.0,
             betan: 0.0,
             h: None,
+            gab: eigenvalues(),
             zc: vec![c64::new(0.0, 0.0); n],
             f2: vec![0.0; n],
             cont: vec![0.0; n],
@@ -95,7 +98,7 @@ impl Factors {
     /// Factorizes both matrices for J (row-major `jac`) and h in place; `false` when either
     /// is singular (a zero or non-finite pivot or factor entry), the factors then stale.
     pub(crate) fn factor(&mut self, jac: &[f64], h: f64) -> bool {
-        let (u1, alph, beta) = eigenvalues();
+        let (u1, alph, beta) = self.gab;
         let n = self.e1.dim();
         let (fac1, alphn, betan) = (u1 / h, alph / h, beta / h);
         (self.fac1, self.alphn, self.betan) = (fac1, alphn, betan);
