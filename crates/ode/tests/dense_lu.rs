@@ -6,12 +6,13 @@
 //! entries, n = 1 … 20, on the unblocked path and on faer's above
 //! [`LuScalar::UNBLOCKED_MAX_N`] (48 real, 16 complex: complex n = 17 … 20 run on faer's); singular
 //! matrices (a zero pivot) and matrices with NaN or ∞ are refused with the column; the
-//! buffers are reusable after a refusal.
+//! buffers are reusable after a refusal; wrong sizes and solves without factors are typed
+//! errors, not panics.
 //!
 //! Book: §4.11; Golub & Van Loan, *Matrix Computations*, Alg. 3.4.1, §3.4.6; HW §IV.8.
 
 use faer::c64;
-use vectrix_ode::implicit::{DenseLu, LuScalar, SingularPivot};
+use vectrix_ode::implicit::{DenseLu, LuError, LuScalar};
 
 /// 1e-13 = 450 ε: the residual bound, generous for n ≤ 20 (the backward error of GEPP is a
 /// small multiple of n·ε·ρ with growth factor ρ of order one on these matrices); a real
@@ -57,7 +58,7 @@ fn relative_residual<T: LuScalar>(a: &[T], x_true: &[T], size: impl Fn(T) -> f64
     let mut lu = DenseLu::<T>::new(n);
     lu.factor(a).expect("well-conditioned matrix refused");
     let mut x = b.clone();
-    lu.solve(&mut x);
+    lu.solve(&mut x).unwrap();
     let ax = matvec(&x);
     let inf = |v: &[T]| v.iter().map(|e| size(*e)).fold(0.0, f64::max);
     // ‖A‖∞: the largest row sum
@@ -125,7 +126,7 @@ fn zero_leading_pivot_needs_the_row_swap() {
     let mut lu = DenseLu::<f64>::new(2);
     lu.factor(&[0.0, 1.0, 1.0, 0.0]).unwrap();
     let mut x = [2.0, 3.0];
-    lu.solve(&mut x);
+    lu.solve(&mut x).unwrap();
     assert_eq!(x, [3.0, 2.0]);
 }
 
@@ -135,14 +136,17 @@ fn singular_matrices_refused_with_the_column() {
     // column 1 = column 0 (entries powers of two, so elimination is exact): after the first
     // step column 1 is zero below the diagonal
     let a = [1.0, 1.0, 1.0, 2.0, 2.0, 4.0, 4.0, 4.0, 2.0];
-    assert_eq!(lu.factor(&a), Err(SingularPivot { index: 1 }));
+    assert_eq!(lu.factor(&a), Err(LuError::Singular { index: 1 }));
     // a zero column: the first pivot is zero
-    assert_eq!(lu.factor(&[0.0, 1.0, 2.0, 0.0, 3.0, 4.0, 0.0, 5.0, 7.0]), Err(SingularPivot { index: 0 }));
+    assert_eq!(
+        lu.factor(&[0.0, 1.0, 2.0, 0.0, 3.0, 4.0, 0.0, 5.0, 7.0]),
+        Err(LuError::Singular { index: 0 })
+    );
     // complex: [[1, i], [i, −1]] has rows proportional (row 1 = i·row 0)
     let i = c64::new(0.0, 1.0);
     let one = c64::new(1.0, 0.0);
     let mut lc = DenseLu::<c64>::new(2);
-    assert_eq!(lc.factor(&[one, i, i, -one]), Err(SingularPivot { index: 1 }));
+    assert_eq!(lc.factor(&[one, i, i, -one]), Err(LuError::Singular { index: 1 }));
 }
 
 #[test]
@@ -168,11 +172,11 @@ fn buffers_reusable_after_a_refusal() {
     assert!(lu.factor(&[1.0, 2.0, 2.0, 4.0]).is_err());
     lu.factor(&[2.0, 1.0, 1.0, 3.0]).unwrap();
     let mut x = [3.0, 4.0]; // (1, 1)
-    lu.solve(&mut x);
+    lu.solve(&mut x).unwrap();
     assert!((x[0] - 1.0).abs() <= 4.0 * f64::EPSILON && (x[1] - 1.0).abs() <= 4.0 * f64::EPSILON, "{x:?}");
     lu.factor(&[0.0, 3.0, 5.0, 1.0]).unwrap();
     let mut x = [6.0, 7.0]; // (1, 2)
-    lu.solve(&mut x);
+    lu.solve(&mut x).unwrap();
     assert!((x[0] - 1.0).abs() <= 4.0 * f64::EPSILON && (x[1] - 2.0).abs() <= 4.0 * f64::EPSILON, "{x:?}");
 }
 
@@ -183,15 +187,34 @@ fn tiny_pivots_are_not_singular() {
     let mut lu = DenseLu::<f64>::new(2);
     lu.factor(&[1e-300, 0.0, 0.0, 1.0]).unwrap();
     let mut x = [1e-300, 2.0];
-    lu.solve(&mut x);
+    lu.solve(&mut x).unwrap();
     // x₀ = 1e-300 · (1/1e-300): the reciprocal rounds once more than a division
     assert!((x[0] - 1.0).abs() <= 2.0 * f64::EPSILON && x[1] == 2.0, "{x:?}");
     let mut lc = DenseLu::<c64>::new(2);
     let (z, one) = (c64::new(0.0, 0.0), c64::new(1.0, 0.0));
     lc.factor(&[c64::new(0.0, 1e-300), z, z, one]).unwrap();
     let mut x = [c64::new(1e-300, 0.0), one];
-    lc.solve(&mut x);
+    lc.solve(&mut x).unwrap();
     // 1e-300 / (1e-300 i) = −i
     assert!((x[0] - c64::new(0.0, -1.0)).norm() <= 2.0 * f64::EPSILON, "{:?}", x[0]);
     assert!(lu.factor(&[1e-320, 0.0, 0.0, 1.0]).is_err(), "subnormal pivot 1e-320 accepted");
+}
+
+#[test]
+fn wrong_sizes_and_missing_factors_are_typed_errors() {
+    // the crate's contract: a typed error, never a panic or a wrong value in Ok
+    let mut lu = DenseLu::<f64>::new(2);
+    let mut x = [1.0, 2.0];
+    assert_eq!(lu.solve(&mut x), Err(LuError::NotFactored));
+    assert_eq!(x, [1.0, 2.0]);
+    assert_eq!(lu.factor(&[1.0; 3]), Err(LuError::WrongSize { what: "matrix", got: 3, expected: 4 }));
+    lu.factor(&[1.0, 0.0, 0.0, 1.0]).unwrap();
+    let mut short = [1.0];
+    assert_eq!(
+        lu.solve(&mut short),
+        Err(LuError::WrongSize { what: "right-hand side", got: 1, expected: 2 })
+    );
+    // a refused factorisation leaves no factors behind
+    assert!(lu.factor(&[0.0; 4]).is_err());
+    assert_eq!(lu.solve(&mut x), Err(LuError::NotFactored));
 }

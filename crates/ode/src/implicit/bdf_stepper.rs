@@ -283,7 +283,9 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             for (i, dyi) in dy.iter_mut().enumerate() {
                 *dyi = c * fy.as_slice()[i] - psi[i] - d[i];
             }
-            self.lu.solve(dy);
+            // the factors are valid (lu_c is Some) and dy has length n
+            let solved = self.lu.solve(dy);
+            debug_assert!(solved.is_ok(), "{solved:?}");
             let dy_norm = rms_scaled(dy, scale);
             if !dy_norm.is_finite() {
                 break;

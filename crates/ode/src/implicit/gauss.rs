@@ -257,7 +257,9 @@ fn newton<S: State, F: FnMut(f64, &S) -> S>(
             let (i, k) = (r / d, r % d);
             *gr = -z[r] + h * (0..s).map(|j| a[i * s + j] * fz[j].as_slice()[k]).sum::<f64>();
         }
-        lu.solve(g);
+        // factored above, g of length s·d: cannot fail
+        let solved = lu.solve(g);
+        debug_assert!(solved.is_ok(), "{solved:?}");
         work.newton_iterations += 1;
         let mut norm = 0.0_f64;
         for (r, zr) in z.iter_mut().enumerate() {

@@ -99,15 +99,31 @@ impl LuScalar for c64 {
     }
 }
 
-/// A matrix refused by [`DenseLu::factor`]: singular to working precision (a zero pivot) or
-/// with a NaN or infinite entry in its factors.
+/// Why [`DenseLu`] refused a matrix or a right-hand side.
 ///
 /// Book: Golub & Van Loan, Algorithm 3.4.1.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
-#[error("LU factorisation refused: pivot {index} is zero or the factors are not finite")]
-pub struct SingularPivot {
-    /// The elimination step (column) where a zero or non-finite pivot or entry appeared.
-    pub index: usize,
+pub enum LuError {
+    /// The matrix is singular to working precision (a zero pivot, or one whose reciprocal
+    /// overflows) or a NaN or infinite entry appeared in its factors.
+    #[error("LU factorisation refused at column {index}: zero or non-finite pivot or factor entry")]
+    Singular {
+        /// The elimination step (column) where it was found.
+        index: usize,
+    },
+    /// A matrix or right-hand side whose length is not n² or n.
+    #[error("{what} has length {got}, expected {expected}")]
+    WrongSize {
+        /// `"matrix"` or `"right-hand side"`.
+        what: &'static str,
+        /// Its length.
+        got: usize,
+        /// The length required.
+        expected: usize,
+    },
+    /// [`DenseLu::solve`] before a successful factorisation (or after a refused one).
+    #[error("no factors to solve with: the last factorisation failed or none was made")]
+    NotFactored,
 }
 
 /// PA = LU of an n×n matrix, factored in place: the matrix, its factors and the pivots live
@@ -127,7 +143,7 @@ pub struct SingularPivot {
 /// let mut lu = DenseLu::<f64>::new(2);
 /// lu.factor(&[0.0, 2.0, 1.0, 1.0]).unwrap();
 /// let mut x = [4.0, 3.0]; // b
-/// lu.solve(&mut x); // x = A⁻¹b = (1, 2)
+/// lu.solve(&mut x).unwrap(); // x = A⁻¹b = (1, 2)
 /// assert!((x[0] - 1.0).abs() < 1e-15 && (x[1] - 2.0).abs() < 1e-15);
 /// ```
 ///
@@ -143,12 +159,21 @@ pub struct DenseLu<T: LuScalar> {
     dinv: Vec<T>,
     /// faer's factors, for n > [`LuScalar::UNBLOCKED_MAX_N`].
     blocked: Option<PartialPivLu<T>>,
+    /// `true` after a successful factorisation (solves are refused otherwise).
+    factored: bool,
 }
 
 impl<T: LuScalar> DenseLu<T> {
     /// Buffers for n×n matrices (n² entries and n pivots), allocated once.
     pub fn new(n: usize) -> Self {
-        Self { n, a: vec![T::ZERO; n * n], piv: (0..n).collect(), dinv: vec![T::ZERO; n], blocked: None }
+        Self {
+            n,
+            a: vec![T::ZERO; n * n],
+            piv: (0..n).collect(),
+            dinv: vec![T::ZERO; n],
+            blocked: None,
+            factored: false,
+        }
     }
 
     /// n.
@@ -159,13 +184,13 @@ impl<T: LuScalar> DenseLu<T> {
     /// Factors the row-major matrix `a` (n² entries, (i, j) at i·n + j).
     ///
     /// # Errors
-    /// [`SingularPivot`] as [`DenseLu::factor_with`].
-    ///
-    /// # Panics
-    /// If `a.len()` ≠ n² (a programming error, not a numerical one).
-    pub fn factor(&mut self, a: &[T]) -> Result<(), SingularPivot> {
-        assert_eq!(a.len(), self.n * self.n, "DenseLu::factor: matrix of the wrong size");
+    /// [`LuError::WrongSize`] if `a.len()` ≠ n², else as [`DenseLu::factor_with`].
+    pub fn factor(&mut self, a: &[T]) -> Result<(), LuError> {
         let n = self.n;
+        if a.len() != n * n {
+            self.factored = false;
+            return Err(LuError::WrongSize { what: "matrix", got: a.len(), expected: n * n });
+        }
         self.factor_with(|i, j| a[i * n + j])
     }
 
@@ -179,12 +204,20 @@ impl<T: LuScalar> DenseLu<T> {
     /// the factors are then unusable until the next successful `factor`.
     ///
     /// # Errors
-    /// [`SingularPivot`] naming the column where elimination stopped.
-    pub fn factor_with(&mut self, mut entry: impl FnMut(usize, usize) -> T) -> Result<(), SingularPivot> {
+    /// [`LuError::Singular`] naming the column where elimination stopped.
+    pub fn factor_with(&mut self, entry: impl FnMut(usize, usize) -> T) -> Result<(), LuError> {
+        let result = if self.n > T::UNBLOCKED_MAX_N {
+            self.factor_blocked(entry)
+        } else {
+            self.factor_unblocked(entry)
+        };
+        self.factored = result.is_ok();
+        result
+    }
+
+    /// Alg. 3.4.1 in place in the stored buffer.
+    fn factor_unblocked(&mut self, mut entry: impl FnMut(usize, usize) -> T) -> Result<(), LuError> {
         let n = self.n;
-        if n > T::UNBLOCKED_MAX_N {
-            return self.factor_blocked(entry);
-        }
         for j in 0..n {
             for i in 0..n {
                 self.a[j * n + i] = entry(i, j);
@@ -195,14 +228,14 @@ impl<T: LuScalar> DenseLu<T> {
         }
         // a NaN or ∞ off the diagonal of U or in L does not show in the pivots
         match self.a.iter().position(|v| !v.finite()) {
-            Some(p) => Err(SingularPivot { index: p / n }),
+            Some(p) => Err(LuError::Singular { index: p / n }),
             None => Ok(()),
         }
     }
 
     /// Step k of Alg. 3.4.1: choose the pivot, swap rows, form column k of L and update the
     /// trailing (n−k−1)×(n−k−1) block by the outer product, column by column.
-    fn eliminate(&mut self, k: usize) -> Result<(), SingularPivot> {
+    fn eliminate(&mut self, k: usize) -> Result<(), LuError> {
         let n = self.n;
         // pivot: the largest |a_ik|, i ≥ k (the first on ties; NaN never wins)
         let col_k = &self.a[k * n..(k + 1) * n];
@@ -226,7 +259,7 @@ impl<T: LuScalar> DenseLu<T> {
         // working precision); a non-finite one means A or the update overflowed; a pivot so
         // small (< 2⁻¹⁰²⁴) that its reciprocal overflows is refused with them
         if big == 0.0 || !pivot.finite() || !r.finite() {
-            return Err(SingularPivot { index: k });
+            return Err(LuError::Singular { index: k });
         }
         self.dinv[k] = r;
         let (left, right) = self.a.split_at_mut((k + 1) * n);
@@ -247,7 +280,7 @@ impl<T: LuScalar> DenseLu<T> {
 
     /// faer's blocked LU of the matrix given entrywise (n > [`LuScalar::UNBLOCKED_MAX_N`]), refused
     /// when a diagonal entry of U is zero or not finite (as before this module existed).
-    fn factor_blocked(&mut self, entry: impl FnMut(usize, usize) -> T) -> Result<(), SingularPivot> {
+    fn factor_blocked(&mut self, entry: impl FnMut(usize, usize) -> T) -> Result<(), LuError> {
         self.blocked = None;
         let lu = Mat::<T>::from_fn(self.n, self.n, entry).partial_piv_lu();
         let u = lu.U();
@@ -255,7 +288,7 @@ impl<T: LuScalar> DenseLu<T> {
             let d = u[(k, k)];
             !d.finite() || d.size() == 0.0
         }) {
-            return Err(SingularPivot { index: k });
+            return Err(LuError::Singular { index: k });
         }
         self.blocked = Some(lu);
         Ok(())
@@ -264,18 +297,24 @@ impl<T: LuScalar> DenseLu<T> {
     /// x ← A⁻¹x from the last successful factorisation: x ← Px, then Ly = x (forward, L unit
     /// lower), then Ux = y (backward). No allocation for n ≤ [`LuScalar::UNBLOCKED_MAX_N`].
     ///
-    /// # Panics
-    /// If `x.len()` ≠ n (a programming error).
-    pub fn solve(&self, x: &mut [T]) {
+    /// # Errors
+    /// [`LuError::WrongSize`] if `x.len()` ≠ n, [`LuError::NotFactored`] before a successful
+    /// factorisation; x is then unchanged.
+    pub fn solve(&self, x: &mut [T]) -> Result<(), LuError> {
         let n = self.n;
-        assert_eq!(x.len(), n, "DenseLu::solve: right-hand side of the wrong size");
+        if x.len() != n {
+            return Err(LuError::WrongSize { what: "right-hand side", got: x.len(), expected: n });
+        }
+        if !self.factored {
+            return Err(LuError::NotFactored);
+        }
         if let Some(lu) = &self.blocked {
             let mut m = Mat::<T>::from_fn(n, 1, |i, _| x[i]);
             lu.solve_in_place(m.as_mut());
             for (i, xi) in x.iter_mut().enumerate() {
                 *xi = m[(i, 0)];
             }
-            return;
+            return Ok(());
         }
         // x ← P x, the interchanges in the order they were made
         for (k, &p) in self.piv.iter().enumerate() {
@@ -298,5 +337,6 @@ impl<T: LuScalar> DenseLu<T> {
                 *xi -= *uij * xj;
             }
         }
+        Ok(())
     }
 }

@@ -17,7 +17,7 @@ mod verlet;
 pub use bdf::{Bdf, BdfFormula};
 pub use bdf_stepper::BdfStepper;
 pub use gauss::GaussLegendre;
-pub use lu::{DenseLu, LuScalar, SingularPivot};
+pub use lu::{DenseLu, LuError, LuScalar};
 pub use radau_core::NoJacobian;
 pub use radau_stepper::RadauStepper;
 pub use radau5::{Radau5, RadauIIA};

@@ -123,7 +123,9 @@ impl Factors {
 
     /// x ← E₁⁻¹ x.
     pub(crate) fn solve_real(&self, x: &mut [f64]) {
-        self.e1.solve(x);
+        // sizes match and the factors are valid whenever `h` is `Some` (the callers' invariant)
+        let solved = self.e1.solve(x);
+        debug_assert!(solved.is_ok(), "{solved:?}");
     }
 
     /// One simplified-Newton correction in transformed variables (`SLVRAD`): given the
@@ -138,12 +140,13 @@ impl Factors {
             z2[i] += s2 * self.alphn - s3 * self.betan;
             z3[i] += s3 * self.alphn + s2 * self.betan;
         }
-        self.e1.solve(z1);
+        self.solve_real(z1);
         // (z₂ + i z₃) ← E₂⁻¹ (z₂ + i z₃)
         for (c, (a, b)) in self.zc.iter_mut().zip(z2.iter().zip(z3.iter())) {
             *c = c64::new(*a, *b);
         }
-        self.e2.solve(&mut self.zc);
+        let solved = self.e2.solve(&mut self.zc);
+        debug_assert!(solved.is_ok(), "{solved:?}");
         for (c, (a, b)) in self.zc.iter().zip(z2.iter_mut().zip(z3.iter_mut())) {
             (*a, *b) = (c.re, c.im);
         }
