@@ -218,3 +218,17 @@ fn wrong_sizes_and_missing_factors_are_typed_errors() {
     assert!(lu.factor(&[0.0; 4]).is_err());
     assert_eq!(lu.solve(&mut x), Err(LuError::NotFactored));
 }
+
+#[test]
+fn huge_pivots_complex_reciprocal_does_not_overflow() {
+    // |z|² of z = 1e200(1 + i) overflows; Smith's reciprocal does not form it
+    let mut lc = DenseLu::<c64>::new(1);
+    let z = c64::new(1e200, 1e200);
+    lc.factor(&[z]).unwrap();
+    let mut x = [z];
+    lc.solve(&mut x).unwrap();
+    assert!((x[0] - c64::new(1.0, 0.0)).norm() <= 4.0 * f64::EPSILON, "{:?}", x[0]);
+    // a pivot above 2¹⁰²² has a subnormal reciprocal: refused as badly scaled
+    let mut lu = DenseLu::<f64>::new(1);
+    assert!(lu.factor(&[f64::MAX]).is_err());
+}

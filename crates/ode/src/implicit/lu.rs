@@ -56,7 +56,7 @@ pub trait LuScalar:
     /// `true` when every part is finite.
     fn finite(self) -> bool;
     /// 1/x, without intermediate overflow for complex x (Smith's algorithm); not finite when
-    /// |x| is below about 2⁻¹⁰²⁴.
+    /// |x| is below about 2⁻¹⁰²⁴, subnormal (fewer significant bits) above about 2¹⁰²².
     fn recip(self) -> Self;
 }
 
@@ -84,17 +84,17 @@ impl LuScalar for c64 {
         self.re.is_finite() && self.im.is_finite()
     }
     fn recip(self) -> Self {
-        // Smith (1962): 1/(a + ib) = (1 − i r)/(a + b r), r = b/a, for |a| ≥ |b| (and the
-        // mirror case), so that a² + b² is never formed
+        // Smith (1962): 1/(a + ib) = (1 − i r)/(a(1 + r²)), r = b/a, for |a| ≥ |b| (and the
+        // mirror case); 1/a is formed first, so neither a² + b² nor a(1 + r²) can overflow
         let (a, b) = (self.re, self.im);
         if a.abs() >= b.abs() {
             let r = b / a;
-            let d = a + b * r;
-            c64::new(1.0 / d, -r / d)
+            let inv = (1.0 / a) / (1.0 + r * r);
+            c64::new(inv, -r * inv)
         } else {
             let r = a / b;
-            let d = a * r + b;
-            c64::new(r / d, -1.0 / d)
+            let inv = (1.0 / b) / (1.0 + r * r);
+            c64::new(r * inv, -inv)
         }
     }
 }
@@ -199,9 +199,10 @@ impl<T: LuScalar> DenseLu<T> {
     ///
     /// # Degenerate inputs
     /// A pivot that is exactly zero (A singular to working precision after the row
-    /// interchanges), one whose reciprocal overflows (|uₖₖ| < 2⁻¹⁰²⁴, for n ≤
-    /// [`LuScalar::UNBLOCKED_MAX_N`]) or any non-finite entry of L or U refuses the matrix;
-    /// the factors are then unusable until the next successful `factor`.
+    /// interchanges), one whose reciprocal is not a finite normal number (|uₖₖ| below about
+    /// 2⁻¹⁰²⁴ or above 2¹⁰²², for n ≤ [`LuScalar::UNBLOCKED_MAX_N`]: such a matrix is badly
+    /// scaled beyond what the integrators meet) or any non-finite entry of L or U refuses the
+    /// matrix; the factors are then unusable until the next successful `factor`.
     ///
     /// # Errors
     /// [`LuError::Singular`] naming the column where elimination stopped.
@@ -257,8 +258,9 @@ impl<T: LuScalar> DenseLu<T> {
         let r = pivot.recip();
         // singular branch: a zero pivot means every candidate was zero (A is singular to
         // working precision); a non-finite one means A or the update overflowed; a pivot so
-        // small (< 2⁻¹⁰²⁴) that its reciprocal overflows is refused with them
-        if big == 0.0 || !pivot.finite() || !r.finite() {
+        // small (< 2⁻¹⁰²⁴) that its reciprocal overflows, or so large (> 2¹⁰²²) that it is
+        // subnormal and would cost the solution its precision, is refused with them
+        if big == 0.0 || !pivot.finite() || !r.finite() || r.size() < f64::MIN_POSITIVE {
             return Err(LuError::Singular { index: k });
         }
         self.dinv[k] = r;
