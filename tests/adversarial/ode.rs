@@ -335,6 +335,46 @@ cases! {
         refused(stormer_verlet(|_, _q: &Vec<f64>| vec![f64::NAN], 0.0, &vec![1.0], &vec![0.0], 1.0, 4, |_, _, _| {}), "Verlet(NaN a)");
     }
 
+    // The stiff integrators' dense LU: every hostile value at every entry of a 3×3 matrix is
+    // refused or gives a finite solution; wrong sizes and solves without factors are typed
+    // errors; n = 0 is the empty system; the sealed scalar helpers on hostile values.
+    dense_lu ["DenseLu::new", "DenseLu::dim", "DenseLu::factor", "DenseLu::factor_with", "DenseLu::solve",
+        "LuScalar::size", "LuScalar::finite", "LuScalar::recip"] {
+        use faer::c64;
+        use vectrix::ode::implicit::{DenseLu, LuScalar};
+        let mut lu = DenseLu::<f64>::new(3);
+        assert_eq!(lu.dim(), 3);
+        refused(lu.solve(&mut [1.0, 2.0, 3.0]), "solve before factor");
+        for x in hostile() {
+            for pos in 0..9 {
+                let mut a = [4.0, 1.0, 0.0, 1.0, 4.0, 1.0, 0.0, 1.0, 4.0];
+                a[pos] = x;
+                let mut b = [1.0, 2.0, 3.0];
+                err_or(lu.factor(&a).and_then(|()| lu.solve(&mut b)), "factor+solve(hostile entry)", |()| fin(&b));
+                let mut lc = DenseLu::<c64>::new(2);
+                let z = c64::new(x, 1.0);
+                let mut bc = [c64::new(1.0, 0.0); 2];
+                let ok = lc.factor_with(|i, j| if i == j { z } else { c64::new(0.5, 0.0) }).and_then(|()| lc.solve(&mut bc));
+                err_or(ok, "complex factor_with+solve(hostile diagonal)", |()| bc.iter().all(|v| v.finite()));
+            }
+            assert!(x.size() >= 0.0 || x.is_nan());
+            assert_eq!(x.finite(), x.is_finite());
+            assert!(x.recip().is_nan() || x.recip() == 1.0 / x);
+            // Smith's reciprocal: no overflow of |z|² at |z| ~ 1e300, z·(1/z) = 1 where 1/z is normal
+            let z = c64::new(x, x);
+            let rc = z.recip();
+            if x.is_finite() && x.abs() > 1e-300 && x.abs() < 1e300 {
+                assert!((rc * z - c64::new(1.0, 0.0)).norm() <= 4.0 * f64::EPSILON, "{z:?} {rc:?}");
+            }
+        }
+        refused(lu.factor(&[1.0; 4]), "factor(wrong size)");
+        lu.factor(&[4.0, 1.0, 0.0, 1.0, 4.0, 1.0, 0.0, 1.0, 4.0]).unwrap();
+        refused(lu.solve(&mut [1.0]), "solve(wrong size)");
+        refused(lu.factor(&[0.0; 9]).and_then(|()| lu.solve(&mut [1.0; 3])), "singular, then solve");
+        let mut empty = DenseLu::<f64>::new(0);
+        err_or(empty.factor(&[]).and_then(|()| empty.solve(&mut [])), "n = 0", |()| true);
+    }
+
     // Lie-group methods (Munthe-Kaas, Crouch–Grossman): the rotor stays unit; NaN angular
     // velocities are refused.
     lie_methods ["integrate_lie", "LieMethod::name", "LieMethod::order", "dexpinv", "LieGroup::exp", "LieGroup::compose",

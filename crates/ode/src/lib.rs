@@ -9,7 +9,7 @@
 //!   to drive any of them step by step; [`Solver`] holds the settings all adaptive methods
 //!   share and [`Progress`] where a step-by-step run stands;
 //! * Gauss–Legendre collocation ([`GaussLegendre`]: implicit midpoint, 2 and 3 stages, Newton
-//!   with faer) and Störmer–Verlet ([`stormer_verlet`]);
+//!   with the dense LU of [`implicit::DenseLu`]) and Störmer–Verlet ([`stormer_verlet`]);
 //! * Lie-group methods for attitude ([`LieMethod`]: exponential Euler, RKMK4,
 //!   Crouch–Grossman) over a small [`LieGroup`] trait, and the exact quaternion step
 //!   [`quaternion_exact_step`] (4.11.17);

@@ -3,7 +3,7 @@
 //!
 //! Book: §4.11; HW §III.5, §V.5; Shampine & Reichelt 1997 (scipy `BDF._step_impl`).
 
-use super::{BdfStepper, Failure, MAX_FACTOR, MAX_ORDER, MIN_FACTOR, error_const, gamma};
+use super::{BdfStepper, Failure, MAX_FACTOR, MAX_ORDER, MIN_FACTOR, Scratch, error_const, gamma};
 
 /// Consecutive failed Newton solves (or singular matrices) in one step before giving up.
 const MAX_FAILURES: usize = 10;
@@ -27,6 +27,15 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
         if self.p.done() {
             return Ok(());
         }
+        // the step's buffers are lent out for its duration and returned on every exit
+        let mut ws = core::mem::take(&mut self.ws);
+        let result = self.step_with(&mut ws);
+        self.ws = ws;
+        result
+    }
+
+    /// The body of [`BdfStepper::step`], with the buffers `ws` (allocated once per run).
+    fn step_with(&mut self, ws: &mut Scratch) -> Result<(), OdeError> {
         let t = self.p.t;
         // the floor: 10 units in the last place of t (scipy's `min_step`)
         let min_step = 10.0 * (t.abs() * f64::EPSILON).max(f64::MIN_POSITIVE);
@@ -34,7 +43,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
         if h > self.p.h_max {
             self.rescale(self.p.h_max / h);
             h = self.p.h_max;
-            self.lu = None;
+            self.lu_c = None;
         }
         let mut failures: Option<(Failure, Option<OdeError>, usize)> = None;
         loop {
@@ -49,24 +58,25 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             if t_new >= self.p.t_end {
                 t_new = self.p.t_end;
                 self.rescale((t_new - t) / h);
-                self.lu = None;
+                self.lu_c = None;
             }
             h = t_new - t;
             let k = self.order;
             let n = self.d[0].len();
             // predictor y⁽⁰⁾ = Σⱼ₌₀ᵏ Dⱼ, ψ = Σⱼ₌₁ᵏ γⱼDⱼ/γₖ, c = h/γₖ
-            let y_pred: Vec<f64> = (0..n).map(|i| (0..=k).map(|j| self.d[j][i]).sum()).collect();
-            let scale: Vec<f64> = y_pred.iter().map(|y| self.cfg.atol + self.cfg.rtol * y.abs()).collect();
             let gk = gamma(k);
-            let psi: Vec<f64> =
-                (0..n).map(|i| (1..=k).map(|j| gamma(j) * self.d[j][i]).sum::<f64>() / gk).collect();
+            for i in 0..n {
+                ws.y_pred[i] = (0..=k).map(|j| self.d[j][i]).sum();
+                ws.scale[i] = self.cfg.atol + self.cfg.rtol * ws.y_pred[i].abs();
+                ws.psi[i] = (1..=k).map(|j| gamma(j) * self.d[j][i]).sum::<f64>() / gk;
+            }
             let c = h / gk;
             let mut fresh_jac = false;
             let outcome = loop {
                 if !self.factorize(c) {
                     break Err(Failure::Singular);
                 }
-                let nw = self.newton(t_new, &y_pred, c, &psi, &scale);
+                let nw = self.newton(t_new, c, ws);
                 if nw.converged {
                     break Ok(nw);
                 }
@@ -76,7 +86,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
                     break Err(Failure::Newton);
                 }
                 // Newton failed with an old J: refresh it at the predictor and retry once
-                self.refresh_jacobian(t_new, &y_pred)?;
+                self.refresh_jacobian(t_new, &ws.y_pred)?;
                 fresh_jac = true;
             };
             let nw = match outcome {
@@ -92,17 +102,19 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
                     }
                     h *= 0.5;
                     self.rescale(0.5);
-                    self.lu = None;
+                    self.lu_c = None;
                     self.p.work.rejected += 1;
                     continue;
                 }
             };
             let cap = self.cfg.method.max_newton as f64;
             let safety = 0.9 * (2.0 * cap + 1.0) / (2.0 * cap + nw.iterations as f64);
-            let scale: Vec<f64> = nw.y.iter().map(|y| self.cfg.atol + self.cfg.rtol * y.abs()).collect();
-            // local error (1/(k+1))·∇ᵏ⁺¹yₙ₊₁ (HW (III.5.9), κ = 0)
-            let err: Vec<f64> = nw.d.iter().map(|d| error_const(k) * d).collect();
-            let err_norm = rms_scaled(&err, &scale);
+            // local error (1/(k+1))·∇ᵏ⁺¹yₙ₊₁ (HW (III.5.9), κ = 0), scaled at the new y
+            for i in 0..n {
+                ws.scale[i] = self.cfg.atol + self.cfg.rtol * ws.y[i].abs();
+                ws.err[i] = error_const(k) * ws.d[i];
+            }
+            let err_norm = rms_scaled(&ws.err, &ws.scale);
             // a NaN norm fails the test too
             if err_norm.is_nan() || err_norm > 1.0 {
                 let factor = if err_norm.is_finite() {
@@ -116,7 +128,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
                 // Newton converged: its factors are kept (scipy), refactorized only when it fails
                 continue;
             }
-            self.accept(t_new, h, nw.y, &nw.d, &scale, err_norm, safety);
+            self.accept(t_new, h, ws, err_norm, safety);
             return Ok(());
         }
     }
@@ -135,19 +147,11 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
 
     /// Moves to the accepted step's end, updates the differences, and every k + 1 equal steps
     /// picks the order k − 1, k or k + 1 that allows the largest next step (HW §V.5).
-    #[allow(clippy::too_many_arguments)]
-    fn accept(
-        &mut self,
-        t_new: f64,
-        h: f64,
-        y_new: Vec<f64>,
-        d: &[f64],
-        scale: &[f64],
-        err_norm: f64,
-        safety: f64,
-    ) {
+    /// `ws` holds the new y, d = ∇ᵏ⁺¹yₙ₊₁ and the error scale at the new y.
+    fn accept(&mut self, t_new: f64, h: f64, ws: &Scratch, err_norm: f64, safety: f64) {
+        let (d, scale) = (&ws.d[..], &ws.scale[..]);
         let mut y1 = self.p.y.clone();
-        y1.as_mut_slice().copy_from_slice(&y_new);
+        y1.as_mut_slice().copy_from_slice(&ws.y);
         self.p.advance(t_new, y1);
         self.p.h = h;
         self.n_equal_steps += 1;
@@ -190,7 +194,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
         let factor = if factor.is_finite() && factor > 0.0 { factor } else { 1.0 };
         self.p.h = h * factor;
         self.rescale(factor);
-        self.lu = None;
+        self.lu_c = None;
     }
 
     /// The polynomial interpolating the last k + 1 accepted points (the differences of the

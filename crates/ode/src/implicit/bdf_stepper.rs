@@ -4,11 +4,9 @@
 //!
 //! Book: §4.11; HW §III.5, §V.5; Shampine & Reichelt 1997; Byrne & Hindmarsh 1975.
 
-use faer::Mat;
-use faer::linalg::solvers::PartialPivLu;
-
 use super::bdf::Bdf;
-use super::radau_core::{NoJacobian, jacobian_into, lu_real, rms_scaled, solve_real};
+use super::lu::DenseLu;
+use super::radau_core::{NoJacobian, jacobian_into, rms_scaled};
 use crate::explicit::{DenseStep, Steps};
 use crate::progress::Progress;
 use crate::state::{State, check_state, eval};
@@ -77,10 +75,16 @@ pub struct BdfStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [
     d: Vec<Vec<f64>>,
     order: usize,
     n_equal_steps: usize,
-    /// ∂f/∂y, and whether it was evaluated during the current step.
-    jm: Mat<f64>,
-    /// LU of I − cJ and its c.
-    lu: Option<(PartialPivLu<f64>, f64)>,
+    /// ∂f/∂y, row-major (entry (i, j) at i·n + j).
+    jm: Vec<f64>,
+    /// LU of I − cJ, factorized in place (buffers allocated once), and its c; `None` when
+    /// stale or refused.
+    lu: DenseLu<f64>,
+    lu_c: Option<f64>,
+    /// The buffers of a step, allocated once (lent to each step by `step`).
+    ws: Scratch,
+    /// The state at a Newton iterate.
+    ys: S,
     newton_tol: f64,
 }
 
@@ -123,14 +127,35 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> f
     }
 }
 
-/// The outcome of one Newton solve of the BDF equation.
+/// The outcome of one Newton solve of the BDF equation (its y and d are in [`Scratch`]).
 struct Newton {
     converged: bool,
     iterations: usize,
-    y: Vec<f64>,
-    /// d = yₙ₊₁ − y⁽⁰⁾ = ∇ᵏ⁺¹yₙ₊₁.
-    d: Vec<f64>,
     error: Option<OdeError>,
+}
+
+/// The vectors of one BDF step, n each, allocated once per run.
+#[derive(Default)]
+struct Scratch {
+    /// Predictor y⁽⁰⁾ = Σⱼ₌₀ᵏ Dⱼ.
+    y_pred: Vec<f64>,
+    /// ψ = Σⱼ₌₁ᵏ γⱼDⱼ/γₖ.
+    psi: Vec<f64>,
+    /// atol + rtol·|y|: at the predictor for Newton, at the new y for the error test.
+    scale: Vec<f64>,
+    /// Newton's iterate y and d = y − y⁽⁰⁾ = ∇ᵏ⁺¹yₙ₊₁, and its correction Δ.
+    y: Vec<f64>,
+    d: Vec<f64>,
+    dy: Vec<f64>,
+    /// The local error (1/(k+1))·d.
+    err: Vec<f64>,
+}
+
+impl Scratch {
+    fn new(n: usize) -> Self {
+        let v = || vec![0.0; n];
+        Self { y_pred: v(), psi: v(), scale: v(), y: v(), d: v(), dy: v(), err: v() }
+    }
 }
 
 /// How a step attempt ended when it was not accepted.
@@ -186,7 +211,8 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             )?,
         };
         let n = y0.dim();
-        let mut jm = Mat::zeros(n, n);
+        let y0_copy = y0.clone();
+        let mut jm = vec![0.0; n * n];
         jacobian_into(&mut f, jac.as_mut(), t0, &y0, f0.as_slice(), &mut jm, &mut work)?;
         let mut d = vec![vec![0.0; n]; MAX_ORDER + 3];
         d[0].copy_from_slice(y0.as_slice());
@@ -204,7 +230,10 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             order: 1,
             n_equal_steps: 0,
             jm,
-            lu: None,
+            lu: DenseLu::new(n),
+            lu_c: None,
+            ws: Scratch::new(n),
+            ys: y0_copy,
             newton_tol: (10.0 * f64::EPSILON / cfg.rtol).max(0.03f64.min(cfg.rtol.sqrt())),
         })
     }
@@ -228,18 +257,21 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
     /// Simplified Newton on γₖ(y − y⁽⁰⁾) + ψ = h f(t, y) as scipy's `solve_bdf_system`:
     /// (I − cJ)Δ = c f(y) − ψ/γₖ·… − d with c = h/γₖ; stops on the rate test of
     /// Shampine & Reichelt (a rate ≥ 1 or one too slow for the remaining iterations fails).
-    fn newton(&mut self, t_new: f64, y_pred: &[f64], c: f64, psi: &[f64], scale: &[f64]) -> Newton {
+    fn newton(&mut self, t_new: f64, c: f64, ws: &mut Scratch) -> Newton {
+        let Scratch { y_pred, psi, scale, y, d, dy, .. } = ws;
         let n = y_pred.len();
         let cap = self.cfg.method.max_newton;
-        let (mut y, mut d) = (y_pred.to_vec(), vec![0.0; n]);
-        let mut ys = self.p.y.clone();
+        y.copy_from_slice(y_pred);
+        d.fill(0.0);
         let mut dy_norm_old: Option<f64> = None;
-        let mut out = Newton { converged: false, iterations: 0, y: Vec::new(), d: Vec::new(), error: None };
-        let Some((lu, _)) = self.lu.as_ref() else { return out };
+        let mut out = Newton { converged: false, iterations: 0, error: None };
+        if self.lu_c.is_none() {
+            return out;
+        }
         for k in 0..cap {
             out.iterations = k + 1;
-            ys.as_mut_slice().copy_from_slice(&y);
-            let fy = match eval(&mut self.f, t_new, &ys, self.p.t, 1, &mut self.p.work.fevals) {
+            self.ys.as_mut_slice().copy_from_slice(y);
+            let fy = match eval(&mut self.f, t_new, &self.ys, self.p.t, 1, &mut self.p.work.fevals) {
                 Ok(v) => v,
                 Err(e) => {
                     out.error = Some(e);
@@ -248,9 +280,13 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             };
             self.p.work.newton_iterations += 1;
             // Δ = (I − cJ)⁻¹ (c f − ψ − d)
-            let mut dy: Vec<f64> = (0..n).map(|i| c * fy.as_slice()[i] - psi[i] - d[i]).collect();
-            solve_real(lu, &mut dy);
-            let dy_norm = rms_scaled(&dy, scale);
+            for (i, dyi) in dy.iter_mut().enumerate() {
+                *dyi = c * fy.as_slice()[i] - psi[i] - d[i];
+            }
+            // the factors are valid (lu_c is Some) and dy has length n
+            let solved = self.lu.solve(dy);
+            debug_assert!(solved.is_ok(), "{solved:?}");
+            let dy_norm = rms_scaled(dy, scale);
             if !dy_norm.is_finite() {
                 break;
             }
@@ -270,8 +306,6 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             }
             dy_norm_old = Some(dy_norm);
         }
-        out.y = y;
-        out.d = d;
         out
     }
 
@@ -285,26 +319,25 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
             eval(&mut self.f, t, &ys, self.p.t, 1, &mut self.p.work.fevals)?.as_slice().to_vec()
         };
         jacobian_into(&mut self.f, self.jac_fn.as_mut(), t, &ys, &f0, &mut self.jm, &mut self.p.work)?;
-        self.lu = None;
+        self.lu_c = None;
         Ok(())
     }
 
     /// Factorizes I − cJ unless the factors for this c are at hand (or, after an error-test
     /// rejection, the previous ones are kept as scipy does); `false` when singular.
     fn factorize(&mut self, c: f64) -> bool {
-        if self.lu.is_some() {
+        if self.lu_c.is_some() {
             return true;
         }
-        let n = self.jm.nrows();
-        let m =
-            Mat::<f64>::from_fn(
-                n,
-                n,
-                |i, j| if i == j { 1.0 - c * self.jm[(i, j)] } else { -c * self.jm[(i, j)] },
-            );
+        let (n, jm) = (self.lu.dim(), &self.jm);
         self.p.work.factorizations += 1;
-        self.lu = lu_real(m).map(|lu| (lu, c));
-        self.lu.is_some()
+        // I − cJ
+        let ok = self
+            .lu
+            .factor_with(|i, j| if i == j { 1.0 - c * jm[i * n + j] } else { -c * jm[i * n + j] })
+            .is_ok();
+        self.lu_c = ok.then_some(c);
+        ok
     }
 }
 

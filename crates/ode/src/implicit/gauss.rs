@@ -1,10 +1,11 @@
 //! Gauss–Legendre collocation (implicit midpoint, 2 and 3 stages), solved by simplified
-//! Newton with faer's LU.
+//! Newton with the dense LU of [`DenseLu`] (buffers allocated once per run).
 
 use std::time::Instant;
 
 use faer::Mat;
-use faer::linalg::solvers::Solve;
+
+use super::lu::DenseLu;
 
 use crate::error::{check_interval, check_step};
 use crate::state::{State, check_state, eval};
@@ -138,6 +139,9 @@ impl GaussLegendre {
         let mut work = Work::default();
         let mut y = y0.clone();
         let mut jm = Mat::<f64>::zeros(d, d);
+        // the sd×sd Newton matrix and the residual, allocated once
+        let mut lu = DenseLu::<f64>::new(s * d);
+        let mut g = vec![0.0; s * d];
         for step in 0..n {
             let t = t0 + step as f64 * h;
             // J = ∂f/∂y at (t, y), once per step (simplified Newton)
@@ -160,7 +164,7 @@ impl GaussLegendre {
                 }
                 None => finite_difference(f, t, &y, &mut jm, &mut work)?,
             }
-            let z = newton(f, &jm, (&c, &a, s), t, &y, h, &mut work)?;
+            let z = newton(f, &jm, (&c, &a, s), t, &y, h, (&mut lu, &mut g), &mut work)?;
             // y₁ = y + h Σ bⱼ f(t + cⱼh, y + Zⱼ)
             let mut y1 = y.clone();
             for j in 0..s {
@@ -219,19 +223,23 @@ fn newton<S: State, F: FnMut(f64, &S) -> S>(
     t: f64,
     y: &S,
     h: f64,
+    (lu, g): (&mut DenseLu<f64>, &mut [f64]),
     work: &mut Work,
 ) -> Result<Vec<f64>, OdeError> {
     let d = y.dim();
     let sd = s * d;
     // M = I − h A⊗J
-    let m = Mat::<f64>::from_fn(sd, sd, |r, q| {
+    let factored = lu.factor_with(|r, q| {
         let (i, k) = (r / d, r % d);
         let (j, l) = (q / d, q % d);
         let id = if r == q { 1.0 } else { 0.0 };
         id - h * a[i * s + j] * jm[(k, l)]
     });
-    let lu = m.partial_piv_lu();
     work.factorizations += 1;
+    // singular branch: a zero or non-finite pivot (the corrections would not be finite)
+    if factored.is_err() {
+        return Err(OdeError::SingularNewtonMatrix { t, h });
+    }
     let ymax = y.as_slice().iter().fold(1.0_f64, |acc, v| acc.max(v.abs()));
     let tol = 4.0 * f64::EPSILON * ymax;
     let mut z = vec![0.0; sd];
@@ -245,15 +253,17 @@ fn newton<S: State, F: FnMut(f64, &S) -> S>(
             fz.push(eval(f, t + c[j] * h, &yj, t, j + 1, &mut work.fevals)?);
         }
         // residual G = −Z + h (A⊗I) F
-        let mut g = Mat::<f64>::from_fn(sd, 1, |r, _| {
+        for (r, gr) in g.iter_mut().enumerate() {
             let (i, k) = (r / d, r % d);
-            -z[r] + h * (0..s).map(|j| a[i * s + j] * fz[j].as_slice()[k]).sum::<f64>()
-        });
-        lu.solve_in_place(g.as_mut());
+            *gr = -z[r] + h * (0..s).map(|j| a[i * s + j] * fz[j].as_slice()[k]).sum::<f64>();
+        }
+        // factored above, g of length s·d: cannot fail
+        let solved = lu.solve(g);
+        debug_assert!(solved.is_ok(), "{solved:?}");
         work.newton_iterations += 1;
         let mut norm = 0.0_f64;
         for (r, zr) in z.iter_mut().enumerate() {
-            let dz = g[(r, 0)];
+            let dz = g[r];
             if !dz.is_finite() {
                 return Err(OdeError::SingularNewtonMatrix { t, h });
             }

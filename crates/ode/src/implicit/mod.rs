@@ -7,6 +7,7 @@
 mod bdf;
 mod bdf_stepper;
 mod gauss;
+mod lu;
 mod radau5;
 mod radau_core;
 mod radau_stepper;
@@ -16,6 +17,7 @@ mod verlet;
 pub use bdf::{Bdf, BdfFormula};
 pub use bdf_stepper::BdfStepper;
 pub use gauss::GaussLegendre;
+pub use lu::{DenseLu, LuError, LuScalar};
 pub use radau_core::NoJacobian;
 pub use radau_stepper::RadauStepper;
 pub use radau5::{Radau5, RadauIIA};

@@ -1,13 +1,14 @@
 //! The linear algebra of one RADAU5 step: the method's constants, the real and complex
-//! iteration matrices factorized by faer, the transformed simplified-Newton iteration, the
-//! embedded error estimate and the Jacobian by finite differences.
+//! iteration matrices factorized in place by [`DenseLu`], the transformed simplified-Newton
+//! iteration, the embedded error estimate and the Jacobian by finite differences.
 //!
 //! Book: §4.11; HW = Hairer & Wanner, *Solving Ordinary Differential Equations II*, §IV.8
 //! (implementation of implicit Runge–Kutta methods), and their `radau5.f` (`RADCOR`,
 //! `ESTRAD`, `SLVRAD`, `DECOMR`, `DECOMC`), whose constants and control are followed here.
 
-use faer::linalg::solvers::{PartialPivLu, Solve};
-use faer::{Mat, c64};
+use faer::c64;
+
+use super::lu::DenseLu;
 
 use crate::state::State;
 use crate::{OdeError, Work};
@@ -45,49 +46,92 @@ pub(crate) fn eigenvalues() -> (f64, f64, f64) {
     (u1, alph / cno, beta / cno)
 }
 
-/// The factorized iteration matrices at step size h: E₁ = (γ/h)I − J (real) and
-/// E₂ = ((α + iβ)/h)I − J (complex), `DECOMR`/`DECOMC` of `radau5.f`.
+/// The iteration matrices at step size h, factorized in place in buffers allocated once per
+/// run: E₁ = (γ/h)I − J (real) and E₂ = ((α + iβ)/h)I − J (complex), `DECOMR`/`DECOMC` of
+/// `radau5.f`, with the scratch of the Newton solves and the error estimate.
 pub(crate) struct Factors {
-    e1: PartialPivLu<f64>,
-    e2: PartialPivLu<c64>,
+    e1: DenseLu<f64>,
+    e2: DenseLu<c64>,
     /// γ/h.
     pub fac1: f64,
     /// α/h.
     pub alphn: f64,
     /// β/h.
     pub betan: f64,
-    /// The step size they were factorized for.
-    pub h: f64,
+    /// The step size they were factorized for; `None` when stale or refused.
+    h: Option<f64>,
+    /// γ, α, β of [`eigenvalues`], computed once (two cube roots).
+    gab: (f64, f64, f64),
+    /// Scratch: the complex right-hand side z₂ + i z₃, and the two vectors of the estimate.
+    zc: Vec<c64>,
+    f2: Vec<f64>,
+    cont: Vec<f64>,
 }
 
 impl Factors {
-    /// Factorizes both matrices; `None` when either is singular (a zero or non-finite pivot).
-    pub(crate) fn new(jac: &Mat<f64>, h: f64) -> Option<Self> {
-        let (u1, alph, beta) = eigenvalues();
-        let n = jac.nrows();
+    /// Buffers for n equations, nothing factorized yet.
+    pub(crate) fn new(n: usize) -> Self {
+        Self {
+            e1: DenseLu::new(n),
+            e2: DenseLu::new(n),
+            fac1: 0.0,
+            alphn: 0.0,
+            betan: 0.0,
+            h: None,
+            gab: eigenvalues(),
+            zc: vec![c64::new(0.0, 0.0); n],
+            f2: vec![0.0; n],
+            cont: vec![0.0; n],
+        }
+    }
+
+    /// The step size of the current factors, if they are usable.
+    pub(crate) fn h(&self) -> Option<f64> {
+        self.h
+    }
+
+    /// Marks the factors stale (a new Jacobian).
+    pub(crate) fn invalidate(&mut self) {
+        self.h = None;
+    }
+
+    /// Factorizes both matrices for J (row-major `jac`) and h in place; `false` when either
+    /// is singular (a zero or non-finite pivot or factor entry), the factors then stale.
+    pub(crate) fn factor(&mut self, jac: &[f64], h: f64) -> bool {
+        let (u1, alph, beta) = self.gab;
+        let n = self.e1.dim();
         let (fac1, alphn, betan) = (u1 / h, alph / h, beta / h);
-        let e1 = Mat::<f64>::from_fn(n, n, |i, j| if i == j { fac1 - jac[(i, j)] } else { -jac[(i, j)] });
-        let e2 = Mat::<c64>::from_fn(n, n, |i, j| {
-            if i == j { c64::new(alphn - jac[(i, j)], betan) } else { c64::new(-jac[(i, j)], 0.0) }
-        });
-        let e2 = e2.partial_piv_lu();
-        let ok2 = (0..n).all(|i| {
-            let u = e2.U()[(i, i)];
-            u.re.is_finite() && u.im.is_finite() && (u.re != 0.0 || u.im != 0.0)
-        });
-        let e1 = lu_real(e1)?;
-        ok2.then_some(Self { e1, e2, fac1, alphn, betan, h })
+        (self.fac1, self.alphn, self.betan) = (fac1, alphn, betan);
+        self.h = None;
+        // E₁ = (γ/h)I − J
+        let ok1 =
+            self.e1.factor_with(|i, j| if i == j { fac1 - jac[i * n + j] } else { -jac[i * n + j] }).is_ok();
+        // E₂ = ((α + iβ)/h)I − J
+        let ok2 = ok1
+            && self
+                .e2
+                .factor_with(|i, j| {
+                    let a = jac[i * n + j];
+                    if i == j { c64::new(alphn - a, betan) } else { c64::new(-a, 0.0) }
+                })
+                .is_ok();
+        if ok2 {
+            self.h = Some(h);
+        }
+        ok2
     }
 
     /// x ← E₁⁻¹ x.
     pub(crate) fn solve_real(&self, x: &mut [f64]) {
-        solve_real(&self.e1, x);
+        // sizes match and the factors are valid whenever `h` is `Some` (the callers' invariant)
+        let solved = self.e1.solve(x);
+        debug_assert!(solved.is_ok(), "{solved:?}");
     }
 
     /// One simplified-Newton correction in transformed variables (`SLVRAD`): given the
     /// transformed stage derivatives (z₁, z₂, z₃) ← T⁻¹F and the current transformed stage
     /// increments W = (f₁, f₂, f₃), overwrites z with ΔW.
-    pub(crate) fn solve_newton(&self, z: [&mut [f64]; 3], w: [&[f64]; 3]) {
+    pub(crate) fn solve_newton(&mut self, z: [&mut [f64]; 3], w: [&[f64]; 3]) {
         let [z1, z2, z3] = z;
         let n = z1.len();
         for i in 0..n {
@@ -97,34 +141,15 @@ impl Factors {
             z3[i] += s3 * self.alphn + s2 * self.betan;
         }
         self.solve_real(z1);
-        let mut m = Mat::<c64>::from_fn(n, 1, |i, _| c64::new(z2[i], z3[i]));
-        self.e2.solve_in_place(m.as_mut());
-        for i in 0..n {
-            z2[i] = m[(i, 0)].re;
-            z3[i] = m[(i, 0)].im;
+        // (z₂ + i z₃) ← E₂⁻¹ (z₂ + i z₃)
+        for (c, (a, b)) in self.zc.iter_mut().zip(z2.iter().zip(z3.iter())) {
+            *c = c64::new(*a, *b);
         }
-    }
-}
-
-/// The LU factors of a real matrix with partial pivoting (faer); `None` when a pivot is zero
-/// or not finite (the matrix is singular to working precision).
-pub(crate) fn lu_real(m: Mat<f64>) -> Option<PartialPivLu<f64>> {
-    let n = m.nrows();
-    let lu = m.partial_piv_lu();
-    (0..n)
-        .all(|i| {
-            let u = lu.U()[(i, i)];
-            u.is_finite() && u != 0.0
-        })
-        .then_some(lu)
-}
-
-/// x ← M⁻¹ x from the factors of M.
-pub(crate) fn solve_real(lu: &PartialPivLu<f64>, x: &mut [f64]) {
-    let mut m = Mat::<f64>::from_fn(x.len(), 1, |i, _| x[i]);
-    lu.solve_in_place(m.as_mut());
-    for (i, xi) in x.iter_mut().enumerate() {
-        *xi = m[(i, 0)];
+        let solved = self.e2.solve(&mut self.zc);
+        debug_assert!(solved.is_ok(), "{solved:?}");
+        for (c, (a, b)) in self.zc.iter().zip(z2.iter_mut().zip(z3.iter_mut())) {
+            (*a, *b) = (c.re, c.im);
+        }
     }
 }
 
@@ -158,39 +183,45 @@ pub(crate) fn rms_scaled(x: &[f64], scal: &[f64]) -> f64 {
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn estimate<S: State, F: FnMut(f64, &S) -> S>(
     f: &mut F,
-    lu: &Factors,
+    lu: &mut Factors,
     (t, y, f0): (f64, &S, &[f64]),
     z: [&[f64]; 3],
     scal: &[f64],
     first_or_reject: bool,
     work: &mut Work,
 ) -> Result<f64, OdeError> {
-    let h = lu.h;
+    let Some(h) = lu.h else { return Ok(f64::INFINITY) };
     let n = f0.len();
     let (hee1, hee2, hee3) = (DD1 / h, DD2 / h, DD3 / h);
-    let f2: Vec<f64> = (0..n).map(|i| hee1 * z[0][i] + hee2 * z[1][i] + hee3 * z[2][i]).collect();
-    let mut cont: Vec<f64> = (0..n).map(|i| f2[i] + f0[i]).collect();
+    // the buffers are taken out of `lu` for the solves and put back at the end
+    let (mut f2, mut cont) = (core::mem::take(&mut lu.f2), core::mem::take(&mut lu.cont));
+    // f2 = (e₁Z₁ + e₂Z₂ + e₃Z₃)/h; err = E₁⁻¹ (f0 + f2)
+    for i in 0..n {
+        f2[i] = hee1 * z[0][i] + hee2 * z[1][i] + hee3 * z[2][i];
+        cont[i] = f2[i] + f0[i];
+    }
     lu.solve_real(&mut cont);
-    let err = rms_scaled(&cont, scal).max(1e-10);
-    if err < 1.0 || !first_or_reject {
-        return Ok(err);
-    }
-    let mut yc = y.clone();
-    for (o, c) in yc.as_mut_slice().iter_mut().zip(&cont) {
-        *o += c;
-    }
-    work.fevals += 1;
-    let f1 = f(t, &yc);
-    if f1.dim() != n || f1.as_slice().iter().any(|v| !v.is_finite()) {
+    let mut err = rms_scaled(&cont, scal).max(1e-10);
+    if err >= 1.0 && first_or_reject {
+        // the filter a second time, at y + err (HW (IV.8.20))
+        let mut yc = y.clone();
+        for (o, c) in yc.as_mut_slice().iter_mut().zip(&cont) {
+            *o += c;
+        }
+        work.fevals += 1;
+        let f1 = f(t, &yc);
         // the filtered point is not a trajectory point: an unusable second estimate keeps
         // the first (the step is rejected and retried smaller)
-        return Ok(err);
+        if f1.dim() == n && f1.as_slice().iter().all(|v| v.is_finite()) {
+            for i in 0..n {
+                cont[i] = f1.as_slice()[i] + f2[i];
+            }
+            lu.solve_real(&mut cont);
+            err = rms_scaled(&cont, scal).max(1e-10);
+        }
     }
-    for i in 0..n {
-        cont[i] = f1.as_slice()[i] + f2[i];
-    }
-    lu.solve_real(&mut cont);
-    Ok(rms_scaled(&cont, scal).max(1e-10))
+    (lu.f2, lu.cont) = (f2, cont);
+    Ok(err)
 }
 
 /// Forward-difference Jacobian of `radau5.f`: column j = (f(y + δⱼeⱼ) − f(y))/δⱼ with
@@ -200,7 +231,7 @@ pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
     t: f64,
     y: &S,
     f0: &[f64],
-    jm: &mut Mat<f64>,
+    jm: &mut [f64],
     work: &mut Work,
 ) {
     let n = y.dim();
@@ -214,7 +245,7 @@ pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
         let fj = f(t, &yj);
         for i in 0..n {
             // a non-finite or short f here shows as a non-finite entry, refused by the caller
-            jm[(i, j)] = fj.as_slice().get(i).map_or(f64::NAN, |v| (v - f0[i]) / delt);
+            jm[i * n + j] = fj.as_slice().get(i).map_or(f64::NAN, |v| (v - f0[i]) / delt);
         }
         yj.as_mut_slice()[j] = ysafe;
     }
@@ -225,9 +256,10 @@ pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
 /// Book: §4.11; HW §IV.8.
 pub type NoJacobian<S> = fn(f64, &S, &mut [f64]);
 
-/// J = ∂f/∂y at (t, y) into `jm`: from the caller's `jac` (row-major, entry (i, j) at i·n + j)
-/// or, without one, by [`finite_difference`] from f0 = f(t, y); refused if any entry is not
-/// finite. Counts one Jacobian in `work`.
+/// J = ∂f/∂y at (t, y) into `jm` (n² entries, row-major: (i, j) at i·n + j), written by the
+/// caller's `jac` directly or, without one, by [`finite_difference`] from f0 = f(t, y);
+/// refused if any entry is not finite (entries `jac` leaves unwritten stay NaN). Counts one
+/// Jacobian in `work`.
 ///
 /// # Errors
 /// [`OdeError::JacobianNotFinite`] naming t, the entry and the state.
@@ -238,26 +270,22 @@ pub(crate) fn jacobian_into<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, 
     t: f64,
     y: &S,
     f0: &[f64],
-    jm: &mut Mat<f64>,
+    jm: &mut [f64],
     work: &mut Work,
 ) -> Result<(), OdeError> {
     let n = y.dim();
     work.jacobians += 1;
     match jac {
         Some(j) => {
-            let mut buf = vec![f64::NAN; n * n];
-            j(t, y, &mut buf);
-            for r in 0..n {
-                for c in 0..n {
-                    jm[(r, c)] = buf[r * n + c];
-                }
-            }
+            // entries the caller does not write stay NaN and are refused below
+            jm.fill(f64::NAN);
+            j(t, y, jm);
         }
         None => finite_difference(f, t, y, f0, jm, work),
     }
     for c in 0..n {
         for r in 0..n {
-            let value = jm[(r, c)];
+            let value = jm[r * n + c];
             if !value.is_finite() {
                 return Err(OdeError::JacobianNotFinite {
                     t,

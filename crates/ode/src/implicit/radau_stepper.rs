@@ -3,8 +3,6 @@
 //!
 //! Book: §4.11; HW §IV.8 (implementation of implicit Runge–Kutta methods).
 
-use faer::Mat;
-
 use super::radau_core::{
     C1, C2, Factors, NoJacobian, T_MAT, TI_MAT, estimate, jacobian_into, rms_scaled, transform,
 };
@@ -46,11 +44,19 @@ pub struct RadauStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut
     fnewt: f64,
     f_now: Vec<f64>,
     scal: Vec<f64>,
-    jm: Mat<f64>,
+    /// ∂f/∂y, row-major (entry (i, j) at i·n + j).
+    jm: Vec<f64>,
     /// `true` when `jm` was evaluated at the current (t, y) (`CALJAC`).
     jac_fresh: bool,
     need_jac: bool,
-    lu: Option<Factors>,
+    /// The factorized iteration matrices (buffers allocated once; stale after a new J).
+    lu: Factors,
+    /// Newton's buffers, allocated once: stage increments Z, transformed W, stage
+    /// derivatives F(Z), and the stage state y + Zₖ.
+    z: [Vec<f64>; 3],
+    w: [Vec<f64>; 3],
+    fz: [Vec<f64>; 3],
+    ys: S,
     /// Collocation coefficients of the last accepted step and its size (starting values).
     cont: [Vec<f64>; 3],
     hold: f64,
@@ -139,10 +145,14 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
             fnewt: (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt())),
             f_now,
             scal: vec![0.0; n],
-            jm: Mat::zeros(n, n),
+            jm: vec![0.0; n * n],
             jac_fresh: false,
             need_jac: true,
-            lu: None,
+            lu: Factors::new(n),
+            z: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
+            w: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
+            fz: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
+            ys: y0.clone(),
             cont: [vec![0.0; n], vec![0.0; n], vec![0.0; n]],
             hold: 0.0,
             first: true,
@@ -184,7 +194,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
         )?;
         self.jac_fresh = true;
         self.need_jac = false;
-        self.lu = None;
+        self.lu.invalidate();
         Ok(())
     }
 
@@ -226,10 +236,9 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
             if self.need_jac {
                 self.compute_jacobian()?;
             }
-            if self.lu.as_ref().is_none_or(|l| l.h != h) {
+            if self.lu.h() != Some(h) {
                 self.p.work.factorizations += 1;
-                self.lu = Factors::new(&self.jm, h);
-                if self.lu.is_none() {
+                if !self.lu.factor(&self.jm, h) {
                     singular += 1;
                     if singular >= MAX_FAILURES {
                         return Err(OdeError::SingularIterationMatrix {
@@ -243,14 +252,13 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
                     continue;
                 }
             }
-            let mut z = self.starting_values(h);
-            let mut w = [vec![0.0; z[0].len()], vec![0.0; z[0].len()], vec![0.0; z[0].len()]];
-            let zr = [&z[0][..], &z[1][..], &z[2][..]];
-            let [w1, w2, w3] = &mut w;
-            transform(&TI_MAT, zr, [w1, w2, w3]);
-            match self.newton(h, &mut z, &mut w) {
+            self.starting_values(h);
+            let [z1, z2, z3] = &self.z;
+            let [w1, w2, w3] = &mut self.w;
+            transform(&TI_MAT, [z1, z2, z3], [w1, w2, w3]);
+            match self.newton(h) {
                 Newton::Converged(newt) => {
-                    if self.finish_step(h, last, newt, &z)? {
+                    if self.finish_step(h, last, newt)? {
                         return Ok(());
                     }
                 }
@@ -280,43 +288,42 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
         }
     }
 
-    /// Starting stage increments Z: zero on the first step, else the previous step's
-    /// collocation polynomial extrapolated (HW (IV.8.5)).
-    fn starting_values(&self, h: f64) -> [Vec<f64>; 3] {
-        let n = self.p.y.dim();
+    /// Starting stage increments Z into `self.z`: zero on the first step, else the previous
+    /// step's collocation polynomial extrapolated (HW (IV.8.5)).
+    fn starting_values(&mut self, h: f64) {
         if self.first {
-            return [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+            self.z.iter_mut().for_each(|zk| zk.fill(0.0));
+            return;
         }
         let (c1m1, c2m1) = (C1 - 1.0, C2 - 1.0);
         let c3q = h / self.hold;
         let [a1, a2, a3] = &self.cont;
-        let ext = |cq: f64| -> Vec<f64> {
-            (0..n).map(|i| cq * (a1[i] + (cq - c2m1) * (a2[i] + (cq - c1m1) * a3[i]))).collect()
-        };
-        [ext(C1 * c3q), ext(C2 * c3q), ext(c3q)]
+        for (zk, cq) in self.z.iter_mut().zip([C1 * c3q, C2 * c3q, c3q]) {
+            for (i, zi) in zk.iter_mut().enumerate() {
+                *zi = cq * (a1[i] + (cq - c2m1) * (a2[i] + (cq - c1m1) * a3[i]));
+            }
+        }
     }
 
     /// Simplified Newton on the transformed stage equations (HW §IV.8, `RADCOR` label 40):
     /// at most `max_newton` iterations; the contraction θ decides whether to go on.
-    fn newton(&mut self, h: f64, z: &mut [Vec<f64>; 3], w: &mut [Vec<f64>; 3]) -> Newton {
-        let n = self.p.y.dim();
+    fn newton(&mut self, h: f64) -> Newton {
         let nit = self.cfg.method.max_newton;
         let nodes = [C1, C2, 1.0];
         self.faccon = self.faccon.max(f64::EPSILON).powf(0.8);
         self.theta = THET;
         let (mut dynold, mut thqold) = (0.0, 0.0);
-        let mut fz = [vec![0.0; n], vec![0.0; n], vec![0.0; n]];
-        let Some(lu) = self.lu.as_ref() else { return Newton::Failed(None) };
+        let (z, w, fz) = (&mut self.z, &mut self.w, &mut self.fz);
         for newt in 1..=nit {
             for k in 0..3 {
-                let mut ys = self.p.y.clone();
-                for (o, zi) in ys.as_mut_slice().iter_mut().zip(&z[k]) {
-                    *o += zi;
+                // the stage state y + Zₖ
+                for ((o, yi), zi) in self.ys.as_mut_slice().iter_mut().zip(self.p.y.as_slice()).zip(&z[k]) {
+                    *o = yi + zi;
                 }
                 match eval(
                     &mut self.f,
                     self.p.t + nodes[k] * h,
-                    &ys,
+                    &self.ys,
                     self.p.t,
                     k + 1,
                     &mut self.p.work.fevals,
@@ -327,7 +334,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
             }
             let [z1, z2, z3] = z;
             transform(&TI_MAT, [&fz[0], &fz[1], &fz[2]], [z1, z2, z3]);
-            lu.solve_newton([z1, z2, z3], [&w[0], &w[1], &w[2]]);
+            self.lu.solve_newton([z1, z2, z3], [&w[0], &w[1], &w[2]]);
             self.p.work.newton_iterations += 1;
             let dyno = ((0..3).map(|k| rms_scaled(&z[k], &self.scal).powi(2)).sum::<f64>() / 3.0).sqrt();
             if !dyno.is_finite() {
@@ -367,17 +374,23 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
     /// Error test and step-size choice after a converged Newton solve; on acceptance moves
     /// to the step's end and returns `true`, on rejection sets the smaller h and returns
     /// `false`. Gustafsson's predictive controller (HW (IV.8.25)) as `radau5.f` with PRED.
-    fn finish_step(&mut self, h: f64, last: bool, newt: usize, z: &[Vec<f64>; 3]) -> Result<bool, OdeError> {
-        let Some(lu) = self.lu.as_ref() else { return Ok(false) };
+    fn finish_step(&mut self, h: f64, last: bool, newt: usize) -> Result<bool, OdeError> {
+        let z = &self.z;
         let err = estimate(
             &mut self.f,
-            lu,
+            &mut self.lu,
             (self.p.t, &self.p.y, &self.f_now),
             [&z[0], &z[1], &z[2]],
             &self.scal,
             self.first || self.reject,
             &mut self.p.work,
         )?;
+        if std::env::var("RTRACE").is_ok() {
+            eprintln!(
+                "t={:e} h={:e} err={:e} newt={newt} first={} rej={}",
+                self.p.t, h, err, self.first, self.reject
+            );
+        }
         let nit = self.cfg.method.max_newton as f64;
         let fac = SAFE.min(SAFE * (1.0 + 2.0 * nit) / (newt as f64 + 2.0 * nit));
         let mut quot = (err.powf(0.25) / fac).clamp(FACR, FACL);
