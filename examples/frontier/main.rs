@@ -5,7 +5,7 @@
 //!
 //! ```sh
 //! cargo run --release --example frontier -- run  [--quick] [--out DIR] [--only a,b] [--cap S]
-//! cargo run --release --example frontier -- plot [--data DIR] [--svg DIR] [--doc docs/performance.md]
+//! cargo run --release --example frontier -- plot [--data DIR] [--svg DIR] [--doc docs/frontier.md]
 //! ```
 //!
 //! `run` writes `DIR/reference.json` (the chains' reference end states: the

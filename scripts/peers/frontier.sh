@@ -14,7 +14,7 @@
 # MuJoCo through its C API; built by cpp/build.sh from the wheels' headers, run by
 # frontier_compiled.py), then the Python-driven peers one after the other, every tool
 # single-threaded; then the cross-check of the reference, the figures
-# docs/accuracy/peers-*.svg and the table in docs/performance.md. Points go to
+# docs/accuracy/peers-*.svg and the tables in docs/frontier.md. Points go to
 # docs/accuracy/peers-data/*.json (override with FRONTIER_RESULTS). Needs the venv of
 # ../shared/peers/README.md (PEERS_VENV, default ~/.venv-peers).
 set -e
@@ -52,6 +52,6 @@ if [ -n "$FRONTIER_ONLY" ]; then
   mkdir -p "$DATA/svg"
   "$FRONTIER" plot --data "$DATA" --svg "$DATA/svg"
 else
-  "$FRONTIER" plot --data "$DATA" --svg docs/accuracy --doc docs/performance.md
+  "$FRONTIER" plot --data "$DATA" --svg docs/accuracy --doc docs/frontier.md
 fi
 echo "done: $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"
