@@ -21,7 +21,7 @@ trap 'rm -rf "$scratch"' EXIT
 cp scripts/browser/package.json scripts/browser/package-lock.json scripts/browser/check.mjs "$scratch/"
 (cd "$scratch" && npm ci --silent --no-audit --no-fund)
 
-# the `test` profile (opt-level 1, dependencies at 2): after `cargo test --workspace` (as in
+# the `test` profile (opt-level 1, dependencies too): after `cargo test --workspace` (as in
 # .ci/run) this reuses its build instead of compiling a release binary
 cargo build --profile test --quiet --bin vectrix
 bin="${CARGO_TARGET_DIR:-$root/target}/debug/vectrix"
