@@ -127,6 +127,23 @@ fn numbers_past_the_magnitude_bound_are_refused_where_they_stand() {
 }
 
 #[test]
+fn mutual_gravitation_whose_g_m_m_overflows_is_refused_at_g_naming_the_pair() {
+    // each number is inside the bound, their product G m₁ m₂ = 1e350 is not: refused at `g`,
+    // naming both bodies, instead of failing every evaluation of the run
+    let two = format!(
+        "{PIN}\n[[bodies]]\nname = \"c\"\njoint = {{ type = \"free\" }}\nmass = {{ shape = \"particle\", mass = 1e100 }}\n\
+         q = [5.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]\n\n[[effects]]\ntype = \"mutual_gravitation\"\ng = 1e150\n"
+    )
+    .replace("mass = 1.0 }", "mass = 1e100 }");
+    let (line, _, message) = refusal(&two);
+    assert_eq!(line, position(&two, "g = 1e150").0);
+    assert!(message.starts_with("effects[0].g: bodies `b` and `c`:"), "{message}");
+    assert!(message.contains("overflow") || message.contains("largest"), "{message}");
+    // G = 1 with the same masses is a valid scene
+    assert!(Scene::from_toml(&two.replace("g = 1e150", "g = 1.0"), "p.toml").is_ok());
+}
+
+#[test]
 fn profile_corner_closer_than_the_time_resolution_is_refused_where_it_stands() {
     let torque = |at: &str| {
         format!(

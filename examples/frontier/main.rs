@@ -16,6 +16,8 @@
 //! `<!-- frontier-table:begin -->` and `<!-- frontier-table:end -->` of the document. The
 //! default DIR is `docs/accuracy/peers-data`, the default SVG folder `docs/accuracy`.
 //! A timing harness, not a test: medians of repeated whole runs (see `timing.rs`).
+//! `FRONTIER_ROUTE=scene` (or `library`) times that route alone, e.g. two builds of the scene
+//! route back to back in one sitting.
 
 mod problems;
 mod report;

@@ -80,6 +80,10 @@ impl Ctx {
         mut run: impl FnMut(f64) -> Outcome,
         error: impl Fn(&[f64]) -> f64,
     ) {
+        // FRONTIER_ROUTE=scene (or library): one route alone, e.g. for a before/after sitting
+        if std::env::var("FRONTIER_ROUTE").is_ok_and(|r| r != route) {
+            return;
+        }
         let series = match route {
             "scene" => format!("vectrix scene {method}"),
             _ => format!("vectrix {method}"),

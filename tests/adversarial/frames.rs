@@ -69,9 +69,15 @@ cases! {
     // change of frame round trip (2.4.16, 2.10).
     resolution_round_trips ["Frame::vector", "Frame::try_vector", "Frame::try_dyadic", "Frame::covector",
         "Frame::dyadic", "Frame::tensor", "Resolve::resolve", "change_frame_vector", "change_frame_covector",
-        "change_frame_dyadic", "change_frame_tensor"] {
+        "change_frame_dyadic", "change_frame_tensor", "Frame::identity_vector", "Frame::identity_components"] {
         let (a, b) = (Frame::new(), tilted());
         for x in hostile3() {
+            // the identity frame without arithmetic: components in and out unchanged, bit for bit
+            let got = Frame::identity_components(&Frame::identity_vector(x));
+            assert_eq!(got.map(f64::to_bits).as_slice(), x.map(f64::to_bits).as_slice(), "{x:?}");
+            if x.iter().all(|c| c.is_finite()) {
+                assert_eq!(Frame::identity_vector(x), a.vector(x));
+            }
             err_or(a.try_vector(x), "try_vector", |v| v.is_finite());
             let m = Matrix3::from_diagonal(&Vector3::from(x));
             err_or(a.try_dyadic(&m), "try_dyadic", |d| d.is_finite());

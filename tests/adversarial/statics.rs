@@ -8,11 +8,11 @@ use nalgebra::Matrix3;
 use vectrix::frames::Frame;
 use vectrix::statics::{
     AppliedForce, CentralGravity, Dashpot, ForcePair, FreeBodyProblem, Inerter, InertiaComponents,
-    MassProperties, Point, PrincipalAxes, RotationalDashpot, RotationalInerter, RotationalSpring, Spring,
-    StaticsError, UniformGravity, Wrench, centre_of_gravity, check_inertia, dipole_field,
-    dipole_field_dyadic, dipole_interaction, dipole_potential, gravity_between, moment_of_inertia,
-    mutual_gravitation, mutual_gravitation_potential, parallel_axis, particle_inertia, product_of_inertia,
-    shift_inertia,
+    MassProperties, MutualGravitation, Point, PrincipalAxes, RotationalDashpot, RotationalInerter,
+    RotationalSpring, Spring, StaticsError, UniformGravity, Wrench, centre_of_gravity, check_inertia,
+    dipole_field, dipole_field_dyadic, dipole_interaction, dipole_potential, gravity_between,
+    moment_of_inertia, mutual_gravitation, mutual_gravitation_potential, parallel_axis, particle_inertia,
+    product_of_inertia, shift_inertia,
 };
 use vectrix::tensor::{Dyadic, Rotor, Vector};
 
@@ -99,8 +99,18 @@ cases! {
     fields ["UniformGravity::new", "UniformGravity::acceleration", "UniformGravity::force", "UniformGravity::wrench_on",
         "UniformGravity::potential", "CentralGravity::new", "CentralGravity::of_mass", "CentralGravity::mu",
         "CentralGravity::force", "CentralGravity::potential", "mutual_gravitation", "mutual_gravitation_potential",
-        "gravity_between", "centre_of_gravity", "dipole_field_dyadic", "dipole_field", "dipole_interaction", "dipole_potential"] {
+        "gravity_between", "centre_of_gravity", "dipole_field_dyadic", "dipole_field", "dipole_interaction", "dipole_potential",
+        "MutualGravitation::new", "MutualGravitation::gmm", "MutualGravitation::force_on_y", "MutualGravitation::cast"] {
         let earth = CentralGravity::new(3.986e14).unwrap();
+        // the prepared pair: every hostile G or mass is refused or gives a finite G M m ≥ 0
+        for s in hostile() {
+            for (g, m_y, m_x) in [(s, 1.0, 2.0), (6.674e-11, s, 2.0), (6.674e-11, 1.0, s), (s, s, s)] {
+                err_or(MutualGravitation::new(g, m_y, m_x), "MutualGravitation::new", |p| {
+                    p.gmm().is_finite() && p.gmm() >= 0.0 && p.cast::<f64>() == *p
+                });
+            }
+        }
+        let pair = MutualGravitation::new(6.674e-11, 1.0, 2.0).unwrap();
         assert_eq!(earth.mu(), 3.986e14);
         for s in hostile() {
             err_or(CentralGravity::new(s), "CentralGravity::new", |g| g.mu().is_finite());
@@ -116,6 +126,10 @@ cases! {
             err_or(earth.force(1.0, &r), "CentralGravity::force", |f| f.is_finite() && f.dot(&r) <= 0.0);
             err_or(earth.potential(1.0, &r), "CentralGravity::potential", |u| u.is_finite() && *u <= 0.0);
             err_or(mutual_gravitation(6.674e-11, 1.0, 2.0, &r), "mutual_gravitation", action_reaction);
+            // the prepared pair attracts (f⃗·r⃗ ≤ 0) or refuses, exactly as the checked call
+            err_or(pair.force_on_y(&r), "MutualGravitation::force_on_y", |f| {
+                f.is_finite() && f.dot(&r) <= 0.0 && mutual_gravitation(6.674e-11, 1.0, 2.0, &r).is_ok_and(|p| p.on_y == *f)
+            });
             err_or(mutual_gravitation_potential(6.674e-11, 1.0, 2.0, &r), "mutual potential", |u| u.is_finite());
             let m = v([0.0, 0.0, 1.0]);
             err_or(dipole_field_dyadic(&r), "dipole_field_dyadic", |d| d.is_finite());

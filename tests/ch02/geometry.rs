@@ -211,6 +211,28 @@ fn eq_2_4_14_resolution_and_reconstruction() {
     assert_eq!(b.axis(4), None);
 }
 
+/// (2.4.14)–(2.4.16) in the first frame without arithmetic: `Frame::identity_vector` and
+/// `Frame::identity_components` give exactly what `Frame::identity()`'s `vector` and `resolve`
+/// give for finite components (the same values; a −0 stays −0 here, where the products give
+/// +0), and keep an infinite component to itself where the nine products would spread NaN (0·∞)
+/// into the others.
+#[test]
+fn eq_2_4_14_resolution_in_the_identity_frame() {
+    let i = Frame::identity();
+    for x in
+        [[0.3, -1.2, 2.0], [-0.0, 0.0, -0.0], [f64::MAX, -f64::MIN_POSITIVE, 5e-324], [1e300, -1e-300, 7.0]]
+    {
+        let v = Frame::identity_vector(x);
+        assert_eq!(v, i.vector(x));
+        let (got, want) = (Frame::identity_components(&v), v.resolve(&i));
+        assert_eq!(got, want, "{x:?}");
+        assert_eq!(arr(got).map(f64::to_bits), x.map(f64::to_bits), "{x:?}");
+    }
+    let v = Frame::identity_vector([f64::INFINITY, 1.0, 2.0]);
+    assert_eq!(arr(Frame::identity_components(&v)), [f64::INFINITY, 1.0, 2.0]);
+    assert!(arr(i.vector([f64::INFINITY, 1.0, 2.0]).resolve(&i)).iter().any(|c| c.is_nan()));
+}
+
 /// Fact 2.4.1: x = y ⟺ x|_A = y|_A (resolution is injective).
 #[test]
 fn fact_2_4_1_equal_iff_resolutions_equal() {

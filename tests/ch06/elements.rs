@@ -4,9 +4,9 @@
 use vectrix::num_dual::Dual2_64;
 use vectrix::prelude::*;
 use vectrix::statics::{
-    CentralGravity, Dashpot, GRAVITATIONAL_CONSTANT, Inerter, Point, RotationalDashpot, RotationalInerter,
-    RotationalSpring, Spring, StaticsError, UniformGravity, centre_of_gravity, dipole_field,
-    dipole_field_dyadic, dipole_interaction, gravity_between, mutual_gravitation,
+    CentralGravity, Dashpot, GRAVITATIONAL_CONSTANT, Inerter, MutualGravitation, Point, RotationalDashpot,
+    RotationalInerter, RotationalSpring, Spring, StaticsError, UniformGravity, centre_of_gravity,
+    dipole_field, dipole_field_dyadic, dipole_interaction, gravity_between, mutual_gravitation,
 };
 
 use crate::common::{assert_vec_abs, assert_vec_rel, pt};
@@ -135,6 +135,42 @@ fn fact_6_12_1_central_gravity_and_erratum_6_12_2() {
     assert!(matches!(earth.force(1.0, &Vector::zero()), Err(StaticsError::CoincidentPoints { .. })));
     assert!(matches!(earth.force(-1.0, &r), Err(StaticsError::InvalidMass { .. })));
     assert!(matches!(CentralGravity::new(f64::NAN), Err(StaticsError::OutOfRange { .. })));
+}
+
+#[test]
+fn fact_6_12_1_mutual_gravitation_prepared_once() {
+    // (6.12.1) with G M m checked once: f⃗_{y/x} = −G M m r⃗/|r⃗|³, f⃗_{x/y} = −f⃗_{y/x}. The closed
+    // form at |r⃗| = 5 (a 3-4-5 separation) is −G M m (3, 4, 0)/125; at the ends of the range
+    // (|r⃗| = 5e±120, where |r⃗|³ leaves the normal numbers) the force is still exact to a few ε
+    // and not flushed to 0 or ∞.
+    let a = Frame::new();
+    let (g, m, big_m) = (GRAVITATIONAL_CONSTANT, 70.0, 5.972e24);
+    let pair = MutualGravitation::new(g, m, big_m).unwrap();
+    assert_eq!(pair.gmm(), g * big_m * m);
+    for scale in [1.0, 1e-120, 1e120, 1e-99, 1e99] {
+        let r = a.vector([3.0 * scale, 4.0 * scale, 0.0]);
+        let f = pair.force_on_y(&r).unwrap();
+        // −G M m r̂/|r⃗|² with r̂ = (0.6, 0.8, 0) and |r⃗|² = 25 scale²
+        let k = -(g * big_m * m) / (25.0 * scale * scale);
+        let want = a.vector([0.6 * k, 0.8 * k, 0.0]);
+        assert!(f.is_finite() && f.norm() > 0.0, "scale {scale:e}");
+        assert_vec_rel(&f, &want, 8.0 * EPS);
+        // the checked call is this pair, checked again: the same bits
+        assert_eq!(mutual_gravitation(g, m, big_m, &r).unwrap().on_y, f, "scale {scale:e}");
+    }
+    // over the scalar of dual numbers: the same value, checked once in f64
+    let r = a.vector([3.0, 4.0, 0.0]);
+    assert_eq!(pair.cast::<f64>().force_on_y(&r).unwrap(), pair.force_on_y(&r).unwrap());
+    // bad input: typed errors, never NaN or a silent zero
+    assert!(matches!(MutualGravitation::new(-1.0, m, big_m), Err(StaticsError::OutOfRange { .. })));
+    assert!(matches!(MutualGravitation::new(f64::NAN, m, big_m), Err(StaticsError::OutOfRange { .. })));
+    assert!(matches!(MutualGravitation::new(g, -1.0, big_m), Err(StaticsError::InvalidMass { .. })));
+    assert!(matches!(MutualGravitation::new(g, m, f64::INFINITY), Err(StaticsError::InvalidMass { .. })));
+    assert!(matches!(MutualGravitation::new(1e300, 1e10, 1e10), Err(StaticsError::Overflow { .. })));
+    assert!(matches!(pair.force_on_y(&Vector::zero()), Err(StaticsError::CoincidentPoints { .. })));
+    assert!(matches!(pair.force_on_y(&a.vector([f64::NAN, 0.0, 1.0])), Err(StaticsError::NonFinite { .. })));
+    let close = MutualGravitation::new(1.0, 1e300, 1.0).unwrap();
+    assert!(matches!(close.force_on_y(&a.vector([1e-10, 0.0, 0.0])), Err(StaticsError::Overflow { .. })));
 }
 
 /// A body as (mass, position) particles.

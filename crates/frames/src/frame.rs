@@ -76,6 +76,26 @@ impl<T: Scalar> Frame<T> {
         Self { axes: Matrix3::identity() }
     }
 
+    /// x⃗ = x₁ î + x₂ ĵ + x₃ k̂ in [`Frame::identity`]: what `Frame::identity().vector(x)` gives,
+    /// without its nine products (so a −0 component stays −0, and an infinite one does not turn
+    /// the others into NaN through 0·∞). For hot paths that work in one fixed first frame (a
+    /// simulation's ground).
+    ///
+    /// Book: (2.4.15–16).
+    #[inline]
+    pub fn identity_vector(x: [T; 3]) -> Vector<T> {
+        Vector::from_hidden(Vector3::from(x))
+    }
+
+    /// x⃗|_I, the components of x⃗ in [`Frame::identity`]: what
+    /// `x.resolve(&Frame::identity())` gives, without its nine products.
+    ///
+    /// Book: (2.4.14).
+    #[inline]
+    pub fn identity_components(x: &Vector<T>) -> Vector3<T> {
+        *x.hidden()
+    }
+
     /// The frame with axes î, ĵ, k̂.
     ///
     /// # Errors

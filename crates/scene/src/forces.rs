@@ -6,26 +6,30 @@
 
 use nalgebra::Vector3;
 use vectrix_frames::Frame;
-use vectrix_statics::{CentralGravity, Dashpot, Spring, dipole_interaction, dipole_potential};
+use vectrix_statics::{
+    CentralGravity, Dashpot, MutualGravitation, Spring, dipole_interaction, dipole_potential,
+};
 use vectrix_tensor::Scalar;
 
 use super::kin::{Kin, lift};
 use super::parts::{Body, Effect};
 use vectrix_dynamics::multibody::JointWrench;
 
-/// World vector ↔ frame-free vector through the ground frame, in the scalar of an evaluation.
-pub(crate) struct Ground<T: Scalar = f64>(Frame<T>);
+/// World vector ↔ frame-free vector through the ground frame ([`Frame::identity`], read and
+/// written without arithmetic), in the scalar of an evaluation.
+pub(crate) struct Ground<T: Scalar = f64>(std::marker::PhantomData<T>);
 
 impl<T: Scalar> Ground<T> {
     pub fn new() -> Self {
-        Self(Frame::identity())
+        Self(std::marker::PhantomData)
     }
+    #[inline]
     fn vec(&self, x: &Vector3<T>) -> vectrix_tensor::Vector<T> {
-        self.0.vector([x[0], x[1], x[2]])
+        Frame::identity_vector([x[0], x[1], x[2]])
     }
+    #[inline]
     fn res(&self, x: &vectrix_tensor::Vector<T>) -> Vector3<T> {
-        use vectrix_frames::Resolve;
-        x.resolve(&self.0)
+        Frame::identity_components(x)
     }
 }
 
@@ -47,7 +51,7 @@ impl<T: Scalar> Loads<'_, T> {
     }
     /// Force f (ground) at body i's centre of mass, `com` its link components: the link
     /// wrench is (𝓞 f, com × 𝓞 f), without going through the ground point.
-    #[inline]
+    #[inline(always)]
     pub fn force_at_centre(&mut self, i: usize, com: &Vector3<f64>, f: &Vector3<T>) {
         let fl = self.kin.poses[i].0 * f;
         self.wrenches[i].force += fl;
@@ -62,9 +66,11 @@ impl<T: Scalar> Loads<'_, T> {
     }
 }
 
-/// Ground position of a body's centre of mass.
+/// Ground position of a body's centre of mass (the link origin's, without arithmetic, when
+/// the centre is there).
+#[inline]
 pub(crate) fn centre<T: Scalar>(kin: &Kin<T>, b: &Body, i: usize) -> Vector3<T> {
-    kin.position(&(Some(i), b.com))
+    if b.com == Vector3::zeros() { kin.poses[i].1 } else { kin.position(&(Some(i), b.com)) }
 }
 
 /// Adds every declared force effect at time t (uniform gravity is the model's; impacts,
@@ -100,7 +106,7 @@ pub(crate) fn apply<T: Scalar>(
                     loads.force_at_centre(i, &b.com, &f);
                 }
             }
-            Effect::Mutual { g: gc } => mutual(bodies, g, c(*gc), loads)?,
+            Effect::Mutual { pairs } => mutual(pairs, bodies, g, loads)?,
             Effect::Spring { a, b, k, d } => {
                 let (pa, pb) = (loads.kin.position(a), loads.kin.position(b));
                 let f =
@@ -162,25 +168,21 @@ pub(crate) fn apply<T: Scalar>(
     Ok(())
 }
 
-/// Newton's gravitation between every pair of bodies (centres of mass), constant `gc`.
+/// Newton's gravitation between every pair of bodies (centres of mass), each pair's G mᵢ mⱼ
+/// checked when the scene was built.
 ///
 /// Book: (6.12.1) (gravitation).
-fn mutual<T: Scalar>(bodies: &[Body], g: &Ground<T>, gc: T, loads: &mut Loads<T>) -> Result<(), String> {
-    let err = |e: vectrix_statics::StaticsError| e.to_string();
-    for i in 0..bodies.len() {
-        for j in i + 1..bodies.len() {
-            let (xi, xj) = (centre(loads.kin, &bodies[i], i), centre(loads.kin, &bodies[j], j));
-            let pair = vectrix_statics::mutual_gravitation(
-                gc,
-                T::lit(bodies[i].mass),
-                T::lit(bodies[j].mass),
-                &g.vec(&(xi - xj)),
-            )
-            .map_err(err)?;
-            let f = g.res(&pair.on_y);
-            loads.force_at_centre(i, &bodies[i].com, &f);
-            loads.force_at_centre(j, &bodies[j].com, &(-f));
-        }
+fn mutual<T: Scalar>(
+    pairs: &[(usize, usize, MutualGravitation)],
+    bodies: &[Body],
+    g: &Ground<T>,
+    loads: &mut Loads<T>,
+) -> Result<(), String> {
+    for &(i, j, pair) in pairs {
+        let (xi, xj) = (centre(loads.kin, &bodies[i], i), centre(loads.kin, &bodies[j], j));
+        let f = g.res(&pair.cast::<T>().force_on_y(&g.vec(&(xi - xj))).map_err(|e| e.to_string())?);
+        loads.force_at_centre(i, &bodies[i].com, &f);
+        loads.force_at_centre(j, &bodies[j].com, &(-f));
     }
     Ok(())
 }
@@ -238,12 +240,10 @@ pub(crate) fn potential<T: Scalar>(
                     }
                 }
             }
-            Effect::Mutual { g: gc } => {
-                for i in 0..bodies.len() {
-                    for j in i + 1..bodies.len() {
-                        let r = centre(kin, &bodies[i], i) - centre(kin, &bodies[j], j);
-                        u -= c(*gc) * c(bodies[i].mass) * c(bodies[j].mass) / r.norm();
-                    }
+            Effect::Mutual { pairs } => {
+                for &(i, j, pair) in pairs {
+                    let r = centre(kin, &bodies[i], i) - centre(kin, &bodies[j], j);
+                    u -= c(pair.gmm()) / r.norm();
                 }
             }
             Effect::Spring { a, b, k, d } => {

@@ -18,6 +18,9 @@ pub(crate) struct Needs {
     pub poses: bool,
     /// The loads read link twists too (dashpots, aero effects).
     pub twists: bool,
+    /// Some loads are joint torques (rotational springs and dashpots); the others act as link
+    /// wrenches only, and the joint torques stay zero.
+    pub joint_torques: bool,
     pub inerters: bool,
     pub rolling: bool,
     pub impacts: bool,
@@ -27,6 +30,20 @@ pub(crate) struct Needs {
     pub qdot_is_v: bool,
     /// An aero effect's forces depend on α̇ or β̇ (solved after ABA, see `aero`).
     pub aero_rates: bool,
+    /// The shortest evaluation the above allow, decided once (see `Scene::deriv_plain`).
+    pub route: Route,
+}
+
+/// The shortest path through the right-hand side a scene allows.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) enum Route {
+    /// ABA alone: no loads, constraints, contacts or aero rate terms.
+    #[default]
+    Plain,
+    /// The tree with its loads (and aero rate terms), no constraints or impacts.
+    Tree,
+    /// Everything: the multiplier system, impacts.
+    Full,
 }
 
 impl Needs {
@@ -51,7 +68,9 @@ impl Needs {
             use Effect as E;
             match e {
                 E::Uniform { .. } => {}
-                E::RotSpring { .. } | E::RotDashpot { .. } => needs.loads = true,
+                E::RotSpring { .. } | E::RotDashpot { .. } => {
+                    (needs.loads, needs.joint_torques) = (true, true)
+                }
                 E::Inerter { .. } | E::RotInerter { .. } => needs.inerters = true,
                 E::Rolling { .. } => needs.rolling = true,
                 E::Spheres { .. } | E::Plane { .. } | E::JointStop { .. } => needs.impacts = true,
@@ -86,6 +105,13 @@ impl Needs {
         }
         // only ball joints (also of free joints) have more coordinates than speeds
         needs.qdot_is_v = built.model.nq() == built.model.nv();
+        needs.route = if needs.plain() {
+            Route::Plain
+        } else if !(needs.constrained() || needs.impacts) {
+            Route::Tree
+        } else {
+            Route::Full
+        };
         Ok(needs)
     }
 }

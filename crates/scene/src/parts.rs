@@ -40,8 +40,9 @@ pub(crate) enum Effect {
         mu: f64,
         centre: Vector3<f64>,
     },
+    /// Every pair (i, j), i < j, of bodies with its G mᵢ mⱼ validated once.
     Mutual {
-        g: f64,
+        pairs: Vec<(usize, usize, vectrix_statics::MutualGravitation)>,
     },
     Spring {
         a: At,

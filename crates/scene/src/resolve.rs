@@ -9,6 +9,7 @@ use super::SceneError;
 use super::parts::{At, Body, Effect, Src, v3};
 use super::spec::{Attach, EffectSpec, LoopSpec};
 use vectrix_dynamics::multibody::{Joint, Model};
+use vectrix_statics::MutualGravitation;
 
 fn nonneg(x: f64, what: &str, path: &str, src: &Src) -> Result<f64, SceneError> {
     if x >= 0.0 {
@@ -243,6 +244,23 @@ impl Ctx<'_> {
     fn nonneg(&self, x: f64, what: &str) -> Result<f64, SceneError> {
         nonneg(x, what, self.path, self.src)
     }
+
+    /// Mutual gravitation's pairs (i, j), i < j, each with G mᵢ mⱼ checked here once (a product
+    /// past the largest finite number is refused at `g`).
+    fn gravitation_pairs(&self, g: f64) -> Result<Vec<(usize, usize, MutualGravitation)>, SceneError> {
+        let g = self.nonneg(g, "g")?;
+        let n = self.bodies.len();
+        let mut pairs = Vec::with_capacity(n * n.saturating_sub(1) / 2);
+        for (i, bi) in self.bodies.iter().enumerate() {
+            for (j, bj) in self.bodies.iter().enumerate().skip(i + 1) {
+                let pair = MutualGravitation::new(g, bi.mass, bj.mass).map_err(|e| {
+                    self.src.invalid(self.key("g"), format!("bodies `{}` and `{}`: {e}", bi.name, bj.name))
+                })?;
+                pairs.push((i, j, pair));
+            }
+        }
+        Ok(pairs)
+    }
 }
 
 /// One effect of the file with its names resolved and its numbers checked.
@@ -263,7 +281,7 @@ pub(crate) fn effect(
         EffectSpec::CentralGravity { mu, centre } => {
             Effect::Central { mu: c.nonneg(*mu, "mu")?, centre: v3(*centre) }
         }
-        EffectSpec::MutualGravitation { g } => Effect::Mutual { g: c.nonneg(*g, "g")? },
+        EffectSpec::MutualGravitation { g } => Effect::Mutual { pairs: c.gravitation_pairs(*g)? },
         EffectSpec::Spring { a, b, k, length } => Effect::Spring {
             a: c.at(a, "a")?,
             b: c.at(b, "b")?,

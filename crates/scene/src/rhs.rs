@@ -11,6 +11,7 @@ use vectrix_tensor::Scalar;
 use super::aero::AeroScratch;
 use super::forces::{Ground, Loads, apply};
 use super::kin::{Kin, kinematics_into, poses_into};
+use super::needs::Route;
 use super::{Scene, SceneError};
 use vectrix_dynamics::Model;
 use vectrix_dynamics::multibody::{AbaScratch, JointWrench};
@@ -92,12 +93,10 @@ impl SceneRhs<'_> {
         }
         let scene = self.scene;
         // the shortest path the scene allows: ABA alone, the tree with its loads, or everything
-        let done = if scene.needs.plain() {
-            scene.deriv_plain(y, out, &mut self.scratch)
-        } else if !(scene.needs.constrained() || scene.needs.impacts) {
-            scene.deriv_tree(&scene.built.model, t, y, None, out, &mut self.scratch)
-        } else {
-            scene.deriv_into(t, y, out, &mut self.scratch)
+        let done = match scene.needs.route {
+            Route::Plain => scene.deriv_plain(y, out, &mut self.scratch),
+            Route::Tree => scene.deriv_tree(&scene.built.model, t, y, None, out, &mut self.scratch),
+            Route::Full => scene.deriv_into(t, y, out, &mut self.scratch),
         };
         done.map_err(|message| SceneError::Run { t, message })?;
         if all_finite(out) {
@@ -107,22 +106,16 @@ impl SceneRhs<'_> {
     }
 }
 
-/// Whether every entry is finite, without a branch per entry: x · 0 is 0 for a finite x and
-/// NaN for ±∞ and NaN, so the sum is 0 exactly when all are finite (the hot path of every
-/// public evaluation; the search for the offending entry runs only on failure). Two lanes, so
-/// that the pairs go through one packed multiply and add.
+/// Whether every entry is finite, without a branch per entry: the exponent field of x plus one
+/// exponent step carries into the sign bit exactly when the field is all ones (±∞ and NaN), so
+/// the OR of those sums has its top bit clear exactly when all are finite. Integer and, add and
+/// or are associative, so the loop vectorizes whole (the hot path of every public evaluation;
+/// the search for the offending entry runs only on failure).
 #[inline(always)]
 fn all_finite(y: &[f64]) -> bool {
-    let (mut a, mut b) = (0.0f64, 0.0f64);
-    let mut pairs = y.chunks_exact(2);
-    for p in &mut pairs {
-        a += p[0] * 0.0;
-        b += p[1] * 0.0;
-    }
-    if let [x] = pairs.remainder() {
-        a += x * 0.0;
-    }
-    a + b == 0.0
+    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+    const STEP: u64 = 0x0010_0000_0000_0000;
+    y.iter().fold(0u64, |acc, x| acc | ((x.to_bits() & EXPONENT) + STEP)) >> 63 == 0
 }
 
 /// The public evaluators take user states: a non-finite t or y is refused before the
@@ -253,7 +246,10 @@ impl Scene {
             } else if self.needs.poses {
                 poses_into(model, q, &mut w.kin);
             }
-            w.tau.fill(T::zero());
+            // τ stays zero (as allocated) unless a load writes it
+            if self.needs.joint_torques {
+                w.tau.fill(T::zero());
+            }
             w.wrenches.fill(JointWrench::default());
             let q_angle = |dof: usize| self.angle_of_dof(q, dof);
             let mut loads = Loads { kin: &w.kin, wrenches: &mut w.wrenches, tau: &mut w.tau };

@@ -133,6 +133,84 @@ impl<T: Scalar> CentralGravity<T> {
     }
 }
 
+/// Mutual gravitation of two particles of fixed masses, validated once: y (mass m) and x (mass
+/// M) attract with f⃗_{y/x} = (G M m/|r⃗_{y/x}|²) r̂_{x/y} = −f⃗_{x/y} (6.12.1). For a force
+/// evaluated many times (a simulation's right-hand side), where [`mutual_gravitation`] would
+/// check G and both masses on every call ([`mutual_gravitation`] is this, checked each time).
+///
+/// Book: Fact 6.12.1, (6.12.1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MutualGravitation<T: Scalar = f64> {
+    /// G M m, formed as (G M) m like [`CentralGravity`]'s μ m.
+    gmm: T,
+}
+
+impl<T: Scalar> MutualGravitation<T> {
+    /// The pair y (mass `m_y`), x (mass `m_x`) under the constant `g` (pass
+    /// [`GRAVITATIONAL_CONSTANT`] in SI units).
+    ///
+    /// Book: (6.12.1).
+    ///
+    /// # Errors
+    /// [`StaticsError::OutOfRange`] for G < 0 or non-finite, [`StaticsError::InvalidMass`] for a
+    /// negative or non-finite mass, [`StaticsError::Overflow`] when G M m exceeds the largest
+    /// finite number.
+    pub fn new(g: T, m_y: T, m_x: T) -> Result<Self, StaticsError> {
+        check_coeff(g, "gravitational constant G", "a finite G ≥ 0")?;
+        check_mass(m_x, "attracting particle")?;
+        check_mass(m_y, "attracted particle")?;
+        let gmm = g * m_x * m_y;
+        if !gmm.re().is_finite() {
+            return Err(StaticsError::Overflow { what: "G M m of mutual gravitation" });
+        }
+        Ok(Self { gmm })
+    }
+
+    /// G M m.
+    ///
+    /// Book: (6.12.1).
+    pub fn gmm(&self) -> T {
+        self.gmm
+    }
+
+    /// f⃗_{y/x} = (G M m/|r⃗_{y/x}|²) r̂_{x/y}, the force on y (6.12.1); the force on x is its
+    /// negative (Fact 6.9.1).
+    ///
+    /// Book: Fact 6.12.1, (6.12.1).
+    ///
+    /// # Errors
+    /// [`StaticsError::NonFinite`] for a non-finite separation, [`StaticsError::CoincidentPoints`]
+    /// for r⃗_{y/x} = 0⃗, [`StaticsError::Overflow`] when the force exceeds the largest finite
+    /// number.
+    #[inline]
+    pub fn force_on_y(&self, r_y_x: &Vector<T>) -> Result<Vector<T>, StaticsError> {
+        check_vec(r_y_x, "mutual gravitation")?;
+        let len = r_y_x.norm();
+        // (6.12.1) with r̂_{x/y} = −r⃗_{y/x}/|r⃗|, by one division: r̂ = r⃗ (1/|r⃗|) and the
+        // magnitude (G M m/|r⃗|)/|r⃗|, which overflows in between only when it overflows at the
+        // end; in the range where `Vector::unit` divides directly, the unit vector first outside
+        let f = if len.re() > 1e-150 && len.re() < 1e150 {
+            let inv = T::one() / len;
+            (*r_y_x * inv) * (-self.gmm * inv * inv)
+        } else {
+            let (r_hat, len) = unit_sep(r_y_x, "mutual gravitation")?;
+            r_hat * (-self.gmm / len / len)
+        };
+        finite_or_overflow(f, "mutual gravitation force")
+    }
+}
+
+impl MutualGravitation<f64> {
+    /// The same pair over another scalar (dual numbers for exact derivatives), without checking
+    /// again: G M m was checked finite.
+    ///
+    /// Book: (6.12.1).
+    #[inline]
+    pub fn cast<U: Scalar>(&self) -> MutualGravitation<U> {
+        MutualGravitation { gmm: U::lit(self.gmm) }
+    }
+}
+
 /// Mutual gravitation of particles y (mass m) and x (mass M): the pair f⃗_{y/x} =
 /// (G M m/|r⃗|²) r̂_{x/y} and f⃗_{x/y} = −f⃗_{y/x} (6.12.1, Fact 6.9.1). Pass
 /// [`GRAVITATIONAL_CONSTANT`] for G in SI units.
@@ -148,9 +226,7 @@ pub fn mutual_gravitation<T: Scalar>(
     m_x: T,
     r_y_x: &Vector<T>,
 ) -> Result<ForcePair<T>, StaticsError> {
-    check_coeff(g, "gravitational constant G", "a finite G ≥ 0")?;
-    check_mass(m_x, "attracting particle")?;
-    CentralGravity { mu: g * m_x }.force(m_y, r_y_x).map(ForcePair::from_force_on_y)
+    MutualGravitation::new(g, m_y, m_x)?.force_on_y(r_y_x).map(ForcePair::from_force_on_y)
 }
 
 /// Potential of mutual gravitation, U = −G M m/|r⃗_{y/x}|.

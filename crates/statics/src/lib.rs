@@ -63,8 +63,8 @@ pub use error::StaticsError;
 pub use force_pair::ForcePair;
 pub use freebody::{BodyId, Determinacy, FREE_BODY_REL_TOL, FreeBodyProblem, FreeBodySolution, UnknownId};
 pub use gravity::{
-    CentralGravity, GRAVITATIONAL_CONSTANT, UniformGravity, centre_of_gravity, gravity_between,
-    mutual_gravitation, mutual_gravitation_potential,
+    CentralGravity, GRAVITATIONAL_CONSTANT, MutualGravitation, UniformGravity, centre_of_gravity,
+    gravity_between, mutual_gravitation, mutual_gravitation_potential,
 };
 pub use inertia::{
     INERTIA_REL_TOL, InertiaCheck, InertiaComponents, check_inertia, moment_of_inertia, parallel_axis,

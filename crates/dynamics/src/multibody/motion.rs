@@ -251,18 +251,37 @@ impl<T: Scalar> Model<T> {
 }
 
 /// The map v ↦ q̇ of a model, compiled once for a hot path ([`Model::qdot_plan`]): runs of
-/// one-coordinate segments (pins, sliders) whose q̇ is a copy of v, and ball joints whose
-/// q̇ = ½ q ⊗ (0, ω). [`QdotPlan::apply`] gives exactly what [`Model::qdot_into`] gives.
+/// one-coordinate segments (pins, sliders) whose q̇ is a copy of v, ball joints whose
+/// q̇ = ½ q ⊗ (0, ω), and free joints (a run of three then a ball) as one step. [`QdotPlan::apply`]
+/// gives exactly what [`Model::qdot_into`] gives.
 ///
 /// Book: (4.11.x) quaternion kinematics, Euler parameters (§2.15).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct QdotPlan {
-    /// (first q index, first v index, length) of each run of copied coordinates.
-    copies: Vec<(usize, usize, usize)>,
-    /// (q index, v index) of each quaternion.
-    quaternions: Vec<(usize, usize)>,
+    steps: Vec<QdotStep>,
     nq: usize,
     nv: usize,
+}
+
+/// One step of a [`QdotPlan`], at (first q index, first v index).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum QdotStep {
+    /// q̇ = v over a run of this many coordinates.
+    Copy(usize, usize, usize),
+    /// A ball joint's quaternion rate.
+    Ball(usize, usize),
+    /// A free joint: three copied coordinates, then the ball's quaternion rate.
+    Free(usize, usize),
+}
+
+/// ė = ½ e ⊗ (0, ω) for Euler parameters e = (η, ε) and ω in the link frame.
+#[inline(always)]
+fn quaternion_rate<T: Scalar>(e: &[T; 4], w: &[T; 3], o: &mut [T; 4]) {
+    let ([e0, e1, e2, e3], [p, r, w], half) = (*e, *w, T::lit(0.5));
+    o[0] = half * (-e1 * p - e2 * r - e3 * w);
+    o[1] = half * (e0 * p + e2 * w - e3 * r);
+    o[2] = half * (e0 * r + e3 * p - e1 * w);
+    o[3] = half * (e0 * w + e1 * r - e2 * p);
 }
 
 impl QdotPlan {
@@ -275,32 +294,45 @@ impl QdotPlan {
     #[inline]
     pub fn apply<T: Scalar>(&self, q: &[T], v: &[T], out: &mut [T]) {
         let (q, v, out) = (&q[..self.nq], &v[..self.nv], &mut out[..self.nq]);
-        for &(qi, vi, n) in &self.copies {
-            let (o, x) = (&mut out[qi..qi + n], &v[vi..vi + n]);
-            // the short runs of a free joint or a collar without a call to memcpy
-            match (o, x) {
-                ([o0], [x0]) => *o0 = *x0,
-                ([o0, o1], [x0, x1]) => (*o0, *o1) = (*x0, *x1),
-                ([o0, o1, o2], [x0, x1, x2]) => (*o0, *o1, *o2) = (*x0, *x1, *x2),
-                (o, x) => o.copy_from_slice(x),
-            }
-        }
-        let half = T::lit(0.5);
-        for &(qi, vi) in &self.quaternions {
-            let Some(&[e0, e1, e2, e3]) = q.get(qi..qi + 4).and_then(|e| <&[T; 4]>::try_from(e).ok()) else {
-                continue;
-            };
-            let Some(&[p, r, w]) = v.get(vi..vi + 3).and_then(|x| <&[T; 3]>::try_from(x).ok()) else {
-                continue;
-            };
-            if let Some(o) = out.get_mut(qi..qi + 4) {
-                o[0] = half * (-e1 * p - e2 * r - e3 * w);
-                o[1] = half * (e0 * p + e2 * w - e3 * r);
-                o[2] = half * (e0 * r + e3 * p - e1 * w);
-                o[3] = half * (e0 * w + e1 * r - e2 * p);
+        // the plan's indices lie inside nq and nv by construction; a step that would not is
+        // skipped rather than indexed
+        for &step in &self.steps {
+            match step {
+                QdotStep::Copy(qi, vi, n) => {
+                    if let (Some(o), Some(x)) = (out.get_mut(qi..qi + n), v.get(vi..vi + n)) {
+                        o.copy_from_slice(x);
+                    }
+                }
+                QdotStep::Ball(qi, vi) => {
+                    if let (Some(e), Some(w), Some(o)) = (quad(q, qi), triple(v, vi), quad_mut(out, qi)) {
+                        quaternion_rate(e, w, o);
+                    }
+                }
+                QdotStep::Free(qi, vi) => {
+                    let (Some(e), Some(x)) = (quad(q, qi + 3), v.get(vi..vi + 6)) else { continue };
+                    let Some(o) = out.get_mut(qi..qi + 7) else { continue };
+                    let (o3, o4) = o.split_at_mut(3);
+                    let (x3, w) = x.split_at(3);
+                    o3.copy_from_slice(x3);
+                    if let (Ok(w), Ok(o4)) = (<&[T; 3]>::try_from(w), <&mut [T; 4]>::try_from(o4)) {
+                        quaternion_rate(e, w, o4);
+                    }
+                }
             }
         }
     }
+}
+
+fn quad<T>(x: &[T], i: usize) -> Option<&[T; 4]> {
+    x.get(i..i + 4).and_then(|e| e.try_into().ok())
+}
+
+fn quad_mut<T>(x: &mut [T], i: usize) -> Option<&mut [T; 4]> {
+    x.get_mut(i..i + 4).and_then(|e| e.try_into().ok())
+}
+
+fn triple<T>(x: &[T], i: usize) -> Option<&[T; 3]> {
+    x.get(i..i + 3).and_then(|e| e.try_into().ok())
 }
 
 impl<T: Scalar> Model<T> {
@@ -308,18 +340,24 @@ impl<T: Scalar> Model<T> {
     ///
     /// Book: (4.11.x) quaternion kinematics.
     pub fn qdot_plan(&self) -> QdotPlan {
-        let mut plan = QdotPlan { nq: self.nq(), nv: self.nv(), ..QdotPlan::default() };
+        let mut steps: Vec<QdotStep> = Vec::new();
         for s in &self.segs {
             match s.elem {
-                Elem::Revolute(_) | Elem::Prismatic(_) => match plan.copies.last_mut() {
-                    Some((qi, vi, n)) if *qi + *n == s.qi && *vi + *n == s.vi => *n += 1,
-                    _ => plan.copies.push((s.qi, s.vi, 1)),
+                Elem::Revolute(_) | Elem::Prismatic(_) => match steps.last_mut() {
+                    Some(QdotStep::Copy(qi, vi, n)) if *qi + *n == s.qi && *vi + *n == s.vi => *n += 1,
+                    _ => steps.push(QdotStep::Copy(s.qi, s.vi, 1)),
                 },
-                Elem::Spherical => plan.quaternions.push((s.qi, s.vi)),
+                Elem::Spherical => match steps.last_mut() {
+                    // a free joint's three slides run straight into its ball
+                    Some(step @ &mut QdotStep::Copy(qi, vi, 3)) if qi + 3 == s.qi && vi + 3 == s.vi => {
+                        *step = QdotStep::Free(qi, vi);
+                    }
+                    _ => steps.push(QdotStep::Ball(s.qi, s.vi)),
+                },
                 Elem::Fixed => {}
             }
         }
-        plan
+        QdotPlan { steps, nq: self.nq(), nv: self.nv() }
     }
 }
 
