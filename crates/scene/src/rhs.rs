@@ -199,7 +199,11 @@ impl Scene {
     ) -> Result<Option<DVector<f64>>, String> {
         let b = &self.built;
         let nq = b.model.nq();
-        self.deriv_tree(&b.model, t, y, None, out, w)?;
+        if self.needs.route == Route::Plain {
+            self.deriv_plain(y, out, w)?;
+        } else {
+            self.deriv_tree(&b.model, t, y, None, out, w)?;
+        }
         let (q, v) = y.split_at(nq);
         let vd = &mut out[nq..];
         if self.needs.constrained() {

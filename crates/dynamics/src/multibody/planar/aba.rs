@@ -19,7 +19,9 @@ impl<T: Scalar> Planar<T> {
     ///
     /// Returns `false`, having written nothing the caller keeps, when a joint's articulated
     /// inertia D is at the rounding level (an inert coordinate): the spatial passes then decide
-    /// it exactly as documented on `Model::aba`. Gravity is `work.gravity`.
+    /// it exactly as documented on `Model::aba`. Gravity is `work.gravity`. Inlined into its
+    /// one caller, `Model::aba_into`: for one or two segments the call costs as much as a pass.
+    #[inline(always)]
     pub(crate) fn aba(
         &self,
         q: &[T],
