@@ -100,7 +100,7 @@ cases! {
         "UniformGravity::potential", "CentralGravity::new", "CentralGravity::of_mass", "CentralGravity::mu",
         "CentralGravity::force", "CentralGravity::potential", "mutual_gravitation", "mutual_gravitation_potential",
         "gravity_between", "centre_of_gravity", "dipole_field_dyadic", "dipole_field", "dipole_interaction", "dipole_potential",
-        "MutualGravitation::new", "MutualGravitation::gmm", "MutualGravitation::force_on_y", "MutualGravitation::cast"] {
+        "MutualGravitation::new", "MutualGravitation::gmm", "MutualGravitation::force_on_y", "MutualGravitation::cast", "MutualGravitation::potential"] {
         let earth = CentralGravity::new(3.986e14).unwrap();
         // the prepared pair: every hostile G or mass is refused or gives a finite G M m ≥ 0
         for s in hostile() {
@@ -130,6 +130,7 @@ cases! {
             err_or(pair.force_on_y(&r), "MutualGravitation::force_on_y", |f| {
                 f.is_finite() && f.dot(&r) <= 0.0 && mutual_gravitation(6.674e-11, 1.0, 2.0, &r).is_ok_and(|p| p.on_y == *f)
             });
+            err_or(pair.potential(&r), "MutualGravitation::potential", |u| u.is_finite() && *u <= 0.0);
             err_or(mutual_gravitation_potential(6.674e-11, 1.0, 2.0, &r), "mutual potential", |u| u.is_finite());
             let m = v([0.0, 0.0, 1.0]);
             err_or(dipole_field_dyadic(&r), "dipole_field_dyadic", |d| d.is_finite());

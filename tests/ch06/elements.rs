@@ -7,6 +7,7 @@ use vectrix::statics::{
     CentralGravity, Dashpot, GRAVITATIONAL_CONSTANT, Inerter, MutualGravitation, Point, RotationalDashpot,
     RotationalInerter, RotationalSpring, Spring, StaticsError, UniformGravity, centre_of_gravity,
     dipole_field, dipole_field_dyadic, dipole_interaction, gravity_between, mutual_gravitation,
+    mutual_gravitation_potential,
 };
 
 use crate::common::{assert_vec_abs, assert_vec_rel, pt};
@@ -158,8 +159,16 @@ fn fact_6_12_1_mutual_gravitation_prepared_once() {
         // the checked call is this pair, checked again: the same bits
         assert_eq!(mutual_gravitation(g, m, big_m, &r).unwrap().on_y, f, "scale {scale:e}");
     }
-    // over the scalar of dual numbers: the same value, checked once in f64
+    // (8.3.10) U = −G M m/|r⃗| at |r⃗| = 5, and the checked call is this pair's potential
     let r = a.vector([3.0, 4.0, 0.0]);
+    assert_rel(pair.potential(&r).unwrap(), -(g * big_m * m) / 5.0, 2.0 * EPS);
+    assert_eq!(mutual_gravitation_potential(g, m, big_m, &r).unwrap(), pair.potential(&r).unwrap());
+    assert!(matches!(pair.potential(&Vector::zero()), Err(StaticsError::CoincidentPoints { .. })));
+    assert!(matches!(
+        mutual_gravitation_potential(g, -1.0, big_m, &r),
+        Err(StaticsError::InvalidMass { .. })
+    ));
+    // over the scalar of dual numbers: the same value, checked once in f64
     assert_eq!(pair.cast::<f64>().force_on_y(&r).unwrap(), pair.force_on_y(&r).unwrap());
     // bad input: typed errors, never NaN or a silent zero
     assert!(matches!(MutualGravitation::new(-1.0, m, big_m), Err(StaticsError::OutOfRange { .. })));

@@ -66,11 +66,10 @@ impl<T: Scalar> Loads<'_, T> {
     }
 }
 
-/// Ground position of a body's centre of mass (the link origin's, without arithmetic, when
-/// the centre is there).
+/// Ground position of a body's centre of mass.
 #[inline]
 pub(crate) fn centre<T: Scalar>(kin: &Kin<T>, b: &Body, i: usize) -> Vector3<T> {
-    if b.com == Vector3::zeros() { kin.poses[i].1 } else { kin.position(&(Some(i), b.com)) }
+    kin.position(&(Some(i), b.com))
 }
 
 /// Adds every declared force effect at time t (uniform gravity is the model's; impacts,
@@ -243,7 +242,7 @@ pub(crate) fn potential<T: Scalar>(
             Effect::Mutual { pairs } => {
                 for &(i, j, pair) in pairs {
                     let r = centre(kin, &bodies[i], i) - centre(kin, &bodies[j], j);
-                    u -= c(pair.gmm()) / r.norm();
+                    u += pair.cast::<T>().potential(&g.vec(&r)).unwrap_or(nan);
                 }
             }
             Effect::Spring { a, b, k, d } => {

@@ -90,11 +90,13 @@ impl<T: Scalar> Kin<T> {
         self.v.extend_from_slice(&v[..model.nv()]);
     }
 
-    /// Ground position of a point fixed in a body (or in the ground); needs the poses only.
+    /// Ground position of a point fixed in a body (or in the ground); needs the poses only. A
+    /// point at the link origin is the origin's position, read without arithmetic.
     #[inline]
     pub fn position(&self, at: &At) -> Vector3<T> {
         match at.0 {
             None => lift(&at.1),
+            Some(i) if at.1 == Vector3::zeros() => self.poses[i].1,
             Some(i) => {
                 let (e, r) = self.poses[i];
                 r + e.tr_mul(&lift::<T>(&at.1))

@@ -200,6 +200,25 @@ impl<T: Scalar> MutualGravitation<T> {
     }
 }
 
+impl<T: Scalar> MutualGravitation<T> {
+    /// The pair's potential U = −G M m/|r⃗_{y/x}| (8.3.10), with f⃗_{y/x} = −∂U/∂r⃗_{y/x}.
+    ///
+    /// Book: (8.3.10).
+    ///
+    /// # Errors
+    /// [`StaticsError::NonFinite`] for a non-finite separation, [`StaticsError::CoincidentPoints`]
+    /// for r⃗_{y/x} = 0⃗, [`StaticsError::Overflow`] when U exceeds the largest finite number.
+    pub fn potential(&self, r_y_x: &Vector<T>) -> Result<T, StaticsError> {
+        let (_, len) = unit_sep(r_y_x, "mutual gravitation")?;
+        let u = -self.gmm / len;
+        if u.re().is_finite() {
+            Ok(u)
+        } else {
+            Err(StaticsError::Overflow { what: "mutual gravitation potential" })
+        }
+    }
+}
+
 impl MutualGravitation<f64> {
     /// The same pair over another scalar (dual numbers for exact derivatives), without checking
     /// again: G M m was checked finite.
@@ -241,8 +260,7 @@ pub fn mutual_gravitation_potential<T: Scalar>(
     m_x: T,
     r_y_x: &Vector<T>,
 ) -> Result<T, StaticsError> {
-    check_coeff(g, "gravitational constant G", "a finite G ≥ 0")?;
-    CentralGravity { mu: g * m_x }.potential(m_y, r_y_x)
+    MutualGravitation::new(g, m_y, m_x)?.potential(r_y_x)
 }
 
 /// Central gravitational force on body B₂ due to body B₁ and the weight of B₂ relative to B₁:
