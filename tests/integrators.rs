@@ -588,3 +588,133 @@ fn stepper_set_end_lifts_the_default_step_cap_of_a_short_first_interval() {
     // x = cos t at rtol 1e-8 (global error a few times the tolerance)
     assert!((y[0] - 10f64.cos()).abs() <= 1e-6 && (y[1] + 10f64.sin()).abs() <= 1e-6, "{y:?}");
 }
+
+/// ẍ = −x as (x, ẋ) in a `Vec`, f returning a new state.
+#[allow(clippy::ptr_arg)] // the state type is Vec<f64>
+fn oscillator_returning(_t: f64, y: &Vec<f64>) -> Vec<f64> {
+    vec![y[1], -y[0]]
+}
+
+/// The same f written in place ([`vectrix::ode::InPlace`]).
+#[allow(clippy::ptr_arg)] // the state type is Vec<f64>
+fn oscillator_in_place(_t: f64, y: &Vec<f64>, out: &mut Vec<f64>) {
+    out[0] = y[1];
+    out[1] = -y[0];
+}
+
+/// No Jacobian: RADAU5 and BDF take finite differences through f itself.
+type NoJac = fn(f64, &Vec<f64>, &mut [f64]);
+
+#[test]
+fn in_place_rhs_takes_the_same_steps_to_the_bit_in_every_method() {
+    use vectrix::ode::{AnyStepper, Bdf, Method, Radau5};
+    let methods = [
+        Method::Explicit(Adaptive::dopri5().rtol(1e-9).atol(1e-12)),
+        Method::Explicit(Adaptive::dop853().rtol(1e-9).atol(1e-12)),
+        Method::Radau5(Radau5::new().rtol(1e-9).atol(1e-12)),
+        Method::Bdf(Bdf::new().rtol(1e-9).atol(1e-12)),
+    ];
+    for method in &methods {
+        let name = method.name();
+        let y0 = vec![1.0, 0.0];
+        let mut a =
+            AnyStepper::new(method, oscillator_returning, None::<NoJac>, 0.0, y0.clone(), 10.0).unwrap();
+        let mut b =
+            AnyStepper::new_in_place(method, oscillator_in_place, None::<NoJac>, 0.0, y0, 10.0).unwrap();
+        let bits = |y: &[f64]| y.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        let mut steps = 0;
+        while !a.done() {
+            a.step().unwrap();
+            b.step().unwrap();
+            steps += 1;
+            assert_eq!(a.t().to_bits(), b.t().to_bits(), "{name}: t of step {steps}");
+            assert_eq!(bits(a.y()), bits(b.y()), "{name}: y of step {steps}");
+            // the interpolants too (DOP853's three extra stages go through f)
+            let mid = 0.5 * (a.step_start().unwrap() + a.t());
+            assert_eq!(
+                bits(&a.dense().unwrap().eval(mid)),
+                bits(&b.dense().unwrap().eval(mid)),
+                "{name}: dense"
+            );
+        }
+        assert!(b.done() && steps > 10, "{name}: {steps} steps");
+        assert_eq!(a.work().fevals, b.work().fevals, "{name}: evaluations");
+        // and right: x(10) = cos 10, ẋ(10) = −sin 10, to the run's tolerance (global error a few
+        // hundred local tolerances over ~1.6 periods)
+        let err = (b.y()[0] - 10f64.cos()).abs().max((b.y()[1] + 10f64.sin()).abs());
+        assert!(err < 1e-6, "{name}: error {err:e}");
+    }
+}
+
+#[test]
+fn in_place_rhs_that_writes_nan_or_changes_length_is_refused_and_the_run_stays_where_it_was() {
+    use vectrix::ode::explicit::Stepper;
+    for cfg in [Adaptive::dopri5().rtol(1e-8), Adaptive::dop853().rtol(1e-8)] {
+        // f turns NaN past t = 0.5
+        let nan_late = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
+            out[0] = y[1];
+            out[1] = if t > 0.5 { f64::NAN } else { -y[0] };
+        };
+        let mut st = Stepper::new_in_place(&cfg, nan_late, 0.0, vec![1.0, 0.0], 2.0).unwrap();
+        let err = loop {
+            match st.step() {
+                Ok(()) => assert!(st.t() <= 0.5 + 1e-12, "{cfg:?}: stepped to {} past the NaN", st.t()),
+                Err(e) => break e,
+            }
+        };
+        let OdeError::RhsNotFinite { t, index, value, .. } = err else { panic!("{cfg:?}: {err:?}") };
+        assert!(t > 0.5 && index == 1 && value.is_nan(), "{cfg:?}: t {t}, index {index}, value {value}");
+        // the state is the last accepted one (finite, before the NaN), and asking again gives the
+        // same refusal (the stepper's f at its current point survived the refused stage)
+        let (t_at, y_at) = (st.t(), st.y().clone());
+        assert!(t_at <= 0.5 && y_at.iter().all(|v| v.is_finite()), "{cfg:?}: {t_at} {y_at:?}");
+        let again = st.step().unwrap_err();
+        assert!(matches!(again, OdeError::RhsNotFinite { index: 1, .. }), "{cfg:?}: {again:?}");
+        assert_eq!((st.t(), st.y()), (t_at, &y_at), "{cfg:?}");
+
+        // f that grows its output past t = 0.5
+        let grows = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
+            out.truncate(2);
+            out[0] = y[1];
+            out[1] = -y[0];
+            if t > 0.5 {
+                out.push(0.0);
+            }
+        };
+        let mut st = Stepper::new_in_place(&cfg, grows, 0.0, vec![1.0, 0.0], 2.0).unwrap();
+        let err = loop {
+            if let Err(e) = st.step() {
+                break e;
+            }
+        };
+        assert!(matches!(err, OdeError::DimensionMismatch { got: 3, expected: 2, .. }), "{cfg:?}: {err:?}");
+    }
+}
+
+#[test]
+fn dop853_in_place_refused_next_first_stage_keeps_the_current_one() {
+    use vectrix::ode::explicit::Stepper;
+    // DOP853 evaluates f(t + h, y₁) after accepting a step (the next k₁, written in place over
+    // the current one): made NaN once, on the first step's 13th stage (evaluation 14: f(t₀),
+    // the starting step's probe, then 11 stages), the step is refused with stage 13 named, and
+    // the run continues exactly as a run that never saw the NaN
+    let cfg = Adaptive::dop853().rtol(1e-8);
+    let mut calls = 0;
+    let once = |_t: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
+        calls += 1;
+        out[0] = y[1];
+        out[1] = if calls == 14 { f64::NAN } else { -y[0] };
+    };
+    let mut st = Stepper::new_in_place(&cfg, once, 0.0, vec![1.0, 0.0], 2.0).unwrap();
+    let err = st.step().unwrap_err();
+    assert!(matches!(err, OdeError::RhsNotFinite { stage: 13, index: 1, .. }), "{err:?}");
+    assert_eq!((st.t(), st.y().as_slice()), (0.0, &[1.0, 0.0][..]));
+    let mut clean = Stepper::new_in_place(&cfg, oscillator_in_place, 0.0, vec![1.0, 0.0], 2.0).unwrap();
+    while !clean.done() {
+        st.step().unwrap();
+        clean.step().unwrap();
+        assert_eq!(st.t().to_bits(), clean.t().to_bits());
+        assert_eq!(st.y(), clean.y());
+    }
+    assert!(st.done());
+}

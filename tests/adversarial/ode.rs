@@ -468,4 +468,60 @@ cases! {
         let _ = run_all as fn(Budget) -> Vec<vectrix::ode::harness::Point>;
         let _ = Vector3::<f64>::zeros();
     }
+
+    // In-place right-hand sides (`InPlace`, issue 32): hostile states and ends are refused or
+    // give finite answers through every constructor; an in-place f that writes NaN or changes
+    // the state's length is refused with a typed error; on the stiff y′ = −1000(y − cos t) the
+    // in-place and returning forms take the same steps to the bit in every method; `Rhs::call`
+    // and `Rhs::call_into` give the closure's own value for every hostile input.
+    in_place ["Stepper::new_in_place", "RadauStepper::new_in_place", "BdfStepper::new_in_place",
+        "AnyStepper::new_in_place", "Rhs::call", "Rhs::call_into"] {
+        use vectrix::ode::explicit::Stepper;
+        use vectrix::ode::{AnyStepper, Bdf, BdfStepper, InPlace, Method as OdeMethod, Radau5, RadauStepper, Rhs};
+        let f = |t: f64, y: &Vec<f64>| vec![-1000.0 * (y[0] - t.cos())];
+        let g = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| out[0] = -1000.0 * (y[0] - t.cos());
+        let jac = |_: f64, _: &Vec<f64>, out: &mut [f64]| out[0] = -1000.0;
+        let (r, b) = (Radau5::new().rtol(1e-9).atol(1e-11), Bdf::new().rtol(1e-9).atol(1e-11));
+        let e = Adaptive::dopri5().rtol(1e-9).atol(1e-11);
+        for x in hostile() {
+            err_or(Stepper::new_in_place(&e, g, 0.0, vec![x], 1.0), "Stepper(hostile y0)", |s| fin(s.y()));
+            err_or(Stepper::new_in_place(&e, g, 0.0, vec![1.0], x), "Stepper(hostile end)", |s| fin(s.y()));
+            err_or(RadauStepper::new_in_place(&r, g, Some(jac), 0.0, vec![x], 1.0), "Radau(hostile y0)", |s| fin(s.y()));
+            err_or(BdfStepper::new_in_place(&b, g, Some(jac), 0.0, vec![x], x), "Bdf(hostile)", |s| fin(s.y()));
+            // the trait on its own: the closure's value, bit for bit, NaN included
+            let (mut fr, mut gi) = (f, InPlace(g));
+            let y = vec![x];
+            let want = f(x, &y)[0];
+            let mut out = vec![0.0];
+            gi.call_into(x, &y, &mut out);
+            for got in [Rhs::call(&mut fr, x, &y)[0], gi.call(x, &y)[0], out[0]] {
+                assert!(got.to_bits() == want.to_bits(), "Rhs at {x}: {got} against {want}");
+            }
+            let mut back = vec![7.0];
+            fr.call_into(x, &y, &mut back);
+            assert!(back[0].to_bits() == want.to_bits());
+        }
+        for m in [OdeMethod::Explicit(e), OdeMethod::Explicit(Adaptive::dop853().rtol(1e-9).atol(1e-11)),
+            OdeMethod::Radau5(r), OdeMethod::Bdf(b)] {
+            // a NaN from f, and a length that changes, are typed errors
+            let nan = |t: f64, _: &Vec<f64>, out: &mut Vec<f64>| out[0] = if t > 0.25 { f64::NAN } else { 1.0 };
+            let mut s = AnyStepper::new_in_place(&m, nan, None::<fn(f64, &Vec<f64>, &mut [f64])>, 0.0, vec![1.0], 1.0).unwrap();
+            let end = loop {
+                if let Err(e) = s.step() { break e; }
+                assert!(!s.done(), "{}: finished through a NaN", m.name());
+            };
+            assert!(matches!(end, OdeError::RhsNotFinite { .. } | OdeError::StepSizeUnderflow { .. }), "{}: {end:?}", m.name());
+            let grow = |_: f64, _: &Vec<f64>, out: &mut Vec<f64>| { out.clear(); out.extend([1.0, 2.0]); };
+            refused(AnyStepper::new_in_place(&m, grow, None::<fn(f64, &Vec<f64>, &mut [f64])>, 0.0, vec![1.0], 1.0), "f of the wrong length");
+            // the same steps as the returning form, and the closed form at the end
+            let mut a = AnyStepper::new(&m, f, Some(jac), 0.0, vec![1.0], 1.0).unwrap();
+            let mut s = AnyStepper::new_in_place(&m, g, Some(jac), 0.0, vec![1.0], 1.0).unwrap();
+            while !a.done() {
+                a.step().unwrap();
+                s.step().unwrap();
+                assert!(a.t().to_bits() == s.t().to_bits() && a.y()[0].to_bits() == s.y()[0].to_bits(), "{}", m.name());
+            }
+            assert!(s.done() && (s.y()[0] - stiff_exact(1.0)).abs() <= 1e-7, "{}: {}", m.name(), s.y()[0]);
+        }
+    }
 }

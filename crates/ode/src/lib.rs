@@ -7,7 +7,9 @@
 //!   exact or finite-difference Jacobians, dense output and events), the variable-order BDF
 //!   ([`Bdf`], orders 1–5, the same Jacobians, dense output and events), and [`AnyStepper`]
 //!   to drive any of them step by step; [`Solver`] holds the settings all adaptive methods
-//!   share and [`Progress`] where a step-by-step run stands;
+//!   share and [`Progress`] where a step-by-step run stands; the steppers take f returning a
+//!   new state or written in place ([`InPlace`], no allocation per evaluation for `Vec` or
+//!   `DVector` states, the same bits), both a [`Rhs`];
 //! * Gauss–Legendre collocation ([`GaussLegendre`]: implicit midpoint, 2 and 3 stages, Newton
 //!   with the dense LU of [`implicit::DenseLu`]) and Störmer–Verlet ([`stormer_verlet`]);
 //! * Lie-group methods for attitude ([`LieMethod`]: exponential Euler, RKMK4,
@@ -52,6 +54,7 @@ pub mod implicit;
 pub mod lie;
 mod method;
 mod progress;
+mod rhs;
 mod solver;
 mod state;
 mod stiffness;
@@ -68,6 +71,7 @@ pub use implicit::{
 pub use lie::{LieGroup, LieMethod, integrate_lie, quaternion_exact_step};
 pub use method::{AnyStepper, Method};
 pub use progress::Progress;
+pub use rhs::{InPlace, Rhs};
 pub use solver::Solver;
 pub use state::State;
 pub use stiffness::{Choice, STIFF_CHECK_EVERY, STIFF_H_RHO, STIFF_MIN_STEPS};

@@ -4,6 +4,7 @@
 use crate::explicit::{Adaptive, DenseStep, Stepper, Steps};
 use crate::implicit::{Bdf, BdfStepper, Radau5, RadauStepper};
 use crate::progress::Progress;
+use crate::{InPlace, Rhs};
 use crate::{OdeError, State};
 
 /// An adaptive method: an explicit pair ([`Adaptive`]) or a stiff one ([`Radau5`], [`Bdf`]).
@@ -68,7 +69,7 @@ impl Method {
 /// Book: §4.11.
 // one stepper per run, moved never: boxing either variant would only add an indirection
 #[allow(clippy::large_enum_variant)]
-pub enum AnyStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> {
+pub enum AnyStepper<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> {
     /// An explicit pair.
     Explicit(Stepper<S, F>),
     /// RADAU5.
@@ -77,9 +78,7 @@ pub enum AnyStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f6
     Bdf(BdfStepper<S, F, J>),
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug
-    for AnyStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug for AnyStepper<S, F, J> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Self::Explicit(s) => s.fmt(f),
@@ -89,9 +88,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt:
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref
-    for AnyStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref for AnyStepper<S, F, J> {
     type Target = Progress<S>;
     fn deref(&self) -> &Progress<S> {
         match self {
@@ -102,9 +99,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops:
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut
-    for AnyStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut for AnyStepper<S, F, J> {
     fn deref_mut(&mut self) -> &mut Progress<S> {
         match self {
             Self::Explicit(s) => s,
@@ -114,7 +109,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops:
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> for AnyStepper<S, F, J> {
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> Steps<S> for AnyStepper<S, F, J> {
     fn step(&mut self) -> Result<(), OdeError> {
         AnyStepper::step(self)
     }
@@ -129,10 +124,42 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
     /// # Errors
     /// As those constructors.
     pub fn new(method: &Method, f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+        Self::start(method, f, jac, t0, y0, t_end)
+    }
+}
+
+impl<S: State, G: FnMut(f64, &S, &mut S), J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, InPlace<G>, J> {
+    /// [`AnyStepper::new`] with f written in place, `g(t, y, out)` ([`InPlace`]): the same steps
+    /// and bits.
+    ///
+    /// # Errors
+    /// As [`AnyStepper::new`].
+    pub fn new_in_place(
+        method: &Method,
+        g: G,
+        jac: Option<J>,
+        t0: f64,
+        y0: S,
+        t_end: f64,
+    ) -> Result<Self, OdeError> {
+        Self::start(method, InPlace(g), jac, t0, y0, t_end)
+    }
+}
+
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
+    /// [`AnyStepper::new`] for any [`Rhs`].
+    pub(crate) fn start(
+        method: &Method,
+        f: F,
+        jac: Option<J>,
+        t0: f64,
+        y0: S,
+        t_end: f64,
+    ) -> Result<Self, OdeError> {
         Ok(match method {
-            Method::Explicit(a) => Self::Explicit(Stepper::new(a, f, t0, y0, t_end)?),
-            Method::Radau5(r) => Self::Radau5(RadauStepper::new(r, f, jac, t0, y0, t_end)?),
-            Method::Bdf(b) => Self::Bdf(BdfStepper::new(b, f, jac, t0, y0, t_end)?),
+            Method::Explicit(a) => Self::Explicit(Stepper::start(a, f, t0, y0, t_end)?),
+            Method::Radau5(r) => Self::Radau5(RadauStepper::start(r, f, jac, t0, y0, t_end)?),
+            Method::Bdf(b) => Self::Bdf(BdfStepper::start(b, f, jac, t0, y0, t_end)?),
         })
     }
     /// One accepted step.

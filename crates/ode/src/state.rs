@@ -1,5 +1,6 @@
 //! Vector-space states: anything whose components can be viewed as a slice of `f64`.
 
+use crate::Rhs;
 use nalgebra::{DVector, SVector};
 
 use crate::OdeError;
@@ -156,7 +157,7 @@ pub(crate) fn check_state<S: State>(t: f64, y: &S) -> Result<(), OdeError> {
 
 /// Evaluates f and checks the result, saying where a non-finite value came from.
 #[inline(always)]
-pub(crate) fn eval<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn eval<S: State, F: Rhs<S>>(
     f: &mut F,
     t: f64,
     y: &S,
@@ -165,7 +166,7 @@ pub(crate) fn eval<S: State, F: FnMut(f64, &S) -> S>(
     fevals: &mut usize,
 ) -> Result<S, OdeError> {
     *fevals += 1;
-    let k = f(t, y);
+    let k = f.call(t, y);
     if k.dim() != y.dim() {
         return Err(OdeError::DimensionMismatch {
             what: "right-hand side f(t, y)",
@@ -179,18 +180,61 @@ pub(crate) fn eval<S: State, F: FnMut(f64, &S) -> S>(
     }
 }
 
+/// [`eval`] into `out` (a state of y's dimension, overwritten): an [`crate::InPlace`] right-hand
+/// side writes there without allocating. `out` is unspecified after an error.
+#[inline(always)]
+pub(crate) fn eval_into<S: State, F: Rhs<S>>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    out: &mut S,
+    (step_start, stage): (f64, usize),
+    fevals: &mut usize,
+) -> Result<(), OdeError> {
+    *fevals += 1;
+    f.call_into(t, y, out);
+    if out.dim() != y.dim() {
+        return Err(OdeError::DimensionMismatch {
+            what: "right-hand side f(t, y)",
+            got: out.dim(),
+            expected: y.dim(),
+        });
+    }
+    match first_non_finite(out) {
+        Some((index, value)) => Err(OdeError::RhsNotFinite { t, step_start, stage, index, value }),
+        None => Ok(()),
+    }
+}
+
+/// Stage i of a step into `k[i]` when that slot exists (kept
+/// from an earlier step: an [`crate::InPlace`] right-hand side reuses its buffer), else pushed
+/// (`k` then holds exactly i stages). Unchecked, as [`eval_unchecked`].
+#[inline(always)]
+pub(crate) fn eval_slot<S: State, F: Rhs<S>>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    k: &mut Vec<S>,
+    i: usize,
+    fevals: &mut usize,
+) {
+    *fevals += 1;
+    match k.get_mut(i) {
+        Some(ki) => f.call_into(t, y, ki),
+        None => {
+            debug_assert_eq!(k.len(), i);
+            k.push(f.call(t, y));
+        }
+    }
+}
+
 /// Evaluates f without checking the result: the explicit pairs check all stages of a step at
 /// once with [`check_stages`] (one branch per step instead of one per component and stage).
 /// Later stages of a step may therefore see a non-finite argument before the step is refused.
 #[inline(always)]
-pub(crate) fn eval_unchecked<S: State, F: FnMut(f64, &S) -> S>(
-    f: &mut F,
-    t: f64,
-    y: &S,
-    fevals: &mut usize,
-) -> S {
+pub(crate) fn eval_unchecked<S: State, F: Rhs<S>>(f: &mut F, t: f64, y: &S, fevals: &mut usize) -> S {
     *fevals += 1;
-    f(t, y)
+    f.call(t, y)
 }
 
 /// `Err(RhsNotFinite)` naming the first non-finite stage among `k[first..]` (stage i evaluated

@@ -27,8 +27,8 @@ pub const DEFAULT_MAX_WALL_SECONDS: f64 = 600.0;
 /// A run whose pace predicts more than this multiple of a budget stops at once (fail fast).
 const FAIL_FAST_FACTOR: f64 = 10.0;
 /// A right-hand side as the run's steppers take it.
-trait Rhs: FnMut(f64, &Vec<f64>) -> Vec<f64> {}
-impl<F: FnMut(f64, &Vec<f64>) -> Vec<f64>> Rhs for F {}
+trait Rhs: vectrix_ode::Rhs<Vec<f64>> {}
+impl<F: vectrix_ode::Rhs<Vec<f64>>> Rhs for F {}
 /// A Jacobian as the implicit steppers take it (row-major into the slice).
 trait Jac: FnMut(f64, &Vec<f64>, &mut [f64]) {}
 impl<J: FnMut(f64, &Vec<f64>, &mut [f64])> Jac for J {}
@@ -272,13 +272,12 @@ impl Scene {
             return Ok(pass.finish(y0, start));
         }
         let mut scratch = RhsScratch::new(self);
-        let f = |t: f64, y: &Vec<f64>| {
-            let mut out = vec![0.0; y.len()];
-            if let Err(e) = self.deriv_resting(t, y, &mut out, &mut scratch, &contacts.borrow().resting) {
+        // f written in place: the stepper keeps one state per stage (no allocation per evaluation)
+        let f = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
+            if let Err(e) = self.deriv_resting(t, y, out, &mut scratch, &contacts.borrow().resting) {
                 failure.borrow_mut().get_or_insert(e);
                 out.fill(f64::NAN);
             }
-            out
         };
         // implicit steps: ∂f/∂y from dual numbers for a tree; otherwise RADAU5's own finite
         // differences (through the same f, so they see the resting contacts too)
@@ -299,7 +298,8 @@ impl Scene {
         });
         let mut stops = breakpoints(self.spec());
         stops.push(self.spec().duration);
-        let mut st = AnyStepper::new(&self.solver, f, jac, 0.0, y0, stops[0]).map_err(|e| pass.ode_err(e))?;
+        let mut st =
+            AnyStepper::new_in_place(&self.solver, f, jac, 0.0, y0, stops[0]).map_err(|e| pass.ode_err(e))?;
         pass.geo = if self.needs.impacts { self.gaps(st.y()).map_err(|e| fail(0.0, e))? } else { Vec::new() };
         let (mut stop_at, mut last_check) = (0, 0);
         loop {

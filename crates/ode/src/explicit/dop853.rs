@@ -2,7 +2,8 @@
 
 use super::dense::{DenseStep, Form, hermite_part, weighted};
 use super::dop853_coefficients::{A, B, BHH, C, D, E};
-use crate::state::{State, check_stages, combine, combine_into, eval, eval_unchecked};
+use crate::Rhs;
+use crate::state::{State, check_stages, combine, combine_into, eval, eval_slot};
 use crate::{OdeError, Work};
 
 /// Nodes of the 12 stages of the 8th-order solution (c₁₂ = 1).
@@ -11,11 +12,11 @@ pub(crate) const C12: [f64; 12] = [C[0], C[1], C[2], C[3], C[4], C[5], C[6], C[7
 /// Stage rows of the 12 stages (row 0 empty).
 pub(crate) const A12: [&[f64]; 12] = [&[], A[0], A[1], A[2], A[3], A[4], A[5], A[6], A[7], A[8], A[9], A[10]];
 
-/// Stages 2..=12 from k₁ = `k[0]`; returns y₁ and the scaled error norm of HNW (10.17):
+/// Stages 2..=12 from k₁ = `k[0]` into `k[1..12]` (k holds at least k₁); returns y₁ and the scaled error norm of HNW (10.17):
 /// err = |h| ‖e₅‖² / √(n (‖e₅‖² + 0.01‖e₃‖²)), with weights sk = atol + rtol·max(|y|, |y₁|).
 ///
 /// Book: §4.11; HNW §II.10.
-pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn step<S: State, F: Rhs<S>>(
     f: &mut F,
     t: f64,
     y: &S,
@@ -24,25 +25,33 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
     tol: (f64, f64),
     work: &mut Work,
 ) -> Result<(S, f64), OdeError> {
-    k.truncate(1);
     // kᵢ = f(t + cᵢh, y + h Σ aᵢⱼ kⱼ), unrolled so that every row of A is a constant; the
-    // stages' arguments share one state
+    // stages' arguments share one state, and each stage goes into its slot of `k` (in place:
+    // kept from the last step and written without allocating; else pushed anew)
+    if !F::IN_PLACE {
+        k.truncate(1);
+    }
     let mut yi = y.clone();
     macro_rules! stages {
         ($($i:literal)*) => {$(
             combine_into(&mut yi, y, h, A12[$i], k);
-            let ki = eval_unchecked(f, t + C12[$i] * h, &yi, &mut work.fevals);
-            k.push(ki);
+            eval_slot(f, t + C12[$i] * h, &yi, k, $i, &mut work.fevals);
         )*};
     }
     stages!(1 2 3 4 5 6 7 8 9 10 11);
-    check_stages(k, 1, t, h, &C12)?;
+    check_stages(&k[..12], 1, t, h, &C12)?;
     // Σ bᵢ kᵢ once: y₁ = y + h Σ bᵢ kᵢ (8th order), and the 3rd-order estimate
     // e₃ = Σ bᵢkᵢ − (bhh₁k₁ + bhh₂k₉ + bhh₃k₁₂); the 5th-order estimate e₅ = Σ eᵢ kᵢ.
     // Element by element (each sum in the order of the stage-by-stage form, so the same bits),
     // without the e₃ and e₅ states.
     let (rtol, atol) = tol;
-    let mut y1 = y.clone();
+    // y₁ in the stages' argument when in place (a heap state keeps its buffer)
+    let mut y1 = if F::IN_PLACE {
+        yi.clone_from(y);
+        yi
+    } else {
+        y.clone()
+    };
     let (mut err5, mut err3) = (0.0, 0.0);
     let (ys, n) = (y.as_slice(), y.dim());
     let k = &k[..12];
@@ -76,7 +85,7 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
 ///
 /// Book: §4.11; HNW §II.10, `dop853.f` (IOUT ≥ 2 block).
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn dense<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn dense<S: State, F: Rhs<S>>(
     f: &mut F,
     t: f64,
     y: &S,

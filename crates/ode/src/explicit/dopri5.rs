@@ -2,14 +2,34 @@
 
 use super::dense::{DenseStep, Form, hermite_part, weighted};
 use super::tableau::{DOPRI5, DOPRI5_D, DOPRI5_E};
-use crate::state::{State, check_stages, eval_unchecked};
+use crate::Rhs;
+use crate::state::{State, check_stages, combine_into, eval_slot, eval_unchecked};
 use crate::{OdeError, Work};
 
-/// Stages 2..=7 from k₁ = `k[0]` (stage 7 is f(t + h, y₁), first same as last); returns y₁
-/// and the RMS error ‖h Σ eᵢkᵢ / sk‖ with sk = atol + rtol·max(|y|, |y₁|).
+/// Stages 2..=7 from k₁ = `k[0]` into `k[1..7]` (stage 7 is f(t + h, y₁), first same as
+/// last); returns y₁ and the RMS error ‖h Σ eᵢkᵢ / sk‖ with sk = atol + rtol·max(|y|, |y₁|).
 ///
 /// Book: §4.11; HNW §II.5, (4.11).
-pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn step<S: State, F: Rhs<S>>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    h: f64,
+    k: &mut Vec<S>,
+    tol: (f64, f64),
+    work: &mut Work,
+) -> Result<(S, f64), OdeError> {
+    if F::IN_PLACE {
+        step_in_place(f, t, y, h, k, tol, work)
+    } else {
+        step_returning(f, t, y, h, k, tol, work)
+    }
+}
+
+/// [`step`] for a right-hand side that returns its result: the stages as locals (registers
+/// for small fixed-size states), moved into `k` at the end.
+#[inline(always)]
+fn step_returning<S: State, F: Rhs<S>>(
     f: &mut F,
     t: f64,
     y: &S,
@@ -53,6 +73,63 @@ pub(crate) fn step<S: State, F: FnMut(f64, &S) -> S>(
     for ((yi, y1i), ei) in y.as_slice().iter().zip(y1.as_slice()).zip(e.as_slice()) {
         let sk = atol + rtol * yi.abs().max(y1i.abs());
         err += (ei / sk).powi(2);
+    }
+    let err = (err / y.dim() as f64).sqrt();
+    // Every stage but k₂ enters the estimate with a nonzero weight (and y₁ its scale), so a
+    // non-finite stage makes it non-finite: the exact scan (which names the stage) runs only
+    // then, or when k₂ or a stage's length is off (the length test folds away for fixed-size
+    // states). A finite estimate that overflowed passes the scan and is rejected as too large.
+    let dims_ok = k[1..].iter().all(|ki| ki.dim() == y.dim());
+    let k2_finite = k[1].as_slice().iter().sum::<f64>().is_finite();
+    if !(dims_ok && k2_finite && err.is_finite()) {
+        check_stages(k, 1, t, h, DOPRI5.c)?;
+    }
+    Ok((y1, err))
+}
+
+/// [`step`] for an in-place right-hand side ([`crate::InPlace`]): each stage written into its
+/// slot of `k`, kept from the last step (no allocation per evaluation for a heap state).
+#[inline(always)]
+fn step_in_place<S: State, F: Rhs<S>>(
+    f: &mut F,
+    t: f64,
+    y: &S,
+    h: f64,
+    k: &mut Vec<S>,
+    tol: (f64, f64),
+    work: &mut Work,
+) -> Result<(S, f64), OdeError> {
+    // kᵢ = f(t + cᵢh, y + h Σ aᵢⱼ kⱼ) into slot i of `k` (kept from the last step: an
+    // in-place right-hand side writes there without allocating), every row of A a constant.
+    // The stages' arguments share one state (a heap state: one allocation a step, not one a
+    // stage), which ends as y₁: row 7 of A is b.
+    let a = DOPRI5.a;
+    let mut yi = y.clone();
+    for (i, (row, ci)) in a.iter().zip(DOPRI5.c).enumerate().skip(1) {
+        combine_into(&mut yi, y, h, row, k);
+        eval_slot(f, t + ci * h, &yi, k, i, &mut work.fevals);
+    }
+    let y1 = yi;
+    let k = &k[..7];
+    // the local error estimate h Σ eᵢ kᵢ component by component (e₂ = 0: k₂ does not enter),
+    // each sum in the order of the stage-by-stage form (the same bits), without its own state
+    let (rtol, atol) = tol;
+    let mut err = 0.0;
+    let n = y.dim();
+    let (ys, y1s) = (y.as_slice(), &y1.as_slice()[..n]);
+    let ks = [&k[0], &k[2], &k[3], &k[4], &k[5], &k[6]].map(State::as_slice);
+    if ks.iter().all(|kj| kj.len() == n) {
+        for i in 0..n {
+            let mut e = ks[0][i] * (h * DOPRI5_E[0]);
+            for (ej, kj) in DOPRI5_E[2..].iter().zip(&ks[1..]) {
+                e += (h * ej) * kj[i];
+            }
+            let sk = atol + rtol * ys[i].abs().max(y1s[i].abs());
+            err += (e / sk).powi(2);
+        }
+    } else {
+        // a stage of the wrong length: refused by the scan below
+        err = f64::NAN;
     }
     let err = (err / y.dim() as f64).sqrt();
     // Every stage but k₂ enters the estimate with a nonzero weight (and y₁ its scale), so a

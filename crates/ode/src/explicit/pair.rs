@@ -3,6 +3,7 @@
 //!
 //! Book: §4.11; HNW §II.4.
 
+use crate::Rhs;
 use crate::solver::Solver;
 use crate::state::{State, eval};
 use crate::{OdeError, Work};
@@ -68,7 +69,7 @@ fn rms(n: usize, x: impl Fn(usize) -> f64) -> f64 {
 /// Hairer's starting step `hinit`: h with ‖h f₀‖ ≈ 0.01‖y₀‖, refined by an estimate of
 /// the second derivative so that the first local error is near the tolerance.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn initial_step<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn initial_step<S: State, F: Rhs<S>>(
     f: &mut F,
     t: f64,
     y: &S,

@@ -11,7 +11,8 @@ use super::drive::Steps;
 use super::pair::{Adaptive, Pair, initial_step, order};
 use super::{dop853, dopri5};
 use crate::progress::Progress;
-use crate::state::{State, check_state, eval};
+use crate::state::{State, check_state, eval, eval_into};
+use crate::{InPlace, Rhs};
 use crate::{OdeError, Work};
 
 /// An adaptive integration in progress: [`Stepper::step`] takes one accepted step,
@@ -39,7 +40,7 @@ use crate::{OdeError, Work};
 /// ```
 ///
 /// Book: §4.11; HNW §II.4, §II.6.
-pub struct Stepper<S: State, F: FnMut(f64, &S) -> S> {
+pub struct Stepper<S: State, F: Rhs<S>> {
     cfg: Adaptive,
     f: F,
     /// t, y, the last step, h, the end time and the work (the accessors, by `Deref`).
@@ -53,20 +54,20 @@ pub struct Stepper<S: State, F: FnMut(f64, &S) -> S> {
     last_rejected: bool,
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S> core::ops::Deref for Stepper<S, F> {
+impl<S: State, F: Rhs<S>> core::ops::Deref for Stepper<S, F> {
     type Target = Progress<S>;
     fn deref(&self) -> &Progress<S> {
         &self.p
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S> core::ops::DerefMut for Stepper<S, F> {
+impl<S: State, F: Rhs<S>> core::ops::DerefMut for Stepper<S, F> {
     fn deref_mut(&mut self) -> &mut Progress<S> {
         &mut self.p
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S> Steps<S> for Stepper<S, F> {
+impl<S: State, F: Rhs<S>> Steps<S> for Stepper<S, F> {
     fn step(&mut self) -> Result<(), OdeError> {
         Stepper::step(self)
     }
@@ -75,7 +76,7 @@ impl<S: State, F: FnMut(f64, &S) -> S> Steps<S> for Stepper<S, F> {
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S> core::fmt::Debug for Stepper<S, F> {
+impl<S: State, F: Rhs<S>> core::fmt::Debug for Stepper<S, F> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("Stepper")
             .field("t", &self.p.t)
@@ -93,7 +94,25 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
     /// [`OdeError::InvalidInterval`], [`OdeError::NonPositiveTolerance`],
     /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`], and
     /// [`OdeError::RhsNotFinite`] or [`OdeError::DimensionMismatch`] from the first evaluations.
-    pub fn new(cfg: &Adaptive, mut f: F, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+    pub fn new(cfg: &Adaptive, f: F, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+        Self::start(cfg, f, t0, y0, t_end)
+    }
+}
+
+impl<S: State, G: FnMut(f64, &S, &mut S)> Stepper<S, InPlace<G>> {
+    /// [`Stepper::new`] with f written in place, `g(t, y, out)` ([`InPlace`]): the same steps
+    /// and bits, without an allocation per evaluation for a heap state.
+    ///
+    /// # Errors
+    /// As [`Stepper::new`].
+    pub fn new_in_place(cfg: &Adaptive, g: G, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+        Self::start(cfg, InPlace(g), t0, y0, t_end)
+    }
+}
+
+impl<S: State, F: Rhs<S>> Stepper<S, F> {
+    /// [`Stepper::new`] for any [`Rhs`].
+    pub(crate) fn start(cfg: &Adaptive, mut f: F, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
         let h_max = cfg.check(t0, t_end)?;
         check_state(t0, &y0)?;
         let mut work = Work::default();
@@ -155,8 +174,15 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
             if last {
                 h = t1 - t;
             }
-            self.k.clear();
-            self.k.push(self.f_now.clone());
+            // k₁ = f(t, y). In place: into the last step's first stage, the other stages'
+            // slots kept for the step to write into (a heap state keeps its buffers).
+            match self.k.first_mut() {
+                Some(k1) if F::IN_PLACE => k1.clone_from(&self.f_now),
+                _ => {
+                    self.k.clear();
+                    self.k.push(self.f_now.clone());
+                }
+            }
             let (y1, err) = match self.cfg.method {
                 Pair::Dopri5 => {
                     dopri5::step(&mut self.f, t, &self.p.y, h, &mut self.k, tol, &mut self.p.work)?
@@ -180,12 +206,24 @@ impl<S: State, F: FnMut(f64, &S) -> S> Stepper<S, F> {
                 self.last_rejected = false;
                 let t_new = if last { t1 } else { t + h };
                 // f(t + h, y₁): FSAL stage of DOPRI5, the next k₁ (and k₁₃) for DOP853
-                let f1 = match self.cfg.method {
-                    Pair::Dopri5 => self.k[6].clone(),
-                    Pair::Dop853 => eval(&mut self.f, t_new, &y1, t, 13, &mut self.p.work.fevals)?,
-                };
+                match self.cfg.method {
+                    Pair::Dopri5 if F::IN_PLACE => self.f_now.clone_from(&self.k[6]),
+                    Pair::Dopri5 => self.f_now = self.k[6].clone(),
+                    Pair::Dop853 if !F::IN_PLACE => {
+                        self.f_now = eval(&mut self.f, t_new, &y1, t, 13, &mut self.p.work.fevals)?;
+                    }
+                    Pair::Dop853 => {
+                        let at = (t, 13);
+                        if let Err(e) =
+                            eval_into(&mut self.f, t_new, &y1, &mut self.f_now, at, &mut self.p.work.fevals)
+                        {
+                            // f at the current point again (k₁ of the refused step is a copy)
+                            self.f_now.clone_from(&self.k[0]);
+                            return Err(e);
+                        }
+                    }
+                }
                 self.p.advance(t_new, y1);
-                self.f_now = f1;
                 // a step cut short to land on t1 keeps the controller's proposal
                 self.p.h = if last { h_new.max(self.p.h) } else { h_new };
                 return Ok(());

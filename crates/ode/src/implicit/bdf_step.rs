@@ -4,6 +4,7 @@
 //! Book: §4.11; HW §III.5, §V.5; Shampine & Reichelt 1997 (scipy `BDF._step_impl`).
 
 use super::{BdfStepper, Failure, MAX_FACTOR, MAX_ORDER, MIN_FACTOR, Scratch, error_const, gamma};
+use crate::Rhs;
 
 /// Consecutive failed Newton solves (or singular matrices) in one step before giving up.
 const MAX_FAILURES: usize = 10;
@@ -12,7 +13,7 @@ use crate::OdeError;
 use crate::explicit::{DenseStep, Form};
 use crate::state::{State, eval};
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper<S, F, J> {
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> BdfStepper<S, F, J> {
     /// Takes one accepted step (rejected attempts are retried inside, smaller); the last step
     /// lands exactly on the end time. Does nothing when done.
     ///

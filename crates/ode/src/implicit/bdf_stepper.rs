@@ -10,6 +10,7 @@ use super::radau_core::{NoJacobian, jacobian_into, rms_scaled};
 use crate::explicit::{DenseStep, Steps};
 use crate::progress::Progress;
 use crate::state::{State, check_state, eval};
+use crate::{InPlace, Rhs};
 use crate::{OdeError, Work};
 
 /// Highest BDF order.
@@ -65,7 +66,7 @@ fn change_d(d: &mut [Vec<f64>], k: usize, rho: f64) {
 /// (finite differences when `None`, counted in [`Work::fd_jacobian_fevals`]).
 ///
 /// Book: §4.11; HW §III.5; Shampine & Reichelt 1997.
-pub struct BdfStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64]) = NoJacobian<S>> {
+pub struct BdfStepper<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64]) = NoJacobian<S>> {
     cfg: Bdf,
     f: F,
     jac_fn: Option<J>,
@@ -88,9 +89,7 @@ pub struct BdfStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [
     newton_tol: f64,
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug
-    for BdfStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug for BdfStepper<S, F, J> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("BdfStepper")
             .field("t", &self.p.t)
@@ -101,24 +100,20 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt:
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref
-    for BdfStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref for BdfStepper<S, F, J> {
     type Target = Progress<S>;
     fn deref(&self) -> &Progress<S> {
         &self.p
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut
-    for BdfStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut for BdfStepper<S, F, J> {
     fn deref_mut(&mut self) -> &mut Progress<S> {
         &mut self.p
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> for BdfStepper<S, F, J> {
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> Steps<S> for BdfStepper<S, F, J> {
     fn step(&mut self) -> Result<(), OdeError> {
         BdfStepper::step(self)
     }
@@ -175,7 +170,32 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> BdfStepper
     /// max_newton = 0), [`OdeError::NonFiniteState`], [`OdeError::TooManySteps`] when h_max
     /// cannot cover the interval, [`OdeError::RhsNotFinite`], [`OdeError::DimensionMismatch`]
     /// and [`OdeError::JacobianNotFinite`] from the first evaluations.
-    pub fn new(
+    pub fn new(cfg: &Bdf, f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+        Self::start(cfg, f, jac, t0, y0, t_end)
+    }
+}
+
+impl<S: State, G: FnMut(f64, &S, &mut S), J: FnMut(f64, &S, &mut [f64])> BdfStepper<S, InPlace<G>, J> {
+    /// [`BdfStepper::new`] with f written in place, `g(t, y, out)` ([`InPlace`]): the same steps
+    /// and bits.
+    ///
+    /// # Errors
+    /// As [`BdfStepper::new`].
+    pub fn new_in_place(
+        cfg: &Bdf,
+        g: G,
+        jac: Option<J>,
+        t0: f64,
+        y0: S,
+        t_end: f64,
+    ) -> Result<Self, OdeError> {
+        Self::start(cfg, InPlace(g), jac, t0, y0, t_end)
+    }
+}
+
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> BdfStepper<S, F, J> {
+    /// [`BdfStepper::new`] for any [`Rhs`].
+    pub(crate) fn start(
         cfg: &Bdf,
         mut f: F,
         mut jac: Option<J>,

@@ -6,6 +6,7 @@
 //! (implementation of implicit Runge–Kutta methods), and their `radau5.f` (`RADCOR`,
 //! `ESTRAD`, `SLVRAD`, `DECOMR`, `DECOMC`), whose constants and control are followed here.
 
+use crate::Rhs;
 use faer::c64;
 
 use super::lu::DenseLu;
@@ -181,7 +182,7 @@ pub(crate) fn rms_scaled(x: &[f64], scal: &[f64]) -> f64 {
 /// exceeds 1 (stiff components would otherwise be overestimated). Returns the scaled norm,
 /// at least 1e-10.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn estimate<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn estimate<S: State, F: Rhs<S>>(
     f: &mut F,
     lu: &mut Factors,
     (t, y, f0): (f64, &S, &[f64]),
@@ -209,7 +210,7 @@ pub(crate) fn estimate<S: State, F: FnMut(f64, &S) -> S>(
             *o += c;
         }
         work.fevals += 1;
-        let f1 = f(t, &yc);
+        let f1 = f.call(t, &yc);
         // the filtered point is not a trajectory point: an unusable second estimate keeps
         // the first (the step is rejected and retried smaller)
         if f1.dim() == n && f1.as_slice().iter().all(|v| v.is_finite()) {
@@ -226,7 +227,7 @@ pub(crate) fn estimate<S: State, F: FnMut(f64, &S) -> S>(
 
 /// Forward-difference Jacobian of `radau5.f`: column j = (f(y + δⱼeⱼ) − f(y))/δⱼ with
 /// δⱼ = √(ε·max(1e-5, |yⱼ|)); n evaluations, counted in `work.fd_jacobian_fevals` too.
-pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
+pub(crate) fn finite_difference<S: State, F: Rhs<S>>(
     f: &mut F,
     t: f64,
     y: &S,
@@ -242,7 +243,7 @@ pub(crate) fn finite_difference<S: State, F: FnMut(f64, &S) -> S>(
         yj.as_mut_slice()[j] = ysafe + delt;
         work.fevals += 1;
         work.fd_jacobian_fevals += 1;
-        let fj = f(t, &yj);
+        let fj = f.call(t, &yj);
         for i in 0..n {
             // a non-finite or short f here shows as a non-finite entry, refused by the caller
             jm[i * n + j] = fj.as_slice().get(i).map_or(f64::NAN, |v| (v - f0[i]) / delt);
@@ -264,7 +265,7 @@ pub type NoJacobian<S> = fn(f64, &S, &mut [f64]);
 /// # Errors
 /// [`OdeError::JacobianNotFinite`] naming t, the entry and the state.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn jacobian_into<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])>(
+pub(crate) fn jacobian_into<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])>(
     f: &mut F,
     jac: Option<&mut J>,
     t: f64,

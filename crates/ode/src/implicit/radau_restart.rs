@@ -5,10 +5,11 @@
 
 use super::RadauStepper;
 use crate::OdeError;
+use crate::Rhs;
 use crate::explicit::{DenseStep, Form};
 use crate::state::{State, eval};
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepper<S, F, J> {
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> RadauStepper<S, F, J> {
     /// The collocation polynomial of the last accepted step, valid on
     /// [`RadauStepper::step_start`] .. [`RadauStepper::t`] (order 3 uniformly; exact at the
     /// nodes up to the Newton tolerance). No f evaluations.

@@ -9,6 +9,7 @@ use super::radau_core::{
 use super::radau5::Radau5;
 use crate::explicit::{DenseStep, Steps};
 use crate::progress::Progress;
+use crate::{InPlace, Rhs};
 
 #[path = "radau_restart.rs"]
 mod restart;
@@ -32,7 +33,7 @@ const MAX_FAILURES: usize = 10;
 /// one the Jacobian is taken by finite differences, counted in [`Work::fd_jacobian_fevals`].
 ///
 /// Book: §4.11; HW §IV.8.
-pub struct RadauStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64]) = NoJacobian<S>> {
+pub struct RadauStepper<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64]) = NoJacobian<S>> {
     cfg: Radau5,
     f: F,
     jac_fn: Option<J>,
@@ -70,24 +71,20 @@ pub struct RadauStepper<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut
     naccpt: usize,
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref
-    for RadauStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref for RadauStepper<S, F, J> {
     type Target = Progress<S>;
     fn deref(&self) -> &Progress<S> {
         &self.p
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut
-    for RadauStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut for RadauStepper<S, F, J> {
     fn deref_mut(&mut self) -> &mut Progress<S> {
         &mut self.p
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> for RadauStepper<S, F, J> {
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> Steps<S> for RadauStepper<S, F, J> {
     fn step(&mut self) -> Result<(), OdeError> {
         RadauStepper::step(self)
     }
@@ -96,9 +93,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> Steps<S> f
     }
 }
 
-impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug
-    for RadauStepper<S, F, J>
-{
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug for RadauStepper<S, F, J> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("RadauStepper")
             .field("t", &self.p.t)
@@ -126,7 +121,39 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> RadauStepp
     /// `max_newton` = 0), [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`],
     /// [`OdeError::TooManySteps`] when h_max cannot cover the interval, and
     /// [`OdeError::RhsNotFinite`] or [`OdeError::DimensionMismatch`] from f(t0, y0).
-    pub fn new(cfg: &Radau5, mut f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+    pub fn new(cfg: &Radau5, f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
+        Self::start(cfg, f, jac, t0, y0, t_end)
+    }
+}
+
+impl<S: State, G: FnMut(f64, &S, &mut S), J: FnMut(f64, &S, &mut [f64])> RadauStepper<S, InPlace<G>, J> {
+    /// [`RadauStepper::new`] with f written in place, `g(t, y, out)` ([`InPlace`]): the same steps
+    /// and bits.
+    ///
+    /// # Errors
+    /// As [`RadauStepper::new`].
+    pub fn new_in_place(
+        cfg: &Radau5,
+        g: G,
+        jac: Option<J>,
+        t0: f64,
+        y0: S,
+        t_end: f64,
+    ) -> Result<Self, OdeError> {
+        Self::start(cfg, InPlace(g), jac, t0, y0, t_end)
+    }
+}
+
+impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> RadauStepper<S, F, J> {
+    /// [`RadauStepper::new`] for any [`Rhs`].
+    pub(crate) fn start(
+        cfg: &Radau5,
+        mut f: F,
+        jac: Option<J>,
+        t0: f64,
+        y0: S,
+        t_end: f64,
+    ) -> Result<Self, OdeError> {
         let h_max = cfg.check(t0, t_end)?;
         if cfg.method.max_newton == 0 {
             return Err(OdeError::NonPositiveTolerance { name: "max_newton", value: 0.0 });
