@@ -15,7 +15,8 @@
 //! * Lie-group methods for attitude ([`LieMethod`]: exponential Euler, RKMK4,
 //!   Crouch–Grossman) over a small [`LieGroup`] trait, and the exact quaternion step
 //!   [`quaternion_exact_step`] (4.11.17);
-//! * a work–precision [`harness`] on reference problems with exact solutions, and the
+//! * a work–precision `harness` on reference problems with exact solutions (cargo feature
+//!   `harness`, off by default: the command line, tests and benches turn it on), and the
 //!   [`Accuracy`] choice derived from it.
 //!
 //! Every run reports its [`Work`]. Bad input returns an [`OdeError`] that says where.
@@ -49,6 +50,7 @@
 mod accuracy;
 mod error;
 pub mod explicit;
+#[cfg(feature = "harness")]
 pub mod harness;
 pub mod implicit;
 pub mod lie;
