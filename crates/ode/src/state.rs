@@ -219,6 +219,11 @@ pub(crate) fn eval_slot<S: State, F: Rhs<S>>(
     fevals: &mut usize,
 ) {
     *fevals += 1;
+    // a returning f: pushed (the caller truncated `k`), without the slot branch
+    if !F::IN_PLACE {
+        k.push(f.call(t, y));
+        return;
+    }
     match k.get_mut(i) {
         Some(ki) => f.call_into(t, y, ki),
         None => {
