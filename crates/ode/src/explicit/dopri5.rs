@@ -74,17 +74,7 @@ fn step_returning<S: State, F: Rhs<S>>(
         let sk = atol + rtol * yi.abs().max(y1i.abs());
         err += (ei / sk).powi(2);
     }
-    let err = (err / y.dim() as f64).sqrt();
-    // Every stage but k₂ enters the estimate with a nonzero weight (and y₁ its scale), so a
-    // non-finite stage makes it non-finite: the exact scan (which names the stage) runs only
-    // then, or when k₂ or a stage's length is off (the length test folds away for fixed-size
-    // states). A finite estimate that overflowed passes the scan and is rejected as too large.
-    let dims_ok = k[1..].iter().all(|ki| ki.dim() == y.dim());
-    let k2_finite = k[1].as_slice().iter().sum::<f64>().is_finite();
-    if !(dims_ok && k2_finite && err.is_finite()) {
-        check_stages(k, 1, t, h, DOPRI5.c)?;
-    }
-    Ok((y1, err))
+    Ok((y1, rms_checked(k, y, t, h, err)?))
 }
 
 /// [`step`] for an in-place right-hand side ([`crate::InPlace`]): each stage written into its
@@ -131,17 +121,24 @@ fn step_in_place<S: State, F: Rhs<S>>(
         // a stage of the wrong length: refused by the scan below
         err = f64::NAN;
     }
-    let err = (err / y.dim() as f64).sqrt();
-    // Every stage but k₂ enters the estimate with a nonzero weight (and y₁ its scale), so a
-    // non-finite stage makes it non-finite: the exact scan (which names the stage) runs only
-    // then, or when k₂ or a stage's length is off (the length test folds away for fixed-size
-    // states). A finite estimate that overflowed passes the scan and is rejected as too large.
+    Ok((y1, rms_checked(k, y, t, h, err)?))
+}
+
+/// The RMS error √(Σ/n) from the sum of squares `sum`, after the stages k₂..k₇ of `k` are known
+/// to be finite and of y's length. Every stage but k₂ enters the estimate with a nonzero weight
+/// (and y₁ its scale), so a non-finite stage makes it non-finite: the exact scan (which names
+/// the stage) runs only then, or when k₂ or a stage's length is off (the length test folds away
+/// for fixed-size states). A finite estimate that overflowed passes the scan and is rejected as
+/// too large.
+#[inline(always)]
+fn rms_checked<S: State>(k: &[S], y: &S, t: f64, h: f64, sum: f64) -> Result<f64, OdeError> {
+    let err = (sum / y.dim() as f64).sqrt();
     let dims_ok = k[1..].iter().all(|ki| ki.dim() == y.dim());
     let k2_finite = k[1].as_slice().iter().sum::<f64>().is_finite();
     if !(dims_ok && k2_finite && err.is_finite()) {
         check_stages(k, 1, t, h, DOPRI5.c)?;
     }
-    Ok((y1, err))
+    Ok(err)
 }
 
 /// The dense output of an accepted step from k₁..k₇ (no extra evaluations).
