@@ -8,8 +8,8 @@
 //!   ([`Bdf`], orders 1–5, the same Jacobians, dense output and events), and [`AnyStepper`]
 //!   to drive any of them step by step; [`Solver`] holds the settings all adaptive methods
 //!   share and [`Progress`] where a step-by-step run stands; the steppers take f returning a
-//!   new state or written in place ([`InPlace`], no allocation per evaluation for `Vec` or
-//!   `DVector` states, the same bits), both a [`Rhs`];
+//!   new state or written in place ([`InPlace`]: in the explicit pairs no allocation per
+//!   evaluation for `Vec` or `DVector` states; the same bits), both a [`Rhs`];
 //! * Gauss–Legendre collocation ([`GaussLegendre`]: implicit midpoint, 2 and 3 stages, Newton
 //!   with the dense LU of [`implicit::DenseLu`]) and Störmer–Verlet ([`stormer_verlet`]);
 //! * Lie-group methods for attitude ([`LieMethod`]: exponential Euler, RKMK4,

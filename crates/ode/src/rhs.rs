@@ -14,8 +14,8 @@ use crate::state::State;
 ///
 /// Book: §4.11.
 pub trait Rhs<S: State> {
-    /// `true` when f writes into a state it is given ([`InPlace`]): the steppers then keep one
-    /// state per stage from step to step; `false` (a closure returning its result) keeps the
+    /// `true` when f writes into a state it is given ([`InPlace`]): the explicit pairs then keep
+    /// one state per stage from step to step; `false` (a closure returning its result) keeps the
     /// stages as locals, which a small fixed-size state holds in registers. Decided when the
     /// stepper is compiled; either way the same bits.
     const IN_PLACE: bool;
@@ -38,9 +38,10 @@ impl<S: State, F: FnMut(f64, &S) -> S> Rhs<S> for F {
 }
 
 /// A right-hand side that writes f(t, y) into the state it is given: `g(t, y, out)` with `out`
-/// of y's dimension (its entries are a previous stage's: write every one). A stepper keeps one
-/// state per stage and reuses them step after step, so a heap state costs no allocation per
-/// evaluation. The results are the same bits as the returning form of the same f.
+/// of y's dimension (its entries are a previous stage's: write every one). The explicit pairs
+/// keep one state per stage and reuse them step after step, so a heap state costs no allocation
+/// per evaluation; RADAU5 and BDF take it too, at the cost of a returning closure (one state per
+/// evaluation). The results are the same bits as the returning form of the same f.
 ///
 /// ```
 /// use vectrix_ode::explicit::{Adaptive, Stepper};

@@ -144,7 +144,7 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
     }
 
     /// Takes one accepted step (rejected attempts are retried inside, smaller); the last step
-    /// lands exactly on the end time. Does nothing when [`Stepper::done`].
+    /// lands exactly on the end time. Does nothing when [`done`](Progress::done).
     ///
     /// # Errors
     /// [`OdeError::TooManySteps`] (accepted + rejected reached `max_steps`),
@@ -234,8 +234,8 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
         }
     }
 
-    /// The interpolant of the last accepted step, valid on [`Stepper::step_start`] ..
-    /// [`Stepper::t`] (order 4 for DOPRI5, 7 for DOP853; DOP853 spends three evaluations
+    /// The interpolant of the last accepted step, valid on [`step_start`](Progress::step_start) ..
+    /// [`t`](Progress::t) (order 4 for DOPRI5, 7 for DOP853; DOP853 spends three evaluations
     /// the first time it is asked for a step).
     ///
     /// # Errors

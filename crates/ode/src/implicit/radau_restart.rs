@@ -11,7 +11,7 @@ use crate::state::{State, eval};
 
 impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> RadauStepper<S, F, J> {
     /// The collocation polynomial of the last accepted step, valid on
-    /// [`RadauStepper::step_start`] .. [`RadauStepper::t`] (order 3 uniformly; exact at the
+    /// [`step_start`](crate::Progress::step_start) .. [`t`](crate::Progress::t) (order 3 uniformly; exact at the
     /// nodes up to the Newton tolerance). No f evaluations.
     ///
     /// # Errors

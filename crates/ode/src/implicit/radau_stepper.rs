@@ -226,7 +226,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> RadauStepper<S, F, J> {
     }
 
     /// Takes one accepted step (rejected attempts are retried inside, smaller); the last step
-    /// lands exactly on the end time. Does nothing when [`RadauStepper::done`].
+    /// lands exactly on the end time. Does nothing when [`done`](Progress::done).
     ///
     /// # Errors
     /// [`OdeError::TooManySteps`], [`OdeError::StepSizeUnderflow`] (error test failing down
