@@ -708,6 +708,7 @@ fn dop853_in_place_refused_next_first_stage_keeps_the_current_one() {
     let mut st = Stepper::new_in_place(&cfg, once, 0.0, vec![1.0, 0.0], 2.0).unwrap();
     let err = st.step().unwrap_err();
     assert!(matches!(err, OdeError::RhsNotFinite { stage: 13, index: 1, .. }), "{err:?}");
+    // exactly where it started: a refused step moves neither t nor y
     assert_eq!((st.t(), st.y().as_slice()), (0.0, &[1.0, 0.0][..]));
     let mut clean = Stepper::new_in_place(&cfg, oscillator_in_place, 0.0, vec![1.0, 0.0], 2.0).unwrap();
     while !clean.done() {

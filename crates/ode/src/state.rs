@@ -167,6 +167,14 @@ pub(crate) fn eval<S: State, F: Rhs<S>>(
 ) -> Result<S, OdeError> {
     *fevals += 1;
     let k = f.call(t, y);
+    check_rhs(&k, y, t, (step_start, stage))?;
+    Ok(k)
+}
+
+/// `Ok` when f(t, y) = `k` has y's length and finite components; else the typed error naming
+/// the stage (evaluated at t, in the step from `step_start`) and the first bad component.
+#[inline(always)]
+fn check_rhs<S: State>(k: &S, y: &S, t: f64, (step_start, stage): (f64, usize)) -> Result<(), OdeError> {
     if k.dim() != y.dim() {
         return Err(OdeError::DimensionMismatch {
             what: "right-hand side f(t, y)",
@@ -174,36 +182,27 @@ pub(crate) fn eval<S: State, F: Rhs<S>>(
             expected: y.dim(),
         });
     }
-    match first_non_finite(&k) {
+    match first_non_finite(k) {
         Some((index, value)) => Err(OdeError::RhsNotFinite { t, step_start, stage, index, value }),
-        None => Ok(k),
+        None => Ok(()),
     }
 }
 
 /// [`eval`] into `out` (a state of y's dimension, overwritten): an [`crate::InPlace`] right-hand
-/// side writes there without allocating. `out` is unspecified after an error.
+/// side writes there without allocating; `at` = (the step's start, the stage) for the error.
+/// `out` is unspecified after an error.
 #[inline(always)]
 pub(crate) fn eval_into<S: State, F: Rhs<S>>(
     f: &mut F,
     t: f64,
     y: &S,
     out: &mut S,
-    (step_start, stage): (f64, usize),
+    at: (f64, usize),
     fevals: &mut usize,
 ) -> Result<(), OdeError> {
     *fevals += 1;
     f.call_into(t, y, out);
-    if out.dim() != y.dim() {
-        return Err(OdeError::DimensionMismatch {
-            what: "right-hand side f(t, y)",
-            got: out.dim(),
-            expected: y.dim(),
-        });
-    }
-    match first_non_finite(out) {
-        Some((index, value)) => Err(OdeError::RhsNotFinite { t, step_start, stage, index, value }),
-        None => Ok(()),
-    }
+    check_rhs(out, y, t, at)
 }
 
 /// Stage i of a step into `k[i]` when that slot exists (kept

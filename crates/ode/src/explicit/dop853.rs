@@ -12,7 +12,8 @@ pub(crate) const C12: [f64; 12] = [C[0], C[1], C[2], C[3], C[4], C[5], C[6], C[7
 /// Stage rows of the 12 stages (row 0 empty).
 pub(crate) const A12: [&[f64]; 12] = [&[], A[0], A[1], A[2], A[3], A[4], A[5], A[6], A[7], A[8], A[9], A[10]];
 
-/// Stages 2..=12 from k₁ = `k[0]` into `k[1..12]` (k holds at least k₁); returns y₁ and the scaled error norm of HNW (10.17):
+/// Stages 2..=12 from k₁ = `k[0]` into `k[1..12]` (k holds at least k₁); returns y₁ and the
+/// scaled error norm of HNW (10.17):
 /// err = |h| ‖e₅‖² / √(n (‖e₅‖² + 0.01‖e₃‖²)), with weights sk = atol + rtol·max(|y|, |y₁|).
 ///
 /// Book: §4.11; HNW §II.10.

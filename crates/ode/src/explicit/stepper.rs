@@ -207,8 +207,7 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
                 let t_new = if last { t1 } else { t + h };
                 // f(t + h, y₁): FSAL stage of DOPRI5, the next k₁ (and k₁₃) for DOP853
                 match self.cfg.method {
-                    Pair::Dopri5 if F::IN_PLACE => self.f_now.clone_from(&self.k[6]),
-                    Pair::Dopri5 => self.f_now = self.k[6].clone(),
+                    Pair::Dopri5 => self.f_now.clone_from(&self.k[6]),
                     Pair::Dop853 if !F::IN_PLACE => {
                         self.f_now = eval(&mut self.f, t_new, &y1, t, 13, &mut self.p.work.fevals)?;
                     }
