@@ -223,7 +223,7 @@ mod prop {
     use vectrix::prelude::*;
 
     use crate::common::*;
-    use crate::support::{assert_abs, assert_rel, component, frame, triple};
+    use crate::support::{assert_abs, component, frame, triple};
 
     fn vector3() -> impl Strategy<Value = [f64; 3]> {
         [component(), component(), component()]
