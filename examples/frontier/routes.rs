@@ -5,7 +5,7 @@
 use nalgebra::SVector;
 use serde_json::{Value, json};
 use vectrix::frames::Frame;
-use vectrix::ode::explicit::{Adaptive, Stepper, integrate_fixed};
+use vectrix::ode::explicit::{Adaptive, Extrapolation, Stepper, integrate_fixed};
 use vectrix::ode::harness::{Reference, Separable};
 use vectrix::ode::{GaussLegendre, LieMethod, RK4, integrate_lie, stormer_verlet};
 use vectrix::scene::Scene;
@@ -138,6 +138,15 @@ impl Ctx {
             };
             self.ladder(id, "library", name, "rtol", &tols, run, err);
         }
+        let run = |tol: f64| -> Outcome {
+            let s = Extrapolation::gbs()
+                .rtol(tol)
+                .atol(tol)
+                .solve(|t, y| p.rhs(t, y), 0.0, &y0, t_end)
+                .map_err(|e| e.to_string())?;
+            Ok((s.last().as_slice().to_vec(), s.work.fevals))
+        };
+        self.ladder(id, "library", "GBS", "rtol", &tols, run, err);
         let steps = self.steps(t_end, 22);
         self.ladder(
             id,
@@ -277,6 +286,17 @@ impl Ctx {
             };
             self.ladder(&id, "library", name, "rtol", &tols, run, err);
         }
+        let run = |tol: f64| -> Outcome {
+            let mut scratch = model.aba_scratch();
+            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+            let s = Extrapolation::gbs()
+                .rtol(tol)
+                .atol(tol)
+                .solve(f, 0.0, &y0, CHAIN_T)
+                .map_err(|e| e.to_string())?;
+            Ok((s.last().as_slice().to_vec(), s.work.fevals))
+        };
+        self.ladder(&id, "library", "GBS", "rtol", &tols, run, err);
         let steps = self.steps(CHAIN_T, 20);
         let run = |k: f64| -> Outcome {
             let mut scratch = model.aba_scratch();

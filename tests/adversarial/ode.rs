@@ -524,4 +524,31 @@ cases! {
             assert!(s.done() && (s.y()[0] - stiff_exact(1.0)).abs() <= 1e-7, "{}: {}", m.name(), s.y()[0]);
         }
     }
+
+    // Gragg–Bulirsch–Stoer extrapolation: hostile tolerances, steps, states, ends and column
+    // counts are refused or give finite answers; the oscillator ends on cos/sin.
+    extrapolation ["Solver::gbs", "Solver::max_columns"] {
+        use vectrix::ode::Extrapolation;
+        let f = |_: f64, y: &Vector2<f64>| Vector2::new(y[1], -y[0]);
+        let y0 = Vector2::new(1.0, 0.0);
+        for x in hostile() {
+            let g = Extrapolation::gbs();
+            err_or(g.rtol(x).solve(f, 0.0, &y0, 1.0), "gbs(hostile rtol)", |s| fin(s.last().as_slice()));
+            err_or(g.atol(x).solve(f, 0.0, &y0, 1.0), "gbs(hostile atol)", |s| fin(s.last().as_slice()));
+            err_or(g.h0(x).h_max(x).solve(f, 0.0, &y0, 1.0), "gbs(hostile h)", |s| fin(s.last().as_slice()));
+            err_or(g.solve(f, 0.0, &Vector2::new(x, 0.0), 1.0), "gbs(hostile y0)", |s| fin(s.last().as_slice()));
+            err_or(g.solve(f, 0.0, &y0, x), "gbs(hostile t1)", |s| fin(s.last().as_slice()));
+            err_or(g.solve(f, x, &y0, 1.0), "gbs(hostile t0)", |s| fin(s.last().as_slice()));
+        }
+        for km in [0, 1, 2, 13, 1000, usize::MAX] {
+            refused(Extrapolation::gbs().max_columns(km).solve(f, 0.0, &y0, 1.0), "max_columns out of range");
+        }
+        refused(Extrapolation::gbs().dense(true).solve(f, 0.0, &y0, 1.0), "dense output");
+        refused(Extrapolation::gbs().max_steps(2).solve(f, 0.0, &y0, 50.0), "max_steps(2)");
+        for km in 3..=12 {
+            let s = Extrapolation::gbs().max_columns(km).rtol(1e-10).atol(1e-10).solve(f, 0.0, &y0, 5.0).unwrap();
+            let e = (s.last()[0] - 5f64.cos()).abs().max((s.last()[1] + 5f64.sin()).abs());
+            assert!(e <= 1e-8, "km {km}: {e}");
+        }
+    }
 }

@@ -2,7 +2,9 @@
 //!
 //! * explicit Runge–Kutta from Butcher tableaux ([`EULER`], [`HEUN`], [`RK4`]) and the
 //!   adaptive Dormand–Prince pairs ([`Adaptive::dopri5`], [`Adaptive::dop853`]) with error
-//!   control, dense output and event location;
+//!   control, dense output and event location, and Gragg–Bulirsch–Stoer extrapolation
+//!   ([`Extrapolation::gbs`]: order and step control, for smooth problems at tight
+//!   tolerances);
 //! * the stiff integrator RADAU5 ([`Radau5`]: Radau IIA 5 with Hairer–Wanner's control,
 //!   exact or finite-difference Jacobians, dense output and events), the variable-order BDF
 //!   ([`Bdf`], orders 1–5, the same Jacobians, dense output and events), and [`AnyStepper`]
@@ -65,7 +67,8 @@ mod work;
 pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow, STIFF_ACCURACY_TABLE, StiffRow};
 pub use error::OdeError;
 pub use explicit::{
-    Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, HEUN, Pair, RK4, Solution, Tableau,
+    Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, Extrapolation, GBS_MAX_COLUMNS, Gbs, HEUN,
+    Pair, RK4, Solution, Tableau,
 };
 pub use implicit::{
     Bdf, BdfFormula, BdfStepper, GaussLegendre, Implicit, Radau5, RadauIIA, RadauStepper, stormer_verlet,

@@ -1,5 +1,6 @@
 //! Explicit Runge–Kutta methods from Butcher tableaux: fixed-step Euler, Heun, RK4 and
-//! DOP853's 8th-order tableau; adaptive DOPRI5 and DOP853 with dense output and events.
+//! DOP853's 8th-order tableau; adaptive DOPRI5 and DOP853 with dense output and events;
+//! Gragg–Bulirsch–Stoer extrapolation ([`Extrapolation`]) for tight tolerances.
 //!
 //! Book: §4.11 (the rate equations are integrated numerically); HNW ch. II.
 
@@ -10,6 +11,7 @@ mod dop853_coefficients;
 mod dopri5;
 mod drive;
 mod events;
+mod extrapolation;
 mod fixed;
 mod pair;
 mod stepper;
@@ -20,6 +22,7 @@ pub(crate) use dense::Form;
 pub use drive::Solution;
 pub(crate) use drive::{Steps, drive};
 pub use events::{Direction, Event, EventHit, bracket_zero};
+pub use extrapolation::{Extrapolation, GBS_MAX_COLUMNS, Gbs};
 pub use fixed::integrate_fixed;
 pub(crate) use pair::initial_step;
 pub use pair::{Adaptive, Pair};
