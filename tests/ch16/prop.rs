@@ -79,13 +79,17 @@ proptest! {
     ) {
         let zeros: Vec<Complex64> = zeros.into_iter().flatten().collect();
         let poles: Vec<Complex64> = poles.into_iter().flatten().collect();
-        let g = Zpk::new(zeros, poles, k).unwrap().to_tf().unwrap();
+        let g = Zpk::new(zeros, poles.clone(), k).unwrap().to_tf().unwrap();
         let w = logspace(-3.0, 3.0, 301).unwrap();
         let fast = g.freqresp(&w).unwrap();
         let slow = g.to_zpk().unwrap().freqresp(&w).unwrap();
-        for (a, b) in fast.iter().zip(&slow) {
-            if !b.norm().is_finite() {
-                continue; // a pole on the axis at this ω
+        for ((a, b), &wi) in fast.iter().zip(&slow).zip(&w) {
+            // within 10⁻⁶|p| of a pole on the axis (p = ±0.1j against the grid's ω ≈ 0.1) the
+            // roots' own rounding δ moves G by δ/|jω − p| relative: no longer a test of the two
+            // evaluations
+            let near_pole = poles.iter().any(|p| (Complex64::new(0.0, wi) - p).norm() <= 1e-6 * p.norm());
+            if !b.norm().is_finite() || near_pole {
+                continue;
             }
             prop_assert!((a - b).norm() <= 1e-10 * b.norm() + 1e-300, "{} vs {}", a, b);
         }
