@@ -4,6 +4,9 @@
 #   sh scripts/peers/frontier.sh            # everything (~1 h on 2 cores)
 #   sh scripts/peers/frontier.sh --quick    # a smoke run of the vectrix side only
 #
+# vectrix is built for the x86-64 baseline (what `cargo build` gives a user);
+# FRONTIER_CPU=native builds it with -C target-cpu=native, as the compiled peers are built.
+#
 # A partial sitting: FRONTIER_ONLY=kepler-e0.9,chain-30 restricts every tool to those problems
 # and FRONTIER_TOOLS="compiled scipy pinocchio" to those peers; it needs its own FRONTIER_RESULTS folder
 # (a peer's file is rewritten with the problems it ran) and prints its table instead of writing
@@ -24,8 +27,21 @@ DATA=${FRONTIER_RESULTS:-docs/accuracy/peers-data}
 export FRONTIER_RESULTS="$(pwd)/$DATA"
 PY=${PEERS_VENV:-$HOME/.venv-peers}/bin/python
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc --all) CPUs; $(date -u +%Y-%m-%dT%H:%M:%SZ); load: $(uptime | sed 's/.*load average: //')"
-cargo build --release --example frontier
-FRONTIER=${CARGO_TARGET_DIR:-target}/release/examples/frontier
+# vectrix is built for the x86-64 baseline by default (the workspace's default, what a user's
+# `cargo build` gives); FRONTIER_CPU=native builds it with -C target-cpu=native as the compiled
+# peers are (-O3 -march=native), into its own target folder so that the main build's cache is
+# left alone. Measured 2026-12-05 (docs/performance.md, Work-precision): native is 5-7 % faster on
+# the chains and 1.4-1.6x slower with DOP853 on Kepler and the rigid body. The choice is made at
+# compile time: whether kernels fuse multiply-add follows it (vectrix-simd's FUSED), so each
+# build's errors are its own and are measured with it.
+case "${FRONTIER_CPU:-baseline}" in
+  native) FRONTIER_TARGET=${CARGO_TARGET_DIR:-target}/frontier-native; FRONTIER_RUSTFLAGS="-C target-cpu=native" ;;
+  baseline) FRONTIER_TARGET=${CARGO_TARGET_DIR:-target}; FRONTIER_RUSTFLAGS="" ;;
+  *) echo "FRONTIER_CPU must be baseline or native, not '$FRONTIER_CPU'" >&2; exit 2 ;;
+esac
+echo "vectrix built with RUSTFLAGS='$FRONTIER_RUSTFLAGS' (FRONTIER_CPU=${FRONTIER_CPU:-baseline})"
+RUSTFLAGS="$FRONTIER_RUSTFLAGS" CARGO_TARGET_DIR="$FRONTIER_TARGET" cargo build --release --example frontier
+FRONTIER=$FRONTIER_TARGET/release/examples/frontier
 if [ "$1" = "--quick" ]; then
   "$FRONTIER" run --quick --out "$DATA"
   exit 0
