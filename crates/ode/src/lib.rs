@@ -85,7 +85,7 @@ pub use work::Work;
 /// `use vectrix_ode::prelude::*;`
 pub mod prelude {
     pub use crate::{
-        Accuracy, Adaptive, Direction, Event, GaussLegendre, LieGroup, LieMethod, OdeError, Pair, Solution,
-        State, Work, integrate_lie, stormer_verlet,
+        Accuracy, Adaptive, Direction, Event, Extrapolation, GaussLegendre, LieGroup, LieMethod, OdeError,
+        Pair, Solution, State, Work, integrate_lie, stormer_verlet,
     };
 }
