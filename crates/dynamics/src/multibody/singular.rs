@@ -22,6 +22,50 @@ pub(crate) fn pivot_tol<T: Scalar>() -> f64 {
     PIVOT_EPS * T::eps()
 }
 
+/// x > floor, false for NaN.
+#[inline(always)]
+fn above(x: f64, floor: f64) -> bool {
+    x.partial_cmp(&floor) == Some(core::cmp::Ordering::Greater)
+}
+
+/// D⁻¹ of a symmetric 3×3 D (its lower triangle read) by the Cholesky factor D = L Lᵀ,
+/// unrolled, when every pivot l_kk² is above `floor` (else `None`: the caller's rank-revealing
+/// path): L⁻¹ = M in closed form and D⁻¹ = Mᵀ M. The same factor as nalgebra's `cholesky`
+/// (l_kk = √(d_kk − Σ l_kj²), l_ik = (d_ik − Σ l_ij l_kj)/l_kk), without its loops over a
+/// dynamic dimension and its inverse by six triangular solves; smooth in D, so dual numbers
+/// carry exact derivatives.
+///
+/// Book: §7.11 (the joint's D of the articulated-body algorithm); RBDA §7.3.
+#[inline(always)]
+pub(crate) fn spd_inverse3<T: Scalar>(d: &Matrix3<T>, floor: f64) -> Option<Matrix3<T>> {
+    let p0 = d[(0, 0)];
+    if !above(p0.re(), floor) {
+        return None;
+    }
+    let l00 = p0.sqrt();
+    let (l10, l20) = (d[(1, 0)] / l00, d[(2, 0)] / l00);
+    let p1 = d[(1, 1)] - l10 * l10;
+    if !above(p1.re(), floor) {
+        return None;
+    }
+    let l11 = p1.sqrt();
+    let l21 = (d[(2, 1)] - l20 * l10) / l11;
+    let p2 = d[(2, 2)] - l20 * l20 - l21 * l21;
+    if !above(p2.re(), floor) {
+        return None;
+    }
+    let l22 = p2.sqrt();
+    // M = L⁻¹, lower triangular
+    let (m00, m11, m22) = (T::one() / l00, T::one() / l11, T::one() / l22);
+    let m10 = -(l10 * m00) * m11;
+    let m21 = -(l21 * m11) * m22;
+    let m20 = -(l20 * m00 + l21 * m10) * m22;
+    // D⁻¹ = Mᵀ M
+    let (a00, a11, a22) = (m00 * m00 + m10 * m10 + m20 * m20, m11 * m11 + m21 * m21, m22 * m22);
+    let (a10, a20, a21) = (m11 * m10 + m21 * m20, m22 * m20, m22 * m21);
+    Some(Matrix3::new(a00, a10, a20, a10, a11, a21, a20, a21, a22))
+}
+
 /// D⁺ and the projector onto the null space of D for a symmetric PSD 3×3 D, by Cholesky with
 /// complete pivoting stopped at the first pivot ≤ `tol` (rank-revealing): D = G Gᵀ with G of
 /// full column rank r, D⁺ = G (GᵀG)⁻² Gᵀ, and 1 − G (GᵀG)⁻¹ Gᵀ projects onto null(D). Pivot
@@ -88,6 +132,42 @@ pub(crate) fn null_component<T: Scalar>(null: &Matrix3<T>, u: &Vector3<T>) -> f6
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The unrolled Cholesky inverse: D D⁻¹ = 1 to rounding (relative to κ(D)) for definite D
+    /// from round to very flat; `None` for a semidefinite D (a particle's rank-2 inertia) and
+    /// for pivots at the floor; and the derivative a dual number carries is −D⁻¹ Ḋ D⁻¹.
+    #[test]
+    fn spd_inverse3_inverts_definite_and_refuses_semidefinite() {
+        let r = nalgebra::Rotation3::from_euler_angles(0.3, -1.1, 2.0);
+        for (a, b, c) in [(1.0f64, 1.0f64, 1.0f64), (2.0, 1.5, 1.1), (1.0, 1e-3, 1e-6), (1e6, 1.0, 1e-2)] {
+            let d = r.matrix() * Matrix3::from_diagonal(&Vector3::new(a, b, c)) * r.matrix().transpose();
+            let inv = spd_inverse3(&d, 0.0).expect("definite");
+            let cond = a.max(b).max(c) / a.min(b).min(c);
+            let err = (d * inv - Matrix3::identity()).abs().max();
+            assert!(err <= 16.0 * f64::EPSILON * cond, "{a} {b} {c}: {err:e}");
+            assert!((inv - inv.transpose()).abs().max() == 0.0);
+        }
+        let e = Vector3::new(0.3, -0.4, 0.5).normalize();
+        let particle = (Matrix3::identity() - e * e.transpose()) * 2.5;
+        assert!(spd_inverse3(&particle, 1e-12).is_none());
+        assert!(spd_inverse3(&Matrix3::<f64>::identity(), 1.0).is_none());
+        assert!(spd_inverse3(&Matrix3::<f64>::from_element(f64::NAN), 0.0).is_none());
+        // d(D⁻¹)/dt = −D⁻¹ Ḋ D⁻¹ through dual numbers
+        use num_dual::Dual64;
+        let d0 = Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1);
+        let dd = Matrix3::new(0.5, -0.2, 0.1, -0.2, 0.3, 0.05, 0.1, 0.05, -0.4);
+        let dual = Matrix3::from_fn(|i, j| Dual64::new(d0[(i, j)], dd[(i, j)]));
+        let inv = spd_inverse3(&dual, 0.0).expect("definite");
+        let i0 = spd_inverse3(&d0, 0.0).unwrap();
+        let want = -(i0 * dd * i0);
+        for i in 0..3 {
+            for j in 0..3 {
+                // num-dual divides by multiplying with the reciprocal: a few ulps apart
+                assert!((inv[(i, j)].re - i0[(i, j)]).abs() <= 8.0 * f64::EPSILON * i0.abs().max());
+                assert!((inv[(i, j)].eps - want[(i, j)]).abs() <= 1e-14, "{i}{j}");
+            }
+        }
+    }
 
     /// Rank 2 (a particle at distance L from a ball joint: D = m L² (1 − ê êᵀ)): D D⁺ D = D,
     /// D⁺ annihilates ê, and the projector is ê êᵀ.

@@ -15,7 +15,7 @@ use crate::multibody::articulated::Articulated;
 use crate::multibody::joint::Elem;
 use crate::multibody::model::Model;
 use crate::multibody::rnea::{joint_bias, joint_motion};
-use crate::multibody::singular::{null_component, pivot_tol, psd_pinv3};
+use crate::multibody::singular::{null_component, pivot_tol, psd_pinv3, spd_inverse3};
 use crate::multibody::spatial::{cross_force, join, split};
 
 /// (Iᵃ, pᵃ): what a segment passes to its parent (before the transform).
@@ -158,12 +158,8 @@ impl<T: Scalar> Model<T> {
         let D = IA.A;
         let u =
             Vector3::new(tau[seg.vi], tau[seg.vi + 1], tau[seg.vi + 2]) - Vector3::new(pA[0], pA[1], pA[2]);
-        let fast = D.cholesky().filter(|c| {
-            let l = c.l_dirty();
-            (0..3).all(|k| (l[(k, k)] * l[(k, k)]).re() > pivot_tol::<T>() * angular_scale)
-        });
-        let Dinv = match fast {
-            Some(c) => c.inverse(),
+        let Dinv = match spd_inverse3(&D, pivot_tol::<T>() * angular_scale) {
+            Some(inv) => inv,
             None => {
                 let (pinv, null, _) = psd_pinv3(&D, pivot_tol::<T>() * angular_scale);
                 let along = null_component(&null, &u);
