@@ -184,9 +184,12 @@ impl<'a> Parser<'a> {
     }
 
     /// unit = power (ws* ("*" | "·" | "/") ws* power)*
+    /// The bounds on exponents apply to the whole product, not to its partial products
+    /// (`W^6/Hz^2` is T⁻¹⁶, within them, although `W^6` is not), so that whatever `Display`
+    /// writes parses back.
     fn unit(&mut self) -> Result<Unit, UnitError> {
         let start = self.pos;
-        let mut u = self.power()?;
+        let mut factors = vec![self.power()?];
         loop {
             let save = self.pos;
             self.skip_ws();
@@ -195,14 +198,14 @@ impl<'a> Parser<'a> {
                 Some('/') => -1,
                 _ => {
                     self.pos = save;
-                    return Ok(u);
+                    return Unit::checked_product(&factors)
+                        .ok_or_else(|| self.exponent_error(start..self.pos, 0));
                 }
             };
             self.bump();
             self.skip_ws();
-            let rhs = self.power()?;
-            let combined = rhs.checked_pow(op).and_then(|r| u.checked_mul(&r));
-            u = combined.ok_or_else(|| self.exponent_error(start..self.pos, 0))?;
+            let (base, n) = self.power()?;
+            factors.push((base, n * op));
         }
     }
 
@@ -211,8 +214,9 @@ impl<'a> Parser<'a> {
     }
 
     /// power = primary ("^" [+-]? digits | superscripts)?
-    fn power(&mut self) -> Result<Unit, UnitError> {
-        let start = self.pos;
+    /// A unit and its exponent, the power itself left to [`Unit::checked_product`] (which
+    /// bounds only the whole product).
+    fn power(&mut self) -> Result<(Unit, i32), UnitError> {
         let base = self.primary()?;
         let exp_start = self.pos;
         let n: i64 = if self.peek() == Some('^') {
@@ -239,12 +243,12 @@ impl<'a> Parser<'a> {
             }
             if neg { -n } else { n }
         } else {
-            return Ok(base);
+            return Ok((base, 1));
         };
         if n.abs() > i64::from(MAX_EXPONENT) {
             return Err(self.exponent_error(exp_start..self.pos, n));
         }
-        base.checked_pow(n as i32).ok_or_else(|| self.exponent_error(start..self.pos, n))
+        Ok((base, n as i32))
     }
 
     /// primary = symbol | "1" | "(" unit ")"

@@ -143,6 +143,35 @@ impl Unit {
         Some(Self { terms, dimension })
     }
 
+    /// The product of `factors`ᵏ (each a unit and its integer power) with exponents bounded by
+    /// [`MAX_EXPONENT`] only in the result (`None` beyond): the powers and partial products may
+    /// leave the bounds, so `W^6/Hz^2` (T⁻¹⁶) is a unit although `W^6` alone (T⁻¹⁸) is not.
+    /// Terms keep the order of their first appearance, as [`Unit::checked_mul`] folds them.
+    pub(crate) fn checked_product(factors: &[(Self, i32)]) -> Option<Self> {
+        let mut dim = [0i64; 4];
+        let mut terms: Vec<(Term, i64)> = Vec::new();
+        for (f, k) in factors {
+            let k = i64::from(*k);
+            for (d, x) in dim.iter_mut().zip(f.dimension.exponents()) {
+                *d += i64::from(x) * k;
+            }
+            for t in &f.terms {
+                match terms.iter_mut().find(|(s, _)| s.atom == t.atom && s.prefix == t.prefix) {
+                    Some((_, e)) => *e += i64::from(t.exp) * k,
+                    None => terms.push((*t, i64::from(t.exp) * k)),
+                }
+            }
+        }
+        let bound = i64::from(MAX_EXPONENT);
+        if dim.iter().chain(terms.iter().map(|(_, e)| e)).any(|e| e.abs() > bound) {
+            return None;
+        }
+        let dimension = Dimension::from_exponents(dim.map(|e| e as i32))?;
+        let terms =
+            terms.into_iter().filter(|(_, e)| *e != 0).map(|(t, e)| Term { exp: e as i8, ..t }).collect();
+        Some(Self { terms, dimension })
+    }
+
     /// Multiplies the exact ratio by (this unit's SI factor)^sign, sign = ±1.
     fn scale(&self, r: &mut Ratio, sign: i32) {
         let (mut pow10, mut pi) = (0i64, 0i64);

@@ -147,6 +147,21 @@ fn bounds_are_typed_errors() {
     assert!(matches!(err("1 (m^4)^5"), UnitError::ExponentOutOfRange { .. }));
     assert!(matches!(err("1 m^9*m^9"), UnitError::ExponentOutOfRange { .. }));
     assert!(matches!(err("1 m^99999999999999999999"), UnitError::ExponentOutOfRange { .. }));
+    // the bound is on the whole unit, not on a power or partial product inside it: W^6/Hz^2
+    // is kg⁶m¹²T⁻¹⁶ although W^6 alone is T⁻¹⁸ (what Display writes for W^3/Hz^2*W^3 must parse
+    // back); (m^4)^5/m^10 and m^9*m^9/m^8 are m^10
+    assert!(matches!(err("1 W^6"), UnitError::ExponentOutOfRange { .. }));
+    let q = Quantity::parse("1 W^3/Hz^2*W^3").unwrap();
+    let back = Quantity::parse(&q.to_string()).unwrap();
+    assert_eq!(q.to_string(), "1 W^6/Hz^2");
+    assert_eq!((back.unit(), back.value()), (q.unit(), q.value()));
+    for text in ["1 (m^4)^5/m^10", "1 m^9*m^9/m^8"] {
+        assert_eq!(
+            Quantity::parse(text).unwrap().unit(),
+            Quantity::parse("1 m^10").unwrap().unit(),
+            "{text}"
+        );
+    }
 }
 
 #[test]
