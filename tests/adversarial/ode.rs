@@ -549,6 +549,8 @@ cases! {
         for km in 3..=12 {
             let s = Extrapolation::gbs().max_columns(km).rtol(1e-10).atol(1e-10).solve(f, 0.0, &y0, 5.0).unwrap();
             let e = (s.last()[0] - 5f64.cos()).abs().max((s.last()[1] + 5f64.sin()).abs());
+            // the global error after 5 time units: within 100× the local tolerance 1e-10 for
+            // every column count (the oscillator's error stays near 1–3× tol at 9 columns)
             assert!(e <= 1e-8, "km {km}: {e}");
         }
     }
