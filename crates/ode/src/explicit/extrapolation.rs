@@ -6,8 +6,8 @@
 //! of long runs: Kepler e = 0.9 over 20 time units reaches 5·10⁻¹³ instead of 1.5·10⁻¹¹.
 //!
 //! Book: §4.11 (the rate equations are integrated numerically); HNW §II.9 (extrapolation
-//! methods: Gragg's midpoint rule (9.13), Aitken–Neville (9.10), order and step-size control
-//! (9.25)–(9.27)).
+//! methods: Gragg's midpoint rule with its smoothing step, Aitken–Neville extrapolation in h²,
+//! order and step-size control) and Hairer's `odex.f`, whose constants and control this follows.
 
 use std::time::Instant;
 
@@ -22,7 +22,7 @@ use crate::{OdeError, Work};
 pub const GBS_MAX_COLUMNS: usize = 12;
 
 /// The Gragg–Bulirsch–Stoer method: at most `max_columns` rows of the extrapolation table
-/// over the harmonic step sequence nⱼ = 2, 4, 6, 8, … (HNW (9.8′), Deuflhard's choice), so an
+/// over the harmonic step sequence nⱼ = 2, 4, 6, 8, … (HNW §II.9, Deuflhard's choice), so an
 /// accepted row j has order 2j. Default `max_columns` = 9 (ODEX's KM), valid 3 ..= 12.
 ///
 /// Book: §4.11; HNW §II.9.
@@ -130,7 +130,7 @@ impl Solver<Gbs> {
     }
 }
 
-/// ODEX's step-size factors: FAC1, FAC2 bound the change of h (HNW (9.25));
+/// ODEX's step-size factors: FAC1, FAC2 bound the change of h (`odex.f`);
 /// SAFE1, SAFE2 are the safety factors of the new step; SAFE3 shrinks h after a diverging
 /// row; FAC3, FAC4 decide an order decrease or increase from the work per unit step.
 const FAC1: f64 = 0.02;
@@ -270,7 +270,7 @@ impl<S: State> Run<S> {
         }
     }
 
-    /// Rows 1 … k − 1, then the convergence monitor in rows k − 1, k and k + 1 (HNW (9.27),
+    /// Rows 1 … k − 1, then the convergence monitor in rows k − 1, k and k + 1 (HNW §II.9,
     /// ODEX): accept in the first row whose error is ≤ 1, reject early when the error is too
     /// large to fall below 1 within the rows left.
     fn attempt<F: FnMut(f64, &S) -> S>(
@@ -308,7 +308,7 @@ impl<S: State> Run<S> {
         Ok(if err <= 1.0 { Verdict::Accept(k + 1) } else { Verdict::Reject(k + 1) })
     }
 
-    /// Order and step for the next step after acceptance in row kc (HNW (9.26)–(9.27), ODEX).
+    /// Order and step for the next step after acceptance in row kc (HNW §II.9, `odex.f`).
     fn accept(&mut self, kc: usize) {
         self.work.accepted += 1;
         let (w, km, k) = (&self.w, self.km, self.k);
@@ -352,7 +352,7 @@ impl<S: State> Run<S> {
     }
 
     /// Row j (1-based) of the table: Gragg's midpoint rule with nⱼ steps of H/nⱼ and the final
-    /// smoothing step (HNW (9.13)), extrapolated by Aitken–Neville in h² (9.10); then the error
+    /// smoothing step (HNW §II.9), extrapolated by Aitken–Neville in h²; then the error
     /// estimate and the optimal step for this row. `None` when the row diverges: its error is
     /// not finite, beyond 1/ε, or (from row 3) not below max(4·err, 1) of the row before.
     fn row<F: FnMut(f64, &S) -> S>(
