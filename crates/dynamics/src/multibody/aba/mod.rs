@@ -167,10 +167,13 @@ impl<T: Scalar> Model<T> {
         for (k, &l) in self.free_links.iter().enumerate() {
             self.free_leaf_accelerations(k, q, v, tau, f_ext.map(|fe| &fe[l]), vdot);
         }
+        for (k, &l) in self.ball_links.iter().enumerate() {
+            self.ball_leaf_accelerations(k, q, v, tau, f_ext.map(|fe| &fe[l]), vdot);
+        }
         self.aba_outward(q, v, s);
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
-                if !self.free_seg[k] {
+                if !self.aba_skip[k] {
                     s.pA[k] -= super::spatial::join(&fe[l].moment, &fe[l].force);
                 }
             }
@@ -222,6 +225,36 @@ impl<T: Scalar> Model<T> {
         let a_j = e_bj.tr_mul(&a_o);
         vdot[vi..vi + 3].copy_from_slice(a_j.as_slice());
         vdot[vi + 3..vi + 6].copy_from_slice(alpha.as_slice());
+    }
+
+    /// v̇ = α (resolved in the body frame B) of a ball leaf (see `ball_leaf_roots`) in closed
+    /// form: the joint point o is fixed, so Euler's equations about it, J_o α + ω×J_o ω = n_o,
+    /// with n_o the moment about o in B of the joint torque, of gravity (m c × g) and of the
+    /// external wrench, give α = J_o⁻¹(n_o − ω×J_o ω). This is what the three passes give for
+    /// this one segment, for 3×3 instead of 6×6 algebra.
+    ///
+    /// Book: §7.11 (Euler's equation about a fixed point, (7.11.13) with a_o = 0); RBDA §2.14.
+    fn ball_leaf_accelerations(
+        &self,
+        k: usize,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&JointWrench<T>>,
+        vdot: &mut [T],
+    ) {
+        let b = &self.segs[self.ball_leaves[k]];
+        let vi = b.vi;
+        // 𝓞_{B/J} of the ball, and g resolved in B through 𝓞_{J/G} of the placement
+        let g_b = b.elem.xform(&q[b.qi..]).E * (b.placement.E * self.gravity);
+        let w = Vector3::new(v[vi], v[vi + 1], v[vi + 2]);
+        let j_o = &b.inertia.I;
+        let mut moment = Vector3::new(tau[vi], tau[vi + 1], tau[vi + 2]) + b.inertia.h.cross(&g_b);
+        if let Some(fe) = f_ext {
+            moment += fe.moment;
+        }
+        let alpha = self.ball_jo_inv[k] * (moment - w.cross(&(j_o * w)));
+        vdot[vi..vi + 3].copy_from_slice(alpha.as_slice());
     }
 }
 
@@ -286,6 +319,74 @@ mod tests {
         for (a, b) in id.tau.iter().zip(&tau) {
             assert!((a - b).abs() <= 1e-12, "RNEA {:?} vs τ {tau:?}", id.tau);
         }
+    }
+
+    /// The closed form of a ball leaf (a body turning about a fixed point of a tilted, offset
+    /// joint frame, its centre off that point, under gravity, a joint torque and an external
+    /// wrench) agrees with the three passes on the same body made generic by a massless welded
+    /// child, and RNEA at the returned v̇ gives back the joint torque.
+    #[test]
+    fn ball_leaf_closed_form_matches_the_passes_and_rnea() {
+        let j_c = Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1);
+        let mut body = Link::new(
+            None,
+            Joint::Ball,
+            Vector3::new(0.5, -1.0, 2.0),
+            3.0,
+            Vector3::new(0.2, -0.4, 0.7),
+            j_c,
+        );
+        body.orientation = *Rotation3::from_euler_angles(0.3, -0.7, 1.1).matrix();
+        let tip = Link::new(
+            Some(0),
+            Joint::Weld,
+            Vector3::new(1.0, 0.0, 0.0),
+            0.0,
+            Vector3::zeros(),
+            Matrix3::zeros(),
+        );
+        let mut alone = Model::new(std::slice::from_ref(&body)).expect("valid");
+        let mut with_child = Model::new(&[body, tip]).expect("valid");
+        let g = Vector3::new(0.3, -0.2, -9.81);
+        (alone.gravity, with_child.gravity) = (g, g);
+        assert_eq!(alone.ball_leaves, vec![0]);
+        assert!(with_child.ball_leaves.is_empty());
+        let qn = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
+        let q = vec![qn.w, qn.i, qn.j, qn.k];
+        let (v, tau) = (vec![2.0, -1.1, 3.3], vec![0.7, -0.4, 0.25]);
+        let wrench =
+            JointWrench { force: Vector3::new(-0.6, 1.4, 2.2), moment: Vector3::new(0.9, 0.1, -0.5) };
+        let wrenches = vec![wrench, JointWrench::default()];
+        let fast = alone.aba(&q, &v, &tau, Some(&wrenches[..1])).expect("definite");
+        let passes = with_child.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
+        // a few roundings of terms near 10 (the gyroscopic and gravity moments)
+        for (a, b) in fast.iter().zip(&passes) {
+            assert!((a - b).abs() <= 1e-13 * (10.0 + b.abs()), "{fast:?} vs {passes:?}");
+        }
+        let id = alone.rnea(&q, &v, &fast, Some(&wrenches[..1])).expect("valid");
+        for (a, b) in id.tau.iter().zip(&tau) {
+            assert!((a - b).abs() <= 1e-12, "RNEA {:?} vs τ {tau:?}", id.tau);
+        }
+    }
+
+    /// A particle on a rod about a ball joint (J_c = 0, so J_o has rank 2) is not a closed-form
+    /// body: ABA's rank-revealing path keeps the spin about the rod inert. Hanging straight
+    /// down at rest, nothing moves.
+    #[test]
+    fn ball_particle_keeps_the_rank_revealing_path() {
+        let p = Link::new(
+            None,
+            Joint::Ball,
+            Vector3::zeros(),
+            2.0,
+            Vector3::new(0.0, 0.0, -1.0),
+            Matrix3::zeros(),
+        );
+        let mut m = Model::new(&[p]).expect("valid");
+        m.gravity = Vector3::new(0.0, 0.0, -9.81);
+        assert!(m.ball_leaves.is_empty());
+        let vd = m.aba(&[1.0, 0.0, 0.0, 0.0], &[0.0; 3], &[0.0; 3], None).expect("inert");
+        assert_eq!(vd, vec![0.0, 0.0, 0.0]);
     }
 
     /// A particle on a free joint (J_c = 0) is not a closed-form body: ABA's rank-revealing

@@ -26,7 +26,7 @@ impl<T: Scalar> Model<T> {
     /// for a massless segment), and each body's inertia as the seed of Iᴬ.
     pub(super) fn aba_outward(&self, q: &[T], v: &[T], s: &mut AbaScratch<T>) {
         for (i, seg) in self.segs.iter().enumerate() {
-            if self.free_seg[i] {
+            if self.aba_skip[i] {
                 continue;
             }
             let x = self.seg_xform(i, q);
@@ -59,7 +59,7 @@ impl<T: Scalar> Model<T> {
     /// blocks, then a shift).
     pub(super) fn aba_inward(&self, tau: &[T], s: &mut AbaScratch<T>) -> Result<(), DynamicsError> {
         for i in (0..self.segs.len()).rev() {
-            if self.free_seg[i] {
+            if self.aba_skip[i] {
                 continue;
             }
             let seg = &self.segs[i];
@@ -188,7 +188,7 @@ impl<T: Scalar> Model<T> {
     pub(super) fn aba_accelerations(&self, vdot: &mut [T], s: &mut AbaScratch<T>) {
         let a0 = join(&Vector3::zeros(), &(-self.gravity));
         for (i, seg) in self.segs.iter().enumerate() {
-            if self.free_seg[i] {
+            if self.aba_skip[i] {
                 continue;
             }
             let ap = match seg.parent {

@@ -50,6 +50,20 @@ impl Model<f64> {
         for &f in &free_leaves {
             free_seg[f..f + 4].fill(true);
         }
+        let ball_leaves: Vec<usize> =
+            ball_leaf_roots(&segs).into_iter().filter(|&b| link_seg.contains(&b)).collect();
+        let ball_links = ball_leaves
+            .iter()
+            .map(|&b| link_seg.iter().position(|&k| k == b).expect("filtered above"))
+            .collect();
+        let ball_jo_inv = ball_leaves
+            .iter()
+            .map(|&b| segs[b].inertia.I.cholesky().expect("definite: checked by ball_leaf_roots").inverse())
+            .collect();
+        let mut aba_skip = free_seg.clone();
+        for &b in &ball_leaves {
+            aba_skip[b] = true;
+        }
         let planar = Planar::detect(&segs, &link_seg);
         Ok(Self {
             link_seg,
@@ -64,6 +78,10 @@ impl Model<f64> {
             free_links,
             free_jc_inv,
             free_seg,
+            ball_leaves,
+            ball_links,
+            ball_jo_inv,
+            aba_skip,
             segs,
         })
     }
@@ -145,6 +163,10 @@ impl Model<f64> {
             free_links: self.free_links.clone(),
             free_jc_inv: self.free_jc_inv.iter().map(|m| m.map(U::lit)).collect(),
             free_seg: self.free_seg.clone(),
+            ball_leaves: self.ball_leaves.clone(),
+            ball_links: self.ball_links.clone(),
+            ball_jo_inv: self.ball_jo_inv.iter().map(|m| m.map(U::lit)).collect(),
+            aba_skip: self.aba_skip.clone(),
             planar: self.planar.as_ref().map(Planar::cast),
         }
     }
@@ -307,6 +329,37 @@ fn free_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
                 && segs[i + 3].parent == Some(i + 2)
                 && !has_child[i + 3]
                 && definite_body(&segs[i + 3])
+        })
+        .collect()
+}
+
+/// Every ball joint at the root whose segment carries a body and has no child, with the body's
+/// inertia about the joint point J_o definite (every Cholesky pivot above ABA's rounding level,
+/// `pivot_tol` × tr J_o): such a body couples to no other segment, and its Euler equations
+/// about the fixed point are solved by one product with J_o⁻¹. A particle on a rod (J_c = 0,
+/// J_o of rank 2) is left to ABA's rank-revealing path.
+fn ball_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
+    let mut has_child = vec![false; segs.len()];
+    for s in segs {
+        if let Some(p) = s.parent {
+            has_child[p] = true;
+        }
+    }
+    (0..segs.len())
+        .filter(|&i| {
+            let s = &segs[i];
+            let scale = s.inertia.I.trace();
+            s.parent.is_none()
+                && s.elem == Elem::Spherical
+                && !has_child[i]
+                && !s.massless
+                && scale > 0.0
+                && s.inertia.I.cholesky().is_some_and(|c| {
+                    let l = c.l_dirty();
+                    (0..3).all(|k| {
+                        l[(k, k)] * l[(k, k)] > crate::multibody::singular::pivot_tol::<f64>() * scale
+                    })
+                })
         })
         .collect()
 }

@@ -45,8 +45,19 @@ pub struct Model<T: Scalar = f64> {
     /// For each entry of `free_leaves`, J_c⁻¹ of its body (from the Cholesky factor found
     /// definite when the model was built): Euler's equations solved by one product.
     pub(crate) free_jc_inv: Vec<Matrix3<T>>,
-    /// For each segment, whether it belongs to a free leaf (the three passes skip it).
+    /// For each segment, whether it belongs to a free leaf.
     pub(crate) free_seg: Vec<bool>,
+    /// Ball joints at the root whose link has no children (a body turning about a fixed
+    /// point on its own): ABA solves these in closed form too ([`Model::aba_into`]).
+    pub(crate) ball_leaves: Vec<usize>,
+    /// For each entry of `ball_leaves`, its user link (whose external wrench it takes).
+    pub(crate) ball_links: Vec<usize>,
+    /// For each entry of `ball_leaves`, J_o⁻¹: the inverse of the body's inertia about the
+    /// joint point (definite: checked when the model was built).
+    pub(crate) ball_jo_inv: Vec<Matrix3<T>>,
+    /// For each segment, whether ABA solves it in closed form (a free or ball leaf): the
+    /// three passes skip it.
+    pub(crate) aba_skip: Vec<bool>,
     /// The planar reduction, when every pin turns about one axis of the ground and every
     /// slider moves across it: ABA then runs on 3-vectors ([`Model::aba_into`]).
     pub(crate) planar: Option<Planar<T>>,
