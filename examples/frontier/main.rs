@@ -34,8 +34,9 @@ use vectrix::ode::explicit::Adaptive;
 use vectrix::ode::harness::{Pendulum, Reference};
 
 use problems::{
-    CHAIN_NS, CHAIN_T, CLOSED_FORMS, GRAVITY, LINK, MASS, RADIUS, capsule_inertia, chain_model, chain_q0,
-    chain_y0, closed_form_f64, closed_form_mp, max_abs_diff,
+    ARM7_Q0, CHAIN_NS, CHAIN_T, CLOSED_FORMS, GRAVITY, LINK, MASS, RADIUS, TREE_T, capsule_inertia,
+    chain_model, chain_q0, chain_y0, closed_form_f64, closed_form_mp, max_abs_diff, spatial_reference,
+    tree_model,
 };
 use report::{Pt, figure};
 use routes::{Ctx, chain_rhs};
@@ -47,7 +48,7 @@ const BEGIN: &str = "<!-- frontier-table:begin -->";
 const END: &str = "<!-- frontier-table:end -->";
 
 /// The problems in table order: id, figure title, x label.
-const PROBLEMS: [(&str, &str, &str); 9] = [
+const PROBLEMS: [(&str, &str, &str); 10] = [
     (
         "rigid-body",
         "Torque-free asymmetric body, I = (1, 2, 3), t ≤ 20",
@@ -86,6 +87,11 @@ const PROBLEMS: [(&str, &str, &str); 9] = [
     (
         "chain-30",
         "30-link hinge chain, t ≤ 1 s",
+        "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
+    ),
+    (
+        "arm7",
+        "7-DOF arm (examples/models/arm7.urdf) from rest, t ≤ 1 s",
         "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
     ),
     (
@@ -267,6 +273,25 @@ fn run(args: &[String]) {
             }),
         );
     }
+    // the spatial trees: Pinocchio's ABA in quadruple precision (scripts/peers/spatial_reference.sh)
+    if want("arm7") {
+        let (state, spread) =
+            spatial_reference("arm7").expect("tests/data/spatial_reference.json holds arm7");
+        let model = tree_model("arm7.urdf");
+        let (q0, v0) = (ARM7_Q0.to_vec(), vec![0.0; 7]);
+        assert_eq!(model.nq(), 7, "arm7 has 7 joints");
+        reference.insert(
+            "arm7".into(),
+            json!({
+                "state": state, "t_end": TREE_T, "q0": q0, "v0": v0,
+                "source": "tests/data/spatial_reference.json (scripts/peers/spatial_reference.sh: Pinocchio ABA in float128, fixed-step GBS, two step sizes 6e-22 apart)",
+                // how far apart the end states of two equally valid double readings of the
+                // file are (every model number moved within ±1 ulp): below it no f64 tool that
+                // reads the file itself is measured
+                "uncertainty": spread,
+            }),
+        );
+    }
     std::fs::write(&ref_path, serde_json::to_string_pretty(&reference).expect("json"))
         .expect("write reference");
 
@@ -299,6 +324,15 @@ fn run(args: &[String]) {
             30 => ctx.chain::<60>(&state),
             _ => unreachable!("CHAIN_NS"),
         }
+    }
+    if want("arm7") {
+        let state: Vec<f64> = reference["arm7"]["state"]
+            .as_array()
+            .expect("state")
+            .iter()
+            .map(|x| x.as_f64().expect("number"))
+            .collect();
+        ctx.arm7(&state);
     }
     if want("energy-pendulum") {
         ctx.energy();

@@ -22,6 +22,50 @@ pub const CHAIN_T: f64 = 1.0;
 /// The chain lengths.
 pub const CHAIN_NS: [usize; 5] = [1, 2, 6, 12, 30];
 
+/// The spatial trees (examples/models/), their end time and initial angles: the 7-DOF arm of
+/// arm7.urdf from rest at these angles (joint1 … joint7, rad), τ = 0, g = 9.81 m/s² along −z,
+/// t ≤ 1 s. Kept in step with scripts/peers/spatial_reference.sh, which wrote the reference.
+pub const ARM7_Q0: [f64; 7] = [0.3, 1.2, -0.5, -0.8, 0.4, 0.6, -0.2];
+/// The spatial trees' end time [s].
+pub const TREE_T: f64 = 1.0;
+
+/// A model file of examples/models/ as a scene reads it (`[model] urdf = …`), with g = 9.81
+/// m/s² along −z as Pinocchio's default.
+pub fn tree_model(file: &str) -> Model {
+    let toml = format!("name = \"tree\"\nduration = 1.0\n[model]\nurdf = \"{file}\"\n");
+    let scene = vectrix::scene::Scene::from_toml(&toml, MODELS_DIR).unwrap_or_else(|e| panic!("{file}: {e}"));
+    let mut m = scene.model().clone();
+    m.gravity = Vector3::new(0.0, 0.0, -GRAVITY);
+    m
+}
+
+/// The scene path the tree scenes are read as (their model files are beside it).
+pub const MODELS_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/models/frontier.toml");
+
+/// The arm as a scene file: the URDF with gravity and the initial angles by link name.
+pub fn arm7_scene(method: &str, rtol: f64) -> String {
+    let mut s = header("arm7", TREE_T, 1, method, rtol);
+    s += "\n[model]\nurdf = \"arm7.urdf\"\ngravity = true\n\n[model.q]\n";
+    for (i, q) in ARM7_Q0.iter().enumerate() {
+        s += &format!("link{} = [{q:?}]\n", i + 1);
+    }
+    s
+}
+
+/// The extended-precision end state (q, v) of a spatial tree, the doubles nearest the
+/// quadruple-precision values of `tests/data/spatial_reference.json`
+/// (scripts/peers/spatial_reference.sh: Pinocchio's ABA in float128 under fixed-step GBS), and
+/// its `rounding_spread`: how far the end state moves when every number of the model moves
+/// within ±1 ulp (two parsers' equally valid doubles of the same file).
+pub fn spatial_reference(id: &str) -> Option<(Vec<f64>, f64)> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/spatial_reference.json");
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+    let tree = &doc["trees"][id];
+    let state =
+        tree["state"].as_array()?.iter().map(serde_json::Value::as_f64).collect::<Option<Vec<f64>>>()?;
+    Some((state, tree["rounding_spread"].as_f64()?))
+}
+
 /// The torque-free body of the harness: I = (1, 2, 3), ω(0) = (1, 0, 0.5), t ∈ [0, 20].
 pub fn rigid_body() -> RigidBody {
     RigidBody { inertia: [1.0, 2.0, 3.0], omega13: [1.0, 0.5], t_end: 20.0 }

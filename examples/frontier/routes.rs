@@ -11,8 +11,8 @@ use vectrix::ode::{GaussLegendre, LieMethod, RK4, integrate_lie, stormer_verlet}
 use vectrix::scene::Scene;
 
 use crate::problems::{
-    CHAIN_T, EnergyPendulum, KEPLER, PENDULUM, chain_model, chain_scene, chain_y0, kepler_scene,
-    max_abs_diff, pendulum_scene, rigid_body, rigid_scene,
+    ARM7_Q0, CHAIN_T, EnergyPendulum, KEPLER, MODELS_DIR, PENDULUM, TREE_T, arm7_scene, chain_model,
+    chain_scene, chain_y0, kepler_scene, max_abs_diff, pendulum_scene, rigid_body, rigid_scene, tree_model,
 };
 use crate::timing::median_time;
 
@@ -213,11 +213,22 @@ impl Ctx {
     /// A scene at every tolerance with both pairs; `error` reads the run's final state. The
     /// scene files are parsed and validated before the timed runs.
     pub fn scene(&mut self, id: &str, toml: impl Fn(&str, f64) -> String, error: impl Fn(&[f64]) -> f64) {
+        self.scene_in(id, "frontier", toml, error);
+    }
+
+    /// [`Ctx::scene`] with the scene files read as `dir` (where the files they name are).
+    fn scene_in(
+        &mut self,
+        id: &str,
+        dir: &str,
+        toml: impl Fn(&str, f64) -> String,
+        error: impl Fn(&[f64]) -> f64,
+    ) {
         let tols = self.tolerances();
         for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853")] {
             let scenes: Vec<(f64, Scene)> = tols
                 .iter()
-                .map(|&tol| match Scene::from_toml(&toml(key, tol), "frontier") {
+                .map(|&tol| match Scene::from_toml(&toml(key, tol), dir) {
                     Ok(s) => (tol, s),
                     Err(e) => panic!("{id}: the frontier's scene is invalid: {e}"),
                 })
@@ -271,51 +282,82 @@ impl Ctx {
     /// The n-link chain (N = 2n states) through `Model::aba_into` and through its scene.
     pub fn chain<const N: usize>(&mut self, reference: &[f64]) {
         let n = N / 2;
-        let id = format!("chain-{n}");
-        let model = chain_model(n);
-        let y0 = chain_y0::<N>();
+        let scene = |m: &str, tol| chain_scene(n, m, tol);
+        self.tree::<N>(
+            &format!("chain-{n}"),
+            &chain_model(n),
+            chain_y0::<N>(),
+            CHAIN_T,
+            reference,
+            "frontier",
+            scene,
+        );
+    }
+
+    /// The 7-DOF arm of examples/models/arm7.urdf through `Model::aba_into` and its scene.
+    pub fn arm7(&mut self, reference: &[f64]) {
+        let y0 = SVector::<f64, 14>::from_fn(|i, _| if i < 7 { ARM7_Q0[i] } else { 0.0 });
+        self.tree::<14>("arm7", &tree_model("arm7.urdf"), y0, TREE_T, reference, MODELS_DIR, arm7_scene);
+    }
+
+    /// A fixed-base tree (N = 2n states, q̇ = v) from y0 over [0, t_end] through
+    /// `Model::aba_into` (DP5, DOP853, GBS, RK4, Gauss6) and through its scene file (read as
+    /// `dir`, where its model files are).
+    #[allow(clippy::too_many_arguments)]
+    fn tree<const N: usize>(
+        &mut self,
+        id: &str,
+        model: &vectrix::dynamics::multibody::Model,
+        y0: SVector<f64, N>,
+        t_end: f64,
+        reference: &[f64],
+        dir: &str,
+        scene: impl Fn(&str, f64) -> String,
+    ) {
+        let n = N / 2;
+        let (id, y0) = (id.to_string(), &y0);
         let tau = vec![0.0; n];
         let err = |y: &[f64]| max_abs_diff(y, reference);
         let tols = self.tolerances();
         for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
             let run = |tol: f64| -> Outcome {
                 let mut scratch = model.aba_scratch();
-                let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
-                let s = a.rtol(tol).atol(tol).solve(f, 0.0, &y0, CHAIN_T).map_err(|e| e.to_string())?;
+                let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
+                let s = a.rtol(tol).atol(tol).solve(f, 0.0, y0, t_end).map_err(|e| e.to_string())?;
                 Ok((s.last().as_slice().to_vec(), s.work.fevals))
             };
             self.ladder(&id, "library", name, "rtol", &tols, run, err);
         }
         let run = |tol: f64| -> Outcome {
             let mut scratch = model.aba_scratch();
-            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
             let s = Extrapolation::gbs()
                 .rtol(tol)
                 .atol(tol)
-                .solve(f, 0.0, &y0, CHAIN_T)
+                .solve(f, 0.0, y0, t_end)
                 .map_err(|e| e.to_string())?;
             Ok((s.last().as_slice().to_vec(), s.work.fevals))
         };
         self.ladder(&id, "library", "GBS", "rtol", &tols, run, err);
-        let steps = self.steps(CHAIN_T, 20);
+        let steps = self.steps(t_end, 20);
         let run = |k: f64| -> Outcome {
             let mut scratch = model.aba_scratch();
-            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
-            let (y, w) = integrate_fixed(&RK4, f, 0.0, &y0, CHAIN_T, k as usize, |_, _| {})
-                .map_err(|e| e.to_string())?;
+            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
+            let (y, w) =
+                integrate_fixed(&RK4, f, 0.0, y0, t_end, k as usize, |_, _| {}).map_err(|e| e.to_string())?;
             Ok((y.as_slice().to_vec(), w.fevals))
         };
         self.ladder(&id, "library", "RK4", "steps", &steps, run, err);
         let run = |k: f64| -> Outcome {
             let mut scratch = model.aba_scratch();
-            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
             let (y, w) = GaussLegendre::Gauss6
-                .integrate(f, 0.0, &y0, CHAIN_T, k as usize, |_, _| {})
+                .integrate(f, 0.0, y0, t_end, k as usize, |_, _| {})
                 .map_err(|e| e.to_string())?;
             Ok((y.as_slice().to_vec(), w.fevals))
         };
         self.ladder(&id, "library", "Gauss6", "steps", &steps, run, err);
-        self.scene(&id, |m, tol| chain_scene(n, m, tol), err);
+        self.scene_in(&id, dir, scene, err);
     }
 
     /// The energy problem: max relative energy error at the checkpoints over 10⁴ periods.

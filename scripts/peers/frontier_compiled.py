@@ -5,8 +5,10 @@ and measures their end states against the same references as every other tool
 
 * `odeint`: Boost.Odeint's controlled `runge_kutta_dopri5`, `runge_kutta_fehlberg78` and
   `bulirsch_stoer` at rtol = atol = 1e-3 … 1e-15 (vectrix's ladder), with Pinocchio's C++ ABA
-  on the hinge chains and hand-written C++ right-hand sides on the body, Kepler and the
-  pendulum; the energy problem through Odeint's dense output (cpp/odeint_frontier.cpp).
+  on the hinge chains and on the 7-DOF arm (the model Pinocchio's URDF parser makes of
+  examples/models/arm7.urdf, dumped by scripts/pin_model_dump.py), hand-written C++
+  right-hand sides on the body, Kepler and the pendulum; the energy problem through Odeint's
+  dense output (cpp/odeint_frontier.cpp).
 * `mujoco-c`: MuJoCo's C API, `mj_step` in a C loop, RK4 and implicitfast at the step
   ladders of frontier_mujoco.py (cpp/mujoco_frontier.c).
 
@@ -16,6 +18,7 @@ mujoco-c.json."""
 import json
 import os
 import subprocess
+import sys
 import tempfile
 
 import numpy as np
@@ -96,6 +99,12 @@ def main():
         if fc.only(problem):
             check_chain_rhs(n)
             odeint_ladder(res, problem, lambda s, st=ref[problem]["state"]: fc.chain_error(s, st))
+    if fc.only("arm7"):
+        with tempfile.TemporaryDirectory() as d:
+            dump = os.path.join(d, "arm7.pin.txt")
+            subprocess.run([sys.executable, os.path.join(fc.REPO, "scripts", "pin_model_dump.py"),
+                            os.path.join(fc.REPO, "examples", "models", "arm7.urdf"), dump], check=True)
+            odeint_ladder(res, "arm7", lambda s, st=ref["arm7"]["state"]: fc.chain_error(s, st), extra=(dump,))
     if fc.only("energy-pendulum"):
         odeint_ladder(res, "energy-pendulum", lambda s: s[0], extra=(repr(float(fc.ENERGY_PERIOD)),))
     res.save()

@@ -1,6 +1,9 @@
 """Pinocchio's ABA (C++, called from Python) as the right-hand side of scipy's solve_ivp on the
-hinge chains: what a Pinocchio user who integrates with scipy pays. DOP853 and LSODA at rtol =
-atol = 1e-3 … 1e-14 (frontier_scipy's ladder)."""
+hinge chains and on the 7-DOF arm (examples/models/arm7.urdf through Pinocchio's own URDF parser):
+what a Pinocchio user who integrates with scipy pays. DOP853 and LSODA at rtol = atol = 1e-3 …
+1e-14 (frontier_scipy's ladder)."""
+import os
+
 import numpy as np
 import pinocchio as pin
 
@@ -23,10 +26,15 @@ def chain_model(n):
     return model
 
 
+# examples/frontier/problems.rs ARM7_Q0 and TREE_T (and scripts/peers/spatial_reference.sh)
+ARM7_Q0 = [0.3, 1.2, -0.5, -0.8, 0.4, 0.6, -0.2]
+TREE_T = 1.0
+
+
 class PinRhs:
-    def __init__(self, n):
+    def __init__(self, n, model=None):
         self.n = n
-        self.model = chain_model(n)
+        self.model = chain_model(n) if model is None else model
         self.data = self.model.createData()
         self.tau = np.zeros(n)
 
@@ -48,6 +56,14 @@ def main():
         assert diff < 1e-9, f"{problem}: Pinocchio and numpy accelerations differ by {diff:e}"
         state = ref[problem]["state"]
         ladder(res, problem, rhs, y0, fc.CHAIN_T, lambda s, st=state: fc.chain_error(s.y[:, -1], st),
+               tool="pinocchio", series="pinocchio+{}", methods=("DOP853", "LSODA"))
+    if fc.only("arm7"):
+        model = pin.buildModelFromUrdf(os.path.join(fc.REPO, "examples", "models", "arm7.urdf"))
+        model.gravity.linear = np.array([0.0, 0.0, -fc.GRAVITY])
+        rhs = PinRhs(7, model)
+        y0 = np.concatenate([ARM7_Q0, np.zeros(7)])
+        state = ref["arm7"]["state"]
+        ladder(res, "arm7", rhs, y0, TREE_T, lambda s, st=state: fc.chain_error(s.y[:, -1], st),
                tool="pinocchio", series="pinocchio+{}", methods=("DOP853", "LSODA"))
     res.save()
 

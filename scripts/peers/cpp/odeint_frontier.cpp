@@ -6,11 +6,15 @@
 //     (the model of frontier_pinocchio.py: revolute-y joints, capsule moments, g = 9.81 −z),
 //   * the torque-free body (Euler's equations + quaternion), Kepler e = 0.9 and the pendulum
 //     at 3 rad with hand-written right-hand sides (Eigen for the body's vector algebra),
+//   * the 7-DOF arm of examples/models/arm7.urdf with Pinocchio's C++ ABA on the model its URDF
+//     parser made (rebuilt from scripts/pin_model_dump.py's joint list: pin_dump.hpp), from rest
+//     at the angles of examples/frontier/problems.rs ARM7_Q0, g = 9.81 −z, t ≤ 1,
 //   * the energy problem (θ₀ = 1 rad, 10⁴ periods, E read every 10 periods through dense
 //     output: `make_dense_output` for DP5, `bulirsch_stoer_dense_out` for BS; RKF78 has no
 //     dense output in Odeint, so `integrate_times` steps it onto each checkpoint).
 //
-// usage:  odeint_frontier PROBLEM METHOD TOL [PERIOD]     (PERIOD: energy-pendulum only)
+// usage:  odeint_frontier PROBLEM METHOD TOL [PERIOD|DUMP] (PERIOD: energy-pendulum; DUMP: arm7's
+//                                                         model file, from pin_model_dump.py)
 //         odeint_frontier rhs chain-N                     (prints f(y0), for the model check)
 // prints one JSON line: {"seconds": median wall time of one whole run, "repeats": …,
 // "fevals": …, "steps": …, "state": final state (energy: [max |E − E₀|/E₀])}. The errors are
@@ -20,6 +24,7 @@
 #include <pinocchio/multibody.hpp>
 #include <pinocchio/algorithm/aba.hpp>
 #include <boost/numeric/odeint.hpp>
+#include "pin_dump.hpp"
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -166,6 +171,20 @@ template <size_t N> static void chain(const std::string& method, double tol, boo
   ladder_point<N>(method, tol, sys, y0, 1.0, &fev);
 }
 
+// ------------------------------------------------------------------ the arm (Pinocchio ABA)
+
+static void arm7(const std::string& method, double tol, const char* dump) {
+  pinocchio::Model model = load_pin_dump(dump);
+  model.gravity.linear(Eigen::Vector3d(0, 0, -9.81));
+  if (model.nq != 7 || model.nv != 7) { std::fprintf(stderr, "arm7: expected 7 joints\n"); std::exit(2); }
+  pinocchio::Data data(model);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(7);
+  long fev = 0;
+  Chain<14> sys{&model, &data, &tau, &fev};
+  const std::array<double, 14> y0{0.3, 1.2, -0.5, -0.8, 0.4, 0.6, -0.2};
+  ladder_point<14>(method, tol, sys, y0, 1.0, &fev);
+}
+
 // ------------------------------------------------------------------ energy over 10⁴ periods
 
 static void energy(const std::string& method, double tol, double period) {
@@ -222,6 +241,9 @@ int main(int argc, char** argv) {
   } else if (problem == "energy-pendulum") {
     if (argc < 5) { std::fprintf(stderr, "energy-pendulum needs PERIOD\n"); return 2; }
     energy(method, tol, std::atof(argv[4]));
+  } else if (problem == "arm7") {
+    if (argc < 5) { std::fprintf(stderr, "arm7 needs DUMP (scripts/pin_model_dump.py of arm7.urdf)\n"); return 2; }
+    arm7(method, tol, argv[4]);
   } else if (problem == "chain-1") chain<2>(method, tol, rhs_only);
   else if (problem == "chain-2") chain<4>(method, tol, rhs_only);
   else if (problem == "chain-6") chain<12>(method, tol, rhs_only);
