@@ -5,8 +5,9 @@ and measures their end states against the same references as every other tool
 
 * `odeint`: Boost.Odeint's controlled `runge_kutta_dopri5`, `runge_kutta_fehlberg78` and
   `bulirsch_stoer` at rtol = atol = 1e-3 … 1e-15 (vectrix's ladder), with Pinocchio's C++ ABA
-  on the hinge chains and on the 7-DOF arm (the model Pinocchio's URDF parser makes of
-  examples/models/arm7.urdf, dumped by scripts/pin_model_dump.py), hand-written C++
+  on the hinge chains, the 7-DOF arm and the floating quadruped (the models Pinocchio's URDF
+  parser makes of examples/models/arm7.urdf and quadruped.urdf, dumped by
+  scripts/pin_model_dump.py; end states in the common form of cpp/pin_dump.hpp), hand-written C++
   right-hand sides on the body, Kepler and the pendulum; the energy problem through Odeint's
   dense output (cpp/odeint_frontier.cpp).
 * `mujoco-c`: MuJoCo's C API, `mj_step` in a C loop, RK4 and implicitfast at the step
@@ -99,12 +100,16 @@ def main():
         if fc.only(problem):
             check_chain_rhs(n)
             odeint_ladder(res, problem, lambda s, st=ref[problem]["state"]: fc.chain_error(s, st))
-    if fc.only("arm7"):
-        with tempfile.TemporaryDirectory() as d:
-            dump = os.path.join(d, "arm7.pin.txt")
-            subprocess.run([sys.executable, os.path.join(fc.REPO, "scripts", "pin_model_dump.py"),
-                            os.path.join(fc.REPO, "examples", "models", "arm7.urdf"), dump], check=True)
-            odeint_ladder(res, "arm7", lambda s, st=ref["arm7"]["state"]: fc.chain_error(s, st), extra=(dump,))
+    for tree in ("arm7", "quadruped"):
+        if fc.only(tree) and tree not in ref:
+            print(f"frontier_compiled: {tree} has no reference in reference.json (run the vectrix side first)",
+                  file=sys.stderr)
+        elif fc.only(tree):
+            with tempfile.TemporaryDirectory() as d:
+                dump = os.path.join(d, f"{tree}.pin.txt")
+                subprocess.run([sys.executable, os.path.join(fc.REPO, "scripts", "pin_model_dump.py"),
+                                os.path.join(fc.REPO, "examples", "models", f"{tree}.urdf"), dump], check=True)
+                odeint_ladder(res, tree, lambda s, st=ref[tree]["state"]: fc.chain_error(s, st), extra=(dump,))
     if fc.only("energy-pendulum"):
         odeint_ladder(res, "energy-pendulum", lambda s: s[0], extra=(repr(float(fc.ENERGY_PERIOD)),))
     res.save()
