@@ -96,6 +96,62 @@ fn section_7_11_six_link_chain_matches_extended_precision_reference() {
     assert!(tighter < err / 4.0, "at 1e-14: {tighter:e}, at 1e-13: {err:e}");
 }
 
+/// The `id` entry of `tests/data/spatial_reference.json` (scripts/peers/spatial_reference.sh):
+/// checks that it describes this problem (initial state, end time, convergence of its two step
+/// sizes below 1e-20, the ±1-ulp model spread below 1e-12) and returns its end state.
+fn spatial_entry(id: &str, q0: &[f64], v0: &[f64]) -> (Vec<f64>, f64) {
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/spatial_reference.json"))
+            .expect("tests/data/spatial_reference.json");
+    let doc: Value = serde_json::from_str(&text).expect("json");
+    let r = &doc["trees"][id];
+    // the reference stores Pinocchio's layout: a free flyer's quaternion (x, y, z, w) scalar
+    // last (a free root is the one joint with nq = nv + 1)
+    let mut q = floats(&r["q0"]);
+    if q0.len() == v0.len() + 1 {
+        q[3..7].rotate_right(1);
+    }
+    assert_eq!(q, q0.to_vec(), "{id}: q0");
+    assert_eq!(floats(&r["v0"]), v0.to_vec(), "{id}: v0");
+    assert_eq!(r["t_end"].as_f64(), Some(problems::TREE_T));
+    assert!(r["difference"].as_f64().expect("difference") < 1e-20);
+    let spread = r["rounding_spread"].as_f64().expect("rounding_spread");
+    assert!(spread < 1e-12, "{id}: spread {spread:e}");
+    let want = floats(&r["state"]);
+    assert_eq!(want.len(), q0.len() + v0.len());
+    (want, spread)
+}
+
+/// The end state of a tree from (q0, v0) to `TREE_T` by vectrix, library route (DOP853 at
+/// rtol = atol = `tol` on (q̇, v̇) = (q̇(q, v), ABA(q, v, τ = 0))) and scene route, in the
+/// frontier's common form.
+fn tree_end_states<const N: usize>(
+    file: &str,
+    q0: &[f64],
+    v0: &[f64],
+    scene: &str,
+    tol: f64,
+) -> (Vec<f64>, Vec<f64>) {
+    let model = problems::tree_model(file);
+    let tau = vec![0.0; model.nv()];
+    let mut scratch = model.aba_scratch();
+    let nq = model.nq();
+    let f = |_: f64, y: &SVector<f64, N>| {
+        let mut out = SVector::<f64, N>::zeros();
+        let (q, v) = y.as_slice().split_at(nq);
+        let (qd, vd) = out.as_mut_slice().split_at_mut(nq);
+        model.qdot_into(q, v, qd);
+        model.aba_into(q, v, &tau, None, vd, &mut scratch).expect("aba");
+        out
+    };
+    let y0 = SVector::<f64, N>::from_iterator(q0.iter().chain(v0).copied());
+    let sol = Adaptive::dop853().rtol(tol).atol(tol).solve(f, 0.0, &y0, problems::TREE_T).expect("solves");
+    let scene = vectrix::scene::Scene::from_toml(scene, problems::MODELS_DIR).expect("scene");
+    let run = scene.run(&mut |_| {}).expect("runs");
+    assert!(run.is_complete());
+    (problems::common_form(&model, sol.last().as_slice()), problems::common_form(&model, &run.final_state))
+}
+
 /// §7.11 on a spatial tree nobody here designed for it: the 7-DOF arm of
 /// examples/models/arm7.urdf (offset and turned inertials, joint frames turned by rpy, a tool
 /// merged through a fixed joint) from rest at `ARM7_Q0` to t = 1 s under gravity, against
@@ -110,40 +166,30 @@ fn section_7_11_six_link_chain_matches_extended_precision_reference() {
 /// scene route the same. Bound 6e-11 for both.
 #[test]
 fn section_7_11_arm7_matches_pinocchio_quadruple_precision_reference() {
-    use problems::{ARM7_Q0, MODELS_DIR, TREE_T, arm7_scene, tree_model};
-    let text =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/spatial_reference.json"))
-            .expect("tests/data/spatial_reference.json");
-    let doc: Value = serde_json::from_str(&text).expect("json");
-    let r = &doc["trees"]["arm7"];
-    assert_eq!(floats(&r["q0"]), ARM7_Q0.to_vec());
-    assert_eq!(r["t_end"].as_f64(), Some(TREE_T));
-    assert!(r["difference"].as_f64().expect("difference") < 1e-20);
-    // every model number moved within ±1 ulp (another parser's doubles) moves the end by
-    // 1.5e-13 (measured, 4 seeds): far below the bound
-    assert!(r["rounding_spread"].as_f64().expect("rounding_spread") < 1e-12);
-    let want = floats(&r["state"]);
-    assert_eq!(want.len(), 14);
-
-    let model = tree_model("arm7.urdf");
-    let tau = vec![0.0; 7];
-    let mut scratch = model.aba_scratch();
-    let f = |_: f64, y: &SVector<f64, 14>| {
-        let mut out = SVector::<f64, 14>::zeros();
-        let (q, v) = y.as_slice().split_at(7);
-        let (qd, vd) = out.as_mut_slice().split_at_mut(7);
-        qd.copy_from_slice(v);
-        model.aba_into(q, v, &tau, None, vd, &mut scratch).expect("aba");
-        out
-    };
-    let y0 = SVector::<f64, 14>::from_fn(|i, _| if i < 7 { ARM7_Q0[i] } else { 0.0 });
-    let sol = Adaptive::dop853().rtol(1e-13).atol(1e-13).solve(f, 0.0, &y0, TREE_T).expect("solves");
-    let library = max_abs_diff(sol.last().as_slice(), &want);
+    use problems::{ARM7_Q0, arm7_scene};
+    let (want, _) = spatial_entry("arm7", &ARM7_Q0, &[0.0; 7]);
+    let (library, scene) =
+        tree_end_states::<14>("arm7.urdf", &ARM7_Q0, &[0.0; 7], &arm7_scene("dop853", 1e-13), 1e-13);
+    let (library, scene) = (max_abs_diff(&library, &want), max_abs_diff(&scene, &want));
     assert!(library < 6e-11, "library: max |Δ(q, v)| = {library:e}");
+    assert!(scene < 6e-11, "scene: max |Δ(q, v)| = {scene:e}");
+}
 
-    let scene = vectrix::scene::Scene::from_toml(&arm7_scene("dop853", 1e-13), MODELS_DIR).expect("scene");
-    let run = scene.run(&mut |_| {}).expect("runs");
-    assert!(run.is_complete());
-    let scene_err = max_abs_diff(&run.final_state, &want);
-    assert!(scene_err < 6e-11, "scene: max |Δ(q, v)| = {scene_err:e}");
+/// §7.11 with a floating base: the quadruped of examples/models/quadruped.urdf (a free joint
+/// and 12 pins, offset inertials) falling and turning for 1 s with its legs bent, against the
+/// same kind of reference (Pinocchio's free flyer, its velocity in the trunk's frame, q̇ by
+/// quaternion kinematics; two step sizes agree to 1.5e-29, the ±1-ulp model spread 6e-16),
+/// compared in the frontier's common form (position, attitude quaternion with η ≥ 0, angles,
+/// the trunk's velocity in the ground, ω in the trunk, rates). A smooth motion: DOP853 at rtol =
+/// atol = 1e-13 ends 5.6e-13 from the reference (measured), library and scene: bound 6e-12.
+#[test]
+fn section_7_11_quadruped_matches_pinocchio_quadruple_precision_reference() {
+    use problems::{QUADRUPED_Q0, QUADRUPED_V0, quadruped_scene};
+    let (want, _) = spatial_entry("quadruped", &QUADRUPED_Q0, &QUADRUPED_V0);
+    let scene = quadruped_scene("dop853", 1e-13);
+    let (library, scene) =
+        tree_end_states::<37>("quadruped.urdf", &QUADRUPED_Q0, &QUADRUPED_V0, &scene, 1e-13);
+    let (library, scene) = (max_abs_diff(&library, &want), max_abs_diff(&scene, &want));
+    assert!(library < 6e-12, "library: max |Δ| = {library:e}");
+    assert!(scene < 6e-12, "scene: max |Δ| = {scene:e}");
 }

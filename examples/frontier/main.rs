@@ -34,9 +34,9 @@ use vectrix::ode::explicit::Adaptive;
 use vectrix::ode::harness::{Pendulum, Reference};
 
 use problems::{
-    ARM7_Q0, CHAIN_NS, CHAIN_T, CLOSED_FORMS, GRAVITY, LINK, MASS, RADIUS, TREE_T, capsule_inertia,
-    chain_model, chain_q0, chain_y0, closed_form_f64, closed_form_mp, max_abs_diff, spatial_reference,
-    tree_model,
+    ARM7_Q0, CHAIN_NS, CHAIN_T, CLOSED_FORMS, GRAVITY, LINK, MASS, QUADRUPED_Q0, QUADRUPED_V0, RADIUS,
+    TREE_T, capsule_inertia, chain_model, chain_q0, chain_y0, closed_form_f64, closed_form_mp, max_abs_diff,
+    spatial_reference, tree_model,
 };
 use report::{Pt, figure};
 use routes::{Ctx, chain_rhs};
@@ -48,7 +48,7 @@ const BEGIN: &str = "<!-- frontier-table:begin -->";
 const END: &str = "<!-- frontier-table:end -->";
 
 /// The problems in table order: id, figure title, x label.
-const PROBLEMS: [(&str, &str, &str); 10] = [
+const PROBLEMS: [(&str, &str, &str); 11] = [
     (
         "rigid-body",
         "Torque-free asymmetric body, I = (1, 2, 3), t ≤ 20",
@@ -93,6 +93,11 @@ const PROBLEMS: [(&str, &str, &str); 10] = [
         "arm7",
         "7-DOF arm (examples/models/arm7.urdf) from rest, t ≤ 1 s",
         "max-norm error of (q, v) at t = 1 s (extended-precision reference)",
+    ),
+    (
+        "quadruped",
+        "Floating quadruped (examples/models/quadruped.urdf) falling and turning, t ≤ 1 s",
+        "max-norm error of (position, attitude, angles, velocities) at t = 1 s (extended-precision reference)",
     ),
     (
         "energy-pendulum",
@@ -274,17 +279,23 @@ fn run(args: &[String]) {
         );
     }
     // the spatial trees: Pinocchio's ABA in quadruple precision (scripts/peers/spatial_reference.sh)
-    if want("arm7") {
+    for (id, file, q0, v0) in [
+        ("arm7", "arm7.urdf", ARM7_Q0.to_vec(), vec![0.0; 7]),
+        ("quadruped", "quadruped.urdf", QUADRUPED_Q0.to_vec(), QUADRUPED_V0.to_vec()),
+    ] {
+        if !want(id) {
+            continue;
+        }
         let (state, spread) =
-            spatial_reference("arm7").expect("tests/data/spatial_reference.json holds arm7");
-        let model = tree_model("arm7.urdf");
-        let (q0, v0) = (ARM7_Q0.to_vec(), vec![0.0; 7]);
-        assert_eq!(model.nq(), 7, "arm7 has 7 joints");
+            spatial_reference(id).expect("tests/data/spatial_reference.json holds the tree");
+        let model = tree_model(file);
+        assert_eq!((model.nq(), model.nv()), (q0.len(), v0.len()), "{id}: the initial state fits the model");
+        assert_eq!(state.len(), q0.len() + v0.len(), "{id}: the reference has nq + nv numbers");
         reference.insert(
-            "arm7".into(),
+            id.into(),
             json!({
                 "state": state, "t_end": TREE_T, "q0": q0, "v0": v0,
-                "source": "tests/data/spatial_reference.json (scripts/peers/spatial_reference.sh: Pinocchio ABA in float128, fixed-step GBS, two step sizes 6e-22 apart)",
+                "source": "tests/data/spatial_reference.json (scripts/peers/spatial_reference.sh: Pinocchio ABA in float128, fixed-step GBS, two step sizes apart by its `difference`)",
                 // how far apart the end states of two equally valid double readings of the
                 // file are (every model number moved within ±1 ulp): below it no f64 tool that
                 // reads the file itself is measured
@@ -325,14 +336,19 @@ fn run(args: &[String]) {
             _ => unreachable!("CHAIN_NS"),
         }
     }
-    if want("arm7") {
-        let state: Vec<f64> = reference["arm7"]["state"]
+    let tree_state = |id: &str| -> Vec<f64> {
+        reference[id]["state"]
             .as_array()
             .expect("state")
             .iter()
             .map(|x| x.as_f64().expect("number"))
-            .collect();
-        ctx.arm7(&state);
+            .collect()
+    };
+    if want("arm7") {
+        ctx.arm7(&tree_state("arm7"));
+    }
+    if want("quadruped") {
+        ctx.quadruped(&tree_state("quadruped"));
     }
     if want("energy-pendulum") {
         ctx.energy();

@@ -39,6 +39,43 @@ pub fn tree_model(file: &str) -> Model {
     m
 }
 
+/// The floating quadruped of quadruped.urdf: its trunk at the free joint's placement (0.45 m
+/// up), level, turning at ω = (0.3, 0.5, 1.0) rad/s in its own frame, the legs at rest bent
+/// (hip, thigh, calf of fl, fr, hl, hr), τ = 0, falling freely for `TREE_T`. vectrix's layout:
+/// q = (x, y, z, η, ε₁, ε₂, ε₃, 12 angles), v = (ẋ, ẏ, ż, ω, 12 rates); kept in step with
+/// scripts/peers/spatial_reference.sh.
+pub const QUADRUPED_Q0: [f64; 19] =
+    [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.2, 0.7, -1.4, -0.2, 0.7, -1.4, 0.2, -0.7, 1.4, -0.2, -0.7, 1.4];
+/// The quadruped's initial velocities (see [`QUADRUPED_Q0`]).
+pub const QUADRUPED_V0: [f64; 18] =
+    [0.0, 0.0, 0.0, 0.3, 0.5, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+
+/// The quadruped as a scene file: the URDF with gravity, angles and the trunk's spin by link.
+pub fn quadruped_scene(method: &str, rtol: f64) -> String {
+    let mut s = header("quadruped", TREE_T, 1, method, rtol);
+    s += "\n[model]\nurdf = \"quadruped.urdf\"\ngravity = true\n\n[model.q]\n";
+    for (k, leg) in ["fl", "fr", "hl", "hr"].iter().enumerate() {
+        for (j, part) in ["hip", "thigh", "calf"].iter().enumerate() {
+            s += &format!("{leg}_{part} = [{:?}]\n", QUADRUPED_Q0[7 + 3 * k + j]);
+        }
+    }
+    let w = &QUADRUPED_V0[3..6];
+    s += &format!("\n[model.v]\ntrunk = [0.0, 0.0, 0.0, {:?}, {:?}, {:?}]\n", w[0], w[1], w[2]);
+    s
+}
+
+/// A tree's end state (q, v) in the frontier's common form (scripts/peers/cpp/pin_dump.hpp
+/// `common_form`): as it is for a fixed base; with a free joint at the root (nq ≠ nv), the
+/// attitude quaternion's sign chosen so that η ≥ 0 (vectrix's free joint already has the
+/// position and its rate in the joint frame, ω in the body).
+pub fn common_form(model: &Model, y: &[f64]) -> Vec<f64> {
+    let mut out = y.to_vec();
+    if model.nq() != model.nv() && out.len() >= 7 && out[3] < 0.0 {
+        out[3..7].iter_mut().for_each(|x| *x = -*x);
+    }
+    out
+}
+
 /// The scene path the tree scenes are read as (their model files are beside it).
 pub const MODELS_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/models/frontier.toml");
 

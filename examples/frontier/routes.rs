@@ -11,8 +11,9 @@ use vectrix::ode::{GaussLegendre, LieMethod, RK4, integrate_lie, stormer_verlet}
 use vectrix::scene::Scene;
 
 use crate::problems::{
-    ARM7_Q0, CHAIN_T, EnergyPendulum, KEPLER, MODELS_DIR, PENDULUM, TREE_T, arm7_scene, chain_model,
-    chain_scene, chain_y0, kepler_scene, max_abs_diff, pendulum_scene, rigid_body, rigid_scene, tree_model,
+    ARM7_Q0, CHAIN_T, EnergyPendulum, KEPLER, MODELS_DIR, PENDULUM, QUADRUPED_Q0, QUADRUPED_V0, TREE_T,
+    arm7_scene, chain_model, chain_scene, chain_y0, common_form, kepler_scene, max_abs_diff, pendulum_scene,
+    quadruped_scene, rigid_body, rigid_scene, tree_model,
 };
 use crate::timing::median_time;
 
@@ -300,9 +301,16 @@ impl Ctx {
         self.tree::<14>("arm7", &tree_model("arm7.urdf"), y0, TREE_T, reference, MODELS_DIR, arm7_scene);
     }
 
-    /// A fixed-base tree (N = 2n states, q̇ = v) from y0 over [0, t_end] through
-    /// `Model::aba_into` (DP5, DOP853, GBS, RK4, Gauss6) and through its scene file (read as
-    /// `dir`, where its model files are).
+    /// The floating quadruped of examples/models/quadruped.urdf (19 + 18 states) the same way.
+    pub fn quadruped(&mut self, reference: &[f64]) {
+        let y0 = SVector::<f64, 37>::from_iterator(QUADRUPED_Q0.into_iter().chain(QUADRUPED_V0));
+        let model = tree_model("quadruped.urdf");
+        self.tree::<37>("quadruped", &model, y0, TREE_T, reference, MODELS_DIR, quadruped_scene);
+    }
+
+    /// A tree (N = nq + nv states) from y0 over [0, t_end] through `Model::aba_into` (DP5,
+    /// DOP853, GBS, RK4, Gauss6) and through its scene file (read as `dir`, where its model
+    /// files are); the end state compared in the common form ([`common_form`]).
     #[allow(clippy::too_many_arguments)]
     fn tree<const N: usize>(
         &mut self,
@@ -314,10 +322,9 @@ impl Ctx {
         dir: &str,
         scene: impl Fn(&str, f64) -> String,
     ) {
-        let n = N / 2;
         let (id, y0) = (id.to_string(), &y0);
-        let tau = vec![0.0; n];
-        let err = |y: &[f64]| max_abs_diff(y, reference);
+        let tau = vec![0.0; model.nv()];
+        let err = |y: &[f64]| max_abs_diff(&common_form(model, y), reference);
         let tols = self.tolerances();
         for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
             let run = |tol: f64| -> Outcome {
@@ -474,11 +481,16 @@ pub fn chain_rhs<const N: usize>(
     scratch: &mut vectrix::dynamics::multibody::AbaScratch,
     y: &SVector<f64, N>,
 ) -> SVector<f64, N> {
-    let n = N / 2;
+    let nq = model.nq();
     let mut out = SVector::<f64, N>::zeros();
-    let (q, v) = y.as_slice().split_at(n);
-    let (qd, vd) = out.as_mut_slice().split_at_mut(n);
-    qd.copy_from_slice(v);
+    let (q, v) = y.as_slice().split_at(nq);
+    let (qd, vd) = out.as_mut_slice().split_at_mut(nq);
+    if nq == v.len() {
+        qd.copy_from_slice(v);
+    } else {
+        // a free joint's quaternion: q̇ = ½ q ⊗ (0, ω)
+        model.qdot_into(q, v, qd);
+    }
     if model.aba_into(q, v, tau, None, vd, scratch).is_err() {
         vd.fill(f64::NAN);
     }

@@ -9,12 +9,15 @@
 //   * the 7-DOF arm of examples/models/arm7.urdf with Pinocchio's C++ ABA on the model its URDF
 //     parser made (rebuilt from scripts/pin_model_dump.py's joint list: pin_dump.hpp), from rest
 //     at the angles of examples/frontier/problems.rs ARM7_Q0, g = 9.81 −z, t ≤ 1,
+//   * the floating quadruped of examples/models/quadruped.urdf the same way (its free flyer's q̇
+//     from v by config_rate in pin_dump.hpp), falling and turning for 1 s,
 //   * the energy problem (θ₀ = 1 rad, 10⁴ periods, E read every 10 periods through dense
 //     output: `make_dense_output` for DP5, `bulirsch_stoer_dense_out` for BS; RKF78 has no
 //     dense output in Odeint, so `integrate_times` steps it onto each checkpoint).
 //
 // usage:  odeint_frontier PROBLEM METHOD TOL [PERIOD|DUMP] (PERIOD: energy-pendulum; DUMP: arm7's
-//                                                         model file, from pin_model_dump.py)
+//                                                         or the quadruped's model file, from
+//                                                         pin_model_dump.py)
 //         odeint_frontier rhs chain-N                     (prints f(y0), for the model check)
 // prints one JSON line: {"seconds": median wall time of one whole run, "repeats": …,
 // "fevals": …, "steps": …, "state": final state (energy: [max |E − E₀|/E₀])}. The errors are
@@ -185,6 +188,46 @@ static void arm7(const std::string& method, double tol, const char* dump) {
   ladder_point<14>(method, tol, sys, y0, 1.0, &fev);
 }
 
+// ------------------------------------------------------------------ the quadruped (free root)
+
+template <size_t N> struct Floating {  // y = (q, v): q̇ = config_rate(q, v), v̇ = ABA(q, v, τ = 0)
+  const pinocchio::Model* model;
+  pinocchio::Data* data;
+  const Eigen::VectorXd* tau;
+  long* fev;
+  void operator()(const std::array<double, N>& y, std::array<double, N>& dy, double) const {
+    ++*fev;
+    const int nq = model->nq, nv = model->nv;
+    Eigen::Map<const Eigen::VectorXd> q(y.data(), nq), v(y.data() + nq, nv);
+    pinocchio::aba(*model, *data, q, v, *tau);
+    config_rate<double>(true, nq, y, dy);
+    Eigen::Map<Eigen::VectorXd>(dy.data() + nq, nv) = data->ddq;
+  }
+};
+
+// The quadruped of examples/models/quadruped.urdf: its trunk on a free flyer from the placement
+// 0.45 m up, turning at ω = (0.3, 0.5, 1.0) rad/s with the legs bent (examples/frontier/problems.rs
+// QUADRUPED_*), falling for 1 s; the end state printed in the common form of pin_dump.hpp.
+static void quadruped(const std::string& method, double tol, const char* dump) {
+  pinocchio::Model model = load_pin_dump(dump);
+  model.gravity.linear(Eigen::Vector3d(0, 0, -9.81));
+  if (!free_root(model) || model.nq != 19 || model.nv != 18) { std::fprintf(stderr, "quadruped: expected a free root and 12 joints\n"); std::exit(2); }
+  pinocchio::Data data(model);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(18);
+  long fev = 0;
+  Floating<37> sys{&model, &data, &tau, &fev};
+  const std::array<double, 37> y0{0, 0, 0, 0, 0, 0, 1, 0.2, 0.7, -1.4, -0.2, 0.7, -1.4, 0.2, -0.7, 1.4, -0.2, -0.7, 1.4,
+                                  0, 0, 0, 0.3, 0.5, 1.0};
+  std::array<double, 37> x = y0;
+  size_t steps = 0;
+  int reps = 0;
+  double secs = median_time([&] { x = y0; fev = 0; steps = integrate(method, sys, x, 1.0, tol); }, &reps);
+  const std::vector<double> c = common_form<double>(true, 19, 18, x);
+  std::array<double, 37> out{};
+  std::copy(c.begin(), c.end(), out.begin());
+  report<37>(secs, reps, fev, steps, out);
+}
+
 // ------------------------------------------------------------------ energy over 10⁴ periods
 
 static void energy(const std::string& method, double tol, double period) {
@@ -244,6 +287,9 @@ int main(int argc, char** argv) {
   } else if (problem == "arm7") {
     if (argc < 5) { std::fprintf(stderr, "arm7 needs DUMP (scripts/pin_model_dump.py of arm7.urdf)\n"); return 2; }
     arm7(method, tol, argv[4]);
+  } else if (problem == "quadruped") {
+    if (argc < 5) { std::fprintf(stderr, "quadruped needs DUMP (scripts/pin_model_dump.py of quadruped.urdf)\n"); return 2; }
+    quadruped(method, tol, argv[4]);
   } else if (problem == "chain-1") chain<2>(method, tol, rhs_only);
   else if (problem == "chain-2") chain<4>(method, tol, rhs_only);
   else if (problem == "chain-6") chain<12>(method, tol, rhs_only);

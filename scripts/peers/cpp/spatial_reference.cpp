@@ -8,7 +8,9 @@
 // 2·STEPS macro steps over [0, T]; their max-norm difference is printed beside the 2·STEPS end
 // state, the one stored. Independent of vectrix: Pinocchio's dynamics, this file's integrator.
 //
-// Fixed-base trees only (nq = nv, q̇ = v); v(0) = 0, τ = 0, gravity 9.81 along −z.
+// Trees of one-coordinate joints, with a free flyer at the root or not (config_rate in
+// pin_dump.hpp: Pinocchio's q = (p, x, y, z, w), v in the base's frame); τ = 0, gravity 9.81
+// along −z. The end state is printed in the frontier's common form (`common_form`).
 //
 // The doubles of a model depend on who reads the file (each parser rounds rpy rotations and
 // products in its own way, a few ulps apart), and a motion like the arm's amplifies that. So
@@ -18,7 +20,8 @@
 // equally valid double-precision readings of the file end; no f64 tool that parses the file
 // itself can be measured below it.
 //
-// usage: spatial_reference DUMP T STEPS q0_1,q0_2,… [SEEDS]      prints one JSON object
+// usage: spatial_reference DUMP T STEPS q0_1,q0_2,… [SEEDS [v0_1,v0_2,…]]   prints one JSON object
+// (q0 and v0 in Pinocchio's layout, nq and nv numbers; v0 = 0 when absent)
 // Built and run by scripts/peers/spatial_reference.sh.
 #include <boost/multiprecision/float128.hpp>
 #include <pinocchio/math/multiprecision.hpp>
@@ -38,15 +41,16 @@ struct Tree {
   pinocchio::ModelTpl<F> model;
   mutable pinocchio::DataTpl<F> data;
   VecF tau;
+  bool free;
   mutable long fevals = 0;
-  // y = (q, v): ẏ = (v, ABA(q, v, 0))
+  // y = (q, v): ẏ = (q̇(q, v), ABA(q, v, 0))
   VecF operator()(const VecF& y) const {
     ++fevals;
-    const int n = model.nv;
-    pinocchio::aba(model, data, y.head(n), y.tail(n), tau);
-    VecF dy(2 * n);
-    dy.head(n) = y.tail(n);
-    dy.tail(n) = data.ddq;
+    const int nq = model.nq, nv = model.nv;
+    pinocchio::aba(model, data, y.head(nq), y.tail(nv), tau);
+    VecF dy(nq + nv);
+    config_rate<F>(free, nq, y, dy);
+    dy.tail(nv) = data.ddq;
     return dy;
   }
 };
@@ -113,39 +117,49 @@ int main(int argc, char** argv) {
   }
   pinocchio::Model m = load_pin_dump(argv[1]);
   m.gravity.linear(Eigen::Vector3d(0, 0, -9.81));
-  if (m.nq != m.nv) { std::fprintf(stderr, "fixed-base trees only (nq = nv), got nq=%d nv=%d\n", m.nq, m.nv); return 2; }
+  const bool free = free_root(m);
   const double t_end = std::atof(argv[2]);
   const int steps = std::atoi(argv[3]);
-  std::vector<double> q0;
-  std::stringstream ss(argv[4]);
-  for (std::string tok; std::getline(ss, tok, ',');) q0.push_back(std::stod(tok));
-  if (!(t_end > 0) || steps < 1 || int(q0.size()) != m.nq) {
-    std::fprintf(stderr, "need T > 0, STEPS >= 1 and %d initial angles\n", m.nq);
+  auto numbers = [](const char* csv) {
+    std::vector<double> x;
+    std::stringstream ss(csv);
+    for (std::string tok; std::getline(ss, tok, ',');) x.push_back(std::stod(tok));
+    return x;
+  };
+  const std::vector<double> q0 = numbers(argv[4]);
+  const std::vector<double> v0 = argc > 6 ? numbers(argv[6]) : std::vector<double>(m.nv, 0.0);
+  if (!(t_end > 0) || steps < 1 || int(q0.size()) != m.nq || int(v0.size()) != m.nv) {
+    std::fprintf(stderr, "need T > 0, STEPS >= 1, %d numbers in q0 and %d in v0\n", m.nq, m.nv);
     return 2;
   }
-  Tree f{m.cast<F>(), pinocchio::DataTpl<F>(m.cast<F>()), VecF::Zero(m.nv)};
-  VecF y0 = VecF::Zero(2 * m.nv);
+  Tree f{m.cast<F>(), pinocchio::DataTpl<F>(m.cast<F>()), VecF::Zero(m.nv), free};
+  VecF y0(m.nq + m.nv);
   for (int i = 0; i < m.nq; ++i) y0[i] = F(q0[i]);
+  for (int i = 0; i < m.nv; ++i) y0[m.nq + i] = F(v0[i]);
   const VecF a = gbs(f, y0, F(t_end), steps);
   const VecF b = gbs(f, y0, F(t_end), 2 * steps);
+  const std::vector<F> ca = common_form<F>(free, m.nq, m.nv, a), cb = common_form<F>(free, m.nq, m.nv, b);
   F diff = 0;
-  for (int i = 0; i < a.size(); ++i) diff = std::max(diff, F(abs(a[i] - b[i])));
+  for (size_t i = 0; i < ca.size(); ++i) diff = std::max(diff, F(abs(ca[i] - cb[i])));
   const int seeds = argc > 5 ? std::atoi(argv[5]) : 0;
   F spread = 0;
   for (int k = 1; k <= seeds; ++k) {
     pinocchio::Model pm = perturbed(m, k);
-    Tree g{pm.cast<F>(), pinocchio::DataTpl<F>(pm.cast<F>()), VecF::Zero(m.nv)};
-    const VecF c = gbs(g, y0, F(t_end), 2 * steps);
-    for (int i = 0; i < c.size(); ++i) spread = std::max(spread, F(abs(c[i] - b[i])));
+    Tree g{pm.cast<F>(), pinocchio::DataTpl<F>(pm.cast<F>()), VecF::Zero(m.nv), free};
+    const std::vector<F> cc = common_form<F>(free, m.nq, m.nv, gbs(g, y0, F(t_end), 2 * steps));
+    for (size_t i = 0; i < cc.size(); ++i) spread = std::max(spread, F(abs(cc[i] - cb[i])));
   }
   std::printf("{\"t_end\": %.17g, \"q0\": [", t_end);
   for (size_t i = 0; i < q0.size(); ++i) std::printf("%s%.17g", i ? ", " : "", q0[i]);
-  std::printf("], \"v0\": \"zeros\", \"steps\": [%d, %d], \"K\": 12, \"fevals\": %ld,\n", steps, 2 * steps, f.fevals);
+  std::printf("], \"v0\": [");
+  for (size_t i = 0; i < v0.size(); ++i) std::printf("%s%.17g", i ? ", " : "", v0[i]);
+  std::printf("], \"free_root\": %s, \"steps\": [%d, %d], \"K\": 12, \"fevals\": %ld,\n", free ? "true" : "false",
+              steps, 2 * steps, f.fevals);
   std::printf(" \"difference\": %s, \"rounding_seeds\": %d, \"rounding_spread\": %s,\n \"state\": [",
               diff.str(3, std::ios_base::scientific).c_str(), seeds, spread.str(3, std::ios_base::scientific).c_str());
-  for (int i = 0; i < b.size(); ++i) std::printf("%s%.17g", i ? ", " : "", double(b[i]));
+  for (size_t i = 0; i < cb.size(); ++i) std::printf("%s%.17g", i ? ", " : "", double(cb[i]));
   std::printf("],\n \"state_36\": [");
-  for (int i = 0; i < b.size(); ++i) std::printf("%s\"%s\"", i ? ", " : "", b[i].str(36).c_str());
+  for (size_t i = 0; i < cb.size(); ++i) std::printf("%s\"%s\"", i ? ", " : "", cb[i].str(36).c_str());
   std::printf("]}\n");
   return 0;
 }
