@@ -266,76 +266,13 @@ mod tests {
     use super::super::model::Model;
     use super::super::wrench::JointWrench;
 
-    /// A free body with its centre off the joint point, a tilted joint frame, gravity, joint
-    /// forces and an external wrench; and, for the generic three passes, the same body with a
-    /// massless welded child (which stops it being a free leaf).
-    fn models() -> (Model, Model, Vec<f64>, Vec<f64>, Vec<f64>, Vec<JointWrench>) {
+    /// A body on `joint` at the root with its centre off the joint point and a tilted, offset
+    /// joint frame, gravity g, alone and, for the generic three passes, with a massless welded
+    /// child (which stops it being a closed-form leaf).
+    fn alone_and_with_child(joint: Joint) -> (Model, Model) {
         let j_c = Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1);
-        let mut body = Link::new(
-            None,
-            Joint::Free,
-            Vector3::new(0.5, -1.0, 2.0),
-            3.0,
-            Vector3::new(0.2, -0.4, 0.7),
-            j_c,
-        );
-        body.orientation = *Rotation3::from_euler_angles(0.3, -0.7, 1.1).matrix();
-        let mut alone = Model::new(std::slice::from_ref(&body)).expect("valid");
-        let tip = Link::new(
-            Some(0),
-            Joint::Weld,
-            Vector3::new(1.0, 0.0, 0.0),
-            0.0,
-            Vector3::zeros(),
-            Matrix3::zeros(),
-        );
-        let mut with_child = Model::new(&[body, tip]).expect("valid");
-        let g = Vector3::new(0.3, -0.2, -9.81);
-        alone.gravity = g;
-        with_child.gravity = g;
-        let qn = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
-        let q = vec![0.3, -1.2, 0.8, qn.w, qn.i, qn.j, qn.k];
-        let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3];
-        let tau = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25];
-        let wrench =
-            JointWrench { force: Vector3::new(-0.6, 1.4, 2.2), moment: Vector3::new(0.9, 0.1, -0.5) };
-        (alone, with_child, q, v, tau, vec![wrench, JointWrench::default()])
-    }
-
-    /// The closed form of a free leaf body agrees with the three passes of ABA on the same
-    /// body (made generic by a massless welded child), and with the inverse dynamics: RNEA at
-    /// the returned v̇ gives back the applied joint forces.
-    #[test]
-    fn free_leaf_closed_form_matches_the_passes_and_rnea() {
-        let (alone, with_child, q, v, tau, wrenches) = models();
-        assert_eq!(alone.free_leaves, vec![0]);
-        assert!(with_child.free_leaves.is_empty());
-        let fast = alone.aba(&q, &v, &tau, Some(&wrenches[..1])).expect("definite");
-        let passes = with_child.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
-        for (a, b) in fast.iter().zip(&passes) {
-            assert!((a - b).abs() <= 1e-13 * (1.0 + b.abs()), "{fast:?} vs {passes:?}");
-        }
-        let id = alone.rnea(&q, &v, &fast, Some(&wrenches[..1])).expect("valid");
-        for (a, b) in id.tau.iter().zip(&tau) {
-            assert!((a - b).abs() <= 1e-12, "RNEA {:?} vs τ {tau:?}", id.tau);
-        }
-    }
-
-    /// The closed form of a ball leaf (a body turning about a fixed point of a tilted, offset
-    /// joint frame, its centre off that point, under gravity, a joint torque and an external
-    /// wrench) agrees with the three passes on the same body made generic by a massless welded
-    /// child, and RNEA at the returned v̇ gives back the joint torque.
-    #[test]
-    fn ball_leaf_closed_form_matches_the_passes_and_rnea() {
-        let j_c = Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1);
-        let mut body = Link::new(
-            None,
-            Joint::Ball,
-            Vector3::new(0.5, -1.0, 2.0),
-            3.0,
-            Vector3::new(0.2, -0.4, 0.7),
-            j_c,
-        );
+        let mut body =
+            Link::new(None, joint, Vector3::new(0.5, -1.0, 2.0), 3.0, Vector3::new(0.2, -0.4, 0.7), j_c);
         body.orientation = *Rotation3::from_euler_angles(0.3, -0.7, 1.1).matrix();
         let tip = Link::new(
             Some(0),
@@ -349,24 +286,76 @@ mod tests {
         let mut with_child = Model::new(&[body, tip]).expect("valid");
         let g = Vector3::new(0.3, -0.2, -9.81);
         (alone.gravity, with_child.gravity) = (g, g);
+        (alone, with_child)
+    }
+
+    /// An external wrench on the body (and none on the welded child).
+    fn wrenches() -> Vec<JointWrench> {
+        let wrench =
+            JointWrench { force: Vector3::new(-0.6, 1.4, 2.2), moment: Vector3::new(0.9, 0.1, -0.5) };
+        vec![wrench, JointWrench::default()]
+    }
+
+    /// A free body (see `alone_and_with_child`) at a state with joint forces and an external
+    /// wrench.
+    fn models() -> (Model, Model, Vec<f64>, Vec<f64>, Vec<f64>, Vec<JointWrench>) {
+        let (alone, with_child) = alone_and_with_child(Joint::Free);
+        let qn = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
+        let q = vec![0.3, -1.2, 0.8, qn.w, qn.i, qn.j, qn.k];
+        let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3];
+        let tau = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25];
+        (alone, with_child, q, v, tau, wrenches())
+    }
+
+    /// ABA of the leaf alone (closed form) against the three passes on the same body with its
+    /// welded child, to 1e-13·(`scale` + |v̇|) per coordinate, and RNEA at the returned v̇ gives
+    /// back τ to 1e-12.
+    fn closed_form_matches(
+        alone: &Model,
+        with_child: &Model,
+        q: &[f64],
+        v: &[f64],
+        tau: &[f64],
+        wrenches: &[JointWrench],
+        scale: f64,
+    ) {
+        let fast = alone.aba(q, v, tau, Some(&wrenches[..1])).expect("definite");
+        let passes = with_child.aba(q, v, tau, Some(wrenches)).expect("definite");
+        for (a, b) in fast.iter().zip(&passes) {
+            assert!((a - b).abs() <= 1e-13 * (scale + b.abs()), "{fast:?} vs {passes:?}");
+        }
+        let id = alone.rnea(q, v, &fast, Some(&wrenches[..1])).expect("valid");
+        for (a, b) in id.tau.iter().zip(tau) {
+            assert!((a - b).abs() <= 1e-12, "RNEA {:?} vs τ {tau:?}", id.tau);
+        }
+    }
+
+    /// The closed form of a free leaf body agrees with the three passes of ABA on the same
+    /// body (made generic by a massless welded child), and with the inverse dynamics: RNEA at
+    /// the returned v̇ gives back the applied joint forces.
+    #[test]
+    fn free_leaf_closed_form_matches_the_passes_and_rnea() {
+        let (alone, with_child, q, v, tau, wrenches) = models();
+        assert_eq!(alone.free_leaves, vec![0]);
+        assert!(with_child.free_leaves.is_empty());
+        closed_form_matches(&alone, &with_child, &q, &v, &tau, &wrenches, 1.0);
+    }
+
+    /// The closed form of a ball leaf (a body turning about a fixed point of a tilted, offset
+    /// joint frame, its centre off that point, under gravity, a joint torque and an external
+    /// wrench) agrees with the three passes on the same body made generic by a massless welded
+    /// child, and RNEA at the returned v̇ gives back the joint torque.
+    #[test]
+    fn ball_leaf_closed_form_matches_the_passes_and_rnea() {
+        let (alone, with_child) = alone_and_with_child(Joint::Ball);
         assert_eq!(alone.ball_leaves, vec![0]);
         assert!(with_child.ball_leaves.is_empty());
         let qn = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
         let q = vec![qn.w, qn.i, qn.j, qn.k];
         let (v, tau) = (vec![2.0, -1.1, 3.3], vec![0.7, -0.4, 0.25]);
-        let wrench =
-            JointWrench { force: Vector3::new(-0.6, 1.4, 2.2), moment: Vector3::new(0.9, 0.1, -0.5) };
-        let wrenches = vec![wrench, JointWrench::default()];
-        let fast = alone.aba(&q, &v, &tau, Some(&wrenches[..1])).expect("definite");
-        let passes = with_child.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
+        let wrenches = wrenches();
         // a few roundings of terms near 10 (the gyroscopic and gravity moments)
-        for (a, b) in fast.iter().zip(&passes) {
-            assert!((a - b).abs() <= 1e-13 * (10.0 + b.abs()), "{fast:?} vs {passes:?}");
-        }
-        let id = alone.rnea(&q, &v, &fast, Some(&wrenches[..1])).expect("valid");
-        for (a, b) in id.tau.iter().zip(&tau) {
-            assert!((a - b).abs() <= 1e-12, "RNEA {:?} vs τ {tau:?}", id.tau);
-        }
+        closed_form_matches(&alone, &with_child, &q, &v, &tau, &wrenches, 10.0);
     }
 
     /// A particle on a rod about a ball joint (J_c = 0, so J_o has rank 2) is not a closed-form
