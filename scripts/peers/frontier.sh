@@ -12,6 +12,10 @@
 # (a peer's file is rewritten with the problems it ran) and prints its table instead of writing
 # the docs' figures and table.
 #
+# The references are committed data, written once by closed_form_reference_mp.py,
+# chain_reference_mp.py and spatial_reference.sh (the arm and the quadruped, Pinocchio in
+# quadruple precision); they are not rerun here.
+#
 # vectrix first (it also writes the problems' references), then the compiled peers right after
 # it (issue 39: Pinocchio's C++ ABA and hand-written C++ right-hand sides inside Boost.Odeint,
 # MuJoCo through its C API; built by cpp/build.sh from the wheels' headers, run by
