@@ -15,6 +15,7 @@ use crate::error::check_finite;
 use crate::multibody::joint::{Elem, Joint, Link, coordinate_axis, elems};
 use crate::multibody::planar::Planar;
 use crate::multibody::segment::{Segment, Turn};
+use crate::multibody::singular::{pivot_tol, spd_inverse3};
 use crate::multibody::spatial::{BodyInertia, Xform};
 
 impl Model<f64> {
@@ -44,22 +45,20 @@ impl Model<f64> {
             .collect();
         let free_jc_inv = free_leaves
             .iter()
-            .map(|&f| segs[f + 3].j_c.cholesky().expect("definite: checked by free_leaf_roots").inverse())
+            .map(|&f| definite_inverse(&segs[f + 3].j_c).expect("definite: checked by free_leaf_roots"))
             .collect();
         let mut free_seg = vec![false; segs.len()];
         for &f in &free_leaves {
             free_seg[f..f + 4].fill(true);
         }
-        let ball_leaves: Vec<usize> =
-            ball_leaf_roots(&segs).into_iter().filter(|&b| link_seg.contains(&b)).collect();
-        let ball_links = ball_leaves
-            .iter()
-            .map(|&b| link_seg.iter().position(|&k| k == b).expect("filtered above"))
-            .collect();
-        let ball_jo_inv = ball_leaves
-            .iter()
-            .map(|&b| segs[b].inertia.I.cholesky().expect("definite: checked by ball_leaf_roots").inverse())
-            .collect();
+        let (mut ball_leaves, mut ball_links, mut ball_jo_inv) = (Vec::new(), Vec::new(), Vec::new());
+        for (b, jo_inv) in ball_leaf_roots(&segs) {
+            if let Some(l) = link_seg.iter().position(|&k| k == b) {
+                ball_leaves.push(b);
+                ball_links.push(l);
+                ball_jo_inv.push(jo_inv);
+            }
+        }
         let mut aba_skip = free_seg.clone();
         for &b in &ball_leaves {
             aba_skip[b] = true;
@@ -308,12 +307,7 @@ fn column_tree(segs: &[Segment<f64>], nv: usize) -> (Vec<Option<usize>>, Vec<usi
 /// previous without offset) and the ball carrying the body, and no segment hangs from the
 /// ball. Such a body couples to no other segment in the tree algorithms.
 fn free_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
-    let mut has_child = vec![false; segs.len()];
-    for s in segs {
-        if let Some(p) = s.parent {
-            has_child[p] = true;
-        }
-    }
+    let has_child = has_children(segs);
     let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
     (0..segs.len().saturating_sub(3))
         .filter(|&i| {
@@ -334,47 +328,41 @@ fn free_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
 }
 
 /// Every ball joint at the root whose segment carries a body and has no child, with the body's
-/// inertia about the joint point J_o definite (every Cholesky pivot above ABA's rounding level,
-/// `pivot_tol` × tr J_o): such a body couples to no other segment, and its Euler equations
-/// about the fixed point are solved by one product with J_o⁻¹. A particle on a rod (J_c = 0,
-/// J_o of rank 2) is left to ABA's rank-revealing path.
-fn ball_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
+/// inertia about the joint point J_o definite ([`definite_inverse`]), and its J_o⁻¹: such a body
+/// couples to no other segment, and its Euler equations about the fixed point are solved by one
+/// product with J_o⁻¹. A particle on a rod (J_c = 0, J_o of rank 2) is left to ABA's
+/// rank-revealing path.
+fn ball_leaf_roots(segs: &[Segment<f64>]) -> Vec<(usize, Matrix3<f64>)> {
+    let has_child = has_children(segs);
+    segs.iter()
+        .enumerate()
+        .filter(|&(i, s)| s.parent.is_none() && s.elem == Elem::Spherical && !has_child[i] && !s.massless)
+        .filter_map(|(i, s)| Some((i, definite_inverse(&s.inertia.I)?)))
+        .collect()
+}
+
+/// For each segment, whether another hangs from it.
+fn has_children(segs: &[Segment<f64>]) -> Vec<bool> {
     let mut has_child = vec![false; segs.len()];
     for s in segs {
         if let Some(p) = s.parent {
             has_child[p] = true;
         }
     }
-    (0..segs.len())
-        .filter(|&i| {
-            let s = &segs[i];
-            let scale = s.inertia.I.trace();
-            s.parent.is_none()
-                && s.elem == Elem::Spherical
-                && !has_child[i]
-                && !s.massless
-                && scale > 0.0
-                && s.inertia.I.cholesky().is_some_and(|c| {
-                    let l = c.l_dirty();
-                    (0..3).all(|k| {
-                        l[(k, k)] * l[(k, k)] > crate::multibody::singular::pivot_tol::<f64>() * scale
-                    })
-                })
-        })
-        .collect()
+    has_child
 }
 
-/// m > 0 and J_c positive definite with every Cholesky pivot above ABA's rounding level
-/// (`pivot_tol` × tr J_c): the closed form of a free body divides by both. A particle (J_c = 0)
-/// or a body with an inert axis is left to ABA's rank-revealing path.
+/// m > 0 and J_c definite ([`definite_inverse`]): the closed form of a free body divides by
+/// both. A particle (J_c = 0) or a body with an inert axis is left to ABA's rank-revealing path.
 fn definite_body(s: &Segment<f64>) -> bool {
-    let scale = s.j_c.trace();
-    s.inertia.m > 0.0
-        && scale > 0.0
-        && s.j_c.cholesky().is_some_and(|c| {
-            let l = c.l_dirty();
-            (0..3).all(|k| l[(k, k)] * l[(k, k)] > crate::multibody::singular::pivot_tol::<f64>() * scale)
-        })
+    s.inertia.m > 0.0 && definite_inverse(&s.j_c).is_some()
+}
+
+/// J⁻¹ of a symmetric 3×3 inertia whose every Cholesky pivot is above ABA's rounding level
+/// (`pivot_tol` × tr J), else `None`.
+fn definite_inverse(j: &Matrix3<f64>) -> Option<Matrix3<f64>> {
+    let scale = j.trace();
+    if scale > 0.0 { spd_inverse3(j, pivot_tol::<f64>() * scale) } else { None }
 }
 
 /// Parents before children; errors for missing parents and cycles.
