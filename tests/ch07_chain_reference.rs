@@ -43,14 +43,7 @@ fn vectrix_end_state<const N: usize>(tol: f64) -> Vec<f64> {
     let model = chain_model(n);
     let tau = vec![0.0; n];
     let mut scratch = model.aba_scratch();
-    let f = |_: f64, y: &SVector<f64, N>| {
-        let mut out = SVector::<f64, N>::zeros();
-        let (q, v) = y.as_slice().split_at(n);
-        let (qd, vd) = out.as_mut_slice().split_at_mut(n);
-        qd.copy_from_slice(v);
-        model.aba_into(q, v, &tau, None, vd, &mut scratch).expect("aba");
-        out
-    };
+    let f = |_: f64, y: &SVector<f64, N>| problems::tree_rhs(&model, &tau, &mut scratch, y);
     let sol =
         Adaptive::dop853().rtol(tol).atol(tol).solve(f, 0.0, &chain_y0::<N>(), CHAIN_T).expect("solves");
     sol.last().as_slice().to_vec()
@@ -99,7 +92,7 @@ fn section_7_11_six_link_chain_matches_extended_precision_reference() {
 /// The `id` entry of `tests/data/spatial_reference.json` (scripts/peers/spatial_reference.sh):
 /// checks that it describes this problem (initial state, end time, convergence of its two step
 /// sizes below 1e-20, the ±1-ulp model spread below 1e-12) and returns its end state.
-fn spatial_entry(id: &str, q0: &[f64], v0: &[f64]) -> (Vec<f64>, f64) {
+fn spatial_entry(id: &str, q0: &[f64], v0: &[f64]) -> Vec<f64> {
     let text =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/spatial_reference.json"))
             .expect("tests/data/spatial_reference.json");
@@ -119,7 +112,7 @@ fn spatial_entry(id: &str, q0: &[f64], v0: &[f64]) -> (Vec<f64>, f64) {
     assert!(spread < 1e-12, "{id}: spread {spread:e}");
     let want = floats(&r["state"]);
     assert_eq!(want.len(), q0.len() + v0.len());
-    (want, spread)
+    want
 }
 
 /// The end state of a tree from (q0, v0) to `TREE_T` by vectrix, library route (DOP853 at
@@ -135,15 +128,7 @@ fn tree_end_states<const N: usize>(
     let model = problems::tree_model(file);
     let tau = vec![0.0; model.nv()];
     let mut scratch = model.aba_scratch();
-    let nq = model.nq();
-    let f = |_: f64, y: &SVector<f64, N>| {
-        let mut out = SVector::<f64, N>::zeros();
-        let (q, v) = y.as_slice().split_at(nq);
-        let (qd, vd) = out.as_mut_slice().split_at_mut(nq);
-        model.qdot_into(q, v, qd);
-        model.aba_into(q, v, &tau, None, vd, &mut scratch).expect("aba");
-        out
-    };
+    let f = |_: f64, y: &SVector<f64, N>| problems::tree_rhs(&model, &tau, &mut scratch, y);
     let y0 = SVector::<f64, N>::from_iterator(q0.iter().chain(v0).copied());
     let sol = Adaptive::dop853().rtol(tol).atol(tol).solve(f, 0.0, &y0, problems::TREE_T).expect("solves");
     let scene = vectrix::scene::Scene::from_toml(scene, problems::MODELS_DIR).expect("scene");
@@ -167,7 +152,7 @@ fn tree_end_states<const N: usize>(
 #[test]
 fn section_7_11_arm7_matches_pinocchio_quadruple_precision_reference() {
     use problems::{ARM7_Q0, arm7_scene};
-    let (want, _) = spatial_entry("arm7", &ARM7_Q0, &[0.0; 7]);
+    let want = spatial_entry("arm7", &ARM7_Q0, &[0.0; 7]);
     let (library, scene) =
         tree_end_states::<14>("arm7.urdf", &ARM7_Q0, &[0.0; 7], &arm7_scene("dop853", 1e-13), 1e-13);
     let (library, scene) = (max_abs_diff(&library, &want), max_abs_diff(&scene, &want));
@@ -185,7 +170,7 @@ fn section_7_11_arm7_matches_pinocchio_quadruple_precision_reference() {
 #[test]
 fn section_7_11_quadruped_matches_pinocchio_quadruple_precision_reference() {
     use problems::{QUADRUPED_Q0, QUADRUPED_V0, quadruped_scene};
-    let (want, _) = spatial_entry("quadruped", &QUADRUPED_Q0, &QUADRUPED_V0);
+    let want = spatial_entry("quadruped", &QUADRUPED_Q0, &QUADRUPED_V0);
     let scene = quadruped_scene("dop853", 1e-13);
     let (library, scene) =
         tree_end_states::<37>("quadruped.urdf", &QUADRUPED_Q0, &QUADRUPED_V0, &scene, 1e-13);

@@ -36,10 +36,10 @@ use vectrix::ode::harness::{Pendulum, Reference};
 use problems::{
     ARM7_Q0, CHAIN_NS, CHAIN_T, CLOSED_FORMS, GRAVITY, LINK, MASS, QUADRUPED_Q0, QUADRUPED_V0, RADIUS,
     TREE_T, capsule_inertia, chain_model, chain_q0, chain_y0, closed_form_f64, closed_form_mp, max_abs_diff,
-    spatial_reference, tree_model,
+    spatial_reference, tree_model, tree_rhs,
 };
 use report::{Pt, figure};
-use routes::{Ctx, chain_rhs};
+use routes::Ctx;
 use table::{FAMILIES, reference_floors, table};
 
 const DATA: &str = "docs/accuracy/peers-data";
@@ -153,6 +153,11 @@ fn main() {
 /// code and no formula with vectrix's ABA), committed as this file.
 const MP_REFERENCE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/chain_reference_mp.json");
 
+/// A JSON array of numbers (a reference's state or initial state).
+fn floats(v: &Value) -> Vec<f64> {
+    v.as_array().expect("array").iter().map(|x| x.as_f64().expect("number")).collect()
+}
+
 /// The `chain-n` entry of `tests/data/chain_reference_mp.json`.
 fn mp_reference(id: &str) -> Value {
     let text = std::fs::read_to_string(MP_REFERENCE).expect("tests/data/chain_reference_mp.json");
@@ -175,9 +180,6 @@ fn chain_reference<const N: usize>() -> Value {
     let id = format!("chain-{n}");
     let mp = mp_reference(&id);
     let e = &mp["entry"];
-    let floats = |v: &Value| -> Vec<f64> {
-        v.as_array().expect("array").iter().map(|x| x.as_f64().expect("number")).collect()
-    };
     let state = floats(&e["state"]);
     assert_eq!(state.len(), N, "{id}: the reference state has 2n numbers");
     assert_eq!(floats(&e["q0"]), chain_q0(n), "{id}: the reference starts from chain_q0");
@@ -190,7 +192,7 @@ fn chain_reference<const N: usize>() -> Value {
     let tau = vec![0.0; n];
     let y0 = chain_y0::<N>();
     let mut scratch = model.aba_scratch();
-    let f = |_: f64, y: &SVector<f64, N>| chain_rhs(&model, &tau, &mut scratch, y);
+    let f = |_: f64, y: &SVector<f64, N>| tree_rhs(&model, &tau, &mut scratch, y);
     let y = *Adaptive::dop853()
         .rtol(1e-13)
         .atol(1e-13)

@@ -103,6 +103,33 @@ pub fn spatial_reference(id: &str) -> Option<(Vec<f64>, f64)> {
     Some((state, tree["rounding_spread"].as_f64()?))
 }
 
+/// y′ = (q̇(q, v), ABA(q, v, τ)) of a tree (N = nq + nv states): q̇ = v for pins and sliders,
+/// a free joint's quaternion by `Model::qdot_into`; NaN accelerations if ABA refuses.
+///
+/// Book: §7.11 (ABA), §2.15 (quaternion rates).
+#[inline]
+pub fn tree_rhs<const N: usize>(
+    model: &vectrix::dynamics::multibody::Model,
+    tau: &[f64],
+    scratch: &mut vectrix::dynamics::multibody::AbaScratch,
+    y: &SVector<f64, N>,
+) -> SVector<f64, N> {
+    let nq = model.nq();
+    let mut out = SVector::<f64, N>::zeros();
+    let (q, v) = y.as_slice().split_at(nq);
+    let (qd, vd) = out.as_mut_slice().split_at_mut(nq);
+    if nq == v.len() {
+        qd.copy_from_slice(v);
+    } else {
+        // a free joint's quaternion: q̇ = ½ q ⊗ (0, ω)
+        model.qdot_into(q, v, qd);
+    }
+    if model.aba_into(q, v, tau, None, vd, scratch).is_err() {
+        vd.fill(f64::NAN);
+    }
+    out
+}
+
 /// The torque-free body of the harness: I = (1, 2, 3), ω(0) = (1, 0, 0.5), t ∈ [0, 20].
 pub fn rigid_body() -> RigidBody {
     RigidBody { inertia: [1.0, 2.0, 3.0], omega13: [1.0, 0.5], t_end: 20.0 }

@@ -13,7 +13,7 @@ use vectrix::scene::Scene;
 use crate::problems::{
     ARM7_Q0, CHAIN_T, EnergyPendulum, KEPLER, MODELS_DIR, PENDULUM, QUADRUPED_Q0, QUADRUPED_V0, TREE_T,
     arm7_scene, chain_model, chain_scene, chain_y0, common_form, kepler_scene, max_abs_diff, pendulum_scene,
-    quadruped_scene, rigid_body, rigid_scene, tree_model,
+    quadruped_scene, rigid_body, rigid_scene, tree_model, tree_rhs,
 };
 use crate::timing::median_time;
 
@@ -329,7 +329,7 @@ impl Ctx {
         for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
             let run = |tol: f64| -> Outcome {
                 let mut scratch = model.aba_scratch();
-                let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
+                let f = |_: f64, y: &SVector<f64, N>| tree_rhs(model, &tau, &mut scratch, y);
                 let s = a.rtol(tol).atol(tol).solve(f, 0.0, y0, t_end).map_err(|e| e.to_string())?;
                 Ok((s.last().as_slice().to_vec(), s.work.fevals))
             };
@@ -337,7 +337,7 @@ impl Ctx {
         }
         let run = |tol: f64| -> Outcome {
             let mut scratch = model.aba_scratch();
-            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
+            let f = |_: f64, y: &SVector<f64, N>| tree_rhs(model, &tau, &mut scratch, y);
             let s = Extrapolation::gbs()
                 .rtol(tol)
                 .atol(tol)
@@ -349,7 +349,7 @@ impl Ctx {
         let steps = self.steps(t_end, 20);
         let run = |k: f64| -> Outcome {
             let mut scratch = model.aba_scratch();
-            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
+            let f = |_: f64, y: &SVector<f64, N>| tree_rhs(model, &tau, &mut scratch, y);
             let (y, w) =
                 integrate_fixed(&RK4, f, 0.0, y0, t_end, k as usize, |_, _| {}).map_err(|e| e.to_string())?;
             Ok((y.as_slice().to_vec(), w.fevals))
@@ -357,7 +357,7 @@ impl Ctx {
         self.ladder(&id, "library", "RK4", "steps", &steps, run, err);
         let run = |k: f64| -> Outcome {
             let mut scratch = model.aba_scratch();
-            let f = |_: f64, y: &SVector<f64, N>| chain_rhs(model, &tau, &mut scratch, y);
+            let f = |_: f64, y: &SVector<f64, N>| tree_rhs(model, &tau, &mut scratch, y);
             let (y, w) = GaussLegendre::Gauss6
                 .integrate(f, 0.0, y0, t_end, k as usize, |_, _| {})
                 .map_err(|e| e.to_string())?;
@@ -471,28 +471,4 @@ impl Ctx {
             self.ladder(id, "scene", name, "rtol", &tols, run, |e| e[0]);
         }
     }
-}
-
-/// y′ = (v, FD(q, v, 0)) of a chain through the articulated-body algorithm.
-#[inline]
-pub fn chain_rhs<const N: usize>(
-    model: &vectrix::dynamics::multibody::Model,
-    tau: &[f64],
-    scratch: &mut vectrix::dynamics::multibody::AbaScratch,
-    y: &SVector<f64, N>,
-) -> SVector<f64, N> {
-    let nq = model.nq();
-    let mut out = SVector::<f64, N>::zeros();
-    let (q, v) = y.as_slice().split_at(nq);
-    let (qd, vd) = out.as_mut_slice().split_at_mut(nq);
-    if nq == v.len() {
-        qd.copy_from_slice(v);
-    } else {
-        // a free joint's quaternion: q̇ = ½ q ⊗ (0, ω)
-        model.qdot_into(q, v, qd);
-    }
-    if model.aba_into(q, v, tau, None, vd, scratch).is_err() {
-        vd.fill(f64::NAN);
-    }
-    out
 }
