@@ -72,7 +72,6 @@ inline bool free_root(const pinocchio::Model& m) {
 // x, y, z, w) and v = (velocity, ω) both in its own frame (Pinocchio's convention), so ṗ = R v and
 // (ẇ, ė) = ½ (−e·ω, w ω + e × ω); every other coordinate has q̇ = v.
 template <class S, class Y, class D> void config_rate(bool free, int nq, const Y& y, D& dq) {
-  const int nv = free ? nq - 1 : nq;
   int qi = 0, vi = 0;
   if (free) {
     const S x = y[3], yy = y[4], z = y[5], w = y[6];
@@ -92,7 +91,6 @@ template <class S, class Y, class D> void config_rate(bool free, int nq, const Y
     vi = 6;
   }
   for (; qi < nq; ++qi, ++vi) dq[qi] = y[nq + vi];
-  (void)nv;
 }
 
 // The state (q, v) in the frontier's common form, which every tool's end state is compared in:
