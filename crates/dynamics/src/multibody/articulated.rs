@@ -55,25 +55,29 @@ impl<T: Scalar> Articulated<T> {
         self.C += o.C;
     }
 
-    /// Iᵃ = I − U D⁻¹ Uᵀ for one column U = (uw, uv) and its pivot's inverse.
+    /// Iᵃ = I − U D⁻¹ Uᵀ for one column U = (uw, uv) and its pivot's inverse (the symmetric
+    /// blocks by their upper triangles, mirrored).
     #[inline(always)]
     pub fn sub_rank1(&self, uw: &Vector3<T>, uv: &Vector3<T>, dinv: T) -> Self {
         let (kw, kv) = (uw * dinv, uv * dinv);
         Self {
-            A: self.A - kw * uw.transpose(),
+            A: sym3(|r, c| self.A[(r, c)] - kw[r] * uw[c]),
             B: self.B - kw * uv.transpose(),
-            C: self.C - kv * uv.transpose(),
+            C: sym3(|r, c| self.C[(r, c)] - kv[r] * uv[c]),
         }
     }
 
-    /// Iᵃ = I − U K Uᵀ for three columns U = [Uw; Uv] and K = D⁻¹ (or D⁺).
+    /// Iᵃ = I − U K Uᵀ for three columns U = [Uw; Uv] and a symmetric K = D⁻¹ (or D⁺).
     #[inline(always)]
     pub fn sub_rank3(&self, uw: &Matrix3<T>, uv: &Matrix3<T>, k: &Matrix3<T>) -> Self {
         let (kw, kv) = (uw * k, uv * k);
+        let dot = |m: &Matrix3<T>, r: usize, u: &Matrix3<T>, c: usize| {
+            m[(r, 0)] * u[(c, 0)] + m[(r, 1)] * u[(c, 1)] + m[(r, 2)] * u[(c, 2)]
+        };
         Self {
-            A: self.A - kw * uw.transpose(),
+            A: sym3(|r, c| self.A[(r, c)] - dot(&kw, r, uw, c)),
             B: self.B - kw * uv.transpose(),
-            C: self.C - kv * uv.transpose(),
+            C: sym3(|r, c| self.C[(r, c)] - dot(&kv, r, uv, c)),
         }
     }
 
@@ -92,29 +96,42 @@ impl<T: Scalar> Articulated<T> {
             Turn::Plane(i1, i2) => {
                 let (c, s) = (x.E[(i1, i1)], x.E[(i1, i2)]);
                 Self {
-                    A: turn_plane(&self.A, i1, i2, c, s),
+                    A: turn_plane_sym(&self.A, i1, i2, c, s),
                     B: turn_plane(&self.B, i1, i2, c, s),
-                    C: turn_plane(&self.C, i1, i2, c, s),
+                    C: turn_plane_sym(&self.C, i1, i2, c, s),
                 }
             }
             Turn::General => {
                 let (e, et) = (&x.E, x.E.transpose());
-                Self { A: et * self.A * e, B: et * self.B * e, C: et * self.C * e }
+                let sym = |m: &Matrix3<T>| {
+                    let em = et * m;
+                    sym3(|r, c| em[(r, 0)] * e[(0, c)] + em[(r, 1)] * e[(1, c)] + em[(r, 2)] * e[(2, c)])
+                };
+                Self { A: sym(&self.A), B: et * self.B * e, C: sym(&self.C) }
             }
         };
         rotated.shift(&x.r)
     }
 
-    /// The shift by r: with K = r^×C, P = B r^× (so r^×Bᵀ = −Pᵀ) and K r^× = r^×C r^×:
-    /// B'' = B + K, A'' = A − P − Pᵀ − K r^×, all by cross products of columns and rows.
+    /// The shift by r: with K = r^×C, P = B r^× (so r^×Bᵀ = −Pᵀ) and K r^× = r^×C r^×
+    /// (symmetric): B'' = B + K, A'' = A − P − Pᵀ − K r^× (by its upper triangle, mirrored),
+    /// all by cross products of columns and rows.
     #[inline(always)]
     fn shift(&self, r: &Vector3<T>) -> Self {
         // K = r^× C: column k is r × C_k
         let K = cross_columns(r, &self.C);
         // P = B r^×: row j is B_j × r (a row m r^× = (m × r)ᵀ)
         let P = rows_cross(&self.B, r);
-        let Kr = rows_cross(&K, r);
-        Self { A: self.A - P - P.transpose() - Kr, B: self.B + K, C: self.C }
+        // (K r^×)_{jk} = (K_j × r)_k
+        let kr = |j: usize, k: usize| {
+            let (a, b, c) = (K[(j, 0)], K[(j, 1)], K[(j, 2)]);
+            match k {
+                0 => b * r.z - c * r.y,
+                1 => c * r.x - a * r.z,
+                _ => a * r.y - b * r.x,
+            }
+        };
+        Self { A: sym3(|j, k| self.A[(j, k)] - P[(j, k)] - P[(k, j)] - kr(j, k)), B: self.B + K, C: self.C }
     }
 
     /// Column k of the 6×6 matrix (k < 3: (A_k, row k of B); else (B_{k−3}, C_{k−3})).
@@ -144,6 +161,39 @@ fn turn_plane<T: Scalar>(m: &Matrix3<T>, i1: usize, i2: usize, c: T, s: T) -> Ma
         r[(i2, col)] = s * a + c * b;
     }
     r
+}
+
+/// EᵀME for a symmetric M and the E of [`turn_plane`], by the six numbers of its upper
+/// triangle: the third axis k keeps M_kk, its pair (M_{k,i1}, M_{k,i2}) turns once, and the
+/// (i1, i2) block turns on both sides.
+#[inline(always)]
+fn turn_plane_sym<T: Scalar>(m: &Matrix3<T>, i1: usize, i2: usize, c: T, s: T) -> Matrix3<T> {
+    let k = 3 - i1 - i2;
+    let (a, b) = (m[(k, i1)], m[(k, i2)]);
+    let (p, q, t) = (m[(i1, i1)], m[(i1, i2)], m[(i2, i2)]);
+    // M E on the block: rows (i1, i2) of columns (i1, i2)
+    let (r11, r12) = (p * c - q * s, p * s + q * c);
+    let (r21, r22) = (q * c - t * s, q * s + t * c);
+    let mut out = Matrix3::zeros();
+    out[(k, k)] = m[(k, k)];
+    let (ki1, ki2) = (a * c - b * s, a * s + b * c);
+    out[(k, i1)] = ki1;
+    out[(i1, k)] = ki1;
+    out[(k, i2)] = ki2;
+    out[(i2, k)] = ki2;
+    out[(i1, i1)] = c * r11 - s * r21;
+    let o21 = s * r11 + c * r21;
+    out[(i2, i1)] = o21;
+    out[(i1, i2)] = o21;
+    out[(i2, i2)] = s * r12 + c * r22;
+    out
+}
+
+/// A symmetric 3×3 from its upper triangle, `f(r, c)` for r ≤ c, mirrored.
+#[inline(always)]
+fn sym3<T: Scalar>(f: impl Fn(usize, usize) -> T) -> Matrix3<T> {
+    let (a, b, c, d, e, g) = (f(0, 0), f(0, 1), f(0, 2), f(1, 1), f(1, 2), f(2, 2));
+    Matrix3::new(a, b, c, b, d, e, c, e, g)
 }
 
 /// M r^×: row j is M_j × r.
