@@ -30,6 +30,9 @@ pub struct AbaScratch<T: Scalar = f64> {
     v: Vec<Vector3<T>>,
     /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
     reach: Vec<f64>,
+    /// Per free root (`Model::free_roots`): whether its 6×6 solve was taken, and its y.
+    root_fast: Vec<bool>,
+    root_y: Vec<Vector6<T>>,
     /// The planar passes' work space (`None` unless the model is planar).
     pub(crate) pl: Option<PlanarWork<T>>,
 }
@@ -50,6 +53,8 @@ impl<T: Scalar> Model<T> {
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
+            root_fast: vec![false; self.free_roots.len()],
+            root_y: vec![Vector6::zeros(); self.free_roots.len()],
             pl: self.planar.as_ref().map(|_| PlanarWork::new(n)),
         }
     }
@@ -59,8 +64,10 @@ impl<T: Scalar> Model<T> {
     /// with the joint reactions eliminated tip to base. `f_ext` as in [`Model::rnea`].
     ///
     /// A planar tree ([`Model::planar_axis`]) runs the same passes on planar spatial vectors
-    /// (3 numbers instead of 6, RBDA §2.16), and a free body alone on its joint is solved in
-    /// closed form (Euler's equations about its centre); both give the three passes' v̇ to
+    /// (3 numbers instead of 6, RBDA §2.16), a free body alone on its joint is solved in
+    /// closed form (Euler's equations about its centre), and a floating base (a free joint at
+    /// the root carrying a subtree) is eliminated as one 6-DOF joint, one 6×6 solve with its
+    /// articulated inertia instead of four segments; all give the three passes' v̇ to
     /// rounding.
     ///
     /// Book: §7.11; RBDA Table 7.1.
@@ -356,6 +363,153 @@ mod tests {
         let wrenches = wrenches();
         // a few roundings of terms near 10 (the gyroscopic and gravity moments)
         closed_form_matches(&alone, &with_child, &q, &v, &tau, &wrenches, 10.0);
+    }
+
+    /// A floating base (a free joint at the root, tilted and offset) with a pin leg, a ball
+    /// leg and a welded tip, and the same tree with the free joint written as three sleeves
+    /// along ẑ, ŷ, x̂ and a ball (the same motion: translations commute), which ABA eliminates
+    /// segment by segment.
+    fn floating_base(j_base: Matrix3<f64>) -> (Model, Model) {
+        let base_orientation = *Rotation3::from_euler_angles(0.3, -0.7, 1.1).matrix();
+        let mut base = Link::new(
+            None,
+            Joint::Free,
+            Vector3::new(0.5, -1.0, 2.0),
+            3.0,
+            Vector3::new(0.1, -0.2, 0.05),
+            j_base,
+        );
+        base.orientation = base_orientation;
+        let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
+        let pin_leg = Link::new(
+            Some(0),
+            Joint::Pin { axis: Vector3::new(0.3, 1.0, -0.2) },
+            Vector3::new(0.4, 0.2, -0.1),
+            1.2,
+            Vector3::new(0.0, 0.0, -0.3),
+            j,
+        );
+        let ball_leg = Link::new(
+            Some(0),
+            Joint::Ball,
+            Vector3::new(-0.4, 0.2, -0.1),
+            0.8,
+            Vector3::new(0.1, 0.0, -0.4),
+            j,
+        );
+        let tip =
+            Link::new(Some(1), Joint::Weld, Vector3::new(0.0, 0.0, -0.6), 0.3, Vector3::zeros(), j * 0.1);
+        let links = [base, pin_leg, ball_leg, tip];
+        (Model::new(&links).expect("valid"), segment_form(&links))
+    }
+
+    /// The tree of `links` (links[0] on a free joint at the root) with that joint written as
+    /// three massless sleeves along ẑ, ŷ, x̂ and a ball carrying the body: the same motion
+    /// (translations commute), coordinates (z, y, x, ball, …), which ABA eliminates segment by
+    /// segment.
+    fn segment_form(links: &[Link]) -> Model {
+        let base = &links[0];
+        let sleeve = |parent, axis: Vector3<f64>, offset| {
+            Link::new(parent, Joint::Sleeve { axis }, offset, 0.0, Vector3::zeros(), Matrix3::zeros())
+        };
+        let mut z = sleeve(None, Vector3::z(), base.offset);
+        z.orientation = base.orientation;
+        let mut out = vec![
+            z,
+            sleeve(Some(0), Vector3::y(), Vector3::zeros()),
+            sleeve(Some(1), Vector3::x(), Vector3::zeros()),
+        ];
+        let mut body = base.clone();
+        (body.parent, body.joint, body.offset, body.orientation) =
+            (Some(2), Joint::Ball, Vector3::zeros(), Matrix3::identity());
+        out.push(body);
+        out.extend(links[1..].iter().map(|l| {
+            let mut l = l.clone();
+            l.parent = l.parent.map(|p| p + 3);
+            l
+        }));
+        Model::new(&out).expect("valid")
+    }
+
+    /// (z, y, x, rest…) from (x, y, z, rest…).
+    fn perm(x: &[f64]) -> Vec<f64> {
+        [&[x[2], x[1], x[0]], &x[3..]].concat()
+    }
+
+    /// v̇ of the floating base's 6×6 solve: against the same tree eliminated segment by segment
+    /// (a consistency check), against the mass matrix and bias forces (CRBA, RNEA, Cholesky:
+    /// another algorithm), and RNEA at the returned v̇ gives back τ, with gravity, joint forces
+    /// and external wrenches on every link.
+    #[test]
+    fn floating_base_solve_matches_the_segments_and_the_mass_matrix() {
+        let (mut fast, mut slow) = floating_base(Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1));
+        let g = Vector3::new(0.3, -0.2, -9.81);
+        (fast.gravity, slow.gravity) = (g, g);
+        assert_eq!((fast.free_roots.clone(), slow.free_roots.clone()), (vec![0], vec![]));
+        let qb = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
+        let ql = nalgebra::UnitQuaternion::from_euler_angles(-0.3, 0.8, 0.2);
+        let q = vec![0.3, -1.2, 0.8, qb.w, qb.i, qb.j, qb.k, 0.7, ql.w, ql.i, ql.j, ql.k];
+        let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3, -0.8, 0.4, 1.9, -0.6];
+        let tau = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25, 0.3, -0.2, 0.1, 0.6];
+        let fe = |k: f64| JointWrench {
+            force: Vector3::new(-0.6, 1.4, 2.2) * k,
+            moment: Vector3::new(0.9, 0.1, -0.5) * k,
+        };
+        let wrenches = vec![fe(1.0), fe(-0.5), fe(0.3), fe(0.7)];
+        let got = fast.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
+        let mut s = fast.aba_scratch();
+        let mut again = vec![0.0; 10];
+        fast.aba_into(&q, &v, &tau, Some(&wrenches), &mut again, &mut s).expect("definite");
+        assert!(s.root_fast[0], "the 6×6 solve was taken");
+        assert_eq!(got, again);
+        // the slow tree's coordinates: sleeves z, y, x then the ball (its joint frame is the
+        // free joint's frame, so the same numbers)
+        // (no wrench on the three massless sleeves)
+        let slow_wrenches = [&[JointWrench::default(); 3][..], &wrenches].concat();
+        let slow_vd = slow.aba(&perm(&q), &perm(&v), &perm(&tau), Some(&slow_wrenches)).expect("definite");
+        let crba = fast.forward_dynamics_crba(&q, &v, &tau, Some(&wrenches)).expect("definite");
+        let scale = got.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        for ((a, b), c) in got.iter().zip(&perm(&slow_vd)).zip(&crba) {
+            assert!((a - b).abs() <= 1e-13 * scale, "segments: {got:?} vs {slow_vd:?}");
+            assert!((a - c).abs() <= 1e-12 * scale, "CRBA: {got:?} vs {crba:?}");
+        }
+        let id = fast.rnea(&q, &v, &got, Some(&wrenches)).expect("valid");
+        for (a, b) in id.tau.iter().zip(&tau) {
+            assert!((a - b).abs() <= 1e-12 * scale, "RNEA {:?} vs τ {tau:?}", id.tau);
+        }
+    }
+
+    /// A base whose rotational inertia is at the rounding level (J_c = 1e-16·1: definite on
+    /// its own) carrying a ball leg hinged at the base's centre (which adds no rotational
+    /// inertia about it): the 6×6 solve finds its angular pivot below ABA's floor and is
+    /// refused, and the four segments are eliminated one by one, keeping the base's spin
+    /// inert; the result is the same tree's segment by segment, to rounding.
+    #[test]
+    fn floating_base_at_the_rounding_level_falls_back_to_the_segments() {
+        let j0 = Matrix3::identity() * 1e-16;
+        let base = Link::new(None, Joint::Free, Vector3::new(0.5, -1.0, 2.0), 3.0, Vector3::zeros(), j0);
+        let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
+        let leg = Link::new(Some(0), Joint::Ball, Vector3::zeros(), 0.8, Vector3::new(0.1, 0.0, -0.4), j);
+        let links = [base, leg];
+        let (mut fast, mut slow) = (Model::new(&links).expect("valid"), segment_form(&links));
+        let g = Vector3::new(0.0, 0.0, -9.81);
+        (fast.gravity, slow.gravity) = (g, g);
+        assert_eq!(fast.free_roots, vec![0]);
+        let ql = nalgebra::UnitQuaternion::from_euler_angles(-0.3, 0.8, 0.2);
+        let q = vec![0.3, -1.2, 0.8, 1.0, 0.0, 0.0, 0.0, ql.w, ql.i, ql.j, ql.k];
+        let v = vec![0.5, -0.3, 1.7, 0.0, 0.0, 0.0, -0.8, 0.4, 1.9];
+        // (no torque at the leg's ball: it would turn the base, which cannot take it)
+        let tau = vec![1.0, -2.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let mut s = fast.aba_scratch();
+        let mut got = vec![0.0; 9];
+        fast.aba_into(&q, &v, &tau, None, &mut got, &mut s).expect("the spin is inert");
+        assert!(!s.root_fast[0], "the 6×6 solve was refused");
+        let slow_vd = slow.aba(&perm(&q), &perm(&v), &perm(&tau), None).expect("the spin is inert");
+        // (the sleeves' order changes the roundings: a few ulps of |v̇| ≈ 10)
+        for (a, b) in perm(&got).iter().zip(&slow_vd) {
+            assert!((a - b).abs() <= 1e-14 * 10.0, "{got:?} vs {slow_vd:?}");
+        }
+        assert_eq!(&got[3..6], &[0.0, 0.0, 0.0], "the base's spin is inert");
     }
 
     /// A particle on a rod about a ball joint (J_c = 0, so J_o has rank 2) is not a closed-form

@@ -57,35 +57,100 @@ impl<T: Scalar> Model<T> {
     /// Pass 2 (inward): U = IᴬS, D = SᵀU, u = τ − SᵀpA; Iᵃ = Iᴬ − U D⁻¹Uᵀ,
     /// pᵃ = pᴬ + Iᵃc + U D⁻¹u, accumulated into the parent through Xᵀ (a rotation of the
     /// blocks, then a shift).
+    ///
+    /// A free joint at the root with a subtree (a floating base) is eliminated last, all at
+    /// once ([`Model::free_root_solve`]); should its 6×6 solve find a pivot at the rounding
+    /// level, its four segments are eliminated one by one as any other.
     pub(super) fn aba_inward(&self, tau: &[T], s: &mut AbaScratch<T>) -> Result<(), DynamicsError> {
+        // (a model without a floating base reads one flag per segment, as before there were any)
+        let skip = if self.free_roots.is_empty() { &self.aba_skip } else { &self.inward_skip };
         for i in (0..self.segs.len()).rev() {
-            if self.aba_skip[i] {
-                continue;
-            }
-            let seg = &self.segs[i];
-            let (Ia, pa) = match seg.elem {
-                Elem::Revolute(a) | Elem::Prismatic(a) => self.scalar_inward(i, &a, tau, s)?,
-                Elem::Spherical => self.ball_inward(i, tau, s)?,
-                Elem::Fixed => (s.IA[i], s.pA[i] + s.IA[i].apply6(&s.c[i])),
-            };
-            if let Some(p) = seg.parent {
-                let add = Ia.in_parent(&s.x[i], seg.turn);
-                s.IA[p].add(&add);
-                let (pn, pf) = seg.turn.force_to_parent(
-                    &s.x[i],
-                    &pa.fixed_rows::<3>(0).into_owned(),
-                    &pa.fixed_rows::<3>(3).into_owned(),
-                );
-                s.pA[p] += join(&pn, &pf);
-                if seg.sub_mass > 0.0 {
-                    // ρ_p ≥ ρ_i + |r_i| (‖·‖₁ ≥ ‖·‖₂)
-                    let r = &s.x[i].r;
-                    let reach = s.reach[i] + r.x.re().abs() + r.y.re().abs() + r.z.re().abs();
-                    s.reach[p] = s.reach[p].max(reach);
+            if skip[i] {
+                let Some(k) = self.free_root_seg[i] else { continue };
+                // a free root: its ball (the last of its four segments) comes first, with the
+                // whole subtree eliminated
+                if i == self.free_roots[k] + 3 {
+                    s.root_fast[k] = self.free_root_solve(k, tau, s);
                 }
+                if s.root_fast[k] {
+                    continue;
+                }
+            }
+            self.inward_step(i, tau, s)?;
+        }
+        Ok(())
+    }
+
+    /// Pass 2 at segment i: eliminate its joint, and add what is left to its parent.
+    #[inline(always)]
+    fn inward_step(&self, i: usize, tau: &[T], s: &mut AbaScratch<T>) -> Result<(), DynamicsError> {
+        let seg = &self.segs[i];
+        let (Ia, pa) = match seg.elem {
+            Elem::Revolute(a) | Elem::Prismatic(a) => self.scalar_inward(i, &a, tau, s)?,
+            Elem::Spherical => self.ball_inward(i, tau, s)?,
+            Elem::Fixed => (s.IA[i], s.pA[i] + s.IA[i].apply6(&s.c[i])),
+        };
+        if let Some(p) = seg.parent {
+            let add = Ia.in_parent(&s.x[i], seg.turn);
+            s.IA[p].add(&add);
+            let (pn, pf) = seg.turn.force_to_parent(
+                &s.x[i],
+                &pa.fixed_rows::<3>(0).into_owned(),
+                &pa.fixed_rows::<3>(3).into_owned(),
+            );
+            s.pA[p] += join(&pn, &pf);
+            if seg.sub_mass > 0.0 {
+                // ρ_p ≥ ρ_i + |r_i| (‖·‖₁ ≥ ‖·‖₂)
+                let r = &s.x[i].r;
+                let reach = s.reach[i] + r.x.re().abs() + r.y.re().abs() + r.z.re().abs();
+                s.reach[p] = s.reach[p].max(reach);
             }
         }
         Ok(())
+    }
+
+    /// Pass 2 and the root of pass 3 at free root k (segments f..f+4: three massless sliders
+    /// along the axes of the joint frame J, then the ball carrying the base body B), once its
+    /// subtree is eliminated. With the joint accelerations zero the base would accelerate by
+    /// 𝒜⁰ (the gravity and bias terms carried out through the four segments); the joint adds
+    /// y = (ω̇, E p̈), ω̇ the ball's and p̈ the sliders' coordinates' accelerations, E = 𝓞_{B/J}
+    /// (the sliders move the base along J's axes, resolved in B). The joint's forces are the
+    /// base's wrench f = Iᴬ(𝒜⁰ + y) + pᴬ resolved back: τ_ball = n, τ_slide = Eᵀf. So
+    /// Iᴬ y = (τ_ball, E τ_slide) − Iᴬ𝒜⁰ − pᴬ, one 6×6 solve by blocks: C⁻¹ (the mass block),
+    /// then the Schur complement A − B C⁻¹ Bᵀ, both by Cholesky with ABA's pivot floors (the
+    /// subtree's mass; the angular scale of [`Model::angular_scale`]). The four segments'
+    /// eliminations give the same y (RBDA §7.3 for a 6-DOF joint; Pinocchio's free-flyer).
+    /// Returns false (nothing changed) when a pivot is at the rounding level.
+    ///
+    /// Book: §7.11 (7.11.13) for the base; RBDA Table 7.1.
+    fn free_root_solve(&self, k: usize, tau: &[T], s: &mut AbaScratch<T>) -> bool {
+        let f = self.free_roots[k];
+        let b = f + 3;
+        let mut a = join(&Vector3::zeros(), &(-self.gravity));
+        for i in f..=b {
+            let (aw, av) = split(&a);
+            let (xw, xv) = self.segs[i].turn.motion(&s.x[i], &aw, &av);
+            a = join(&xw, &xv) + s.c[i];
+        }
+        let (IA, pA) = (&s.IA[b], &s.pA[b]);
+        let e = &s.x[b].E;
+        let (vs, vb) = (self.segs[f].vi, self.segs[b].vi);
+        let t_ball = Vector3::new(tau[vb], tau[vb + 1], tau[vb + 2]);
+        let t_slide = e * Vector3::new(tau[vs], tau[vs + 1], tau[vs + 2]);
+        let (rw, rv) = split(&(join(&t_ball, &t_slide) - IA.apply6(&a) - pA));
+        let Some(c_inv) = spd_inverse3(&IA.C, pivot_tol::<T>() * self.segs[b].sub_mass) else {
+            return false;
+        };
+        let K = IA.B * c_inv;
+        let schur = IA.A - K * IA.B.transpose();
+        let Some(s_inv) = spd_inverse3(&schur, pivot_tol::<T>() * self.angular_scale(b, s)) else {
+            return false;
+        };
+        let yw = s_inv * (rw - K * rv);
+        let yv = c_inv * (rv - IA.B.tr_mul(&yw));
+        s.root_y[k] = join(&yw, &yv);
+        s.a[b] = a + s.root_y[k];
+        true
     }
 
     /// The rounding scale of a pin's or ball's block of Iᴬ: the subtree's composite inertia
@@ -187,8 +252,23 @@ impl<T: Scalar> Model<T> {
     /// Pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈.
     pub(super) fn aba_accelerations(&self, vdot: &mut [T], s: &mut AbaScratch<T>) {
         let a0 = join(&Vector3::zeros(), &(-self.gravity));
+        let roots = !self.free_roots.is_empty();
         for (i, seg) in self.segs.iter().enumerate() {
             if self.aba_skip[i] {
+                continue;
+            }
+            if roots
+                && let Some(k) = self.free_root_seg[i]
+                && s.root_fast[k]
+            {
+                // solved with pass 2 (`free_root_solve`), which set the base's 𝒜
+                if i == self.free_roots[k] {
+                    let (yw, yv) = split(&s.root_y[k]);
+                    let pdd = s.x[i + 3].E.tr_mul(&yv);
+                    let vb = self.segs[i + 3].vi;
+                    vdot[seg.vi..seg.vi + 3].copy_from_slice(pdd.as_slice());
+                    vdot[vb..vb + 3].copy_from_slice(yw.as_slice());
+                }
                 continue;
             }
             let ap = match seg.parent {

@@ -59,10 +59,16 @@ impl Model<f64> {
                 ball_jo_inv.push(jo_inv);
             }
         }
+        let free_roots = free_tree_roots(&segs);
+        let mut free_root_seg = vec![None; segs.len()];
+        for (k, &f) in free_roots.iter().enumerate() {
+            free_root_seg[f..f + 4].fill(Some(k));
+        }
         let mut aba_skip = free_seg.clone();
         for &b in &ball_leaves {
             aba_skip[b] = true;
         }
+        let inward_skip = aba_skip.iter().zip(&free_root_seg).map(|(&a, r)| a || r.is_some()).collect();
         let planar = Planar::detect(&segs, &link_seg);
         Ok(Self {
             link_seg,
@@ -81,6 +87,9 @@ impl Model<f64> {
             ball_links,
             ball_jo_inv,
             aba_skip,
+            free_roots,
+            free_root_seg,
+            inward_skip,
             segs,
         })
     }
@@ -166,6 +175,9 @@ impl Model<f64> {
             ball_links: self.ball_links.clone(),
             ball_jo_inv: self.ball_jo_inv.iter().map(|m| m.map(U::lit)).collect(),
             aba_skip: self.aba_skip.clone(),
+            free_roots: self.free_roots.clone(),
+            free_root_seg: self.free_root_seg.clone(),
+            inward_skip: self.inward_skip.clone(),
             planar: self.planar.as_ref().map(Planar::cast),
         }
     }
@@ -307,24 +319,38 @@ fn column_tree(segs: &[Segment<f64>], nv: usize) -> (Vec<Option<usize>>, Vec<usi
 /// previous without offset) and the ball carrying the body, and no segment hangs from the
 /// ball. Such a body couples to no other segment in the tree algorithms.
 fn free_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
-    let has_child = has_children(segs);
-    let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
+    let children = child_counts(segs);
     (0..segs.len().saturating_sub(3))
-        .filter(|&i| {
-            segs[i].parent.is_none()
-                && (0..3).all(|k| {
-                    let s = &segs[i + k];
-                    s.elem == Elem::Prismatic(axes[k])
-                        && s.massless
-                        && (k == 0 || s.parent == Some(i + k - 1))
-                })
-                && (1..4).all(|k| segs[i + k].placement == Xform::identity())
-                && segs[i + 3].elem == Elem::Spherical
-                && segs[i + 3].parent == Some(i + 2)
-                && !has_child[i + 3]
-                && definite_body(&segs[i + 3])
-        })
+        .filter(|&i| is_free_root(segs, &children, i) && children[i + 3] == 0)
         .collect()
+}
+
+/// The first segment of every free joint at the root (as [`free_leaf_roots`]) whose body has
+/// children (a floating base): ABA eliminates the whole joint at once, one 6×6 solve with the
+/// base's articulated inertia (`Model::free_root_accelerations`), instead of four segments.
+fn free_tree_roots(segs: &[Segment<f64>]) -> Vec<usize> {
+    let children = child_counts(segs);
+    (0..segs.len().saturating_sub(3))
+        .filter(|&i| is_free_root(segs, &children, i) && children[i + 3] > 0)
+        .collect()
+}
+
+/// Segments i..i+4 are a free joint at the root with a definite body ([`definite_body`]): the
+/// three sliders along x̂, ŷ, ẑ of the joint frame (massless, each placed on the previous
+/// without offset, each the only child of the one before) and the ball carrying the body.
+fn is_free_root(segs: &[Segment<f64>], children: &[usize], i: usize) -> bool {
+    let axes = [Vector3::x(), Vector3::y(), Vector3::z()];
+    segs[i].parent.is_none()
+        && (0..3).all(|k| {
+            let s = &segs[i + k];
+            s.elem == Elem::Prismatic(axes[k]) && s.massless && (k == 0 || s.parent == Some(i + k - 1))
+        })
+        && (1..4).all(|k| segs[i + k].placement == Xform::identity())
+        && segs[i + 3].elem == Elem::Spherical
+        && segs[i + 3].parent == Some(i + 2)
+        // nothing else hangs from the sliders
+        && children[i..i + 3].iter().all(|&c| c == 1)
+        && definite_body(&segs[i + 3])
 }
 
 /// Every ball joint at the root whose segment carries a body and has no child, with the body's
@@ -333,23 +359,23 @@ fn free_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
 /// product with J_o⁻¹. A particle on a rod (J_c = 0, J_o of rank 2) is left to ABA's
 /// rank-revealing path.
 fn ball_leaf_roots(segs: &[Segment<f64>]) -> Vec<(usize, Matrix3<f64>)> {
-    let has_child = has_children(segs);
+    let children = child_counts(segs);
     segs.iter()
         .enumerate()
-        .filter(|&(i, s)| s.parent.is_none() && s.elem == Elem::Spherical && !has_child[i] && !s.massless)
+        .filter(|&(i, s)| s.parent.is_none() && s.elem == Elem::Spherical && children[i] == 0 && !s.massless)
         .filter_map(|(i, s)| Some((i, definite_inverse(&s.inertia.I)?)))
         .collect()
 }
 
-/// For each segment, whether another hangs from it.
-fn has_children(segs: &[Segment<f64>]) -> Vec<bool> {
-    let mut has_child = vec![false; segs.len()];
+/// For each segment, how many hang from it.
+fn child_counts(segs: &[Segment<f64>]) -> Vec<usize> {
+    let mut children = vec![0; segs.len()];
     for s in segs {
         if let Some(p) = s.parent {
-            has_child[p] = true;
+            children[p] += 1;
         }
     }
-    has_child
+    children
 }
 
 /// m > 0 and J_c definite ([`definite_inverse`]): the closed form of a free body divides by

@@ -58,6 +58,13 @@ pub struct Model<T: Scalar = f64> {
     /// For each segment, whether ABA solves it in closed form (a free or ball leaf): the
     /// three passes skip it.
     pub(crate) aba_skip: Vec<bool>,
+    /// First segments of the free joints at the root whose body has children (a floating
+    /// base): ABA eliminates each in one 6×6 solve after its subtree.
+    pub(crate) free_roots: Vec<usize>,
+    /// For each segment, the entry of `free_roots` it belongs to.
+    pub(crate) free_root_seg: Vec<Option<usize>>,
+    /// `aba_skip` or part of a free root: the segments ABA's inward loop leaves alone.
+    pub(crate) inward_skip: Vec<bool>,
     /// The planar reduction, when every pin turns about one axis of the ground and every
     /// slider moves across it: ABA then runs on 3-vectors ([`Model::aba_into`]).
     pub(crate) planar: Option<Planar<T>>,
