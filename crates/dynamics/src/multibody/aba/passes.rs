@@ -62,7 +62,7 @@ impl<T: Scalar> Model<T> {
     /// once ([`Model::free_root_solve`]); should its 6×6 solve find a pivot at the rounding
     /// level, its four segments are eliminated one by one as any other.
     pub(super) fn aba_inward(&self, tau: &[T], s: &mut AbaScratch<T>) -> Result<(), DynamicsError> {
-        // (a model without a floating base reads one flag per segment, as before there were any)
+        // (one flag per segment; a model without a floating base reads `aba_skip`)
         let skip = if self.free_roots.is_empty() { &self.aba_skip } else { &self.inward_skip };
         for i in (0..self.segs.len()).rev() {
             if skip[i] {
