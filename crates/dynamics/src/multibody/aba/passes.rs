@@ -62,11 +62,21 @@ impl<T: Scalar> Model<T> {
     /// once ([`Model::free_root_solve`]); should its 6×6 solve find a pivot at the rounding
     /// level, its four segments are eliminated one by one as any other.
     pub(super) fn aba_inward(&self, tau: &[T], s: &mut AbaScratch<T>) -> Result<(), DynamicsError> {
-        // (one flag per segment; a model without a floating base reads `aba_skip`)
-        let skip = if self.free_roots.is_empty() { &self.aba_skip } else { &self.inward_skip };
+        // compiled twice: a model without a floating base pays nothing for them
+        if self.free_roots.is_empty() {
+            self.inward_loop::<false>(tau, s)
+        } else {
+            self.inward_loop::<true>(tau, s)
+        }
+    }
+
+    /// Pass 2's loop, with (`ROOTS`) or without the free roots' 6×6 solves.
+    #[inline(always)]
+    fn inward_loop<const ROOTS: bool>(&self, tau: &[T], s: &mut AbaScratch<T>) -> Result<(), DynamicsError> {
+        let skip = if ROOTS { &self.inward_skip } else { &self.aba_skip };
         for i in (0..self.segs.len()).rev() {
             if skip[i] {
-                let Some(k) = self.free_root_seg[i] else { continue };
+                let Some(k) = self.free_root_seg[i].filter(|_| ROOTS) else { continue };
                 // a free root: its ball (the last of its four segments) comes first, with the
                 // whole subtree eliminated
                 if i == self.free_roots[k] + 3 {
@@ -251,13 +261,22 @@ impl<T: Scalar> Model<T> {
 
     /// Pass 3 (outward): 𝒜' = X𝒜_p + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + S q̈.
     pub(super) fn aba_accelerations(&self, vdot: &mut [T], s: &mut AbaScratch<T>) {
+        if self.free_roots.is_empty() {
+            self.accelerations_loop::<false>(vdot, s)
+        } else {
+            self.accelerations_loop::<true>(vdot, s)
+        }
+    }
+
+    /// Pass 3's loop, with (`ROOTS`) or without the free roots solved in pass 2.
+    #[inline(always)]
+    fn accelerations_loop<const ROOTS: bool>(&self, vdot: &mut [T], s: &mut AbaScratch<T>) {
         let a0 = join(&Vector3::zeros(), &(-self.gravity));
-        let roots = !self.free_roots.is_empty();
         for (i, seg) in self.segs.iter().enumerate() {
             if self.aba_skip[i] {
                 continue;
             }
-            if roots
+            if ROOTS
                 && let Some(k) = self.free_root_seg[i]
                 && s.root_fast[k]
             {
