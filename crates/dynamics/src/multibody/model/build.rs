@@ -38,7 +38,8 @@ impl Model<f64> {
         mark_upright(&mut segs);
         add_subtree_sums(&mut segs);
         let (parent_col, col_seg) = column_tree(&segs, nv);
-        let free_leaves = free_leaf_roots(&segs);
+        let children = child_counts(&segs);
+        let free_leaves = free_leaf_roots(&segs, &children);
         let free_links = free_leaves
             .iter()
             .map(|&f| link_seg.iter().position(|&k| k == f + 3).expect("the ball segment ends its link"))
@@ -52,14 +53,14 @@ impl Model<f64> {
             free_seg[f..f + 4].fill(true);
         }
         let (mut ball_leaves, mut ball_links, mut ball_jo_inv) = (Vec::new(), Vec::new(), Vec::new());
-        for (b, jo_inv) in ball_leaf_roots(&segs) {
+        for (b, jo_inv) in ball_leaf_roots(&segs, &children) {
             if let Some(l) = link_seg.iter().position(|&k| k == b) {
                 ball_leaves.push(b);
                 ball_links.push(l);
                 ball_jo_inv.push(jo_inv);
             }
         }
-        let free_roots = free_tree_roots(&segs);
+        let free_roots = free_tree_roots(&segs, &children);
         let mut free_root_seg = vec![None; segs.len()];
         for (k, &f) in free_roots.iter().enumerate() {
             free_root_seg[f..f + 4].fill(Some(k));
@@ -318,20 +319,18 @@ fn column_tree(segs: &[Segment<f64>], nv: usize) -> (Vec<Option<usize>>, Vec<usi
 /// are the three sliders along x̂, ŷ, ẑ of the joint frame (massless, each placed on the
 /// previous without offset) and the ball carrying the body, and no segment hangs from the
 /// ball. Such a body couples to no other segment in the tree algorithms.
-fn free_leaf_roots(segs: &[Segment<f64>]) -> Vec<usize> {
-    let children = child_counts(segs);
+fn free_leaf_roots(segs: &[Segment<f64>], children: &[usize]) -> Vec<usize> {
     (0..segs.len().saturating_sub(3))
-        .filter(|&i| is_free_root(segs, &children, i) && children[i + 3] == 0)
+        .filter(|&i| is_free_root(segs, children, i) && children[i + 3] == 0)
         .collect()
 }
 
 /// The first segment of every free joint at the root (as [`free_leaf_roots`]) whose body has
 /// children (a floating base): ABA eliminates the whole joint at once, one 6×6 solve with the
-/// base's articulated inertia (`Model::free_root_accelerations`), instead of four segments.
-fn free_tree_roots(segs: &[Segment<f64>]) -> Vec<usize> {
-    let children = child_counts(segs);
+/// base's articulated inertia (`Model::free_root_solve`), instead of four segments.
+fn free_tree_roots(segs: &[Segment<f64>], children: &[usize]) -> Vec<usize> {
     (0..segs.len().saturating_sub(3))
-        .filter(|&i| is_free_root(segs, &children, i) && children[i + 3] > 0)
+        .filter(|&i| is_free_root(segs, children, i) && children[i + 3] > 0)
         .collect()
 }
 
@@ -358,8 +357,7 @@ fn is_free_root(segs: &[Segment<f64>], children: &[usize], i: usize) -> bool {
 /// couples to no other segment, and its Euler equations about the fixed point are solved by one
 /// product with J_o⁻¹. A particle on a rod (J_c = 0, J_o of rank 2) is left to ABA's
 /// rank-revealing path.
-fn ball_leaf_roots(segs: &[Segment<f64>]) -> Vec<(usize, Matrix3<f64>)> {
-    let children = child_counts(segs);
+fn ball_leaf_roots(segs: &[Segment<f64>], children: &[usize]) -> Vec<(usize, Matrix3<f64>)> {
     segs.iter()
         .enumerate()
         .filter(|&(i, s)| s.parent.is_none() && s.elem == Elem::Spherical && children[i] == 0 && !s.massless)
