@@ -8,12 +8,12 @@
 use nalgebra::{DMatrix, Vector6};
 use vectrix_tensor::Scalar;
 
-use super::crba::mass_cholesky;
 use super::model::Model;
 use super::spatial::{BodyInertia, Xform};
 use super::wrench::LinkWrenches;
 use crate::DynamicsError;
 
+mod ltl;
 mod passes;
 
 use passes::Variation;
@@ -118,9 +118,9 @@ pub struct DerivativeScratch<T: Scalar = f64> {
     dVdq: Vec<Vector6<T>>,
     dAdq: Vec<Vector6<T>>,
     dAdv: Vec<Vector6<T>>,
-    /// L⁻¹ and its transpose while forming M⁻¹.
-    work: DMatrix<T>,
-    work_t: DMatrix<T>,
+    /// Each coordinate with its descendants, and a work column (M⁻¹ by LᵀL).
+    descendants: ltl::Descendants,
+    column: Vec<T>,
     rnea: Option<Box<RneaDerivatives<T>>>,
     aba: Option<super::aba::AbaScratch<T>>,
 }
@@ -141,8 +141,8 @@ impl<T: Scalar> Model<T> {
             dVdq: vec![Vector6::zeros(); nv],
             dAdq: vec![Vector6::zeros(); nv],
             dAdv: vec![Vector6::zeros(); nv],
-            work: DMatrix::zeros(nv, nv),
-            work_t: DMatrix::zeros(nv, nv),
+            descendants: ltl::Descendants::new(&self.parent_col),
+            column: vec![T::zero(); nv],
             rnea: None,
             aba: None,
         }
@@ -232,23 +232,15 @@ impl<T: Scalar> Model<T> {
         r?;
         let mut rd = s.rnea.take().unwrap_or_else(|| Box::new(RneaDerivatives::zeros(self)));
         self.rnea_derivatives_into(q, v, &out.vdot, f_ext, &mut rd, s);
-        // M⁻¹ = L⁻ᵀL⁻¹ from one Cholesky factorization (M's buffer is lent to it), then
+        // M⁻¹ from the tree-sparse LᵀL factorization of M in its own buffer (no fill-in), then
         // ∂v̇/∂q = −M⁻¹ ∂τ/∂q and ∂v̇/∂v = −M⁻¹ ∂τ/∂v by matrix products
-        let m = std::mem::replace(&mut rd.mass_matrix, DMatrix::zeros(0, 0));
-        let result = match mass_cholesky(m) {
-            Ok(chol) => {
-                let l = chol.unpack();
-                inverse_from_cholesky(&l, &mut out.dvdot_dtau, &mut s.work, &mut s.work_t);
-                out.dvdot_dq.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dq, T::zero());
-                out.dvdot_dv.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dv, T::zero());
-                rd.mass_matrix = l;
-                Ok(())
-            }
-            Err(e) => {
-                rd.mass_matrix = DMatrix::zeros(self.nv, self.nv);
-                Err(e)
-            }
-        };
+        let n = self.nv;
+        let (m, minv) = (rd.mass_matrix.as_mut_slice(), out.dvdot_dtau.as_mut_slice());
+        let result = ltl::tree_inverse(m, n, &self.parent_col, &s.descendants, &mut s.column, minv);
+        if result.is_ok() {
+            out.dvdot_dq.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dq, T::zero());
+            out.dvdot_dv.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dv, T::zero());
+        }
         s.rnea = Some(rd);
         result
     }
@@ -275,32 +267,6 @@ impl<T: Scalar> Model<T> {
         out.mass_matrix.as_mut_slice().fill(T::zero());
         self.derivatives_inward(out.partials(), s);
     }
-}
-
-fn inverse_from_cholesky<T: Scalar>(
-    l: &DMatrix<T>,
-    out: &mut DMatrix<T>,
-    w: &mut DMatrix<T>,
-    wt: &mut DMatrix<T>,
-) {
-    let n = l.nrows();
-    let ls = l.as_slice();
-    let ws = w.as_mut_slice();
-    ws.fill(T::zero());
-    for j in 0..n {
-        let col = &mut ws[j * n..(j + 1) * n];
-        col[j] = T::one();
-        for p in j..n {
-            let xp = col[p] / ls[p + p * n];
-            col[p] = xp;
-            for (x, &lv) in col[p + 1..].iter_mut().zip(&ls[p * n + p + 1..(p + 1) * n]) {
-                *x -= lv * xp;
-            }
-        }
-    }
-    // M⁻¹ = WᵀW with W = L⁻¹ (a matrix product, through matrixmultiply for f64)
-    w.transpose_to(wt);
-    out.gemm(T::one(), wt, w, T::zero());
 }
 
 impl Model<f64> {
