@@ -190,6 +190,8 @@ static void arm7(const std::string& method, double tol, const char* dump) {
 
 // ------------------------------------------------------------------ the quadruped (free root)
 
+// Chain's shape with nq ≠ nv (the free joint's quaternion): dynamic-size maps here, so that Chain
+// keeps the fixed-size ones, the peer's fastest form on the chains and the arm
 template <size_t N> struct Floating {  // y = (q, v): q̇ = config_rate(q, v), v̇ = ABA(q, v, τ = 0)
   const pinocchio::Model* model;
   pinocchio::Data* data;
