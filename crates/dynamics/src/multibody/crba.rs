@@ -26,7 +26,7 @@ pub struct CrbaScratch<T: Scalar = f64> {
     S: Vec<Vector6<T>>,
     Ic: Vec<BodyInertia<T>>,
     /// Each coordinate's ancestor coordinates (the entries of its column of H).
-    tree: Ancestors,
+    tree: CoordLists,
 }
 
 /// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
@@ -64,7 +64,7 @@ impl<T: Scalar> Model<T> {
             world: vec![Xform::identity(); n],
             S: vec![Vector6::zeros(); self.nv],
             Ic: vec![BodyInertia::zero(); n],
-            tree: Ancestors::new(&self.parent_col),
+            tree: CoordLists::ancestors(&self.parent_col),
         }
     }
 
@@ -134,7 +134,7 @@ impl<T: Scalar> Model<T> {
             for b in seg.vi..seg.vi + seg.elem.nv() {
                 let F = s.Ic[i].apply6(&s.S[b]);
                 hs[b + b * n] = dot6(&s.S[b], &F);
-                for &a in s.tree.ancestors(b) {
+                for &a in s.tree.of(b) {
                     let hab = dot6(&s.S[a], &F);
                     hs[a + b * n] = hab;
                     hs[b + a * n] = hab;
@@ -206,36 +206,60 @@ pub(crate) fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
 }
 
-/// Each coordinate's ancestor coordinates, nearest first, flattened: the (row, column) pairs
-/// of a tree's mass matrix that can be nonzero. O(n·depth) numbers, so the work space holds
-/// them (as large as H), not the model.
+/// One list of coordinates per velocity coordinate, flattened: each coordinate's ancestors
+/// (nearest first; the (row, column) pairs of a tree's mass matrix that can be nonzero), or
+/// each coordinate with its descendants (the rows where a column of L⁻¹ of M = LᵀL can be
+/// nonzero). O(n·depth) numbers, so the work spaces hold them (as large as H), not the model.
 #[derive(Debug, Clone, Default)]
-pub(crate) struct Ancestors {
-    /// `anc[start[c]..start[c + 1]]`: the ancestors of coordinate c.
+pub(crate) struct CoordLists {
+    /// `all[start[c]..start[c + 1]]`: the list of coordinate c.
     start: Vec<usize>,
-    anc: Vec<usize>,
+    all: Vec<usize>,
 }
 
-impl Ancestors {
-    /// From each coordinate's nearest ancestor.
-    pub fn new(parent_col: &[Option<usize>]) -> Self {
-        let mut start = Vec::with_capacity(parent_col.len() + 1);
-        let mut anc = Vec::new();
-        for c in 0..parent_col.len() {
-            start.push(anc.len());
+impl CoordLists {
+    /// Each coordinate's ancestors, nearest first, from each coordinate's nearest ancestor.
+    pub fn ancestors(parent_col: &[Option<usize>]) -> Self {
+        Self::from_lists(parent_col.len(), |c, out| {
             let mut a = parent_col[c];
             while let Some(p) = a {
-                anc.push(p);
+                out.push(p);
+                a = parent_col[p];
+            }
+        })
+    }
+
+    /// Each coordinate, then its descendants in ascending order (parents precede children).
+    pub fn with_descendants(parent_col: &[Option<usize>]) -> Self {
+        let n = parent_col.len();
+        let mut below = vec![Vec::new(); n];
+        for c in 0..n {
+            let mut a = parent_col[c];
+            while let Some(p) = a {
+                below[p].push(c);
                 a = parent_col[p];
             }
         }
-        start.push(anc.len());
-        Self { start, anc }
+        Self::from_lists(n, |c, out| {
+            out.push(c);
+            out.extend_from_slice(&below[c]);
+        })
     }
 
-    /// The ancestors of coordinate c, nearest first.
+    fn from_lists(n: usize, mut list: impl FnMut(usize, &mut Vec<usize>)) -> Self {
+        let mut start = Vec::with_capacity(n + 1);
+        let mut all = Vec::new();
+        for c in 0..n {
+            start.push(all.len());
+            list(c, &mut all);
+        }
+        start.push(all.len());
+        Self { start, all }
+    }
+
+    /// The list of coordinate c.
     #[inline(always)]
-    pub fn ancestors(&self, c: usize) -> &[usize] {
-        &self.anc[self.start[c]..self.start[c + 1]]
+    pub fn of(&self, c: usize) -> &[usize] {
+        &self.all[self.start[c]..self.start[c + 1]]
     }
 }

@@ -9,49 +9,12 @@
 use vectrix_tensor::Scalar;
 
 use crate::DynamicsError;
-use crate::multibody::crba::MASS_PIVOT_EPS;
-
-/// Each coordinate with its descendants, flattened (the rows where column k of L⁻¹ can be
-/// nonzero).
-#[derive(Debug, Clone, Default)]
-pub(crate) struct Descendants {
-    start: Vec<usize>,
-    all: Vec<usize>,
-}
-
-impl Descendants {
-    /// From each coordinate's nearest ancestor (parents before children).
-    pub fn new(parent_col: &[Option<usize>]) -> Self {
-        let n = parent_col.len();
-        let mut below = vec![Vec::new(); n];
-        for c in 0..n {
-            let mut a = parent_col[c];
-            while let Some(p) = a {
-                below[p].push(c);
-                a = parent_col[p];
-            }
-        }
-        let mut start = Vec::with_capacity(n + 1);
-        let mut all = Vec::new();
-        for (k, b) in below.iter().enumerate() {
-            start.push(all.len());
-            all.push(k);
-            all.extend_from_slice(b);
-        }
-        start.push(all.len());
-        Self { start, all }
-    }
-
-    /// k, then its descendants in ascending order.
-    #[inline(always)]
-    pub fn of(&self, k: usize) -> &[usize] {
-        &self.all[self.start[k]..self.start[k + 1]]
-    }
-}
+use crate::multibody::crba::{CoordLists, MASS_PIVOT_EPS};
 
 /// M⁻¹ into `out` (full, column-major n × n) from the symmetric mass matrix `m` (column-major,
 /// overwritten: L in its lower triangle, M = LᵀL, and W = L⁻¹ in its strict upper triangle,
-/// W_ij at [j, i]), `parent_col` the column tree, `col` a work column of n numbers.
+/// W_ij at [j, i]), `parent_col` the column tree, `desc` each coordinate with its descendants
+/// ([`CoordLists::with_descendants`]), `col` a work column of n numbers.
 ///
 /// # Errors
 /// [`DynamicsError::SingularMassMatrix`] when a pivot is at or below 64 n ε max Mᵢᵢ (the test
@@ -60,7 +23,7 @@ pub(crate) fn tree_inverse<T: Scalar>(
     m: &mut [T],
     n: usize,
     parent_col: &[Option<usize>],
-    desc: &Descendants,
+    desc: &CoordLists,
     col: &mut [T],
     out: &mut [T],
 ) -> Result<(), DynamicsError> {
@@ -173,7 +136,7 @@ mod tests {
         let n = h.nrows();
         let mut work = h.clone();
         let mut out = nalgebra::DMatrix::zeros(n, n);
-        let desc = Descendants::new(&m.parent_col);
+        let desc = CoordLists::with_descendants(&m.parent_col);
         tree_inverse(work.as_mut_slice(), n, &m.parent_col, &desc, &mut vec![0.0; n], out.as_mut_slice())
             .expect("definite");
         let e = &h * &out - nalgebra::DMatrix::<f64>::identity(n, n);
@@ -187,7 +150,7 @@ mod tests {
         let m = tree();
         let h = m.crba(&m.q_neutral).expect("valid");
         let n = h.nrows();
-        let desc = Descendants::new(&m.parent_col);
+        let desc = CoordLists::with_descendants(&m.parent_col);
         for bad in [0.0, f64::NAN] {
             let mut work = h.clone();
             work[(n - 1, n - 1)] = bad;

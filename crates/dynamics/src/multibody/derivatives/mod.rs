@@ -119,7 +119,7 @@ pub struct DerivativeScratch<T: Scalar = f64> {
     dAdq: Vec<Vector6<T>>,
     dAdv: Vec<Vector6<T>>,
     /// Each coordinate with its descendants, and a work column (M⁻¹ by LᵀL).
-    descendants: ltl::Descendants,
+    descendants: super::crba::CoordLists,
     column: Vec<T>,
     rnea: Option<Box<RneaDerivatives<T>>>,
     aba: Option<super::aba::AbaScratch<T>>,
@@ -141,7 +141,7 @@ impl<T: Scalar> Model<T> {
             dVdq: vec![Vector6::zeros(); nv],
             dAdq: vec![Vector6::zeros(); nv],
             dAdv: vec![Vector6::zeros(); nv],
-            descendants: ltl::Descendants::new(&self.parent_col),
+            descendants: super::crba::CoordLists::with_descendants(&self.parent_col),
             column: vec![T::zero(); nv],
             rnea: None,
             aba: None,
