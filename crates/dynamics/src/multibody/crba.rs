@@ -27,6 +27,8 @@ pub struct CrbaScratch<T: Scalar = f64> {
     Ic: Vec<BodyInertia<T>>,
     /// Each coordinate's ancestor coordinates (the entries of its column of H).
     tree: CoordLists,
+    /// The entries of H that are zero whatever q (the only ones CRBA must clear).
+    zeros: ZeroRuns,
 }
 
 /// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
@@ -65,6 +67,7 @@ impl<T: Scalar> Model<T> {
             S: vec![Vector6::zeros(); self.nv],
             Ic: vec![BodyInertia::zero(); n],
             tree: CoordLists::ancestors(&self.parent_col),
+            zeros: ZeroRuns::of_tree(&self.parent_col),
         }
     }
 
@@ -122,9 +125,8 @@ impl<T: Scalar> Model<T> {
         }
         let n = self.nv;
         let hs = h.as_mut_slice();
-        // (a slice fill is one memset for f64; nalgebra's element iterator is ~10
-        // instructions an entry, a quarter of CRBA's own count on an 18-coordinate tree)
-        hs.fill(T::zero());
+        // every other entry is written below: clear only those between branches
+        s.zeros.clear(hs);
         // inward: Iᶜ_i is complete when i is reached (descendants come later in the order);
         // for each column b of joint i, F = Iᶜ_i S_b, then H_bb = S_b·F and H_ab = H_ba = S_a·F
         // for every coordinate a above b (its ancestors, flattened in `tree`); Iᶜ_p += Iᶜ_i
@@ -206,6 +208,55 @@ pub(crate) fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
 }
 
+/// The entries of an n × n column-major matrix indexed by a tree's coordinates that are zero
+/// whatever the state: row r of column c where r is neither c nor an ancestor or a descendant
+/// of c (two coordinates on different branches). The mass matrix, ∂τ/∂q and ∂τ/∂v of a tree
+/// have this pattern (RBDA §6.1: branch-induced sparsity), so an algorithm that writes every
+/// other entry clears only these (a whole-matrix fill is n² stores every call; a chain has no
+/// such entries at all). Runs of rows per column, O(n·depth) numbers.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct ZeroRuns {
+    /// Runs [a, b) of the matrix's column-major slice (runs that meet across columns merged).
+    runs: Vec<(usize, usize)>,
+}
+
+impl ZeroRuns {
+    /// The runs of a column tree (`parent_col[c] < c`, parents before children).
+    pub fn of_tree(parent_col: &[Option<usize>]) -> Self {
+        let n = parent_col.len();
+        let (above, below) = (CoordLists::ancestors(parent_col), CoordLists::with_descendants(parent_col));
+        let mut runs: Vec<(usize, usize)> = Vec::new();
+        let mut push = |a: usize, b: usize| match runs.last_mut() {
+            Some(last) if last.1 == a => last.1 = b,
+            _ => runs.push((a, b)),
+        };
+        for c in 0..n {
+            // the related rows in ascending order: ancestors (nearest first, so reversed),
+            // then c and its descendants
+            let mut next = 0;
+            for &r in above.of(c).iter().rev().chain(below.of(c)) {
+                debug_assert!(r >= next, "parent_col must order parents before children");
+                if r > next {
+                    push(next + c * n, r + c * n);
+                }
+                next = r + 1;
+            }
+            if next < n {
+                push(next + c * n, n + c * n);
+            }
+        }
+        Self { runs }
+    }
+
+    /// Zero the runs of the n × n column-major matrix `m` (the one `of_tree` was made for).
+    #[inline]
+    pub fn clear<T: Scalar>(&self, m: &mut [T]) {
+        for &(a, b) in &self.runs {
+            m[a..b].fill(T::zero());
+        }
+    }
+}
+
 /// One list of coordinates per velocity coordinate, flattened: each coordinate's ancestors
 /// (nearest first; the (row, column) pairs of a tree's mass matrix that can be nonzero), or
 /// each coordinate with its descendants (the rows where a column of L⁻¹ of M = LᵀL can be
@@ -255,6 +306,17 @@ impl CoordLists {
         }
         start.push(all.len());
         Self { start, all }
+    }
+
+    /// Where the list of coordinate c starts in the flattened lists (c = n: where they end).
+    #[inline(always)]
+    pub fn offset(&self, c: usize) -> usize {
+        self.start[c]
+    }
+
+    /// The length of all lists together.
+    pub fn total(&self) -> usize {
+        self.all.len()
     }
 
     /// The list of coordinate c.

@@ -118,9 +118,10 @@ pub struct DerivativeScratch<T: Scalar = f64> {
     dVdq: Vec<Vector6<T>>,
     dAdq: Vec<Vector6<T>>,
     dAdv: Vec<Vector6<T>>,
-    /// Each coordinate with its descendants, and a work column (M⁻¹ by LᵀL).
-    descendants: super::crba::CoordLists,
-    column: Vec<T>,
+    /// M⁻¹ by LᵀL.
+    inverse: ltl::TreeInverse<T>,
+    /// The entries of M, ∂τ/∂q and ∂τ/∂v that are zero whatever the state.
+    zeros: super::crba::ZeroRuns,
     rnea: Option<Box<RneaDerivatives<T>>>,
     aba: Option<super::aba::AbaScratch<T>>,
 }
@@ -141,8 +142,8 @@ impl<T: Scalar> Model<T> {
             dVdq: vec![Vector6::zeros(); nv],
             dAdq: vec![Vector6::zeros(); nv],
             dAdv: vec![Vector6::zeros(); nv],
-            descendants: super::crba::CoordLists::with_descendants(&self.parent_col),
-            column: vec![T::zero(); nv],
+            inverse: ltl::TreeInverse::new(&self.parent_col),
+            zeros: super::crba::ZeroRuns::of_tree(&self.parent_col),
             rnea: None,
             aba: None,
         }
@@ -232,11 +233,9 @@ impl<T: Scalar> Model<T> {
         r?;
         let mut rd = s.rnea.take().unwrap_or_else(|| Box::new(RneaDerivatives::zeros(self)));
         self.rnea_derivatives_into(q, v, &out.vdot, f_ext, &mut rd, s);
-        // M⁻¹ from the tree-sparse LᵀL factorization of M in its own buffer (no fill-in), then
+        // M⁻¹ from the tree-sparse LᵀL factorization of M (no fill-in), then
         // ∂v̇/∂q = −M⁻¹ ∂τ/∂q and ∂v̇/∂v = −M⁻¹ ∂τ/∂v by matrix products
-        let n = self.nv;
-        let (m, minv) = (rd.mass_matrix.as_mut_slice(), out.dvdot_dtau.as_mut_slice());
-        let result = ltl::tree_inverse(m, n, &self.parent_col, &s.descendants, &mut s.column, minv);
+        let result = s.inverse.invert(rd.mass_matrix.as_slice(), out.dvdot_dtau.as_mut_slice());
         if result.is_ok() {
             out.dvdot_dq.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dq, T::zero());
             out.dvdot_dv.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dv, T::zero());
@@ -260,11 +259,10 @@ impl<T: Scalar> Model<T> {
         s: &mut DerivativeScratch<T>,
     ) {
         self.derivatives_outward(q, v, vdot, f_ext, s);
-        // (slice fills: one memset each for f64, where nalgebra's element iterator takes about
-        // ten instructions an entry)
-        out.dtau_dq.as_mut_slice().fill(T::zero());
-        out.dtau_dv.as_mut_slice().fill(T::zero());
-        out.mass_matrix.as_mut_slice().fill(T::zero());
+        // the inward pass writes every entry but those between branches: clear only those
+        for m in [&mut out.dtau_dq, &mut out.dtau_dv, &mut out.mass_matrix] {
+            s.zeros.clear(m.as_mut_slice());
+        }
         self.derivatives_inward(out.partials(), s);
     }
 }

@@ -143,3 +143,86 @@ fn aba_derivatives_match_dual_numbers() {
         }
     }
 }
+
+/// Two legs standing on the ground (two roots, no common ancestor coordinate): M⁻¹, like M,
+/// has a zero block between them.
+fn two_roots() -> Model {
+    let body = |parent, joint, offset: [f64; 3], k: f64| {
+        Link::new(
+            parent,
+            joint,
+            Vector3::from(offset),
+            1.0 + 0.3 * k,
+            Vector3::new(0.1 * k, -0.2, 0.15),
+            Matrix3::new(0.3, 0.01, 0.02, 0.01, 0.4, -0.03, 0.02, -0.03, 0.5),
+        )
+    };
+    let pin = |x: f64, y: f64, z: f64| Joint::Pin { axis: Vector3::new(x, y, z) };
+    let links = vec![
+        body(None, pin(0.0, 0.0, 1.0), [0.0, 0.0, 0.0], 0.0),
+        body(Some(0), Joint::Ball, [0.5, 0.0, 0.0], 1.0),
+        body(None, Joint::Sleeve { axis: Vector3::x() }, [0.0, 1.0, 0.0], 2.0),
+        body(Some(2), pin(1.0, 0.0, 0.2), [0.0, 0.4, 0.0], 3.0),
+    ];
+    let mut m = Model::new(&links).unwrap();
+    m.gravity = Vector3::new(0.3, -0.2, -9.81);
+    m
+}
+
+/// The `_into` hot paths clear only the entries that are zero whatever the state (those
+/// between branches) and write every other one: output buffers full of NaN (stale, or the
+/// caller's) give the same bits as fresh ones, a reused work space too, and the entries between
+/// branches of M, ∂τ/∂q and ∂τ/∂v are exactly zero.
+#[test]
+fn into_paths_overwrite_stale_buffers() {
+    for m in [tree(), two_roots()] {
+        let (q, v, a, f) = state(&m);
+        let n = m.nv();
+        let nan = |k: &mut DMatrix<f64>| k.fill(f64::NAN);
+        let h = m.crba(&q).unwrap();
+        let (mut h2, mut cs) = (DMatrix::from_element(n, n, f64::NAN), m.crba_scratch());
+        m.crba_into(&q, &mut h2, &mut cs);
+        assert_eq!(h2, h, "crba_into");
+        let rd = m.rnea_derivatives(&q, &v, &a, Some(&f)).unwrap();
+        let ad = m.aba_derivatives(&q, &v, &a, Some(&f)).unwrap();
+        let mut s = m.derivative_scratch();
+        for _ in 0..2 {
+            let mut ro = RneaDerivatives::zeros(&m);
+            [&mut ro.dtau_dq, &mut ro.dtau_dv, &mut ro.mass_matrix].into_iter().for_each(nan);
+            m.rnea_derivatives_into(&q, &v, &a, Some(&f), &mut ro, &mut s);
+            assert_eq!(ro, rd, "rnea_derivatives_into");
+            let mut ao = AbaDerivatives::zeros(&m);
+            [&mut ao.dvdot_dq, &mut ao.dvdot_dv, &mut ao.dvdot_dtau].into_iter().for_each(nan);
+            m.aba_derivatives_into(&q, &v, &a, Some(&f), &mut ao, &mut s).unwrap();
+            assert_eq!(ao, ad, "aba_derivatives_into");
+        }
+        let above = |i: usize, j: usize| {
+            let mut c = m.parent_col[j];
+            while let Some(p) = c {
+                if p == i {
+                    return true;
+                }
+                c = m.parent_col[p];
+            }
+            false
+        };
+        let unrelated: Vec<(usize, usize)> = (0..n)
+            .flat_map(|i| (0..n).map(move |j| (i, j)))
+            .filter(|&(i, j)| i != j && !above(i, j) && !above(j, i))
+            .collect();
+        assert!(!unrelated.is_empty(), "the model has branches");
+        for (i, j) in unrelated {
+            assert_eq!(
+                [h[(i, j)], rd.dtau_dq[(i, j)], rd.dtau_dv[(i, j)], rd.mass_matrix[(i, j)]],
+                [0.0; 4],
+                "({i}, {j})"
+            );
+        }
+    }
+    // with no common ancestor, M⁻¹ is zero between the two legs too
+    let m = two_roots();
+    let (q, v, a, _) = state(&m);
+    let ad = m.aba_derivatives(&q, &v, &a, None).unwrap();
+    assert_eq!(ad.dvdot_dtau[(0, 4)], 0.0);
+    assert_eq!(ad.dvdot_dtau[(4, 0)], 0.0);
+}
