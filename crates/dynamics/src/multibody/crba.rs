@@ -308,6 +308,18 @@ impl CoordLists {
         Self { start, all }
     }
 
+    /// For lists made by [`CoordLists::with_descendants`]: when every coordinate's descendants
+    /// are the coordinates right after it (depth-first order: each subtree a contiguous range
+    /// c..end[c]), `end`; else empty.
+    pub fn contiguous_ends(&self) -> Vec<usize> {
+        let n = self.start.len() - 1;
+        if (0..n).all(|c| self.of(c).iter().enumerate().all(|(x, &a)| a == c + x)) {
+            (0..n).map(|c| c + self.of(c).len()).collect()
+        } else {
+            Vec::new()
+        }
+    }
+
     /// Where the list of coordinate c starts in the flattened lists (c = n: where they end).
     #[inline(always)]
     pub fn offset(&self, c: usize) -> usize {

@@ -43,8 +43,7 @@ impl<T: Scalar> TreeInverse<T> {
     pub fn new(parent_col: &[Option<usize>]) -> Self {
         let n = parent_col.len();
         let (above, below) = (CoordLists::ancestors(parent_col), CoordLists::with_descendants(parent_col));
-        let contiguous = (0..n).all(|c| below.of(c).iter().enumerate().all(|(x, &a)| a == c + x));
-        let end = if contiguous { (0..n).map(|c| c + below.of(c).len()).collect() } else { Vec::new() };
+        let end = below.contiguous_ends();
         let packed = above.total();
         Self {
             parent_col: parent_col.to_vec(),
@@ -274,6 +273,47 @@ mod tests {
             if !contiguous {
                 // coordinates 0..5 hang from the first root, 6 is the second root
                 assert!((0..6).all(|i| out[(i, 6)] == 0.0 && out[(6, i)] == 0.0));
+            }
+        }
+    }
+
+    /// H does not depend on the order the links are listed in: `scattered()` against the same
+    /// links listed depth first, H permuted to match, to 1e-14 relative (the composite inertias
+    /// add children in another order); `contiguous_ends` tells the two orders apart.
+    #[test]
+    fn crba_does_not_depend_on_the_order_of_the_links() {
+        let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
+        let link = |parent, joint, offset: [f64; 3], m| {
+            Link::new(parent, joint, Vector3::from(offset), m, Vector3::new(0.05, -0.1, 0.2), j)
+        };
+        let pin = |x: f64, y: f64, z: f64| Joint::Pin { axis: Vector3::new(x, y, z) };
+        let depth_first = Model::new(&[
+            link(None, pin(0.0, 0.0, 1.0), [0.1, 0.2, 0.3], 3.0),
+            link(Some(0), pin(0.0, 1.0, 0.0), [0.4, 0.1, -0.2], 1.2),
+            link(Some(1), pin(0.3, 0.2, 1.0), [0.0, 0.0, -0.5], 0.7),
+            link(Some(0), Joint::Ball, [-0.4, 0.1, -0.2], 0.9),
+            link(None, Joint::Sleeve { axis: Vector3::x() }, [0.0, 1.0, 0.0], 0.8),
+        ])
+        .expect("valid");
+        let m = scattered();
+        assert!(CoordLists::with_descendants(&m.parent_col).contiguous_ends().is_empty());
+        assert!(!CoordLists::with_descendants(&depth_first.parent_col).contiguous_ends().is_empty());
+        // coordinates of `scattered` in depth-first order: root pin, pin, pin below it, ball, sleeve
+        let order = [0, 1, 5, 2, 3, 4, 6];
+        let tangent = [0.3, -0.2, 0.5, 0.4, -0.7, 0.2, 0.6];
+        let q = m.integrate(&m.q_neutral, &tangent, 1.0).expect("valid");
+        let t2: Vec<f64> = order.iter().map(|&c| tangent[c]).collect();
+        let q2 = depth_first.integrate(&depth_first.q_neutral, &t2, 1.0).expect("valid");
+        let (h, h2) = (m.crba(&q).expect("valid"), depth_first.crba(&q2).expect("valid"));
+        let big = h.iter().fold(0.0_f64, |a, x| if x.abs() > a { x.abs() } else { a });
+        for (i, &a) in order.iter().enumerate() {
+            for (j, &b) in order.iter().enumerate() {
+                assert!(
+                    (h2[(i, j)] - h[(a, b)]).abs() <= 1e-14 * big,
+                    "({i}, {j}): {} vs {}",
+                    h2[(i, j)],
+                    h[(a, b)]
+                );
             }
         }
     }
