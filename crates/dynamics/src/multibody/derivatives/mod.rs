@@ -6,7 +6,7 @@
 #![allow(non_snake_case)]
 
 use nalgebra::{DMatrix, Vector6};
-use vectrix_tensor::Scalar;
+use vectrix_tensor::{FastPath, Scalar};
 
 use super::model::Model;
 use super::spatial::{BodyInertia, Xform};
@@ -237,8 +237,9 @@ impl<T: Scalar> Model<T> {
         // ∂v̇/∂q = −M⁻¹ ∂τ/∂q and ∂v̇/∂v = −M⁻¹ ∂τ/∂v by matrix products
         let result = s.inverse.invert(rd.mass_matrix.as_slice(), out.dvdot_dtau.as_mut_slice());
         if result.is_ok() {
-            out.dvdot_dq.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dq, T::zero());
-            out.dvdot_dv.gemm(-T::one(), &out.dvdot_dtau, &rd.dtau_dv, T::zero());
+            let minv = &out.dvdot_dtau;
+            T::fast_path::<NegProduct<'_>>((minv, &rd.dtau_dq, &mut out.dvdot_dq));
+            T::fast_path::<NegProduct<'_>>((minv, &rd.dtau_dv, &mut out.dvdot_dv));
         }
         s.rnea = Some(rd);
         result
@@ -264,6 +265,27 @@ impl<T: Scalar> Model<T> {
             s.zeros.clear(m.as_mut_slice());
         }
         self.derivatives_inward(out.partials(), s);
+    }
+}
+
+/// out = −A·B for square matrices of one size: nalgebra's `gemm` for every scalar, faer's
+/// sequential product for `f64` (its small-matrix kernels; both choose their SIMD width when the
+/// program runs, so these products are outside the same-bits promise, as docs/robustness.md says).
+struct NegProduct<'a>(std::marker::PhantomData<&'a ()>);
+
+impl<'a> FastPath for NegProduct<'a> {
+    type Input<T: Scalar> = (&'a DMatrix<T>, &'a DMatrix<T>, &'a mut DMatrix<T>);
+    type Output<T: Scalar> = ();
+
+    fn generic<T: Scalar>((a, b, out): Self::Input<T>) {
+        out.gemm(-T::one(), a, b, T::zero());
+    }
+
+    fn f64((a, b, out): Self::Input<f64>) {
+        let n = a.nrows();
+        let view = |m: &'a DMatrix<f64>| faer::MatRef::from_column_major_slice(m.as_slice(), n, n);
+        let dst = faer::MatMut::from_column_major_slice_mut(out.as_mut_slice(), n, n);
+        faer::linalg::matmul::matmul(dst, faer::Accum::Replace, view(a), view(b), -1.0, faer::Par::Seq);
     }
 }
 

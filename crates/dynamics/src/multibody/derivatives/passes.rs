@@ -147,14 +147,15 @@ impl<T: Scalar> Model<T> {
         for i in (0..self.segs.len()).rev() {
             let seg = &self.segs[i];
             let nvi = seg.elem.nv();
-            let (Yc, Bc, Fc) = (s.Yc[i], s.Bc[i], s.Fc[i]);
+            // (by reference: copying the three composites costs more than reading them in place)
+            let (Yc, Bc, Fc) = (&s.Yc[i], &s.Bc[i], &s.Fc[i]);
             for b in seg.vi..seg.vi + nvi {
                 let Jb = s.J[b];
                 let YJ = Yc.apply6(&Jb);
                 let BtJ = Bc.apply_transpose_angular(&Jb);
                 let mut dFdq = Bc.apply(&s.dVdq[b]) + Yc.apply6(&s.dAdq[b]);
                 let dFdv = Bc.apply(&Jb) + Yc.apply6(&s.dAdv[b]);
-                tau[b] = Jb.dot(&Fc);
+                tau[b] = Jb.dot(Fc);
                 // the joint's own columns a (a ball's three): ∂τₐ/∂q_b, ∂τₐ/∂q̇_b, Mₐb
                 for a in seg.vi..seg.vi + nvi {
                     let Ja = &s.J[a];
@@ -163,7 +164,7 @@ impl<T: Scalar> Model<T> {
                     dv[at(a, b)] = Ja.dot(&dFdv);
                 }
                 // for the ancestors' rows, ∂Fᶜ/∂q_b gains the rigid-motion term J_b ×* Fᶜᵢ
-                dFdq += cross_force6(&Jb, &Fc);
+                dFdq += cross_force6(&Jb, Fc);
                 let mut c = self.parent_col[seg.vi];
                 while let Some(a) = c {
                     let (Ja, dV, dAq, dAv) = (&s.J[a], &s.dVdq[a], &s.dAdq[a], &s.dAdv[a]);
@@ -180,9 +181,10 @@ impl<T: Scalar> Model<T> {
                 }
             }
             if let Some(p) = seg.parent {
-                s.Yc[p].add(&Yc);
-                s.Bc[p].add(&Bc);
-                s.Fc[p] += Fc;
+                let (yc, bc, fc) = (s.Yc.split_at_mut(i), s.Bc.split_at_mut(i), s.Fc.split_at_mut(i));
+                yc.0[p].add(&yc.1[0]);
+                bc.0[p].add(&bc.1[0]);
+                fc.0[p] += fc.1[0];
             }
         }
     }
