@@ -202,10 +202,13 @@ pub(crate) fn mass_cholesky<T: Scalar>(m: DMatrix<T>) -> Result<Cholesky<T, Dyn>
     Ok(chol)
 }
 
-/// a·b of two 6-vectors, written out.
+/// a·b of two 6-vectors, written out as the sums of the even and the odd entries (two lanes
+/// of one SSE2 register, then one add), the same sums on every CPU.
 #[inline(always)]
 pub(crate) fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4] + a[5] * b[5]
+    let even = a[0] * b[0] + a[2] * b[2] + a[4] * b[4];
+    let odd = a[1] * b[1] + a[3] * b[3] + a[5] * b[5];
+    even + odd
 }
 
 /// The entries of an n × n column-major matrix indexed by a tree's coordinates that are zero

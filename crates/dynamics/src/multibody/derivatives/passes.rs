@@ -155,13 +155,13 @@ impl<T: Scalar> Model<T> {
                 let BtJ = Bc.apply_transpose_angular(&Jb);
                 let mut dFdq = Bc.apply(&s.dVdq[b]) + Yc.apply6(&s.dAdq[b]);
                 let dFdv = Bc.apply(&Jb) + Yc.apply6(&s.dAdv[b]);
-                tau[b] = Jb.dot(Fc);
+                tau[b] = dot6(&Jb, Fc);
                 // the joint's own columns a (a ball's three): ∂τₐ/∂q_b, ∂τₐ/∂q̇_b, Mₐb
                 for a in seg.vi..seg.vi + nvi {
                     let Ja = &s.J[a];
-                    mm[at(a, b)] = Ja.dot(&YJ);
-                    dq[at(a, b)] = Ja.dot(&dFdq);
-                    dv[at(a, b)] = Ja.dot(&dFdv);
+                    mm[at(a, b)] = dot6(Ja, &YJ);
+                    dq[at(a, b)] = dot6(Ja, &dFdq);
+                    dv[at(a, b)] = dot6(Ja, &dFdv);
                 }
                 // for the ancestors' rows, ∂Fᶜ/∂q_b gains the rigid-motion term J_b ×* Fᶜᵢ
                 dFdq += cross_force6(&Jb, Fc);
