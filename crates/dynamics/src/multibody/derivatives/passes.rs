@@ -32,15 +32,23 @@ impl<T: Scalar> Variation<T> {
     /// P = Ī̇ − n^× with Ī̇ = ω^×Ī − Īω^× − h vᵀ − v hᵀ + 2(v·h)1, (n, f) = I(ω, v); with Ī
     /// symmetric, Īω^× = −(ω^×Ī)ᵀ, so ω^×Ī − Īω^× = K + Kᵀ for K = ω^×Ī (three cross
     /// products).
+    ///
+    /// Written by entries: S = K + Kᵀ − h vᵀ − v hᵀ + 2(v·h)1 is symmetric (six numbers) and
+    /// n^× antisymmetric (three), P = S − n^×.
+    #[inline(always)]
     fn of_body(y: &BodyInertia<T>, w: &Vector3<T>, v: &Vector3<T>) -> Self {
         let (n, f) = y.apply(w, v);
         let K = cross_columns(w, &y.I);
-        let hv = y.h * v.transpose();
-        let two_vh = (v.dot(&y.h)) * T::lit(2.0);
-        let mut P = K + K.transpose() - hv - hv.transpose() - n.cross_matrix();
-        P[(0, 0)] += two_vh;
-        P[(1, 1)] += two_vh;
-        P[(2, 2)] += two_vh;
+        let (h, two_vh) = (&y.h, v.dot(&y.h) * T::lit(2.0));
+        let s = |i: usize, j: usize| K[(i, j)] + K[(j, i)] - (h[i] * v[j] + h[j] * v[i]);
+        let (s01, s02, s12) = (s(0, 1), s(0, 2), s(1, 2));
+        let (d0, d1, d2) = (s(0, 0) + two_vh, s(1, 1) + two_vh, s(2, 2) + two_vh);
+        #[rustfmt::skip]
+        let P = Matrix3::new(
+            d0,        s01 + n.z, s02 - n.y,
+            s01 - n.z, d1,        s12 + n.x,
+            s02 + n.y, s12 - n.x, d2,
+        );
         Self { P, f }
     }
 
