@@ -216,7 +216,10 @@ pub(crate) fn dot6<T: Scalar>(a: &Vector6<T>, b: &Vector6<T>) -> T {
 /// of c (two coordinates on different branches). The mass matrix, ∂τ/∂q and ∂τ/∂v of a tree
 /// have this pattern (RBDA §6.1: branch-induced sparsity), so an algorithm that writes every
 /// other entry clears only these (a whole-matrix fill is n² stores every call; a chain has no
-/// such entries at all). Runs of rows per column, O(n·depth) numbers.
+/// such entries at all), as runs of the column-major slice; runs less than 16 entries apart
+/// are cleared as one, up to 256 entries (the related entries between them are written after
+/// the clear anyway).
+/// O(n·depth) numbers.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ZeroRuns {
     /// Runs [a, b) of the matrix's column-major slice (runs that meet across columns merged).
@@ -229,8 +232,15 @@ impl ZeroRuns {
         let n = parent_col.len();
         let (above, below) = (CoordLists::ancestors(parent_col), CoordLists::with_descendants(parent_col));
         let mut runs: Vec<(usize, usize)> = Vec::new();
+        // runs closer than MERGE entries become one (the entries between them are written
+        // after the clear anyway, and a few stores cost less than another fill), up to CAP
+        // entries: glibc's memset turns to `rep stosb` at 2 KiB, which valgrind counts a byte
+        // at a time, so longer fills would make the instruction counts of
+        // benches/peers/icount_models.sh measure that instead of the stores
+        const MERGE: usize = 16;
+        const CAP: usize = 2048 / 8;
         let mut push = |a: usize, b: usize| match runs.last_mut() {
-            Some(last) if last.1 == a => last.1 = b,
+            Some(last) if a - last.1 <= MERGE && b - last.0 <= CAP => last.1 = b,
             _ => runs.push((a, b)),
         };
         for c in 0..n {
