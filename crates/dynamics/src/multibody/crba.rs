@@ -29,6 +29,10 @@ pub struct CrbaScratch<T: Scalar = f64> {
     tree: CoordLists,
     /// The entries of H that are zero whatever q (the only ones CRBA must clear).
     zeros: ZeroRuns,
+    /// Per coordinate: `Some((k, negative))` when its S is ±e_k (k ≥ 3) in ground coordinates
+    /// whatever q, so Sᵀ F is ±F_k (a slider along a coordinate axis whose orientation is
+    /// the ground's: the sliders of a free joint).
+    pick: Vec<Option<(usize, bool)>>,
 }
 
 /// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
@@ -68,6 +72,7 @@ impl<T: Scalar> Model<T> {
             Ic: vec![BodyInertia::zero(); n],
             tree: CoordLists::ancestors(&self.parent_col),
             zeros: ZeroRuns::of_tree(&self.parent_col),
+            pick: self.ground_axis_columns(),
         }
     }
 
@@ -137,7 +142,11 @@ impl<T: Scalar> Model<T> {
                 let F = s.Ic[i].apply6(&s.S[b]);
                 hs[b + b * n] = dot6(&s.S[b], &F);
                 for &a in s.tree.of(b) {
-                    let hab = dot6(&s.S[a], &F);
+                    let hab = match s.pick[a] {
+                        Some((k, false)) => F[k],
+                        Some((k, true)) => -F[k],
+                        None => dot6(&s.S[a], &F),
+                    };
                     hs[a + b * n] = hab;
                     hs[b + a * n] = hab;
                 }
@@ -147,6 +156,23 @@ impl<T: Scalar> Model<T> {
                 s.Ic[p].add(&ic);
             }
         }
+    }
+
+    /// Per velocity coordinate: `Some((3 + k, negative))` when its motion subspace in ground
+    /// coordinates is (0, ±e_k) whatever q: a slider along a coordinate axis behind a
+    /// placement without rotation, on a parent that keeps the ground's orientation (or at the
+    /// root), as the sliders of a free joint are; `None` otherwise.
+    pub(crate) fn ground_axis_columns(&self) -> Vec<Option<(usize, bool)>> {
+        let mut pick = vec![None; self.nv];
+        for seg in &self.segs {
+            let upright = seg.parent.is_none() || seg.parent_upright;
+            if let (Elem::Prismatic(_), true, true, Some((k, neg))) =
+                (&seg.elem, upright, seg.placement_is_shift, seg.coord_axis)
+            {
+                pick[seg.vi] = Some((3 + k, neg));
+            }
+        }
+        pick
     }
 
     /// Forward dynamics by H(q) v̇ = τ − C(q, v), C from [`Model::rnea`] with v̇ = 0, solved
