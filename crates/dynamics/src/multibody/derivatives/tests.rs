@@ -226,3 +226,57 @@ fn into_paths_overwrite_stale_buffers() {
     assert_eq!(ad.dvdot_dtau[(0, 4)], 0.0);
     assert_eq!(ad.dvdot_dtau[(4, 0)], 0.0);
 }
+
+/// CRBA's picks for sliders along ground axes (`Model::ground_axis_columns`): a root sleeve
+/// along −x̂ carrying a sleeve along ŷ and a pin gives the H of the same model with +x̂ at −q₀
+/// with row and column 0 negated (S₀ flips sign), exactly; a root sleeve behind a turned
+/// placement is not a pick.
+#[test]
+fn crba_picks_follow_the_slider_direction() {
+    let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
+    let build = |x: f64, turned: bool| {
+        let mut root = Link::new(
+            None,
+            Joint::Sleeve { axis: Vector3::new(x, 0.0, 0.0) },
+            Vector3::zeros(),
+            0.0,
+            Vector3::zeros(),
+            Matrix3::zeros(),
+        );
+        if turned {
+            root.orientation =
+                nalgebra::Rotation3::from_scaled_axis(Vector3::new(0.0, 0.0, 0.3)).into_inner();
+        }
+        let links = [
+            root,
+            Link::new(
+                Some(0),
+                Joint::Sleeve { axis: Vector3::y() },
+                Vector3::zeros(),
+                0.5,
+                Vector3::new(0.1, 0.0, 0.0),
+                j,
+            ),
+            Link::new(
+                Some(1),
+                Joint::Pin { axis: Vector3::z() },
+                Vector3::new(0.3, 0.1, 0.0),
+                1.5,
+                Vector3::new(0.4, -0.1, 0.05),
+                j,
+            ),
+        ];
+        Model::new(&links).unwrap()
+    };
+    let (minus, plus) = (build(-1.0, false), build(1.0, false));
+    assert_eq!(minus.ground_axis_columns()[..2], [Some((3, true)), Some((4, false))]);
+    assert_eq!(build(1.0, true).ground_axis_columns()[..2], [None, None]);
+    let q = [0.4, -0.3, 0.7];
+    let (hm, hp) = (minus.crba(&q).unwrap(), plus.crba(&[-0.4, -0.3, 0.7]).unwrap());
+    for r in 0..3 {
+        for c in 0..3 {
+            let sign = if (r == 0) != (c == 0) { -1.0 } else { 1.0 };
+            assert_eq!(hm[(r, c)], sign * hp[(r, c)], "({r}, {c})");
+        }
+    }
+}
