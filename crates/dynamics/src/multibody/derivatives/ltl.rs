@@ -208,13 +208,18 @@ mod tests {
     use crate::multibody::joint::{Joint, Link};
     use crate::multibody::model::Model;
 
+    /// A link of the test trees: centre (0.05, −0.1, 0.2), one central inertia.
+    fn link(parent: Option<usize>, joint: Joint, offset: [f64; 3], m: f64) -> Link {
+        let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
+        Link::new(parent, joint, Vector3::from(offset), m, Vector3::new(0.05, -0.1, 0.2), j)
+    }
+
+    fn pin(x: f64, y: f64, z: f64) -> Joint {
+        Joint::Pin { axis: Vector3::new(x, y, z) }
+    }
+
     /// A floating base with a two-pin leg and a ball leg: a branched column tree.
     fn tree() -> Model {
-        let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
-        let link = |parent, joint, offset: [f64; 3], m| {
-            Link::new(parent, joint, Vector3::from(offset), m, Vector3::new(0.05, -0.1, 0.2), j)
-        };
-        let pin = |x: f64, y: f64, z: f64| Joint::Pin { axis: Vector3::new(x, y, z) };
         Model::new(&[
             link(None, Joint::Free, [0.1, 0.2, 0.3], 3.0),
             link(Some(0), pin(0.0, 1.0, 0.0), [0.4, 0.1, -0.2], 1.2),
@@ -227,11 +232,6 @@ mod tests {
     /// The same links listed breadth first: the ball leg's coordinates come between the pin
     /// leg's, so subtrees are not contiguous (the scattered route).
     fn scattered() -> Model {
-        let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
-        let link = |parent, joint, offset: [f64; 3], m| {
-            Link::new(parent, joint, Vector3::from(offset), m, Vector3::new(0.05, -0.1, 0.2), j)
-        };
-        let pin = |x: f64, y: f64, z: f64| Joint::Pin { axis: Vector3::new(x, y, z) };
         Model::new(&[
             link(None, pin(0.0, 0.0, 1.0), [0.1, 0.2, 0.3], 3.0),
             link(Some(0), pin(0.0, 1.0, 0.0), [0.4, 0.1, -0.2], 1.2),
@@ -282,11 +282,6 @@ mod tests {
     /// add children in another order); `contiguous_ends` tells the two orders apart.
     #[test]
     fn crba_does_not_depend_on_the_order_of_the_links() {
-        let j = Matrix3::new(0.2, 0.01, 0.0, 0.01, 0.15, 0.02, 0.0, 0.02, 0.1);
-        let link = |parent, joint, offset: [f64; 3], m| {
-            Link::new(parent, joint, Vector3::from(offset), m, Vector3::new(0.05, -0.1, 0.2), j)
-        };
-        let pin = |x: f64, y: f64, z: f64| Joint::Pin { axis: Vector3::new(x, y, z) };
         let depth_first = Model::new(&[
             link(None, pin(0.0, 0.0, 1.0), [0.1, 0.2, 0.3], 3.0),
             link(Some(0), pin(0.0, 1.0, 0.0), [0.4, 0.1, -0.2], 1.2),

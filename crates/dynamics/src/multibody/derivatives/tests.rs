@@ -7,17 +7,22 @@ use num_dual::Dual64;
 use super::*;
 use crate::multibody::{Joint, JointWrench, Link};
 
+/// Link k of the test trees: mass 1 + 0.3k, centre (0.1k, −0.2, 0.15), one central inertia.
+fn plain(parent: Option<usize>, joint: Joint, offset: [f64; 3], k: f64) -> Link {
+    Link::new(
+        parent,
+        joint,
+        Vector3::from(offset),
+        1.0 + 0.3 * k,
+        Vector3::new(0.1 * k, -0.2, 0.15),
+        Matrix3::new(0.3, 0.01, 0.02, 0.01, 0.4, -0.03, 0.02, -0.03, 0.5),
+    )
+}
+
 /// A tree with every joint type, off-axis centres, rotated joint frames and gravity.
 fn tree() -> Model {
     let body = |parent, joint, offset: [f64; 3], k: f64| {
-        let mut l = Link::new(
-            parent,
-            joint,
-            Vector3::from(offset),
-            1.0 + 0.3 * k,
-            Vector3::new(0.1 * k, -0.2, 0.15),
-            Matrix3::new(0.3, 0.01, 0.02, 0.01, 0.4, -0.03, 0.02, -0.03, 0.5),
-        );
+        let mut l = plain(parent, joint, offset, k);
         l.orientation = nalgebra::Rotation3::from_scaled_axis(Vector3::new(0.2 * k, -0.1, 0.3)).into_inner();
         l
     };
@@ -147,16 +152,7 @@ fn aba_derivatives_match_dual_numbers() {
 /// Two legs standing on the ground (two roots, no common ancestor coordinate): M⁻¹, like M,
 /// has a zero block between them.
 fn two_roots() -> Model {
-    let body = |parent, joint, offset: [f64; 3], k: f64| {
-        Link::new(
-            parent,
-            joint,
-            Vector3::from(offset),
-            1.0 + 0.3 * k,
-            Vector3::new(0.1 * k, -0.2, 0.15),
-            Matrix3::new(0.3, 0.01, 0.02, 0.01, 0.4, -0.03, 0.02, -0.03, 0.5),
-        )
-    };
+    let body = plain;
     let pin = |x: f64, y: f64, z: f64| Joint::Pin { axis: Vector3::new(x, y, z) };
     let links = vec![
         body(None, pin(0.0, 0.0, 1.0), [0.0, 0.0, 0.0], 0.0),
