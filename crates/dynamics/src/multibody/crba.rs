@@ -7,7 +7,7 @@ use nalgebra::{Cholesky, DMatrix, DVector, Dyn, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
-use super::model::Model;
+use super::model::{Model, Trig};
 use super::segment::Segment;
 use super::spatial::{BodyInertia, Xform, join};
 
@@ -29,6 +29,8 @@ pub struct CrbaScratch<T: Scalar = f64> {
     tree: CoordLists,
     /// The entries of H that are zero whatever q (the only ones CRBA must clear).
     zeros: ZeroRuns,
+    /// The revolute joints' sines and cosines, computed together.
+    trig: Trig<T>,
     /// Per coordinate: `Some((k, negative))` when its S is ±e_k (k ≥ 3) in ground coordinates
     /// whatever q, so Sᵀ F is ±F_k (a slider along a coordinate axis whose orientation is
     /// the ground's: the sliders of a free joint).
@@ -72,6 +74,7 @@ impl<T: Scalar> Model<T> {
             Ic: vec![BodyInertia::zero(); n],
             tree: CoordLists::ancestors(&self.parent_col),
             zeros: ZeroRuns::of_tree(&self.parent_col),
+            trig: Trig::of(self),
             pick: self.ground_axis_columns(),
         }
     }
@@ -118,8 +121,9 @@ impl<T: Scalar> Model<T> {
         assert_eq!(h.shape(), (self.nv, self.nv), "crba_into: h must be nv × nv");
         // outward: ground placement of every segment, its S in ground coordinates, and its
         // own inertia about the ground origin
+        s.trig.fill(q);
         for (i, seg) in self.segs.iter().enumerate() {
-            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]));
+            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]), s.trig.get(i));
             world_subspace(seg, &w, &mut s.S[seg.vi..]);
             s.Ic[i] = if seg.massless {
                 BodyInertia::zero()

@@ -214,14 +214,16 @@ impl<T: Scalar> Elem<T> {
         }
     }
 
-    /// The joint transform for the coordinates `q` (length nq).
+    /// The joint transform for the coordinates `q` (length nq); `sc`: a revolute joint's
+    /// (sin θ, cos θ) when the caller has it (computed with the other joints'), else computed
+    /// here (the same bits either way).
     #[inline(always)]
-    pub fn xform(&self, q: &[T]) -> Xform<T> {
+    pub fn xform(&self, q: &[T], sc: Option<(T, T)>) -> Xform<T> {
         match self {
             Elem::Revolute(a) => {
                 // passive rotation about a by θ: E = 𝓡(a, θ)ᵀ = c 1 − s a^× + (1 − c) a aᵀ
                 // (Rodrigues (2.11.1), transposed)
-                let (s, c) = q[0].fast_sin_cos();
+                let (s, c) = sc.unwrap_or_else(|| q[0].fast_sin_cos());
                 let (o, z0) = (T::one(), T::zero());
                 // about a coordinate axis (±x̂, ±ŷ, ±ẑ): the same matrix with its zeros and
                 // ones exact, and 30 fewer operations

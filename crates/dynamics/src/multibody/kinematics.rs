@@ -44,7 +44,7 @@ impl<T: Scalar> Model<T> {
         let mut world: Vec<Xform<T>> = Vec::with_capacity(n);
         let mut tw: Vec<BodyTwist<T>> = Vec::with_capacity(n);
         for (i, seg) in self.segs.iter().enumerate() {
-            let x = self.seg_xform(i, q);
+            let x = self.seg_xform(i, q, None);
             let (wp, vp, xw) = match seg.parent {
                 Some(p) => (tw[p].0, tw[p].1, world[p].then(&x)),
                 None => (Vector3::zeros(), Vector3::zeros(), x),

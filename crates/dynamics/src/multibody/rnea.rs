@@ -5,7 +5,7 @@ use nalgebra::Vector3;
 use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
-use super::model::Model;
+use super::model::{Model, Trig};
 use super::spatial::{Xform, cross_force};
 use super::wrench::{JointWrench, LinkWrenches};
 use crate::DynamicsError;
@@ -44,7 +44,7 @@ impl<T: Scalar> Model<T> {
         self.check_v(vdot, "v̇")?;
         self.check_wrenches(f_ext)?;
         let mut tau = vec![T::zero(); self.nv];
-        let mut scratch = Scratch::new(self.segs.len());
+        let mut scratch = Scratch::new(self);
         self.rnea_into(q, v, vdot, f_ext, &mut tau, &mut scratch);
         let wrenches: Vec<JointWrench<T>> = self
             .link_seg
@@ -90,9 +90,10 @@ impl<T: Scalar> Model<T> {
         s: &mut Scratch<T>,
     ) {
         let a0 = -self.gravity;
+        s.trig.fill(q);
         // outward pass: 𝒱_i = X_i 𝒱_p + S q̇_i, 𝒜_i = X_i 𝒜_p + S q̈_i + 𝒱_i ×m S q̇_i
         for (i, seg) in self.segs.iter().enumerate() {
-            let x = self.seg_xform(i, q);
+            let x = self.seg_xform(i, q, s.trig.get(i));
             let ((wp, vp), (ap, lp)) = match seg.parent {
                 Some(p) => ((s.w[p], s.v[p]), (s.aw[p], s.av[p])),
                 None => ((Vector3::zeros(), Vector3::zeros()), (Vector3::zeros(), a0)),
@@ -187,11 +188,14 @@ pub struct Scratch<T: Scalar = f64> {
     pub(crate) av: Vec<Vector3<T>>,
     pub(crate) n: Vec<Vector3<T>>,
     pub(crate) f: Vec<Vector3<T>>,
+    /// The revolute joints' sines and cosines, computed together.
+    trig: Trig<T>,
 }
 
 impl<T: Scalar> Scratch<T> {
-    /// Work space for `segments` segments (use [`Model::scratch`]).
-    pub(crate) fn new(segments: usize) -> Self {
+    /// Work space for `model` (use [`Model::scratch`]).
+    pub(crate) fn new(model: &Model<T>) -> Self {
+        let segments = model.segs.len();
         let z = vec![Vector3::zeros(); segments];
         Self {
             x: vec![Xform::identity(); segments],
@@ -201,6 +205,7 @@ impl<T: Scalar> Scratch<T> {
             av: z.clone(),
             n: z.clone(),
             f: z,
+            trig: Trig::of(model),
         }
     }
 }
@@ -208,6 +213,6 @@ impl<T: Scalar> Scratch<T> {
 impl<T: Scalar> Model<T> {
     /// A work space sized for this model, for the `_unchecked` hot paths.
     pub fn scratch(&self) -> Scratch<T> {
-        Scratch::new(self.segs.len())
+        Scratch::new(self)
     }
 }

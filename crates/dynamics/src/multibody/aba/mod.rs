@@ -7,7 +7,7 @@ use nalgebra::{Matrix3, Matrix6x3, Vector3, Vector6};
 use vectrix_tensor::Scalar;
 
 use super::articulated::Articulated;
-use super::model::Model;
+use super::model::{Model, Trig};
 use super::planar::PlanarWork;
 use super::spatial::Xform;
 use super::wrench::{JointWrench, LinkWrenches};
@@ -30,6 +30,8 @@ pub struct AbaScratch<T: Scalar = f64> {
     v: Vec<Vector3<T>>,
     /// ρᵢ ≥ the distance from segment i's origin to every centre of mass of its subtree.
     reach: Vec<f64>,
+    /// The revolute joints' sines and cosines, computed together.
+    trig: Trig<T>,
     /// Per free root (`Model::free_roots`): whether its 6×6 solve was taken, and its y.
     root_fast: Vec<bool>,
     root_y: Vec<Vector6<T>>,
@@ -53,6 +55,7 @@ impl<T: Scalar> Model<T> {
             w: vec![Vector3::zeros(); n],
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
+            trig: Trig::of(self),
             root_fast: vec![false; self.free_roots.len()],
             root_y: vec![Vector6::zeros(); self.free_roots.len()],
             pl: self.planar.as_ref().map(|_| PlanarWork::new(n)),
@@ -177,6 +180,7 @@ impl<T: Scalar> Model<T> {
         for (k, &l) in self.ball_links.iter().enumerate() {
             self.ball_leaf_accelerations(k, q, v, tau, f_ext.map(|fe| &fe[l]), vdot);
         }
+        s.trig.fill(q);
         self.aba_outward(q, v, s);
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
@@ -215,7 +219,7 @@ impl<T: Scalar> Model<T> {
         let (vi, m, c, j_c) = (slide.vi, body.inertia.m, body.com, body.j_c);
         let j_c_inv = &self.free_jc_inv[k];
         // 𝓞_{B/J} of the ball, and 𝓞_{B/G} = 𝓞_{B/J} 𝓞_{J/G} for the gravity
-        let e_bj = body.elem.xform(&q[body.qi..]).E;
+        let e_bj = body.elem.xform(&q[body.qi..], None).E;
         let g_b = e_bj * (slide.placement.E * self.gravity);
         let w = Vector3::new(v[vi + 3], v[vi + 4], v[vi + 5]);
         let mut force = g_b * m + e_bj * Vector3::new(tau[vi], tau[vi + 1], tau[vi + 2]);
@@ -253,7 +257,7 @@ impl<T: Scalar> Model<T> {
         let b = &self.segs[self.ball_leaves[k]];
         let vi = b.vi;
         // 𝓞_{B/J} of the ball, and g resolved in B through 𝓞_{J/G} of the placement
-        let g_b = b.elem.xform(&q[b.qi..]).E * (b.placement.E * self.gravity);
+        let g_b = b.elem.xform(&q[b.qi..], None).E * (b.placement.E * self.gravity);
         let w = Vector3::new(v[vi], v[vi + 1], v[vi + 2]);
         let j_o = &b.inertia.I;
         let mut moment = Vector3::new(tau[vi], tau[vi + 1], tau[vi + 2]) + b.inertia.h.cross(&g_b);

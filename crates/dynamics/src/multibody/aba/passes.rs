@@ -29,7 +29,7 @@ impl<T: Scalar> Model<T> {
             if self.aba_skip[i] {
                 continue;
             }
-            let x = self.seg_xform(i, q);
+            let x = self.seg_xform(i, q, s.trig.get(i));
             let (wp, vp) = match seg.parent {
                 Some(p) => (s.w[p], s.v[p]),
                 None => (Vector3::zeros(), Vector3::zeros()),

@@ -8,7 +8,7 @@
 use nalgebra::{DMatrix, Vector6};
 use vectrix_tensor::{FastPath, Scalar};
 
-use super::model::Model;
+use super::model::{Model, Trig};
 use super::spatial::{BodyInertia, Xform};
 use super::wrench::LinkWrenches;
 use crate::DynamicsError;
@@ -122,6 +122,8 @@ pub struct DerivativeScratch<T: Scalar = f64> {
     inverse: ltl::TreeInverse<T>,
     /// The entries of M, ∂τ/∂q and ∂τ/∂v that are zero whatever the state.
     zeros: super::crba::ZeroRuns,
+    /// The revolute joints' sines and cosines, computed together.
+    trig: Trig<T>,
     rnea: Option<Box<RneaDerivatives<T>>>,
     aba: Option<super::aba::AbaScratch<T>>,
 }
@@ -144,6 +146,7 @@ impl<T: Scalar> Model<T> {
             dAdv: vec![Vector6::zeros(); nv],
             inverse: ltl::TreeInverse::new(&self.parent_col),
             zeros: super::crba::ZeroRuns::of_tree(&self.parent_col),
+            trig: Trig::of(self),
             rnea: None,
             aba: None,
         }

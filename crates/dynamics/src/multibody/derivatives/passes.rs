@@ -92,8 +92,9 @@ impl<T: Scalar> Model<T> {
         s: &mut DerivativeScratch<T>,
     ) {
         let minus_g = join(&Vector3::zeros(), &(-self.gravity));
+        s.trig.fill(q);
         for (i, seg) in self.segs.iter().enumerate() {
-            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]));
+            let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]), s.trig.get(i));
             let (ov_p, oa_p) = match seg.parent {
                 Some(p) => (s.ov[p], s.oa[p]),
                 None => (Vector6::zeros(), minus_g),

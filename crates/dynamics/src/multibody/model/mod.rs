@@ -14,6 +14,7 @@ mod build;
 mod poses;
 
 pub use poses::PosesScratch;
+pub(crate) use poses::Trig;
 
 /// A validated kinematic tree in reduced coordinates, ready for RNEA, ABA and CRBA, generic
 /// over the scalar: `Model` is `Model<f64>`; [`Model::cast`] gives the same tree over dual

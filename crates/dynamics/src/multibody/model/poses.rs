@@ -12,11 +12,12 @@ use crate::multibody::joint::{Elem, Pose};
 use crate::multibody::spatial::Xform;
 
 impl<T: Scalar> Model<T> {
-    /// The joint-to-parent transform of every segment at q (placement ∘ joint).
+    /// The joint-to-parent transform of every segment at q (placement ∘ joint); `sc` as in
+    /// `Elem::xform` (a [`Trig`]'s entry for segment i).
     #[inline(always)]
-    pub(crate) fn seg_xform(&self, i: usize, q: &[T]) -> Xform<T> {
+    pub(crate) fn seg_xform(&self, i: usize, q: &[T], sc: Option<(T, T)>) -> Xform<T> {
         let s = &self.segs[i];
-        let j = s.elem.xform(&q[s.qi..]);
+        let j = s.elem.xform(&q[s.qi..], sc);
         if s.placement_is_shift {
             // placement E = 1: placement ∘ joint = (E_joint, r_placement + r_joint)
             Xform { E: j.E, r: s.placement.r + j.r }
@@ -29,12 +30,18 @@ impl<T: Scalar> Model<T> {
     /// parent ∘ placement ∘ joint. A pin about a coordinate axis behind a placement without
     /// rotation mixes two rows of the parent's orientation (12 products instead of 27).
     #[inline(always)]
-    pub(crate) fn world_xform(&self, i: usize, q: &[T], parent: Option<&Xform<T>>) -> Xform<T> {
+    pub(crate) fn world_xform(
+        &self,
+        i: usize,
+        q: &[T],
+        parent: Option<&Xform<T>>,
+        sc: Option<(T, T)>,
+    ) -> Xform<T> {
         let s = &self.segs[i];
         if let (Some(p), true, Elem::Revolute(_), Some((axis, negative))) =
             (parent, s.placement_is_shift, &s.elem, s.coord_axis)
         {
-            let (sn, c) = q[s.qi].fast_sin_cos();
+            let (sn, c) = sc.unwrap_or_else(|| q[s.qi].fast_sin_cos());
             let sn = if negative { -sn } else { sn };
             let r = p.r + p.E.tr_mul(&s.placement.r);
             // 𝓞_{i/G} = 𝓞_k(θ) 𝓞_{p/G}: rows (i1, i2) turn by θ, the axis row stays
@@ -53,7 +60,7 @@ impl<T: Scalar> Model<T> {
             let shift = s.placement.r + a * q[s.qi];
             return Xform { E: p.E, r: p.r + if s.parent_upright { shift } else { p.E.tr_mul(&shift) } };
         }
-        let x = self.seg_xform(i, q);
+        let x = self.seg_xform(i, q, sc);
         match parent {
             // the parent's orientation is exactly the ground's (1 ∘ x: a shift)
             Some(p) if s.parent_upright => Xform { E: x.E, r: p.r + x.r },
@@ -82,7 +89,7 @@ impl<T: Scalar> Model<T> {
         let world = &mut world.0;
         world.clear();
         for (i, s) in self.segs.iter().enumerate() {
-            let w = self.world_xform(i, q, s.parent.map(|p| &world[p]));
+            let w = self.world_xform(i, q, s.parent.map(|p| &world[p]), None);
             world.push(w);
         }
         out.clear();
@@ -93,10 +100,59 @@ impl<T: Scalar> Model<T> {
     pub(crate) fn world_xforms(&self, q: &[T]) -> Vec<Xform<T>> {
         let mut world: Vec<Xform<T>> = Vec::with_capacity(self.segs.len());
         for (i, s) in self.segs.iter().enumerate() {
-            let w = self.world_xform(i, q, s.parent.map(|p| &world[p]));
+            let w = self.world_xform(i, q, s.parent.map(|p| &world[p]), None);
             world.push(w);
         }
         world
+    }
+}
+
+/// The sines and cosines of every revolute segment's angle at one q, computed together by
+/// `Scalar::fast_sin_cos_slices` (vector lanes where the CPU has them; the same bits as one
+/// `fast_sin_cos` each, on every CPU), for the outward passes of the hot paths.
+#[derive(Debug, Clone)]
+pub(crate) struct Trig<T: Scalar> {
+    /// q index and segment of each revolute segment, in segment order.
+    qi: Vec<usize>,
+    seg: Vec<usize>,
+    x: Vec<T>,
+    sin: Vec<T>,
+    cos: Vec<T>,
+    /// Per segment: (sin θ, cos θ) of a revolute one (unused for the others).
+    sc: Vec<(T, T)>,
+}
+
+impl<T: Scalar> Trig<T> {
+    /// The work space for `model`'s revolute segments.
+    pub fn of(model: &Model<T>) -> Self {
+        let (mut qi, mut seg) = (Vec::new(), Vec::new());
+        for (i, s) in model.segs.iter().enumerate() {
+            if let Elem::Revolute(_) = s.elem {
+                qi.push(s.qi);
+                seg.push(i);
+            }
+        }
+        let (k, n) = (qi.len(), model.segs.len());
+        let z = vec![T::zero(); k];
+        Self { qi, seg, x: z.clone(), sin: z.clone(), cos: z, sc: vec![(T::zero(), T::one()); n] }
+    }
+
+    /// sin θ, cos θ of every revolute segment at `q`.
+    #[inline]
+    pub fn fill(&mut self, q: &[T]) {
+        for (x, &k) in self.x.iter_mut().zip(&self.qi) {
+            *x = q[k];
+        }
+        T::fast_sin_cos_slices(&self.x, &mut self.sin, &mut self.cos);
+        for ((&i, &s), &c) in self.seg.iter().zip(&self.sin).zip(&self.cos) {
+            self.sc[i] = (s, c);
+        }
+    }
+
+    /// (sin θ, cos θ) of segment i, read only by a revolute segment's transform.
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> Option<(T, T)> {
+        Some(self.sc[i])
     }
 }
 
@@ -159,5 +215,36 @@ mod tests {
         let tol = 4.0 * f64::EPSILON;
         assert!((poses[0].0 - e0).amax() <= tol && (poses[0].1 - r0).amax() <= tol, "{poses:?}");
         assert!((poses[1].0 - e1).amax() <= tol && (poses[1].1 - r1).amax() <= 2.0 * tol, "{poses:?}");
+    }
+
+    /// The batched sines and cosines are those of each joint on its own, bit for bit (in and
+    /// beyond the kernel's range, at ±0, and NaN), so every transform is the same with or
+    /// without them: a 13-pin chain (above one vector of lanes) at hostile angles.
+    #[test]
+    fn batched_sines_and_cosines_are_each_joints_own() {
+        use vectrix_tensor::Scalar;
+
+        use super::Trig;
+        let m = Model::revolute_chain(13, 1.0, 0.5).expect("valid");
+        let q = [0.0, -0.0, 1e-300, 3.0, -3.2, 1e5, 2e5 + 1.0, -7e5, 1e300, f64::NAN, 0.7, 1.5, -2.5];
+        let mut t = Trig::of(&m);
+        t.fill(&q);
+        let mut seen = 0;
+        for (i, seg) in m.segs.iter().enumerate() {
+            if let crate::multibody::joint::Elem::Revolute(_) = seg.elem {
+                let (s, c) = q[seg.qi].fast_sin_cos();
+                let (bs, bc) = t.get(i).expect("revolute");
+                assert_eq!((bs.to_bits(), bc.to_bits()), (s.to_bits(), c.to_bits()), "q = {}", q[seg.qi]);
+                let (a, b) = (m.seg_xform(i, &q, None), m.seg_xform(i, &q, t.get(i)));
+                assert!(
+                    a.E.iter()
+                        .chain(a.r.iter())
+                        .zip(b.E.iter().chain(b.r.iter()))
+                        .all(|(x, y)| x.to_bits() == y.to_bits())
+                );
+                seen += 1;
+            }
+        }
+        assert_eq!(seen, 13);
     }
 }
