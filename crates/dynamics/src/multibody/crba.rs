@@ -128,7 +128,14 @@ impl<T: Scalar> Model<T> {
             s.Ic[i] = if seg.massless {
                 BodyInertia::zero()
             } else {
-                BodyInertia::from_centre_in_ground(seg.inertia.m, &seg.com, &seg.j_c, &w.E, &w.r)
+                BodyInertia::from_centre_in_ground(
+                    seg.inertia.m,
+                    &seg.com,
+                    &seg.j_c,
+                    seg.j_c_diagonal,
+                    &w.E,
+                    &w.r,
+                )
             };
             s.world[i] = w;
         }

@@ -23,6 +23,9 @@ pub(crate) struct Segment<T: Scalar> {
     /// The same body as mass m (in `inertia`), centre c and J_c, link components.
     pub com: Vector3<T>,
     pub j_c: Matrix3<T>,
+    /// J_c is diagonal (principal link axes): `BodyInertia::from_centre_in_ground` then scales
+    /// rows instead of multiplying matrices.
+    pub j_c_diagonal: bool,
     /// Zero mass and zero inertia (intermediate segments of compound joints, massless links).
     pub massless: bool,
     /// Scales for ABA's singularity tests (real numbers, configuration-independent): the
@@ -55,6 +58,7 @@ impl Segment<f64> {
             inertia: self.inertia.cast(),
             com: self.com.map(U::lit),
             j_c: self.j_c.map(U::lit),
+            j_c_diagonal: self.j_c_diagonal,
             massless: self.massless,
             sub_mass: self.sub_mass,
             sub_trace: self.sub_trace,

@@ -123,13 +123,15 @@ impl<T: Scalar> BodyInertia<T> {
         m: T,
         c: &Vector3<T>,
         j_c: &Matrix3<T>,
+        diagonal: bool,
         E: &Matrix3<T>,
         p: &Vector3<T>,
     ) -> Self {
         let cw = p + E.tr_mul(c);
         // R J_c Rᵀ = Eᵀ(J_c E), symmetric: six entries (column i of E · column k of J_c E);
-        // a diagonal J_c (principal link axes) scales the rows of E
-        let je = if j_c[(0, 1)] == T::zero() && j_c[(0, 2)] == T::zero() && j_c[(1, 2)] == T::zero() {
+        // a diagonal J_c (principal link axes, `diagonal`: known when the model is built)
+        // scales the rows of E
+        let je = if diagonal {
             let mut je = *E;
             for r in 0..3 {
                 let l = j_c[(r, r)];
@@ -251,7 +253,12 @@ mod tests {
         let body = BodyInertia::from_centre(2.1, &c, &j);
         let x = Xform { E: e, r: p };
         let want = x.matrix().transpose() * body.matrix() * x.matrix();
-        let got = BodyInertia::from_centre_in_ground(2.1, &c, &j, &e, &p).matrix();
+        let got = BodyInertia::from_centre_in_ground(2.1, &c, &j, false, &e, &p).matrix();
+        assert!((got - want).norm() < 1e-14 * want.norm(), "{}", (got - want).norm());
+        // a diagonal J_c by its rows
+        let d = Matrix3::from_diagonal(&Vector3::new(1.0, 1.5, 0.8));
+        let want = x.matrix().transpose() * BodyInertia::from_centre(2.1, &c, &d).matrix() * x.matrix();
+        let got = BodyInertia::from_centre_in_ground(2.1, &c, &d, true, &e, &p).matrix();
         assert!((got - want).norm() < 1e-14 * want.norm(), "{}", (got - want).norm());
     }
 }

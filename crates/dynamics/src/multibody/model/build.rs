@@ -252,6 +252,7 @@ fn expand_segments(links: &[Link], order: &[usize], expanded: &[Vec<Elem<f64>>])
                 inertia,
                 com,
                 j_c,
+                j_c_diagonal: j_c[(0, 1)] == 0.0 && j_c[(0, 2)] == 0.0 && j_c[(1, 2)] == 0.0,
                 sub_mass,
                 sub_trace,
                 own_reach,
