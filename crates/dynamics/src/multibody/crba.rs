@@ -125,18 +125,7 @@ impl<T: Scalar> Model<T> {
         for (i, seg) in self.segs.iter().enumerate() {
             let w = self.world_xform(i, q, seg.parent.map(|p| &s.world[p]), s.trig.get(i));
             world_subspace(seg, &w, &mut s.S[seg.vi..]);
-            s.Ic[i] = if seg.massless {
-                BodyInertia::zero()
-            } else {
-                BodyInertia::from_centre_in_ground(
-                    seg.inertia.m,
-                    &seg.com,
-                    &seg.j_c,
-                    seg.j_c_diagonal,
-                    &w.E,
-                    &w.r,
-                )
-            };
+            s.Ic[i] = if seg.massless { BodyInertia::zero() } else { seg.ground_inertia(&w) };
             s.world[i] = w;
         }
         let n = self.nv;

@@ -46,6 +46,23 @@ pub(crate) struct Segment<T: Scalar> {
     pub turn: Turn,
 }
 
+impl<T: Scalar> Segment<T> {
+    /// The body's inertia about the ground origin, ground components, when the segment's
+    /// ground-to-segment transform is `w` (`BodyInertia::from_centre_in_ground` with this
+    /// segment's mass, centre and J_c).
+    #[inline(always)]
+    pub fn ground_inertia(&self, w: &Xform<T>) -> BodyInertia<T> {
+        BodyInertia::from_centre_in_ground(
+            self.inertia.m,
+            &self.com,
+            &self.j_c,
+            self.j_c_diagonal,
+            &w.E,
+            &w.r,
+        )
+    }
+}
+
 impl Segment<f64> {
     /// The same segment with every number converted exactly from f64.
     pub(crate) fn cast<U: Scalar>(&self) -> Segment<U> {

@@ -122,14 +122,7 @@ impl<T: Scalar> Model<T> {
                 s.Bc[i] = Variation::zero();
                 s.Fc[i] = Vector6::zeros();
             } else {
-                let Y = BodyInertia::from_centre_in_ground(
-                    seg.inertia.m,
-                    &seg.com,
-                    &seg.j_c,
-                    seg.j_c_diagonal,
-                    &w.E,
-                    &w.r,
-                );
+                let Y = seg.ground_inertia(&w);
                 let (ow, ovl) = split(&ov);
                 let h = Y.apply6(&ov);
                 s.Fc[i] = Y.apply6(&oa) + cross_force6(&ov, &h);
