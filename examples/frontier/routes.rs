@@ -1,13 +1,13 @@
 //! The vectrix side of the frontier: every problem through the library (every integrator that
-//! applies: the adaptive pairs at a ladder of tolerances, the fixed-step methods at a ladder
-//! of step counts) and through scenes (both pairs at the same ladder of tolerances).
+//! applies: the adaptive pairs, extrapolation and, on the closed-form problems, the Taylor
+//! method at a ladder of tolerances, the fixed-step methods at a ladder of step counts) and through scenes (both pairs at the same ladder of tolerances).
 
 use nalgebra::SVector;
 use serde_json::{Value, json};
 use vectrix::frames::Frame;
 use vectrix::ode::explicit::{Adaptive, Extrapolation, Stepper, integrate_fixed};
 use vectrix::ode::harness::{Reference, Separable};
-use vectrix::ode::{GaussLegendre, LieMethod, RK4, integrate_lie, stormer_verlet};
+use vectrix::ode::{GaussLegendre, LieMethod, RK4, Taylor, TaylorRhs, integrate_lie, stormer_verlet};
 use vectrix::scene::Scene;
 
 use crate::problems::{
@@ -174,6 +174,19 @@ impl Ctx {
         }
     }
 
+    /// The Taylor integrator at every tolerance, on a problem whose right-hand side is also
+    /// written over series ([`TaylorRhs`]: the closed-form problems).
+    pub fn taylor<const N: usize, R: Reference<N> + TaylorRhs<N>>(&mut self, id: &str, p: &R) {
+        let (y0, t_end) = (p.y0(), p.t_end());
+        let err = |y: &[f64]| p.error(&SVector::<f64, N>::from_column_slice(y));
+        let tols = self.tolerances();
+        let run = |tol: f64| -> Outcome {
+            let s = Taylor::new().rtol(tol).atol(tol).solve(p, 0.0, &y0, t_end).map_err(|e| e.to_string())?;
+            Ok((s.last().as_slice().to_vec(), s.work.fevals))
+        };
+        self.ladder(id, "library", "Taylor", "rtol", &tols, run, err);
+    }
+
     /// Störmer–Verlet on a separable problem y = (q, v).
     pub fn verlet<const N: usize, const M: usize, R: Reference<N> + Separable<M>>(
         &mut self,
@@ -251,6 +264,7 @@ impl Ctx {
         let id = "rigid-body";
         let rb = rigid_body();
         self.library(id, &rb);
+        self.taylor(id, &rb);
         self.lie(id);
         let exact = rb.exact_omega(rb.t_end);
         // the scene's state is (quaternion, ω in link components)
@@ -261,6 +275,7 @@ impl Ctx {
     pub fn kepler(&mut self) {
         let id = "kepler-e0.9";
         self.library(id, &KEPLER);
+        self.taylor(id, &KEPLER);
         self.verlet(id, &KEPLER);
         let exact = KEPLER.exact(KEPLER.t_end());
         // the scene's state is (x, y, z, quaternion, ẋ, ẏ, ż, ω)
@@ -271,6 +286,7 @@ impl Ctx {
     pub fn pendulum(&mut self) {
         let id = "pendulum";
         self.library(id, &PENDULUM);
+        self.taylor(id, &PENDULUM);
         self.verlet(id, &PENDULUM);
         let exact = PENDULUM.exact(PENDULUM.t_end());
         self.scene(

@@ -14,6 +14,9 @@
 //!   evaluation for `Vec` or `DVector` states; the same bits), both a [`Rhs`];
 //! * Gauss–Legendre collocation ([`GaussLegendre`]: implicit midpoint, 2 and 3 stages, Newton
 //!   with the dense LU of [`implicit::DenseLu`]) and Störmer–Verlet ([`stormer_verlet`]);
+//! * Taylor series integration ([`Taylor`]: order 10–20 series of a smooth right-hand side
+//!   written over [`taylor::Var`], by automatic differentiation, Jorba & Zou's order and step
+//!   size; dense output from the series);
 //! * Lie-group methods for attitude ([`LieMethod`]: exponential Euler, RKMK4,
 //!   Crouch–Grossman) over a small [`LieGroup`] trait, and the exact quaternion step
 //!   [`quaternion_exact_step`] (4.11.17);
@@ -62,6 +65,7 @@ mod rhs;
 mod solver;
 mod state;
 mod stiffness;
+pub mod taylor;
 mod work;
 
 pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow, STIFF_ACCURACY_TABLE, StiffRow};
@@ -80,6 +84,7 @@ pub use rhs::{InPlace, Rhs};
 pub use solver::Solver;
 pub use state::State;
 pub use stiffness::{Choice, STIFF_CHECK_EVERY, STIFF_H_RHO, STIFF_MIN_STEPS};
+pub use taylor::{Taylor, TaylorRhs};
 pub use work::Work;
 
 /// `use vectrix_ode::prelude::*;`

@@ -8,7 +8,7 @@ use crate::state::State;
 /// collocation polynomial y(t + θh) = c₀ + s(c₁ + (s − c₂ + 1)(c₂' + (s − c₁ + 1)c₃)) with
 /// s = θ − 1 through the step's end and its three stages (order 3 uniformly, exact at the
 /// collocation points); for BDF the polynomial through the last k + 1 points in backward
-/// differences (Shampine & Reichelt 1997).
+/// differences (Shampine & Reichelt 1997); for a Taylor step its series Σ cₖθᵏ.
 ///
 /// Book: §4.11; HNW §II.6 (dense output), `contd5`/`contd8` of `dopri5.f`/`dop853.f`; HW
 /// §IV.8 and `contr5` of `radau5.f` (Radau IIA collocation polynomial).
@@ -32,6 +32,8 @@ pub(crate) enum Form {
     /// BDF's interpolating polynomial in backward differences D₀ … Dₖ on the grid of the
     /// given step about the step's end.
     Bdf(f64),
+    /// A Taylor step's series in θ: y(t + θh) = Σₖ cₖ θᵏ (cₖ = xₖhᵏ).
+    Taylor,
 }
 
 impl<S: State> DenseStep<S> {
@@ -50,6 +52,13 @@ impl<S: State> DenseStep<S> {
                 for (oi, x) in o.iter_mut().zip(cj.iter()) {
                     *oi += prod * x;
                 }
+            }
+            return out;
+        }
+        if self.form == Form::Taylor {
+            // Horner's rule in θ
+            for (i, oi) in o.iter_mut().enumerate() {
+                *oi = c.iter().rev().fold(0.0, |acc, ck| acc * s + ck[i]);
             }
             return out;
         }

@@ -5,6 +5,7 @@ use core::f64::consts::PI;
 use nalgebra::{SVector, Vector2, Vector4};
 
 use super::elliptic::{elliptic_k, sncndn};
+use crate::taylor::Var;
 
 /// A reference problem y′ = f(t, y), y(0) = y₀ on [0, t_end] with a known exact solution.
 ///
@@ -105,6 +106,13 @@ impl Reference<2> for Pendulum {
     }
 }
 
+/// θ̈ = −sin θ as series (the Taylor integrator).
+impl crate::taylor::TaylorRhs<2> for Pendulum {
+    fn eval<'a>(&self, _: Var<'a>, y: &[Var<'a>; 2]) -> [Var<'a>; 2] {
+        [y[1], -y[0].sin()]
+    }
+}
+
 impl Separable<1> for Pendulum {
     fn accel(&self, q: &SVector<f64, 1>) -> SVector<f64, 1> {
         q.map(|x| -x.sin())
@@ -162,6 +170,14 @@ impl Reference<4> for Kepler {
         let b = (1.0 - e * e).sqrt();
         let de = 1.0 / (1.0 - e * ea.cos());
         Vector4::new(ea.cos() - e, b * ea.sin(), -ea.sin() * de, b * ea.cos() * de)
+    }
+}
+
+/// r̈ = −r u with u = (x² + y²)^(−3/2), as series (the Taylor integrator).
+impl crate::taylor::TaylorRhs<4> for Kepler {
+    fn eval<'a>(&self, _: Var<'a>, y: &[Var<'a>; 4]) -> [Var<'a>; 4] {
+        let u = (y[0].square() + y[1].square()).powf(-1.5);
+        [y[2], y[3], -(y[0] * u), -(y[1] * u)]
     }
 }
 

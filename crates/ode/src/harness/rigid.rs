@@ -54,6 +54,30 @@ pub fn quaternion_rate(q: &Vector4<f64>, w: &Vector3<f64>) -> Vector4<f64> {
     Vector4::new(-0.5 * e.dot(w), de[0], de[1], de[2])
 }
 
+/// Euler's equations and q̇ = ½ q ⊗ (0, ω) as series (the Taylor integrator), the same
+/// formulas as [`euler_equations`] and [`quaternion_rate`].
+impl crate::taylor::TaylorRhs<7> for RigidBody {
+    fn eval<'a>(
+        &self,
+        _: crate::taylor::Var<'a>,
+        y: &[crate::taylor::Var<'a>; 7],
+    ) -> [crate::taylor::Var<'a>; 7] {
+        let i = self.inertia;
+        let (w, eta, e) = ([y[0], y[1], y[2]], y[3], [y[4], y[5], y[6]]);
+        // ½ (η ω + ε × ω)
+        let de = |a: usize, b: usize, c: usize| (eta * w[a] + (e[b] * w[c] - e[c] * w[b])) * 0.5;
+        [
+            w[1] * w[2] * ((i[1] - i[2]) / i[0]),
+            w[2] * w[0] * ((i[2] - i[0]) / i[1]),
+            w[0] * w[1] * ((i[0] - i[1]) / i[2]),
+            (e[0] * w[0] + e[1] * w[1] + e[2] * w[2]) * -0.5,
+            de(0, 1, 2),
+            de(1, 2, 0),
+            de(2, 0, 1),
+        ]
+    }
+}
+
 impl RigidBody {
     /// Exact body angular velocity at t.
     pub fn exact_omega(&self, t: f64) -> Vector3<f64> {
