@@ -165,22 +165,6 @@ pub enum OdeError {
         /// The valid range.
         valid: &'static str,
     },
-    /// A right-hand side of the Taylor integrator made another number of operations on a later
-    /// pass of a step than on its first (its operations depended on something that changed
-    /// between the passes).
-    #[error(
-        "the right-hand side made {got} operations on pass {pass} of the Taylor step from t = {t}, {expected} on the first pass; its operations must be the same on every pass"
-    )]
-    TaylorTraceChanged {
-        /// Start of the step.
-        t: f64,
-        /// The pass (order) that differed.
-        pass: usize,
-        /// Operations on that pass (so far).
-        got: usize,
-        /// Operations on the first pass.
-        expected: usize,
-    },
     /// The Jacobian ∂f/∂y has a NaN or infinite entry.
     #[error(
         "Jacobian ∂f/∂y has {value} at row {row}, column {col} at t = {t}, state {}; every entry must be finite",

@@ -21,7 +21,7 @@ use std::time::Instant;
 
 use nalgebra::SVector;
 
-use series::Jets;
+use series::Tape;
 pub use series::Var;
 
 use crate::explicit::{DenseStep, Form, Solution};
@@ -45,9 +45,9 @@ use crate::{OdeError, Work};
 /// }
 /// ```
 ///
-/// The operations must be the same on every call (no branch on anything that changes between
-/// the passes of a step; a [`Var`] has no value to branch on): a different count is refused
-/// with [`OdeError::TaylorTraceChanged`].
+/// `eval` runs once per solve, to record its operations, which every step then repeats on the
+/// series (a [`Var`] has no value to branch on: a right-hand side that must branch on the state
+/// is not one for this method).
 ///
 /// Book: §4.11; Griewank & Walther §13.2.
 pub trait TaylorRhs<const N: usize> {
@@ -132,7 +132,7 @@ impl Solver<TaylorOrder> {
     /// [`OdeError::InvalidSetting`] (an order outside 2 ..= 60); during the run:
     /// [`OdeError::RhsNotFinite`] (a coefficient of f's series is not finite: f or one of its
     /// derivatives is singular at the step's start, e.g. √x at x = 0),
-    /// [`OdeError::TaylorTraceChanged`], [`OdeError::StepSizeUnderflow`],
+    /// [`OdeError::StepSizeUnderflow`],
     /// [`OdeError::TooManySteps`].
     pub fn solve<const N: usize, F: TaylorRhs<N>>(
         &self,
@@ -148,7 +148,7 @@ impl Solver<TaylorOrder> {
             return Err(OdeError::InvalidSetting { name: "order", value: p, valid: "2 ..= 60" });
         }
         check_state(t0, y0)?;
-        let mut run = Series::new(p, N);
+        let mut run = Series::record(p, f);
         let mut work = Work::default();
         let (mut t, mut y) = (t0, *y0);
         let (mut ts, mut ys, mut dense) = (vec![t0], vec![*y0], Vec::new());
@@ -156,7 +156,7 @@ impl Solver<TaylorOrder> {
             if work.accepted >= self.max_steps {
                 return Err(OdeError::TooManySteps { t, max_steps: self.max_steps });
             }
-            run.expand(f, t, &y, &mut work)?;
+            run.expand(t, &y, &mut work)?;
             let eps = self.atol + self.rtol * y.amax();
             let mut h = run.step_size(eps).min(h_max);
             // the last step lands exactly on t1 (as the Runge–Kutta pairs: within 1 % of it)
@@ -197,57 +197,51 @@ impl Default for Solver<TaylorOrder> {
     }
 }
 
-/// The series of one step: the state's coefficients x₀ … x_p (the inputs of `jets`) and the
-/// right-hand side's quantities.
+/// The series of one step: the right-hand side's recorded operations and the coefficient
+/// store (the state's x₀ … x_p first, then t's, then every operation's result).
 struct Series {
     p: usize,
     n: usize,
-    jets: Jets,
+    tape: Tape,
+    /// Where f's components are in the store.
+    out: Vec<usize>,
+    c: Vec<f64>,
 }
 
 impl Series {
-    fn new(p: usize, n: usize) -> Self {
-        Self { p, n, jets: Jets::new(p, n + 1, 16) }
+    /// Records f's operations (f runs once, on [`Var`]s).
+    fn record<const N: usize, F: TaylorRhs<N>>(p: usize, f: &F) -> Self {
+        let tape = Tape::new(p, N + 1);
+        let out = {
+            let ys: [Var<'_>; N] = core::array::from_fn(|i| tape.input(i));
+            f.eval(tape.input(N), &ys).map(|v| v.at()).to_vec()
+        };
+        let c = vec![0.0; tape.store_len()];
+        Self { p, n: N, tape, out, c }
     }
 
-    /// The coefficients x₁ … x_p of the solution through (t, y): p passes of f, pass k giving
-    /// fₖ and xₖ₊₁ = fₖ/(k + 1).
-    fn expand<const N: usize, F: TaylorRhs<N>>(
+    /// The coefficients x₁ … x_p of the solution through (t, y): p passes of the tape, pass k
+    /// giving fₖ and xₖ₊₁ = fₖ/(k + 1).
+    fn expand<const N: usize>(
         &mut self,
-        f: &F,
         t: f64,
         y: &SVector<f64, N>,
         work: &mut Work,
     ) -> Result<(), OdeError> {
-        let p = self.p;
-        let stride = p + 1;
+        let (p, stride) = (self.p, self.p + 1);
         for (i, yi) in y.iter().enumerate() {
-            self.jets.set(i, 0, *yi);
+            self.c[i * stride] = *yi;
         }
-        // t + s: coefficients t, 1, 0, …
-        self.jets.set(N, 0, t);
-        self.jets.set(N, 1, 1.0);
-        let mut k = 0;
-        while k < p {
-            self.jets.begin(k);
-            let out: [usize; N] = {
-                let jets = &self.jets;
-                let ys: [Var<'_>; N] = core::array::from_fn(|i| jets.var(i * stride));
-                f.eval(jets.var(N * stride), &ys).map(|v| v.at())
-            };
+        // t + s: coefficients t, 1, 0, … (the zeros from the store's start, never written)
+        self.c[N * stride] = t;
+        self.c[N * stride + 1] = 1.0;
+        for k in 0..p {
+            self.tape.pass(k, &mut self.c);
             work.fevals += 1;
-            if k == 0 && self.jets.overflowed() {
-                // the first pass found more operations than there was room for: again, larger
-                self.jets.grow();
-                continue;
-            }
-            let (expected, got) = (self.jets.recorded_operations(), self.jets.operations_this_pass());
-            if !self.jets.end() {
-                return Err(OdeError::TaylorTraceChanged { t, pass: k, got, expected });
-            }
-            for (i, &at) in out.iter().enumerate() {
-                let fk = self.jets.coef(at, k);
-                let v = fk / (k + 1) as f64;
+            let div = f64::from((k + 1) as u32);
+            for (i, &at) in self.out.iter().enumerate() {
+                let fk = self.c[at + k];
+                let v = fk / div;
                 if !v.is_finite() {
                     return Err(OdeError::RhsNotFinite {
                         t,
@@ -257,16 +251,20 @@ impl Series {
                         value: fk,
                     });
                 }
-                self.jets.set(i, k + 1, v);
+                self.c[i * stride + k + 1] = v;
             }
-            k += 1;
         }
         Ok(())
     }
 
+    /// Coefficient k of component i.
+    fn x(&self, i: usize, k: usize) -> f64 {
+        self.c[i * (self.p + 1) + k]
+    }
+
     /// ‖xₖ‖∞ over the components.
     fn norm(&self, k: usize) -> f64 {
-        (0..self.n).map(|i| self.jets.get(i, k).abs()).fold(0.0, f64::max)
+        (0..self.n).map(|i| self.x(i, k).abs()).fold(0.0, f64::max)
     }
 
     /// Jorba & Zou's step: min over k ∈ {p − 1, p} of (ε/‖xₖ‖)^{1/k}, times e^{−0.7/(p−1)};
@@ -285,7 +283,7 @@ impl Series {
 
     /// Σₖ xₖ hᵏ by Horner's rule.
     fn sum<const N: usize>(&self, h: f64) -> SVector<f64, N> {
-        SVector::from_fn(|i, _| (0..=self.p).rev().fold(0.0, |acc, k| acc * h + self.jets.get(i, k)))
+        SVector::from_fn(|i, _| (0..=self.p).rev().fold(0.0, |acc, k| acc * h + self.x(i, k)))
     }
 
     /// The step's series as dense output: coefficients xₖhᵏ of θ ∈ [0, 1].
@@ -294,7 +292,7 @@ impl Series {
         let mut hk = 1.0;
         let c = (0..stride)
             .map(|k| {
-                let v = SVector::from_fn(|i, _| self.jets.get(i, k) * hk);
+                let v = SVector::from_fn(|i, _| self.x(i, k) * hk);
                 hk *= h;
                 v
             })
