@@ -30,7 +30,7 @@ use crate::state::check_state;
 use crate::{OdeError, Work};
 
 /// A right-hand side y′ = f(t, y) the Taylor integrator can expand: written once over
-/// [`Var`]s, the quantities of one pass of the series (operators and `sqrt`, `powf`, `exp`,
+/// [`Var`]s, the series of its quantities (operators and `sqrt`, `powf`, `exp`,
 /// `ln`, `sin`, `cos` as on `f64`).
 ///
 /// ```
@@ -95,8 +95,9 @@ pub const TAYLOR_MAX_ORDER: usize = 60;
 /// # Ok::<(), vectrix_ode::OdeError>(())
 /// ```
 ///
-/// `work.fevals` counts passes of the right-hand side (p a step: each pass computes one more
-/// order of every quantity, at a cost that grows with the order); `work.accepted` the steps.
+/// `work.fevals` counts passes over the right-hand side's recorded operations (p a step: each
+/// pass computes one more order of every quantity, at a cost that grows with the order);
+/// `work.accepted` the steps.
 ///
 /// Book: §4.11; Jorba & Zou §3.
 pub type Taylor = Solver<TaylorOrder>;
