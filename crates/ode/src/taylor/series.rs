@@ -301,34 +301,24 @@ impl<'a> Var<'a> {
     }
 }
 
-impl<'a> Add for Var<'a> {
-    type Output = Var<'a>;
-    fn add(self, b: Var<'a>) -> Var<'a> {
-        self.op(Op::Add(self.at, b.at))
-    }
+/// The operators between two quantities, each one recorded operation.
+macro_rules! binary {
+    ($($tr:ident $f:ident $op:ident $doc:literal;)*) => {$(
+        impl<'a> $tr for Var<'a> {
+            type Output = Var<'a>;
+            #[doc = $doc]
+            fn $f(self, b: Var<'a>) -> Var<'a> {
+                self.op(Op::$op(self.at, b.at))
+            }
+        }
+    )*};
 }
 
-impl<'a> Sub for Var<'a> {
-    type Output = Var<'a>;
-    fn sub(self, b: Var<'a>) -> Var<'a> {
-        self.op(Op::Sub(self.at, b.at))
-    }
-}
-
-impl<'a> Mul for Var<'a> {
-    type Output = Var<'a>;
-    /// The Cauchy product cₖ = Σⱼ₌₀..ₖ aⱼ bₖ₋ⱼ.
-    fn mul(self, b: Var<'a>) -> Var<'a> {
-        self.op(Op::Mul(self.at, b.at))
-    }
-}
-
-impl<'a> Div for Var<'a> {
-    type Output = Var<'a>;
-    /// cₖ = (aₖ − Σⱼ₌₁..ₖ bⱼ cₖ₋ⱼ)/b₀ (c b = a); the divisor must not vanish.
-    fn div(self, b: Var<'a>) -> Var<'a> {
-        self.op(Op::Div(self.at, b.at))
-    }
+binary! {
+    Add add Add "cₖ = aₖ + bₖ.";
+    Sub sub Sub "cₖ = aₖ − bₖ.";
+    Mul mul Mul "The Cauchy product cₖ = Σⱼ₌₀..ₖ aⱼ bₖ₋ⱼ.";
+    Div div Div "cₖ = (aₖ − Σⱼ₌₁..ₖ bⱼ cₖ₋ⱼ)/b₀ (c b = a); the divisor must not vanish.";
 }
 
 impl<'a> Neg for Var<'a> {
