@@ -554,4 +554,74 @@ cases! {
             assert!(e <= 1e-8, "km {km}: {e}");
         }
     }
+
+    // The Taylor method: hostile tolerances, steps, states, ends and orders are refused or give
+    // finite answers; each elementary function of the series at a hostile state is refused or
+    // finite, at its singular point (√ and ln at 0, x^−1.5 at 0, e^x past overflow, a blow-up)
+    // refused, and on the ODE it solves in closed form (y′ = g(y)) it ends on that solution.
+    taylor ["Solver::order", "Solver::effective_order", "TaylorRhs::eval", "Var::constant", "Var::sqrt",
+        "Var::powf", "Var::exp", "Var::ln", "Var::sin", "Var::cos", "Var::sin_cos", "Var::square"] {
+        use vectrix::ode::taylor::{Taylor, TaylorRhs, Var};
+        use nalgebra::Vector1;
+        struct Osc;
+        impl TaylorRhs<2> for Osc {
+            fn eval<'a>(&self, _: Var<'a>, y: &[Var<'a>; 2]) -> [Var<'a>; 2] {
+                [y[1], -y[0]]
+            }
+        }
+        /// y′ = g(y) for one function g of the series.
+        struct One(fn(Var<'_>) -> Var<'_>);
+        impl TaylorRhs<1> for One {
+            fn eval<'a>(&self, _: Var<'a>, y: &[Var<'a>; 1]) -> [Var<'a>; 1] {
+                [(self.0)(y[0])]
+            }
+        }
+        let y0 = Vector2::new(1.0, 0.0);
+        // (g, y(0), the closed-form y(1)) for every function of the series
+        let e = std::f64::consts::E;
+        let cases: [(One, f64, f64); 9] = [
+            (One(|v| v.constant(2.0)), 1.0, 3.0),
+            (One(|v| v.sqrt()), 1.0, 2.25),
+            (One(|v| v.powf(-1.0)), 1.0, 3f64.sqrt()),
+            (One(|v| (-v).exp()), 0.0, 2f64.ln()),
+            (One(|v| v * v.ln()), e, e.exp()),
+            (One(|v| v.sin()), std::f64::consts::FRAC_PI_2, 2.0 * e.atan()),
+            (One(|v| v.cos()), 0.0, 2.0 * (0.5f64).tanh().atan()),
+            (One(|v| v.sin_cos().1), 0.0, 2.0 * (0.5f64).tanh().atan()),
+            (One(|v| -v.square()), 1.0, 0.5),
+        ];
+        for (g, a, end) in &cases {
+            let s = Taylor::new().rtol(1e-12).atol(1e-12).solve(g, 0.0, &Vector1::new(*a), 1.0).unwrap();
+            // 100× the local tolerance over one time unit
+            assert!((s.last()[0] - end).abs() <= 1e-10 * end.abs().max(1.0), "y(0) = {a}: {} vs {end}", s.last()[0]);
+        }
+        for x in hostile() {
+            // a step cap of 10⁴: a hostile end 1e300 away is refused after 10⁴ steps, not 10⁶
+            let t = Taylor::new().max_steps(10_000);
+            err_or(t.rtol(x).solve(&Osc, 0.0, &y0, 1.0), "taylor(hostile rtol)", |s| fin(s.last().as_slice()));
+            err_or(t.atol(x).solve(&Osc, 0.0, &y0, 1.0), "taylor(hostile atol)", |s| fin(s.last().as_slice()));
+            err_or(t.h0(x).h_max(x).solve(&Osc, 0.0, &y0, 1.0), "taylor(hostile h)", |s| fin(s.last().as_slice()));
+            err_or(t.solve(&Osc, 0.0, &Vector2::new(x, 0.0), 1.0), "taylor(hostile y0)", |s| fin(s.last().as_slice()));
+            err_or(t.solve(&Osc, 0.0, &y0, x), "taylor(hostile t1)", |s| fin(s.last().as_slice()));
+            err_or(t.solve(&Osc, x, &y0, 1.0), "taylor(hostile t0)", |s| fin(s.last().as_slice()));
+            let p = Taylor::new().rtol(x).atol(x).effective_order();
+            assert!((4..=30).contains(&p), "effective_order at tolerance {x}: {p}");
+            for (g, _, _) in &cases {
+                err_or(t.solve(g, 0.0, &Vector1::new(x), 1.0), "taylor(g, hostile y0)", |s| fin(s.last().as_slice()));
+            }
+        }
+        for p in [0, 1, 61, 1000, usize::MAX] {
+            refused(Taylor::new().order(p).solve(&Osc, 0.0, &y0, 1.0), "order out of range");
+        }
+        let singular: [(One, f64, &str); 5] = [
+            (One(|v| v.sqrt()), 0.0, "√y at 0"),
+            (One(|v| v.ln()), 0.0, "ln y at 0"),
+            (One(|v| v.powf(-1.5)), 0.0, "y^−1.5 at 0"),
+            (One(|v| v.exp()), 710.0, "e^y past overflow"),
+            (One(|v| v.square()), 1.0, "y′ = y² blows up at t = 1"),
+        ];
+        for (g, a, what) in &singular {
+            refused(Taylor::new().max_steps(10_000).solve(g, 0.0, &Vector1::new(*a), 2.0), what);
+        }
+    }
 }
