@@ -100,97 +100,7 @@ impl Tape {
         let kf = f64::from(k as u32);
         for &(op, o) in self.ops.borrow().iter() {
             let v = match op {
-                Op::Const(v) => {
-                    if k == 0 {
-                        v
-                    } else {
-                        0.0
-                    }
-                }
-                Op::Add(a, b) => c[a + k] + c[b + k],
-                Op::Sub(a, b) => c[a + k] - c[b + k],
-                Op::Mul(a, b) => conv(&c[a..=a + k], &c[b..=b + k], 0, k),
-                Op::Div(a, b) => {
-                    if k == 0 {
-                        c[a] / c[b]
-                    } else {
-                        (c[a + k] - conv(&c[b..=b + k], &c[o..=o + k], 1, k)) / c[b]
-                    }
-                }
-                Op::Neg(a) => -c[a + k],
-                Op::Square(a) => {
-                    let x = &c[a..=a + k];
-                    let half = k.div_ceil(2);
-                    let mut v = if half > 0 { 2.0 * conv(x, x, 0, half - 1) } else { 0.0 };
-                    if k.is_multiple_of(2) {
-                        v += x[k / 2] * x[k / 2];
-                    }
-                    v
-                }
-                Op::AddC(a, v) => {
-                    if k == 0 {
-                        c[a] + v
-                    } else {
-                        c[a + k]
-                    }
-                }
-                Op::MulC(a, v) => c[a + k] * v,
-                Op::DivC(a, v) => c[a + k] / v,
-                Op::CSub(v, a) => {
-                    if k == 0 {
-                        v - c[a]
-                    } else {
-                        -c[a + k]
-                    }
-                }
-                Op::CDiv(v, b) => {
-                    if k == 0 {
-                        v / c[b]
-                    } else {
-                        -conv(&c[b..=b + k], &c[o..=o + k], 1, k) / c[b]
-                    }
-                }
-                Op::Sqrt(a) => {
-                    if k == 0 {
-                        c[a].sqrt()
-                    } else {
-                        let s = &c[o..=o + k];
-                        (c[a + k] - conv(s, s, 1, k - 1)) / (2.0 * c[o])
-                    }
-                }
-                Op::Powf(a, alpha) => {
-                    if k == 0 {
-                        c[a].powf(alpha)
-                    } else {
-                        // Σⱼ₌₀..ₖ₋₁ (α(k − j) − j) aₖ₋ⱼ cⱼ / (k a₀); the weight from αk, less α + 1 a term
-                        let (mut s, mut w) = (0.0, alpha * kf);
-                        for (cj, akj) in c[o..o + k].iter().zip(c[a + 1..=a + k].iter().rev()) {
-                            s += w * akj * cj;
-                            w -= alpha + 1.0;
-                        }
-                        s / (kf * c[a])
-                    }
-                }
-                Op::Exp(a) => {
-                    if k == 0 {
-                        c[a].exp()
-                    } else {
-                        wconv(&c[a..=a + k], &c[o..=o + k]) / kf
-                    }
-                }
-                Op::Ln(a) => {
-                    if k == 0 {
-                        c[a].ln()
-                    } else {
-                        // Σⱼ₌₁..ₖ₋₁ j cⱼ aₖ₋ⱼ (the term j = k is cₖ itself)
-                        let (mut s, mut j) = (0.0, 0.0);
-                        for (cj, akj) in c[o + 1..o + k].iter().zip(c[a + 1..a + k].iter().rev()) {
-                            j += 1.0;
-                            s += j * cj * akj;
-                        }
-                        (c[a + k] - s / kf) / c[a]
-                    }
-                }
+                Op::Sqrt(_) | Op::Powf(..) | Op::Exp(_) | Op::Ln(_) => elementary(op, o, k, kf, c),
                 Op::SinCos(a) => {
                     let oc = o + self.stride;
                     let (sv, cv) = if k == 0 {
@@ -213,9 +123,117 @@ impl Tape {
                     c[oc + k] = cv;
                     sv
                 }
+                _ => arithmetic(op, o, k, c),
             };
             c[o + k] = v;
         }
+    }
+}
+
+/// Coefficient k of the result (at `o`) of +, −, ×, ÷, negation, square or a constant.
+#[inline(always)]
+fn arithmetic(op: Op, o: usize, k: usize, c: &[f64]) -> f64 {
+    match op {
+        Op::Const(v) => {
+            if k == 0 {
+                v
+            } else {
+                0.0
+            }
+        }
+        Op::Add(a, b) => c[a + k] + c[b + k],
+        Op::Sub(a, b) => c[a + k] - c[b + k],
+        Op::Mul(a, b) => conv(&c[a..=a + k], &c[b..=b + k], 0, k),
+        Op::Div(a, b) => {
+            if k == 0 {
+                c[a] / c[b]
+            } else {
+                (c[a + k] - conv(&c[b..=b + k], &c[o..=o + k], 1, k)) / c[b]
+            }
+        }
+        Op::Neg(a) => -c[a + k],
+        Op::Square(a) => {
+            let x = &c[a..=a + k];
+            let half = k.div_ceil(2);
+            let mut v = if half > 0 { 2.0 * conv(x, x, 0, half - 1) } else { 0.0 };
+            if k.is_multiple_of(2) {
+                v += x[k / 2] * x[k / 2];
+            }
+            v
+        }
+        Op::AddC(a, v) => {
+            if k == 0 {
+                c[a] + v
+            } else {
+                c[a + k]
+            }
+        }
+        Op::MulC(a, v) => c[a + k] * v,
+        Op::DivC(a, v) => c[a + k] / v,
+        Op::CSub(v, a) => {
+            if k == 0 {
+                v - c[a]
+            } else {
+                -c[a + k]
+            }
+        }
+        Op::CDiv(v, b) => {
+            if k == 0 {
+                v / c[b]
+            } else {
+                -conv(&c[b..=b + k], &c[o..=o + k], 1, k) / c[b]
+            }
+        }
+        _ => unreachable!("an elementary function or sin/cos, handled by the caller"),
+    }
+}
+
+/// Coefficient k of the result (at `o`) of √, x^α, eˣ or ln.
+#[inline(always)]
+fn elementary(op: Op, o: usize, k: usize, kf: f64, c: &[f64]) -> f64 {
+    match op {
+        Op::Sqrt(a) => {
+            if k == 0 {
+                c[a].sqrt()
+            } else {
+                let s = &c[o..=o + k];
+                (c[a + k] - conv(s, s, 1, k - 1)) / (2.0 * c[o])
+            }
+        }
+        Op::Powf(a, alpha) => {
+            if k == 0 {
+                c[a].powf(alpha)
+            } else {
+                // Σⱼ₌₀..ₖ₋₁ (α(k − j) − j) aₖ₋ⱼ cⱼ / (k a₀); the weight from αk, less α + 1 a term
+                let (mut s, mut w) = (0.0, alpha * kf);
+                for (cj, akj) in c[o..o + k].iter().zip(c[a + 1..=a + k].iter().rev()) {
+                    s += w * akj * cj;
+                    w -= alpha + 1.0;
+                }
+                s / (kf * c[a])
+            }
+        }
+        Op::Exp(a) => {
+            if k == 0 {
+                c[a].exp()
+            } else {
+                wconv(&c[a..=a + k], &c[o..=o + k]) / kf
+            }
+        }
+        Op::Ln(a) => {
+            if k == 0 {
+                c[a].ln()
+            } else {
+                // Σⱼ₌₁..ₖ₋₁ j cⱼ aₖ₋ⱼ (the term j = k is cₖ itself)
+                let (mut s, mut j) = (0.0, 0.0);
+                for (cj, akj) in c[o + 1..o + k].iter().zip(c[a + 1..a + k].iter().rev()) {
+                    j += 1.0;
+                    s += j * cj * akj;
+                }
+                (c[a + k] - s / kf) / c[a]
+            }
+        }
+        _ => unreachable!("an arithmetic operation, handled by the caller"),
     }
 }
 
