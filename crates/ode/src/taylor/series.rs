@@ -346,32 +346,29 @@ impl<'a> Neg for Var<'a> {
     }
 }
 
-impl<'a> Add<f64> for Var<'a> {
-    type Output = Var<'a>;
-    fn add(self, v: f64) -> Var<'a> {
-        self.op(Op::AddC(self.at, v))
-    }
+/// The operators with a constant on the right, each one recorded operation (x − v is x + (−v)).
+macro_rules! with_constant {
+    ($($tr:ident $f:ident $op:ident $doc:literal;)*) => {$(
+        impl<'a> $tr<f64> for Var<'a> {
+            type Output = Var<'a>;
+            #[doc = $doc]
+            fn $f(self, v: f64) -> Var<'a> {
+                self.op(Op::$op(self.at, v))
+            }
+        }
+    )*};
+}
+
+with_constant! {
+    Add add AddC "c₀ = a₀ + v, cₖ = aₖ.";
+    Mul mul MulC "cₖ = aₖ v.";
+    Div div DivC "cₖ = aₖ / v, coefficient by coefficient (not x·(1/v), which would round twice).";
 }
 
 impl<'a> Sub<f64> for Var<'a> {
     type Output = Var<'a>;
     fn sub(self, v: f64) -> Var<'a> {
         self + (-v)
-    }
-}
-
-impl<'a> Mul<f64> for Var<'a> {
-    type Output = Var<'a>;
-    fn mul(self, v: f64) -> Var<'a> {
-        self.op(Op::MulC(self.at, v))
-    }
-}
-
-impl<'a> Div<f64> for Var<'a> {
-    type Output = Var<'a>;
-    /// x/v coefficient by coefficient (not x·(1/v), which would round twice).
-    fn div(self, v: f64) -> Var<'a> {
-        self.op(Op::DivC(self.at, v))
     }
 }
 
