@@ -1,15 +1,17 @@
 //! Contacts during a run: touch events that are never stepped over, and resting contact once
 //! bounces accumulate.
 //!
-//! **Touch events.** A contact is *armed* while its gap is positive. On every accepted step the
+//! **Touch events.** A contact is *armed* once its gap exceeds half its resolution (8 ulps of
+//! the lengths it is computed from), or is positive and closing. On every accepted step the
 //! gaps of the armed contacts are followed along the step's interpolant: the step is cut into
 //! [`SCAN_SEGMENTS`] pieces, and a piece [a, b] is split until it is provably clear or short.
 //! The gap is 1-Lipschitz in the position it follows (the normal part of the centre of a sphere
 //! on a plane, the separation x_a − x_b of two spheres), so on a piece whose path length is ℓ the gap stays
 //! above (g_a + g_b − ℓ)/2: the piece is clear when g_a + g_b > ℓ, with ℓ estimated as the larger
 //! of twice the chord and 1.5 × the largest speed × the piece's duration. A contact that starts
-//! a step touching and opening (just after its impact) is armed at its first positive gap,
-//! found by probes at t₀ + h/2ᵏ, so the flight after a bounce is followed like any other: this
+//! a step touching and opening (just after its impact, placed on its surface to a rounding
+//! either side) is armed at its first gap above half its resolution, found by probes at
+//! t₀ + h/2ᵏ, so the flight after a bounce is followed like any other: this
 //! is what let a ball fall through the floor after its first bounce before. The first closing piece is bracketed
 //! to a few ulps of t (Illinois secant, [`bracket_zero`]).
 //!
@@ -34,6 +36,7 @@ use vectrix_ode::explicit::{DenseStep, bracket_zero};
 use super::Scene;
 use super::kin::{Kin, kinematics};
 use super::parts::Effect;
+use super::resting::GAP_ULPS;
 
 /// Segments every step is first cut into when its contacts are scanned.
 pub(crate) const SCAN_SEGMENTS: usize = 4;
@@ -61,6 +64,9 @@ pub(crate) struct Gap {
     pub opening: f64,
     /// The contact's size (r_a + r_b, or r).
     pub size: f64,
+    /// The gap's resolution: [`GAP_ULPS`] ulps of the lengths it is computed from (the
+    /// centres' and the plane point's distances from the origin and the size).
+    pub resolution: f64,
 }
 
 /// +1 when the nearer stop is the lower one (the gap opens with q̇ > 0), −1 for the upper.
@@ -71,13 +77,15 @@ pub(crate) fn side(q: f64, lower: f64, upper: f64) -> f64 {
 /// The gap of a stop at (q, q̇): min(q − lower, upper − q), following q itself.
 pub(crate) fn stop_gap(q: f64, v: f64, lower: f64, upper: f64) -> Gap {
     let finite = |x: f64| if x.is_finite() { x.abs() } else { 0.0 };
+    // the scale of the tolerances: 1 rad (or m), or the stops' own size
+    let size = 1.0_f64.max(finite(lower)).max(finite(upper));
     Gap {
         gap: (q - lower).min(upper - q),
         pos: Vector3::new(q, 0.0, 0.0),
         rate: Vector3::new(v, 0.0, 0.0),
         opening: side(q, lower, upper) * v,
-        // the scale of the tolerances: 1 rad (or m), or the stops' own size
-        size: 1.0_f64.max(finite(lower)).max(finite(upper)),
+        size,
+        resolution: GAP_ULPS * f64::EPSILON * size,
     }
 }
 
@@ -154,14 +162,16 @@ impl Scene {
                     let ((xa, va), (xb, vb)) = (c(*a), c(*b));
                     let (d, u) = (xa - xb, va - vb);
                     let opening = u.dot(&d) / d.norm().max(f64::MIN_POSITIVE);
-                    Some(Gap { gap: d.norm() - ra - rb, pos: d, rate: u, opening, size: ra + rb })
+                    let resolution = GAP_ULPS * f64::EPSILON * (xa.norm() + xb.norm() + ra + rb);
+                    Some(Gap { gap: d.norm() - ra - rb, pos: d, rate: u, opening, size: ra + rb, resolution })
                 }
                 Effect::Plane { body, r, point, n, .. } => {
                     // the gap follows the centre's normal part alone: sliding along the plane
                     // does not make its path long
                     let (x, v) = c(*body);
                     let (gap, opening) = ((x - point).dot(n) - r, v.dot(n));
-                    Some(Gap { gap, pos: n * x.dot(n), rate: n * opening, opening, size: *r })
+                    let resolution = GAP_ULPS * f64::EPSILON * (x.norm() + point.norm() + r);
+                    Some(Gap { gap, pos: n * x.dot(n), rate: n * opening, opening, size: *r, resolution })
                 }
                 Effect::JointStop { qi, vi, lower, upper, .. } => {
                     Some(stop_gap(y[*qi], y[self.built.model.nq() + vi], *lower, *upper))
@@ -194,16 +204,21 @@ impl Scene {
         floor: f64,
     ) -> Result<Option<f64>, String> {
         let gaps_at = |t: f64| self.gaps(&dense.eval(t));
-        let mut armed: Vec<bool> = g0.iter().map(|g| g.gap > 0.0).collect();
+        // a contact within half its gap's resolution of touching is not armed unless it
+        // closes: just after its impact (or lift-off) it may sit a rounding above its surface,
+        // and the next rounding below would be a touch that is not one
+        let arms = |g: &Gap| g.gap > 0.5 * g.resolution;
+        let mut armed: Vec<bool> = g0.iter().map(|g| arms(g) || (g.gap > 0.0 && g.opening < 0.0)).collect();
         let mut left = (t0, g0.to_vec());
         // the step's pieces; a contact that starts touching and opening (just after its
-        // impact) arms at its first positive gap: probes at t₀ + h/2ᵏ down to `floor` find it
-        // within any flight the resting threshold lets through (longer than 4 floor, higher
-        // than the gap's resolution), before it can land again
+        // impact) arms at its first gap above half its resolution: probes at t₀ + h/2ᵏ down to
+        // `floor` find it within any flight the resting threshold lets through (longer than
+        // 4 floor, higher than the gap's resolution: a probe in the flight's second quarter
+        // sees ¾ of its height), before it can land again
         let h = t1 - t0;
         let mut ts: Vec<f64> =
             (1..SCAN_SEGMENTS).map(|k| t0 + h * (k as f64 / SCAN_SEGMENTS as f64)).collect();
-        if g0.iter().zip(flight).any(|(g, f)| *f && g.gap <= 0.0 && g.opening > 0.0) {
+        if g0.iter().zip(flight).any(|(g, f)| *f && !arms(g) && g.opening > 0.0) {
             let mut dt = 0.5 * h / SCAN_SEGMENTS as f64;
             while dt >= floor && t0 + dt > t0 {
                 ts.push(t0 + dt);
@@ -269,7 +284,7 @@ impl Scene {
                 return Ok(Some(te));
             }
             for (c, g) in gb.iter().enumerate() {
-                armed[c] |= g.gap > 0.0;
+                armed[c] |= arms(g);
             }
             left = (tb, gb);
         }

@@ -19,9 +19,10 @@ const HOLD_TOL_EPS: f64 = 64.0;
 /// Ulps of the lengths a plane contact's gap is computed from that make its resolution: a
 /// rebound lower than that is a flight no scan could see, so the contact rests instead.
 pub(crate) const GAP_ULPS: f64 = 8.0;
-/// A sphere within this fraction of its radius of the plane touches it (for the switch to
-/// resting after an impact).
-const TOUCH_REL: f64 = 1e-9;
+/// A contact within this fraction of its size (radius, sum of radii, a stop's scale) touches:
+/// for the impacts at a located instant (placing a sphere on a tilted plane can leave its
+/// gap a rounding above zero) and for the switch to resting after an impact.
+pub(crate) const TOUCH_REL: f64 = 1e-9;
 /// A resting contact with friction slips when its contact point moves faster than this
 /// fraction of the speed scale √(|aₙ| r) (plus the speeds present).
 const SLIP_TOL_REL: f64 = 1e-9;
@@ -100,18 +101,13 @@ impl Scene {
     fn normal_motion(&self, y: &[f64], c: usize) -> Result<(f64, f64, f64), String> {
         if let Some(s) = self.stop(c) {
             let g = super::contacts::stop_gap(y[s.qi], y[self.built.model.nq() + s.vi], s.lower, s.upper);
-            let resolution = GAP_ULPS * f64::EPSILON * g.size;
-            return Ok((g.opening, g.gap, resolution));
+            return Ok((g.opening, g.gap, g.resolution));
         }
-        let Some(Effect::Plane { body, r, point, n, .. }) = self.built.effects.get(self.contacts[c]) else {
+        if self.plane(c).is_none() {
             return Err("not a plane contact".into());
-        };
-        let b = &self.built;
-        let nq = b.model.nq();
-        let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
-        let (x, v) = kin.point(&(Some(*body), b.bodies[*body].com));
-        let resolution = GAP_ULPS * f64::EPSILON * (x.norm() + point.norm() + r);
-        Ok((v.dot(n), self.contact_gaps(&kin, y)[c].gap, resolution))
+        }
+        let g = self.gaps(y)?[c];
+        Ok((g.opening, g.gap, g.resolution))
     }
 
     /// Puts plane contact c's sphere exactly on its plane with zero normal speed: the centre
@@ -225,8 +221,7 @@ impl Scene {
         let kin = kinematics(&self.built.model, &y[..nq], &y[nq..])?;
         let a_rel = (self.centre_accel(&kin, a, &d[nq..]) - self.centre_accel(&kin, b, &d[nq..])).dot(&n);
         let closing = (-a_rel).max(0.0);
-        let resolution = GAP_ULPS * f64::EPSILON * (kin.poses[a].1.norm() + kin.poses[b].1.norm() + g.size);
-        if closing > 0.0 && u <= (0.5 * closing * tau_min).max((2.0 * closing * resolution).sqrt()) {
+        if closing > 0.0 && u <= (0.5 * closing * tau_min).max((2.0 * closing * g.resolution).sqrt()) {
             return Err(format!(
                 "the spheres of effects[{}] stay in contact at t = {t:e} s (bounces accumulate at one instant); \
                  resting contact between spheres is not simulated; valid: restitution 1, or a duration that ends \

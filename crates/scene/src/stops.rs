@@ -15,6 +15,7 @@ use nalgebra::{DMatrix, DVector};
 use super::Scene;
 use super::contacts::stop_gap;
 use super::parts::Effect;
+use super::resting::TOUCH_REL;
 
 /// A joint stop's data: coordinate and speed indices, stops, restitution.
 #[derive(Debug, Clone, Copy)]
@@ -62,7 +63,7 @@ impl Scene {
                 continue;
             }
             let g = stop_gap(q[s.qi], v[s.vi], s.lower, s.upper);
-            if g.gap > 0.0 || g.opening >= 0.0 {
+            if g.gap > TOUCH_REL * g.size || g.opening >= 0.0 {
                 continue;
             }
             // M Δv = e_k P with Δq̇_k = −(1 + e) q̇_k
