@@ -36,8 +36,14 @@ use vectrix_ode::explicit::{DenseStep, bracket_zero};
 use super::Scene;
 use super::kin::{Kin, kinematics};
 use super::parts::Effect;
-use super::resting::GAP_ULPS;
 
+/// Ulps of the lengths a plane contact's gap is computed from that make its resolution: a
+/// rebound lower than that is a flight no scan could see, so the contact rests instead.
+pub(crate) const GAP_ULPS: f64 = 8.0;
+/// A contact within this fraction of its size (radius, sum of radii, a stop's scale) touches:
+/// for the impacts at a located instant (placing a sphere on a tilted plane can leave its
+/// gap a rounding above zero) and for the switch to resting after an impact.
+pub(crate) const TOUCH_REL: f64 = 1e-9;
 /// Segments every step is first cut into when its contacts are scanned.
 pub(crate) const SCAN_SEGMENTS: usize = 4;
 /// Most points at which one step's contact gaps are evaluated.

@@ -7,9 +7,9 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::Scene;
+use super::contacts::TOUCH_REL;
 use super::kin::Kin;
 use super::parts::Effect;
-use super::resting::TOUCH_REL;
 
 /// Tangential speed below which friction does nothing.
 const STICK_EPS: f64 = 1e-12;

@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use vectrix_ode::explicit::{DenseStep, bracket_zero};
 
 use super::Scene;
-use super::contacts::{ContactEvent, ContactEventKind, Contacts, Gap, SCAN_SEGMENTS};
+use super::contacts::{ContactEvent, ContactEventKind, Contacts, Gap, SCAN_SEGMENTS, TOUCH_REL};
 use super::kin::{Kin, kinematics};
 use super::parts::Effect;
 use super::rhs::RhsScratch;
@@ -16,13 +16,6 @@ use super::rhs::RhsScratch;
 /// A resting sphere is moved back onto its plane when its gap or normal speed drifts past
 /// this multiple of ε × its scale.
 const HOLD_TOL_EPS: f64 = 64.0;
-/// Ulps of the lengths a plane contact's gap is computed from that make its resolution: a
-/// rebound lower than that is a flight no scan could see, so the contact rests instead.
-pub(crate) const GAP_ULPS: f64 = 8.0;
-/// A contact within this fraction of its size (radius, sum of radii, a stop's scale) touches:
-/// for the impacts at a located instant (placing a sphere on a tilted plane can leave its
-/// gap a rounding above zero) and for the switch to resting after an impact.
-pub(crate) const TOUCH_REL: f64 = 1e-9;
 /// A resting contact with friction slips when its contact point moves faster than this
 /// fraction of the speed scale √(|aₙ| r) (plus the speeds present).
 const SLIP_TOL_REL: f64 = 1e-9;
@@ -96,7 +89,7 @@ impl Scene {
     }
 
     /// Normal speed of plane contact c's centre along n (positive: opening), its gap, and the
-    /// gap's resolution: [`GAP_ULPS`] ulps of the lengths it is computed from.
+    /// gap's resolution: [`GAP_ULPS`](super::contacts::GAP_ULPS) ulps of the lengths it is computed from.
     /// For a joint stop: its opening speed, gap and resolution in q.
     fn normal_motion(&self, y: &[f64], c: usize) -> Result<(f64, f64, f64), String> {
         if let Some(s) = self.stop(c) {

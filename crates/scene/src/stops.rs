@@ -13,9 +13,9 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::Scene;
+use super::contacts::TOUCH_REL;
 use super::contacts::stop_gap;
 use super::parts::Effect;
-use super::resting::TOUCH_REL;
 
 /// A joint stop's data: coordinate and speed indices, stops, restitution.
 #[derive(Debug, Clone, Copy)]
