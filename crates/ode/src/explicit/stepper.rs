@@ -154,12 +154,12 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
             return Ok(());
         }
         let tol = (self.cfg.rtol, self.cfg.atol);
-        let (ord, beta, fac_min, fac_max) = match self.cfg.method {
-            Pair::Dopri5 => (5.0, 0.04, 0.2, 10.0),
-            Pair::Dop853 => (8.0, 0.0, 0.333, 6.0),
+        // order, β, clamps of the factor, safety factor (see [`Adaptive`](super::Adaptive))
+        let (ord, beta, fac_min, fac_max, safe) = match self.cfg.method {
+            Pair::Dopri5 => (5.0, 0.04, 0.2, 10.0, 0.9),
+            Pair::Dop853 => (8.0, 0.0, 0.333, 6.0, 0.8),
         };
         let expo1 = 1.0 / ord - beta * 0.75;
-        let safe = 0.9;
         let (t, t1) = (self.p.t, self.p.t_end);
         let mut h = self.p.h;
         loop {
