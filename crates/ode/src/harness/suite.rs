@@ -100,7 +100,8 @@ pub struct Derived {
 }
 
 /// Derives the [`crate::Accuracy`] table: for each target 10⁻³ … 10⁻¹², and each adaptive
-/// pair, the largest swept rtol whose error is ≤ target on every non-stiff problem; the pair
+/// pair, the largest swept rtol whose error is ≤ target on every non-stiff problem (a problem
+/// whose sweep stopped at the round-off floor at a looser rtol counts with that run); the pair
 /// with the smaller summed time wins.
 ///
 /// Book: §4.11.
@@ -116,10 +117,16 @@ pub fn derive_accuracy(points: &[Point]) -> Vec<Derived> {
             rtols.sort_by(|a, b| b.total_cmp(a));
             rtols.dedup();
             for rtol in rtols {
-                let runs: Vec<&Point> = points
+                // each problem's run at rtol, or the run at which its line stopped at the
+                // round-off floor ([`crate::harness::sweep`]: error < 1e-13 at a looser rtol,
+                // which a stricter one is not run to improve on; its time a lower bound)
+                let runs: Vec<&Point> = non_stiff
                     .iter()
-                    .filter(|p| {
-                        p.method == method && p.param == rtol && non_stiff.contains(&p.problem.as_str())
+                    .filter_map(|name| {
+                        let line = points.iter().filter(|p| p.method == method && p.problem == *name);
+                        line.clone()
+                            .find(|p| p.param == rtol)
+                            .or_else(|| line.filter(|p| p.param > rtol && p.error < 1e-13).last())
                     })
                     .collect();
                 if runs.len() == non_stiff.len() && runs.iter().all(|p| p.error <= target) {
@@ -134,4 +141,38 @@ pub fn derive_accuracy(points: &[Point]) -> Vec<Derived> {
         rows.extend(best);
     }
     rows
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{PROBLEMS, derive_accuracy};
+    use crate::Work;
+    use crate::harness::Point;
+
+    fn point(problem: &str, param: f64, error: f64) -> Point {
+        let work = Work::default();
+        Point { problem: problem.into(), method: "DOP853", param, error, seconds: 1e-5, work, drift: None }
+    }
+
+    /// A problem whose sweep stopped at the round-off floor at a looser rtol still counts for a
+    /// stricter target (with that run); one that stopped above the target does not.
+    #[test]
+    fn a_sweep_stopped_at_the_floor_meets_stricter_targets() {
+        let non_stiff: Vec<&str> = PROBLEMS.iter().copied().filter(|p| !p.starts_with("stiff")).collect();
+        let mut pts = Vec::new();
+        // the first problem's line ended at rtol 1e-12 (8e-14 < 1e-13)
+        pts.push(point(non_stiff[0], 1e-12, 8e-14));
+        for name in &non_stiff[1..] {
+            pts.push(point(name, 1e-12, 5e-11));
+            pts.push(point(name, 1e-13, 4e-12));
+        }
+        let rows = derive_accuracy(&pts);
+        let row = rows.iter().find(|r| r.target == 1e-11).expect("a 1e-11 row");
+        assert_eq!((row.method, row.rtol), ("DOP853", 1e-13));
+        // every problem's run summed once (to rounding)
+        let want = 1e-5 * non_stiff.len() as f64;
+        assert!((row.seconds - want).abs() <= 1e-15 * want * 8.0, "{}", row.seconds);
+        // no rtol reaches 1e-12 on every problem
+        assert!(rows.iter().all(|r| r.target > 1e-12));
+    }
 }
