@@ -126,7 +126,7 @@ pub fn derive_accuracy(points: &[Point]) -> Vec<Derived> {
                         let line = points.iter().filter(|p| p.method == method && p.problem == *name);
                         line.clone()
                             .find(|p| p.param == rtol)
-                            .or_else(|| line.filter(|p| p.param > rtol && p.error < 1e-13).last())
+                            .or_else(|| line.rev().find(|p| p.param > rtol && p.error < 1e-13))
                     })
                     .collect();
                 if runs.len() == non_stiff.len() && runs.iter().all(|p| p.error <= target) {
