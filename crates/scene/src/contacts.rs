@@ -75,6 +75,14 @@ pub(crate) struct Gap {
     pub resolution: f64,
 }
 
+impl Gap {
+    /// Touching: the gap at most [`TOUCH_REL`] × the contact's size (a located touch leaves it a
+    /// rounding either side of zero).
+    pub(crate) fn touches(&self) -> bool {
+        self.gap <= TOUCH_REL * self.size
+    }
+}
+
 /// +1 when the nearer stop is the lower one (the gap opens with q̇ > 0), −1 for the upper.
 pub(crate) fn side(q: f64, lower: f64, upper: f64) -> f64 {
     if q - lower <= upper - q { 1.0 } else { -1.0 }
@@ -352,13 +360,14 @@ impl Scene {
         // the located instant leaves a sphere up to a few ulps inside its plane: it is put on
         // the plane, so that no bounce loses (or gains) the energy of that rounding
         for (c, g) in self.gaps(y)?.iter().enumerate() {
-            if !contacts.resting[c] && g.gap < 0.0 && g.gap > -1e-9 * g.size {
+            if !contacts.resting[c] && g.gap < 0.0 && g.gap > -TOUCH_REL * g.size {
                 self.place_on_plane(y, c, g.gap, 0.0);
             }
         }
+        let kin = kinematics(&b.model, &y[..nq], &y[nq..])?;
+        let gaps = self.contact_gaps(&kin, y);
         let (q, v) = y.split_at_mut(nq);
-        let kin = kinematics(&b.model, q, v)?;
-        let mut hits = self.impacts(&kin, v, &contacts.resting);
+        let mut hits = self.impacts(&kin, &gaps, v, &contacts.resting);
         hits.extend(self.stop_impacts(q, v, &contacts.resting)?);
         for &(c, closing_speed, opening_speed) in &hits {
             let (effect, kind) = (self.contacts[c], ContactEventKind::Impact);

@@ -7,7 +7,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use super::Scene;
-use super::contacts::TOUCH_REL;
+use super::contacts::Gap;
 use super::kin::Kin;
 use super::parts::Effect;
 
@@ -56,13 +56,19 @@ impl Scene {
         }
     }
 
-    /// Resolves every touching (gap ≤ [`TOUCH_REL`] × size), approaching contact that is not
-    /// resting, once; returns the impacts as (contact, closing speed, opening speed) along the
-    /// normal.
-    pub(crate) fn impacts(&self, kin: &Kin, v: &mut [f64], resting: &[bool]) -> Vec<(usize, f64, f64)> {
+    /// Resolves every touching ([`Gap::touches`]; `gaps` at the state of `kin`), approaching
+    /// contact that is not resting, once; returns the impacts as (contact, closing speed,
+    /// opening speed) along the normal.
+    pub(crate) fn impacts(
+        &self,
+        kin: &Kin,
+        gaps: &[Gap],
+        v: &mut [f64],
+        resting: &[bool],
+    ) -> Vec<(usize, f64, f64)> {
         let mut out = Vec::new();
         for (c, &k) in self.contacts.iter().enumerate() {
-            if resting.get(c).copied().unwrap_or(false) {
+            if resting.get(c).copied().unwrap_or(false) || !gaps[c].touches() {
                 continue;
             }
             let e = &self.built.effects[k];
@@ -73,16 +79,9 @@ impl Scene {
                         kin.point(&(Some(*b), self.built.bodies[*b].com)).0,
                     );
                     let Some(n) = (xa - xb).try_normalize(1e-300) else { continue };
-                    if (xa - xb).norm() - ra - rb > TOUCH_REL * (ra + rb) {
-                        continue;
-                    }
                     (self.resp(kin, *a, -n * *ra), Some(self.resp(kin, *b, n * *rb)), n, *e, *mu)
                 }
-                Effect::Plane { body, r, point, n, e, mu } => {
-                    let x = kin.point(&(Some(*body), self.built.bodies[*body].com)).0;
-                    if (x - point).dot(n) - r > TOUCH_REL * r {
-                        continue;
-                    }
+                Effect::Plane { body, r, n, e, mu, .. } => {
                     (self.resp(kin, *body, -n * *r), None, *n, *e, *mu)
                 }
                 _ => continue,

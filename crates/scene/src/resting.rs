@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use vectrix_ode::explicit::{DenseStep, bracket_zero};
 
 use super::Scene;
-use super::contacts::{ContactEvent, ContactEventKind, Contacts, Gap, SCAN_SEGMENTS, TOUCH_REL};
+use super::contacts::{ContactEvent, ContactEventKind, Contacts, Gap, SCAN_SEGMENTS};
 use super::kin::{Kin, kinematics};
 use super::parts::Effect;
 use super::rhs::RhsScratch;
@@ -142,7 +142,7 @@ impl Scene {
         let mut changed = false;
         let gaps = self.gaps(y)?;
         for (c, g) in gaps.iter().enumerate() {
-            if contacts.resting[c] || g.gap > TOUCH_REL * g.size {
+            if contacts.resting[c] || !g.touches() {
                 continue;
             }
             let plane = self.plane(c);

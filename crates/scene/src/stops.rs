@@ -13,7 +13,6 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::Scene;
-use super::contacts::TOUCH_REL;
 use super::contacts::stop_gap;
 use super::parts::Effect;
 
@@ -63,7 +62,7 @@ impl Scene {
                 continue;
             }
             let g = stop_gap(q[s.qi], v[s.vi], s.lower, s.upper);
-            if g.gap > TOUCH_REL * g.size || g.opening >= 0.0 {
+            if !g.touches() || g.opening >= 0.0 {
                 continue;
             }
             // M Δv = e_k P with Δq̇_k = −(1 + e) q̇_k
