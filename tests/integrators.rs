@@ -849,3 +849,66 @@ fn gbs_extrapolation_bad_input_returns_typed_errors() {
         "{e}"
     );
 }
+
+// Extrapolation one step at a time (`GbsStepper`, the scenes' `gbs`) takes the steps of
+// `Extrapolation::solve` to the bit, with f returning a state or written in place.
+#[test]
+fn gbs_stepper_takes_the_steps_of_extrapolation_solve_to_the_bit() {
+    use vectrix::ode::Extrapolation;
+    use vectrix::ode::explicit::GbsStepper;
+    let p = Kepler { e: 0.9 };
+    for tol in [1e-6, 1e-12] {
+        let cfg = Extrapolation::gbs().rtol(tol).atol(tol);
+        let s = cfg.solve(|t, y| p.rhs(t, y), 0.0, &p.y0(), p.t_end()).unwrap();
+        let mut a = GbsStepper::new(&cfg, |t, y: &Vector4<f64>| p.rhs(t, y), 0.0, p.y0(), p.t_end()).unwrap();
+        let g = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
+            out.copy_from_slice(p.rhs(t, &Vector4::from_column_slice(y)).as_slice());
+        };
+        let mut b = GbsStepper::new_in_place(&cfg, g, 0.0, p.y0().as_slice().to_vec(), p.t_end()).unwrap();
+        let mut k = 0;
+        while !a.done() {
+            a.step().unwrap();
+            b.step().unwrap();
+            k += 1;
+            assert_eq!(a.t().to_bits(), s.t[k].to_bits(), "tol {tol:e}: t of step {k}");
+            assert_eq!(b.t().to_bits(), s.t[k].to_bits(), "tol {tol:e}: t of step {k} (in place)");
+            for i in 0..4 {
+                assert_eq!(a.y()[i].to_bits(), s.y[k][i].to_bits(), "tol {tol:e}: y{i} of step {k}");
+                assert_eq!(
+                    b.y()[i].to_bits(),
+                    s.y[k][i].to_bits(),
+                    "tol {tol:e}: y{i} of step {k} (in place)"
+                );
+            }
+        }
+        assert!(b.done() && k + 1 == s.t.len() && k > 10, "tol {tol:e}: {k} steps of {}", s.t.len() - 1);
+        assert_eq!((a.work().fevals, a.work().rejected), (s.work.fevals, s.work.rejected), "tol {tol:e}");
+        assert_eq!(b.work().fevals, s.work.fevals, "tol {tol:e} (in place)");
+    }
+}
+
+// Landing on given times with `set_end` (how a scene samples a method without an interpolant):
+// Kepler e = 0.5 sampled at t = k, k = 1 … 20, each sample on Kepler's equation within the
+// bound of `gbs_extrapolation_error_follows_the_tolerance_on_closed_forms` (300·tol), and
+// every sample exactly at its time.
+#[test]
+fn gbs_stepper_lands_on_every_sample_time_on_the_closed_form() {
+    use vectrix::ode::Extrapolation;
+    use vectrix::ode::explicit::GbsStepper;
+    let p = Kepler { e: 0.5 };
+    let tol = 1e-11;
+    let cfg = Extrapolation::gbs().rtol(tol).atol(tol);
+    let mut st = GbsStepper::new(&cfg, |t, y: &Vector4<f64>| p.rhs(t, y), 0.0, p.y0(), 1.0).unwrap();
+    for k in 1..=20 {
+        let tk = k as f64;
+        if k > 1 {
+            st.set_end(tk).unwrap();
+        }
+        while !st.done() {
+            st.step().unwrap();
+        }
+        assert_eq!(st.t(), tk, "sample {k}");
+        let e = (st.y() - p.exact(tk)).nan_amax();
+        assert!(e <= 300.0 * tol, "t = {tk}: error {e:e}");
+    }
+}

@@ -555,6 +555,66 @@ cases! {
         }
     }
 
+    // Extrapolation one step at a time (the scenes' `gbs`): hostile settings, states and ends are
+    // refused or give finite answers; asking for an interpolant is a typed error; a restart
+    // with NaN is refused and the run stays where it was; an f that turns NaN is refused.
+    gbs_stepper ["GbsStepper::new", "GbsStepper::new_in_place", "GbsStepper::step", "GbsStepper::dense",
+        "GbsStepper::restart", "Method::has_interpolant"] {
+        use vectrix::ode::explicit::GbsStepper;
+        use vectrix::ode::{AnyStepper, Extrapolation, Method as OdeMethod};
+        let f = |_: f64, y: &Vec<f64>| vec![y[1], -y[0]];
+        let g = |_: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
+            out[0] = y[1];
+            out[1] = -y[0];
+        };
+        let cfg = Extrapolation::gbs().max_steps(10_000);
+        for x in hostile() {
+            fn run<F: vectrix::ode::Rhs<Vec<f64>>>(st: Result<GbsStepper<Vec<f64>, F>, OdeError>) -> Result<Vec<f64>, OdeError> {
+                let mut s = st?;
+                while !s.done() {
+                    s.step()?;
+                }
+                Ok(s.y().clone())
+            }
+            err_or(run(GbsStepper::new(&cfg.rtol(x), f, 0.0, vec![1.0, 0.0], 1.0)), "hostile rtol", |y| fin(y));
+            err_or(run(GbsStepper::new(&cfg.h0(x).h_max(x), f, 0.0, vec![1.0, 0.0], 1.0)), "hostile h", |y| fin(y));
+            err_or(run(GbsStepper::new(&cfg, f, 0.0, vec![x, 0.0], 1.0)), "hostile y0", |y| fin(y));
+            err_or(run(GbsStepper::new(&cfg, f, 0.0, vec![1.0, 0.0], x)), "hostile t_end", |y| fin(y));
+            err_or(run(GbsStepper::new_in_place(&cfg, g, x, vec![1.0, 0.0], 1.0)), "hostile t0", |y| fin(y));
+        }
+        refused(GbsStepper::new(&cfg.max_columns(2), f, 0.0, vec![1.0, 0.0], 1.0), "max_columns(2)");
+        let mut st = GbsStepper::new_in_place(&cfg.rtol(1e-10).atol(1e-10), g, 0.0, vec![1.0, 0.0], 2.0).unwrap();
+        assert!(matches!(st.dense(), Err(OdeError::NoInterpolant { method: "gbs" })), "dense before a step");
+        st.step().unwrap();
+        assert!(matches!(st.dense(), Err(OdeError::NoInterpolant { .. })), "dense after a step");
+        let (t, y) = (st.t(), st.y().clone());
+        refused(st.restart(t, vec![f64::NAN, 0.0]), "restart with NaN");
+        refused(st.restart(t, vec![1.0]), "restart of another length");
+        refused(st.restart(3.0, y.clone()), "restart past the end");
+        assert!(st.t() == t && st.y() == &y, "a refused restart moved the run");
+        while !st.done() {
+            st.step().unwrap();
+        }
+        let e = (st.y()[0] - 2f64.cos()).abs().max((st.y()[1] + 2f64.sin()).abs());
+        assert!(e < 1e-8, "gbs stepper: error {e:e} at t = 2");
+        // f turns NaN past t = 0.5: refused, never stepped past it
+        let nan_late = |t: f64, y: &Vec<f64>| vec![y[1], if t > 0.5 { f64::NAN } else { -y[0] }];
+        let mut st = GbsStepper::new(&cfg, nan_late, 0.0, vec![1.0, 0.0], 2.0).unwrap();
+        let err = loop {
+            match st.step() {
+                Ok(()) => assert!(st.t() <= 0.5, "stepped to {} past the NaN", st.t()),
+                Err(e) => break e,
+            }
+        };
+        assert!(matches!(err, OdeError::RhsNotFinite { .. }), "{err}");
+        let m = OdeMethod::Gbs(cfg);
+        assert!(!m.has_interpolant() && !m.is_implicit() && m.name() == "gbs");
+        assert!(OdeMethod::Explicit(Adaptive::dop853()).has_interpolant());
+        let mut a = AnyStepper::new(&m, f, None::<fn(f64, &Vec<f64>, &mut [f64])>, 0.0, vec![1.0, 0.0], 1.0).unwrap();
+        a.step().unwrap();
+        assert!(matches!(a.dense(), Err(OdeError::NoInterpolant { .. })), "AnyStepper::dense of gbs");
+    }
+
     // The Taylor method: hostile tolerances, steps, states, ends and orders are refused or give
     // finite answers; each elementary function of the series at a hostile state is refused or
     // finite, at its singular point (√ and ln at 0, x^−1.5 at 0, e^x past overflow, a blow-up)

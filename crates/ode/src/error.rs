@@ -104,6 +104,14 @@ pub enum OdeError {
     /// Dense output was not recorded for this solution.
     #[error("dense output was not recorded; enable it with `.dense(true)`")]
     NoDenseOutput,
+    /// A method without an interpolant was asked for the state between its steps.
+    #[error(
+        "{method} keeps no interpolant between its steps; land on the times you need (set_end), or use dopri5, dop853, radau5 or bdf for dense output and events"
+    )]
+    NoInterpolant {
+        /// The method's name.
+        method: &'static str,
+    },
     /// An [`Accuracy`](crate::Accuracy) stricter than the harness could reach.
     #[error(
         "requested accuracy {requested:e} is below the strictest measured target {best:e}; ask for ≥ {best:e} or choose a method yourself"

@@ -1,19 +1,22 @@
-//! One stepping interface over the explicit pairs, RADAU5 and BDF, so that a caller that drives
+//! One stepping interface over the explicit pairs, extrapolation, RADAU5 and BDF, so that a caller that drives
 //! the integration itself (scenes: samples, impacts, budgets) can take either.
 
-use crate::explicit::{Adaptive, DenseStep, Stepper, Steps};
+use crate::explicit::{Adaptive, DenseStep, Extrapolation, GbsStepper, Stepper, Steps};
 use crate::implicit::{Bdf, BdfStepper, Radau5, RadauStepper};
 use crate::progress::Progress;
 use crate::{InPlace, Rhs};
 use crate::{OdeError, State};
 
-/// An adaptive method: an explicit pair ([`Adaptive`]) or a stiff one ([`Radau5`], [`Bdf`]).
+/// An adaptive method: an explicit pair ([`Adaptive`]), extrapolation ([`Extrapolation`]) or a
+/// stiff one ([`Radau5`], [`Bdf`]).
 ///
-/// Book: §4.11; HNW §II.4–II.10 (explicit pairs), HW §IV.8 (RADAU5), §III.5 (BDF).
+/// Book: §4.11; HNW §II.4–II.10 (explicit pairs, §II.9 extrapolation), HW §IV.8 (RADAU5), §III.5 (BDF).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Method {
     /// DOPRI5 or DOP853.
     Explicit(Adaptive),
+    /// Gragg–Bulirsch–Stoer extrapolation (no interpolant: [`AnyStepper::dense`] refuses).
+    Gbs(Extrapolation),
     /// Radau IIA 5.
     Radau5(Radau5),
     /// Variable-order BDF (1–5).
@@ -25,6 +28,7 @@ impl Method {
     pub fn max_steps(&self) -> usize {
         match self {
             Self::Explicit(a) => a.max_steps,
+            Self::Gbs(g) => g.max_steps,
             Self::Radau5(r) => r.max_steps,
             Self::Bdf(b) => b.max_steps,
         }
@@ -33,17 +37,19 @@ impl Method {
     pub fn with_max_steps(self, n: usize) -> Self {
         match self {
             Self::Explicit(a) => Self::Explicit(a.max_steps(n)),
+            Self::Gbs(g) => Self::Gbs(g.max_steps(n)),
             Self::Radau5(r) => Self::Radau5(r.max_steps(n)),
             Self::Bdf(b) => Self::Bdf(b.max_steps(n)),
         }
     }
-    /// Its name as in scene files: `dopri5`, `dop853`, `radau5`, `bdf`.
+    /// Its name as in scene files: `dopri5`, `dop853`, `gbs`, `radau5`, `bdf`.
     pub fn name(&self) -> &'static str {
         match self {
             Self::Explicit(a) => match a.method {
                 crate::Pair::Dopri5 => "dopri5",
                 crate::Pair::Dop853 => "dop853",
             },
+            Self::Gbs(_) => "gbs",
             Self::Radau5(_) => "radau5",
             Self::Bdf(_) => "bdf",
         }
@@ -52,13 +58,19 @@ impl Method {
     pub fn tolerances(&self) -> (f64, f64) {
         match self {
             Self::Explicit(a) => (a.rtol, a.atol),
+            Self::Gbs(g) => (g.rtol, g.atol),
             Self::Radau5(r) => (r.rtol, r.atol),
             Self::Bdf(b) => (b.rtol, b.atol),
         }
     }
     /// `true` for the stiff (implicit) methods, which use a Jacobian.
     pub fn is_implicit(&self) -> bool {
-        !matches!(self, Self::Explicit(_))
+        !matches!(self, Self::Explicit(_) | Self::Gbs(_))
+    }
+    /// `true` for the methods with an interpolant between steps (all but `gbs`): dense
+    /// output and located events need one.
+    pub fn has_interpolant(&self) -> bool {
+        !matches!(self, Self::Gbs(_))
     }
 }
 
@@ -72,6 +84,8 @@ impl Method {
 pub enum AnyStepper<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> {
     /// An explicit pair.
     Explicit(Stepper<S, F>),
+    /// Extrapolation.
+    Gbs(GbsStepper<S, F>),
     /// RADAU5.
     Radau5(RadauStepper<S, F, J>),
     /// BDF.
@@ -82,6 +96,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::fmt::Debug for An
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Self::Explicit(s) => s.fmt(f),
+            Self::Gbs(s) => s.fmt(f),
             Self::Radau5(s) => s.fmt(f),
             Self::Bdf(s) => s.fmt(f),
         }
@@ -93,6 +108,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::Deref for An
     fn deref(&self) -> &Progress<S> {
         match self {
             Self::Explicit(s) => s,
+            Self::Gbs(s) => s,
             Self::Radau5(s) => s,
             Self::Bdf(s) => s,
         }
@@ -103,6 +119,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> core::ops::DerefMut for
     fn deref_mut(&mut self) -> &mut Progress<S> {
         match self {
             Self::Explicit(s) => s,
+            Self::Gbs(s) => s,
             Self::Radau5(s) => s,
             Self::Bdf(s) => s,
         }
@@ -158,6 +175,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
     ) -> Result<Self, OdeError> {
         Ok(match method {
             Method::Explicit(a) => Self::Explicit(Stepper::start(a, f, t0, y0, t_end)?),
+            Method::Gbs(g) => Self::Gbs(GbsStepper::start(g, f, t0, y0, t_end)?),
             Method::Radau5(r) => Self::Radau5(RadauStepper::start(r, f, jac, t0, y0, t_end)?),
             Method::Bdf(b) => Self::Bdf(BdfStepper::start(b, f, jac, t0, y0, t_end)?),
         })
@@ -169,6 +187,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
     pub fn step(&mut self) -> Result<(), OdeError> {
         match self {
             Self::Explicit(s) => s.step(),
+            Self::Gbs(s) => s.step(),
             Self::Radau5(s) => s.step(),
             Self::Bdf(s) => s.step(),
         }
@@ -180,6 +199,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
     pub fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
         match self {
             Self::Explicit(s) => s.dense(),
+            Self::Gbs(s) => s.dense(),
             Self::Radau5(s) => s.dense(),
             Self::Bdf(s) => s.dense(),
         }
@@ -191,6 +211,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
     pub fn restart(&mut self, t: f64, y: S) -> Result<(), OdeError> {
         match self {
             Self::Explicit(s) => s.restart(t, y),
+            Self::Gbs(s) => s.restart(t, y),
             Self::Radau5(s) => s.restart(t, y),
             Self::Bdf(s) => s.restart(t, y),
         }

@@ -176,6 +176,7 @@ pub(crate) fn solve_switching<S: State, F: FnMut(f64, &S) -> S>(
                 crate::Method::Radau5(r) => r.solve(g, ts, &ys, t1)?,
                 crate::Method::Bdf(b) => b.solve(g, ts, &ys, t1)?,
                 crate::Method::Explicit(a) => a.solve(g, ts, &ys, t1)?,
+                crate::Method::Gbs(e) => e.solve(g, ts, &ys, t1)?,
             };
             sol.t.extend_from_slice(&rest.t[1..]);
             sol.y.extend_from_slice(&rest.y[1..]);

@@ -14,8 +14,8 @@ use std::time::Instant;
 use super::drive::Solution;
 use super::initial_step;
 use crate::solver::Solver;
-use crate::state::{State, check_state, eval};
-use crate::{OdeError, Work};
+use crate::state::{State, check_state, eval, eval_into};
+use crate::{OdeError, Rhs, Work};
 
 /// Largest number of extrapolation columns allowed (HNW's KM; the table then reaches order
 /// 2·KM: 2·12 = 24 is far beyond what f64 can use).
@@ -64,6 +64,17 @@ impl Solver<Gbs> {
         self
     }
 
+    /// The interval, tolerances and step bounds ([`Solver::check`]) and `max_columns`: the step
+    /// bound h_max.
+    fn check_gbs(&self, t0: f64, t1: f64) -> Result<f64, OdeError> {
+        let h_max = self.check(t0, t1)?;
+        let km = self.method.max_columns;
+        if !(3..=GBS_MAX_COLUMNS).contains(&km) {
+            return Err(OdeError::InvalidSetting { name: "max_columns", value: km, valid: "3 ..= 12" });
+        }
+        Ok(h_max)
+    }
+
     /// Solves y′ = f(t, y), y(t0) = y0 on [t0, t1], returning the accepted steps (no dense
     /// output).
     ///
@@ -81,11 +92,7 @@ impl Solver<Gbs> {
         t1: f64,
     ) -> Result<Solution<S>, OdeError> {
         let start = Instant::now();
-        let h_max = self.check(t0, t1)?;
-        let km = self.method.max_columns;
-        if !(3..=GBS_MAX_COLUMNS).contains(&km) {
-            return Err(OdeError::InvalidSetting { name: "max_columns", value: km, valid: "3 ..= 12" });
-        }
+        self.check_gbs(t0, t1)?;
         if self.dense {
             return Err(OdeError::InvalidSetting {
                 name: "dense",
@@ -93,18 +100,9 @@ impl Solver<Gbs> {
                 valid: "false (0): extrapolation records no dense output",
             });
         }
-        check_state(t0, y0)?;
-        let mut run = Run::new(self, km, h_max, y0);
+        let (mut run, f0) = Run::start(self, &mut f, t0, y0, t1)?;
         let mut ts = vec![t0];
         let mut ys = vec![y0.clone()];
-        let f0 = eval(&mut f, t0, y0, t0, 1, &mut run.work.fevals)?;
-        run.h = match self.h0 {
-            Some(h0) => h0.min(h_max),
-            None => {
-                let order = (2 * run.k - 1) as f64;
-                initial_step(&mut f, t0, y0, &f0, order, h_max, (self.rtol, self.atol), &mut run.work)?
-            }
-        };
         let mut dz = f0;
         let mut y = y0.clone();
         let mut t = t0;
@@ -115,7 +113,7 @@ impl Solver<Gbs> {
             ts.push(t);
             ys.push(y.clone());
             if t < t1 {
-                dz = eval(&mut f, t, &y, t, 1, &mut run.work.fevals)?;
+                eval_into(&mut f, t, &y, &mut dz, (t, 1), &mut run.work.fevals)?;
             }
         }
         run.work.wall = start.elapsed();
@@ -141,8 +139,9 @@ const SAFE3: f64 = 0.5;
 const FAC3: f64 = 0.8;
 const FAC4: f64 = 0.9;
 
-/// One run's extrapolation table and controller state.
-struct Run<S> {
+/// One run's extrapolation table and controller state (shared by [`Extrapolation::solve`] and
+/// [`GbsStepper`](super::GbsStepper)).
+pub(super) struct Run<S> {
     rtol: f64,
     atol: f64,
     h_max: f64,
@@ -169,7 +168,9 @@ struct Run<S> {
     yh1: S,
     yh2: S,
     arg: S,
-    work: Work,
+    /// f's value at `arg`, written in place.
+    dy: S,
+    pub(super) work: Work,
 }
 
 /// out ← y + δ, element by element.
@@ -191,6 +192,39 @@ enum Verdict {
 }
 
 impl<S: State> Run<S> {
+    /// Checks the settings, t0 < t1 and y0, evaluates f(t0, y0) (returned) and picks the first
+    /// step (`h0`, or HNW's starting step for order 2k − 1).
+    pub(super) fn start<F: Rhs<S>>(
+        cfg: &Solver<Gbs>,
+        f: &mut F,
+        t0: f64,
+        y0: &S,
+        t1: f64,
+    ) -> Result<(Self, S), OdeError> {
+        let h_max = cfg.check_gbs(t0, t1)?;
+        check_state(t0, y0)?;
+        let mut run = Run::new(cfg, cfg.method.max_columns, h_max, y0);
+        let f0 = eval(f, t0, y0, t0, 1, &mut run.work.fevals)?;
+        run.h = match cfg.h0 {
+            Some(h0) => h0.min(h_max),
+            None => {
+                let order = (2 * run.k - 1) as f64;
+                initial_step(f, t0, y0, &f0, order, h_max, (cfg.rtol, cfg.atol), &mut run.work)?
+            }
+        };
+        Ok((run, f0))
+    }
+
+    /// The step the controller proposes next.
+    pub(super) fn proposed(&self) -> f64 {
+        self.h
+    }
+
+    /// Caps the steps at `h_max` (a stepper's new end).
+    pub(super) fn set_h_max(&mut self, h_max: f64) {
+        self.h_max = h_max;
+    }
+
     fn new(cfg: &Solver<Gbs>, km: usize, h_max: f64, y0: &S) -> Self {
         let mut nj = [0; GBS_MAX_COLUMNS + 1];
         let mut a = [0.0; GBS_MAX_COLUMNS + 1];
@@ -218,13 +252,14 @@ impl<S: State> Run<S> {
             yh1: y0.clone(),
             yh2: y0.clone(),
             arg: y0.clone(),
+            dy: y0.clone(),
             work: Work::default(),
         }
     }
 
     /// One accepted step from (t, y) with f(t, y) = dz, towards t1: returns the new time and
     /// state (y plus the best table entry).
-    fn step<F: FnMut(f64, &S) -> S>(
+    pub(super) fn step<F: Rhs<S>>(
         &mut self,
         f: &mut F,
         t: f64,
@@ -273,13 +308,7 @@ impl<S: State> Run<S> {
     /// Rows 1 … k − 1, then the convergence monitor in rows k − 1, k and k + 1 (HNW §II.9,
     /// ODEX): accept in the first row whose error is ≤ 1, reject early when the error is too
     /// large to fall below 1 within the rows left.
-    fn attempt<F: FnMut(f64, &S) -> S>(
-        &mut self,
-        f: &mut F,
-        t: f64,
-        y: &S,
-        dz: &S,
-    ) -> Result<Verdict, OdeError> {
+    fn attempt<F: Rhs<S>>(&mut self, f: &mut F, t: f64, y: &S, dz: &S) -> Result<Verdict, OdeError> {
         let k = self.k;
         let mut err = 0.0;
         for j in 1..k {
@@ -355,7 +384,7 @@ impl<S: State> Run<S> {
     /// smoothing step (HNW §II.9), extrapolated by Aitken–Neville in h²; then the error
     /// estimate and the optimal step for this row. `None` when the row diverges: its error is
     /// not finite, beyond 1/ε, or (from row 3) not below max(4·err, 1) of the row before.
-    fn row<F: FnMut(f64, &S) -> S>(
+    fn row<F: Rhs<S>>(
         &mut self,
         f: &mut F,
         j: usize,
@@ -374,13 +403,14 @@ impl<S: State> Run<S> {
         self.yh2.add_scaled(hj, dz);
         for m in 1..n {
             offset(&mut self.arg, y, &self.yh2);
-            let dy = eval(f, t + hj * m as f64, &self.arg, t, 1 + m, &mut self.work.fevals)?;
-            self.yh1.add_scaled(2.0 * hj, &dy);
+            eval_into(f, t + hj * m as f64, &self.arg, &mut self.dy, (t, 1 + m), &mut self.work.fevals)?;
+            self.yh1.add_scaled(2.0 * hj, &self.dy);
             core::mem::swap(&mut self.yh1, &mut self.yh2);
         }
         // smoothing: T = (δ_{n−1} + δ_n + h f(t + H, y₀ + δ_n)) / 2
         offset(&mut self.arg, y, &self.yh2);
-        let dy = eval(f, t + h, &self.arg, t, 1 + n, &mut self.work.fevals)?;
+        eval_into(f, t + h, &self.arg, &mut self.dy, (t, 1 + n), &mut self.work.fevals)?;
+        let dy = &self.dy;
         let tj = &mut self.table[j - 1];
         for ((o, a), (b, d)) in tj
             .as_mut_slice()

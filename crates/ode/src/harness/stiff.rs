@@ -78,6 +78,7 @@ macro_rules! solve_any {
             Method::Radau5(r) => r.solve($f, 0.0, $y0, $t1),
             Method::Bdf(b) => b.solve($f, 0.0, $y0, $t1),
             Method::Explicit(a) => a.solve($f, 0.0, $y0, $t1),
+            Method::Gbs(e) => e.solve($f, 0.0, $y0, $t1),
         }
     };
 }
