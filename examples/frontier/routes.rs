@@ -1,6 +1,7 @@
 //! The vectrix side of the frontier: every problem through the library (every integrator that
 //! applies: the adaptive pairs, extrapolation and, on the closed-form problems, the Taylor
-//! method at a ladder of tolerances, the fixed-step methods at a ladder of step counts) and through scenes (both pairs at the same ladder of tolerances).
+//! method at a ladder of tolerances, the fixed-step methods at a ladder of step counts) and
+//! through scenes (both pairs and GBS at the same ladder of tolerances).
 
 use nalgebra::SVector;
 use serde_json::{Value, json};
@@ -224,8 +225,8 @@ impl Ctx {
         }
     }
 
-    /// A scene at every tolerance with both pairs; `error` reads the run's final state. The
-    /// scene files are parsed and validated before the timed runs.
+    /// A scene at every tolerance with both pairs and GBS; `error` reads the run's final state.
+    /// The scene files are parsed and validated before the timed runs.
     pub fn scene(&mut self, id: &str, toml: impl Fn(&str, f64) -> String, error: impl Fn(&[f64]) -> f64) {
         self.scene_in(id, "frontier", toml, error);
     }
@@ -239,7 +240,7 @@ impl Ctx {
         error: impl Fn(&[f64]) -> f64,
     ) {
         let tols = self.tolerances();
-        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853")] {
+        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853"), ("GBS", "gbs")] {
             let scenes: Vec<(f64, Scene)> = tols
                 .iter()
                 .map(|&tol| match Scene::from_toml(&toml(key, tol), dir) {
@@ -467,7 +468,7 @@ impl Ctx {
         }
         // the scene checks the energy at its 1000 samples (every 10 periods) itself
         let tols = self.tolerances();
-        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853")] {
+        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853"), ("GBS", "gbs")] {
             let scenes: Vec<(f64, Scene)> = tols
                 .iter()
                 .map(|&tol| {

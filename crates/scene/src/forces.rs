@@ -75,13 +75,15 @@ pub(crate) fn centre<T: Scalar>(kin: &Kin<T>, b: &Body, i: usize) -> Vector3<T> 
 /// Adds every declared force effect at time t (uniform gravity is the model's; impacts,
 /// rolling and inerters are handled elsewhere), in the scalar of the evaluation (f64, or dual
 /// numbers for exact derivatives); `u` adds to the magnitudes of the `force` and `torque`
-/// effects, in their order (the inputs of a linearization), when given.
+/// effects, in their order (the inputs of a linearization), when given. `(t, piece)`: the time
+/// and, in a run, the piece between two corners of the load profiles that it lies on
+/// ([`Profile::eval_on`](super::profile::Profile::eval_on)).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn apply<T: Scalar>(
     effects: &[Effect],
     bodies: &[Body],
     g: &Ground<T>,
-    t: f64,
+    (t, piece): (f64, Option<(f64, f64)>),
     v: &[T],
     q_angle: &dyn Fn(usize) -> T,
     u: Option<&[T]>,
@@ -132,23 +134,23 @@ pub(crate) fn apply<T: Scalar>(
             Effect::Dipoles { list } => dipoles(list, bodies, g, loads)?,
             Effect::Force { at, dir, profile } => {
                 let p = loads.kin.position(at);
-                let f = lift::<T>(dir) * magnitude(profile.eval(t));
+                let f = lift::<T>(dir) * magnitude(profile.eval_on(t, piece));
                 loads.force(at.0, &p, &f);
             }
             Effect::Torque { body, dir, profile } => {
-                let m = lift::<T>(dir) * magnitude(profile.eval(t));
+                let m = lift::<T>(dir) * magnitude(profile.eval_on(t, piece));
                 loads.torque(*body, &m)
             }
             Effect::Thrust { body, profile, angle } => {
                 // (11.2.11): F_T [cos Φ_T, 0, −sin Φ_T] in link components, at the centre of mass
-                let f_t = magnitude(profile.eval(t));
+                let f_t = magnitude(profile.eval_on(t, piece));
                 let e = loads.kin.poses[*body].0;
                 let f = e.tr_mul(&Vector3::new(c(angle.cos()), T::zero(), c(-angle.sin()))) * f_t;
                 loads.force_at_centre(*body, &bodies[*body].com, &f);
             }
             Effect::Aero { body, aircraft, controls } => {
                 // at α̇ = β̇ = 0; the rate terms are solved after ABA (`aero::aero_rates`)
-                let u = [0, 1, 2].map(|k| magnitude(controls[k].eval(t)));
+                let u = [0, 1, 2].map(|k| magnitude(controls[k].eval_on(t, piece)));
                 let b = &bodies[*body];
                 let (vel, omega) = super::aero::air_velocity(loads.kin, b, *body);
                 let w = super::aero::wrench(aircraft, b, &vel, &omega, u, (T::zero(), T::zero()))?;

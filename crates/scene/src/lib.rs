@@ -309,6 +309,16 @@ impl Scene {
         scene.check_contacts_start(src)?;
         match named {
             Some(reason) => {
+                if scene.needs.impacts && !scene.solver.has_interpolant() {
+                    return Err(src.invalid(
+                        "method.name",
+                        format!(
+                            "`{}` keeps no interpolant, and this scene's contacts or joint stops are located on \
+                             one; valid: dopri5, dop853, radau5, bdf",
+                            scene.solver.name()
+                        ),
+                    ));
+                }
                 scene.choice.reason = reason;
                 if scene.solver.is_implicit() {
                     scene.choice.jacobian =

@@ -160,6 +160,21 @@ impl Profile {
         }
     }
 
+    /// f on the piece [lo, hi] of the run between two corners (`piece`), as the integrator
+    /// must see it: the jumps' sides are those of the piece's interior, so a step that ends
+    /// at a corner sees the value before it (its left limit) and a step that starts there the
+    /// value after it, though `eval` is right-continuous. `None`: [`Profile::eval`].
+    pub(crate) fn eval_on(&self, t: f64, piece: Option<(f64, f64)>) -> f64 {
+        match (self, piece) {
+            // piecewise constant: the value inside the piece (no corner lies strictly inside)
+            (Profile::Step { .. } | Profile::Doublet { .. } | Profile::Pulse { .. }, Some((lo, hi))) => {
+                self.eval(0.5 * (lo + hi))
+            }
+            // continuous (ramp, table, sine, constant): the same from either side
+            _ => self.eval(t),
+        }
+    }
+
     /// Every corner and jump, with the key that declares it (relative to the profile's path).
     pub(crate) fn corners(&self) -> Vec<(f64, String)> {
         match self {

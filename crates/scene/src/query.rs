@@ -74,7 +74,7 @@ impl Scene {
         let mut tau = vec![0.0; nv];
         let mut wrenches = vec![JointWrench::default(); b.bodies.len()];
         let mut loads = Loads { kin: &kin, wrenches: &mut wrenches, tau: &mut tau };
-        apply(&b.effects, &b.bodies, &self.ground, t, v, &q_angle, None, &mut loads).map_err(fail)?;
+        apply(&b.effects, &b.bodies, &self.ground, (t, None), v, &q_angle, None, &mut loads).map_err(fail)?;
         let id = b.model.rnea(q, v, &vec![0.0; nv], Some(&wrenches)).map_err(|e| fail(e.to_string()))?;
         let generalized_forces = DVector::from_iterator(nv, tau.iter().zip(&id.tau).map(|(a, r)| a - r));
         let accelerations = DVector::from_column_slice(&self.deriv(t, &y).map_err(fail)?[nq..]);

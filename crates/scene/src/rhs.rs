@@ -28,6 +28,9 @@ pub(crate) struct RhsScratch<T: Scalar = f64> {
     keep: Option<Vec<usize>>,
     /// The α̇/β̇ solve of aero effects.
     aero: AeroScratch<T>,
+    /// In a run, the piece [lo, hi] between two corners of the load profiles that the
+    /// integrator is on: their jumps are taken from its side (`Profile::eval_on`).
+    pub(crate) piece: Option<(f64, f64)>,
 }
 
 impl RhsScratch {
@@ -47,6 +50,7 @@ impl<T: Scalar> RhsScratch<T> {
             ground: Ground::new(),
             keep: None,
             aero: AeroScratch::new(scene.built.bodies.len(), m.nv(), scene.rate_aircraft().count()),
+            piece: None,
         }
     }
 }
@@ -257,7 +261,7 @@ impl Scene {
             w.wrenches.fill(JointWrench::default());
             let q_angle = |dof: usize| self.angle_of_dof(q, dof);
             let mut loads = Loads { kin: &w.kin, wrenches: &mut w.wrenches, tau: &mut w.tau };
-            apply(&b.effects, &b.bodies, &w.ground, t, v, &q_angle, u, &mut loads)?;
+            apply(&b.effects, &b.bodies, &w.ground, (t, w.piece), v, &q_angle, u, &mut loads)?;
             Some(w.wrenches.as_slice())
         } else {
             None

@@ -7,7 +7,7 @@
 //!
 //! Book: §4.11 (integration), §7.13 (impacts), §8.3 (energy), §7.4/§7.6 (momenta).
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::sync::atomic::Ordering;
 use std::time::Instant;
 
@@ -84,6 +84,40 @@ impl<'a> Pass<'a> {
     fn sample_time(&self, k: usize) -> f64 {
         let spec = self.scene.spec();
         spec.duration * (k as f64 / spec.samples as f64)
+    }
+
+    /// Where the integration stops, in order, and whether it restarts there: the corners and
+    /// jumps of the load profiles (restart), the sample times for a method without an
+    /// interpolant (`gbs`: it lands on them), and the end.
+    fn stops(&self) -> Vec<(f64, bool)> {
+        let spec = self.scene.spec();
+        let mut stops: Vec<(f64, bool)> = breakpoints(spec).into_iter().map(|t| (t, true)).collect();
+        if !self.scene.solver.has_interpolant() {
+            stops.extend((1..spec.samples).map(|k| (self.sample_time(k), false)));
+            // a sample at a corner restarts there
+            stops.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.cmp(&a.1)));
+            stops.dedup_by(|b, a| a.0 == b.0);
+        }
+        stops.push((spec.duration, false));
+        stops
+    }
+
+    /// At the stop `(t, restart)`: on to the next stop `end` (the load profiles see the piece
+    /// between them), continuing with a fresh first stage at a corner of a load profile.
+    fn next_piece<F: Rhs, J: Jac>(
+        &mut self,
+        st: &mut Steps<F, J>,
+        ((t, restart), end): ((f64, bool), f64),
+        piece: &Cell<(f64, f64)>,
+    ) -> Result<(), SceneError> {
+        st.set_end(end).map_err(|e| self.ode_err(e))?;
+        piece.set((t, end));
+        if restart {
+            let (t, y) = (st.t(), st.y().clone());
+            st.restart(t, y).map_err(|e| self.ode_err(e))?;
+            self.run.work.restarts += 1;
+        }
+        Ok(())
     }
 
     /// Records the sample (t, y).
@@ -272,8 +306,12 @@ impl Scene {
             return Ok(pass.finish(y0, start));
         }
         let mut scratch = RhsScratch::new(self);
+        let stops = pass.stops();
+        // the piece between two corners of the load profiles the stepper is on
+        let piece = Cell::new((0.0, stops[0].0));
         // f written in place: the stepper keeps one state per stage (no allocation per evaluation)
         let f = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
+            scratch.piece = Some(piece.get());
             if let Err(e) = self.deriv_resting(t, y, out, &mut scratch, &contacts.borrow().resting) {
                 failure.borrow_mut().get_or_insert(e);
                 out.fill(f64::NAN);
@@ -296,10 +334,8 @@ impl Scene {
                 out.fill(f64::NAN);
             }
         });
-        let mut stops = breakpoints(self.spec());
-        stops.push(self.spec().duration);
-        let mut st =
-            AnyStepper::new_in_place(&self.solver, f, jac, 0.0, y0, stops[0]).map_err(|e| pass.ode_err(e))?;
+        let mut st = AnyStepper::new_in_place(&self.solver, f, jac, 0.0, y0, stops[0].0)
+            .map_err(|e| pass.ode_err(e))?;
         pass.geo = if self.needs.impacts { self.gaps(st.y()).map_err(|e| fail(0.0, e))? } else { Vec::new() };
         let (mut stop_at, mut last_check) = (0, 0);
         loop {
@@ -307,12 +343,8 @@ impl Scene {
                 if stop_at + 1 == stops.len() {
                     break;
                 }
-                // a discontinuity of a load profile: continue from it with a fresh first stage
                 stop_at += 1;
-                let (t, y) = (st.t(), st.y().clone());
-                st.set_end(stops[stop_at]).map_err(|e| pass.ode_err(e))?;
-                st.restart(t, y).map_err(|e| pass.ode_err(e))?;
-                pass.run.work.restarts += 1;
+                pass.next_piece(&mut st, (stops[stop_at - 1], stops[stop_at].0), &piece)?;
             }
             match st.step() {
                 Ok(()) => {}

@@ -107,7 +107,8 @@ pub(crate) fn is_yes(b: &bool) -> bool {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MethodSpec {
-    /// `dopri5`, `dop853`, `radau5` or `bdf` (stiff scenes).
+    /// `dopri5`, `dop853`, `gbs` (extrapolation: tight tolerances on smooth scenes, no
+    /// interpolant), `radau5` or `bdf` (stiff scenes).
     pub name: String,
     /// Relative (= absolute) local tolerance.
     pub rtol: f64,

@@ -28,7 +28,7 @@ pub const STIFF_RHO_DURATION: f64 = 1000.0;
 /// Book: §4.11.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MethodChoice {
-    /// `dopri5`, `dop853`, `radau5` or `bdf`.
+    /// `dopri5`, `dop853`, `gbs`, `radau5` or `bdf`.
     pub name: &'static str,
     /// Its relative (= absolute) local tolerance.
     pub rtol: f64,
@@ -48,7 +48,7 @@ impl core::fmt::Display for MethodChoice {
     }
 }
 
-/// The method a scene names, if it names one (`dopri5`, `dop853`, `radau5`, `bdf`).
+/// The method a scene names, if it names one (`dopri5`, `dop853`, `gbs`, `radau5`, `bdf`).
 pub(crate) fn named(spec: &SceneSpec, src: &Src) -> Result<Option<(Method, String)>, SceneError> {
     let Some(m) = &spec.method else { return Ok(None) };
     if !(m.rtol > 0.0 && m.rtol < 1.0) {
@@ -57,12 +57,13 @@ pub(crate) fn named(spec: &SceneSpec, src: &Src) -> Result<Option<(Method, Strin
     let method = match m.name.as_str() {
         "dopri5" => Method::Explicit(vectrix_ode::Adaptive::dopri5().rtol(m.rtol).atol(m.rtol)),
         "dop853" => Method::Explicit(vectrix_ode::Adaptive::dop853().rtol(m.rtol).atol(m.rtol)),
+        "gbs" => Method::Gbs(vectrix_ode::Extrapolation::gbs().rtol(m.rtol).atol(m.rtol)),
         "radau5" => Method::Radau5(Radau5::new().rtol(m.rtol).atol(m.rtol)),
         "bdf" => Method::Bdf(Bdf::new().rtol(m.rtol).atol(m.rtol)),
         n => {
             return Err(src.invalid(
                 "method.name",
-                format!("unknown method `{n}`; valid: dopri5, dop853, radau5, bdf"),
+                format!("unknown method `{n}`; valid: dopri5, dop853, gbs, radau5, bdf"),
             ));
         }
     };
