@@ -43,8 +43,18 @@ impl<T: Scalar> Planar<T> {
         s[n].cs = [T::one(), z];
         let g = work.gravity;
         s[n].a = [z, -g.dot(&pl.u), -g.dot(&pl.w)];
-        joint_sin_cos(pl, q, trig, s);
-        twists(pl, q, v, s);
+        if pl.pin_chain && f_ext.is_none() {
+            joint_sin_cos::<T, true>(pl, q, trig, s);
+            twists::<T, true>(pl, q, v, s);
+            // a chain of pins has no slider: its scales are static
+            if !articulated_inertias::<T, true>(pl, tau, s) {
+                return false;
+            }
+            accelerations::<T, true>(pl, s, vdot);
+            return true;
+        }
+        joint_sin_cos::<T, false>(pl, q, trig, s);
+        twists::<T, false>(pl, q, v, s);
         if let Some(fe) = f_ext {
             for (l, &k) in pl.link_seg.iter().enumerate() {
                 let e = &mut s[k];
@@ -60,10 +70,10 @@ impl<T: Scalar> Planar<T> {
                 e.reach = seg.own_reach;
             }
         }
-        if !articulated_inertias(pl, tau, s) {
+        if !articulated_inertias::<T, false>(pl, tau, s) {
             return false;
         }
-        accelerations(pl, s, vdot);
+        accelerations::<T, false>(pl, s, vdot);
         true
     }
 }
@@ -72,8 +82,13 @@ impl<T: Scalar> Planar<T> {
 /// added when the parent comes next (a chain), else stored before the next one is made;
 /// either way each parent sums its own part and its children's in the same order. The
 /// roots' contributions (to the ground) are dropped. `false` at an inert coordinate.
+/// `CHAIN`: [`Planar::pin_chain`] (the joint kinds and parents known when compiled).
 #[inline(always)]
-fn articulated_inertias<T: Scalar>(pl: &Planar<T>, tau: &[T], s: &mut [PlanarScratch<T>]) -> bool {
+fn articulated_inertias<T: Scalar, const CHAIN: bool>(
+    pl: &Planar<T>,
+    tau: &[T],
+    s: &mut [PlanarScratch<T>],
+) -> bool {
     let n = pl.segs.len();
     let z = T::zero();
     let tol = pivot_tol::<T>();
@@ -82,7 +97,8 @@ fn articulated_inertias<T: Scalar>(pl: &Planar<T>, tau: &[T], s: &mut [PlanarScr
     for (i, ps) in pl.segs.iter().enumerate().rev() {
         let e = &mut s[i];
         let (mut ia_i, mut pa_i) = (e.ia, e.pa);
-        if pend == i {
+        // in a chain every segment but the tip has its child's part pending
+        if if CHAIN { i + 1 < n } else { pend == i } {
             for (x, y) in ia_i.iter_mut().zip(pend_ia) {
                 *x += y;
             }
@@ -96,9 +112,10 @@ fn articulated_inertias<T: Scalar>(pl: &Planar<T>, tau: &[T], s: &mut [PlanarScr
         // (Iᵃ, pᵃ) and what goes to the parent through X = [[1, 0], [ê, 1]], ê = â×d:
         // Xᵀ I X = [[A + 2ê·b + êᵀCê, (b + Cê)ᵀ], [b + Cê, C]]; it carries (a, b) =
         // (A + 2ê·b + êᵀCê, b + Cê) in its first row
-        let step = match ps.joint {
+        let joint = if CHAIN { PlanarJoint::Revolute } else { ps.joint };
+        let step = match joint {
             PlanarJoint::Revolute => {
-                let scale = if pl.static_scale {
+                let scale = if CHAIN || pl.static_scale {
                     ps.scale
                 } else {
                     ps.sub_trace + 2.0 * ps.sub_mass * e.reach * e.reach
@@ -114,12 +131,12 @@ fn articulated_inertias<T: Scalar>(pl: &Planar<T>, tau: &[T], s: &mut [PlanarScr
         let Some((ia, pa, a, b)) = step else { return false };
         // forces n_p = n + ê·f
         let nf = pa[0] + ex[0] * pa[1] + ex[1] * pa[2];
-        if !pl.static_scale && ps.sub_mass > 0.0 && ps.parent < n {
+        if !CHAIN && !pl.static_scale && ps.sub_mass > 0.0 && ps.parent < n {
             let reach = e.reach + dd[0].re().abs() + dd[1].re().abs();
             let pe = &mut s[ps.parent];
             pe.reach = pe.reach.max(reach);
         }
-        if pend != none {
+        if !CHAIN && pend != none {
             let pe = &mut s[pend];
             for (x, y) in pe.ia.iter_mut().zip(pend_ia) {
                 *x += y;
@@ -128,7 +145,7 @@ fn articulated_inertias<T: Scalar>(pl: &Planar<T>, tau: &[T], s: &mut [PlanarScr
                 *x += y;
             }
         }
-        (pend, pend_ia, pend_pa) = if ps.parent < n {
+        (pend, pend_ia, pend_pa) = if CHAIN || ps.parent < n {
             (ps.parent, [a, b[0], b[1], ia[3], ia[4], ia[5]], [nf, pa[1], pa[2]])
         } else {
             (none, [z; 6], [z; 3])
@@ -139,15 +156,25 @@ fn articulated_inertias<T: Scalar>(pl: &Planar<T>, tau: &[T], s: &mut [PlanarScr
 
 /// The joint angles' (cos, sin) first, all at once, into `cs` (`Scalar::fast_sin_cos_slices`:
 /// in SIMD for f64; inside pass 1 each would wait on the loop's chain). `trig` holds 3n.
+/// `CHAIN` ([`Planar::pin_chain`]): the angles are q itself.
 #[inline(always)]
-fn joint_sin_cos<T: Scalar>(pl: &Planar<T>, q: &[T], trig: &mut [T], s: &mut [PlanarScratch<T>]) {
+fn joint_sin_cos<T: Scalar, const CHAIN: bool>(
+    pl: &Planar<T>,
+    q: &[T],
+    trig: &mut [T],
+    s: &mut [PlanarScratch<T>],
+) {
     let n = pl.segs.len();
     let (x, rest) = trig.split_at_mut(n);
     let (sn, cn) = rest.split_at_mut(n);
-    for (xk, ps) in x.iter_mut().zip(&pl.segs) {
-        *xk = if ps.joint == PlanarJoint::Revolute { q[ps.qi] } else { T::zero() };
+    if CHAIN {
+        T::fast_sin_cos_slices(&q[..n], sn, cn);
+    } else {
+        for (xk, ps) in x.iter_mut().zip(&pl.segs) {
+            *xk = if ps.joint == PlanarJoint::Revolute { q[ps.qi] } else { T::zero() };
+        }
+        T::fast_sin_cos_slices(x, sn, cn);
     }
-    T::fast_sin_cos_slices(x, sn, cn);
     for (e, (c, sv)) in s.iter_mut().zip(cn.iter().zip(sn.iter())) {
         e.cs = [*c, *sv];
     }
@@ -156,14 +183,17 @@ fn joint_sin_cos<T: Scalar>(pl: &Planar<T>, q: &[T], trig: &mut [T], s: &mut [Pl
 /// Pass 1 (outward): orientations, twists, bias accelerations and bias forces. The parent's
 /// orientation and twist come from registers when it is the ground or the segment just done
 /// (a chain: no round trip through memory).
+/// `CHAIN`: [`Planar::pin_chain`].
 #[inline(always)]
-fn twists<T: Scalar>(pl: &Planar<T>, q: &[T], v: &[T], s: &mut [PlanarScratch<T>]) {
+fn twists<T: Scalar, const CHAIN: bool>(pl: &Planar<T>, q: &[T], v: &[T], s: &mut [PlanarScratch<T>]) {
     let n = pl.segs.len();
     let z = T::zero();
     let ground = ([T::one(), z], z, [z; 2]);
     let mut last = ground;
     for (i, ps) in pl.segs.iter().enumerate() {
-        let (cp, wp, vp) = if ps.parent == n {
+        let (cp, wp, vp) = if CHAIN {
+            last
+        } else if ps.parent == n {
             ground
         } else if ps.parent + 1 == i {
             last
@@ -171,18 +201,19 @@ fn twists<T: Scalar>(pl: &Planar<T>, q: &[T], v: &[T], s: &mut [PlanarScratch<T>
             let p = &s[ps.parent];
             (p.cs, p.w, p.v)
         };
+        let joint = if CHAIN { PlanarJoint::Revolute } else { ps.joint };
         let mut r = ps.r;
-        if ps.joint == PlanarJoint::Prismatic {
+        if joint == PlanarJoint::Prismatic {
             let x = q[ps.qi];
             r = [r[0] + ps.d[0] * x, r[1] + ps.d[1] * x];
         }
         let d = rot(&cp, &r);
         let mut vi = [vp[0] - wp * d[1], vp[1] + wp * d[0]];
         let e = &mut s[i];
-        let (cs, wi) = match ps.joint {
+        let (cs, wi) = match joint {
             PlanarJoint::Revolute => {
                 let [cn, sn] = e.cs;
-                let (sn, qd) = (sn * ps.sigma, v[ps.vi] * ps.sigma);
+                let (sn, qd) = (sn * ps.sigma, v[if CHAIN { i } else { ps.vi }] * ps.sigma);
                 // c = (ω, v) ×m (q̇ σâ, 0) = (0, −σq̇ â×v)
                 e.c = [qd * vi[1], -(qd * vi[0])];
                 ([cp[0] * cn - cp[1] * sn, cp[1] * cn + cp[0] * sn], wp + qd)
@@ -311,13 +342,16 @@ fn slider_inward<T: Scalar>(
 
 /// Pass 3 (outward): accelerations and q̈, the parent's acceleration from registers as in
 /// pass 1.
+/// `CHAIN`: [`Planar::pin_chain`].
 #[inline(always)]
-fn accelerations<T: Scalar>(pl: &Planar<T>, s: &mut [PlanarScratch<T>], vdot: &mut [T]) {
+fn accelerations<T: Scalar, const CHAIN: bool>(pl: &Planar<T>, s: &mut [PlanarScratch<T>], vdot: &mut [T]) {
     let n = pl.segs.len();
     let ga = s[n].a;
     let mut last = ga;
     for (i, ps) in pl.segs.iter().enumerate() {
-        let ap = if ps.parent == n {
+        let ap = if CHAIN {
+            last
+        } else if ps.parent == n {
             ga
         } else if ps.parent + 1 == i {
             last
@@ -327,14 +361,15 @@ fn accelerations<T: Scalar>(pl: &Planar<T>, s: &mut [PlanarScratch<T>], vdot: &m
         let e = &mut s[i];
         // 𝒜' = X𝒜_p + c: the angular part carries over, the linear part shifts by α â×d
         let a = [ap[0], (ap[1] + e.c[0]) - ap[0] * e.d[1], (ap[2] + e.c[1]) + ap[0] * e.d[0]];
-        e.a = match ps.joint {
+        let joint = if CHAIN { PlanarJoint::Revolute } else { ps.joint };
+        e.a = match joint {
             PlanarJoint::Revolute => {
                 // σq̈ = D⁻¹(σu − (column 0)ᵀ𝒜') and 𝒜 = 𝒜' + (σq̈, 0, 0): the angular part of 𝒜
                 // is D⁻¹σu − b1𝒜'₁ − b2𝒜'₂ (𝒜'₀ cancels), and σq̈ = 𝒜₀ − 𝒜'₀. With 𝒜' written
                 // out: u0 + ud·𝒜_p₀ − (b1𝒜_p₁ + b2𝒜_p₂), which waits on the parent's
                 // acceleration for one product and two sums, not for 𝒜'
                 let al = (e.u0 + e.ud * ap[0]) - (e.U[1] * ap[1] + e.U[2] * ap[2]);
-                vdot[ps.vi] = (al - a[0]) * ps.sigma;
+                vdot[if CHAIN { i } else { ps.vi }] = (al - a[0]) * ps.sigma;
                 [al, a[1], a[2]]
             }
             PlanarJoint::Prismatic => {

@@ -70,6 +70,10 @@ pub(crate) struct PlanarSeg<T: Scalar> {
 pub(crate) struct Planar<T: Scalar> {
     /// No slider: every [`PlanarSeg::scale`] holds for every configuration.
     pub static_scale: bool,
+    /// A chain of pins: segment i a pin whose parent is segment i − 1 (the ground for i = 0)
+    /// and whose coordinate is q_i, v_i. The passes are then compiled without the branches
+    /// for trees, sliders and welds (the same operations in the same order: the same bits).
+    pub pin_chain: bool,
     pub axis: Vector3<T>,
     pub u: Vector3<T>,
     pub w: Vector3<T>,
@@ -139,7 +143,13 @@ impl Planar<f64> {
                 _ => s.sub_trace + 2.0 * s.sub_mass * rho * rho,
             };
         }
-        Some(Planar { static_scale, axis, u, w, segs: out, link_seg: link_seg.to_vec() })
+        let pin_chain = out.iter().enumerate().all(|(i, p)| {
+            p.joint == PlanarJoint::Revolute
+                && p.parent == if i == 0 { n } else { i - 1 }
+                && p.qi == i
+                && p.vi == i
+        });
+        Some(Planar { static_scale, pin_chain, axis, u, w, segs: out, link_seg: link_seg.to_vec() })
     }
 
     /// The same reduction over another scalar (numbers converted exactly).
@@ -147,6 +157,7 @@ impl Planar<f64> {
         let c2 = |x: [f64; 2]| [U::lit(x[0]), U::lit(x[1])];
         Planar {
             static_scale: self.static_scale,
+            pin_chain: self.pin_chain,
             axis: self.axis.map(U::lit),
             u: self.u.map(U::lit),
             w: self.w.map(U::lit),
