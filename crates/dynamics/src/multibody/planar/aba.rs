@@ -44,38 +44,46 @@ impl<T: Scalar> Planar<T> {
         let g = work.gravity;
         s[n].a = [z, -g.dot(&pl.u), -g.dot(&pl.w)];
         if pl.pin_chain && f_ext.is_none() {
-            joint_sin_cos::<T, true>(pl, q, trig, s);
-            twists::<T, true>(pl, q, v, s);
-            // a chain of pins has no slider: its scales are static
-            if !articulated_inertias::<T, true>(pl, tau, s) {
-                return false;
-            }
-            accelerations::<T, true>(pl, s, vdot);
-            return true;
+            passes::<T, true>(pl, (q, v, tau), None, vdot, s, trig)
+        } else {
+            passes::<T, false>(pl, (q, v, tau), f_ext, vdot, s, trig)
         }
-        joint_sin_cos::<T, false>(pl, q, trig, s);
-        twists::<T, false>(pl, q, v, s);
-        if let Some(fe) = f_ext {
-            for (l, &k) in pl.link_seg.iter().enumerate() {
-                let e = &mut s[k];
-                let f = rot(&e.cs, &[fe[l].force.dot(&pl.u), fe[l].force.dot(&pl.w)]);
-                e.pa[0] -= fe[l].moment.dot(&pl.axis);
-                e.pa[1] -= f[0];
-                e.pa[2] -= f[1];
-            }
-        }
-        if !pl.static_scale {
-            // a slider moves the centres: ρ from this configuration, as the spatial passes
-            for (e, seg) in s.iter_mut().zip(&pl.segs) {
-                e.reach = seg.own_reach;
-            }
-        }
-        if !articulated_inertias::<T, false>(pl, tau, s) {
-            return false;
-        }
-        accelerations::<T, false>(pl, s, vdot);
-        true
     }
+}
+
+/// The three passes after the ground's entry; `false` at an inert coordinate. `CHAIN`:
+/// [`Planar::pin_chain`] (then no external wrenches and static scales).
+#[inline(always)]
+fn passes<T: Scalar, const CHAIN: bool>(
+    pl: &Planar<T>,
+    (q, v, tau): (&[T], &[T], &[T]),
+    f_ext: Option<&LinkWrenches<T>>,
+    vdot: &mut [T],
+    s: &mut [PlanarScratch<T>],
+    trig: &mut [T],
+) -> bool {
+    joint_sin_cos::<T, CHAIN>(pl, q, trig, s);
+    twists::<T, CHAIN>(pl, q, v, s);
+    if let Some(fe) = f_ext {
+        for (l, &k) in pl.link_seg.iter().enumerate() {
+            let e = &mut s[k];
+            let f = rot(&e.cs, &[fe[l].force.dot(&pl.u), fe[l].force.dot(&pl.w)]);
+            e.pa[0] -= fe[l].moment.dot(&pl.axis);
+            e.pa[1] -= f[0];
+            e.pa[2] -= f[1];
+        }
+    }
+    if !CHAIN && !pl.static_scale {
+        // a slider moves the centres: ρ from this configuration, as the spatial passes
+        for (e, seg) in s.iter_mut().zip(&pl.segs) {
+            e.reach = seg.own_reach;
+        }
+    }
+    if !articulated_inertias::<T, CHAIN>(pl, tau, s) {
+        return false;
+    }
+    accelerations::<T, CHAIN>(pl, s, vdot);
+    true
 }
 
 /// Pass 2 (inward). A segment's contribution to its parent waits in registers and is
