@@ -1,5 +1,5 @@
-//! One stepping interface over the explicit pairs, extrapolation, RADAU5 and BDF, so that a caller that drives
-//! the integration itself (scenes: samples, impacts, budgets) can take either.
+//! One stepping interface over the explicit pairs, extrapolation, RADAU5 and BDF, so that a
+//! caller that drives the integration itself (scenes: samples, impacts, budgets) can take any.
 
 use crate::explicit::{Adaptive, DenseStep, Extrapolation, GbsStepper, Stepper, Steps};
 use crate::implicit::{Bdf, BdfStepper, Radau5, RadauStepper};
@@ -10,7 +10,8 @@ use crate::{OdeError, State};
 /// An adaptive method: an explicit pair ([`Adaptive`]), extrapolation ([`Extrapolation`]) or a
 /// stiff one ([`Radau5`], [`Bdf`]).
 ///
-/// Book: §4.11; HNW §II.4–II.10 (explicit pairs, §II.9 extrapolation), HW §IV.8 (RADAU5), §III.5 (BDF).
+/// Book: §4.11; HNW §II.4–II.10 (explicit pairs, §II.9 extrapolation), HW §IV.8 (RADAU5),
+/// §III.5 (BDF).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Method {
     /// DOPRI5 or DOP853.

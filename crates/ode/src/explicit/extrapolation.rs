@@ -66,7 +66,7 @@ impl Solver<Gbs> {
 
     /// The interval, tolerances and step bounds ([`Solver::check`]) and `max_columns`: the step
     /// bound h_max.
-    fn check_gbs(&self, t0: f64, t1: f64) -> Result<f64, OdeError> {
+    pub(super) fn check_gbs(&self, t0: f64, t1: f64) -> Result<f64, OdeError> {
         let h_max = self.check(t0, t1)?;
         let km = self.method.max_columns;
         if !(3..=GBS_MAX_COLUMNS).contains(&km) {
@@ -92,7 +92,7 @@ impl Solver<Gbs> {
         t1: f64,
     ) -> Result<Solution<S>, OdeError> {
         let start = Instant::now();
-        self.check_gbs(t0, t1)?;
+        let h_max = self.check_gbs(t0, t1)?;
         if self.dense {
             return Err(OdeError::InvalidSetting {
                 name: "dense",
@@ -100,7 +100,7 @@ impl Solver<Gbs> {
                 valid: "false (0): extrapolation records no dense output",
             });
         }
-        let (mut run, f0) = Run::start(self, &mut f, t0, y0, t1)?;
+        let (mut run, f0) = Run::start(self, &mut f, t0, y0, h_max)?;
         let mut ts = vec![t0];
         let mut ys = vec![y0.clone()];
         let mut dz = f0;
@@ -192,16 +192,16 @@ enum Verdict {
 }
 
 impl<S: State> Run<S> {
-    /// Checks the settings, t0 < t1 and y0, evaluates f(t0, y0) (returned) and picks the first
-    /// step (`h0`, or HNW's starting step for order 2k − 1).
+    /// Checks y0, evaluates f(t0, y0) (returned) and picks the first step (`h0`, or HNW's
+    /// starting step for order 2k − 1), with the step bound `h_max` that
+    /// [`Solver::check_gbs`] returned for the settings and interval.
     pub(super) fn start<F: Rhs<S>>(
         cfg: &Solver<Gbs>,
         f: &mut F,
         t0: f64,
         y0: &S,
-        t1: f64,
+        h_max: f64,
     ) -> Result<(Self, S), OdeError> {
-        let h_max = cfg.check_gbs(t0, t1)?;
         check_state(t0, y0)?;
         let mut run = Run::new(cfg, cfg.method.max_columns, h_max, y0);
         let f0 = eval(f, t0, y0, t0, 1, &mut run.work.fevals)?;

@@ -106,8 +106,9 @@ impl<S: State, G: FnMut(f64, &S, &mut S)> GbsStepper<S, InPlace<G>> {
 impl<S: State, F: Rhs<S>> GbsStepper<S, F> {
     /// [`GbsStepper::new`] for any [`Rhs`].
     pub(crate) fn start(cfg: &Extrapolation, mut f: F, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
-        let (run, f_now) = Run::start(cfg, &mut f, t0, &y0, t_end)?;
-        let mut p = Progress::new(t0, y0, t_end, cfg.h_max.unwrap_or(t_end - t0), cfg.h_max, run.work);
+        let h_max = cfg.check_gbs(t0, t_end)?;
+        let (run, f_now) = Run::start(cfg, &mut f, t0, &y0, h_max)?;
+        let mut p = Progress::new(t0, y0, t_end, h_max, cfg.h_max, run.work);
         p.h = run.proposed();
         Ok(Self { f, p, run, f_now, fresh: true })
     }
