@@ -1,9 +1,11 @@
-//! Scenes under `method = { name = "gbs" }`: Gragg–Bulirsch–Stoer extrapolation through the one
-//! scene pipeline. It keeps no interpolant, so the run lands on every sample time and every
-//! corner of a load profile (restarting only at the corners), and a scene with contacts is
-//! refused; the samples are checked against closed forms.
+//! Scenes under the methods that keep no interpolant, `method = { name = "gbs" }`
+//! (Gragg–Bulirsch–Stoer extrapolation) and `{ name = "vern9" }` (Verner's 9(8) pair), through
+//! the one scene pipeline: the run lands on every sample time and every corner of a load
+//! profile (restarting only at the corners), and a scene with contacts is refused; the samples
+//! are checked against closed forms.
 //!
-//! Book: §4.11 (integration), §7.4 (the pendulum); HNW §II.9 (extrapolation).
+//! Book: §4.11 (integration), §7.4 (the pendulum); HNW §II.9 (extrapolation); Verner, Numer.
+//! Algorithms 53 (2010).
 
 use vectrix::ode::harness::{Pendulum, Reference};
 use vectrix::scene::{Run, Scene, SceneError};
@@ -31,16 +33,23 @@ fn pendulum(samples: usize, method: &str, rtol: f64) -> String {
 // Every sample of the θ₀ = 3 pendulum (near the top: a hard, strongly nonlinear swing) lies on
 // the closed form θ = 2 asin(k sn(K − t, k²)) at each sample time, within 1500·rtol (the spread
 // of global over local error GBS shows on this problem in
-// tests/integrators.rs `gbs_extrapolation_error_follows_the_tolerance_on_closed_forms`); the
-// samples are step ends (no restarts), and the run's final state is the same with 1 sample.
+// tests/integrators.rs `gbs_extrapolation_error_follows_the_tolerance_on_closed_forms` and
+// `vern9_error_follows_the_tolerance_on_closed_forms`); the samples are step ends (no
+// restarts), and the run's final state is the same with 1 sample.
 #[test]
-fn gbs_scene_lands_on_every_sample_on_the_pendulums_closed_form() {
+fn scene_without_an_interpolant_lands_on_every_sample_on_the_pendulums_closed_form() {
+    for method in ["gbs", "vern9"] {
+        lands_on_every_sample(method);
+    }
+}
+
+fn lands_on_every_sample(method: &str) {
     let exact = Pendulum { theta0: 3.0 };
     let rtol = 1e-12;
-    let r = run(&load(&pendulum(40, "gbs", rtol)));
+    let r = run(&load(&pendulum(40, method, rtol)));
     assert!(r.is_complete(), "{:?}", r.stop);
-    assert_eq!(r.method.name, "gbs");
-    assert_eq!(r.work.restarts, 0, "samples are landings, not restarts: {:?}", r.work);
+    assert_eq!(r.method.name, method);
+    assert_eq!(r.work.restarts, 0, "{method}: samples are landings, not restarts: {:?}", r.work);
     let theta = r.column("coordinates:bob.0").unwrap_or_else(|| panic!("columns: {:?}", r.columns));
     let omega = r.column("speeds:bob.0").unwrap_or_else(|| panic!("columns: {:?}", r.columns));
     assert_eq!(r.t.len(), 41);
@@ -48,26 +57,26 @@ fn gbs_scene_lands_on_every_sample_on_the_pendulums_closed_form() {
         assert_eq!(t, 10.0 * (k as f64 / 40.0), "sample {k} time");
         let y = exact.exact(t);
         let e = (theta[k] - y[0]).abs().max((omega[k] - y[1]).abs());
-        assert!(e <= 1500.0 * rtol, "t = {t}: error {e:e}");
+        assert!(e <= 1500.0 * rtol, "{method}: t = {t}: error {e:e}");
     }
     // one sample: fewer, longer steps, the same end to the tolerance
-    let one = run(&load(&pendulum(1, "gbs", rtol)));
+    let one = run(&load(&pendulum(1, method, rtol)));
     assert!(one.work.accepted < r.work.accepted, "{:?} vs {:?}", one.work, r.work);
     let y = exact.exact(10.0);
     let e = (one.final_state[0] - y[0]).abs().max((one.final_state[1] - y[1]).abs());
-    assert!(e <= 1500.0 * rtol, "one sample: error {e:e}");
+    assert!(e <= 1500.0 * rtol, "{method}: one sample: error {e:e}");
 }
 
 // A free body pushed by a force that steps from 0 to 2 N at t = 0.35 s: x = (F/2m)(t − 0.35)²
 // after the step. The step that ends at the corner sees the force before it and the run
 // restarts there with the force after it, so every method integrates two polynomials: GBS
-// exactly, DOP853 and DOPRI5 (order 8 and 5, exact on quadratics) too. Every sample is then
+// exactly, Vern9, DOP853 and DOPRI5 (order 9, 8 and 5, exact on quadratics) too. Every sample is then
 // the closed form to a few roundings, and the run restarts once. (Before the piece was known
 // to the right-hand side, the last step before the corner saw the 2 N at its end: x was
 // 5e-9 m off at t = 1 under GBS, 2e-10 under DOP853.)
 #[test]
 fn load_step_restarts_once_and_every_method_samples_the_exact_parabola() {
-    for method in ["gbs", "dop853", "dopri5"] {
+    for method in ["gbs", "vern9", "dop853", "dopri5"] {
         let text = format!(
             "name = \"push\"\nduration = 1.0\nsamples = 10\nmethod = {{ name = \"{method}\", rtol = 1e-10 }}\n\
              outputs = [\"coordinates:box\"]\n\n\
@@ -88,21 +97,25 @@ fn load_step_restarts_once_and_every_method_samples_the_exact_parabola() {
     }
 }
 
-// Contacts are located on the interpolant, which extrapolation does not keep: the scene is
-// refused where it names the method, with the methods that would do.
+// Contacts are located on the interpolant, which extrapolation and Vern9 do not keep: the
+// scene is refused where it names the method, with the methods that would do.
 #[test]
-fn gbs_scene_with_a_contact_is_refused_at_its_method() {
+fn scene_without_an_interpolant_with_a_contact_is_refused_at_its_method() {
     let text = "name = \"ball\"\nduration = 1.0\nmethod = { name = \"gbs\", rtol = 1e-10 }\n\n\
                 [[bodies]]\nname = \"ball\"\njoint = { type = \"free\" }\n\
                 mass = { shape = \"sphere\", mass = 1.0, radius = 0.1 }\nq = [0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0]\n\n\
                 [[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, 0.0, -9.81]\n\n\
                 [[effects]]\ntype = \"contact_plane\"\nbody = \"ball\"\nradius = 0.1\npoint = [0.0, 0.0, 0.0]\n\
                 normal = [0.0, 0.0, 1.0]\nrestitution = 0.5\n";
-    let e = Scene::from_toml(text, "ball.toml").expect_err("gbs with a contact");
-    let msg = e.to_string();
-    assert!(matches!(e, SceneError::Invalid { .. }), "{e:?}");
-    for part in ["method.name", "gbs", "interpolant", "dop853"] {
-        assert!(msg.contains(part), "`{part}` missing from: {msg}");
+    for method in ["gbs", "vern9"] {
+        let text = text.replace("\"gbs\"", &format!("\"{method}\""));
+        let e =
+            Scene::from_toml(&text, "ball.toml").expect_err("a method without an interpolant with a contact");
+        let msg = e.to_string();
+        assert!(matches!(e, SceneError::Invalid { .. }), "{e:?}");
+        for part in ["method.name", method, "interpolant", "dop853"] {
+            assert!(msg.contains(part), "`{part}` missing from: {msg}");
+        }
     }
     // the same scene under dop853 is valid
     Scene::from_toml(&text.replace("\"gbs\"", "\"dop853\""), "ball.toml").unwrap_or_else(|e| panic!("{e}"));

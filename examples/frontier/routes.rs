@@ -1,7 +1,8 @@
 //! The vectrix side of the frontier: every problem through the library (every integrator that
 //! applies: the adaptive pairs, extrapolation and, on the closed-form problems, the Taylor
 //! method at a ladder of tolerances, the fixed-step methods at a ladder of step counts) and
-//! through scenes (both pairs and GBS at the same ladder of tolerances).
+//! through scenes (the three pairs DP5, DOP853 and Vern9, and GBS, at the same ladder of
+//! tolerances).
 
 use nalgebra::SVector;
 use serde_json::{Value, json};
@@ -123,13 +124,15 @@ impl Ctx {
         (0..=kmax).step_by(stride).map(|k| (t_end * 2f64.powi(k)).ceil()).collect()
     }
 
-    /// A reference problem through the library: DP5 and DOP853 at every tolerance, RK4,
+    /// A reference problem through the library: DP5, DOP853 and Vern9 at every tolerance, RK4,
     /// Gauss4 and Gauss6 at every step count.
     pub fn library<const N: usize, R: Reference<N>>(&mut self, id: &str, p: &R) {
         let (y0, t_end) = (p.y0(), p.t_end());
         let err = |y: &[f64]| p.error(&SVector::<f64, N>::from_column_slice(y));
         let tols = self.tolerances();
-        for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
+        for (name, a) in
+            [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853()), ("Vern9", Adaptive::vern9())]
+        {
             let run = |tol: f64| -> Outcome {
                 let s = a
                     .rtol(tol)
@@ -225,7 +228,7 @@ impl Ctx {
         }
     }
 
-    /// A scene at every tolerance with both pairs and GBS; `error` reads the run's final state.
+    /// A scene at every tolerance with the three pairs and GBS; `error` reads the run's final state.
     /// The scene files are parsed and validated before the timed runs.
     pub fn scene(&mut self, id: &str, toml: impl Fn(&str, f64) -> String, error: impl Fn(&[f64]) -> f64) {
         self.scene_in(id, "frontier", toml, error);
@@ -240,7 +243,7 @@ impl Ctx {
         error: impl Fn(&[f64]) -> f64,
     ) {
         let tols = self.tolerances();
-        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853"), ("GBS", "gbs")] {
+        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853"), ("Vern9", "vern9"), ("GBS", "gbs")] {
             let scenes: Vec<(f64, Scene)> = tols
                 .iter()
                 .map(|&tol| match Scene::from_toml(&toml(key, tol), dir) {
@@ -326,7 +329,7 @@ impl Ctx {
     }
 
     /// A tree (N = nq + nv states) from y0 over [0, t_end] through `Model::aba_into` (DP5,
-    /// DOP853, GBS, RK4, Gauss6) and through its scene file (read as `dir`, where its model
+    /// DOP853, Vern9, GBS, RK4, Gauss6) and through its scene file (read as `dir`, where its model
     /// files are); the end state compared in the common form ([`common_form`]).
     #[allow(clippy::too_many_arguments)]
     fn tree<const N: usize>(
@@ -343,7 +346,9 @@ impl Ctx {
         let tau = vec![0.0; model.nv()];
         let err = |y: &[f64]| max_abs_diff(&common_form(model, y), reference);
         let tols = self.tolerances();
-        for (name, a) in [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853())] {
+        for (name, a) in
+            [("DP5", Adaptive::dopri5()), ("DOP853", Adaptive::dop853()), ("Vern9", Adaptive::vern9())]
+        {
             let run = |tol: f64| -> Outcome {
                 let mut scratch = model.aba_scratch();
                 let f = |_: f64, y: &SVector<f64, N>| tree_rhs(model, &tau, &mut scratch, y);
@@ -468,7 +473,7 @@ impl Ctx {
         }
         // the scene checks the energy at its 1000 samples (every 10 periods) itself
         let tols = self.tolerances();
-        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853"), ("GBS", "gbs")] {
+        for (name, key) in [("DP5", "dopri5"), ("DOP853", "dop853"), ("Vern9", "vern9"), ("GBS", "gbs")] {
             let scenes: Vec<(f64, Scene)> = tols
                 .iter()
                 .map(|&tol| {

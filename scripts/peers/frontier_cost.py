@@ -21,7 +21,7 @@ import sys
 import frontier_common as fc
 
 LEVELS = (1e-6, 1e-9, 1e-12)
-DEFAULT = ("vectrix DOP853", "vectrix GBS", "vectrix Taylor", "vectrix scene DOP853", "vectrix scene GBS", "Odeint RKF78", "Odeint Bulirsch-Stoer", "Odeint DP5")
+DEFAULT = ("vectrix DOP853", "vectrix Vern9", "vectrix GBS", "vectrix Taylor", "vectrix scene DOP853", "vectrix scene Vern9", "vectrix scene GBS", "Odeint RKF78", "Odeint Bulirsch-Stoer", "Odeint DP5")
 
 
 def load_points():

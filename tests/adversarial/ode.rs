@@ -617,6 +617,63 @@ cases! {
         assert!(matches!(a.dense(), Err(OdeError::NoInterpolant { .. })), "AnyStepper::dense of gbs");
     }
 
+    // Verner's 9(8) pair: hostile settings, states and ends are refused or solved finitely; it
+    // keeps no interpolant, so dense output and events are refused up front with a typed error
+    // (never a step taken first), and the stepper's dense() likewise; a scene-style run lands on
+    // its times with set_end; an f that turns NaN is refused before it is stepped past.
+    adaptive_vern9 ["Solver::vern9"] {
+        use vectrix::ode::explicit::Stepper;
+        use vectrix::ode::{AnyStepper, Method as OdeMethod};
+        let f = |_: f64, y: &Vec<f64>| vec![y[1], -y[0]];
+        let cfg = Adaptive::vern9().max_steps(20_000);
+        for x in hostile() {
+            err_or(cfg.solve(f, 0.0, &vec![x, 0.0], 1.0), "hostile y0", |s| fin(s.last()));
+            err_or(cfg.solve(f, 0.0, &vec![1.0, 0.0], x), "hostile t1", |s| fin(s.last()));
+            err_or(cfg.rtol(x).solve(f, 0.0, &vec![1.0, 0.0], 1.0), "hostile rtol", |s| fin(s.last()));
+            err_or(cfg.atol(x).solve(f, 0.0, &vec![1.0, 0.0], 1.0), "hostile atol", |s| fin(s.last()));
+            err_or(cfg.h0(x).h_max(x).solve(f, 0.0, &vec![1.0, 0.0], 1.0), "hostile h", |s| fin(s.last()));
+        }
+        let mut calls = 0;
+        let counting = |_: f64, y: &Vec<f64>| {
+            calls += 1;
+            vec![y[1], -y[0]]
+        };
+        assert!(matches!(cfg.dense(true).solve(counting, 0.0, &vec![1.0, 0.0], 1.0), Err(OdeError::NoInterpolant { method: "vern9" })));
+        assert_eq!(calls, 0, "vern9 with dense output evaluated f before refusing");
+        let mut events = [Event::new(|_, y: &Vec<f64>| y[0])];
+        assert!(matches!(cfg.solve_with_events(f, 0.0, &vec![1.0, 0.0], 1.0, &mut events), Err(OdeError::NoInterpolant { .. })));
+        refused(cfg.solve(|_, _y: &Vec<f64>| vec![1.0], 0.0, &vec![1.0, 0.0], 1.0), "short right-hand side");
+        let mut st = Stepper::new(&cfg.rtol(1e-12).atol(1e-12), f, 0.0, vec![1.0, 0.0], 0.5).unwrap();
+        st.step().unwrap();
+        assert!(matches!(st.dense(), Err(OdeError::NoInterpolant { method: "vern9" })), "stepper dense");
+        for k in 1..=4 {
+            let tk = 0.5 * k as f64;
+            if k > 1 {
+                st.set_end(tk).unwrap();
+            }
+            while !st.done() {
+                st.step().unwrap();
+            }
+            // on cos/sin at every landing time within 100× the local tolerance 1e-12
+            let e = (st.y()[0] - tk.cos()).abs().max((st.y()[1] + tk.sin()).abs());
+            assert!(st.t() == tk && e < 1e-10, "landing {k}: t = {}, error {e:e}", st.t());
+        }
+        let nan_late = |t: f64, y: &Vec<f64>| vec![y[1], if t > 0.5 { f64::NAN } else { -y[0] }];
+        let mut st = Stepper::new(&cfg, nan_late, 0.0, vec![1.0, 0.0], 2.0).unwrap();
+        let err = loop {
+            match st.step() {
+                Ok(()) => assert!(st.t() <= 0.5, "stepped to {} past the NaN", st.t()),
+                Err(e) => break e,
+            }
+        };
+        assert!(matches!(err, OdeError::RhsNotFinite { .. }), "{err}");
+        let m = OdeMethod::Explicit(cfg);
+        assert!(!m.has_interpolant() && !m.is_implicit() && m.name() == "vern9");
+        let mut a = AnyStepper::new(&m, f, None::<fn(f64, &Vec<f64>, &mut [f64])>, 0.0, vec![1.0, 0.0], 1.0).unwrap();
+        a.step().unwrap();
+        assert!(matches!(a.dense(), Err(OdeError::NoInterpolant { .. })), "AnyStepper::dense of vern9");
+    }
+
     // The Taylor method: hostile tolerances, steps, states, ends and orders are refused or give
     // finite answers; each elementary function of the series at a hostile state is refused or
     // finite, at its singular point (√ and ln at 0, x^−1.5 at 0, e^x past overflow, a blow-up)

@@ -75,6 +75,7 @@ impl Accuracy {
         let a = match row.pair {
             Pair::Dopri5 => Adaptive::dopri5(),
             Pair::Dop853 => Adaptive::dop853(),
+            Pair::Vern9 => Adaptive::vern9(),
         };
         Ok(a.rtol(row.rtol).atol(row.rtol))
     }

@@ -72,7 +72,7 @@ pub use accuracy::{ACCURACY_TABLE, Accuracy, AccuracyRow, STIFF_ACCURACY_TABLE, 
 pub use error::OdeError;
 pub use explicit::{
     Adaptive, DOP853, DOPRI5, Direction, EULER, Event, EventHit, Extrapolation, GBS_MAX_COLUMNS, Gbs, HEUN,
-    Pair, RK4, Solution, Tableau,
+    Pair, RK4, Solution, Tableau, VERN9,
 };
 pub use implicit::{
     Bdf, BdfFormula, BdfStepper, GaussLegendre, Implicit, Radau5, RadauIIA, RadauStepper, stormer_verlet,

@@ -14,7 +14,7 @@ use crate::{OdeError, State};
 /// §III.5 (BDF).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Method {
-    /// DOPRI5 or DOP853.
+    /// DOPRI5, DOP853 or Vern9 (Vern9 without an interpolant: [`AnyStepper::dense`] refuses).
     Explicit(Adaptive),
     /// Gragg–Bulirsch–Stoer extrapolation (no interpolant: [`AnyStepper::dense`] refuses).
     Gbs(Extrapolation),
@@ -43,12 +43,13 @@ impl Method {
             Self::Bdf(b) => Self::Bdf(b.max_steps(n)),
         }
     }
-    /// Its name as in scene files: `dopri5`, `dop853`, `gbs`, `radau5`, `bdf`.
+    /// Its name as in scene files: `dopri5`, `dop853`, `vern9`, `gbs`, `radau5`, `bdf`.
     pub fn name(&self) -> &'static str {
         match self {
             Self::Explicit(a) => match a.method {
                 crate::Pair::Dopri5 => "dopri5",
                 crate::Pair::Dop853 => "dop853",
+                crate::Pair::Vern9 => "vern9",
             },
             Self::Gbs(_) => "gbs",
             Self::Radau5(_) => "radau5",
@@ -68,10 +69,10 @@ impl Method {
     pub fn is_implicit(&self) -> bool {
         !matches!(self, Self::Explicit(_) | Self::Gbs(_))
     }
-    /// `true` for the methods with an interpolant between steps (all but `gbs`): dense
-    /// output and located events need one.
+    /// `true` for the methods with an interpolant between steps (all but `gbs` and `vern9`):
+    /// dense output and located events need one.
     pub fn has_interpolant(&self) -> bool {
-        !matches!(self, Self::Gbs(_))
+        !matches!(self, Self::Gbs(_) | Self::Explicit(crate::Adaptive { method: crate::Pair::Vern9, .. }))
     }
 }
 

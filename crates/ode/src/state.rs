@@ -133,11 +133,36 @@ impl<const M: usize> Row<M> {
         Self { idx, a, len }
     }
 
+    /// Every row of a stage matrix without its zeros.
+    pub(crate) const fn table<const S: usize>(a: [&[f64]; S]) -> [Self; S] {
+        let mut rows = [Self::new(&[]); S];
+        let mut i = 0;
+        while i < S {
+            rows[i] = Self::new(a[i]);
+            i += 1;
+        }
+        rows
+    }
+
     /// The terms (stage j, aⱼ).
     #[inline(always)]
     pub(crate) fn terms(&self) -> impl Iterator<Item = (usize, f64)> + Clone + '_ {
         self.idx[..self.len].iter().copied().zip(self.a[..self.len].iter().copied())
     }
+}
+
+/// The stages j < S with bⱼ ≠ 0 or eⱼ ≠ 0 (a step's solution and its error estimate), in order,
+/// and how many there are: the sums of a step skip the others (the same numbers, as [`Row`]).
+pub(crate) const fn weighted_stages<const S: usize>(b: &[f64], e: &[f64]) -> ([usize; S], usize) {
+    let (mut idx, mut len, mut j) = ([0; S], 0, 0);
+    while j < S {
+        if b[j] != 0.0 || e[j] != 0.0 {
+            idx[len] = j;
+            len += 1;
+        }
+        j += 1;
+    }
+    (idx, len)
 }
 
 /// [`combine_into`] over a sparse [`Row`]: y + h Σ aⱼ kⱼ over its nonzero terms (k holds every

@@ -88,7 +88,7 @@ impl<'a> Pass<'a> {
 
     /// Where the integration stops, in order, and whether it restarts there: the corners and
     /// jumps of the load profiles (restart), the sample times for a method without an
-    /// interpolant (`gbs`: it lands on them), and the end.
+    /// interpolant (`gbs`, `vern9`: they land on them), and the end.
     fn stops(&self) -> Vec<(f64, bool)> {
         let spec = self.scene.spec();
         let mut stops: Vec<(f64, bool)> = breakpoints(spec).into_iter().map(|t| (t, true)).collect();

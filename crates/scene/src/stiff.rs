@@ -48,7 +48,7 @@ impl core::fmt::Display for MethodChoice {
     }
 }
 
-/// The method a scene names, if it names one (`dopri5`, `dop853`, `gbs`, `radau5`, `bdf`).
+/// The method a scene names, if it names one (`dopri5`, `dop853`, `vern9`, `gbs`, `radau5`, `bdf`).
 pub(crate) fn named(spec: &SceneSpec, src: &Src) -> Result<Option<(Method, String)>, SceneError> {
     let Some(m) = &spec.method else { return Ok(None) };
     if !(m.rtol > 0.0 && m.rtol < 1.0) {
@@ -57,13 +57,14 @@ pub(crate) fn named(spec: &SceneSpec, src: &Src) -> Result<Option<(Method, Strin
     let method = match m.name.as_str() {
         "dopri5" => Method::Explicit(vectrix_ode::Adaptive::dopri5().rtol(m.rtol).atol(m.rtol)),
         "dop853" => Method::Explicit(vectrix_ode::Adaptive::dop853().rtol(m.rtol).atol(m.rtol)),
+        "vern9" => Method::Explicit(vectrix_ode::Adaptive::vern9().rtol(m.rtol).atol(m.rtol)),
         "gbs" => Method::Gbs(vectrix_ode::Extrapolation::gbs().rtol(m.rtol).atol(m.rtol)),
         "radau5" => Method::Radau5(Radau5::new().rtol(m.rtol).atol(m.rtol)),
         "bdf" => Method::Bdf(Bdf::new().rtol(m.rtol).atol(m.rtol)),
         n => {
             return Err(src.invalid(
                 "method.name",
-                format!("unknown method `{n}`; valid: dopri5, dop853, gbs, radau5, bdf"),
+                format!("unknown method `{n}`; valid: dopri5, dop853, vern9, gbs, radau5, bdf"),
             ));
         }
     };

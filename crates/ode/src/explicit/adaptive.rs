@@ -1,5 +1,6 @@
-//! Adaptive explicit Runge–Kutta: DOPRI5 and DOP853 with error control, dense output and
-//! events, solved in one call by driving a [`Stepper`] to the end.
+//! Adaptive explicit Runge–Kutta: DOPRI5, DOP853 and Vern9 with error control (dense output
+//! and events for the two with an interpolant), solved in one call by driving a [`Stepper`]
+//! to the end.
 //!
 //! Book: §4.11; HNW §II.4–II.10.
 
@@ -21,7 +22,8 @@ impl Solver<Pair> {
     /// [`OdeError::NonPositiveStep`], [`OdeError::NonFiniteState`]; during the run:
     /// [`OdeError::RhsNotFinite`], [`OdeError::StepSizeUnderflow`], [`OdeError::TooManySteps`]
     /// (also up front when (t1 − t0)/h_max exceeds `max_steps`), [`OdeError::DimensionMismatch`]
-    /// when f returns a state of another length than y.
+    /// when f returns a state of another length than y; [`OdeError::NoInterpolant`] up front
+    /// for Vern9 with `.dense(true)`.
     pub fn solve<S: State, F: FnMut(f64, &S) -> S>(
         &self,
         f: F,
@@ -37,7 +39,8 @@ impl Solver<Pair> {
     /// tolerance).
     ///
     /// # Errors
-    /// As [`Adaptive::solve`](super::Adaptive::solve).
+    /// As [`Adaptive::solve`](super::Adaptive::solve); [`OdeError::NoInterpolant`] up front
+    /// for Vern9 with events.
     pub fn solve_with_events<S: State, F: FnMut(f64, &S) -> S>(
         &self,
         f: F,
@@ -47,6 +50,9 @@ impl Solver<Pair> {
         events: &mut [Event<'_, S>],
     ) -> Result<Solution<S>, OdeError> {
         let start = Instant::now();
+        if self.method == Pair::Vern9 && (self.dense || !events.is_empty()) {
+            return Err(OdeError::NoInterpolant { method: "vern9" });
+        }
         let st = Stepper::new(self, f, t0, y0.clone(), t1)?;
         drive(st, start, y0, events, self.dense)
     }

@@ -3,7 +3,7 @@
 use super::dense::{DenseStep, Form, hermite_part, weighted};
 use super::dop853_coefficients::{A, B, BHH, C, D, E};
 use crate::Rhs;
-use crate::state::{Row, State, check_stages, combine, combine_row_into, eval, eval_slot};
+use crate::state::{Row, State, check_stages, combine, combine_row_into, eval, eval_slot, weighted_stages};
 use crate::{OdeError, Work};
 
 /// Nodes of the 12 stages of the 8th-order solution (c₁₂ = 1).
@@ -14,29 +14,11 @@ pub(crate) const A12: [&[f64]; 12] = [&[], A[0], A[1], A[2], A[3], A[4], A[5], A
 
 /// The rows of [`A12`] without their zeros (16 of the 66 entries: a stage's argument is a chain
 /// of 50 dependent multiply-adds a step instead of 66).
-const ROWS: [Row<11>; 12] = {
-    let mut rows = [Row::new(&[]); 12];
-    let mut i = 0;
-    while i < 12 {
-        rows[i] = Row::new(A12[i]);
-        i += 1;
-    }
-    rows
-};
+const ROWS: [Row<11>; 12] = Row::table(A12);
 
 /// The stages with a nonzero weight in y₁ (b) or in the 5th-order estimate (e): k₂..k₅ have
 /// neither, so the sums skip them (see [`Row`]: the same numbers).
-const BE_STAGES: ([usize; 12], usize) = {
-    let (mut idx, mut len, mut j) = ([0; 12], 0, 0);
-    while j < 12 {
-        if B[j] != 0.0 || E[j] != 0.0 {
-            idx[len] = j;
-            len += 1;
-        }
-        j += 1;
-    }
-    (idx, len)
-};
+const BE_STAGES: ([usize; 12], usize) = weighted_stages(&B, &E);
 
 /// Stages 2..=12 from k₁ = `k[0]` into `k[1..12]` (k holds at least k₁); returns y₁ and the
 /// scaled error norm of HNW (10.17):

@@ -17,6 +17,8 @@ mod gbs_stepper;
 mod pair;
 mod stepper;
 mod tableau;
+mod vern9;
+mod vern9_coefficients;
 
 pub use dense::DenseStep;
 pub(crate) use dense::Form;
@@ -29,4 +31,4 @@ pub use gbs_stepper::GbsStepper;
 pub(crate) use pair::initial_step;
 pub use pair::{Adaptive, Pair};
 pub use stepper::Stepper;
-pub use tableau::{DOP853, DOPRI5, EULER, HEUN, RK4, Tableau};
+pub use tableau::{DOP853, DOPRI5, EULER, HEUN, RK4, Tableau, VERN9};

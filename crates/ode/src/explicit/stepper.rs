@@ -9,7 +9,7 @@
 use super::dense::DenseStep;
 use super::drive::Steps;
 use super::pair::{Adaptive, Pair, initial_step, order};
-use super::{dop853, dopri5};
+use super::{dop853, dopri5, vern9};
 use crate::progress::Progress;
 use crate::state::{State, check_state, eval, eval_into};
 use crate::{InPlace, Rhs};
@@ -158,6 +158,7 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
         let (ord, beta, fac_min, fac_max, safe) = match self.cfg.method {
             Pair::Dopri5 => (5.0, 0.04, 0.2, 10.0, 0.9),
             Pair::Dop853 => (8.0, 0.0, 0.333, 6.0, 0.8),
+            Pair::Vern9 => (9.0, 0.0, 0.333, 6.0, 0.8),
         };
         let expo1 = 1.0 / ord - beta * 0.75;
         let (t, t1) = (self.p.t, self.p.t_end);
@@ -190,15 +191,21 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
                 Pair::Dop853 => {
                     dop853::step(&mut self.f, t, &self.p.y, h, &mut self.k, tol, &mut self.p.work)?
                 }
+                Pair::Vern9 => vern9::step(&mut self.f, t, &self.p.y, h, &mut self.k, tol, &mut self.p.work)?,
             };
             // step-size factor: fac = err^{expo1} / fac_old^β / safe, clamped. DOP853 (β = 0,
             // expo1 = 1/8): err^{1/8} as three square roots (correctly rounded; an exp of a log
             // cost about 6 % of a step on a cheap right-hand side). DOPRI5: one exp of
             // logarithms, ln(fac_old) kept from the last accepted step.
-            let dop853 = self.cfg.method == Pair::Dop853;
-            let err_pow = |err: f64| if dop853 { err.sqrt().sqrt().sqrt() } else { (expo1 * err.ln()).exp() };
+            // Vern9 (β = 0, expo1 = 1/9): two cube roots.
+            let method = self.cfg.method;
+            let err_pow = |err: f64| match method {
+                Pair::Dop853 => err.sqrt().sqrt().sqrt(),
+                Pair::Vern9 => err.cbrt().cbrt(),
+                Pair::Dopri5 => (expo1 * err.ln()).exp(),
+            };
             if err <= 1.0 {
-                let fac = if dop853 {
+                let fac = if method != Pair::Dopri5 {
                     err_pow(err) / safe
                 } else {
                     let ln_err = err.ln();
@@ -216,11 +223,12 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
                 // f(t + h, y₁): FSAL stage of DOPRI5, the next k₁ (and k₁₃) for DOP853
                 match self.cfg.method {
                     Pair::Dopri5 => self.f_now.clone_from(&self.k[6]),
-                    Pair::Dop853 if !F::IN_PLACE => {
-                        self.f_now = eval(&mut self.f, t_new, &y1, t, 13, &mut self.p.work.fevals)?;
+                    Pair::Dop853 | Pair::Vern9 if !F::IN_PLACE => {
+                        let stage = if method == Pair::Vern9 { 17 } else { 13 };
+                        self.f_now = eval(&mut self.f, t_new, &y1, t, stage, &mut self.p.work.fevals)?;
                     }
-                    Pair::Dop853 => {
-                        let at = (t, 13);
+                    Pair::Dop853 | Pair::Vern9 => {
+                        let at = (t, if method == Pair::Vern9 { 17 } else { 13 });
                         if let Err(e) =
                             eval_into(&mut self.f, t_new, &y1, &mut self.f_now, at, &mut self.p.work.fevals)
                         {
@@ -247,13 +255,15 @@ impl<S: State, F: Rhs<S>> Stepper<S, F> {
     ///
     /// # Errors
     /// [`OdeError::NoDenseOutput`] before the first step or right after a restart;
-    /// [`OdeError::RhsNotFinite`] from DOP853's extra stages.
+    /// [`OdeError::RhsNotFinite`] from DOP853's extra stages; [`OdeError::NoInterpolant`]
+    /// for Vern9, which keeps none (land on the times you need with `set_end`).
     pub fn dense(&mut self) -> Result<&DenseStep<S>, OdeError> {
         if self.p.dense.is_none() {
             let Some((t0, y0)) = &self.p.prev else { return Err(OdeError::NoDenseOutput) };
             let h = self.p.t - t0;
             let d = match self.cfg.method {
                 Pair::Dopri5 => dopri5::dense(*t0, y0, &self.p.y, h, &self.k),
+                Pair::Vern9 => return Err(OdeError::NoInterpolant { method: "vern9" }),
                 Pair::Dop853 => dop853::dense(
                     &mut self.f,
                     *t0,

@@ -91,3 +91,15 @@ pub const DOP853: Tableau = Tableau {
     b: &super::dop853_coefficients::B,
     order: 8,
 };
+
+/// Verner's 9(8) pair's 9th-order solution as a 15-stage tableau (its 16th stage serves only
+/// the error estimate), for fixed-step use and tests.
+///
+/// Book: §4.11; Verner, Numer. Algorithms 53 (2010).
+pub const VERN9: Tableau = Tableau {
+    name: "Vern9",
+    c: super::vern9_coefficients::C.split_at(15).0,
+    a: super::vern9_coefficients::A.split_at(15).0,
+    b: super::vern9_coefficients::B.split_at(15).0,
+    order: 9,
+};

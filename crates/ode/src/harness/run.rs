@@ -32,6 +32,7 @@ impl Method {
             Method::Fixed(t) => t.name,
             Method::Adaptive(Pair::Dopri5) => "DP5",
             Method::Adaptive(Pair::Dop853) => "DOP853",
+            Method::Adaptive(Pair::Vern9) => "Vern9",
             Method::Gauss(g) => g.name(),
             Method::Verlet => "Verlet",
             Method::Lie(m) => m.name(),
@@ -43,6 +44,7 @@ impl Method {
             Method::Fixed(t) => t.order,
             Method::Adaptive(Pair::Dopri5) => 5,
             Method::Adaptive(Pair::Dop853) => 8,
+            Method::Adaptive(Pair::Vern9) => 9,
             Method::Gauss(g) => g.order(),
             Method::Verlet => 2,
             Method::Lie(m) => m.order(),
@@ -140,6 +142,7 @@ pub fn sweep<const N: usize, R: Reference<N>>(p: &R, method: Method, budget: Bud
                 let a = match pair {
                     Pair::Dopri5 => Adaptive::dopri5(),
                     Pair::Dop853 => Adaptive::dop853(),
+                    Pair::Vern9 => Adaptive::vern9(),
                 };
                 a.rtol(param).atol(param).solve(f, 0.0, &y0, t_end).map(|s| (*s.last(), s.work))
             }
