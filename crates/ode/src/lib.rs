@@ -2,9 +2,9 @@
 //!
 //! * explicit Runge–Kutta from Butcher tableaux ([`EULER`], [`HEUN`], [`RK4`]) and the
 //!   adaptive Dormand–Prince pairs ([`Adaptive::dopri5`], [`Adaptive::dop853`]) with error
-//!   control, dense output and event location, and Gragg–Bulirsch–Stoer extrapolation
-//!   ([`Extrapolation::gbs`]: order and step control, for smooth problems at tight
-//!   tolerances);
+//!   control, dense output and event location; for smooth problems at tight tolerances,
+//!   Verner's 9(8) pair ([`Adaptive::vern9`], no interpolant) and Gragg–Bulirsch–Stoer
+//!   extrapolation ([`Extrapolation::gbs`]: order and step control);
 //! * the stiff integrator RADAU5 ([`Radau5`]: Radau IIA 5 with Hairer–Wanner's control,
 //!   exact or finite-difference Jacobians, dense output and events), the variable-order BDF
 //!   ([`Bdf`], orders 1–5, the same Jacobians, dense output and events), and [`AnyStepper`]
