@@ -13,7 +13,9 @@ use super::spatial::Xform;
 use super::wrench::{JointWrench, LinkWrenches};
 use crate::DynamicsError;
 
+mod ground;
 mod passes;
+mod sym6;
 
 /// Work space of the articulated-body algorithm.
 #[derive(Debug, Clone)]
@@ -32,6 +34,13 @@ pub struct AbaScratch<T: Scalar = f64> {
     reach: Vec<f64>,
     /// The revolute joints' sines and cosines, computed together.
     trig: Trig<T>,
+    /// The ground passes' motion subspaces S and U = IᴬS, one column per velocity
+    /// coordinate, and their articulated inertias.
+    S: Vec<Vector6<T>>,
+    GU: Vec<Vector6<T>>,
+    G: Vec<sym6::Sym6<T>>,
+    /// Whether each segment is placed relative to the ground passes' reference point.
+    rel: Vec<bool>,
     /// Per free root (`Model::free_roots`): whether its 6×6 solve was taken, and its y.
     root_fast: Vec<bool>,
     root_y: Vec<Vector6<T>>,
@@ -56,6 +65,10 @@ impl<T: Scalar> Model<T> {
             v: vec![Vector3::zeros(); n],
             reach: vec![0.0; n],
             trig: Trig::of(self),
+            S: vec![Vector6::zeros(); self.nv],
+            GU: vec![Vector6::zeros(); self.nv],
+            G: vec![sym6::Sym6::zero(); n],
+            rel: vec![false; n],
             root_fast: vec![false; self.free_roots.len()],
             root_y: vec![Vector6::zeros(); self.free_roots.len()],
             pl: self.planar.as_ref().map(|_| PlanarWork::new(n)),
@@ -151,8 +164,11 @@ impl<T: Scalar> Model<T> {
     /// scratch: the hot path of a scene's right-hand side.
     ///
     /// The three passes are pass 1 (outward: twists, bias accelerations and forces), pass 2
-    /// (inward: articulated inertias by their 3×3 blocks, moved to the parent by a rotation
-    /// and a shift) and pass 3 (outward: accelerations), in `passes`.
+    /// (inward: articulated inertias) and pass 3 (outward: accelerations), run in ground
+    /// coordinates (`ground`: inertias passed to the parent by a plain sum) unless a pivot is
+    /// near its rounding level; then in each segment's own coordinates (`passes`: inertias by
+    /// their 3×3 blocks, moved to the parent by a rotation and a shift), which decide such a
+    /// pivot exactly.
     ///
     /// # Errors
     /// [`DynamicsError::InertJointForce`] as [`Model::aba`].
@@ -174,13 +190,42 @@ impl<T: Scalar> Model<T> {
                 return Ok(());
             }
         }
+        self.leaf_accelerations(q, v, tau, f_ext, vdot);
+        s.trig.fill(q);
+        if self.aba_ground(q, v, tau, f_ext, vdot, s) {
+            return Ok(());
+        }
+        self.aba_local(q, v, f_ext, tau, vdot, s)
+    }
+
+    /// The closed forms of the free and ball leaves (see `free_leaf_accelerations`).
+    fn leaf_accelerations(
+        &self,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        vdot: &mut [T],
+    ) {
         for (k, &l) in self.free_links.iter().enumerate() {
             self.free_leaf_accelerations(k, q, v, tau, f_ext.map(|fe| &fe[l]), vdot);
         }
         for (k, &l) in self.ball_links.iter().enumerate() {
             self.ball_leaf_accelerations(k, q, v, tau, f_ext.map(|fe| &fe[l]), vdot);
         }
-        s.trig.fill(q);
+    }
+
+    /// The three passes in each segment's own coordinates (`passes`), which decide every
+    /// pivot at its rounding level exactly; `s.trig` must hold q's sines and cosines.
+    fn aba_local(
+        &self,
+        q: &[T],
+        v: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        tau: &[T],
+        vdot: &mut [T],
+        s: &mut AbaScratch<T>,
+    ) -> Result<(), DynamicsError> {
         self.aba_outward(q, v, s);
         if let Some(fe) = f_ext {
             for (l, &k) in self.link_seg.iter().enumerate() {
@@ -192,6 +237,23 @@ impl<T: Scalar> Model<T> {
         self.aba_inward(tau, s)?;
         self.aba_accelerations(vdot, s);
         Ok(())
+    }
+
+    /// [`Model::aba_into`] by the local passes alone (the ground passes skipped): for tests
+    /// that compare the two formulations.
+    #[cfg(test)]
+    pub(crate) fn aba_local_into(
+        &self,
+        q: &[T],
+        v: &[T],
+        tau: &[T],
+        f_ext: Option<&LinkWrenches<T>>,
+        vdot: &mut [T],
+        s: &mut AbaScratch<T>,
+    ) -> Result<(), DynamicsError> {
+        self.leaf_accelerations(q, v, tau, f_ext, vdot);
+        s.trig.fill(q);
+        self.aba_local(q, v, f_ext, tau, vdot, s)
     }
 
     /// v̇ of a free leaf body (segments f..f+4, see `free_leaf_roots`) in closed form: with

@@ -1,5 +1,5 @@
 //! Tests of ABA's closed forms (free and ball leaves, the floating base's 6×6 solve) against
-//! the three passes, the mass matrix and RNEA.
+//! the three passes, the mass matrix and RNEA, and of the ground passes against the local ones.
 
 use nalgebra::{Matrix3, Rotation3, Vector3};
 
@@ -176,12 +176,12 @@ fn floating_base_solve_matches_the_segments_and_the_mass_matrix() {
         moment: Vector3::new(0.9, 0.1, -0.5) * k,
     };
     let wrenches = vec![fe(1.0), fe(-0.5), fe(0.3), fe(0.7)];
-    let got = fast.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
+    // (the ground passes; the local passes' 6×6 solve below)
+    let ground = fast.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
     let mut s = fast.aba_scratch();
-    let mut again = vec![0.0; 10];
-    fast.aba_into(&q, &v, &tau, Some(&wrenches), &mut again, &mut s).expect("definite");
+    let mut got = vec![0.0; 10];
+    fast.aba_local_into(&q, &v, &tau, Some(&wrenches), &mut got, &mut s).expect("definite");
     assert!(s.root_fast[0], "the 6×6 solve was taken");
-    assert_eq!(got, again);
     // the slow tree's coordinates: sleeves z, y, x then the ball (its joint frame is the
     // free joint's frame, so the same numbers)
     // (no wrench on the three massless sleeves)
@@ -189,9 +189,10 @@ fn floating_base_solve_matches_the_segments_and_the_mass_matrix() {
     let slow_vd = slow.aba(&perm(&q), &perm(&v), &perm(&tau), Some(&slow_wrenches)).expect("definite");
     let crba = fast.forward_dynamics_crba(&q, &v, &tau, Some(&wrenches)).expect("definite");
     let scale = got.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-    for ((a, b), c) in got.iter().zip(&perm(&slow_vd)).zip(&crba) {
+    for (((a, b), c), d) in got.iter().zip(&perm(&slow_vd)).zip(&crba).zip(&ground) {
         assert!((a - b).abs() <= 1e-13 * scale, "segments: {got:?} vs {slow_vd:?}");
         assert!((a - c).abs() <= 1e-12 * scale, "CRBA: {got:?} vs {crba:?}");
+        assert!((a - d).abs() <= 1e-13 * scale, "ground passes: {got:?} vs {ground:?}");
     }
     let id = fast.rnea(&q, &v, &got, Some(&wrenches)).expect("valid");
     for (a, b) in id.tau.iter().zip(&tau) {
@@ -244,6 +245,12 @@ fn ball_particle_keeps_the_rank_revealing_path() {
     assert!(m.ball_leaves.is_empty());
     let vd = m.aba(&[1.0, 0.0, 0.0, 0.0], &[0.0; 3], &[0.0; 3], None).expect("inert");
     assert_eq!(vd, vec![0.0, 0.0, 0.0]);
+    // the ground passes hand the singular pivot to the local ones, writing nothing
+    let mut s = m.aba_scratch();
+    s.trig.fill(&[1.0, 0.0, 0.0, 0.0]);
+    let mut out = vec![7.0; 3];
+    assert!(!m.aba_ground(&[1.0, 0.0, 0.0, 0.0], &[0.0; 3], &[0.0; 3], None, &mut out, &mut s));
+    assert_eq!(out, vec![7.0; 3]);
 }
 
 /// A particle on a free joint (J_c = 0) is not a closed-form body: ABA's rank-revealing
@@ -256,4 +263,39 @@ fn free_particle_keeps_the_rank_revealing_path() {
     assert!(m.free_leaves.is_empty());
     let vd = m.aba(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0], &[0.0; 6], &[0.0; 6], None).expect("inert");
     assert_eq!(vd, vec![0.0, 0.0, -9.81, 0.0, 0.0, 0.0]);
+}
+
+/// The ground passes resolve everything about the base's origin, so a floating tree far from
+/// the ground origin loses nothing: the floating base of `floating_base` moved by 10⁶ m
+/// (the free joint's position coordinates) accelerates as it does at the origin (gravity is
+/// uniform), to rounding of |v̇|; the ground passes were taken at both places and agree with
+/// the local passes.
+#[test]
+fn ground_passes_are_translation_invariant_and_match_the_local_passes() {
+    let (mut model, _) = floating_base(Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1));
+    model.gravity = Vector3::new(0.3, -0.2, -9.81);
+    let qb = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
+    let ql = nalgebra::UnitQuaternion::from_euler_angles(-0.3, 0.8, 0.2);
+    let near = vec![0.3, -1.2, 0.8, qb.w, qb.i, qb.j, qb.k, 0.7, ql.w, ql.i, ql.j, ql.k];
+    let mut far = near.clone();
+    far[0] += 1e6;
+    far[2] -= 3e5;
+    let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3, -0.8, 0.4, 1.9, -0.6];
+    let tau = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25, 0.3, -0.2, 0.1, 0.6];
+    let mut s = model.aba_scratch();
+    let run = |q: &[f64], s: &mut super::AbaScratch<f64>| {
+        let (mut ground, mut local) = (vec![0.0; 10], vec![0.0; 10]);
+        s.trig.fill(q);
+        assert!(model.aba_ground(q, &v, &tau, None, &mut ground, s), "the ground passes were taken");
+        model.aba_local_into(q, &v, &tau, None, &mut local, s).expect("definite");
+        (ground, local)
+    };
+    let (g_near, l_near) = run(&near, &mut s);
+    let (g_far, l_far) = run(&far, &mut s);
+    let scale = l_near.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+    for k in 0..10 {
+        assert!((g_near[k] - l_near[k]).abs() <= 1e-13 * scale, "{g_near:?} vs {l_near:?}");
+        assert!((g_far[k] - l_near[k]).abs() <= 1e-13 * scale, "far: {g_far:?} vs {l_near:?}");
+        assert!((l_far[k] - l_near[k]).abs() <= 1e-13 * scale, "local far: {l_far:?} vs {l_near:?}");
+    }
 }
