@@ -81,10 +81,13 @@ impl<T: Scalar> Model<T> {
     ///
     /// A planar tree ([`Model::planar_axis`]) runs the same passes on planar spatial vectors
     /// (3 numbers instead of 6, RBDA §2.16), a free body alone on its joint is solved in
-    /// closed form (Euler's equations about its centre), and a floating base (a free joint at
-    /// the root carrying a subtree) is eliminated as one 6-DOF joint, one 6×6 solve with its
-    /// articulated inertia instead of four segments; all give the three passes' v̇ to
-    /// rounding.
+    /// closed form (Euler's equations about its centre), and any other tree runs the passes
+    /// in ground coordinates about its base (RBDA §7.3: articulated inertias summed into the
+    /// parent with no transform), unless a pivot is near its rounding level: then in each
+    /// segment's own coordinates, with a floating base (a free joint at the root carrying a
+    /// subtree) eliminated as one 6-DOF joint. All give the three passes' v̇ to rounding; the
+    /// ground coordinates' rounding grows with the tree's extent over its links' (m ρ² terms,
+    /// ρ the lever arm from the base: 26 ε against 2.6 ε on a 6-link chain).
     ///
     /// Book: §7.11; RBDA Table 7.1.
     ///
