@@ -63,6 +63,16 @@ impl<T: Scalar> Segment<T> {
     }
 }
 
+impl<T: Scalar> Segment<T> {
+    /// The rounding scale of a pin's or ball's pivot in ABA with every centre of mass of the
+    /// subtree within `arm` of the point the pivot is formed about: its composite inertia
+    /// bounds it (Iᴬ ≼ Iᶜ) and has no cancellation, Σ tr J_c + 2Mρ².
+    #[inline(always)]
+    pub fn angular_scale_at(&self, arm: f64) -> f64 {
+        self.sub_trace + 2.0 * self.sub_mass * arm * arm
+    }
+}
+
 impl Segment<f64> {
     /// The same segment with every number converted exactly from f64.
     pub(crate) fn cast<U: Scalar>(&self) -> Segment<U> {

@@ -44,8 +44,10 @@ impl<T: Scalar> Xform<T> {
         (self.E * w, self.E * (v - self.r.cross(w)))
     }
 
-    /// Force vector from C to P (Xᵀ): f_P = Eᵀf, n_P = Eᵀn + r×f_P.
-    #[cfg(test)]
+    /// Force vector from C to P (Xᵀ): f_P = Eᵀf, n_P = Eᵀn + r×f_P. For a segment's ground
+    /// placement (E = 𝓞_{i/G}, r its origin in the ground) this moves a wrench about the
+    /// segment's origin in its axes to the ground's axes about the ground's origin.
+    #[inline(always)]
     pub fn force_to_parent(&self, n: &Vector3<T>, f: &Vector3<T>) -> (Vector3<T>, Vector3<T>) {
         let fp = self.E.tr_mul(f);
         (self.E.tr_mul(n) + self.r.cross(&fp), fp)

@@ -78,9 +78,7 @@ impl<T: Scalar> Model<T> {
                 if !self.aba_skip[k] {
                     // the link's wrench about its origin in link axes, to ground axes about
                     // the reference point
-                    let x = &s.x[k];
-                    let f = x.E.tr_mul(&fe[l].force);
-                    let m = x.E.tr_mul(&fe[l].moment) + x.r.cross(&f);
+                    let (m, f) = s.x[k].force_to_parent(&fe[l].moment, &fe[l].force);
                     s.pA[k] -= join(&m, &f);
                 }
             }
@@ -220,10 +218,8 @@ impl<T: Scalar> Model<T> {
     /// in the joint's own coordinates, but m|p|²-sized terms cancelling here).
     #[inline(always)]
     fn ground_angular_scale(&self, i: usize, s: &AbaScratch<T>) -> f64 {
-        let seg = &self.segs[i];
         let p = &s.x[i].r;
-        let arm = s.reach[i] + p.x.re().abs() + p.y.re().abs() + p.z.re().abs();
-        seg.sub_trace + 2.0 * seg.sub_mass * arm * arm
+        self.segs[i].angular_scale_at(s.reach[i] + p.x.re().abs() + p.y.re().abs() + p.z.re().abs())
     }
 
     /// Pass 3: 𝒜' = 𝒜ₚ + c, q̈ = D⁻¹(u − Uᵀ𝒜'), 𝒜 = 𝒜' + Sq̈; the ground accelerates by −g

@@ -167,8 +167,7 @@ impl<T: Scalar> Model<T> {
     /// bounds it (Iᴬ ≼ Iᶜ) and has no cancellation: Σ tr J_c + 2Mρ².
     #[inline(always)]
     fn angular_scale(&self, i: usize, s: &AbaScratch<T>) -> f64 {
-        let seg = &self.segs[i];
-        seg.sub_trace + 2.0 * seg.sub_mass * s.reach[i] * s.reach[i]
+        self.segs[i].angular_scale_at(s.reach[i])
     }
 
     /// Pass 2 at a pin (S = (a, 0)) or slider (S = (0, a)): along a coordinate axis U is ± one

@@ -137,9 +137,7 @@ impl<T: Scalar> Model<T> {
             // a wrench (n, f) about the link origin in link components, to ground about the
             // ground origin: f_G = Eᵀf, n_G = Eᵀn + p × f_G
             for (l, &k) in self.link_seg.iter().enumerate() {
-                let w = &s.world[k];
-                let f = w.E.tr_mul(&fe[l].force);
-                let n = w.E.tr_mul(&fe[l].moment) + w.r.cross(&f);
+                let (n, f) = s.world[k].force_to_parent(&fe[l].moment, &fe[l].force);
                 s.Fc[k] -= join(&n, &f);
             }
         }
