@@ -134,13 +134,11 @@ impl Turn {
     pub fn rotate<T: Scalar>(self, e: &Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
         match self {
             Turn::None => *v,
-            Turn::Plane(i1, i2) => {
-                let (c, s) = (e[(i1, i1)], e[(i1, i2)]);
-                let mut out = *v;
-                out[i1] = c * v[i1] + s * v[i2];
-                out[i2] = c * v[i2] - s * v[i1];
-                out
-            }
+            Turn::Plane(i1, _) => match i1 {
+                1 => plane::<T, 1, 2, false>(e, v),
+                2 => plane::<T, 2, 0, false>(e, v),
+                _ => plane::<T, 0, 1, false>(e, v),
+            },
             Turn::General => e * v,
         }
     }
@@ -150,13 +148,11 @@ impl Turn {
     pub fn rotate_back<T: Scalar>(self, e: &Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
         match self {
             Turn::None => *v,
-            Turn::Plane(i1, i2) => {
-                let (c, s) = (e[(i1, i1)], e[(i1, i2)]);
-                let mut out = *v;
-                out[i1] = c * v[i1] - s * v[i2];
-                out[i2] = s * v[i1] + c * v[i2];
-                out
-            }
+            Turn::Plane(i1, _) => match i1 {
+                1 => plane::<T, 1, 2, true>(e, v),
+                2 => plane::<T, 2, 0, true>(e, v),
+                _ => plane::<T, 0, 1, true>(e, v),
+            },
             Turn::General => e.tr_mul(v),
         }
     }
@@ -178,4 +174,20 @@ impl Turn {
         let fp = self.rotate_back(&x.E, f);
         (self.rotate_back(&x.E, n) + x.r.cross(&fp), fp)
     }
+}
+
+/// E v (or Eᵀ v when `BACK`) for a turn about a coordinate axis that mixes components (I1, I2)
+/// (`Turn::Plane`): the indices are constants, so the product is four multiplications on
+/// registers.
+#[inline(always)]
+fn plane<T: Scalar, const I1: usize, const I2: usize, const BACK: bool>(
+    e: &Matrix3<T>,
+    v: &Vector3<T>,
+) -> Vector3<T> {
+    let (c, s) = (e[(I1, I1)], e[(I1, I2)]);
+    let s = if BACK { -s } else { s };
+    let mut out = *v;
+    out[I1] = c * v[I1] + s * v[I2];
+    out[I2] = c * v[I2] - s * v[I1];
+    out
 }

@@ -11,10 +11,7 @@ use super::super::wrench::JointWrench;
 /// joint frame, gravity g, alone and, for the generic three passes, with a massless welded
 /// child (which stops it being a closed-form leaf).
 fn alone_and_with_child(joint: Joint) -> (Model, Model) {
-    let j_c = Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1);
-    let mut body =
-        Link::new(None, joint, Vector3::new(0.5, -1.0, 2.0), 3.0, Vector3::new(0.2, -0.4, 0.7), j_c);
-    body.orientation = *Rotation3::from_euler_angles(0.3, -0.7, 1.1).matrix();
+    let body = free_body(joint);
     let tip =
         Link::new(Some(0), Joint::Weld, Vector3::new(1.0, 0.0, 0.0), 0.0, Vector3::zeros(), Matrix3::zeros());
     let mut alone = Model::new(std::slice::from_ref(&body)).expect("valid");
@@ -22,6 +19,15 @@ fn alone_and_with_child(joint: Joint) -> (Model, Model) {
     let g = Vector3::new(0.3, -0.2, -9.81);
     (alone.gravity, with_child.gravity) = (g, g);
     (alone, with_child)
+}
+
+/// The body of `alone_and_with_child` on `joint` at the root.
+fn free_body(joint: Joint) -> Link {
+    let j_c = Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1);
+    let mut body =
+        Link::new(None, joint, Vector3::new(0.5, -1.0, 2.0), 3.0, Vector3::new(0.2, -0.4, 0.7), j_c);
+    body.orientation = *Rotation3::from_euler_angles(0.3, -0.7, 1.1).matrix();
+    body
 }
 
 /// An external wrench on the body (and none on the welded child).
@@ -297,5 +303,49 @@ fn ground_passes_are_translation_invariant_and_match_the_local_passes() {
         assert!((g_near[k] - l_near[k]).abs() <= 1e-13 * scale, "{g_near:?} vs {l_near:?}");
         assert!((g_far[k] - l_near[k]).abs() <= 1e-13 * scale, "far: {g_far:?} vs {l_near:?}");
         assert!((l_far[k] - l_near[k]).abs() <= 1e-13 * scale, "local far: {l_far:?} vs {l_near:?}");
+    }
+}
+
+/// RNEA's one-step free joint at the root (`Model::rnea_free_outward`, the ball's force handed
+/// to the three sliders at once) against the same tree with the joint written as three
+/// sleeves and a ball, taken segment by segment (a consistency check of the shortcut): the
+/// floating base with legs, and the free body alone, both behind a tilted, offset joint
+/// frame, with gravity off every axis and external wrenches. τ and the links' joint wrenches
+/// agree to 1e-13 relative.
+#[test]
+fn free_joint_rnea_matches_the_segments() {
+    let (base, base_segments) = floating_base(Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1));
+    let qb = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
+    let ql = nalgebra::UnitQuaternion::from_euler_angles(-0.3, 0.8, 0.2);
+    let q = vec![0.3, -1.2, 0.8, qb.w, qb.i, qb.j, qb.k, 0.7, ql.w, ql.i, ql.j, ql.k];
+    let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3, -0.8, 0.4, 1.9, -0.6];
+    let vd = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25, 0.3, -0.2, 0.1, 0.6];
+    let fe = |k: f64| JointWrench {
+        force: Vector3::new(-0.6, 1.4, 2.2) * k,
+        moment: Vector3::new(0.9, 0.1, -0.5) * k,
+    };
+    let legs = vec![fe(1.0), fe(-0.5), fe(0.3), fe(0.7)];
+    let (alone, _) = alone_and_with_child(Joint::Free);
+    let mut alone_segments = segment_form(&[free_body(Joint::Free)]);
+    let (mut base, mut base_segments) = (base, base_segments);
+    (alone_segments.gravity, base.gravity, base_segments.gravity) =
+        (alone.gravity, alone.gravity, alone.gravity);
+    assert_eq!((base.free_roots.clone(), alone.free_leaves.clone()), (vec![0], vec![0]), "the shortcut runs");
+    let cases = [
+        (&base, &base_segments, q.clone(), v.clone(), vd.clone(), legs),
+        (&alone, &alone_segments, q[..7].to_vec(), v[..6].to_vec(), vd[..6].to_vec(), vec![fe(1.0)]),
+    ];
+    for (fast, slow, q, v, vd, fext) in cases {
+        let got = fast.rnea(&q, &v, &vd, Some(&fext)).expect("valid");
+        let slow_fext = [&[JointWrench::default(); 3][..], &fext].concat();
+        let want = slow.rnea(&perm(&q), &perm(&v), &perm(&vd), Some(&slow_fext)).expect("valid");
+        let scale = want.tau.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        for (a, b) in perm(&got.tau).iter().zip(&want.tau) {
+            assert!((a - b).abs() <= 1e-13 * scale, "τ {:?} vs the segments' {:?}", got.tau, want.tau);
+        }
+        for (a, b) in got.wrenches.iter().zip(&want.wrenches[3..]) {
+            let d = (a.force - b.force).norm() + (a.moment - b.moment).norm();
+            assert!(d <= 1e-13 * scale, "wrench {a:?} vs the segments' {b:?}");
+        }
     }
 }

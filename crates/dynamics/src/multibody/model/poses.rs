@@ -4,6 +4,7 @@
 //! Book: §2.22 (chains), (2.10.46) composition.
 #![allow(non_snake_case)]
 
+use nalgebra::Matrix3;
 use vectrix_tensor::Scalar;
 
 use super::Model;
@@ -17,6 +18,16 @@ impl<T: Scalar> Model<T> {
     #[inline(always)]
     pub(crate) fn seg_xform(&self, i: usize, q: &[T], sc: Option<(T, T)>) -> Xform<T> {
         let s = &self.segs[i];
+        if let (false, Elem::Revolute(_), Some((axis, negative))) =
+            (s.placement_is_shift, &s.elem, s.coord_axis)
+        {
+            // a pin about a coordinate axis behind a turned placement: 𝓞_k(θ) 𝓞_placement mixes
+            // two rows of the placement's rotation (12 products instead of 27), and the origin
+            // is the placement's (a pin does not move it)
+            let (sn, c) = sc.unwrap_or_else(|| q[s.qi].fast_sin_cos());
+            let sn = if negative { -sn } else { sn };
+            return Xform { E: turn_rows(&s.placement.E, axis, sn, c), r: s.placement.r };
+        }
         let j = s.elem.xform(&q[s.qi..], sc);
         if s.placement_is_shift {
             // placement E = 1: placement ∘ joint = (E_joint, r_placement + r_joint)
@@ -44,15 +55,8 @@ impl<T: Scalar> Model<T> {
             let (sn, c) = sc.unwrap_or_else(|| q[s.qi].fast_sin_cos());
             let sn = if negative { -sn } else { sn };
             let r = p.r + p.E.tr_mul(&s.placement.r);
-            // 𝓞_{i/G} = 𝓞_k(θ) 𝓞_{p/G}: rows (i1, i2) turn by θ, the axis row stays
-            let (i1, i2) = [(1, 2), (2, 0), (0, 1)][axis];
-            let mut e = p.E;
-            for col in 0..3 {
-                let (a1, a2) = (p.E[(i1, col)], p.E[(i2, col)]);
-                e[(i1, col)] = c * a1 + sn * a2;
-                e[(i2, col)] = c * a2 - sn * a1;
-            }
-            return Xform { E: e, r };
+            // 𝓞_{i/G} = 𝓞_k(θ) 𝓞_{p/G}
+            return Xform { E: turn_rows(&p.E, axis, sn, c), r };
         }
         // a slider behind a placement without rotation keeps the parent's orientation
         // (1·𝓞 = 𝓞 exactly): only the origin moves
@@ -105,6 +109,21 @@ impl<T: Scalar> Model<T> {
         }
         world
     }
+}
+
+/// 𝓞_k(θ) E for a turn by θ (sine `sn`, cosine `c`) about coordinate axis k (0, 1, 2 for x̂, ŷ,
+/// ẑ), passive as the book's 𝓞 (Rodrigues (2.11.1) transposed): rows (i1, i2) of E mix as
+/// [[c, s], [−s, c]] and the axis row stays (12 products instead of the full 27).
+#[inline(always)]
+fn turn_rows<T: Scalar>(e: &Matrix3<T>, axis: usize, sn: T, c: T) -> Matrix3<T> {
+    let (i1, i2) = [(1, 2), (2, 0), (0, 1)][axis];
+    let mut out = *e;
+    for col in 0..3 {
+        let (a1, a2) = (e[(i1, col)], e[(i2, col)]);
+        out[(i1, col)] = c * a1 + sn * a2;
+        out[(i2, col)] = c * a2 - sn * a1;
+    }
+    out
 }
 
 /// The sines and cosines of every revolute segment's angle at one q, computed together by
