@@ -93,14 +93,12 @@ impl<T: Scalar> Articulated<T> {
     pub fn in_parent(&self, x: &Xform<T>, turn: Turn) -> Self {
         let rotated = match turn {
             Turn::None => *self,
-            Turn::Plane(i1, i2) => {
-                let (c, s) = (x.E[(i1, i1)], x.E[(i1, i2)]);
-                Self {
-                    A: turn_plane_sym(&self.A, i1, i2, c, s),
-                    B: turn_plane(&self.B, i1, i2, c, s),
-                    C: turn_plane_sym(&self.C, i1, i2, c, s),
-                }
-            }
+            // constant indices in each arm, so the turned blocks are built on registers
+            Turn::Plane(i1, _) => match i1 {
+                1 => self.turn_plane_all::<1, 2>(&x.E),
+                2 => self.turn_plane_all::<2, 0>(&x.E),
+                _ => self.turn_plane_all::<0, 1>(&x.E),
+            },
             Turn::General => {
                 let (e, et) = (&x.E, x.E.transpose());
                 let sym = |m: &Matrix3<T>| {
@@ -111,6 +109,17 @@ impl<T: Scalar> Articulated<T> {
             }
         };
         rotated.shift(&x.r)
+    }
+
+    /// (EᵀAE, EᵀBE, EᵀCE) for a turn of `Turn::Plane(I1, I2)`.
+    #[inline(always)]
+    fn turn_plane_all<const I1: usize, const I2: usize>(&self, e: &Matrix3<T>) -> Self {
+        let (c, s) = (e[(I1, I1)], e[(I1, I2)]);
+        Self {
+            A: turn_plane_sym(&self.A, I1, I2, c, s),
+            B: turn_plane(&self.B, I1, I2, c, s),
+            C: turn_plane_sym(&self.C, I1, I2, c, s),
+        }
     }
 
     /// The shift by r: with K = r^×C, P = B r^× (so r^×Bᵀ = −Pᵀ) and K r^× = r^×C r^×

@@ -116,12 +116,23 @@ impl<T: Scalar> Model<T> {
 /// [[c, s], [−s, c]] and the axis row stays (12 products instead of the full 27).
 #[inline(always)]
 fn turn_rows<T: Scalar>(e: &Matrix3<T>, axis: usize, sn: T, c: T) -> Matrix3<T> {
-    let (i1, i2) = [(1, 2), (2, 0), (0, 1)][axis];
+    // constant row indices in each arm, so the new matrix is built on registers (runtime
+    // indices sent every entry through memory)
+    match axis {
+        0 => turn_rows_of::<T, 1, 2>(e, sn, c),
+        1 => turn_rows_of::<T, 2, 0>(e, sn, c),
+        _ => turn_rows_of::<T, 0, 1>(e, sn, c),
+    }
+}
+
+/// [`turn_rows`] for rows (I1, I2).
+#[inline(always)]
+fn turn_rows_of<T: Scalar, const I1: usize, const I2: usize>(e: &Matrix3<T>, sn: T, c: T) -> Matrix3<T> {
     let mut out = *e;
     for col in 0..3 {
-        let (a1, a2) = (e[(i1, col)], e[(i2, col)]);
-        out[(i1, col)] = c * a1 + sn * a2;
-        out[(i2, col)] = c * a2 - sn * a1;
+        let (a1, a2) = (e[(I1, col)], e[(I2, col)]);
+        out[(I1, col)] = c * a1 + sn * a2;
+        out[(I2, col)] = c * a2 - sn * a1;
     }
     out
 }
