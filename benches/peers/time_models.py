@@ -3,7 +3,8 @@ vectrix (benches/models.rs's driver, VECTRIX_ICOUNT_MODEL=algo:file:calls) again
 C++ (benches/peers/pin_models.cpp on the models its own parsers make of the same files,
 written by scripts/pin_model_dump.py) built -O3 -march=native, Pinocchio at its fastest on
 this machine, and for the default x86-64 (SSE2) too. Both single-threaded, interleaved, in one
-sitting; each figure is (time of N calls - time of 1 call) / N, the median of three rounds.
+sitting; each figure is (time of N calls - time of 1 call) / N, the median of TIME_ROUNDS
+(default three) rounds, and their minimum.
 
     sh benches/peers/icount_models.sh "aba" # first: builds the x86-64 peer and dumps the models
     python3 benches/peers/time_models.py     # builds the native peer once (about 5 minutes)
@@ -20,6 +21,9 @@ NATIVE = os.environ.get("PEERS_BIN_MODELS_NATIVE", f"{HOME}/.cache/vectrix_pin_m
 X86_64 = os.environ.get("PEERS_BIN_MODELS", f"{HOME}/.cache/vectrix_pin_models_x86-64")
 TMP = os.environ.get("TMPDIR", "/tmp")
 MODELS = [("arm7.urdf", 400_000), ("quadruped.urdf", 200_000), ("humanoid.xml", 100_000)]
+# interleaved rounds per cell (TIME_ROUNDS, default 3): on a shared machine the minimum over more
+# rounds is the steadier figure, and both are printed
+ROUNDS = int(os.environ.get("TIME_ROUNDS", "3"))
 
 
 def bench_binary():
@@ -61,13 +65,14 @@ def main():
                 "Pinocchio x86-64": lambda k: seconds([X86_64, algo, dump, str(k)]),
             }
             per = {name: [] for name in tools}
-            for _ in range(3):
+            for _ in range(ROUNDS):
                 for name, run in tools.items():
                     per[name].append((run(n) - run(1)) / n)
             med = {name: statistics.median(v) for name, v in per.items()}
-            cells = " | ".join(f"{name} {med[name] * 1e9:.0f} ns" for name in tools)
-            print(f"{model} {algo}: {cells} | ratio to native {med['vectrix'] / med['Pinocchio native']:.2f}",
-                  flush=True)
+            low = {name: min(v) for name, v in per.items()}
+            cells = " | ".join(f"{name} {med[name] * 1e9:.0f} ns (min {low[name] * 1e9:.0f})" for name in tools)
+            print(f"{model} {algo}: {cells} | ratio to native {med['vectrix'] / med['Pinocchio native']:.2f}"
+                  f" (of the minima {low['vectrix'] / low['Pinocchio native']:.2f})", flush=True)
 
 
 if __name__ == "__main__":
