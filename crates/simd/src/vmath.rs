@@ -100,8 +100,22 @@ crate::dispatch! {
 /// The body of [`sin_cos_slices`].
 #[inline(always)]
 fn sin_cos_all(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
-    for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
-        (*sk, *ck) = sin_cos::<FUSED>(*xk);
+    let n = x.len().min(sin.len()).min(cos.len());
+    if n < 8 && !n.is_multiple_of(4) {
+        // a short slice whose length is not a multiple of four (a 6- or 7-joint tree's
+        // angles): padded with zeros to eight, whole vector blocks and no scalar tail (each
+        // lane's bits are the kernel's either way)
+        let (mut xb, mut sb, mut cb) = ([0.0; 8], [0.0; 8], [0.0; 8]);
+        xb[..n].copy_from_slice(&x[..n]);
+        for ((xk, sk), ck) in xb.iter().zip(sb.iter_mut()).zip(cb.iter_mut()) {
+            (*sk, *ck) = sin_cos::<FUSED>(*xk);
+        }
+        sin[..n].copy_from_slice(&sb[..n]);
+        cos[..n].copy_from_slice(&cb[..n]);
+    } else {
+        for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
+            (*sk, *ck) = sin_cos::<FUSED>(*xk);
+        }
     }
     for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
         if xk.is_nan() || xk.abs() > SIN_COS_MAX {
@@ -438,6 +452,28 @@ mod tests {
     /// The dispatched slices (AVX2 here when the CPU has it) and the portable body give the
     /// bits of [`sin_cos_or_libm`] element by element, NaN's class included: the run-time
     /// choice of instructions changes no bit.
+    /// Every short length (the padded path below eight and the plain loop) gives the bits of
+    /// [`sin_cos_or_libm`] element by element, and writes nothing past the slice.
+    #[test]
+    fn short_sin_cos_slices_are_sin_cos_element_by_element() {
+        let x = joint_angles();
+        for n in 0..=9 {
+            let (mut s, mut c) = (vec![7.0; n + 1], vec![7.0; n + 1]);
+            sin_cos_slices(&x[..n], &mut s[..n], &mut c[..n]);
+            assert_eq!((s[n], c[n]), (7.0, 7.0), "n = {n}: wrote past the slice");
+            for k in 0..n {
+                let (ws, wc) = sin_cos_or_libm(x[k]);
+                for (got, want) in [(s[k], ws), (c[k], wc)] {
+                    assert!(
+                        got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                        "n = {n}, x = {:e}: got {got:e}, want {want:e}",
+                        x[k]
+                    );
+                }
+            }
+        }
+    }
+
     #[test]
     fn sin_cos_slices_is_sin_cos_element_by_element() {
         let x = joint_angles();

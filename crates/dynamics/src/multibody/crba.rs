@@ -25,16 +25,58 @@ pub struct CrbaScratch<T: Scalar = f64> {
     /// One motion-subspace column per velocity coordinate, ground coordinates.
     S: Vec<Vector6<T>>,
     Ic: Vec<BodyInertia<T>>,
-    /// Each coordinate's ancestor coordinates (the entries of its column of H).
-    tree: CoordLists,
+    /// Each coordinate's entries against its ancestors (`entries[start[b]..start[b + 1]]`).
+    entries: Vec<Entry>,
+    start: Vec<usize>,
     /// The entries of H that are zero whatever q (the only ones CRBA must clear).
     zeros: ZeroRuns,
     /// The revolute joints' sines and cosines, computed together.
     trig: Trig<T>,
-    /// Per coordinate: `Some((k, negative))` when its S is ±e_k (k ≥ 3) in ground coordinates
-    /// whatever q, so Sᵀ F is ±F_k (a slider along a coordinate axis whose orientation is
-    /// the ground's: the sliders of a free joint).
-    pick: Vec<Option<(usize, bool)>>,
+}
+
+/// One off-diagonal pair H_ab = H_ba of a coordinate b's column against an ancestor a: where the
+/// two go in the column-major slice, and how S_a reads F = Iᶜ S_b.
+#[derive(Debug, Clone, Copy)]
+struct Entry {
+    a: usize,
+    upper: usize,
+    lower: usize,
+    read: Read,
+}
+
+/// How S_a reads F: a dot product, or ±F_k when S_a is ±e_k (k ≥ 3) in ground coordinates
+/// whatever q (a slider along a coordinate axis whose orientation is the ground's: the sliders
+/// of a free joint, [`Model::ground_axis_columns`]).
+#[derive(Debug, Clone, Copy)]
+enum Read {
+    Dot,
+    Pick(usize),
+    PickNegative(usize),
+}
+
+impl<T: Scalar> Model<T> {
+    /// The entries of every column of H against its ancestors, in the order of `parent_col`'s
+    /// ancestor lists (nearest first), and where each column's start.
+    fn crba_entries(&self) -> (Vec<Entry>, Vec<usize>) {
+        let (n, tree, pick) = (self.nv, CoordLists::ancestors(&self.parent_col), self.ground_axis_columns());
+        let mut start = Vec::with_capacity(n + 1);
+        let mut entries = Vec::with_capacity(tree.total());
+        for b in 0..n {
+            start.push(entries.len());
+            entries.extend(tree.of(b).iter().map(|&a| Entry {
+                a,
+                upper: a + b * n,
+                lower: b + a * n,
+                read: match pick[a] {
+                    Some((k, false)) => Read::Pick(k),
+                    Some((k, true)) => Read::PickNegative(k),
+                    None => Read::Dot,
+                },
+            }));
+        }
+        start.push(entries.len());
+        (entries, start)
+    }
 }
 
 /// The columns of S_i in ground coordinates about the ground origin, (ω, v) ordering, for a
@@ -68,14 +110,15 @@ impl<T: Scalar> Model<T> {
     /// A work space for [`Model::crba_into`].
     pub fn crba_scratch(&self) -> CrbaScratch<T> {
         let n = self.segs.len();
+        let (entries, start) = self.crba_entries();
         CrbaScratch {
             world: vec![Xform::identity(); n],
             S: vec![Vector6::zeros(); self.nv],
             Ic: vec![BodyInertia::zero(); n],
-            tree: CoordLists::ancestors(&self.parent_col),
+            entries,
+            start,
             zeros: ZeroRuns::of_tree(&self.parent_col),
             trig: Trig::of(self),
-            pick: self.ground_axis_columns(),
         }
     }
 
@@ -134,24 +177,39 @@ impl<T: Scalar> Model<T> {
         s.zeros.clear(hs);
         // inward: Iᶜ_i is complete when i is reached (descendants come later in the order);
         // for each column b of joint i, F = Iᶜ_i S_b, then H_bb = S_b·F and H_ab = H_ba = S_a·F
-        // for every coordinate a above b (its ancestors, flattened in `tree`); Iᶜ_p += Iᶜ_i
+        // for every coordinate a above b (its ancestors: `entries`); Iᶜ_p += Iᶜ_i
         // (same coordinates: a plain sum)
-        for i in (0..self.segs.len()).rev() {
+        let mut i = self.segs.len();
+        while i > 0 {
+            i -= 1;
             let seg = &self.segs[i];
             for b in seg.vi..seg.vi + seg.elem.nv() {
                 let F = s.Ic[i].apply6(&s.S[b]);
                 hs[b + b * n] = dot6(&s.S[b], &F);
-                for &a in s.tree.of(b) {
-                    let hab = match s.pick[a] {
-                        Some((k, false)) => F[k],
-                        Some((k, true)) => -F[k],
-                        None => dot6(&s.S[a], &F),
+                for e in &s.entries[s.start[b]..s.start[b + 1]] {
+                    let hab = match e.read {
+                        Read::Dot => dot6(&s.S[e.a], &F),
+                        Read::Pick(k) => F[k],
+                        Read::PickNegative(k) => -F[k],
                     };
-                    hs[a + b * n] = hab;
-                    hs[b + a * n] = hab;
+                    hs[e.upper] = hab;
+                    hs[e.lower] = hab;
                 }
             }
-            if let Some(p) = seg.parent {
+            if i >= 3 && self.free_at_root(i - 3) {
+                // the sliders of a free joint at the root: S = (0, eₖ) in the joint frame's
+                // axes, so their block of H is m·1 (m the whole tree's mass; the picks of
+                // their rows against the ball's columns are written above), and nothing
+                // hangs above them
+                let m = s.Ic[i].m;
+                let c = self.segs[i - 3].vi;
+                for j in c..c + 3 {
+                    for k in c..c + 3 {
+                        hs[j + k * n] = if j == k { m } else { T::zero() };
+                    }
+                }
+                i -= 3;
+            } else if let Some(p) = seg.parent {
                 let ic = s.Ic[i];
                 s.Ic[p].add(&ic);
             }

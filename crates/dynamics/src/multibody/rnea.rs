@@ -138,7 +138,7 @@ impl<T: Scalar> Model<T> {
     /// `Model::free_roots`): three massless sliders along x̂, ŷ, ẑ of the joint frame, then the
     /// ball carrying the body.
     #[inline(always)]
-    fn free_at_root(&self, i: usize) -> bool {
+    pub(crate) fn free_at_root(&self, i: usize) -> bool {
         self.segs[i].parent.is_none() && (self.free_seg[i] || self.free_root_seg[i].is_some())
     }
 
