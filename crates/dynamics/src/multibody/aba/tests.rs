@@ -162,6 +162,21 @@ fn perm(x: &[f64]) -> Vec<f64> {
     [&[x[2], x[1], x[0]], &x[3..]].concat()
 }
 
+/// A state of `floating_base`'s tree: q (base pose, pin angle, ball quaternion), v, a third
+/// vector (τ or v̇) and an external wrench on every link.
+fn floating_state() -> (Vec<f64>, Vec<f64>, Vec<f64>, Vec<JointWrench>) {
+    let qb = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
+    let ql = nalgebra::UnitQuaternion::from_euler_angles(-0.3, 0.8, 0.2);
+    let q = vec![0.3, -1.2, 0.8, qb.w, qb.i, qb.j, qb.k, 0.7, ql.w, ql.i, ql.j, ql.k];
+    let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3, -0.8, 0.4, 1.9, -0.6];
+    let third = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25, 0.3, -0.2, 0.1, 0.6];
+    let fe = |k: f64| JointWrench {
+        force: Vector3::new(-0.6, 1.4, 2.2) * k,
+        moment: Vector3::new(0.9, 0.1, -0.5) * k,
+    };
+    (q, v, third, vec![fe(1.0), fe(-0.5), fe(0.3), fe(0.7)])
+}
+
 /// v̇ of the floating base's 6×6 solve: against the same tree eliminated segment by segment
 /// (a consistency check), against the mass matrix and bias forces (CRBA, RNEA, Cholesky:
 /// another algorithm), and RNEA at the returned v̇ gives back τ, with gravity, joint forces
@@ -172,16 +187,7 @@ fn floating_base_solve_matches_the_segments_and_the_mass_matrix() {
     let g = Vector3::new(0.3, -0.2, -9.81);
     (fast.gravity, slow.gravity) = (g, g);
     assert_eq!((fast.free_roots.clone(), slow.free_roots.clone()), (vec![0], vec![]));
-    let qb = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
-    let ql = nalgebra::UnitQuaternion::from_euler_angles(-0.3, 0.8, 0.2);
-    let q = vec![0.3, -1.2, 0.8, qb.w, qb.i, qb.j, qb.k, 0.7, ql.w, ql.i, ql.j, ql.k];
-    let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3, -0.8, 0.4, 1.9, -0.6];
-    let tau = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25, 0.3, -0.2, 0.1, 0.6];
-    let fe = |k: f64| JointWrench {
-        force: Vector3::new(-0.6, 1.4, 2.2) * k,
-        moment: Vector3::new(0.9, 0.1, -0.5) * k,
-    };
-    let wrenches = vec![fe(1.0), fe(-0.5), fe(0.3), fe(0.7)];
+    let (q, v, tau, wrenches) = floating_state();
     // (the ground passes; the local passes' 6×6 solve below)
     let ground = fast.aba(&q, &v, &tau, Some(&wrenches)).expect("definite");
     let mut s = fast.aba_scratch();
@@ -315,16 +321,8 @@ fn ground_passes_are_translation_invariant_and_match_the_local_passes() {
 #[test]
 fn free_joint_rnea_matches_the_segments() {
     let (base, base_segments) = floating_base(Matrix3::new(2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 1.1));
-    let qb = nalgebra::UnitQuaternion::from_euler_angles(0.9, 0.4, -2.0);
-    let ql = nalgebra::UnitQuaternion::from_euler_angles(-0.3, 0.8, 0.2);
-    let q = vec![0.3, -1.2, 0.8, qb.w, qb.i, qb.j, qb.k, 0.7, ql.w, ql.i, ql.j, ql.k];
-    let v = vec![0.5, -0.3, 1.7, 2.0, -1.1, 3.3, -0.8, 0.4, 1.9, -0.6];
-    let vd = vec![1.0, -2.0, 0.5, 0.7, -0.4, 0.25, 0.3, -0.2, 0.1, 0.6];
-    let fe = |k: f64| JointWrench {
-        force: Vector3::new(-0.6, 1.4, 2.2) * k,
-        moment: Vector3::new(0.9, 0.1, -0.5) * k,
-    };
-    let legs = vec![fe(1.0), fe(-0.5), fe(0.3), fe(0.7)];
+    let (q, v, vd, legs) = floating_state();
+    let one = legs[0];
     let (alone, _) = alone_and_with_child(Joint::Free);
     let mut alone_segments = segment_form(&[free_body(Joint::Free)]);
     let (mut base, mut base_segments) = (base, base_segments);
@@ -333,7 +331,7 @@ fn free_joint_rnea_matches_the_segments() {
     assert_eq!((base.free_roots.clone(), alone.free_leaves.clone()), (vec![0], vec![0]), "the shortcut runs");
     let cases = [
         (&base, &base_segments, q.clone(), v.clone(), vd.clone(), legs),
-        (&alone, &alone_segments, q[..7].to_vec(), v[..6].to_vec(), vd[..6].to_vec(), vec![fe(1.0)]),
+        (&alone, &alone_segments, q[..7].to_vec(), v[..6].to_vec(), vd[..6].to_vec(), vec![one]),
     ];
     for (fast, slow, q, v, vd, fext) in cases {
         let got = fast.rnea(&q, &v, &vd, Some(&fext)).expect("valid");
