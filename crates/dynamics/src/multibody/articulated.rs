@@ -94,9 +94,9 @@ impl<T: Scalar> Articulated<T> {
         let rotated = match turn {
             Turn::None => *self,
             // constant indices in each arm, so the turned blocks are built on registers
-            Turn::Plane(i1, _) => match i1 {
-                1 => self.turn_plane_all::<1, 2>(&x.E),
-                2 => self.turn_plane_all::<2, 0>(&x.E),
+            Turn::Plane(axis) => match axis {
+                0 => self.turn_plane_all::<1, 2>(&x.E),
+                1 => self.turn_plane_all::<2, 0>(&x.E),
                 _ => self.turn_plane_all::<0, 1>(&x.E),
             },
             Turn::General => {
@@ -111,7 +111,7 @@ impl<T: Scalar> Articulated<T> {
         rotated.shift(&x.r)
     }
 
-    /// (EᵀAE, EᵀBE, EᵀCE) for a turn of `Turn::Plane(I1, I2)`.
+    /// (EᵀAE, EᵀBE, EᵀCE) for a `Turn::Plane` that mixes rows and columns (I1, I2).
     #[inline(always)]
     fn turn_plane_all<const I1: usize, const I2: usize>(&self, e: &Matrix3<T>) -> Self {
         let (c, s) = (e[(I1, I1)], e[(I1, I2)]);
@@ -252,11 +252,11 @@ mod tests {
         let r = Vector3::new(0.5, -0.2, 0.9);
         let mut cases =
             vec![(Rotation3::from_scaled_axis(Vector3::new(0.3, -0.7, 0.4)).into_inner(), Turn::General)];
-        for (axis, pair) in [(Vector3::x(), (1, 2)), (Vector3::y(), (2, 0)), (Vector3::z(), (0, 1))] {
+        for (k, axis) in [Vector3::x(), Vector3::y(), Vector3::z()].into_iter().enumerate() {
             for sign in [1.0, -1.0] {
                 // the passive E = 𝓡(σ ê, θ)ᵀ of the joint
                 let e = Rotation3::from_scaled_axis(axis * (0.8 * sign)).into_inner().transpose();
-                cases.push((e, Turn::Plane(pair.0, pair.1)));
+                cases.push((e, Turn::Plane(k)));
             }
         }
         cases.push((Matrix3::identity(), Turn::None));

@@ -104,10 +104,10 @@ impl Segment<f64> {
 pub(crate) enum Turn {
     /// E = 1 exactly (a slider or a weld behind a placement without rotation).
     None,
-    /// A turn about a coordinate axis (a pin along ±x̂, ±ŷ, ±ẑ behind a placement without
-    /// rotation): E differs from 1 only in rows and columns (i1, i2), where it is [[c, s],
-    /// [−s, c]].
-    Plane(usize, usize),
+    /// A turn about coordinate axis k (0, 1, 2: a pin along ±x̂, ±ŷ, ±ẑ behind a placement
+    /// without rotation): E differs from 1 only in rows and columns (i1, i2) = (k + 1, k + 2)
+    /// mod 3, where it is [[c, s], [−s, c]].
+    Plane(usize),
     /// Any other E.
     General,
 }
@@ -121,10 +121,7 @@ impl Turn {
         }
         match (elem, coord_axis) {
             (Elem::Prismatic(_) | Elem::Fixed, _) => Turn::None,
-            (Elem::Revolute(_), Some((axis, _))) => {
-                let (i1, i2) = [(1, 2), (2, 0), (0, 1)][axis];
-                Turn::Plane(i1, i2)
-            }
+            (Elem::Revolute(_), Some((axis, _))) => Turn::Plane(axis),
             _ => Turn::General,
         }
     }
@@ -134,9 +131,9 @@ impl Turn {
     pub fn rotate<T: Scalar>(self, e: &Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
         match self {
             Turn::None => *v,
-            Turn::Plane(i1, _) => match i1 {
-                1 => plane::<T, 1, 2, false>(e, v),
-                2 => plane::<T, 2, 0, false>(e, v),
+            Turn::Plane(axis) => match axis {
+                0 => plane::<T, 1, 2, false>(e, v),
+                1 => plane::<T, 2, 0, false>(e, v),
                 _ => plane::<T, 0, 1, false>(e, v),
             },
             Turn::General => e * v,
@@ -148,9 +145,9 @@ impl Turn {
     pub fn rotate_back<T: Scalar>(self, e: &Matrix3<T>, v: &Vector3<T>) -> Vector3<T> {
         match self {
             Turn::None => *v,
-            Turn::Plane(i1, _) => match i1 {
-                1 => plane::<T, 1, 2, true>(e, v),
-                2 => plane::<T, 2, 0, true>(e, v),
+            Turn::Plane(axis) => match axis {
+                0 => plane::<T, 1, 2, true>(e, v),
+                1 => plane::<T, 2, 0, true>(e, v),
                 _ => plane::<T, 0, 1, true>(e, v),
             },
             Turn::General => e.tr_mul(v),
