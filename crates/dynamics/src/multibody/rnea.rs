@@ -134,14 +134,6 @@ impl<T: Scalar> Model<T> {
         }
     }
 
-    /// Segment i is the first slider of a free joint at the root (`Model::free_leaves`,
-    /// `Model::free_roots`): three massless sliders along x̂, ŷ, ẑ of the joint frame, then the
-    /// ball carrying the body.
-    #[inline(always)]
-    pub(crate) fn free_at_root(&self, i: usize) -> bool {
-        self.segs[i].parent.is_none() && (self.free_seg[i] || self.free_root_seg[i].is_some())
-    }
-
     /// The outward step of one segment: its transform, twist, acceleration and the wrench
     /// 𝒥𝒜 + 𝒱 ×f 𝒥𝒱 its joint must transmit (7.11.13–15).
     #[inline(always)]

@@ -112,6 +112,14 @@ impl<T: Scalar> Model<T> {
         self.planar = None;
     }
 
+    /// Segment i is the first slider of a free joint at the root (`free_leaves`, `free_roots`):
+    /// three massless sliders along x̂, ŷ, ẑ of the joint frame, then the ball carrying the
+    /// body; RNEA and CRBA take the four segments in one step.
+    #[inline(always)]
+    pub(crate) fn free_at_root(&self, i: usize) -> bool {
+        self.segs[i].parent.is_none() && (self.free_seg[i] || self.free_root_seg[i].is_some())
+    }
+
     /// The neutral configuration: zero for every coordinate, identity quaternions.
     pub fn neutral(&self) -> Vec<T> {
         self.q_neutral.clone()
