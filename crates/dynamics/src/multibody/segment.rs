@@ -9,7 +9,7 @@ use nalgebra::{Matrix3, Vector3};
 use vectrix_tensor::Scalar;
 
 use super::joint::Elem;
-use super::spatial::{BodyInertia, Xform};
+use super::spatial::{BodyInertia, CentreForm, Xform};
 
 /// One elementary segment (a link, or a massless intermediate of a compound joint).
 #[derive(Debug, Clone, PartialEq)]
@@ -23,9 +23,9 @@ pub(crate) struct Segment<T: Scalar> {
     /// The same body as mass m (in `inertia`), centre c and J_c, link components.
     pub com: Vector3<T>,
     pub j_c: Matrix3<T>,
-    /// J_c is diagonal (principal link axes): `BodyInertia::from_centre_in_ground` then scales
-    /// rows instead of multiplying matrices.
-    pub j_c_diagonal: bool,
+    /// How `BodyInertia::from_centre_in_ground` turns J_c (diagonal, by its Cholesky factor,
+    /// or as a product).
+    pub j_c_form: CentreForm<T>,
     /// Zero mass and zero inertia (intermediate segments of compound joints, massless links).
     pub massless: bool,
     /// Scales for ABA's singularity tests (real numbers, configuration-independent): the
@@ -52,14 +52,7 @@ impl<T: Scalar> Segment<T> {
     /// segment's mass, centre and J_c).
     #[inline(always)]
     pub fn ground_inertia(&self, w: &Xform<T>) -> BodyInertia<T> {
-        BodyInertia::from_centre_in_ground(
-            self.inertia.m,
-            &self.com,
-            &self.j_c,
-            self.j_c_diagonal,
-            &w.E,
-            &w.r,
-        )
+        BodyInertia::from_centre_in_ground(self.inertia.m, &self.com, &self.j_c, &self.j_c_form, &w.E, &w.r)
     }
 }
 
@@ -85,7 +78,7 @@ impl Segment<f64> {
             inertia: self.inertia.cast(),
             com: self.com.map(U::lit),
             j_c: self.j_c.map(U::lit),
-            j_c_diagonal: self.j_c_diagonal,
+            j_c_form: self.j_c_form.cast(),
             massless: self.massless,
             sub_mass: self.sub_mass,
             sub_trace: self.sub_trace,

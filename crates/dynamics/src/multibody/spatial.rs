@@ -120,37 +120,54 @@ impl<T: Scalar> BodyInertia<T> {
     /// m with centre c and J_c (link components) whose frame has orientation E = 𝓞_{B/G}
     /// (passive; R = Eᵀ has the body axes as columns) and origin p: with c' = p + Rc,
     /// Ī' = R J_c Rᵀ + m(|c'|² 1 − c'c'ᵀ) (parallel axes, book (6.4.x)), h' = m c'.
+    ///
+    /// `form` says how J_c is turned (known when the model is built, [`CentreForm::of`]).
     #[inline(always)]
     pub fn from_centre_in_ground(
         m: T,
         c: &Vector3<T>,
         j_c: &Matrix3<T>,
-        diagonal: bool,
+        form: &CentreForm<T>,
         E: &Matrix3<T>,
         p: &Vector3<T>,
     ) -> Self {
         let cw = p + E.tr_mul(c);
-        // R J_c Rᵀ = Eᵀ(J_c E), symmetric: six entries (column i of E · column k of J_c E);
-        // a diagonal J_c (principal link axes, `diagonal`: known when the model is built)
-        // scales the rows of E
-        let je = if diagonal {
-            let mut je = *E;
-            for r in 0..3 {
-                let l = j_c[(r, r)];
-                for k in 0..3 {
-                    je[(r, k)] *= l;
+        // R J_c Rᵀ, symmetric: its six entries d(i, k)
+        let d: [[T; 3]; 3] = match form {
+            // = Eᵀ(J_c E): column i of E · column k of J_c E; a diagonal J_c scales E's rows
+            CentreForm::Diagonal => {
+                let mut je = *E;
+                for r in 0..3 {
+                    let l = j_c[(r, r)];
+                    for k in 0..3 {
+                        je[(r, k)] *= l;
+                    }
                 }
+                gram(E, &je)
             }
-            je
-        } else {
-            j_c * E
+            CentreForm::General => gram(E, &(j_c * E)),
+            // = W Wᵀ, W = Eᵀ L for J_c = L Lᵀ (L lower triangular): 27 products and sums to
+            // form W where J_c E takes 45
+            CentreForm::Factor(l) => {
+                let w = |i: usize| {
+                    let (e0, e1, e2) = (E[(0, i)], E[(1, i)], E[(2, i)]);
+                    [
+                        e0 * l[(0, 0)] + e1 * l[(1, 0)] + e2 * l[(2, 0)],
+                        e1 * l[(1, 1)] + e2 * l[(2, 1)],
+                        e2 * l[(2, 2)],
+                    ]
+                };
+                let (w0, w1, w2) = (w(0), w(1), w(2));
+                let dot = |a: &[T; 3], b: &[T; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+                let (d01, d02, d12) = (dot(&w0, &w1), dot(&w0, &w2), dot(&w1, &w2));
+                [[dot(&w0, &w0), d01, d02], [d01, dot(&w1, &w1), d12], [d02, d12, dot(&w2, &w2)]]
+            }
         };
-        let d = |i: usize, k: usize| E[(0, i)] * je[(0, k)] + E[(1, i)] * je[(1, k)] + E[(2, i)] * je[(2, k)];
         let mc = cw * m;
         let s = mc.dot(&cw);
-        let (a01, a02, a12) = (d(0, 1) - mc.x * cw.y, d(0, 2) - mc.x * cw.z, d(1, 2) - mc.y * cw.z);
+        let (a01, a02, a12) = (d[0][1] - mc.x * cw.y, d[0][2] - mc.x * cw.z, d[1][2] - mc.y * cw.z);
         let (a00, a11, a22) =
-            (d(0, 0) + s - mc.x * cw.x, d(1, 1) + s - mc.y * cw.y, d(2, 2) + s - mc.z * cw.z);
+            (d[0][0] + s - mc.x * cw.x, d[1][1] + s - mc.y * cw.y, d[2][2] + s - mc.z * cw.z);
         Self { m, h: mc, I: Matrix3::new(a00, a01, a02, a01, a11, a12, a02, a12, a22) }
     }
 
@@ -163,6 +180,57 @@ impl<T: Scalar> BodyInertia<T> {
         out.fixed_view_mut::<3, 3>(3, 0).copy_from(&(-hx));
         out.fixed_view_mut::<3, 3>(3, 3).copy_from(&(Matrix3::identity() * self.m));
         out
+    }
+}
+
+/// The six entries d(i, k) = Σ_r E_ri A_rk of the symmetric Eᵀ A (A = J_c E), as rows.
+#[inline(always)]
+fn gram<T: Scalar>(E: &Matrix3<T>, a: &Matrix3<T>) -> [[T; 3]; 3] {
+    let d = |i: usize, k: usize| E[(0, i)] * a[(0, k)] + E[(1, i)] * a[(1, k)] + E[(2, i)] * a[(2, k)];
+    let (d01, d02, d12) = (d(0, 1), d(0, 2), d(1, 2));
+    [[d(0, 0), d01, d02], [d01, d(1, 1), d12], [d02, d12, d(2, 2)]]
+}
+
+/// How [`BodyInertia::from_centre_in_ground`] turns a body's J_c into the ground, chosen when
+/// the model is built: a diagonal J_c (principal link axes) by scaling rows; a positive
+/// definite one by its Cholesky factor L (J_c = L Lᵀ, R J_c Rᵀ = W Wᵀ with W = Eᵀ L); any
+/// other (a singular J_c: a point mass, a thin rod) as the product Eᵀ(J_c E).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum CentreForm<T: Scalar> {
+    Diagonal,
+    Factor(Matrix3<T>),
+    General,
+}
+
+impl CentreForm<f64> {
+    /// The form for J_c: `Factor` when every Cholesky pivot is positive and finite (the
+    /// factorization of a positive definite matrix is backward stable, so W Wᵀ is R J_c Rᵀ
+    /// to rounding of J_c's size), else `General`.
+    pub fn of(j_c: &Matrix3<f64>) -> Self {
+        if j_c[(0, 1)] == 0.0 && j_c[(0, 2)] == 0.0 && j_c[(1, 2)] == 0.0 {
+            return Self::Diagonal;
+        }
+        let mut l = Matrix3::zeros();
+        for j in 0..3 {
+            let pivot = j_c[(j, j)] - (0..j).map(|k| l[(j, k)] * l[(j, k)]).sum::<f64>();
+            if !(pivot > 0.0 && pivot.is_finite()) {
+                return Self::General;
+            }
+            l[(j, j)] = pivot.sqrt();
+            for i in j + 1..3 {
+                l[(i, j)] = (j_c[(i, j)] - (0..j).map(|k| l[(i, k)] * l[(j, k)]).sum::<f64>()) / l[(j, j)];
+            }
+        }
+        Self::Factor(l)
+    }
+
+    /// The same form with every number converted exactly from f64.
+    pub fn cast<U: Scalar>(&self) -> CentreForm<U> {
+        match self {
+            Self::Diagonal => CentreForm::Diagonal,
+            Self::Factor(l) => CentreForm::Factor(l.map(U::lit)),
+            Self::General => CentreForm::General,
+        }
     }
 }
 
@@ -255,12 +323,24 @@ mod tests {
         let body = BodyInertia::from_centre(2.1, &c, &j);
         let x = Xform { E: e, r: p };
         let want = x.matrix().transpose() * body.matrix() * x.matrix();
-        let got = BodyInertia::from_centre_in_ground(2.1, &c, &j, false, &e, &p).matrix();
+        // a positive definite J_c by its Cholesky factor, and as the product
+        assert!(matches!(CentreForm::of(&j), CentreForm::Factor(_)));
+        for form in [CentreForm::of(&j), CentreForm::General] {
+            let got = BodyInertia::from_centre_in_ground(2.1, &c, &j, &form, &e, &p).matrix();
+            assert!((got - want).norm() < 1e-14 * want.norm(), "{form:?}: {}", (got - want).norm());
+        }
+        // a singular J_c off its principal axes (a thin rod along (x̂ − ŷ)/√2: no moment about
+        // its own axis; its second pivot is 0 exactly) has no Cholesky factor and goes by the
+        // product, which is still exact
+        let rod = Matrix3::new(0.25, 0.25, 0.0, 0.25, 0.25, 0.0, 0.0, 0.0, 0.5);
+        assert_eq!(CentreForm::of(&rod), CentreForm::General);
+        let want = x.matrix().transpose() * BodyInertia::from_centre(2.1, &c, &rod).matrix() * x.matrix();
+        let got = BodyInertia::from_centre_in_ground(2.1, &c, &rod, &CentreForm::of(&rod), &e, &p).matrix();
         assert!((got - want).norm() < 1e-14 * want.norm(), "{}", (got - want).norm());
         // a diagonal J_c by its rows
         let d = Matrix3::from_diagonal(&Vector3::new(1.0, 1.5, 0.8));
         let want = x.matrix().transpose() * BodyInertia::from_centre(2.1, &c, &d).matrix() * x.matrix();
-        let got = BodyInertia::from_centre_in_ground(2.1, &c, &d, true, &e, &p).matrix();
+        let got = BodyInertia::from_centre_in_ground(2.1, &c, &d, &CentreForm::of(&d), &e, &p).matrix();
         assert!((got - want).norm() < 1e-14 * want.norm(), "{}", (got - want).norm());
     }
 }

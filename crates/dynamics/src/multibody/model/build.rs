@@ -16,6 +16,7 @@ use crate::multibody::joint::{Elem, Joint, Link, coordinate_axis, elems};
 use crate::multibody::planar::Planar;
 use crate::multibody::segment::{Segment, Turn};
 use crate::multibody::singular::{pivot_tol, spd_inverse3};
+use crate::multibody::spatial::CentreForm;
 use crate::multibody::spatial::{BodyInertia, Xform};
 
 impl Model<f64> {
@@ -252,7 +253,7 @@ fn expand_segments(links: &[Link], order: &[usize], expanded: &[Vec<Elem<f64>>])
                 inertia,
                 com,
                 j_c,
-                j_c_diagonal: j_c[(0, 1)] == 0.0 && j_c[(0, 2)] == 0.0 && j_c[(1, 2)] == 0.0,
+                j_c_form: CentreForm::of(&j_c),
                 sub_mass,
                 sub_trace,
                 own_reach,
