@@ -16,8 +16,7 @@ use crate::multibody::joint::{Elem, Joint, Link, coordinate_axis, elems};
 use crate::multibody::planar::Planar;
 use crate::multibody::segment::{Segment, Turn};
 use crate::multibody::singular::{pivot_tol, spd_inverse3};
-use crate::multibody::spatial::CentreForm;
-use crate::multibody::spatial::{BodyInertia, Xform};
+use crate::multibody::spatial::{BodyInertia, CentreForm, Xform};
 
 impl Model<f64> {
     /// Validates the links and builds the tree. Gravity defaults to zero; set
