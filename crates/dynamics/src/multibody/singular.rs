@@ -28,16 +28,14 @@ fn above(x: f64, floor: f64) -> bool {
     x.partial_cmp(&floor) == Some(core::cmp::Ordering::Greater)
 }
 
-/// D⁻¹ of a symmetric 3×3 D (its lower triangle read) by the Cholesky factor D = L Lᵀ,
-/// unrolled, when every pivot l_kk² is above `floor` (else `None`: the caller's rank-revealing
-/// path): L⁻¹ = M in closed form and D⁻¹ = Mᵀ M. The same factor as nalgebra's `cholesky`
-/// (l_kk = √(d_kk − Σ l_kj²), l_ik = (d_ik − Σ l_ij l_kj)/l_kk), without its loops over a
-/// dynamic dimension and its inverse by six triangular solves; smooth in D, so dual numbers
-/// carry exact derivatives.
+/// The Cholesky factor D = L Lᵀ (L lower triangular) of a symmetric 3×3 D (its lower triangle
+/// read), unrolled, when every pivot l_kk² is above `floor` (else `None`): the same factor as
+/// nalgebra's `cholesky` (l_kk = √(d_kk − Σ l_kj²), l_ik = (d_ik − Σ l_ij l_kj)/l_kk), without
+/// its loops over a dynamic dimension; smooth in D, so dual numbers carry exact derivatives.
 ///
 /// Book: §7.11 (the joint's D of the articulated-body algorithm); RBDA §7.3.
 #[inline(always)]
-pub(crate) fn spd_inverse3<T: Scalar>(d: &Matrix3<T>, floor: f64) -> Option<Matrix3<T>> {
+pub(crate) fn spd_cholesky3<T: Scalar>(d: &Matrix3<T>, floor: f64) -> Option<Matrix3<T>> {
     let p0 = d[(0, 0)];
     if !above(p0.re(), floor) {
         return None;
@@ -54,7 +52,20 @@ pub(crate) fn spd_inverse3<T: Scalar>(d: &Matrix3<T>, floor: f64) -> Option<Matr
     if !above(p2.re(), floor) {
         return None;
     }
-    let l22 = p2.sqrt();
+    let z = T::zero();
+    Some(Matrix3::new(l00, z, z, l10, l11, z, l20, l21, p2.sqrt()))
+}
+
+/// D⁻¹ of a symmetric 3×3 D (its lower triangle read) by its Cholesky factor D = L Lᵀ
+/// ([`spd_cholesky3`]) when every pivot l_kk² is above `floor` (else `None`: the caller's
+/// rank-revealing path): L⁻¹ = M in closed form and D⁻¹ = Mᵀ M, without nalgebra's inverse by
+/// six triangular solves.
+///
+/// Book: §7.11 (the joint's D of the articulated-body algorithm); RBDA §7.3.
+#[inline(always)]
+pub(crate) fn spd_inverse3<T: Scalar>(d: &Matrix3<T>, floor: f64) -> Option<Matrix3<T>> {
+    let l = spd_cholesky3(d, floor)?;
+    let (l00, l10, l20, l11, l21, l22) = (l[(0, 0)], l[(1, 0)], l[(2, 0)], l[(1, 1)], l[(2, 1)], l[(2, 2)]);
     // M = L⁻¹, lower triangular
     let (m00, m11, m22) = (T::one() / l00, T::one() / l11, T::one() / l22);
     let m10 = -(l10 * m00) * m11;

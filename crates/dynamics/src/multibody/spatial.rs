@@ -203,25 +203,14 @@ pub(crate) enum CentreForm<T: Scalar> {
 }
 
 impl CentreForm<f64> {
-    /// The form for J_c: `Factor` when every Cholesky pivot is positive and finite (the
+    /// The form for J_c: `Factor` when every Cholesky pivot is positive (the
     /// factorization of a positive definite matrix is backward stable, so W Wᵀ is R J_c Rᵀ
     /// to rounding of J_c's size), else `General`.
     pub fn of(j_c: &Matrix3<f64>) -> Self {
         if j_c[(0, 1)] == 0.0 && j_c[(0, 2)] == 0.0 && j_c[(1, 2)] == 0.0 {
             return Self::Diagonal;
         }
-        let mut l = Matrix3::zeros();
-        for j in 0..3 {
-            let pivot = j_c[(j, j)] - (0..j).map(|k| l[(j, k)] * l[(j, k)]).sum::<f64>();
-            if !(pivot > 0.0 && pivot.is_finite()) {
-                return Self::General;
-            }
-            l[(j, j)] = pivot.sqrt();
-            for i in j + 1..3 {
-                l[(i, j)] = (j_c[(i, j)] - (0..j).map(|k| l[(i, k)] * l[(j, k)]).sum::<f64>()) / l[(j, j)];
-            }
-        }
-        Self::Factor(l)
+        super::singular::spd_cholesky3(j_c, 0.0).map_or(Self::General, Self::Factor)
     }
 
     /// The same form with every number converted exactly from f64.
