@@ -15,6 +15,7 @@ mod extrapolation;
 mod fixed;
 mod gbs_stepper;
 mod pair;
+mod root;
 mod stepper;
 mod tableau;
 mod vern9;
