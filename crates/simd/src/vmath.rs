@@ -97,31 +97,50 @@ crate::dispatch! {
     pub fn sin_cos_slices(x: &[f64], sin: &mut [f64], cos: &mut [f64]) = sin_cos_all;
 }
 
-/// The body of [`sin_cos_slices`].
+/// The body of [`sin_cos_slices`]: blocks of four lanes straight from and into the slices, a
+/// last partial block padded with zeros (each lane's bits are the kernel's either way), and
+/// whether every element is in the kernel's range noted on the way, so that the `libm` pass
+/// over the few beyond it runs only when there are some.
 #[inline(always)]
 fn sin_cos_all(x: &[f64], sin: &mut [f64], cos: &mut [f64]) {
+    const W: usize = 4;
     let n = x.len().min(sin.len()).min(cos.len());
-    if n < 8 && !n.is_multiple_of(4) {
-        // a short slice whose length is not a multiple of four (a 6- or 7-joint tree's
-        // angles): padded with zeros to eight, whole vector blocks and no scalar tail (each
-        // lane's bits are the kernel's either way)
-        let (mut xb, mut sb, mut cb) = ([0.0; 8], [0.0; 8], [0.0; 8]);
-        xb[..n].copy_from_slice(&x[..n]);
-        for ((xk, sk), ck) in xb.iter().zip(sb.iter_mut()).zip(cb.iter_mut()) {
-            (*sk, *ck) = sin_cos::<FUSED>(*xk);
+    let (x, sin, cos) = (&x[..n], &mut sin[..n], &mut cos[..n]);
+    // 1 in a lane whose |x| is not ≤ SIN_COS_MAX (NaN included)
+    let mut beyond = [0u64; W];
+    let full = n - n % W;
+    let blocks =
+        x[..full].chunks_exact(W).zip(sin[..full].chunks_exact_mut(W)).zip(cos[..full].chunks_exact_mut(W));
+    for ((xb, sb), cb) in blocks {
+        for k in 0..W {
+            (sb[k], cb[k]) = sin_cos::<FUSED>(xb[k]);
+            beyond[k] |= u64::from(beyond_kernel(xb[k]));
         }
-        sin[..n].copy_from_slice(&sb[..n]);
-        cos[..n].copy_from_slice(&cb[..n]);
-    } else {
+    }
+    if full < n {
+        let xb: [f64; W] = core::array::from_fn(|k| x.get(full + k).copied().unwrap_or(0.0));
+        let (mut sb, mut cb) = ([0.0; W], [0.0; W]);
+        for k in 0..W {
+            (sb[k], cb[k]) = sin_cos::<FUSED>(xb[k]);
+            beyond[k] |= u64::from(beyond_kernel(xb[k]));
+        }
+        for ((k, sk), ck) in (full..n).zip(&sb).zip(&cb) {
+            (sin[k], cos[k]) = (*sk, *ck);
+        }
+    }
+    if beyond.iter().any(|&b| b != 0) {
         for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
-            (*sk, *ck) = sin_cos::<FUSED>(*xk);
+            if beyond_kernel(*xk) {
+                (*sk, *ck) = xk.sin_cos();
+            }
         }
     }
-    for ((xk, sk), ck) in x.iter().zip(sin.iter_mut()).zip(cos.iter_mut()) {
-        if xk.is_nan() || xk.abs() > SIN_COS_MAX {
-            (*sk, *ck) = xk.sin_cos();
-        }
-    }
+}
+
+/// NaN or |x| > [`SIN_COS_MAX`]: `libm`'s, not the kernel's (`|`, not `||`: no branch).
+#[inline(always)]
+fn beyond_kernel(x: f64) -> bool {
+    x.is_nan() | (x.abs() > SIN_COS_MAX)
 }
 
 /// The range of max(|y|, |x|) on which [`atan2`] is accurate: there the products of its interval
@@ -452,7 +471,7 @@ mod tests {
     /// The dispatched slices (AVX2 here when the CPU has it) and the portable body give the
     /// bits of [`sin_cos_or_libm`] element by element, NaN's class included: the run-time
     /// choice of instructions changes no bit.
-    /// Every short length (the padded path below eight and the plain loop) gives the bits of
+    /// Every short length (whole blocks of four, a padded last block, both) gives the bits of
     /// [`sin_cos_or_libm`] element by element, and writes nothing past the slice.
     #[test]
     fn short_sin_cos_slices_are_sin_cos_element_by_element() {

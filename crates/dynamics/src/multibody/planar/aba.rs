@@ -36,24 +36,22 @@ impl<T: Scalar> Planar<T> {
         // (a no-op for the work space of this model, `PlanarWork::new(n)`)
         work.trig.resize(3 * n, T::zero());
         let (s, trig) = (&mut work.seg[..], &mut work.trig[..]);
-        let z = T::zero();
-        // the ground, entry n: at rest, axes (û, ŵ), acceleration −g (its in-plane part) at
-        // the origin (gravity by the fictitious acceleration of the base)
-        s[n] = PlanarScratch::default();
-        s[n].cs = [T::one(), z];
+        // the ground: at rest, axes (û, ŵ), acceleration −g (its in-plane part) at the origin
+        // (gravity by the fictitious acceleration of the base)
         let g = work.gravity;
-        s[n].a = [z, -g.dot(&pl.u), -g.dot(&pl.w)];
+        let ga = [T::zero(), -g.dot(&pl.u), -g.dot(&pl.w)];
         if pl.pin_chain && f_ext.is_none() {
-            passes::<T, true>(pl, (q, v, tau), None, vdot, s, trig)
+            passes::<T, true>(pl, (q, v, tau), None, vdot, s, trig, ga)
         } else {
-            passes::<T, false>(pl, (q, v, tau), f_ext, vdot, s, trig)
+            passes::<T, false>(pl, (q, v, tau), f_ext, vdot, s, trig, ga)
         }
     }
 }
 
-/// The three passes after the ground's entry; `false` at an inert coordinate. `CHAIN`:
+/// The three passes, the ground's acceleration `ga`; `false` at an inert coordinate. `CHAIN`:
 /// [`Planar::pin_chain`] (then no external wrenches and static scales).
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn passes<T: Scalar, const CHAIN: bool>(
     pl: &Planar<T>,
     (q, v, tau): (&[T], &[T], &[T]),
@@ -61,9 +59,10 @@ fn passes<T: Scalar, const CHAIN: bool>(
     vdot: &mut [T],
     s: &mut [PlanarScratch<T>],
     trig: &mut [T],
+    ga: [T; 3],
 ) -> bool {
-    joint_sin_cos::<T, CHAIN>(pl, q, trig, s);
-    twists::<T, CHAIN>(pl, q, v, s);
+    joint_sin_cos::<T, CHAIN>(pl, q, trig);
+    twists::<T, CHAIN>(pl, q, v, s, trig);
     if let Some(fe) = f_ext {
         for (l, &k) in pl.link_seg.iter().enumerate() {
             let e = &mut s[k];
@@ -82,7 +81,7 @@ fn passes<T: Scalar, const CHAIN: bool>(
     if !articulated_inertias::<T, CHAIN>(pl, tau, s) {
         return false;
     }
-    accelerations::<T, CHAIN>(pl, s, vdot);
+    accelerations::<T, CHAIN>(pl, s, vdot, ga);
     true
 }
 
@@ -162,16 +161,11 @@ fn articulated_inertias<T: Scalar, const CHAIN: bool>(
     true
 }
 
-/// The joint angles' (cos, sin) first, all at once, into `cs` (`Scalar::fast_sin_cos_slices`:
-/// in SIMD for f64; inside pass 1 each would wait on the loop's chain). `trig` holds 3n.
-/// `CHAIN` ([`Planar::pin_chain`]): the angles are q itself.
+/// The joint angles' sines and cosines first, all at once, into `trig` = (angles, sines,
+/// cosines), n each (`Scalar::fast_sin_cos_slices`: in SIMD for f64; inside pass 1 each would
+/// wait on the loop's chain). `CHAIN` ([`Planar::pin_chain`]): the angles are q itself.
 #[inline(always)]
-fn joint_sin_cos<T: Scalar, const CHAIN: bool>(
-    pl: &Planar<T>,
-    q: &[T],
-    trig: &mut [T],
-    s: &mut [PlanarScratch<T>],
-) {
+fn joint_sin_cos<T: Scalar, const CHAIN: bool>(pl: &Planar<T>, q: &[T], trig: &mut [T]) {
     let n = pl.segs.len();
     let (x, rest) = trig.split_at_mut(n);
     let (sn, cn) = rest.split_at_mut(n);
@@ -183,9 +177,6 @@ fn joint_sin_cos<T: Scalar, const CHAIN: bool>(
         }
         T::fast_sin_cos_slices(x, sn, cn);
     }
-    for (e, (c, sv)) in s.iter_mut().zip(cn.iter().zip(sn.iter())) {
-        e.cs = [*c, *sv];
-    }
 }
 
 /// Pass 1 (outward): orientations, twists, bias accelerations and bias forces. The parent's
@@ -193,12 +184,19 @@ fn joint_sin_cos<T: Scalar, const CHAIN: bool>(
 /// (a chain: no round trip through memory).
 /// `CHAIN`: [`Planar::pin_chain`].
 #[inline(always)]
-fn twists<T: Scalar, const CHAIN: bool>(pl: &Planar<T>, q: &[T], v: &[T], s: &mut [PlanarScratch<T>]) {
+fn twists<T: Scalar, const CHAIN: bool>(
+    pl: &Planar<T>,
+    q: &[T],
+    v: &[T],
+    s: &mut [PlanarScratch<T>],
+    trig: &[T],
+) {
     let n = pl.segs.len();
+    let (sines, cosines) = trig[n..3 * n].split_at(n);
     let z = T::zero();
     let ground = ([T::one(), z], z, [z; 2]);
     let mut last = ground;
-    for (i, ps) in pl.segs.iter().enumerate() {
+    for (i, ((ps, &cn), &sn)) in pl.segs.iter().zip(cosines).zip(sines).enumerate() {
         let (cp, wp, vp) = if CHAIN {
             last
         } else if ps.parent == n {
@@ -220,7 +218,6 @@ fn twists<T: Scalar, const CHAIN: bool>(pl: &Planar<T>, q: &[T], v: &[T], s: &mu
         let e = &mut s[i];
         let (cs, wi) = match joint {
             PlanarJoint::Revolute => {
-                let [cn, sn] = e.cs;
                 let (sn, qd) = (sn * ps.sigma, v[if CHAIN { i } else { ps.vi }] * ps.sigma);
                 // c = (ω, v) ×m (q̇ σâ, 0) = (0, −σq̇ â×v)
                 e.c = [qd * vi[1], -(qd * vi[0])];
@@ -352,9 +349,13 @@ fn slider_inward<T: Scalar>(
 /// pass 1.
 /// `CHAIN`: [`Planar::pin_chain`].
 #[inline(always)]
-fn accelerations<T: Scalar, const CHAIN: bool>(pl: &Planar<T>, s: &mut [PlanarScratch<T>], vdot: &mut [T]) {
+fn accelerations<T: Scalar, const CHAIN: bool>(
+    pl: &Planar<T>,
+    s: &mut [PlanarScratch<T>],
+    vdot: &mut [T],
+    ga: [T; 3],
+) {
     let n = pl.segs.len();
-    let ga = s[n].a;
     let mut last = ga;
     for (i, ps) in pl.segs.iter().enumerate() {
         let ap = if CHAIN {
