@@ -186,7 +186,7 @@ impl<T: Scalar> Model<T> {
     ) -> Result<(), DynamicsError> {
         let n = self.segs.len();
         if let (Some(planar), Some(pl)) = (&self.planar, &mut s.pl)
-            && pl.seg.len() == n + 1
+            && pl.seg.len() == n
         {
             pl.gravity = self.gravity;
             if planar.aba(q, v, tau, f_ext, vdot, pl) {

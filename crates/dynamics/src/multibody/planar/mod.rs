@@ -257,9 +257,9 @@ impl<T: Scalar> Default for PlanarScratch<T> {
     }
 }
 
-/// The planar passes' work space: one [`PlanarScratch`] per segment and one for the ground,
-/// and the joint angles, their sines and their cosines (n each), computed together before the
-/// passes.
+/// The planar passes' work space: one [`PlanarScratch`] per segment (the ground's
+/// acceleration is passed along, not stored), and the joint angles, their sines and their
+/// cosines (n each), computed together before the passes.
 #[derive(Debug, Clone)]
 pub(crate) struct PlanarWork<T: Scalar> {
     pub seg: Vec<PlanarScratch<T>>,
@@ -272,7 +272,7 @@ impl<T: Scalar> PlanarWork<T> {
     /// The work space of a planar model of `n` segments.
     pub fn new(n: usize) -> Self {
         Self {
-            seg: vec![PlanarScratch::default(); n + 1],
+            seg: vec![PlanarScratch::default(); n],
             trig: vec![T::zero(); 3 * n],
             gravity: Vector3::zeros(),
         }
