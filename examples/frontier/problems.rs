@@ -130,6 +130,51 @@ pub fn tree_rhs<const N: usize>(
     out
 }
 
+/// [`tree_rhs`] as an [`Rhs`](vectrix::ode::Rhs) that evaluates two states at once where the
+/// model can (`Model::aba_pair_unchecked`: a planar chain of pins), which GBS uses to build
+/// two rows of its table side by side (`Extrapolation::solve_rhs`).
+pub struct TreeRhs<'a> {
+    pub model: &'a vectrix::dynamics::multibody::Model,
+    pub tau: &'a [f64],
+    pub scratch: vectrix::dynamics::multibody::AbaScratch,
+}
+
+impl<const N: usize> vectrix::ode::Rhs<SVector<f64, N>> for TreeRhs<'_> {
+    const IN_PLACE: bool = false;
+    fn call(&mut self, _: f64, y: &SVector<f64, N>) -> SVector<f64, N> {
+        tree_rhs(self.model, self.tau, &mut self.scratch, y)
+    }
+    fn call_into(&mut self, _: f64, y: &SVector<f64, N>, out: &mut SVector<f64, N>) {
+        *out = tree_rhs(self.model, self.tau, &mut self.scratch, y);
+    }
+    fn pairs(&self) -> bool {
+        self.model.aba_pairs()
+    }
+    fn call_pair_into(
+        &mut self,
+        (_, ya, oa): (f64, &SVector<f64, N>, &mut SVector<f64, N>),
+        (_, yb, ob): (f64, &SVector<f64, N>, &mut SVector<f64, N>),
+    ) {
+        let nq = self.model.nq();
+        if !self.model.aba_pairs() {
+            *oa = tree_rhs(self.model, self.tau, &mut self.scratch, ya);
+            *ob = tree_rhs(self.model, self.tau, &mut self.scratch, yb);
+            return;
+        }
+        let (qa, va) = ya.as_slice().split_at(nq);
+        let (qb, vb) = yb.as_slice().split_at(nq);
+        let (qda, vda) = oa.as_mut_slice().split_at_mut(nq);
+        let (qdb, vdb) = ob.as_mut_slice().split_at_mut(nq);
+        qda.copy_from_slice(va);
+        qdb.copy_from_slice(vb);
+        if self.model.aba_pair_unchecked((qa, va), (qb, vb), self.tau, (vda, vdb), &mut self.scratch).is_err()
+        {
+            *oa = tree_rhs(self.model, self.tau, &mut self.scratch, ya);
+            *ob = tree_rhs(self.model, self.tau, &mut self.scratch, yb);
+        }
+    }
+}
+
 /// The torque-free body of the harness: I = (1, 2, 3), ω(0) = (1, 0, 0.5), t ∈ [0, 20].
 pub fn rigid_body() -> RigidBody {
     RigidBody { inertia: [1.0, 2.0, 3.0], omega13: [1.0, 0.5], t_end: 20.0 }

@@ -531,6 +531,43 @@ cases! {
         refused(m.poses(&with(&with(&with(&with(&q, 1, 0.0), 2, 0.0), 3, 0.0), 4, 0.0)), "zero quaternion");
     }
 
+    // Two states at once (`Model::aba_pair_unchecked`): on a chain of pins each state gets the
+    // bits of `aba_unchecked` for hostile q, v and τ (NaN where the single call gives NaN); a
+    // tree takes two calls; every wrong length is refused with the argument named.
+    paired_aba ["Model::aba_pair_unchecked", "Model::aba_pairs"] {
+        let pin = |p: Option<usize>, off: f64| Link::new(p, Joint::Pin { axis: Vector3::y() }, Vector3::new(0.0, 0.0, off), 1.0, Vector3::new(0.1, 0.0, -0.2), Matrix3::from_diagonal(&Vector3::new(0.02, 0.03, 0.01)));
+        let mut chain = Model::new(&[pin(None, 0.0), pin(Some(0), -0.4), pin(Some(1), -0.4)]).unwrap();
+        chain.gravity = Vector3::new(0.0, 0.0, -9.81);
+        let t = tree();
+        assert!(chain.aba_pairs() && !t.aba_pairs());
+        let same = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()));
+        for m in [&chain, &t] {
+            let (q, v) = state(m);
+            let tau: Vec<f64> = (0..m.nv()).map(|k| 0.3 * k as f64 - 0.5).collect();
+            let mut s = m.aba_scratch();
+            let nv = m.nv();
+            for x in hostile() {
+                for k in 0..nv.min(m.nq()) {
+                    let (qx, vx, tx) = (with(&q, k, x), with(&v, k, x), with(&tau, k, x));
+                    let (mut a, mut b, mut c, mut d) = (vec![0.0; nv], vec![0.0; nv], vec![0.0; nv], vec![0.0; nv]);
+                    let pair = m.aba_pair_unchecked((&qx, &v), (&q, &vx), &tx, (&mut a, &mut b), &mut s);
+                    let one = m.aba_unchecked(&qx, &v, &tx, &mut c, &mut s).and_then(|_| m.aba_unchecked(&q, &vx, &tx, &mut d, &mut s));
+                    match (pair, one) {
+                        (Ok(()), Ok(())) => assert!(same(&a, &c) && same(&b, &d), "pair at {x}: {a:?} {b:?} against {c:?} {d:?}"),
+                        (Err(e), Err(f)) => assert_eq!(e.to_string(), f.to_string()),
+                        (p, o) => panic!("pair {p:?} against single calls {o:?} at {x}"),
+                    }
+                }
+            }
+            let (mut a, mut b) = (vec![0.0; nv], vec![0.0; nv]);
+            refused(m.aba_pair_unchecked((&q[1..], &v), (&q, &v), &tau, (&mut a, &mut b), &mut s), "pair(short q_a)");
+            refused(m.aba_pair_unchecked((&q, &v), (&q, &v[1..]), &tau, (&mut a, &mut b), &mut s), "pair(short v_b)");
+            refused(m.aba_pair_unchecked((&q, &v), (&q, &v), &[], (&mut a, &mut b), &mut s), "pair(empty τ)");
+            let mut long = vec![0.0; nv + 1];
+            refused(m.aba_pair_unchecked((&q, &v), (&q, &v), &tau, (&mut a, &mut long), &mut s), "pair(long v̇_b)");
+        }
+    }
+
     // Inverse and forward dynamics (§7.11): RNEA(q, v, ABA(q, v, τ)) = τ, and CRBA's forward
     // dynamics gives the same v̇, for hostile q, v, τ and external wrenches; a result that
     // overflows is `Overflow`, never ∞ inside `Ok`.

@@ -525,6 +525,72 @@ cases! {
         }
     }
 
+    // Right-hand sides that evaluate two states at once (`Rhs::pairs`, `Rhs::call_pair_into`):
+    // a closure's default pair is its own two values, bit for bit, NaN and ∞ included; GBS
+    // through `solve_rhs` and `AnyStepper::with_rhs` refuses hostile settings, states and ends
+    // as `solve` does, and otherwise takes the steps of `solve` to the bit, also when the
+    // second lane of every pair is broken (NaN, or a state of another length).
+    paired_rows ["Solver::solve_rhs", "AnyStepper::with_rhs", "Rhs::pairs", "Rhs::call_pair_into"] {
+        use std::cell::Cell;
+        use vectrix::ode::{AnyStepper, Extrapolation, InPlace, Method as OdeMethod, Rhs};
+        struct Pairs<'a> { broken: u8, pairs: &'a Cell<usize> }
+        impl Rhs<Vec<f64>> for Pairs<'_> {
+            const IN_PLACE: bool = true;
+            fn call(&mut self, t: f64, y: &Vec<f64>) -> Vec<f64> { vec![y[1], -y[0] + 0.1 * t.sin()] }
+            fn call_into(&mut self, t: f64, y: &Vec<f64>, out: &mut Vec<f64>) { *out = self.call(t, y); }
+            fn pairs(&self) -> bool { true }
+            fn call_pair_into(&mut self, a: (f64, &Vec<f64>, &mut Vec<f64>), b: (f64, &Vec<f64>, &mut Vec<f64>)) {
+                self.pairs.set(self.pairs.get() + 1);
+                *a.2 = self.call(a.0, a.1);
+                *b.2 = match self.broken { 0 => self.call(b.0, b.1), 1 => vec![f64::NAN; 2], _ => vec![1.0; 3] };
+            }
+        }
+        let f = |t: f64, y: &Vec<f64>| vec![y[1], -y[0] + 0.1 * t.sin()];
+        let g = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| *out = vec![y[1], -y[0] + 0.1 * t.sin()];
+        let bits = |y: &[f64]| y.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        let (mut fr, mut gi) = (f, InPlace(g));
+        assert!(!Rhs::<Vec<f64>>::pairs(&fr) && !Rhs::<Vec<f64>>::pairs(&gi));
+        for x in hostile() {
+            let (ya, yb) = (vec![x, 1.0], vec![0.5, x]);
+            let (mut oa, mut ob) = (vec![0.0; 2], vec![0.0; 2]);
+            fr.call_pair_into((x, &ya, &mut oa), (0.5, &yb, &mut ob));
+            assert_eq!((bits(&oa), bits(&ob)), (bits(&f(x, &ya)), bits(&f(0.5, &yb))), "closure pair at {x}");
+            gi.call_pair_into((0.5, &ya, &mut oa), (x, &yb, &mut ob));
+            assert_eq!((bits(&oa), bits(&ob)), (bits(&f(0.5, &ya)), bits(&f(x, &yb))), "in-place pair at {x}");
+            let pairs = Cell::new(0);
+            let gbs = Extrapolation::gbs().max_steps(10_000);
+            let p = || Pairs { broken: 0, pairs: &pairs };
+            err_or(gbs.rtol(x).solve_rhs(p(), 0.0, &vec![1.0, 0.0], 1.0), "solve_rhs(hostile rtol)", |s| fin(s.last()));
+            err_or(gbs.solve_rhs(p(), 0.0, &vec![x, 0.0], 1.0), "solve_rhs(hostile y0)", |s| fin(s.last()));
+            err_or(gbs.solve_rhs(p(), 0.0, &vec![1.0, 0.0], x), "solve_rhs(hostile t1)", |s| fin(s.last()));
+            err_or(gbs.solve_rhs(p(), x, &vec![1.0, 0.0], 1.0), "solve_rhs(hostile t0)", |s| fin(s.last()));
+            let m = OdeMethod::Gbs(gbs);
+            let none = None::<fn(f64, &Vec<f64>, &mut [f64])>;
+            err_or(AnyStepper::with_rhs(&m, p(), none, 0.0, vec![x, 1.0], 1.0), "with_rhs(hostile y0)", |s| fin(s.y()));
+            err_or(AnyStepper::with_rhs(&m, p(), none, 0.0, vec![1.0, 1.0], x), "with_rhs(hostile end)", |s| fin(s.y()));
+        }
+        refused(Extrapolation::gbs().dense(true).solve_rhs(Pairs { broken: 0, pairs: &Cell::new(0) }, 0.0, &vec![1.0, 0.0], 1.0), "solve_rhs(dense)");
+        let gbs = Extrapolation::gbs().rtol(1e-11).atol(1e-11);
+        let plain = gbs.solve(f, 0.0, &vec![1.0, 0.0], 10.0).unwrap();
+        for broken in 0..3 {
+            let pairs = Cell::new(0);
+            let s = gbs.solve_rhs(Pairs { broken, pairs: &pairs }, 0.0, &vec![1.0, 0.0], 10.0).unwrap();
+            assert!(pairs.get() > 0 && s.t.len() == plain.t.len(), "broken lane {broken}");
+            for (a, b) in s.y.iter().zip(&plain.y) {
+                assert_eq!(bits(a), bits(b), "broken lane {broken}");
+            }
+            let m = OdeMethod::Gbs(gbs);
+            let none = None::<fn(f64, &Vec<f64>, &mut [f64])>;
+            let mut a = AnyStepper::new(&m, f, none, 0.0, vec![1.0, 0.0], 10.0).unwrap();
+            let mut w = AnyStepper::with_rhs(&m, Pairs { broken, pairs: &pairs }, none, 0.0, vec![1.0, 0.0], 10.0).unwrap();
+            while !a.done() {
+                a.step().unwrap();
+                w.step().unwrap();
+                assert!(a.t().to_bits() == w.t().to_bits() && bits(a.y()) == bits(w.y()), "with_rhs, broken lane {broken}");
+            }
+        }
+    }
+
     // Gragg–Bulirsch–Stoer extrapolation: hostile tolerances, steps, states, ends and column
     // counts are refused or give finite answers; the oscillator ends on cos/sin.
     extrapolation ["Solver::gbs", "Solver::max_columns"] {

@@ -166,6 +166,23 @@ impl<S: State, G: FnMut(f64, &S, &mut S), J: FnMut(f64, &S, &mut [f64])> AnyStep
 }
 
 impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
+    /// [`AnyStepper::new`] for any [`Rhs`]: a type of the caller's, e.g. one that evaluates two
+    /// states at once for extrapolation ([`Rhs::pairs`]). The same steps and bits as `new`
+    /// with the same f.
+    ///
+    /// # Errors
+    /// As [`AnyStepper::new`].
+    pub fn with_rhs(
+        method: &Method,
+        f: F,
+        jac: Option<J>,
+        t0: f64,
+        y0: S,
+        t_end: f64,
+    ) -> Result<Self, OdeError> {
+        Self::start(method, f, jac, t0, y0, t_end)
+    }
+
     /// [`AnyStepper::new`] for any [`Rhs`].
     pub(crate) fn start(
         method: &Method,

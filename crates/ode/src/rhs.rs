@@ -23,6 +23,22 @@ pub trait Rhs<S: State> {
     fn call(&mut self, t: f64, y: &S) -> S;
     /// out ← f(t, y); `out` is a state of y's dimension holding a previous stage (overwritten).
     fn call_into(&mut self, t: f64, y: &S, out: &mut S);
+    /// Whether [`Rhs::call_pair_into`] evaluates two states for less than two calls (default
+    /// `false`). Gragg–Bulirsch–Stoer extrapolation ([`crate::Extrapolation`]) then builds two
+    /// rows of its table side by side, which costs a few evaluations it may not use; its steps
+    /// and bits are the same either way.
+    fn pairs(&self) -> bool {
+        false
+    }
+    /// f at two states at once: `a.2` ← f(`a.0`, `a.1`) and `b.2` ← f(`b.0`, `b.1`), each the
+    /// same bits as [`Rhs::call_into`]. Default: two calls. A right-hand side whose evaluation
+    /// is a chain of dependent operations (ABA on a chain: `Model::aba_pair_unchecked` in
+    /// vectrix-dynamics) overrides it to run both in the same instructions, two lanes each.
+    #[inline(always)]
+    fn call_pair_into(&mut self, a: (f64, &S, &mut S), b: (f64, &S, &mut S)) {
+        self.call_into(a.0, a.1, a.2);
+        self.call_into(b.0, b.1, b.2);
+    }
 }
 
 impl<S: State, F: FnMut(f64, &S) -> S> Rhs<S> for F {

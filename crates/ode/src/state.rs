@@ -250,7 +250,12 @@ pub(crate) fn eval<S: State, F: Rhs<S>>(
 /// `Ok` when f(t, y) = `k` has y's length and finite components; else the typed error naming
 /// the stage (evaluated at t, in the step from `step_start`) and the first bad component.
 #[inline(always)]
-fn check_rhs<S: State>(k: &S, y: &S, t: f64, (step_start, stage): (f64, usize)) -> Result<(), OdeError> {
+pub(crate) fn check_rhs<S: State>(
+    k: &S,
+    y: &S,
+    t: f64,
+    (step_start, stage): (f64, usize),
+) -> Result<(), OdeError> {
     if k.dim() != y.dim() {
         return Err(OdeError::DimensionMismatch {
             what: "right-hand side f(t, y)",

@@ -5,10 +5,13 @@
 //!
 //! Book: §7.11 (ABA, CRBA), §6.8 (inerters), §4.18 and §9.12 (rolling), §9.11 (loops).
 
+use std::cell::{Cell, RefCell};
+
 use nalgebra::{DMatrix, DVector};
 use vectrix_tensor::Scalar;
 
 use super::aero::AeroScratch;
+use super::contacts::Contacts;
 use super::forces::{Ground, Loads, apply};
 use super::kin::{Kin, kinematics_into, poses_into};
 use super::needs::Route;
@@ -286,6 +289,34 @@ impl Scene {
         model.aba_into(q, v, &w.tau, None, vd, &mut w.aba).map_err(|e| e.to_string())
     }
 
+    /// [`Scene::deriv_plain`] at two states at once, each the same bits (a chain of pins:
+    /// `Model::aba_pair_unchecked` runs both in one pass).
+    pub(crate) fn deriv_plain_pair(
+        &self,
+        (ya, oa): (&[f64], &mut [f64]),
+        (yb, ob): (&[f64], &mut [f64]),
+        w: &mut RhsScratch,
+    ) -> Result<(), String> {
+        let model = &self.built.model;
+        let nq = model.nq();
+        let ((qa, va), (qb, vb)) = (ya.split_at(nq), yb.split_at(nq));
+        let ((qda, vda), (qdb, vdb)) = (oa.split_at_mut(nq), ob.split_at_mut(nq));
+        self.qdot_into(qa, va, qda);
+        self.qdot_into(qb, vb, qdb);
+        model
+            .aba_pair_unchecked((qa, va), (qb, vb), &w.tau, (vda, vdb), &mut w.aba)
+            .map_err(|e| e.to_string())
+    }
+
+    /// Whether a run's evaluations may go two at a time ([`Scene::deriv_plain_pair`]): the
+    /// plain route (no loads, constraints or contacts) on a model whose ABA pairs.
+    pub(crate) fn pairs(&self) -> bool {
+        self.needs.route == Route::Plain
+            && !self.needs.constrained()
+            && self.contacts.is_empty()
+            && self.built.model.aba_pairs()
+    }
+
     /// q̇ from (q, v): a copy when every coordinate is its own speed, else the joints' map.
     #[inline(always)]
     fn qdot_into<T: Scalar>(&self, q: &[T], v: &[T], qd: &mut [T]) {
@@ -322,6 +353,48 @@ impl Scene {
     }
 }
 
+/// A run's right-hand side, written in place (the stepper keeps one state per stage: no
+/// allocation per evaluation): [`Scene::deriv_resting`] with the contacts at rest, on the
+/// piece of the load profiles the stepper is on; a failure is kept (the first) and shows
+/// the stepper a NaN. Two states at once where the scene allows ([`Scene::pairs`]).
+pub(crate) struct RunRhs<'a> {
+    pub scene: &'a Scene,
+    pub scratch: RhsScratch,
+    pub piece: &'a Cell<(f64, f64)>,
+    pub contacts: &'a RefCell<Contacts>,
+    pub failure: &'a RefCell<Option<String>>,
+}
+
+impl vectrix_ode::Rhs<Vec<f64>> for RunRhs<'_> {
+    const IN_PLACE: bool = true;
+    fn call(&mut self, t: f64, y: &Vec<f64>) -> Vec<f64> {
+        let mut out = y.clone();
+        self.call_into(t, y, &mut out);
+        out
+    }
+    fn call_into(&mut self, t: f64, y: &Vec<f64>, out: &mut Vec<f64>) {
+        self.scratch.piece = Some(self.piece.get());
+        let resting = &self.contacts.borrow().resting;
+        if let Err(e) = self.scene.deriv_resting(t, y, out, &mut self.scratch, resting) {
+            self.failure.borrow_mut().get_or_insert(e);
+            out.fill(f64::NAN);
+        }
+    }
+    fn pairs(&self) -> bool {
+        self.scene.pairs()
+    }
+    fn call_pair_into(&mut self, a: (f64, &Vec<f64>, &mut Vec<f64>), b: (f64, &Vec<f64>, &mut Vec<f64>)) {
+        if !self.scene.pairs() {
+            self.call_into(a.0, a.1, a.2);
+            self.call_into(b.0, b.1, b.2);
+        } else if let Err(e) = self.scene.deriv_plain_pair((a.1, a.2), (b.1, b.2), &mut self.scratch) {
+            self.failure.borrow_mut().get_or_insert(e);
+            a.2.fill(f64::NAN);
+            b.2.fill(f64::NAN);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -340,6 +413,64 @@ mod tests {
                     assert!(finite_derivative(&z).is_err_and(|m| m.contains(&format!("component {k}"))));
                 }
             }
+        }
+    }
+
+    /// A chain of pins under uniform gravity: a run's right-hand side pairs, and each state
+    /// of a pair gets the bits of one evaluation; with a spring (a load), or a ball on a free
+    /// joint with a contact beside it, it does not pair.
+    #[test]
+    fn run_rhs_pairs_a_pin_chain_with_the_bits_of_single_calls() {
+        use vectrix_ode::Rhs as _;
+        let body = |i: usize| {
+            let parent = if i == 0 {
+                String::new()
+            } else {
+                format!("parent = \"l{}\"\noffset = [0.0, 0.0, -0.3]\n", i - 1)
+            };
+            format!(
+                "\n[[bodies]]\nname = \"l{i}\"\n{parent}joint = {{ type = \"pin\", axis = [0.0, 1.0, 0.0] }}\n\
+                 mass = {{ shape = \"value\", mass = 1.0, principal = [0.01, 0.01, 0.001] }}\ncom = [0.0, 0.0, -0.15]\n"
+            )
+        };
+        let mut text = String::from(
+            "name = \"chain\"\nduration = 1.0\nmethod = { name = \"gbs\", rtol = 1e-10 }\n\
+             [[effects]]\ntype = \"uniform_gravity\"\ng = [0.0, 0.0, -9.81]\n",
+        );
+        for i in 0..5 {
+            text += &body(i);
+        }
+        let scene = Scene::from_toml(&text, "test").expect("valid chain");
+        assert!(scene.pairs());
+        let (piece, failure) = (Cell::new((0.0, 1.0)), RefCell::new(None));
+        let contacts = RefCell::new(Contacts { resting: Vec::new(), events: Vec::new() });
+        let mut f = RunRhs {
+            scene: &scene,
+            scratch: RhsScratch::new(&scene),
+            piece: &piece,
+            contacts: &contacts,
+            failure: &failure,
+        };
+        assert!(f.pairs());
+        let y0 = scene.initial_state();
+        let ya: Vec<f64> = (0..10).map(|k| 0.3 * k as f64 - 1.0).collect();
+        let yb: Vec<f64> = (0..10).map(|k| (k as f64).sin() * 2.0).collect();
+        let (mut oa, mut ob) = (y0.clone(), y0.clone());
+        f.call_pair_into((0.1, &ya, &mut oa), (0.2, &yb, &mut ob));
+        let (ea, eb) = (f.call(0.1, &ya), f.call(0.2, &yb));
+        let bits = |x: &[f64]| x.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!((bits(&oa), bits(&ob)), (bits(&ea), bits(&eb)));
+        assert!(failure.borrow().is_none());
+        let spring =
+            text.clone() + "\n[[effects]]\ntype = \"rotational_spring\"\nbody = \"l1\"\nkappa = 2.0\n";
+        let contact = text.clone()
+            + "\n[[bodies]]\nname = \"ball\"\njoint = { type = \"free\" }\n\
+               mass = { shape = \"value\", mass = 1.0, principal = [0.01, 0.01, 0.01] }\n\
+               \n[[effects]]\ntype = \"contact_plane\"\nbody = \"ball\"\nradius = 0.05\n\
+               point = [0.0, 0.0, -5.0]\nnormal = [0.0, 0.0, 1.0]\nrestitution = 0.5\nfriction = 0.0\n";
+        for other in [spring, contact.replace("\"gbs\"", "\"dop853\"")] {
+            let scene = Scene::from_toml(&other, "test").expect("valid scene");
+            assert!(!scene.pairs(), "{other}");
         }
     }
 }

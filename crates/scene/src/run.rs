@@ -18,7 +18,7 @@ use super::contacts::{ContactEvent, ContactEventKind, Contacts, Gap, NextContact
 use super::limits::breakpoints;
 use super::outcome::{Run, RunControl, Stop, StopReason};
 use super::project::ProjectScratch;
-use super::rhs::RhsScratch;
+use super::rhs::{RhsScratch, RunRhs};
 use super::sampling::{Sampler, Tracker};
 use super::{Scene, SceneError};
 
@@ -305,17 +305,15 @@ impl Scene {
             (ctl.progress)(1.0);
             return Ok(pass.finish(y0, start));
         }
-        let mut scratch = RhsScratch::new(self);
         let stops = pass.stops();
         // the piece between two corners of the load profiles the stepper is on
         let piece = Cell::new((0.0, stops[0].0));
-        // f written in place: the stepper keeps one state per stage (no allocation per evaluation)
-        let f = |t: f64, y: &Vec<f64>, out: &mut Vec<f64>| {
-            scratch.piece = Some(piece.get());
-            if let Err(e) = self.deriv_resting(t, y, out, &mut scratch, &contacts.borrow().resting) {
-                failure.borrow_mut().get_or_insert(e);
-                out.fill(f64::NAN);
-            }
+        let f = RunRhs {
+            scene: self,
+            scratch: RhsScratch::new(self),
+            piece: &piece,
+            contacts: &contacts,
+            failure: &failure,
         };
         // implicit steps: ∂f/∂y from dual numbers for a tree; otherwise RADAU5's own finite
         // differences (through the same f, so they see the resting contacts too)
@@ -334,8 +332,8 @@ impl Scene {
                 out.fill(f64::NAN);
             }
         });
-        let mut st = AnyStepper::new_in_place(&self.solver, f, jac, 0.0, y0, stops[0].0)
-            .map_err(|e| pass.ode_err(e))?;
+        let mut st =
+            AnyStepper::with_rhs(&self.solver, f, jac, 0.0, y0, stops[0].0).map_err(|e| pass.ode_err(e))?;
         pass.geo = if self.needs.impacts { self.gaps(st.y()).map_err(|e| fail(0.0, e))? } else { Vec::new() };
         let (mut stop_at, mut last_check) = (0, 0);
         loop {

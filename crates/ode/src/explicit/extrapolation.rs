@@ -12,6 +12,7 @@
 use std::time::Instant;
 
 use super::drive::Solution;
+use super::gbs_lanes::{Lanes, offset};
 use super::initial_step;
 use crate::solver::Solver;
 use crate::state::{State, check_state, eval, eval_into};
@@ -86,6 +87,23 @@ impl Solver<Gbs> {
     /// [`OdeError::DimensionMismatch`] when f returns a state of another length than y.
     pub fn solve<S: State, F: FnMut(f64, &S) -> S>(
         &self,
+        f: F,
+        t0: f64,
+        y0: &S,
+        t1: f64,
+    ) -> Result<Solution<S>, OdeError> {
+        self.solve_rhs(f, t0, y0, t1)
+    }
+
+    /// [`Extrapolation::solve`] for any [`Rhs`]: an [`crate::InPlace`] closure, or a type of
+    /// the caller's that evaluates two states at once ([`Rhs::pairs`],
+    /// [`Rhs::call_pair_into`]), whose rows are then built two at a time. The same steps and
+    /// bits as `solve` with the same f; the evaluations may differ (rows built but not read).
+    ///
+    /// # Errors
+    /// As [`Extrapolation::solve`].
+    pub fn solve_rhs<S: State, F: Rhs<S>>(
+        &self,
         mut f: F,
         t0: f64,
         y0: &S,
@@ -159,26 +177,18 @@ pub(super) struct Run<S> {
     h: f64,
     /// The last step was rejected.
     reject: bool,
+    /// The last attempt ended in row k − 1 (whether paired rows build row k speculatively).
+    stopped_early: bool,
     /// max(4·err, 1) of the previous row of this attempt (a row whose error does not fall
     /// below it diverges).
     err_old: f64,
     /// The extrapolation table of increments y₁ − y₀, T[0] the best (ODEX's layout).
     table: Vec<S>,
-    /// Gragg's increments δ_{i−1}, δᵢ, and y₀ + δᵢ (f's argument).
-    yh1: S,
-    yh2: S,
-    arg: S,
-    /// f's value at `arg`, written in place.
-    dy: S,
+    /// Gragg's midpoint rule for the rows, in one lane or two.
+    lanes: Lanes<S>,
+    /// y₀ + T[0], the accepted step's result.
+    out: S,
     pub(super) work: Work,
-}
-
-/// out ← y + δ, element by element.
-#[inline(always)]
-fn offset<S: State>(out: &mut S, y: &S, d: &S) {
-    for ((o, a), b) in out.as_mut_slice().iter_mut().zip(y.as_slice()).zip(d.as_slice()) {
-        *o = a + b;
-    }
 }
 
 /// How an attempted step ended.
@@ -247,12 +257,11 @@ impl<S: State> Run<S> {
             k,
             h: 0.0,
             reject: false,
+            stopped_early: false,
             err_old: f64::INFINITY,
             table: vec![y0.clone(); km],
-            yh1: y0.clone(),
-            yh2: y0.clone(),
-            arg: y0.clone(),
-            dy: y0.clone(),
+            lanes: Lanes::new(y0),
+            out: y0.clone(),
             work: Work::default(),
         }
     }
@@ -286,8 +295,8 @@ impl<S: State> Run<S> {
                 Verdict::Accept(kc) => {
                     self.accept(kc);
                     // y₁ = y₀ + the best increment
-                    offset(&mut self.arg, y, &self.table[0]);
-                    return Ok((if last { t1 } else { t + h }, &self.arg));
+                    offset(&mut self.out, y, &self.table[0]);
+                    return Ok((if last { t1 } else { t + h }, &self.out));
                 }
                 Verdict::Reject(kc) => {
                     let mut k = self.k.min(kc).min(self.km - 1);
@@ -310,6 +319,14 @@ impl<S: State> Run<S> {
     /// large to fall below 1 within the rows left.
     fn attempt<F: Rhs<S>>(&mut self, f: &mut F, t: f64, y: &S, dz: &S) -> Result<Verdict, OdeError> {
         let k = self.k;
+        self.lanes.clear();
+        if f.pairs() {
+            // row k too, unless the controller may stop after row k − 1 (it can when k > 2 and
+            // the last step was accepted) and did so in the last attempt
+            let upto = if k == 2 || self.reject || !self.stopped_early { k } else { k - 1 };
+            let at = (t, self.h, y, dz);
+            self.lanes.rows(f, upto, &self.nj, at, &mut self.table, &mut self.work.fevals);
+        }
         let mut err = 0.0;
         for j in 1..k {
             match self.row(f, j, t, y, dz)? {
@@ -319,12 +336,14 @@ impl<S: State> Run<S> {
         }
         let (nk, nk1, n1) = (self.nj[k - 1] as f64, self.nj[k] as f64, self.nj[0] as f64);
         if k != 2 && !self.reject {
+            self.stopped_early = true;
             if err <= 1.0 {
                 return Ok(Verdict::Accept(k - 1));
             }
             if err > (nk1 * nk / (n1 * n1)).powi(2) {
                 return Ok(Verdict::Reject(k - 1));
             }
+            self.stopped_early = false;
         }
         let Some(err) = self.row(f, k, t, y, dz)? else { return Ok(Verdict::Diverged) };
         if err <= 1.0 {
@@ -381,7 +400,9 @@ impl<S: State> Run<S> {
     }
 
     /// Row j (1-based) of the table: Gragg's midpoint rule with nⱼ steps of H/nⱼ and the final
-    /// smoothing step (HNW §II.9), extrapolated by Aitken–Neville in h²; then the error
+    /// smoothing step (HNW §II.9) on the increments y − y₀ (built here by lane A, unless the
+    /// paired rows of this attempt left it ready: `gbs_lanes`), extrapolated by Aitken–Neville
+    /// in h²; then the error
     /// estimate and the optimal step for this row. `None` when the row diverges: its error is
     /// not finite, beyond 1/ε, or (from row 3) not below max(4·err, 1) of the row before.
     fn row<F: Rhs<S>>(
@@ -392,34 +413,8 @@ impl<S: State> Run<S> {
         y: &S,
         dz: &S,
     ) -> Result<Option<f64>, OdeError> {
-        let h = self.h;
-        let n = self.nj[j - 1];
-        let hj = h / n as f64;
-        // Gragg's rule on the increments δᵢ = yᵢ − y₀ (rounded relative to |δ| ≈ |h f|, not
-        // |y|; the table extrapolates increments too): δ₁ = h f(t, y₀),
-        // δ_{i+1} = δ_{i−1} + 2h f(tᵢ, y₀ + δᵢ)
-        self.yh1.as_mut_slice().fill(0.0);
-        self.yh2.as_mut_slice().fill(0.0);
-        self.yh2.add_scaled(hj, dz);
-        for m in 1..n {
-            offset(&mut self.arg, y, &self.yh2);
-            eval_into(f, t + hj * m as f64, &self.arg, &mut self.dy, (t, 1 + m), &mut self.work.fevals)?;
-            self.yh1.add_scaled(2.0 * hj, &self.dy);
-            core::mem::swap(&mut self.yh1, &mut self.yh2);
-        }
-        // smoothing: T = (δ_{n−1} + δ_n + h f(t + H, y₀ + δ_n)) / 2
-        offset(&mut self.arg, y, &self.yh2);
-        eval_into(f, t + h, &self.arg, &mut self.dy, (t, 1 + n), &mut self.work.fevals)?;
-        let dy = &self.dy;
-        let tj = &mut self.table[j - 1];
-        for ((o, a), (b, d)) in tj
-            .as_mut_slice()
-            .iter_mut()
-            .zip(self.yh1.as_slice())
-            .zip(self.yh2.as_slice().iter().zip(dy.as_slice()))
-        {
-            *o = 0.5 * (a + b + hj * d);
-        }
+        let (h, n) = (self.h, self.nj[j - 1]);
+        self.lanes.row(f, (j, n), (t, h, y, dz), &mut self.table, &mut self.work.fevals)?;
         if j == 1 {
             return Ok(Some(0.0));
         }

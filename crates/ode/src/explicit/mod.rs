@@ -13,6 +13,7 @@ mod drive;
 mod events;
 mod extrapolation;
 mod fixed;
+mod gbs_lanes;
 mod gbs_stepper;
 mod pair;
 mod root;

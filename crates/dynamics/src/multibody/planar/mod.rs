@@ -16,6 +16,7 @@ use super::joint::Elem;
 use super::segment::Segment;
 
 mod aba;
+mod pair;
 #[cfg(test)]
 mod tests;
 
@@ -266,6 +267,11 @@ pub(crate) struct PlanarWork<T: Scalar> {
     pub trig: Vec<T>,
     /// The model's gravity g for this evaluation (ground components), set by the caller.
     pub gravity: Vector3<T>,
+    /// The paired passes' work space (`Model::aba_pair_unchecked`, pin chains; sized by its
+    /// first call): one entry per segment, and 6n numbers for both lanes' angles, sines and
+    /// cosines.
+    pub pair: Vec<pair::PairScratch>,
+    pub pair_trig: Vec<f64>,
 }
 
 impl<T: Scalar> PlanarWork<T> {
@@ -275,6 +281,8 @@ impl<T: Scalar> PlanarWork<T> {
             seg: vec![PlanarScratch::default(); n],
             trig: vec![T::zero(); 3 * n],
             gravity: Vector3::zeros(),
+            pair: Vec::new(),
+            pair_trig: Vec::new(),
         }
     }
 }

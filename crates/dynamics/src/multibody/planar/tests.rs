@@ -261,3 +261,87 @@ fn pin_chain_passes_give_the_general_passes_bits() {
     let tree = Model::new(&tree(Vector3::y(), Vector3::x())).expect("valid");
     assert!(!tree.planar.as_ref().expect("planar").pin_chain);
 }
+
+/// `Model::aba_pair_unchecked` gives each state the bits of `aba_unchecked`: on pin chains of
+/// 1–9 and 30 links (pins about +â and −â, gravity off the plane, torques), 100 pairs each,
+/// angles up to 3 rad and some far beyond the SIMD kernel's range (its libm fall-back);
+/// a tree (two calls); an inert pin in either lane (two calls, which decide it); lengths
+/// refused with the argument named.
+#[test]
+fn paired_passes_give_each_state_the_bits_of_one_call() {
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut rnd = move || {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let bits = |x: &[f64]| x.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+    let check = |m: &Model, q: [&[f64]; 2], v: [&[f64]; 2], tau: &[f64], paired: bool| {
+        let nv = m.nv();
+        let mut s = m.aba_scratch();
+        let (mut da, mut db) = (vec![0.0; nv], vec![0.0; nv]);
+        let (mut ea, mut eb) = (vec![0.0; nv], vec![0.0; nv]);
+        m.aba_pair_unchecked((q[0], v[0]), (q[1], v[1]), tau, (&mut da, &mut db), &mut s).expect("definite");
+        m.aba_unchecked(q[0], v[0], tau, &mut ea, &mut s).expect("definite");
+        m.aba_unchecked(q[1], v[1], tau, &mut eb, &mut s).expect("definite");
+        assert_eq!((bits(&da), bits(&db)), (bits(&ea), bits(&eb)), "q = {q:?}");
+        // and the paired passes themselves ran (not the two calls of the fall-back)
+        if let Some(p) = m.planar.as_ref().filter(|p| p.pin_chain) {
+            let n = p.segs.len();
+            let (mut ps, mut tr) = (vec![super::pair::PairScratch::default(); n], vec![0.0; 6 * n]);
+            let g = [-m.gravity.dot(&p.u), -m.gravity.dot(&p.w)];
+            let (mut fa, mut fb) = (vec![0.0; nv], vec![0.0; nv]);
+            let ran = p.aba_pair((q[0], v[0]), (q[1], v[1]), tau, g, (&mut fa, &mut fb), &mut ps, &mut tr);
+            assert_eq!(ran, paired, "q = {q:?}");
+            if ran {
+                assert_eq!((bits(&fa), bits(&fb)), (bits(&ea), bits(&eb)), "q = {q:?}");
+            }
+        }
+    };
+    for n in (1..=9).chain([30]) {
+        let links: Vec<Link> = (0..n)
+            .map(|i: usize| {
+                let axis = if i % 3 == 1 { -Vector3::y() } else { Vector3::y() };
+                let off = Vector3::new(rnd(), 0.3 * rnd(), rnd());
+                let com = Vector3::new(rnd(), 0.2 * rnd(), rnd());
+                let j = inertia(0.3 + 0.05 * rnd(), 0.25 + 0.05 * rnd(), 0.28 + 0.05 * rnd(), 0.02 * rnd());
+                Link::new(i.checked_sub(1), Joint::Pin { axis }, off, 1.0 + 0.5 * rnd(), com, j)
+            })
+            .collect();
+        let mut m = Model::new(&links).expect("valid");
+        m.gravity = Vector3::new(0.3, -1.0, -9.81);
+        assert!(m.aba_pairs(), "n = {n}");
+        for k in 0..100 {
+            let big = if k % 10 == 0 { 1e7 } else { 3.0 };
+            let mut st = || -> Vec<f64> { (0..n).map(|_| big * rnd()).collect() };
+            let (qa, qb, va, vb) = (st(), st(), st(), st());
+            let tau: Vec<f64> = (0..n).map(|_| rnd()).collect();
+            check(&m, [&qa, &qb], [&va, &vb], &tau, true);
+        }
+    }
+    let tree = Model::new(&tree(Vector3::y(), Vector3::x())).expect("valid");
+    assert!(!tree.aba_pairs());
+    let (q, v, tau, _) = state();
+    let q2: Vec<f64> = q.iter().map(|x| x + 0.3).collect();
+    check(&tree, [&q, &q2], [&v, &v], &tau, false);
+    // an inert pin (the chain of `inert_pin_falls_back_to_the_spatial_passes`)
+    let z = Matrix3::zeros();
+    let links = [
+        Link::new(None, Joint::Pin { axis: Vector3::y() }, Vector3::zeros(), 1.0, Vector3::x(), z),
+        Link::new(Some(0), Joint::Pin { axis: Vector3::y() }, Vector3::x(), 2.0, Vector3::zeros(), z),
+    ];
+    let inert = Model::new(&links).expect("valid");
+    assert!(inert.aba_pairs());
+    check(&inert, [&[0.4, -0.7], &[0.1, 0.2]], [&[0.3, 1.2], &[0.0, 0.5]], &[0.0, 0.0], false);
+    let mut s = inert.aba_scratch();
+    let (mut da, mut db) = (vec![0.0; 2], vec![0.0; 1]);
+    let e = inert
+        .aba_pair_unchecked(
+            (&[0.0; 2], &[0.0; 2]),
+            (&[0.0; 2], &[0.0; 2]),
+            &[0.0; 2],
+            (&mut da, &mut db),
+            &mut s,
+        )
+        .expect_err("v̇_b of length 1");
+    assert_eq!(e.to_string(), "v̇_b has length 1, expected 2");
+}
