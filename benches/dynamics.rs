@@ -8,8 +8,8 @@
 //! Pinocchio C++ in one sitting: `sh benches/peers/run.sh` (see docs/performance.md).
 //!
 //! Instruction counts (repeatable on a loaded machine): with `VECTRIX_ICOUNT=algo:n:iters`
-//! the binary runs `iters` calls of one algorithm (`rnea`, `aba`, `crba`, `rnea_derivatives`,
-//! `aba_derivatives`) on the n-link chain and exits, e.g.
+//! the binary runs `iters` calls of one algorithm (`rnea`, `aba`, `aba_pair`, `aba_twice`,
+//! `crba`, `rnea_derivatives`, `aba_derivatives`) on the n-link chain and exits, e.g.
 //! `valgrind --tool=callgrind --callgrind-out-file=/tmp/x.out target/release/deps/dynamics-* `
 //! with `VECTRIX_ICOUNT=crba:6:1000` and again with `:2000`; the difference / 1000 is the
 //! count per call (set-up cancels).
@@ -74,6 +74,7 @@ struct Chain {
     rd: RneaDerivatives,
     ad: AbaDerivatives,
     out: Vec<f64>,
+    out2: Vec<f64>,
     k: usize,
 }
 
@@ -93,6 +94,7 @@ impl Chain {
             rd: RneaDerivatives::zeros(&model),
             ad: AbaDerivatives::zeros(&model),
             out: vec![0.0; n],
+            out2: vec![0.0; n],
             k: 0,
             model,
         }
@@ -110,6 +112,19 @@ impl Chain {
             "aba" => {
                 self.model.aba_unchecked(q, v, a, &mut self.out, &mut self.aba).unwrap();
                 self.out[0]
+            }
+            // two states: one paired call, and two single calls (each pair's second state is
+            // the next one's v, so that the two are different states)
+            "aba_pair" => {
+                let (first, second): ((&[f64], &[f64]), (&[f64], &[f64])) = ((q, v), (v, a));
+                let out = (&mut self.out[..], &mut self.out2[..]);
+                self.model.aba_pair_unchecked(first, second, a, out, &mut self.aba).unwrap();
+                self.out[0] + self.out2[0]
+            }
+            "aba_twice" => {
+                self.model.aba_unchecked(q, v, a, &mut self.out, &mut self.aba).unwrap();
+                self.model.aba_unchecked(v, a, a, &mut self.out2, &mut self.aba).unwrap();
+                self.out[0] + self.out2[0]
             }
             "aba_spatial" => {
                 self.spatial.aba_unchecked(q, v, a, &mut self.out, &mut self.aba).unwrap();
@@ -133,8 +148,11 @@ impl Chain {
 }
 
 /// `aba` takes the planar passes on this chain (every pin about ŷ, `Model::planar_axis`);
-/// `aba_spatial` is the same chain through the spatial passes, what a general tree costs.
-const ALGORITHMS: [&str; 6] = ["rnea", "aba", "aba_spatial", "crba", "rnea_derivatives", "aba_derivatives"];
+/// `aba_spatial` is the same chain through the spatial passes, what a general tree costs;
+/// `aba_pair` two states in one call (`Model::aba_pair_unchecked`, what GBS's paired rows
+/// take) beside `aba_twice`, the same two states in two calls.
+const ALGORITHMS: [&str; 8] =
+    ["rnea", "aba", "aba_pair", "aba_twice", "aba_spatial", "crba", "rnea_derivatives", "aba_derivatives"];
 
 fn tree_algorithms(c: &mut Criterion) {
     let mut g = c.benchmark_group("dynamics");
