@@ -116,7 +116,7 @@ impl Chain {
             // two states: one paired call, and two single calls (each pair's second state is
             // the next one's v, so that the two are different states)
             "aba_pair" => {
-                let (first, second): ((&[f64], &[f64]), (&[f64], &[f64])) = ((q, v), (v, a));
+                let (first, second) = ((&q[..], &v[..]), (&v[..], &a[..]));
                 let out = (&mut self.out[..], &mut self.out2[..]);
                 self.model.aba_pair_unchecked(first, second, a, out, &mut self.aba).unwrap();
                 self.out[0] + self.out2[0]

@@ -9,7 +9,9 @@ use serde_json::{Value, json};
 use vectrix::frames::Frame;
 use vectrix::ode::explicit::{Adaptive, Extrapolation, Stepper, integrate_fixed};
 use vectrix::ode::harness::{Reference, Separable};
-use vectrix::ode::{GaussLegendre, LieMethod, RK4, Taylor, TaylorRhs, integrate_lie, stormer_verlet};
+use vectrix::ode::{
+    AnyStepper, GaussLegendre, LieMethod, Method, RK4, Taylor, TaylorRhs, integrate_lie, stormer_verlet,
+};
 use vectrix::scene::Scene;
 
 use crate::problems::{
@@ -413,6 +415,34 @@ impl Ctx {
                         worst = worst.max(EnergyPendulum::rel(y[0], y[1]));
                         next += 1;
                     }
+                }
+                Ok((vec![worst], st.work().fevals))
+            };
+            self.ladder(id, "library", name, "rtol", &tols, run, |e| e[0]);
+        }
+        // the methods without an interpolant land on every checkpoint, as Odeint's RKF78 does
+        // (`integrate_times`) and a scene does: Vern9 and GBS
+        let landing = [
+            (
+                "Vern9",
+                (|tol: f64| Method::Explicit(Adaptive::vern9().rtol(tol).atol(tol))) as fn(f64) -> Method,
+            ),
+            ("GBS", |tol: f64| Method::Gbs(Extrapolation::gbs().rtol(tol).atol(tol))),
+        ];
+        for (name, method) in landing {
+            let run = |tol: f64| -> Outcome {
+                let e = |x: vectrix::ode::OdeError| x.to_string();
+                let none = None::<fn(f64, &SVector<f64, 2>, &mut [f64])>;
+                let mut st = AnyStepper::new(&method(tol), f, none, 0.0, y0, cp_time(1)).map_err(e)?;
+                let mut worst = 0.0f64;
+                for k in 1..=cps {
+                    if k > 1 {
+                        st.set_end(cp_time(k)).map_err(e)?;
+                    }
+                    while !st.done() {
+                        st.step().map_err(e)?;
+                    }
+                    worst = worst.max(EnergyPendulum::rel(st.y()[0], st.y()[1]));
                 }
                 Ok((vec![worst], st.work().fevals))
             };

@@ -18,9 +18,7 @@ use crate::solver::Solver;
 use crate::state::{State, check_state, eval, eval_into};
 use crate::{OdeError, Rhs, Work};
 
-/// Largest number of extrapolation columns allowed (HNW's KM; the table then reaches order
-/// 2·KM: 2·12 = 24 is far beyond what f64 can use).
-pub const GBS_MAX_COLUMNS: usize = 12;
+pub use super::gbs_lanes::GBS_MAX_COLUMNS;
 
 /// The Gragg–Bulirsch–Stoer method: at most `max_columns` rows of the extrapolation table
 /// over the harmonic step sequence nⱼ = 2, 4, 6, 8, … (HNW §II.9, Deuflhard's choice), so an

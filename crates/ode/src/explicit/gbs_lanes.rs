@@ -10,9 +10,12 @@
 //!
 //! Book: §4.11; HNW §II.9 (the rows of the table are independent: parallel extrapolation).
 
-use super::extrapolation::GBS_MAX_COLUMNS;
 use crate::state::{State, check_rhs};
 use crate::{OdeError, Rhs};
+
+/// Largest number of extrapolation columns allowed (HNW's KM; the table then reaches order
+/// 2·KM: 2·12 = 24 is far beyond what f64 can use).
+pub const GBS_MAX_COLUMNS: usize = 12;
 
 /// One lane: Gragg's increments δ_{i−1}, δᵢ of its current row, f's argument y₀ + δᵢ and
 /// f's value, and where it is: row j (1-based), evaluation m of n, step H/n.
