@@ -2,6 +2,8 @@
 //!
 //! Book: §7.11 (chains); RBDA §2.16, Table 7.1.
 
+use core::ops::{Add, Mul, Neg, Sub};
+
 use vectrix_tensor::Scalar;
 
 use super::{Planar, PlanarJoint, PlanarScratch, PlanarSeg, PlanarWork, rot, to_parent};
@@ -263,37 +265,81 @@ type Inward<T> = ([T; 6], [T; 3], T, [T; 2]);
 fn pin_inward<T: Scalar>(
     e: &mut PlanarScratch<T>,
     ps: &PlanarSeg<T>,
-    [a0, a1, a2, a3, a4, a5]: [T; 6],
-    [p0, p1, p2]: [T; 3],
+    a: [T; 6],
+    p: [T; 3],
     tau: &[T],
     min_d: f64,
 ) -> Option<Inward<T>> {
-    if a0.re() <= min_d {
+    if a[0].re() <= min_d {
         return None;
     }
-    let z = T::zero();
-    let [c1, c2] = e.c;
-    let dd = e.d;
+    let s = pin_step(e.c, e.d, e.ew, a, p, tau[ps.vi] * ps.sigma);
+    e.U = [T::one(), s.b[0], s.b[1]];
+    (e.u, e.u0, e.ud) = (s.u, s.u0, s.ud);
+    Some(s.inward)
+}
+
+/// What pass 2 at a pin gives: for pass 3 (column 0)/D's last two entries `b`, D⁻¹σu, and the
+/// two terms of its angular acceleration that do not wait on the parent's (u0, ud; see
+/// [`PlanarScratch`]); and (Iᵃ, pᵃ, a, b) for the parent.
+pub(super) struct PinStep<L> {
+    pub b: [L; 2],
+    pub u: L,
+    pub u0: L,
+    pub ud: L,
+    pub inward: ([L; 6], [L; 3], L, [L; 2]),
+}
+
+/// The arithmetic of [`pin_step`]: one number (every [`Scalar`]) or two lanes (`pair::X2`),
+/// so that the single and the paired passes run the same operations in the same order.
+pub(super) trait Lane:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
+{
+    fn zero() -> Self;
+    fn recip(self) -> Self;
+}
+
+impl<T: Scalar> Lane for T {
+    #[inline(always)]
+    fn zero() -> T {
+        nalgebra::zero()
+    }
+    #[inline(always)]
+    fn recip(self) -> T {
+        nalgebra::ComplexField::recip(self)
+    }
+}
+
+/// Pass 2 at a pin whose D = a0 is known to be above its rounding level, with bias
+/// acceleration `c`, offset `dd` from the parent, (d_y², −2d_xd_y, d_x²) `ew` and στ `t`.
+#[inline(always)]
+pub(super) fn pin_step<L: Lane>(
+    [c1, c2]: [L; 2],
+    dd: [L; 2],
+    ew: [L; 3],
+    [a0, a1, a2, a3, a4, a5]: [L; 6],
+    [p0, p1, p2]: [L; 3],
+    t: L,
+) -> PinStep<L> {
+    let z = L::zero();
     let ex = [-dd[1], dd[0]];
     // the quantities of the products that do not need D⁻¹ first, so that the chain from one
     // pin's D to its parent's is D⁻¹, one product and two sums
     let (a11, a12, a22) = (a1 * a1, a1 * a2, a2 * a2);
     // with α = (a1, a2) and g = êᵀα: êᵀA₂₂ê, A₂₂ê, gα
     let g = ex[0] * a1 + ex[1] * a2;
-    let ea = e.ew[0] * a3 + e.ew[1] * a4 + e.ew[2] * a5;
+    let ea = ew[0] * a3 + ew[1] * a4 + ew[2] * a5;
     let xa = [a3 * ex[0] + a4 * ex[1], a4 * ex[0] + a5 * ex[1]];
     let (gg, ga) = (g * g, [a1 * g, a2 * g]);
     let dinv = a0.recip();
     // u = τ − σp0, stored as σu = στ − p0, and U stored unsigned, so that UD⁻¹u =
     // (column 0) D⁻¹ σu
-    let t = tau[ps.vi] * ps.sigma;
     let su = t - p0;
     let (b1, b2) = (a1 * dinv, a2 * dinv);
     // for pass 3: (column 0)/D = (1, b1, b2) and D⁻¹σu
-    e.U = [T::one(), b1, b2];
-    e.u = su * dinv;
-    e.u0 = e.u - (b1 * c1 + b2 * c2);
-    e.ud = b1 * dd[1] - b2 * dd[0];
+    let u = su * dinv;
+    let u0 = u - (b1 * c1 + b2 * c2);
+    let ud = b1 * dd[1] - b2 * dd[0];
     // C = A₂₂ − ααᵀD⁻¹ (row and column 0 of Iᵃ vanish exactly)
     let (i3, i4, i5) = (a3 - a11 * dinv, a4 - a12 * dinv, a5 - a22 * dinv);
     // pᵃ = pᴬ + Iᵃc + UD⁻¹u; its first entry is p0 + σu = στ
@@ -302,7 +348,7 @@ fn pin_inward<T: Scalar>(
     // zeros are not added: x + 0 is not foldable for floats)
     let a = ea - gg * dinv;
     let b = [xa[0] - ga[0] * dinv, xa[1] - ga[1] * dinv];
-    Some(([z, z, z, i3, i4, i5], pa, a, b))
+    PinStep { b: [b1, b2], u, u0, ud, inward: ([z, z, z, i3, i4, i5], pa, a, b) }
 }
 
 /// Pass 2 at a slider along `dir`: U = I S, D = Sᵀ U; `None` when D ≤ `min_d`.

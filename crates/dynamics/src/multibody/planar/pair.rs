@@ -8,7 +8,8 @@
 
 use core::ops::{Add, Mul, Neg, Sub};
 
-use super::{Planar, PlanarSeg};
+use super::Planar;
+use super::aba::{Lane, pin_step};
 use crate::DynamicsError;
 use crate::error::check_len;
 use crate::multibody::singular::pivot_tol;
@@ -22,10 +23,6 @@ impl X2 {
     #[inline(always)]
     fn splat(x: f64) -> Self {
         Self([x, x])
-    }
-    #[inline(always)]
-    fn recip(self) -> Self {
-        Self([1.0 / self.0[0], 1.0 / self.0[1]])
     }
 }
 
@@ -138,9 +135,14 @@ impl Planar<f64> {
                     *x = *x + y;
                 }
             }
-            let Some((ia2, pa2, a, b)) = pin_inward(e, ps, ia, pa, tau[i], tol * ps.scale) else {
+            // both lanes' D above its rounding level, else the caller's single calls decide it
+            let min_d = tol * ps.scale;
+            if !(ia[0].0[0] > min_d && ia[0].0[1] > min_d) {
                 return false;
-            };
+            }
+            let st = pin_step(e.c, e.d, e.ew, ia, pa, X2::splat(tau[i] * ps.sigma));
+            (e.b, e.u0, e.ud) = (st.b, st.u0, st.ud);
+            let (ia2, pa2, a, b) = st.inward;
             let ex = [-e.d[1], e.d[0]];
             let nf = pa2[0] + ex[0] * pa2[1] + ex[1] * pa2[2];
             (pend_ia, pend_pa) = ([a, b[0], b[1], ia2[3], ia2[4], ia2[5]], [nf, pa2[1], pa2[2]]);
@@ -160,42 +162,15 @@ impl Planar<f64> {
     }
 }
 
-type Inward = ([X2; 6], [X2; 3], X2, [X2; 2]);
-
-#[inline(always)]
-fn pin_inward(
-    e: &mut PairScratch,
-    ps: &PlanarSeg<f64>,
-    [a0, a1, a2, a3, a4, a5]: [X2; 6],
-    [p0, p1, p2]: [X2; 3],
-    tau: f64,
-    min_d: f64,
-) -> Option<Inward> {
-    if !(a0.0[0] > min_d && a0.0[1] > min_d) {
-        return None;
+impl Lane for X2 {
+    #[inline(always)]
+    fn zero() -> X2 {
+        X2::default()
     }
-    let z = X2::default();
-    let [c1, c2] = e.c;
-    let dd = e.d;
-    let ex = [-dd[1], dd[0]];
-    let (a11, a12, a22) = (a1 * a1, a1 * a2, a2 * a2);
-    let g = ex[0] * a1 + ex[1] * a2;
-    let ea = e.ew[0] * a3 + e.ew[1] * a4 + e.ew[2] * a5;
-    let xa = [a3 * ex[0] + a4 * ex[1], a4 * ex[0] + a5 * ex[1]];
-    let (gg, ga) = (g * g, [a1 * g, a2 * g]);
-    let dinv = a0.recip();
-    let t = X2::splat(tau * ps.sigma);
-    let su = t - p0;
-    let (b1, b2) = (a1 * dinv, a2 * dinv);
-    e.b = [b1, b2];
-    let u = su * dinv;
-    e.u0 = u - (b1 * c1 + b2 * c2);
-    e.ud = b1 * dd[1] - b2 * dd[0];
-    let (i3, i4, i5) = (a3 - a11 * dinv, a4 - a12 * dinv, a5 - a22 * dinv);
-    let pa = [t, p1 + i3 * c1 + i4 * c2 + b1 * su, p2 + i4 * c1 + i5 * c2 + b2 * su];
-    let a = ea - gg * dinv;
-    let b = [xa[0] - ga[0] * dinv, xa[1] - ga[1] * dinv];
-    Some(([z, z, z, i3, i4, i5], pa, a, b))
+    #[inline(always)]
+    fn recip(self) -> X2 {
+        X2([1.0 / self.0[0], 1.0 / self.0[1]])
+    }
 }
 
 impl Model<f64> {
