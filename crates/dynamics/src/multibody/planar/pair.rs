@@ -1,8 +1,9 @@
 //! Two states of a pin chain at once: ABA's three passes of [`Planar::aba`] on pairs of
 //! numbers, each operation done on both lanes by one instruction. A chain's passes are a
 //! chain of dependent operations (each pin's D⁻¹ waits on its child's), so two independent
-//! evaluations interleaved cost about 1.3 times one (0.64–0.69× two calls on a chain of 6).
-//! Each lane's operations are those of the single pass, in the same order: the same bits.
+//! evaluations interleaved cost about 1.2 times one (0.57–0.64× two calls on chains of 6–30,
+//! `docs/performance.md`). Each lane's operations are those of the single pass, in the same
+//! order (pass 2 at a pin is the same function, `aba::pin_step`): the same bits.
 //!
 //! Book: §7.11 (chains); RBDA §2.16, Table 7.1.
 
