@@ -560,6 +560,7 @@ cases! {
             let pairs = Cell::new(0);
             let gbs = Extrapolation::gbs().max_steps(10_000);
             let p = || Pairs { broken: 0, pairs: &pairs };
+            // (no tolerance: x is the hostile rtol, the run is refused or ends finite)
             err_or(gbs.rtol(x).solve_rhs(p(), 0.0, &vec![1.0, 0.0], 1.0), "solve_rhs(hostile rtol)", |s| fin(s.last()));
             err_or(gbs.solve_rhs(p(), 0.0, &vec![x, 0.0], 1.0), "solve_rhs(hostile y0)", |s| fin(s.last()));
             err_or(gbs.solve_rhs(p(), 0.0, &vec![1.0, 0.0], x), "solve_rhs(hostile t1)", |s| fin(s.last()));

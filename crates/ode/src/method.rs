@@ -143,7 +143,7 @@ impl<S: State, F: FnMut(f64, &S) -> S, J: FnMut(f64, &S, &mut [f64])> AnyStepper
     /// # Errors
     /// As those constructors.
     pub fn new(method: &Method, f: F, jac: Option<J>, t0: f64, y0: S, t_end: f64) -> Result<Self, OdeError> {
-        Self::start(method, f, jac, t0, y0, t_end)
+        Self::with_rhs(method, f, jac, t0, y0, t_end)
     }
 }
 
@@ -161,7 +161,7 @@ impl<S: State, G: FnMut(f64, &S, &mut S), J: FnMut(f64, &S, &mut [f64])> AnyStep
         y0: S,
         t_end: f64,
     ) -> Result<Self, OdeError> {
-        Self::start(method, InPlace(g), jac, t0, y0, t_end)
+        Self::with_rhs(method, InPlace(g), jac, t0, y0, t_end)
     }
 }
 
@@ -180,18 +180,6 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
         y0: S,
         t_end: f64,
     ) -> Result<Self, OdeError> {
-        Self::start(method, f, jac, t0, y0, t_end)
-    }
-
-    /// [`AnyStepper::new`] for any [`Rhs`].
-    pub(crate) fn start(
-        method: &Method,
-        f: F,
-        jac: Option<J>,
-        t0: f64,
-        y0: S,
-        t_end: f64,
-    ) -> Result<Self, OdeError> {
         Ok(match method {
             Method::Explicit(a) => Self::Explicit(Stepper::start(a, f, t0, y0, t_end)?),
             Method::Gbs(g) => Self::Gbs(GbsStepper::start(g, f, t0, y0, t_end)?),
@@ -199,6 +187,7 @@ impl<S: State, F: Rhs<S>, J: FnMut(f64, &S, &mut [f64])> AnyStepper<S, F, J> {
             Method::Bdf(b) => Self::Bdf(BdfStepper::start(b, f, jac, t0, y0, t_end)?),
         })
     }
+
     /// One accepted step.
     ///
     /// # Errors

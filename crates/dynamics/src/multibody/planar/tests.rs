@@ -12,6 +12,31 @@ fn inertia(a: f64, b: f64, c: f64, p: f64) -> Matrix3<f64> {
     Matrix3::new(a, p, -0.5 * p, p, b, 0.3 * p, -0.5 * p, 0.3 * p, c)
 }
 
+/// Uniform numbers in [−1, 1) from a 64-bit LCG (Knuth's MMIX constants) seeded with `seed`.
+fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    }
+}
+
+/// A chain of n pins (every third about −â), offsets and centres off the plane, products of
+/// inertia, gravity off the plane: drawn from `rnd`.
+fn random_chain(n: usize, rnd: &mut impl FnMut() -> f64) -> Model {
+    let links: Vec<Link> = (0..n)
+        .map(|i: usize| {
+            let axis = if i % 3 == 1 { -Vector3::y() } else { Vector3::y() };
+            let off = Vector3::new(rnd(), 0.3 * rnd(), rnd());
+            let com = Vector3::new(rnd(), 0.2 * rnd(), rnd());
+            let j = inertia(0.3 + 0.05 * rnd(), 0.25 + 0.05 * rnd(), 0.28 + 0.05 * rnd(), 0.02 * rnd());
+            Link::new(i.checked_sub(1), Joint::Pin { axis }, off, 1.0 + 0.5 * rnd(), com, j)
+        })
+        .collect();
+    let mut m = Model::new(&links).expect("valid");
+    m.gravity = Vector3::new(0.3, -1.0, -9.81);
+    m
+}
+
 /// A planar tree about `axis`: a branch, pins about +â and −â, a slider ⊥ â, a weld,
 /// offsets and centres off the plane, products of inertia coupling â to the plane.
 fn tree(axis: Vector3<f64>, across: Vector3<f64>) -> Vec<Link> {
@@ -215,23 +240,9 @@ fn inert_pin_falls_back_to_the_spatial_passes() {
 /// weld is not a pin chain.
 #[test]
 fn pin_chain_passes_give_the_general_passes_bits() {
-    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-    let mut rnd = move || {
-        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    };
+    let mut rnd = uniform(0x9e37_79b9_7f4a_7c15);
     for n in 1..=9 {
-        let links: Vec<Link> = (0..n)
-            .map(|i: usize| {
-                let axis = if i % 3 == 1 { -Vector3::y() } else { Vector3::y() };
-                let off = Vector3::new(rnd(), 0.3 * rnd(), rnd());
-                let com = Vector3::new(rnd(), 0.2 * rnd(), rnd());
-                let j = inertia(0.3 + 0.05 * rnd(), 0.25 + 0.05 * rnd(), 0.28 + 0.05 * rnd(), 0.02 * rnd());
-                Link::new(i.checked_sub(1), Joint::Pin { axis }, off, 1.0 + 0.5 * rnd(), com, j)
-            })
-            .collect();
-        let mut m = Model::new(&links).expect("valid");
-        m.gravity = Vector3::new(0.3, -1.0, -9.81);
+        let m = random_chain(n, &mut rnd);
         assert!(m.planar.as_ref().expect("planar").pin_chain, "n = {n}");
         let zero = vec![JointWrench::default(); n];
         let bits = |x: &[f64]| x.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
@@ -269,11 +280,7 @@ fn pin_chain_passes_give_the_general_passes_bits() {
 /// refused with the argument named.
 #[test]
 fn paired_passes_give_each_state_the_bits_of_one_call() {
-    let mut seed = 0x2545_f491_4f6c_dd1du64;
-    let mut rnd = move || {
-        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    };
+    let mut rnd = uniform(0x2545_f491_4f6c_dd1d);
     let bits = |x: &[f64]| x.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
     let check = |m: &Model, q: [&[f64]; 2], v: [&[f64]; 2], tau: &[f64], paired: bool| {
         let nv = m.nv();
@@ -298,17 +305,7 @@ fn paired_passes_give_each_state_the_bits_of_one_call() {
         }
     };
     for n in (1..=9).chain([30]) {
-        let links: Vec<Link> = (0..n)
-            .map(|i: usize| {
-                let axis = if i % 3 == 1 { -Vector3::y() } else { Vector3::y() };
-                let off = Vector3::new(rnd(), 0.3 * rnd(), rnd());
-                let com = Vector3::new(rnd(), 0.2 * rnd(), rnd());
-                let j = inertia(0.3 + 0.05 * rnd(), 0.25 + 0.05 * rnd(), 0.28 + 0.05 * rnd(), 0.02 * rnd());
-                Link::new(i.checked_sub(1), Joint::Pin { axis }, off, 1.0 + 0.5 * rnd(), com, j)
-            })
-            .collect();
-        let mut m = Model::new(&links).expect("valid");
-        m.gravity = Vector3::new(0.3, -1.0, -9.81);
+        let m = random_chain(n, &mut rnd);
         assert!(m.aba_pairs(), "n = {n}");
         for k in 0..100 {
             let big = if k % 10 == 0 { 1e7 } else { 3.0 };
